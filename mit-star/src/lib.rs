@@ -1,0 +1,3 @@
+//! MIT* and EIT*.
+
+#![forbid(unsafe_code)]

@@ -1,0 +1,3 @@
+//! Benchmark problems.
+
+#![forbid(unsafe_code)]

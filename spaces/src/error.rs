@@ -1,0 +1,73 @@
+//! Errors raised when a space or a state is malformed.
+
+use thiserror::Error;
+
+/// What is wrong with a space definition or with a state given to a space.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SpaceError {
+    /// A space needs at least one coordinate.
+    #[error("a state space needs at least one dimension")]
+    ZeroDimension,
+    /// Lower and upper bound vectors differ in length.
+    #[error("bounds have {lower} lower and {upper} upper values; they must match")]
+    BoundsLength {
+        /// Number of lower bounds given.
+        lower: usize,
+        /// Number of upper bounds given.
+        upper: usize,
+    },
+    /// A bound is NaN or infinite.
+    #[error("bound of coordinate {index} is not finite ({value})")]
+    NonFiniteBound {
+        /// Coordinate index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A lower bound is not strictly below its upper bound.
+    #[error("coordinate {index} has lower bound {lower} not below upper bound {upper}")]
+    EmptyInterval {
+        /// Coordinate index.
+        index: usize,
+        /// Lower bound.
+        lower: f64,
+        /// Upper bound.
+        upper: f64,
+    },
+    /// A joint weight is not a finite positive number.
+    #[error("joint {index} has weight {weight}; weights must be finite and positive")]
+    BadWeight {
+        /// Joint index.
+        index: usize,
+        /// The offending weight.
+        weight: f64,
+    },
+    /// A state has the wrong number of coordinates.
+    #[error("state has {got} coordinates but the space has dimension {expected}")]
+    DimensionMismatch {
+        /// The space's dimension.
+        expected: usize,
+        /// The state's length.
+        got: usize,
+    },
+    /// A state coordinate is NaN or infinite.
+    #[error("coordinate {index} of the state is not finite ({value})")]
+    NonFiniteState {
+        /// Coordinate index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A state lies outside the space's bounds.
+    #[error("coordinate {index} of the state is {value}, outside the bounds [{lower}, {upper}]")]
+    OutOfBounds {
+        /// Coordinate index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+        /// Lower bound of that coordinate.
+        lower: f64,
+        /// Upper bound of that coordinate.
+        upper: f64,
+    },
+}

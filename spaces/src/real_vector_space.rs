@@ -1,0 +1,201 @@
+//! [`RealVectorSpace`]: `R^n` with box bounds.
+
+use rand::{Rng, RngExt};
+
+use crate::{SpaceError, StateSpace};
+
+/// `R^n` restricted to an axis-aligned box, with the Euclidean metric and linear interpolation.
+///
+/// The dimension is chosen at run time (any `n ≥ 1`); states are `&[f64]` of length `n`.
+///
+/// ```
+/// use spaces::{RealVectorSpace, StateSpace};
+/// let space = RealVectorSpace::cube(4, -0.5, 0.5)?;
+/// assert_eq!(space.dimension(), 4);
+/// assert!((space.maximum_extent() - 2.0).abs() < 1e-12); // diagonal of the unit 4-cube
+/// assert!((space.distance(&[0.0; 4], &[0.5, 0.0, 0.0, 0.0]) - 0.5).abs() < 1e-12);
+/// # Ok::<(), spaces::SpaceError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct RealVectorSpace {
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    measure: f64,
+    extent: f64,
+}
+
+impl RealVectorSpace {
+    /// A box with the given lower and upper corners.
+    ///
+    /// # Errors
+    /// [`SpaceError`] if the dimension is zero, the lengths differ, a bound is not finite, or a
+    /// lower bound is not strictly below its upper bound.
+    pub fn new(lower: Vec<f64>, upper: Vec<f64>) -> Result<Self, SpaceError> {
+        if lower.len() != upper.len() {
+            return Err(SpaceError::BoundsLength {
+                lower: lower.len(),
+                upper: upper.len(),
+            });
+        }
+        if lower.is_empty() {
+            return Err(SpaceError::ZeroDimension);
+        }
+        for (index, (&lo, &hi)) in lower.iter().zip(&upper).enumerate() {
+            for value in [lo, hi] {
+                if !value.is_finite() {
+                    return Err(SpaceError::NonFiniteBound { index, value });
+                }
+            }
+            if lo >= hi {
+                return Err(SpaceError::EmptyInterval {
+                    index,
+                    lower: lo,
+                    upper: hi,
+                });
+            }
+        }
+        let measure = lower.iter().zip(&upper).map(|(lo, hi)| hi - lo).product();
+        let extent = lower
+            .iter()
+            .zip(&upper)
+            .map(|(lo, hi)| (hi - lo) * (hi - lo))
+            .sum::<f64>()
+            .sqrt();
+        Ok(Self {
+            lower,
+            upper,
+            measure,
+            extent,
+        })
+    }
+
+    /// The cube `[lower, upper]^n`.
+    ///
+    /// # Errors
+    /// As [`new`](Self::new).
+    pub fn cube(n: usize, lower: f64, upper: f64) -> Result<Self, SpaceError> {
+        Self::new(vec![lower; n], vec![upper; n])
+    }
+}
+
+impl StateSpace for RealVectorSpace {
+    #[inline]
+    fn dimension(&self) -> usize {
+        self.lower.len()
+    }
+
+    #[inline]
+    fn distance(&self, a: &[f64], b: &[f64]) -> f64 {
+        euclidean_distance(a, b)
+    }
+
+    #[inline]
+    fn interpolate(&self, a: &[f64], b: &[f64], t: f64, out: &mut [f64]) {
+        for ((o, &x), &y) in out.iter_mut().zip(a).zip(b) {
+            *o = x + (y - x) * t;
+        }
+    }
+
+    fn lower(&self) -> &[f64] {
+        &self.lower
+    }
+
+    fn upper(&self) -> &[f64] {
+        &self.upper
+    }
+
+    #[inline]
+    fn contains(&self, state: &[f64]) -> bool {
+        state
+            .iter()
+            .zip(self.lower.iter().zip(&self.upper))
+            .all(|(&x, (&lo, &hi))| x >= lo && x <= hi)
+    }
+
+    fn enforce_bounds(&self, state: &mut [f64]) {
+        for (x, (&lo, &hi)) in state.iter_mut().zip(self.lower.iter().zip(&self.upper)) {
+            *x = x.clamp(lo, hi);
+        }
+    }
+
+    fn measure(&self) -> f64 {
+        self.measure
+    }
+
+    fn maximum_extent(&self) -> f64 {
+        self.extent
+    }
+
+    fn sample_uniform(&self, rng: &mut dyn Rng, out: &mut [f64]) {
+        for (x, (&lo, &hi)) in out.iter_mut().zip(self.lower.iter().zip(&self.upper)) {
+            *x = lo + (hi - lo) * rng.random::<f64>();
+        }
+    }
+
+    fn is_euclidean(&self) -> bool {
+        true
+    }
+}
+
+/// Euclidean distance between two coordinate slices of equal length.
+#[inline]
+pub fn euclidean_distance(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y) * (x - y))
+        .sum::<f64>()
+        .sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rejects_malformed_bounds() {
+        assert_eq!(
+            RealVectorSpace::new(vec![], vec![]),
+            Err(SpaceError::ZeroDimension)
+        );
+        assert!(matches!(
+            RealVectorSpace::new(vec![0.0], vec![1.0, 2.0]),
+            Err(SpaceError::BoundsLength { lower: 1, upper: 2 })
+        ));
+        assert!(matches!(
+            RealVectorSpace::new(vec![0.0, 1.0], vec![1.0, 1.0]),
+            Err(SpaceError::EmptyInterval { index: 1, .. })
+        ));
+        assert!(matches!(
+            RealVectorSpace::new(vec![f64::NAN], vec![1.0]),
+            Err(SpaceError::NonFiniteBound { index: 0, .. })
+        ));
+    }
+
+    #[test]
+    fn measure_and_extent_of_a_box() {
+        let space = RealVectorSpace::new(vec![0.0, -1.0, 2.0], vec![2.0, 1.0, 5.0]).unwrap();
+        assert!((space.measure() - 12.0).abs() < 1e-12);
+        assert!((space.maximum_extent() - 17.0f64.sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn check_state_names_the_problem() {
+        let space = RealVectorSpace::cube(3, -0.5, 0.5).unwrap();
+        assert!(space.check_state(&[0.0, 0.1, -0.2]).is_ok());
+        assert!(matches!(
+            space.check_state(&[0.0, 0.1]),
+            Err(SpaceError::DimensionMismatch {
+                expected: 3,
+                got: 2
+            })
+        ));
+        assert!(matches!(
+            space.check_state(&[0.0, f64::NAN, 0.0]),
+            Err(SpaceError::NonFiniteState { index: 1, .. })
+        ));
+        assert!(matches!(
+            space.check_state(&[0.0, 0.0, 0.7]),
+            Err(SpaceError::OutOfBounds { index: 2, .. })
+        ));
+    }
+}

@@ -1,0 +1,345 @@
+//! [`World`]: axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics).
+
+use spaces::StateSpace;
+
+use crate::{StateValidity, ValidityError};
+
+/// An axis-aligned hyperrectangle given by its centre and full side lengths.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisBox {
+    /// Centre, one value per dimension.
+    pub center: Vec<f64>,
+    /// Full side length per dimension (not half-widths).
+    pub widths: Vec<f64>,
+}
+
+impl AxisBox {
+    /// A box from its centre and full side lengths.
+    pub fn new(center: Vec<f64>, widths: Vec<f64>) -> Self {
+        Self { center, widths }
+    }
+
+    /// A cube of side `side` centred on `center`.
+    pub fn cube(center: Vec<f64>, side: f64) -> Self {
+        let widths = vec![side; center.len()];
+        Self { center, widths }
+    }
+
+    /// Closed membership with PDT's tolerance: `|x_d − c_d| ≤ w_d / 2 + ε` for every `d`.
+    pub fn contains(&self, state: &[f64]) -> bool {
+        state
+            .iter()
+            .zip(self.center.iter().zip(&self.widths))
+            .all(|(&x, (&c, &w))| (x - c).abs() <= 0.5 * w + f64::EPSILON)
+    }
+}
+
+/// A regular lattice of `count^n` equal cubes: the centres along every dimension are
+/// `lower_d + (j + 1) · spacing` for `j = 0 … count-1` (PDT's repeating rectangles). Checked in
+/// `O(n)` whatever the number of cubes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lattice {
+    /// Cubes per dimension.
+    pub count: usize,
+    /// Centre-to-centre spacing.
+    pub spacing: f64,
+    /// Side length of each cube.
+    pub side: f64,
+}
+
+/// Axis-aligned boxes in a bounded `R^n`: a state is valid iff it lies inside the bounds **and**
+/// (inside some anti-obstacle **or** inside no obstacle). Membership is closed, with PDT's
+/// machine-epsilon tolerance.
+///
+/// Boxes are stored as contiguous `[lo₀, hi₀, lo₁, hi₁, …]` rows, so a check is a branch-light
+/// scan with early exit and never allocates.
+///
+/// ```
+/// use validity::{AxisBox, StateValidity, World};
+/// let world = World::new(vec![-0.5; 2], vec![0.5; 2])
+///     .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.1, 1.0]))?
+///     .with_anti_obstacle(AxisBox::new(vec![0.0, 0.2], vec![0.1, 0.05]))?;
+/// assert!(!world.is_valid(&[0.0, 0.0]));  // in the wall
+/// assert!(world.is_valid(&[0.0, 0.2]));   // in the gap
+/// assert!(!world.is_valid(&[0.7, 0.0]));  // out of bounds
+/// # Ok::<(), validity::ValidityError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct World {
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    obstacles: Vec<AxisBox>,
+    anti_obstacles: Vec<AxisBox>,
+    lattices: Vec<Lattice>,
+    /// Obstacles as `[lo, hi]` pairs per dimension, box after box.
+    obstacle_rows: Vec<f64>,
+    /// Anti-obstacles likewise.
+    anti_rows: Vec<f64>,
+}
+
+impl World {
+    /// An empty world within the bounds `[lower, upper]` (their lengths give the dimension;
+    /// the bounds are taken as given — validate them with a [`StateSpace`] first).
+    pub fn new(lower: Vec<f64>, upper: Vec<f64>) -> Self {
+        Self {
+            lower,
+            upper,
+            obstacles: Vec::new(),
+            anti_obstacles: Vec::new(),
+            lattices: Vec::new(),
+            obstacle_rows: Vec::new(),
+            anti_rows: Vec::new(),
+        }
+    }
+
+    /// An empty world with the bounds of `space`.
+    pub fn in_space<S: StateSpace + ?Sized>(space: &S) -> Self {
+        Self::new(space.lower().to_vec(), space.upper().to_vec())
+    }
+
+    /// Dimension of the world.
+    pub fn dimension(&self) -> usize {
+        self.lower.len()
+    }
+
+    /// Lower bounds.
+    pub fn lower(&self) -> &[f64] {
+        &self.lower
+    }
+
+    /// Upper bounds.
+    pub fn upper(&self) -> &[f64] {
+        &self.upper
+    }
+
+    /// The obstacles, in insertion order.
+    pub fn obstacles(&self) -> &[AxisBox] {
+        &self.obstacles
+    }
+
+    /// The anti-obstacles, in insertion order.
+    pub fn anti_obstacles(&self) -> &[AxisBox] {
+        &self.anti_obstacles
+    }
+
+    /// The lattices of cubes.
+    pub fn lattices(&self) -> &[Lattice] {
+        &self.lattices
+    }
+
+    /// Adds an obstacle.
+    ///
+    /// # Errors
+    /// If the box has the wrong dimension, a non-finite centre, or a negative or non-finite width.
+    pub fn with_obstacle(mut self, obstacle: AxisBox) -> Result<Self, ValidityError> {
+        self.add_obstacle(obstacle)?;
+        Ok(self)
+    }
+
+    /// Adds an anti-obstacle (free space carved out of obstacles).
+    ///
+    /// # Errors
+    /// As [`with_obstacle`](Self::with_obstacle).
+    pub fn with_anti_obstacle(mut self, anti: AxisBox) -> Result<Self, ValidityError> {
+        self.add_anti_obstacle(anti)?;
+        Ok(self)
+    }
+
+    /// Adds a lattice of cubes (obstacles).
+    ///
+    /// # Errors
+    /// If the spacing or side is not finite and positive.
+    pub fn with_lattice(mut self, lattice: Lattice) -> Result<Self, ValidityError> {
+        for (name, value) in [("lattice spacing", lattice.spacing), ("lattice side", lattice.side)]
+        {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(ValidityError::NotPositive { name, value });
+            }
+        }
+        self.lattices.push(lattice);
+        Ok(self)
+    }
+
+    /// Adds an obstacle in place. Errors as [`with_obstacle`](Self::with_obstacle).
+    ///
+    /// # Errors
+    /// See [`with_obstacle`](Self::with_obstacle).
+    pub fn add_obstacle(&mut self, obstacle: AxisBox) -> Result<(), ValidityError> {
+        let index = self.obstacles.len();
+        self.validate(&obstacle, "obstacle", index)?;
+        push_rows(&mut self.obstacle_rows, &obstacle);
+        self.obstacles.push(obstacle);
+        Ok(())
+    }
+
+    /// Adds an anti-obstacle in place.
+    ///
+    /// # Errors
+    /// See [`with_obstacle`](Self::with_obstacle).
+    pub fn add_anti_obstacle(&mut self, anti: AxisBox) -> Result<(), ValidityError> {
+        let index = self.anti_obstacles.len();
+        self.validate(&anti, "anti-obstacle", index)?;
+        push_rows(&mut self.anti_rows, &anti);
+        self.anti_obstacles.push(anti);
+        Ok(())
+    }
+
+    fn validate(&self, b: &AxisBox, what: &'static str, index: usize) -> Result<(), ValidityError> {
+        let expected = self.dimension();
+        for (field, values) in [("center", &b.center), ("widths", &b.widths)] {
+            if values.len() != expected {
+                return Err(ValidityError::BoxDimension {
+                    what,
+                    index,
+                    field,
+                    expected,
+                    got: values.len(),
+                });
+            }
+            for (coordinate, &value) in values.iter().enumerate() {
+                let requirement = if !value.is_finite() {
+                    "it must be finite"
+                } else if field == "widths" && value < 0.0 {
+                    "widths must not be negative"
+                } else {
+                    continue;
+                };
+                return Err(ValidityError::BoxValue {
+                    what,
+                    index,
+                    field,
+                    coordinate,
+                    value,
+                    requirement,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    #[inline]
+    fn in_bounds(&self, state: &[f64]) -> bool {
+        state
+            .iter()
+            .zip(self.lower.iter().zip(&self.upper))
+            .all(|(&x, (&lo, &hi))| x >= lo && x <= hi)
+    }
+
+    #[inline]
+    fn in_lattice(&self, lattice: &Lattice, state: &[f64]) -> bool {
+        let half = 0.5 * lattice.side + f64::EPSILON;
+        let last = lattice.count as f64 - 1.0;
+        state.iter().zip(&self.lower).all(|(&x, &lo)| {
+            // Nearest centre index, clamped to the lattice.
+            let j = ((x - lo) / lattice.spacing - 1.0).round().clamp(0.0, last);
+            (x - (lo + (j + 1.0) * lattice.spacing)).abs() <= half
+        })
+    }
+
+    /// `true` if the state is inside some obstacle (ignoring anti-obstacles and bounds).
+    #[inline]
+    pub fn in_obstacle(&self, state: &[f64]) -> bool {
+        in_any(&self.obstacle_rows, state)
+            || self
+                .lattices
+                .iter()
+                .any(|l| l.count > 0 && self.in_lattice(l, state))
+    }
+}
+
+/// Appends a box as `[lo, hi]` pairs, widened by PDT's epsilon.
+fn push_rows(rows: &mut Vec<f64>, b: &AxisBox) {
+    for (&c, &w) in b.center.iter().zip(&b.widths) {
+        let half = 0.5 * w + f64::EPSILON;
+        rows.push(c - half);
+        rows.push(c + half);
+    }
+}
+
+/// `true` if `state` lies in any box of `rows` (each box `2n` values).
+#[inline]
+fn in_any(rows: &[f64], state: &[f64]) -> bool {
+    let n2 = 2 * state.len();
+    if n2 == 0 {
+        return false;
+    }
+    rows.chunks_exact(n2).any(|row| {
+        row.chunks_exact(2)
+            .zip(state)
+            .all(|(bounds, &x)| x >= bounds[0] && x <= bounds[1])
+    })
+}
+
+impl StateValidity for World {
+    #[inline]
+    fn is_valid(&self, state: &[f64]) -> bool {
+        self.in_bounds(state) && (in_any(&self.anti_rows, state) || !self.in_obstacle(state))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit(n: usize) -> World {
+        World::new(vec![-0.5; n], vec![0.5; n])
+    }
+
+    #[test]
+    fn membership_is_closed_with_epsilon() {
+        let world = unit(2)
+            .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.2, 0.2]))
+            .unwrap();
+        assert!(!world.is_valid(&[0.1, 0.1]));
+        assert!(world.is_valid(&[0.1 + 1e-9, 0.0]));
+    }
+
+    #[test]
+    fn anti_obstacles_carve_free_space() {
+        let world = unit(3)
+            .with_obstacle(AxisBox::new(vec![0.0; 3], vec![0.4; 3]))
+            .unwrap()
+            .with_anti_obstacle(AxisBox::new(vec![0.0; 3], vec![0.2; 3]))
+            .unwrap();
+        assert!(world.is_valid(&[0.0, 0.0, 0.0]));
+        assert!(!world.is_valid(&[0.15, 0.0, 0.0]));
+        assert!(world.is_valid(&[0.25, 0.0, 0.0]));
+    }
+
+    #[test]
+    fn lattice_matches_explicit_boxes() {
+        let lattice = Lattice {
+            count: 4,
+            spacing: 0.2,
+            side: 0.05,
+        };
+        let fast = unit(2).with_lattice(lattice).unwrap();
+        let mut slow = unit(2);
+        for i in 0..4 {
+            for j in 0..4 {
+                let c = |k: usize| -0.5 + 0.2 * (k as f64 + 1.0);
+                slow.add_obstacle(AxisBox::cube(vec![c(i), c(j)], 0.05)).unwrap();
+            }
+        }
+        for k in 0..2000 {
+            let x = -0.5 + (k % 50) as f64 / 49.0;
+            let y = -0.5 + (k / 50) as f64 / 39.0;
+            assert_eq!(fast.is_valid(&[x, y]), slow.is_valid(&[x, y]), "({x}, {y})");
+        }
+    }
+
+    #[test]
+    fn malformed_boxes_are_named() {
+        let err = unit(2)
+            .with_obstacle(AxisBox::new(vec![0.0, 0.0, 0.0], vec![0.1, 0.1]))
+            .unwrap_err();
+        assert!(matches!(err, ValidityError::BoxDimension { field: "center", got: 3, .. }));
+        let err = unit(2)
+            .with_anti_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.1, -0.1]))
+            .unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "anti-obstacle 0: `widths[1]` is -0.1; widths must not be negative"
+        );
+    }
+}
