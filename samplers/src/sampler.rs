@@ -89,6 +89,38 @@ pub trait Sampler<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
 
     /// Work counters so far.
     fn counters(&self) -> SamplerCounters;
+
+    /// Planner feedback: the forward search found an edge of the lazy (reverse-tree) path
+    /// invalid while no valid solution exists. Samplers that estimate an informed set from
+    /// failed lazy paths (MIT*'s [`Estimated`](crate::Estimated) wrapper) react; others ignore it.
+    fn observe_invalid_lazy_edge(&mut self, _failure: LazyPathFailure) {}
+
+    /// Planner feedback: a batch of samples has been searched and the planner is about to add
+    /// the next one; `solved` tells whether a valid solution exists.
+    fn observe_batch_end(&mut self, _solved: bool) {}
+
+    /// `true` if the set this sampler draws from has just changed and it asks the planner for a
+    /// batch drawn in the new set before searching further (MIT*'s spec §3.1, step 1).
+    fn wants_batch(&self) -> bool {
+        false
+    }
+
+    /// The estimated solution cost the sampler currently uses as its bound when the planner has
+    /// no solution (`None` if it has none).
+    fn estimated_cost(&self) -> Option<f64> {
+        None
+    }
+}
+
+/// Where a lazy path failed: the forward edge `x_s → x_t` found invalid by a full check.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LazyPathFailure {
+    /// Cost-to-come `g(x_s)` of the edge's source in the forward tree.
+    pub cost_to_come: f64,
+    /// Admissible edge-cost estimate `ĉ(x_s, x_t)`.
+    pub edge_estimate: f64,
+    /// Admissible cost-to-go `ĥ(x_t)` of the edge's target in the reverse tree.
+    pub cost_to_go: f64,
 }
 
 impl<S, V, T> Sampler<S, V> for Box<T>
@@ -115,5 +147,17 @@ where
     }
     fn counters(&self) -> SamplerCounters {
         (**self).counters()
+    }
+    fn observe_invalid_lazy_edge(&mut self, failure: LazyPathFailure) {
+        (**self).observe_invalid_lazy_edge(failure);
+    }
+    fn observe_batch_end(&mut self, solved: bool) {
+        (**self).observe_batch_end(solved);
+    }
+    fn wants_batch(&self) -> bool {
+        (**self).wants_batch()
+    }
+    fn estimated_cost(&self) -> Option<f64> {
+        (**self).estimated_cost()
     }
 }
