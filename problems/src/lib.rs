@@ -1,3 +1,91 @@
-//! Benchmark problems.
+//! Benchmark planning problems.
+//!
+//! A [`Problem`] is a named, fully specified planning problem in `R^n`: a box world
+//! ([`validity::World`]), a start, one or more goals, the collision-check resolution, and the
+//! optimal cost when it is known exactly. Problems come from the built-in families of the
+//! Planner Developer Tools (PDT) benchmarks — each a parameter struct with PDT's defaults for
+//! any dimension `n ≥ 2` — or from a TOML [problem file](problem_file).
+//!
+//! ```
+//! use problems::{DividingWalls, Problem};
+//! use spaces::StateSpace;
+//! use validity::StateValidity;
+//!
+//! // PDT's dividing walls in R^4: the straight line is blocked.
+//! let problem = DividingWalls::new(4).build()?;
+//! assert!(problem.validate().is_ok());
+//! assert!(!problem.world().is_valid(&[0.0; 4]));
+//! assert!(problem.optimum().unwrap() > problem.straight_line_cost());
+//! // Collision checks every 5e-6 of the diagonal (2 in R^4).
+//! assert!((problem.step() - 1e-5).abs() < 1e-18);
+//!
+//! // The same family by name, and the same problem through a problem file.
+//! assert_eq!(problems::builtin("dividing-walls", 4, 0)?, problem);
+//! let text = problem.to_toml_string();
+//! assert_eq!(Problem::from_toml_str(&text)?, problem);
+//! assert_eq!(problem.space().dimension(), 4);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! # Catalogue
+//! | item | what it is |
+//! |---|---|
+//! | [`Problem`] | a named problem: space, world, start, goals, resolution, known optimum |
+//! | [`FlankingGap`] | `flanking-gap`: a wall short of the bounds with a small square hole |
+//! | [`DividingWalls`] | `dividing-walls`: three full walls crossed through six slots |
+//! | [`GoalEnclosure`] | `goal-enclosure`: the goal in a hollow cube opening away from the start |
+//! | [`RandomRectangles`] | `random-rectangles`: 35 seeded random boxes |
+//! | [`ObstacleFree`] | `obstacle-free`: the empty cube |
+//! | [`CenterSquare`] | `center-square`: one cube between start and goal |
+//! | [`WallGap`] | `wall-gap`: a wall with a slot and a corridor past its end |
+//! | [`NarrowPassage`] | `narrow-passage`: a full wall with one slot |
+//! | [`StartEnclosure`] | `start-enclosure`: the start in a hollow cube opening away from the goal |
+//! | [`DoubleEnclosure`] | `double-enclosure`: both ends enclosed |
+//! | [`RepeatingRectangles`] | `repeating-rectangles`: a lattice of `49^n` small cubes |
+//! | [`catalogue`], [`builtin`], [`Family`], [`Parameter`] | the families by name, with descriptions and default parameters |
+//! | [`problem_file`] | the TOML problem file format ([`Problem::from_toml_str`], [`Problem::from_file`], [`Problem::to_toml_string`]) |
+//! | [`ProblemError`], [`ProblemFileError`], [`Endpoint`], [`Location`] | what is wrong, and where |
+//!
+//! Every family lives in `[-0.5, 0.5]^n` (add 0.5 for the paper's unit-cube coordinates), gives
+//! obstacles by centre and full side lengths, and uses PDT's validity rule: a state is valid iff
+//! it is in the bounds and inside some anti-obstacle or inside no obstacle. Known optima are
+//! exact closed forms (each family's docs say when one applies); they are infima, approached
+//! from above, since the closed obstacles touch the optimal paths.
 
 #![forbid(unsafe_code)]
+
+mod catalogue;
+mod center_square;
+mod dividing_walls;
+mod double_enclosure;
+mod enclosure;
+mod error;
+mod family;
+mod flanking_gap;
+mod goal_enclosure;
+mod narrow_passage;
+mod obstacle_free;
+mod optimum;
+mod problem;
+pub mod problem_file;
+mod random_rectangles;
+mod repeating_rectangles;
+mod start_enclosure;
+#[cfg(test)]
+mod test_support;
+mod wall_gap;
+
+pub use catalogue::{Family, Parameter, builtin, catalogue};
+pub use center_square::CenterSquare;
+pub use dividing_walls::DividingWalls;
+pub use double_enclosure::DoubleEnclosure;
+pub use error::{Endpoint, Location, ProblemError, ProblemFileError};
+pub use flanking_gap::FlankingGap;
+pub use goal_enclosure::GoalEnclosure;
+pub use narrow_passage::NarrowPassage;
+pub use obstacle_free::ObstacleFree;
+pub use problem::Problem;
+pub use random_rectangles::RandomRectangles;
+pub use repeating_rectangles::RepeatingRectangles;
+pub use start_enclosure::StartEnclosure;
+pub use wall_gap::WallGap;

@@ -35,12 +35,22 @@ pub enum SampleError {
     #[error("sampling stopped by the termination condition")]
     Stopped,
     /// The informed set is empty: the bound is not above the smallest possible cost.
-    #[error("the informed set is empty: cost bound {bound} is not above the minimum cost {minimum}")]
+    #[error(
+        "the informed set is empty: cost bound {bound} is not above the minimum cost {minimum}"
+    )]
     EmptySet {
         /// The bound that was asked for.
         bound: f64,
         /// The straight-line lower bound of any solution.
         minimum: f64,
+    },
+    /// The space or the output buffer does not have the dimension the sampler was built for.
+    #[error("the sampler was built for dimension {expected}, but was given {got} coordinates")]
+    DimensionMismatch {
+        /// The dimension the sampler was built for.
+        expected: usize,
+        /// The dimension of the space or the length of the output buffer.
+        got: usize,
     },
 }
 
@@ -70,7 +80,8 @@ pub trait Sampler<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     ///
     /// # Errors
     /// [`SampleError::Stopped`] if `stop` fired; [`SampleError::EmptySet`] if the informed set of
-    /// `bound` is empty.
+    /// `bound` is empty; [`SampleError::DimensionMismatch`] if `space` or `out` does not have the
+    /// dimension the sampler was built for.
     fn sample(
         &mut self,
         space: &S,

@@ -234,11 +234,11 @@ impl StateSpace for JointSpace {
     }
 
     fn enforce_bounds(&self, state: &mut [f64]) {
-        for i in 0..state.len() {
-            state[i] = if self.wraps[i] {
-                wrap_angle(state[i])
+        for (i, x) in state.iter_mut().enumerate() {
+            *x = if self.wraps[i] {
+                wrap_angle(*x)
             } else {
-                state[i].clamp(self.lower[i], self.upper[i])
+                x.clamp(self.lower[i], self.upper[i])
             };
         }
     }
@@ -286,9 +286,11 @@ mod tests {
 
     #[test]
     fn weights_scale_the_metric_and_measure() {
-        let space =
-            JointSpace::new(vec![Joint::prismatic("p", 0.0, 1.0).weight(2.0), Joint::continuous("c")])
-                .unwrap();
+        let space = JointSpace::new(vec![
+            Joint::prismatic("p", 0.0, 1.0).weight(2.0),
+            Joint::continuous("c"),
+        ])
+        .unwrap();
         assert!((space.distance(&[0.0, 0.0], &[0.5, 0.0]) - 1.0).abs() < 1e-12);
         assert!((space.measure() - 2.0 * TAU).abs() < 1e-12);
         assert!((space.maximum_extent() - (4.0 + PI * PI).sqrt()).abs() < 1e-12);
@@ -302,7 +304,10 @@ mod tests {
             Err(SpaceError::EmptyInterval { index: 0, .. })
         ));
         assert!(matches!(
-            JointSpace::new(vec![Joint::continuous("c"), Joint::continuous("d").weight(0.0)]),
+            JointSpace::new(vec![
+                Joint::continuous("c"),
+                Joint::continuous("d").weight(0.0)
+            ]),
             Err(SpaceError::BadWeight { index: 1, .. })
         ));
         assert_eq!(JointSpace::new(vec![]), Err(SpaceError::ZeroDimension));

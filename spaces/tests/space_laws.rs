@@ -25,11 +25,20 @@ fn check_laws<S: StateSpace>(space: &S, a: &[f64], b: &[f64], t: f64) -> Result<
     // Interpolation hits both ends, stays in bounds, and splits the distance by t.
     let mut out = vec![0.0; n];
     space.interpolate(a, b, 0.0, &mut out);
-    prop_assert!(space.distance(&out, a) <= TOL, "t=0 gives {out:?}, not {a:?}");
+    prop_assert!(
+        space.distance(&out, a) <= TOL,
+        "t=0 gives {out:?}, not {a:?}"
+    );
     space.interpolate(a, b, 1.0, &mut out);
-    prop_assert!(space.distance(&out, b) <= TOL, "t=1 gives {out:?}, not {b:?}");
+    prop_assert!(
+        space.distance(&out, b) <= TOL,
+        "t=1 gives {out:?}, not {b:?}"
+    );
     space.interpolate(a, b, t, &mut out);
-    prop_assert!(space.contains(&out), "interpolated state {out:?} out of bounds");
+    prop_assert!(
+        space.contains(&out),
+        "interpolated state {out:?} out of bounds"
+    );
     prop_assert!((space.distance(a, &out) - t * dab).abs() <= 1e-7 * (1.0 + dab));
     prop_assert!((space.distance(&out, b) - (1.0 - t) * dab).abs() <= 1e-7 * (1.0 + dab));
     Ok(())
@@ -46,14 +55,15 @@ fn boxes() -> impl Strategy<Value = RealVectorSpace> {
 
 /// A joint space mixing limited and continuous joints, with random weights.
 fn joint_spaces() -> impl Strategy<Value = JointSpace> {
-    let joint = (0u8..3, -3.0f64..0.0, 0.1f64..3.0, 0.1f64..3.0).prop_map(|(kind, lo, w, weight)| {
-        let joint = match kind {
-            0 => Joint::revolute("r", lo, lo + w),
-            1 => Joint::prismatic("p", lo, lo + w),
-            _ => Joint::continuous("c"),
-        };
-        joint.weight(weight)
-    });
+    let joint =
+        (0u8..3, -3.0f64..0.0, 0.1f64..3.0, 0.1f64..3.0).prop_map(|(kind, lo, w, weight)| {
+            let joint = match kind {
+                0 => Joint::revolute("r", lo, lo + w),
+                1 => Joint::prismatic("p", lo, lo + w),
+                _ => Joint::continuous("c"),
+            };
+            joint.weight(weight)
+        });
     prop::collection::vec(joint, 1..=12).prop_map(|joints| JointSpace::new(joints).unwrap())
 }
 

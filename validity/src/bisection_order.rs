@@ -71,7 +71,11 @@ impl EdgeGrid {
     /// # Panics
     /// In debug builds, if `j ≥ points()`.
     pub fn point(&self, j: u64) -> u64 {
-        debug_assert!(j < self.points(), "position {j} beyond {} points", self.points());
+        debug_assert!(
+            j < self.points(),
+            "position {j} beyond {} points",
+            self.points()
+        );
         let leveled = self.dyadic - 1;
         if j < leveled {
             let depth = 64 - (j + 1).leading_zeros(); // level d: positions 2^(d-1)-1 … 2^d-2
@@ -192,7 +196,11 @@ mod tests {
                 assert!((1..n).contains(&i), "n={n}: index {i} out of range");
                 assert!(!seen[i as usize], "n={n}: index {i} twice");
                 seen[i as usize] = true;
-                assert_eq!(grid.point(j as u64), i, "n={n}: random access differs at {j}");
+                assert_eq!(
+                    grid.point(j as u64),
+                    i,
+                    "n={n}: random access differs at {j}"
+                );
             }
             assert_eq!(seen.iter().filter(|&&s| s).count() as u64, grid.points());
         }

@@ -129,14 +129,14 @@ impl GridWalker {
         EdgeGrid::new(space.distance(a, b), self.step)
     }
 
-    /// Tests bisection-order positions up to `target` (exclusive) that `progress` has not
-    /// covered yet, stopping at the first invalid point. Updates `progress`.
+    /// Tests the positions of the bisection order of edge `(a, b)` up to `target` (exclusive)
+    /// that `progress` has not covered yet, stopping at the first invalid point. Updates
+    /// `progress`.
     pub fn advance<S, V>(
         &mut self,
         space: &S,
         validity: &V,
-        a: &[f64],
-        b: &[f64],
+        (a, b): (&[f64], &[f64]),
         target: u64,
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
@@ -228,7 +228,7 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         let budget = self.sparse_budget(space.distance(a, b));
         let walker = self.walker_mut();
         walker.counters_mut().sparse_checks += 1;
-        walker.advance(space, validity, a, b, budget, progress, stop)
+        walker.advance(space, validity, (a, b), budget, progress, stop)
     }
 
     /// Full check of `a → b`: tests every grid point not yet tested. Returns
@@ -245,7 +245,7 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     ) -> EdgeStatus {
         let walker = self.walker_mut();
         walker.counters_mut().full_checks += 1;
-        walker.advance(space, validity, a, b, u64::MAX, progress, stop)
+        walker.advance(space, validity, (a, b), u64::MAX, progress, stop)
     }
 
     /// Grid points a full check of `a → b` would still test (the effort of the edge).

@@ -17,7 +17,9 @@ pub enum ValidityError {
     #[error("the sparse refinement factor Ω must lie in (0, 1), got {0}")]
     RefinementFactor(f64),
     /// A box has the wrong number of coordinates.
-    #[error("{what} {index} has {got} coordinates in `{field}`, the world has dimension {expected}")]
+    #[error(
+        "{what} {index} has {got} coordinates in `{field}`, the world has dimension {expected}"
+    )]
     BoxDimension {
         /// "obstacle" or "anti-obstacle".
         what: &'static str,

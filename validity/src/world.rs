@@ -150,8 +150,10 @@ impl World {
     /// # Errors
     /// If the spacing or side is not finite and positive.
     pub fn with_lattice(mut self, lattice: Lattice) -> Result<Self, ValidityError> {
-        for (name, value) in [("lattice spacing", lattice.spacing), ("lattice side", lattice.side)]
-        {
+        for (name, value) in [
+            ("lattice spacing", lattice.spacing),
+            ("lattice side", lattice.side),
+        ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(ValidityError::NotPositive { name, value });
             }
@@ -318,12 +320,13 @@ mod tests {
         for i in 0..4 {
             for j in 0..4 {
                 let c = |k: usize| -0.5 + 0.2 * (k as f64 + 1.0);
-                slow.add_obstacle(AxisBox::cube(vec![c(i), c(j)], 0.05)).unwrap();
+                slow.add_obstacle(AxisBox::cube(vec![c(i), c(j)], 0.05))
+                    .unwrap();
             }
         }
-        for k in 0..2000 {
-            let x = -0.5 + (k % 50) as f64 / 49.0;
-            let y = -0.5 + (k / 50) as f64 / 39.0;
+        for k in 0..2000_i32 {
+            let x = -0.5 + f64::from(k % 50) / 49.0;
+            let y = -0.5 + f64::from(k / 50) / 39.0;
             assert_eq!(fast.is_valid(&[x, y]), slow.is_valid(&[x, y]), "({x}, {y})");
         }
     }
@@ -333,7 +336,14 @@ mod tests {
         let err = unit(2)
             .with_obstacle(AxisBox::new(vec![0.0, 0.0, 0.0], vec![0.1, 0.1]))
             .unwrap_err();
-        assert!(matches!(err, ValidityError::BoxDimension { field: "center", got: 3, .. }));
+        assert!(matches!(
+            err,
+            ValidityError::BoxDimension {
+                field: "center",
+                got: 3,
+                ..
+            }
+        ));
         let err = unit(2)
             .with_anti_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.1, -0.1]))
             .unwrap_err();

@@ -37,25 +37,36 @@ fn world_and_edge() -> impl Strategy<Value = (World, Vec<f64>, Vec<f64>)> {
             0..6,
         );
         let point = || prop::collection::vec(-0.5f64..0.5, n);
-        (boxes, point(), point()).prop_filter_map("endpoints must be valid", move |(boxes, a, b)| {
-            let mut world = World::new(vec![-0.5; n], vec![0.5; n]);
-            for (center, widths) in boxes {
-                world.add_obstacle(AxisBox::new(center, widths)).ok()?;
-            }
-            (world.is_valid(&a) && world.is_valid(&b)).then_some((world, a, b))
-        })
+        (boxes, point(), point()).prop_filter_map(
+            "endpoints must be valid",
+            move |(boxes, a, b)| {
+                let mut world = World::new(vec![-0.5; n], vec![0.5; n]);
+                for (center, widths) in boxes {
+                    world.add_obstacle(AxisBox::new(center, widths)).ok()?;
+                }
+                (world.is_valid(&a) && world.is_valid(&b)).then_some((world, a, b))
+            },
+        )
     })
 }
 
 /// The checkers under test, all at `step`, each at some sparse level.
-fn checkers(step: f64, level: u32) -> Vec<Box<dyn EdgeChecker<RealVectorSpace, Recorder<'static>>>> {
+fn checkers(
+    step: f64,
+    level: u32,
+) -> Vec<Box<dyn EdgeChecker<RealVectorSpace, Recorder<'static>>>> {
     let mut fixed = FixedSparseChecker::new(step).unwrap();
-    let mut adaptive = LengthAdaptiveChecker::with_parameters(step, 40.0 * step, 0.5, 2.0 * step).unwrap();
+    let mut adaptive =
+        LengthAdaptiveChecker::with_parameters(step, 40.0 * step, 0.5, 2.0 * step).unwrap();
     for _ in 0..level {
         EdgeChecker::<RealVectorSpace, Recorder<'static>>::refine(&mut fixed);
         EdgeChecker::<RealVectorSpace, Recorder<'static>>::refine(&mut adaptive);
     }
-    vec![Box::new(DenseChecker::new(step).unwrap()), Box::new(fixed), Box::new(adaptive)]
+    vec![
+        Box::new(DenseChecker::new(step).unwrap()),
+        Box::new(fixed),
+        Box::new(adaptive),
+    ]
 }
 
 /// Ground truth: is any canonical grid point of `a → b` invalid?
@@ -172,7 +183,11 @@ fn full_check_stops_when_told_and_resumes() {
     let mut progress = EdgeProgress::default();
     let stopped = checker.check_full(&space, &world, &a, &b, &mut progress, &|| true);
     assert_eq!(stopped, EdgeStatus::Unknown);
-    assert!(progress.tested() < 1000, "stopped after {} points", progress.tested());
+    assert!(
+        progress.tested() < 1000,
+        "stopped after {} points",
+        progress.tested()
+    );
     let done = checker.check_full(&space, &world, &a, &b, &mut progress, &Never);
     assert_eq!(done, EdgeStatus::Valid);
     assert_eq!(progress.tested(), 79_999);

@@ -1,0 +1,379 @@
+//! The TOML problem file format: [`Problem::from_toml_str`], [`Problem::from_file`] and
+//! [`Problem::to_toml_string`].
+//!
+//! A problem file defines a [`Problem`] without Rust. Its fields:
+//!
+//! | field | required | meaning |
+//! |---|---|---|
+//! | `name` | yes | the problem's name |
+//! | `resolution` | no (5e-6) | collision-check resolution, a fraction of the maximum extent |
+//! | `optimum` | no | the optimal cost, only if known exactly |
+//! | `start` | yes | the start state |
+//! | `goal` / `goals` | exactly one | one goal state, or a non-empty list of them |
+//! | `[bounds]` `lower`, `upper` | yes | the corners of the space; their length is the dimension |
+//! | `[[obstacles]]` `center`, `widths` | no, repeated | axis-aligned boxes: centre and **full** side lengths |
+//! | `[[anti_obstacles]]` `center`, `widths` | no, repeated | boxes of free space carved out of obstacles |
+//! | `[[lattices]]` `count`, `spacing`, `side` | no, repeated | `count^n` cubes of side `side`, centred at `lower_d + (j + 1)·spacing` |
+//!
+//! A state is valid iff it lies in the bounds and inside some anti-obstacle or inside no
+//! obstacle (PDT's semantics, [`validity::World`]); membership is closed. Integers are accepted
+//! wherever numbers are. A full example (also in `problems/examples/`):
+//!
+//! ```toml
+//! name = "wall-with-slot"
+//! resolution = 5e-6
+//! start = [-0.3, 0.0]
+//! goal = [0.3, 0.0]
+//!
+//! [bounds]
+//! lower = [-0.5, -0.5]
+//! upper = [0.5, 0.5]
+//!
+//! [[obstacles]]          # a wall from y = -0.5 to y = 0.3
+//! center = [0.0, -0.1]
+//! widths = [0.2, 0.8]
+//!
+//! [[anti_obstacles]]     # a slot through it
+//! center = [0.0, 0.1]
+//! widths = [0.2, 0.04]
+//! ```
+//!
+//! Reading checks everything and reports the first problem as a [`ProblemFileError`] that
+//! names the field (`obstacles[2].widths has 3 values, but the bounds have 2`): TOML syntax
+//! (with line and column), missing and unknown fields, wrong types, wrong lengths, values that
+//! are not finite (TOML allows `nan` and `inf`), negative widths, empty bound intervals,
+//! `goal` and `goals` together or neither, a non-positive resolution, start or goals out of
+//! bounds or in collision.
+
+use std::path::Path;
+
+use serde::Deserialize;
+use spaces::StateSpace;
+use validity::{AxisBox, Lattice, World};
+
+use crate::{Endpoint, Location, Problem, ProblemError, ProblemFileError};
+
+/// The file's top level.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileSpec {
+    name: String,
+    resolution: Option<f64>,
+    optimum: Option<f64>,
+    start: Vec<f64>,
+    goal: Option<Vec<f64>>,
+    goals: Option<Vec<Vec<f64>>>,
+    bounds: BoundsSpec,
+    #[serde(default)]
+    obstacles: Vec<BoxSpec>,
+    #[serde(default)]
+    anti_obstacles: Vec<BoxSpec>,
+    #[serde(default)]
+    lattices: Vec<LatticeSpec>,
+}
+
+/// `[bounds]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BoundsSpec {
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+}
+
+/// `[[obstacles]]` and `[[anti_obstacles]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BoxSpec {
+    center: Vec<f64>,
+    widths: Vec<f64>,
+}
+
+/// `[[lattices]]`.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LatticeSpec {
+    count: usize,
+    spacing: f64,
+    side: f64,
+}
+
+impl Problem {
+    /// Reads a problem from the text of a problem file (schema in the
+    /// [module docs](crate::problem_file); examples in `problems/examples/`).
+    ///
+    /// ```
+    /// use problems::Problem;
+    /// use validity::StateValidity;
+    ///
+    /// let text = r#"
+    ///     name = "wall-with-slot"
+    ///     start = [-0.3, 0.0]
+    ///     goal = [0.3, 0.0]
+    ///     [bounds]
+    ///     lower = [-0.5, -0.5]
+    ///     upper = [0.5, 0.5]
+    ///     [[obstacles]]
+    ///     center = [0.0, -0.1]
+    ///     widths = [0.2, 0.8]
+    ///     [[anti_obstacles]]
+    ///     center = [0.0, 0.1]
+    ///     widths = [0.2, 0.04]
+    /// "#;
+    /// let problem = Problem::from_toml_str(text)?;
+    /// assert!(problem.world().is_valid(&[0.0, 0.1]));
+    /// assert_eq!(Problem::from_toml_str(&problem.to_toml_string())?, problem);
+    ///
+    /// let err = Problem::from_toml_str(&text.replace("[0.2, 0.04]", "[0.2, 0.04, 1]"))
+    ///     .unwrap_err();
+    /// assert_eq!(err.to_string(), "`anti_obstacles[0].widths` has 3 values, but the bounds have 2");
+    /// # Ok::<(), problems::ProblemFileError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// A [`ProblemFileError`] naming the first problem found (module docs).
+    pub fn from_toml_str(text: &str) -> Result<Self, ProblemFileError> {
+        let table: toml::Table = text.parse().map_err(|e| syntax_error(text, &e))?;
+        if table.is_empty() {
+            return Err(ProblemFileError::Empty);
+        }
+        let spec: FileSpec = toml::from_str(text).map_err(|e| schema_error(text, &e))?;
+        spec.into_problem()
+    }
+
+    /// Reads a problem file.
+    ///
+    /// # Errors
+    /// [`ProblemFileError::Io`] if the file cannot be read, otherwise as
+    /// [`from_toml_str`](Self::from_toml_str).
+    pub fn from_file(path: impl AsRef<Path>) -> Result<Self, ProblemFileError> {
+        let path = path.as_ref();
+        let text = std::fs::read_to_string(path).map_err(|source| ProblemFileError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::from_toml_str(&text)
+    }
+}
+
+/// Turns a parse error into [`ProblemFileError::Syntax`] with its location.
+fn syntax_error(text: &str, error: &toml::de::Error) -> ProblemFileError {
+    ProblemFileError::Syntax {
+        location: error
+            .span()
+            .map(|span| Location::of_offset(text, span.start)),
+        message: error.message().to_owned(),
+    }
+}
+
+/// Turns a deserialisation error into [`ProblemFileError::Schema`], quoting the offending line
+/// when the error points at something.
+fn schema_error(text: &str, error: &toml::de::Error) -> ProblemFileError {
+    let span = error.span().filter(|span| span.start < span.end);
+    let location = span
+        .as_ref()
+        .map(|span| Location::of_offset(text, span.start));
+    let mut message = error.message().to_owned();
+    if let Some(location) = location
+        && let Some(line) = text.lines().nth(location.line - 1)
+    {
+        message.push_str(&format!(", in `{}`", line.trim()));
+    }
+    ProblemFileError::Schema { location, message }
+}
+
+impl FileSpec {
+    /// Checks every value, naming the field, and builds the problem.
+    fn into_problem(self) -> Result<Problem, ProblemFileError> {
+        let n = check_bounds(&self.bounds)?;
+        if let Some(resolution) = self.resolution
+            && !(resolution.is_finite() && resolution > 0.0)
+        {
+            return Err(bad_value(
+                "resolution",
+                resolution,
+                "it must be finite and positive",
+            ));
+        }
+        if let Some(optimum) = self.optimum
+            && !(optimum.is_finite() && optimum >= 0.0)
+        {
+            return Err(bad_value(
+                "optimum",
+                optimum,
+                "it must be finite and not negative",
+            ));
+        }
+
+        let single_goal = self.goal.is_some();
+        let goals = match (self.goal, self.goals) {
+            (Some(_), Some(_)) => return Err(ProblemFileError::GoalAndGoals),
+            (Some(goal), None) => vec![goal],
+            (None, Some(goals)) if !goals.is_empty() => goals,
+            (None, _) => return Err(ProblemFileError::NoGoal),
+        };
+        let field = |endpoint: Endpoint| match endpoint {
+            Endpoint::Start => "start".to_owned(),
+            Endpoint::Goal(_) if single_goal => "goal".to_owned(),
+            Endpoint::Goal(i) => format!("goals[{i}]"),
+        };
+        check_state(&field(Endpoint::Start), &self.start, &self.bounds)?;
+        for (i, goal) in goals.iter().enumerate() {
+            check_state(&field(Endpoint::Goal(i)), goal, &self.bounds)?;
+        }
+
+        let mut world = World::new(self.bounds.lower, self.bounds.upper);
+        for (i, b) in self.obstacles.into_iter().enumerate() {
+            let b = check_box(&format!("obstacles[{i}]"), b, n)?;
+            world.add_obstacle(b).map_err(ProblemError::from)?;
+        }
+        for (i, b) in self.anti_obstacles.into_iter().enumerate() {
+            let b = check_box(&format!("anti_obstacles[{i}]"), b, n)?;
+            world.add_anti_obstacle(b).map_err(ProblemError::from)?;
+        }
+        for (i, l) in self.lattices.into_iter().enumerate() {
+            let lattice = check_lattice(&format!("lattices[{i}]"), l)?;
+            world = world.with_lattice(lattice).map_err(ProblemError::from)?;
+        }
+
+        let problem = Problem::new(self.name, world, self.start, goals).map_err(|e| match e {
+            ProblemError::InCollision { endpoint, state } => ProblemFileError::InCollision {
+                field: field(endpoint),
+                state,
+            },
+            other => ProblemFileError::Problem(other),
+        })?;
+        let problem = match self.resolution {
+            Some(resolution) => problem.with_resolution(resolution)?,
+            None => problem,
+        };
+        Ok(problem.with_optimum(self.optimum)?)
+    }
+}
+
+/// Checks the bounds and returns the dimension.
+fn check_bounds(bounds: &BoundsSpec) -> Result<usize, ProblemFileError> {
+    let (lower, upper) = (&bounds.lower, &bounds.upper);
+    if lower.len() != upper.len() {
+        return Err(ProblemFileError::BoundsLength {
+            lower: lower.len(),
+            upper: upper.len(),
+        });
+    }
+    if lower.is_empty() {
+        return Err(ProblemFileError::NoDimensions);
+    }
+    check_finite("bounds.lower", lower)?;
+    check_finite("bounds.upper", upper)?;
+    for (index, (&lower, &upper)) in lower.iter().zip(upper).enumerate() {
+        if lower >= upper {
+            return Err(ProblemFileError::EmptyInterval {
+                index,
+                lower,
+                upper,
+            });
+        }
+    }
+    Ok(lower.len())
+}
+
+/// Checks a start or goal: length, finite, inside the bounds.
+fn check_state(field: &str, state: &[f64], bounds: &BoundsSpec) -> Result<(), ProblemFileError> {
+    check_length(field, state, bounds.lower.len())?;
+    check_finite(field, state)?;
+    let space = spaces::RealVectorSpace::new(bounds.lower.clone(), bounds.upper.clone())
+        .map_err(ProblemError::Bounds)?;
+    if let Err(spaces::SpaceError::OutOfBounds {
+        index,
+        value,
+        lower,
+        upper,
+    }) = space.check_state(state)
+    {
+        return Err(ProblemFileError::OutOfBounds {
+            field: field.to_owned(),
+            index,
+            value,
+            lower,
+            upper,
+        });
+    }
+    Ok(())
+}
+
+/// Checks an obstacle or anti-obstacle: lengths, finite, widths not negative.
+fn check_box(field: &str, b: BoxSpec, n: usize) -> Result<AxisBox, ProblemFileError> {
+    let (center, widths) = (format!("{field}.center"), format!("{field}.widths"));
+    check_length(&center, &b.center, n)?;
+    check_length(&widths, &b.widths, n)?;
+    check_finite(&center, &b.center)?;
+    check_finite(&widths, &b.widths)?;
+    if let Some((i, &w)) = b.widths.iter().enumerate().find(|(_, w)| **w < 0.0) {
+        return Err(bad_value(
+            &format!("{widths}[{i}]"),
+            w,
+            "widths are full side lengths and must not be negative",
+        ));
+    }
+    Ok(AxisBox::new(b.center, b.widths))
+}
+
+/// Checks a lattice: at least one cube, spacing and side finite and positive.
+fn check_lattice(field: &str, l: LatticeSpec) -> Result<Lattice, ProblemFileError> {
+    if l.count == 0 {
+        return Err(ProblemFileError::EmptyLattice {
+            field: format!("{field}.count"),
+        });
+    }
+    for (name, value) in [("spacing", l.spacing), ("side", l.side)] {
+        if !(value.is_finite() && value > 0.0) {
+            return Err(bad_value(
+                &format!("{field}.{name}"),
+                value,
+                "it must be finite and positive",
+            ));
+        }
+    }
+    Ok(Lattice {
+        count: l.count,
+        spacing: l.spacing,
+        side: l.side,
+    })
+}
+
+/// Checks that a vector has `n` values.
+fn check_length(field: &str, values: &[f64], n: usize) -> Result<(), ProblemFileError> {
+    if values.len() != n {
+        return Err(ProblemFileError::Dimension {
+            field: field.to_owned(),
+            got: values.len(),
+            expected: n,
+        });
+    }
+    Ok(())
+}
+
+/// Checks that every value is finite.
+fn check_finite(field: &str, values: &[f64]) -> Result<(), ProblemFileError> {
+    match values.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+        Some((i, &value)) => Err(bad_value(
+            &format!("{field}[{i}]"),
+            value,
+            "values must be finite",
+        )),
+        None => Ok(()),
+    }
+}
+
+/// A [`ProblemFileError::BadValue`].
+fn bad_value(field: &str, value: f64, requirement: &'static str) -> ProblemFileError {
+    ProblemFileError::BadValue {
+        field: field.to_owned(),
+        value,
+        requirement,
+    }
+}
+
+mod writer;
+
+#[cfg(test)]
+mod tests;

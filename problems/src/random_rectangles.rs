@@ -1,0 +1,248 @@
+//! [`RandomRectangles`]: PDT's random rectangles — a seeded scatter of boxes.
+
+use rand::{RngExt, SeedableRng};
+use spaces::{SeededRng, StateSpace};
+use validity::AxisBox;
+
+use crate::family::{check_dimension, check_point, check_positive, unit_world};
+use crate::{Parameter, Problem, ProblemError};
+
+/// PDT's **random rectangles** in `[-0.5, 0.5]^n`: `count` axis-aligned boxes placed at random,
+/// the layout a deterministic function of the seed.
+///
+/// Boxes are drawn one after another from a [`SeededRng`] seeded with `seed`: first the centre,
+/// uniform over the bounds (one draw per coordinate, in order), then the side lengths, uniform
+/// in `[min_side, max_side]` and independent per coordinate. A box containing the start or the
+/// goal is rejected and the next one drawn, until `count` boxes are accepted. Boxes may overlap
+/// and stick out of the bounds. At most `max_attempts` boxes are drawn in total; if that is not
+/// enough, [`build`](Self::build) fails rather than loop for ever.
+///
+/// | parameter | default (every n) |
+/// |---|---|
+/// | `start` / `goal` | (−0.1, …, −0.1) / (0.4, …, 0.4) |
+/// | `count` | 35 |
+/// | `min_side` / `max_side` | 0.1 / 0.2 |
+/// | `seed` | 0 |
+/// | `max_attempts` | 100 000 |
+///
+/// The optimum is not known.
+///
+/// ```
+/// use problems::RandomRectangles;
+///
+/// let a = RandomRectangles::new(4).seed(3).build()?;
+/// let b = RandomRectangles::new(4).seed(3).build()?;
+/// assert_eq!(a.world().obstacles().len(), 35);
+/// assert_eq!(a, b);
+/// assert_ne!(a.world(), RandomRectangles::new(4).seed(4).build()?.world());
+/// # Ok::<(), problems::ProblemError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct RandomRectangles {
+    n: usize,
+    start: Vec<f64>,
+    goal: Vec<f64>,
+    count: usize,
+    min_side: f64,
+    max_side: f64,
+    seed: u64,
+    max_attempts: usize,
+}
+
+impl RandomRectangles {
+    /// The family's name in the [catalogue](crate::catalogue).
+    pub const NAME: &'static str = "random-rectangles";
+
+    /// PDT's defaults in `n` dimensions with seed 0 (checked by [`build`](Self::build):
+    /// `n ≥ 2`).
+    pub fn new(n: usize) -> Self {
+        Self {
+            n,
+            start: vec![-0.1; n],
+            goal: vec![0.4; n],
+            count: 35,
+            min_side: 0.1,
+            max_side: 0.2,
+            seed: 0,
+            max_attempts: 100_000,
+        }
+    }
+
+    /// Sets the seed of the layout.
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self
+    }
+
+    /// Sets the start state.
+    pub fn start(mut self, start: Vec<f64>) -> Self {
+        self.start = start;
+        self
+    }
+
+    /// Sets the goal state.
+    pub fn goal(mut self, goal: Vec<f64>) -> Self {
+        self.goal = goal;
+        self
+    }
+
+    /// Sets the number of boxes.
+    pub fn count(mut self, count: usize) -> Self {
+        self.count = count;
+        self
+    }
+
+    /// Sets the smallest side length.
+    pub fn min_side(mut self, min_side: f64) -> Self {
+        self.min_side = min_side;
+        self
+    }
+
+    /// Sets the largest side length.
+    pub fn max_side(mut self, max_side: f64) -> Self {
+        self.max_side = max_side;
+        self
+    }
+
+    /// Sets how many boxes may be drawn in total, rejected ones included.
+    pub fn max_attempts(mut self, max_attempts: usize) -> Self {
+        self.max_attempts = max_attempts;
+        self
+    }
+
+    /// The current parameter values, for listings.
+    pub fn parameters(&self) -> Vec<Parameter> {
+        vec![
+            Parameter::point("start", &self.start, "start state"),
+            Parameter::point("goal", &self.goal, "goal state"),
+            Parameter::integer("count", self.count, "number of boxes"),
+            Parameter::number("min_side", self.min_side, "smallest side length"),
+            Parameter::number("max_side", self.max_side, "largest side length"),
+            Parameter::integer("seed", self.seed, "seed of the layout"),
+            Parameter::integer(
+                "max_attempts",
+                self.max_attempts,
+                "boxes drawn at most, rejected ones included",
+            ),
+        ]
+    }
+
+    /// Builds the problem; its name is `random-rectangles-seed-<seed>`.
+    ///
+    /// # Errors
+    /// [`ProblemError::Dimension`] if `n < 2`; [`ProblemError::Parameter`] for side lengths
+    /// that are not finite and positive or out of order, or a start or goal of the wrong
+    /// length; [`ProblemError::RedrawLimit`] if `max_attempts` draws do not give `count`
+    /// boxes; [`ProblemError::State`] for a start or goal out of bounds.
+    pub fn build(&self) -> Result<Problem, ProblemError> {
+        let (name, n) = (Self::NAME, self.n);
+        check_dimension(name, n)?;
+        check_point(name, "start", &self.start, n)?;
+        check_point(name, "goal", &self.goal, n)?;
+        check_positive(name, "min_side", self.min_side)?;
+        check_positive(name, "max_side", self.max_side)?;
+        if self.min_side > self.max_side {
+            return Err(ProblemError::Parameter {
+                problem: name,
+                parameter: "min_side",
+                reason: format!(
+                    "is {}; it must not exceed `max_side` ({})",
+                    self.min_side, self.max_side
+                ),
+            });
+        }
+
+        let mut world = unit_world(n);
+        let space = spaces::RealVectorSpace::new(world.lower().to_vec(), world.upper().to_vec())
+            .map_err(ProblemError::Bounds)?;
+        let mut rng = SeededRng::seed_from_u64(self.seed);
+        let mut attempts = 0;
+        while world.obstacles().len() < self.count {
+            if attempts == self.max_attempts {
+                return Err(ProblemError::RedrawLimit {
+                    attempts,
+                    accepted: world.obstacles().len(),
+                    wanted: self.count,
+                });
+            }
+            attempts += 1;
+            let mut center = vec![0.0; n];
+            space.sample_uniform(&mut rng, &mut center);
+            let widths = (0..n)
+                .map(|_| self.min_side + (self.max_side - self.min_side) * rng.random::<f64>())
+                .collect();
+            let candidate = AxisBox::new(center, widths);
+            if !candidate.contains(&self.start) && !candidate.contains(&self.goal) {
+                world.add_obstacle(candidate)?;
+            }
+        }
+        let name = format!("{name}-seed-{}", self.seed);
+        Problem::new(name, world, self.start.clone(), vec![self.goal.clone()])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use validity::StateValidity;
+
+    #[test]
+    fn boxes_follow_the_distribution() {
+        let p = RandomRectangles::new(3).seed(11).build().unwrap();
+        assert_eq!(p.name(), "random-rectangles-seed-11");
+        let boxes = p.world().obstacles();
+        assert_eq!(boxes.len(), 35);
+        for b in boxes {
+            assert!(b.center.iter().all(|c| (-0.5..=0.5).contains(c)));
+            assert!(b.widths.iter().all(|w| (0.1..=0.2).contains(w)));
+            assert!(!b.contains(p.start()) && !b.contains(&p.goals()[0]));
+        }
+        assert!(p.world().is_valid(p.start()));
+    }
+
+    #[test]
+    fn impossible_layouts_fail_instead_of_looping() {
+        // Boxes covering the whole space always contain the start.
+        let err = RandomRectangles::new(2)
+            .min_side(3.0)
+            .max_side(3.0)
+            .max_attempts(500)
+            .build()
+            .unwrap_err();
+        assert_eq!(
+            err,
+            ProblemError::RedrawLimit {
+                attempts: 500,
+                accepted: 0,
+                wanted: 35
+            }
+        );
+    }
+
+    #[test]
+    fn side_lengths_are_checked() {
+        let err = RandomRectangles::new(2).min_side(0.3).build().unwrap_err();
+        assert!(matches!(
+            err,
+            ProblemError::Parameter {
+                parameter: "min_side",
+                ..
+            }
+        ));
+        // Equal sides are fine: every box is a cube of that side.
+        let p = RandomRectangles::new(2)
+            .min_side(0.15)
+            .max_side(0.15)
+            .build()
+            .unwrap();
+        assert!(
+            p.world()
+                .obstacles()
+                .iter()
+                .all(|b| b.widths == [0.15, 0.15])
+        );
+        // No boxes at all.
+        let p = RandomRectangles::new(2).count(0).build().unwrap();
+        assert!(p.world().obstacles().is_empty());
+    }
+}

@@ -1,0 +1,87 @@
+//! [`UniformSampler`]: valid states uniform over the whole space.
+
+use rand::SeedableRng;
+use spaces::{SeededRng, StateSpace, Stop};
+use validity::StateValidity;
+
+use crate::{CostBound, SampleError, Sampler, SamplerCounters};
+
+/// Uniform samples of the whole space, invalid ones rejected; the cost bound is ignored.
+///
+/// The uninformed baseline (OMPL's `UniformValidStateSampler`). Its
+/// [`sampled_measure`](Sampler::sampled_measure) is always the space's measure.
+///
+/// ```
+/// use samplers::{CostBound, Sampler, UniformSampler};
+/// use spaces::{Never, RealVectorSpace};
+/// use validity::{AxisBox, StateValidity, World};
+///
+/// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
+/// let world = World::new(vec![0.0; 2], vec![1.0; 2])
+///     .with_obstacle(AxisBox::cube(vec![0.5, 0.5], 0.5))?;
+/// let mut sampler = UniformSampler::new(7);
+/// let mut x = [0.0; 2];
+/// sampler.sample(&space, &world, CostBound::Solution(0.1), &Never, &mut x)?;
+/// assert!(world.is_valid(&x));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct UniformSampler {
+    rng: SeededRng,
+    counters: SamplerCounters,
+}
+
+impl UniformSampler {
+    /// A uniform sampler seeded with `seed`.
+    pub fn new(seed: u64) -> Self {
+        Self {
+            rng: SeededRng::seed_from_u64(seed),
+            counters: SamplerCounters::default(),
+        }
+    }
+}
+
+impl<S, V> Sampler<S, V> for UniformSampler
+where
+    S: StateSpace + ?Sized,
+    V: StateValidity + ?Sized,
+{
+    fn sample(
+        &mut self,
+        space: &S,
+        validity: &V,
+        _bound: CostBound,
+        stop: &dyn Stop,
+        out: &mut [f64],
+    ) -> Result<(), SampleError> {
+        if out.len() != space.dimension() {
+            return Err(SampleError::DimensionMismatch {
+                expected: space.dimension(),
+                got: out.len(),
+            });
+        }
+        loop {
+            if stop.should_stop() {
+                return Err(SampleError::Stopped);
+            }
+            space.sample_uniform(&mut self.rng, out);
+            self.counters.drawn += 1;
+            if validity.is_valid(out) {
+                self.counters.returned += 1;
+                return Ok(());
+            }
+        }
+    }
+
+    fn sampled_measure(&self, space: &S, _bound: CostBound) -> f64 {
+        space.measure()
+    }
+
+    fn reseed(&mut self, seed: u64) {
+        self.rng = SeededRng::seed_from_u64(seed);
+    }
+
+    fn counters(&self) -> SamplerCounters {
+        self.counters
+    }
+}
