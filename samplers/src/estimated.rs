@@ -158,6 +158,7 @@ where
 
     fn reseed(&mut self, seed: u64) {
         self.inner.reseed(seed);
+        self.clear();
     }
 
     fn counters(&self) -> SamplerCounters {
@@ -307,5 +308,16 @@ mod tests {
         ));
         sampler.clear();
         assert!(sampler.last_error().is_none());
+    }
+
+    #[test]
+    fn reseed_forgets_the_estimate() {
+        let (space, mut sampler) = wrapped(ExpansionRule::PerBatch);
+        sampler.observe_invalid_lazy_edge(FAILURE);
+        assert!(sampler.estimated_cost().is_some());
+        sampler.reseed(1);
+        assert_eq!(sampler.estimated_cost(), None);
+        assert!(!sampler.wants_batch());
+        assert_eq!(sampler.sampled_measure(&space, CostBound::Unbounded), 4.0);
     }
 }

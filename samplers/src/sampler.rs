@@ -95,7 +95,9 @@ pub trait Sampler<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     /// measure). Planners use it for the r-disc connection radius.
     fn sampled_measure(&self, space: &S, bound: CostBound) -> f64;
 
-    /// Restarts the random sequence from `seed`.
+    /// Returns the sampler to its freshly built state with a new seed: the random sequence
+    /// restarts from `seed` and anything learned from planner feedback (an estimated informed
+    /// set) is forgotten. Planners call it from `clear()` so no state leaks between queries.
     fn reseed(&mut self, seed: u64);
 
     /// Work counters so far.

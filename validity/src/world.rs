@@ -275,7 +275,8 @@ fn in_any(rows: &[f64], state: &[f64]) -> bool {
 impl StateValidity for World {
     #[inline]
     fn is_valid(&self, state: &[f64]) -> bool {
-        self.in_bounds(state) && (in_any(&self.anti_rows, state) || !self.in_obstacle(state))
+        // Most states are in no obstacle: test obstacles first, anti-obstacles only on a hit.
+        self.in_bounds(state) && (!self.in_obstacle(state) || in_any(&self.anti_rows, state))
     }
 }
 

@@ -1,0 +1,177 @@
+//! Criterion benchmarks of the hot primitives, per problem and dimension.
+//!
+//! Run: `cargo bench -p mit-star-benches --bench primitives`. Figures are recorded in
+//! `docs/benchmarks.md`; compare ratios measured in one run, not absolute numbers across machines.
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use problems::Problem;
+use rand::SeedableRng;
+use samplers::{AdaptiveSampler, CostBound, InformedSampler, Sampler};
+use spaces::{Never, SeededRng, StateSpace, States};
+use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+
+const DIMENSIONS: [usize; 4] = [2, 4, 8, 16];
+const PROBLEMS: [&str; 4] = [
+    "flanking-gap",
+    "dividing-walls",
+    "goal-enclosure",
+    "random-rectangles",
+];
+/// The paper's simulation resolution (fraction of the maximum extent).
+const RESOLUTION: f64 = 5e-6;
+
+fn problem(name: &str, n: usize) -> Problem {
+    problems::builtin(name, n, 1).expect("built-in problem")
+}
+
+/// 1024 states drawn uniformly in the problem's space (valid or not), for validity checks.
+fn uniform_states(problem: &Problem, seed: u64) -> States {
+    let space = problem.space();
+    let mut rng = SeededRng::seed_from_u64(seed);
+    let mut states = States::with_capacity(space.dimension(), 1024);
+    for _ in 0..1024 {
+        space.sample_uniform(&mut rng, states.push_zeroed());
+    }
+    states
+}
+
+/// A valid edge of length 0.1 in the problem's free space (found by seeded search).
+fn free_edge(problem: &Problem, checker: &mut DenseChecker) -> (Vec<f64>, Vec<f64>) {
+    let (space, world) = (problem.space(), problem.world());
+    let n = space.dimension();
+    let mut rng = SeededRng::seed_from_u64(7);
+    let (mut a, mut dir, mut b) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    loop {
+        space.sample_uniform(&mut rng, &mut a);
+        space.sample_uniform(&mut rng, &mut dir);
+        let norm = spaces::euclidean_distance(&dir, &vec![0.0; n]);
+        for i in 0..n {
+            b[i] = a[i] + 0.1 * dir[i] / norm;
+        }
+        if !(world.is_valid(&a) && world.is_valid(&b)) {
+            continue;
+        }
+        let mut progress = EdgeProgress::default();
+        if checker.check_full(space, world, &a, &b, &mut progress, &Never) == EdgeStatus::Valid {
+            return (a, b);
+        }
+    }
+}
+
+fn distance(c: &mut Criterion) {
+    let mut group = c.benchmark_group("distance");
+    for n in DIMENSIONS {
+        let p = problem("dividing-walls", n);
+        let states = uniform_states(&p, 3);
+        let space = p.space();
+        group.bench_function(BenchmarkId::from_parameter(n), |bench| {
+            let mut i = 0;
+            bench.iter(|| {
+                i = (i + 1) & 1023;
+                black_box(space.distance(&states[i], &states[(i + 1) & 1023]))
+            });
+        });
+    }
+    group.finish();
+}
+
+fn state_validity(c: &mut Criterion) {
+    let mut group = c.benchmark_group("validity_check");
+    for name in PROBLEMS {
+        for n in DIMENSIONS {
+            let p = problem(name, n);
+            let states = uniform_states(&p, 5);
+            let world = p.world();
+            group.bench_function(BenchmarkId::new(name, n), |bench| {
+                let mut i = 0;
+                bench.iter(|| {
+                    i = (i + 1) & 1023;
+                    black_box(world.is_valid(&states[i]))
+                });
+            });
+        }
+    }
+    group.finish();
+}
+
+fn full_edge_check(c: &mut Criterion) {
+    let mut group = c.benchmark_group("edge_check_0.1_at_5e-6");
+    for name in PROBLEMS {
+        for n in DIMENSIONS {
+            let p = problem(name, n);
+            let mut checker = DenseChecker::from_resolution(p.space(), RESOLUTION).unwrap();
+            let (a, b) = free_edge(&p, &mut checker);
+            let (space, world) = (p.space(), p.world());
+            group.bench_function(BenchmarkId::new(name, n), |bench| {
+                bench.iter(|| {
+                    let mut progress = EdgeProgress::default();
+                    let status = checker.check_full(space, world, &a, &b, &mut progress, &Never);
+                    assert_eq!(status, EdgeStatus::Valid);
+                    black_box(progress)
+                });
+            });
+        }
+    }
+    group.finish();
+}
+
+fn informed_sample(c: &mut Criterion) {
+    let mut group = c.benchmark_group("informed_sample");
+    for n in DIMENSIONS {
+        let p = problem("dividing-walls", n);
+        let (space, world) = (p.space(), p.world());
+        // The informed set of a solution 20 % above the straight line.
+        let bound = CostBound::Solution(1.2 * p.straight_line_cost());
+        let mut sampler = InformedSampler::new(space, p.start(), p.goals(), 11).unwrap();
+        let mut out = vec![0.0; n];
+        group.bench_function(BenchmarkId::from_parameter(n), |bench| {
+            bench.iter(|| {
+                sampler
+                    .sample(space, world, bound, &Never, &mut out)
+                    .unwrap();
+                black_box(out[0])
+            });
+        });
+    }
+    group.finish();
+}
+
+fn adaptive_sample(c: &mut Criterion) {
+    let mut group = c.benchmark_group("adaptive_sample");
+    for n in DIMENSIONS {
+        let p = problem("dividing-walls", n);
+        let (space, world) = (p.space(), p.world());
+        let mut sampler = AdaptiveSampler::new(space, p.start(), p.goals(), 13).unwrap();
+        let mut out = vec![0.0; n];
+        for (case, bound) in [
+            ("uniform", CostBound::Unbounded),
+            (
+                "estimated",
+                CostBound::Estimated(1.5 * p.straight_line_cost()),
+            ),
+        ] {
+            group.bench_function(BenchmarkId::new(case, n), |bench| {
+                bench.iter(|| {
+                    sampler
+                        .sample(space, world, bound, &Never, &mut out)
+                        .unwrap();
+                    black_box(out[0])
+                });
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group! {
+    name = primitives;
+    config = Criterion::default()
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .sample_size(30);
+    targets = distance, state_validity, full_edge_check, informed_sample, adaptive_sample
+}
+criterion_main!(primitives);
