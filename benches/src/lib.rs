@@ -1,1 +1,112 @@
-//! Criterion benchmarks live in `benches/`; this library is empty.
+//! The mit-star experiment harness and the `mit-star` command-line tool.
+//!
+//! One command runs the paper's experiments — planners × problems × dimensions × seeds — on
+//! every core, and writes what motion-planning researchers read with their own tools: raw runs
+//! (CSV, JSON lines), OMPL benchmark logs (`ompl_benchmark_statistics.py`), a Planner Arena
+//! database, SVG/PNG figures and the KPI table of the paper's Table I. Statistics follow PDT:
+//! medians of order statistics with nonparametric confidence intervals (unsolved runs count as
+//! `+∞`), Clopper–Pearson intervals for success rates. Every returned path is re-validated
+//! independently at full resolution.
+//!
+//! ```
+//! use mit_star_benches::{ExecutionOptions, Executor, Experiment, KpiTable};
+//!
+//! // MIT* and EIT* on the 2-D dividing walls, 2 runs of 20 ms each.
+//! let experiment = Experiment::from_toml_str(
+//!     r#"
+//!     runs = 2
+//!     planners = ["mit-star", "eit-star"]
+//!     [[problems]]
+//!     name = "dividing-walls"
+//!     dimensions = [2]
+//!     time = 0.02
+//!     "#,
+//!     "doc",
+//!     None,
+//! )?;
+//! let instances = experiment.instances()?;
+//! let options = ExecutionOptions { threads: 2, ..ExecutionOptions::default() };
+//! let results = Executor::new(options).run(&experiment, instances)?;
+//! assert_eq!(results.run_count(), 4);
+//! assert!(results.invalid_runs().is_empty());
+//! let table = KpiTable::from_results(&results);
+//! assert!(table.paper_markdown().contains("| dividing-walls R^2 |"));
+//! # Ok::<(), mit_star_benches::HarnessError>(())
+//! ```
+//!
+//! # Catalogue
+//! | item | what it is |
+//! |---|---|
+//! | [`Experiment`], [`experiment_file`], [`ShippedExperiment`] | an experiment; its TOML file format; the embedded `paper-table`, `ablation`, `smoke` |
+//! | [`PlannerSpec`], [`parse_configuration`], [`ParameterOverrides`] | a planner of an experiment; configuration names; `key = value` parameter changes |
+//! | [`ProblemSpec`], [`ProblemSource`], [`ProblemInstance`] | a problem over dimensions and layouts; built-in or file; one concrete instance with its budget |
+//! | [`RunJob`], [`Executor`], [`ExecutionOptions`] | the shuffled, seeded schedule of runs; parallel execution with progress and Ctrl-C |
+//! | [`RunRecord`], [`RunStatus`], [`PathValidation`] | what one run measured; how it ended; the independent path check |
+//! | [`ExperimentResults`], [`MachineInfo`], [`iso_timestamp`] | every finished run, with how, when and where it ran |
+//! | [`statistics`] | medians and their confidence intervals, Clopper–Pearson, anytime series |
+//! | [`KpiTable`], [`KpiRow`], [`t_init_gain`] | the paper's Table I and the full KPIs |
+//! | [`BenchmarkLog`] (+ [`PlannerLog`], [`Property`], [`PropertyType`], [`LogValue`], [`EnumType`], [`ExperimentProperty`]) | OMPL benchmark logs: write and parse |
+//! | [`PlannerArenaDatabase`] | the SQLite database Planner Arena reads |
+//! | [`write_runs_csv`], [`write_runs_jsonl`] | raw runs |
+//! | [`ExperimentFigure`], [`RunPicture`], [`planner_colours`] | figures of experiments; pictures of 2-D runs |
+//! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
+//! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `problems`, `planners`, `experiments`) |
+//! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
+//!
+//! The command line and the output formats are described in `docs/experiments.md`.
+
+#![forbid(unsafe_code)]
+
+mod benchmark_log;
+pub mod commands;
+mod error;
+mod executor;
+mod experiment;
+mod experiment_figure;
+pub mod experiment_file;
+mod experiment_results;
+mod kpi_table;
+mod log_parser;
+mod log_value;
+mod machine_info;
+mod parameter_overrides;
+mod path_validation;
+mod planner_arena_database;
+mod planner_spec;
+mod plot_style;
+mod problem_instance;
+mod problem_source;
+mod problem_spec;
+mod raw_runs;
+mod results_folder;
+mod run_job;
+mod run_picture;
+mod run_record;
+mod setup_text;
+mod shipped_experiment;
+pub mod statistics;
+
+pub use benchmark_log::{BenchmarkLog, OMPL_STATUS, PlannerLog};
+pub use error::HarnessError;
+pub use executor::{ExecutionOptions, Executor};
+pub use experiment::Experiment;
+pub use experiment_figure::ExperimentFigure;
+pub use experiment_results::ExperimentResults;
+pub use kpi_table::{KpiRow, KpiTable, t_init_gain};
+pub use log_value::{EnumType, ExperimentProperty, LogValue, Property, PropertyType};
+pub use machine_info::{MachineInfo, iso_timestamp};
+pub use parameter_overrides::ParameterOverrides;
+pub use path_validation::PathValidation;
+pub use planner_arena_database::PlannerArenaDatabase;
+pub use planner_spec::{PlannerSpec, parse_configuration};
+pub use plot_style::planner_colours;
+pub use problem_instance::ProblemInstance;
+pub use problem_source::ProblemSource;
+pub use problem_spec::ProblemSpec;
+pub use raw_runs::{CSV_COLUMNS, write_runs_csv, write_runs_jsonl};
+pub use results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
+pub use run_job::RunJob;
+pub use run_picture::RunPicture;
+pub use run_record::{RunRecord, RunStatus};
+pub(crate) use setup_text::setup_description;
+pub use shipped_experiment::ShippedExperiment;

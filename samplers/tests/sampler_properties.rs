@@ -92,15 +92,17 @@ fn estimated_adaptive(
     seed: u64,
 ) -> Estimated<AdaptiveSampler> {
     let mut sampler = Estimated::new(AdaptiveSampler::new(space, start, &[goal], seed).unwrap());
-    Sampler::<RealVectorSpace, World>::observe_invalid_lazy_edge(
-        &mut sampler,
-        LazyPathFailure {
-            cost_to_come: 0.3,
-            edge_estimate: 0.6,
-            cost_to_go: 0.3,
-        },
-    );
+    fail_lazy_path(&mut sampler);
     sampler
+}
+
+/// Tells a sampler that a lazy path through the slot failed (`ŝ_adm = 1.2`, `γ = 0.25`).
+fn fail_lazy_path(sampler: &mut dyn Sampler<RealVectorSpace, World>) {
+    sampler.observe_invalid_lazy_edge(LazyPathFailure {
+        cost_to_come: 0.3,
+        edge_estimate: 0.6,
+        cost_to_go: 0.3,
+    });
 }
 
 /// Stops after `limit` polls, counting them.
@@ -188,7 +190,12 @@ proptest! {
                 prop_assert_eq!(&a, &b, "{}", name);
                 sequence.push(a.clone());
             }
+            // Reseeding forgets planner feedback too: replay it to replay the sequence.
             one.reseed(seed);
+            prop_assert_eq!(one.estimated_cost(), None, "{} remembers feedback", name);
+            if *name == "estimated adaptive" {
+                fail_lazy_path(one.as_mut());
+            }
             for expected in &sequence {
                 one.sample(&space, &world, bound, &Never, &mut a).unwrap();
                 prop_assert_eq!(&a, expected, "{} after reseed", name);

@@ -1,0 +1,308 @@
+//! `mit-star bench`: run an experiment and write its results folder.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
+
+use clap::Args;
+
+use crate::commands::CommandOutcome;
+use crate::{
+    ExecutionOptions, Executor, Experiment, HarnessError, KpiTable, ParameterOverrides,
+    PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec, ResultsFolder, ShippedExperiment,
+    parse_configuration,
+};
+
+/// Options of `mit-star bench`.
+///
+/// Either an experiment (a file, or `--experiment NAME` for a shipped one) or the flags
+/// `--planners`, `--problem`, `--dim`/`--dims`, `--time`, `--instances`, `--resolution`
+/// describing one. `--runs`, `--seed`, `--confidence`, `--set`, `--threads` and `--output`
+/// apply to both.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// An experiment file (TOML); see `mit-star experiments --print smoke` for the format.
+    pub file: Option<PathBuf>,
+    /// A shipped experiment: paper-table, ablation, smoke.
+    #[arg(long, short, conflicts_with = "file")]
+    pub experiment: Option<String>,
+    /// Planner configurations, comma separated (flags mode; default mit-star,eit-star).
+    #[arg(long, value_delimiter = ',')]
+    pub planners: Vec<String>,
+    /// Built-in problem names or problem file paths, comma separated or repeated (flags mode).
+    #[arg(long = "problem", value_delimiter = ',')]
+    pub problems: Vec<String>,
+    /// Dimension of the built-in problems (flags mode).
+    #[arg(long, conflicts_with = "dims")]
+    pub dim: Option<usize>,
+    /// Dimensions, comma separated (flags mode).
+    #[arg(long, value_delimiter = ',')]
+    pub dims: Vec<usize>,
+    /// Seconds per run: one value, or one per dimension (flags mode).
+    #[arg(long, value_delimiter = ',')]
+    pub time: Vec<f64>,
+    /// Layouts of seeded problems (random-rectangles): seeds 0..K (flags mode).
+    #[arg(long)]
+    pub instances: Option<u64>,
+    /// Collision-check resolution instead of the problems' (flags mode).
+    #[arg(long)]
+    pub resolution: Option<f64>,
+    /// Name of the experiment (flags mode; names the default output folder).
+    #[arg(long)]
+    pub name: Option<String>,
+    /// Runs per planner and problem instance (default: the experiment's, or 100).
+    #[arg(long)]
+    pub runs: Option<usize>,
+    /// Base seed: run i uses seed + i (default: the experiment's, or 0).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Confidence of the medians' and success rates' intervals (default 0.99).
+    #[arg(long)]
+    pub confidence: Option<f64>,
+    /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Runs executing at the same time (default: every core).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Results folder (default results/NAME, NAME the experiment's); an existing database is appended to.
+    #[arg(long, short)]
+    pub output: Option<PathBuf>,
+    /// Do not draw the figures.
+    #[arg(long)]
+    pub no_plots: bool,
+    /// No progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+impl BenchArgs {
+    /// The experiment the arguments describe, with the command-line overrides applied.
+    ///
+    /// # Errors
+    /// Every input error: unknown names (listing the valid ones), malformed files (naming the
+    /// field), bad values, options that do not combine.
+    pub fn experiment(&self) -> Result<Experiment, HarnessError> {
+        let flags_mode = !self.planners.is_empty()
+            || !self.problems.is_empty()
+            || self.dim.is_some()
+            || !self.dims.is_empty()
+            || !self.time.is_empty()
+            || self.instances.is_some()
+            || self.resolution.is_some()
+            || self.name.is_some();
+        let experiment = match (&self.file, &self.experiment) {
+            (Some(_), _) | (_, Some(_)) if flags_mode => {
+                return Err(HarnessError::Usage(
+                    "--planners, --problem, --dim(s), --time, --instances, --resolution and \
+                     --name describe an experiment on the command line; they cannot be combined \
+                     with an experiment file or --experiment"
+                        .into(),
+                ));
+            }
+            (Some(path), _)
+                if !path.exists() && ShippedExperiment::find(&path.to_string_lossy()).is_ok() =>
+            {
+                Experiment::shipped(&path.to_string_lossy())?
+            }
+            (Some(path), _) => Experiment::from_file(path)?,
+            (None, Some(name)) => Experiment::shipped(name)?,
+            (None, None) => self.flags_experiment()?,
+        };
+        let mut overrides = ParameterOverrides::default();
+        for s in &self.set {
+            overrides.push_assignment(s)?;
+        }
+        let mut experiment = experiment.with_overrides(&overrides)?;
+        if let Some(runs) = self.runs {
+            experiment.runs = runs;
+        }
+        if let Some(seed) = self.seed {
+            experiment.seed = seed;
+        }
+        if let Some(confidence) = self.confidence {
+            experiment.confidence = confidence;
+        }
+        experiment.validate("command line")?;
+        Ok(experiment)
+    }
+
+    /// The experiment of flags mode.
+    fn flags_experiment(&self) -> Result<Experiment, HarnessError> {
+        let usage = |m: &str| HarnessError::Usage(m.to_owned());
+        if self.problems.is_empty() {
+            return Err(usage(
+                "give an experiment file, --experiment NAME, or --problem NAME (with --dim and --time)",
+            ));
+        }
+        if self.time.is_empty() {
+            return Err(usage("give the time budget per run with --time SECONDS"));
+        }
+        let planner_names = if self.planners.is_empty() {
+            vec!["mit-star".to_owned(), "eit-star".to_owned()]
+        } else {
+            self.planners.clone()
+        };
+        let planners = planner_names
+            .iter()
+            .map(|n| {
+                PlannerSpec::new(
+                    parse_configuration(n)?,
+                    None,
+                    &ParameterOverrides::default(),
+                )
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let dims: Vec<usize> = match self.dim {
+            Some(d) => vec![d],
+            None => self.dims.clone(),
+        };
+        let mut problems = Vec::new();
+        for text in &self.problems {
+            let source = ProblemSource::parse(text, None)?;
+            let dimensions = match source.fixed_dimension()? {
+                Some(n) if dims.is_empty() || dims == [n] => vec![n],
+                Some(n) => {
+                    return Err(HarnessError::Usage(format!(
+                        "problem file `{text}` is {n}-dimensional; --dim/--dims do not apply"
+                    )));
+                }
+                None if dims.is_empty() => {
+                    return Err(usage("give the dimension with --dim N or --dims N1,N2,…"));
+                }
+                None => dims.clone(),
+            };
+            let budgets = match self.time.len() {
+                1 => vec![self.time[0]; dimensions.len()],
+                n if n == dimensions.len() => self.time.clone(),
+                n => {
+                    return Err(HarnessError::Usage(format!(
+                        "--time has {n} values for {} dimensions; give one, or one per dimension",
+                        dimensions.len()
+                    )));
+                }
+            };
+            let instances = match self.instances {
+                Some(0) => return Err(usage("--instances must be at least 1")),
+                Some(k) if source.is_seeded() => (0..k).collect(),
+                Some(k) if k > 1 => {
+                    return Err(HarnessError::Usage(format!(
+                        "`{text}` does not depend on a seed: --instances does not apply"
+                    )));
+                }
+                _ => vec![0],
+            };
+            problems.push(ProblemSpec {
+                source,
+                dimensions,
+                budgets,
+                instances,
+                resolution: self.resolution,
+            });
+        }
+        let name = self.name.clone().unwrap_or_else(|| {
+            let first = &problems[0];
+            let dims: Vec<String> = first.dimensions.iter().map(|d| format!("n{d}")).collect();
+            let more = if problems.len() > 1 { "-and-more" } else { "" };
+            format!("{}-{}{more}", first.source.label(), dims.join("-"))
+        });
+        Ok(Experiment {
+            name,
+            description: String::new(),
+            planners,
+            problems,
+            runs: 100,
+            seed: 0,
+            confidence: 0.99,
+        })
+    }
+
+    /// Checks everything, runs the experiment, writes the results folder, prints the KPIs.
+    ///
+    /// # Errors
+    /// Input errors before any planning; write errors after.
+    pub fn run(&self, interrupt: Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
+        let experiment = self.experiment()?;
+        let instances = experiment.instances()?;
+        check_planners_build(&experiment, &instances)?;
+        let threads = match self.threads {
+            Some(0) => return Err(HarnessError::Usage("--threads must be at least 1".into())),
+            Some(t) => t,
+            None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        };
+        let output = self
+            .output
+            .clone()
+            .unwrap_or_else(|| Path::new("results").join(&experiment.name));
+        let mut folder = ResultsFolder::prepare(&output)?;
+        let jobs = instances.len() * experiment.planners.len() * experiment.runs;
+        let budget: f64 = instances.iter().map(|i| i.budget).sum::<f64>()
+            * (experiment.planners.len() * experiment.runs) as f64;
+        let concurrency = threads.min(jobs.max(1));
+        eprintln!(
+            "experiment `{}`: {} planners × {} problem instances × {} runs = {jobs} runs; \
+             {:.1} s of budget on {concurrency} threads ≈ {:.1} s",
+            experiment.name,
+            experiment.planners.len(),
+            instances.len(),
+            experiment.runs,
+            budget,
+            budget / concurrency as f64
+        );
+        let executor = Executor::new(ExecutionOptions {
+            threads,
+            progress: !self.quiet,
+            interrupt,
+        });
+        let results = executor.run(&experiment, instances)?;
+        if results.interrupted {
+            eprintln!(
+                "interrupted: writing the {} finished runs",
+                results.run_count()
+            );
+        }
+        let files = folder.write(&results, !self.no_plots)?;
+        let table = KpiTable::from_results(&results);
+        say!("{}", crate::kpi_markdown(&results, &table));
+        say!("Results in {}:", folder.path().display());
+        for f in files {
+            say!("  {}", f.display());
+        }
+        let invalid = results.invalid_runs();
+        if !invalid.is_empty() {
+            eprintln!(
+                "WARNING: {} runs returned paths that failed the independent validation (see kpi.md)",
+                invalid.len()
+            );
+        }
+        Ok(if results.interrupted {
+            CommandOutcome::Interrupted
+        } else if !invalid.is_empty() {
+            CommandOutcome::InvalidPaths
+        } else {
+            CommandOutcome::Success
+        })
+    }
+}
+
+/// Builds every planner once on every instance, so that a planner refusing a problem or its
+/// parameters is reported before any run.
+fn check_planners_build(
+    experiment: &Experiment,
+    instances: &[ProblemInstance],
+) -> Result<(), HarnessError> {
+    for instance in instances {
+        for spec in &experiment.planners {
+            mit_star::build_planner(
+                spec.configuration(),
+                &instance.problem,
+                &spec.parameters_for_seed(experiment.seed),
+            )
+            .map_err(|source| HarnessError::Build {
+                planner: format!("{} on {}", spec.name(), instance.id),
+                source,
+            })?;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,117 @@
+//! The listing subcommands: `problems`, `planners`, `experiments`.
+
+use clap::Args;
+use mit_star::{Configuration, Parameters};
+
+use crate::commands::CommandOutcome;
+use crate::{HarnessError, ShippedExperiment};
+
+/// Options of `mit-star problems`.
+#[derive(Debug, Args)]
+pub struct ProblemsArgs {
+    /// Show the defaults in this dimension (some depend on it).
+    #[arg(long, default_value_t = 2)]
+    pub dim: usize,
+}
+
+impl ProblemsArgs {
+    /// Prints every built-in family with its parameters.
+    ///
+    /// # Errors
+    /// [`HarnessError::Problem`] if a family cannot be built in `--dim` dimensions.
+    pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+        say!(
+            "Built-in problems (space [-0.5, 0.5]^n; defaults shown for n = {}):\n",
+            self.dim
+        );
+        for family in problems::catalogue() {
+            let problem = family
+                .build(self.dim, 0)
+                .map_err(|source| HarnessError::Problem {
+                    name: family.name().to_owned(),
+                    dimension: self.dim,
+                    source,
+                })?;
+            say!("{}", family.name());
+            say!("  {}", family.description());
+            if family.is_seeded() {
+                say!("  layout fixed by a seed (bench: `instances = K`, plan: `--instance S`)");
+            }
+            let optimum = problem
+                .optimum()
+                .map_or_else(|| "unknown".to_owned(), |o| format!("{o:.6}"));
+            say!(
+                "  straight line {:.6}, optimum {optimum}, resolution {} (step {:.3e})",
+                problem.straight_line_cost(),
+                problem.resolution(),
+                problem.step()
+            );
+            for p in family.parameters(self.dim) {
+                say!("    {:<22} {:<36} {}", p.name, p.value, p.meaning);
+            }
+            say!();
+        }
+        say!("A TOML problem file can be given instead of a name (`--problem path.toml`).");
+        Ok(CommandOutcome::Success)
+    }
+}
+
+/// Prints the configurations and the parameters with their defaults.
+///
+/// # Errors
+/// Never; the signature matches the other commands.
+pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
+    say!("Planner configurations (spec mit-star.md §8):\n");
+    let parts = |c: Configuration| match c {
+        Configuration::MitStar => {
+            "adaptive sampler, estimated informed set, length-related sparse checks"
+        }
+        Configuration::EitStar => "informed sampler, fixed sparse levels (1, 3, 7, … checks)",
+        Configuration::MitStarAs => "EIT* with the adaptive sampler",
+        Configuration::MitStarEis => "EIT* with the estimated informed set",
+        Configuration::MitStarSc => "EIT* with length-related sparse checks",
+    };
+    for c in Configuration::ALL {
+        say!("  {:<14} {:<10} {}", c.name(), c.label(), parts(c));
+    }
+    say!(
+        "\nParameters (override with `--set key=value`; `seed` and `resolution` are set by the harness):\n"
+    );
+    for (k, v) in Parameters::default().settings() {
+        say!("  {k:<36} {v}");
+    }
+    Ok(CommandOutcome::Success)
+}
+
+/// Options of `mit-star experiments`.
+#[derive(Debug, Args)]
+pub struct ExperimentsArgs {
+    /// Print this shipped experiment's file (to copy and edit).
+    #[arg(long, value_name = "NAME")]
+    pub print: Option<String>,
+}
+
+impl ExperimentsArgs {
+    /// Lists the shipped experiments or prints one.
+    ///
+    /// # Errors
+    /// [`HarnessError::UnknownExperiment`] for an unknown name.
+    pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+        if let Some(name) = &self.print {
+            {
+                use std::io::Write as _;
+                let _ = write!(
+                    std::io::stdout().lock(),
+                    "{}",
+                    ShippedExperiment::find(name)?.text
+                );
+            }
+            return Ok(CommandOutcome::Success);
+        }
+        say!("Shipped experiments (run with `mit-star bench --experiment NAME`):\n");
+        for e in ShippedExperiment::all() {
+            say!("  {:<12} {}", e.name, e.summary);
+        }
+        Ok(CommandOutcome::Success)
+    }
+}

@@ -1,0 +1,97 @@
+//! The `mit-star` command line: [`Cli`] and its subcommands.
+
+/// `println!` that ignores a closed stdout (`mit-star problems | head` must not panic).
+macro_rules! say {
+    () => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout().lock());
+    }};
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout().lock(), $($arg)*);
+    }};
+}
+
+mod bench;
+mod listings;
+mod plan;
+
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
+
+use clap::{Parser, Subcommand};
+
+pub use bench::BenchArgs;
+pub use listings::{ExperimentsArgs, ProblemsArgs};
+pub use plan::PlanArgs;
+
+use crate::HarnessError;
+
+/// `mit-star`: run MIT*, EIT* and their ablations on benchmark problems, and the paper's
+/// experiments, producing OMPL logs, Planner Arena databases, plots and KPI tables.
+#[derive(Debug, Parser)]
+#[command(
+    name = "mit-star",
+    version,
+    about = "Run MIT*, EIT* and their ablations on benchmark problems, and the paper's experiments: OMPL logs, Planner Arena databases, plots and KPI tables.",
+    long_about = None
+)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Run one planner on one problem; print the result and draw 2-D runs.
+    Plan(PlanArgs),
+    /// Run an experiment (file, shipped name, or flags) and write its results folder.
+    Bench(BenchArgs),
+    /// List the built-in problems with their parameters and defaults.
+    Problems(ProblemsArgs),
+    /// List the planner configurations and their parameters' defaults.
+    Planners,
+    /// List the shipped experiments, or print one.
+    Experiments(ExperimentsArgs),
+}
+
+/// How a successful command ended, for the exit code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CommandOutcome {
+    /// Everything went well (exit code 0).
+    Success,
+    /// Some returned paths failed the independent validation (exit code 3; results written).
+    InvalidPaths,
+    /// Interrupted with Ctrl-C (exit code 130; finished runs written).
+    Interrupted,
+}
+
+impl CommandOutcome {
+    /// The process exit code.
+    pub fn exit_code(self) -> ExitCode {
+        match self {
+            Self::Success => ExitCode::SUCCESS,
+            Self::InvalidPaths => ExitCode::from(3),
+            Self::Interrupted => ExitCode::from(130),
+        }
+    }
+}
+
+impl Cli {
+    /// Runs the command. `interrupt` is raised by the caller's Ctrl-C handler.
+    ///
+    /// # Errors
+    /// Whatever the command reports; input errors are found before any planning.
+    pub fn run(&self, interrupt: Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
+        match &self.command {
+            Command::Plan(args) => args.run(),
+            Command::Bench(args) => args.run(interrupt),
+            Command::Problems(args) => args.run(),
+            Command::Planners => listings::print_planners(),
+            Command::Experiments(args) => args.run(),
+        }
+    }
+}

@@ -1,0 +1,234 @@
+//! `mit-star plan`: one planner, one problem, one run.
+
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+
+use clap::Args;
+
+use crate::commands::CommandOutcome;
+use crate::kpi_table::number;
+use crate::{
+    HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, RunJob,
+    RunPicture, RunRecord, RunStatus, parse_configuration, problem_source::sanitise,
+};
+
+/// Options of `mit-star plan`.
+#[derive(Debug, Args)]
+pub struct PlanArgs {
+    /// Planner configuration: mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc.
+    #[arg(long, short, default_value = "mit-star")]
+    pub planner: String,
+    /// Built-in problem name (see `mit-star problems`) or a problem file path.
+    #[arg(long, required_unless_present = "problem_file")]
+    pub problem: Option<String>,
+    /// A TOML problem file.
+    #[arg(long, conflicts_with = "problem")]
+    pub problem_file: Option<PathBuf>,
+    /// Dimension of a built-in problem (default 2).
+    #[arg(long)]
+    pub dim: Option<usize>,
+    /// Layout seed of seeded problems (random-rectangles).
+    #[arg(long, default_value_t = 0)]
+    pub instance: u64,
+    /// Time budget in seconds (planner construction included).
+    #[arg(long, default_value_t = 1.0)]
+    pub time: f64,
+    /// The planner's seed.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Parameter override, e.g. `--set batch_size=200` (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Collision-check resolution (fraction of the maximum extent) instead of the problem's.
+    #[arg(long)]
+    pub resolution: Option<f64>,
+    /// Folder for the picture of a 2-D run.
+    #[arg(long, short, default_value = "results/plan")]
+    pub output: PathBuf,
+    /// Do not draw the picture of a 2-D run.
+    #[arg(long)]
+    pub no_picture: bool,
+    /// Print the result as JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+impl PlanArgs {
+    /// Runs the planner and prints the result.
+    ///
+    /// # Errors
+    /// Unknown planner or problem, bad parameters, dimension or budget, an unwritable output
+    /// folder (all before planning), or a failed picture.
+    pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+        let configuration = parse_configuration(&self.planner)?;
+        let mut overrides = ParameterOverrides::default();
+        for s in &self.set {
+            overrides.push_assignment(s)?;
+        }
+        let spec = PlannerSpec::new(configuration, None, &overrides)?;
+        if !(self.time.is_finite() && self.time > 0.0) {
+            return Err(HarnessError::Usage(format!(
+                "--time {} is not a positive number of seconds",
+                self.time
+            )));
+        }
+        let source = match (&self.problem, &self.problem_file) {
+            (_, Some(path)) => ProblemSource::file(path)?,
+            (Some(text), None) => ProblemSource::parse(text, None)?,
+            (None, None) => return Err(HarnessError::Usage("give --problem NAME|PATH".into())),
+        };
+        let dimension = match (source.fixed_dimension()?, self.dim) {
+            (Some(n), Some(d)) if n != d => {
+                return Err(HarnessError::Usage(format!(
+                    "the problem file is {n}-dimensional; --dim {d} does not apply"
+                )));
+            }
+            (Some(n), _) => n,
+            (None, d) => d.unwrap_or(2),
+        };
+        let problem = source.build(dimension, self.instance, self.resolution)?;
+        let seeded = source.is_seeded();
+        let instance = ProblemInstance {
+            id: ProblemInstance::make_id(
+                &source.label(),
+                dimension,
+                seeded.then_some(self.instance),
+            ),
+            label: source.label(),
+            source,
+            dimension,
+            instance: self.instance,
+            budget: self.time,
+            problem,
+        };
+        // Build once before timing, so parameter errors surface as errors.
+        mit_star::build_planner(
+            configuration,
+            &instance.problem,
+            &spec.parameters_for_seed(self.seed),
+        )
+        .map_err(|source| HarnessError::Build {
+            planner: spec.name().to_owned(),
+            source,
+        })?;
+        let picture = dimension == 2 && !self.no_picture;
+        if picture {
+            crate::writable_folder(&self.output)?;
+        }
+        let job = RunJob {
+            instance: 0,
+            planner: 0,
+            run: 0,
+            seed: self.seed,
+        };
+        let (record, planner) = job
+            .execute_keeping_planner(&instance, &spec, &AtomicBool::new(false))
+            .ok_or_else(|| HarnessError::Usage("the run was interrupted".into()))?;
+        let mut files = Vec::new();
+        if picture && let Some(snapshot) = planner.as_ref().and_then(|p| p.snapshot()) {
+            let stem = format!(
+                "{}-{}-seed{}",
+                instance.id,
+                sanitise(configuration.name()),
+                self.seed
+            );
+            let svg = self.output.join(format!("{stem}.svg"));
+            let png = self.output.join(format!("{stem}.png"));
+            let title = format!(
+                "{} on {} · seed {} · {} s · cost {}",
+                spec.name(),
+                instance.title(),
+                self.seed,
+                self.time,
+                number(record.final_cost.unwrap_or(f64::INFINITY))
+            );
+            RunPicture::new(&instance.problem, &snapshot, &record.path, title)?.save(&svg, &png)?;
+            files.extend([svg, png]);
+        }
+        if self.json {
+            let mut value = serde_json::to_value(&record).map_err(|e| HarnessError::Serialise {
+                path: "stdout".into(),
+                message: e.to_string(),
+            })?;
+            if let Some(o) = value.as_object_mut() {
+                o.insert("optimum".into(), instance.problem.optimum().into());
+                let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+                o.insert("files".into(), names.into());
+            }
+            say!("{value}");
+        } else {
+            print_record(&record, &instance, &files);
+        }
+        if let Some(e) = &record.error {
+            return Err(HarnessError::Planning {
+                planner: spec.name().to_owned(),
+                source: mit_star::PlannerError::Internal(e.clone()),
+            });
+        }
+        Ok(if record.status == RunStatus::InvalidPath {
+            CommandOutcome::InvalidPaths
+        } else {
+            CommandOutcome::Success
+        })
+    }
+}
+
+/// The human-readable report of one run.
+fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
+    say!(
+        "{} on {} (seed {}, budget {} s)",
+        r.planner,
+        instance.title(),
+        r.seed,
+        r.budget
+    );
+    let validation = r.validation.as_ref();
+    match r.status {
+        RunStatus::Solved => say!(
+            "  solved; path validated independently at full resolution ({} states checked)",
+            validation.map_or(0, |v| v.states_checked)
+        ),
+        RunStatus::Unsolved => say!("  no solution within the budget"),
+        RunStatus::InvalidPath => say!(
+            "  INVALID PATH: the returned path failed the independent validation: {}",
+            validation
+                .and_then(|v| v.failure.clone())
+                .unwrap_or_default()
+        ),
+        RunStatus::Error => say!("  error: {}", r.error.clone().unwrap_or_default()),
+    }
+    let optimum = instance
+        .problem
+        .optimum()
+        .map_or_else(|| "unknown".to_owned(), |o| format!("{o:.6}"));
+    say!(
+        "  initial solution: {} s, cost {}",
+        number(r.initial_time.unwrap_or(f64::INFINITY)),
+        number(r.initial_cost.unwrap_or(f64::INFINITY))
+    );
+    say!(
+        "  final cost: {} after {} improvements (straight line {:.6}, optimum {optimum})",
+        number(r.final_cost.unwrap_or(f64::INFINITY)),
+        r.trace.len(),
+        instance.problem.straight_line_cost()
+    );
+    say!(
+        "  time: {:.4} s in total, {:.6} s to build the planner",
+        r.run_time,
+        r.setup_time
+    );
+    say!("  counters:");
+    for (name, value) in r.counter_values() {
+        say!("    {name:<28} {value}");
+    }
+    if !r.path.is_empty() {
+        say!("  path ({} states):", r.path.len());
+        for state in &r.path {
+            let coordinates: Vec<String> = state.iter().map(|x| format!("{x:.6}")).collect();
+            say!("    ({})", coordinates.join(", "));
+        }
+    }
+    for f in files {
+        say!("  picture: {}", f.display());
+    }
+}

@@ -1,0 +1,204 @@
+//! [`HarnessError`]: everything that can go wrong in the harness, each naming what is wrong.
+
+use std::path::PathBuf;
+
+use thiserror::Error;
+
+/// What went wrong. Input errors (unknown names, bad values, malformed files, unwritable
+/// folders) are found before any planning starts; each message names the offending item and,
+/// where there is a fixed set of valid names, lists them.
+#[derive(Debug, Error)]
+pub enum HarnessError {
+    /// A planner configuration name is not known.
+    #[error("unknown planner `{name}`; valid planners: {known}")]
+    UnknownPlanner {
+        /// The name given.
+        name: String,
+        /// The valid names, comma separated.
+        known: String,
+    },
+    /// A built-in problem name is not known (and no file of that name exists).
+    #[error(
+        "unknown problem `{name}` (not a built-in problem and no such file); built-in problems: {known}"
+    )]
+    UnknownProblem {
+        /// The name given.
+        name: String,
+        /// The built-in names, comma separated.
+        known: String,
+    },
+    /// A shipped experiment name is not known.
+    #[error("unknown experiment `{name}`; shipped experiments: {known}")]
+    UnknownExperiment {
+        /// The name given.
+        name: String,
+        /// The shipped names, comma separated.
+        known: String,
+    },
+    /// A problem could not be built (for example a dimension the family does not support).
+    #[error("problem `{name}` in {dimension} dimensions: {source}")]
+    Problem {
+        /// The problem's name.
+        name: String,
+        /// The dimension asked for.
+        dimension: usize,
+        /// Why the problem refused.
+        #[source]
+        source: problems::ProblemError,
+    },
+    /// A problem file could not be read or parsed.
+    #[error("problem file `{}`: {source}", path.display())]
+    ProblemFile {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        #[source]
+        source: problems::ProblemFileError,
+    },
+    /// A parameter override is malformed: unknown key, wrong type, or a value the planner
+    /// refuses.
+    #[error("parameter `{key}`: {message}")]
+    Parameter {
+        /// The parameter's name.
+        key: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// The planner refused its parameters or the problem.
+    #[error("planner `{planner}`: {source}")]
+    Build {
+        /// The planner's name.
+        planner: String,
+        /// Why it refused.
+        #[source]
+        source: mit_star::BuildError,
+    },
+    /// A planner refused the query while planning.
+    #[error("planner `{planner}`: {source}")]
+    Planning {
+        /// The planner's name.
+        planner: String,
+        /// Why it refused.
+        #[source]
+        source: mit_star::PlannerError,
+    },
+    /// An experiment file is not valid TOML or does not follow the experiment schema.
+    #[error("experiment file `{file}`: {message}")]
+    ExperimentFile {
+        /// The file (or shipped experiment) name.
+        file: String,
+        /// The parser's message (it names the field and the line).
+        message: String,
+    },
+    /// A field of an experiment (file or command line) has a value that cannot be used.
+    #[error("experiment `{experiment}`: `{field}` {message}")]
+    ExperimentField {
+        /// The experiment's file or name.
+        experiment: String,
+        /// The field, e.g. `problems[1].time`.
+        field: String,
+        /// What is wrong with its value.
+        message: String,
+    },
+    /// The command line combines options that do not go together, or lacks a required one.
+    #[error("{0}")]
+    Usage(String),
+    /// The output folder cannot be created or written.
+    #[error("output folder `{}` is not writable: {source}", path.display())]
+    OutputFolder {
+        /// The folder.
+        path: PathBuf,
+        /// The operating system's error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// Reading or writing a file failed.
+    #[error("`{}`: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The operating system's error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// The Planner Arena database could not be written or read.
+    #[error("database `{}`: {source}", path.display())]
+    Database {
+        /// The database file.
+        path: PathBuf,
+        /// SQLite's error.
+        #[source]
+        source: rusqlite::Error,
+    },
+    /// A plot or picture could not be drawn.
+    #[error("plot `{}`: {message}", path.display())]
+    Plot {
+        /// The image file.
+        path: PathBuf,
+        /// The drawing backend's message.
+        message: String,
+    },
+    /// Raw results could not be serialised.
+    #[error("`{}`: {message}", path.display())]
+    Serialise {
+        /// The file.
+        path: PathBuf,
+        /// The serialiser's message.
+        message: String,
+    },
+    /// An OMPL benchmark log does not follow the grammar.
+    #[error("benchmark log line {line}: {message}")]
+    LogSyntax {
+        /// 1-based line number.
+        line: usize,
+        /// What was expected.
+        message: String,
+    },
+}
+
+impl HarnessError {
+    /// `true` for errors in what the user gave (names, values, files, folders): the command
+    /// line reports them with exit code 2; other errors exit with 1.
+    pub fn is_input_error(&self) -> bool {
+        !matches!(
+            self,
+            Self::Io { .. }
+                | Self::Database { .. }
+                | Self::Plot { .. }
+                | Self::Serialise { .. }
+                | Self::Planning { .. }
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_the_culprit_and_list_alternatives() {
+        let e = HarnessError::UnknownPlanner {
+            name: "rrt".into(),
+            known: "mit-star, eit-star".into(),
+        };
+        assert_eq!(
+            e.to_string(),
+            "unknown planner `rrt`; valid planners: mit-star, eit-star"
+        );
+        assert!(e.is_input_error());
+        let e = HarnessError::ExperimentField {
+            experiment: "x.toml".into(),
+            field: "problems[1].time".into(),
+            message: "is -1; it must be positive".into(),
+        };
+        assert_eq!(
+            e.to_string(),
+            "experiment `x.toml`: `problems[1].time` is -1; it must be positive"
+        );
+        let e = HarnessError::Io {
+            path: "a".into(),
+            source: std::io::Error::other("x"),
+        };
+        assert!(!e.is_input_error());
+    }
+}

@@ -1,0 +1,305 @@
+//! [`Experiment`]: planners × problem instances × runs, with the seeds and confidence of the
+//! statistics.
+
+use std::path::Path;
+
+use crate::experiment_file::ExperimentFile;
+use crate::{
+    HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec,
+    ShippedExperiment,
+};
+
+/// An experiment: every planner runs `runs` times on every problem instance; run `i` of every
+/// planner uses seed `seed + i`.
+///
+/// Load one from a TOML [experiment file](crate::experiment_file), a
+/// [shipped experiment](ShippedExperiment), or build it directly.
+///
+/// ```
+/// use mit_star_benches::Experiment;
+/// let e = Experiment::shipped("ablation")?;
+/// assert_eq!(e.planners.len(), 5);
+/// let ids: Vec<String> = e.instances()?.into_iter().map(|i| i.id).collect();
+/// assert_eq!(ids, ["goal-enclosure-n2", "dividing-walls-n4"]);
+/// # Ok::<(), mit_star_benches::HarnessError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Experiment {
+    /// The experiment's name (names the default results folder).
+    pub name: String,
+    /// One line on what it measures.
+    pub description: String,
+    /// The planners, in report order.
+    pub planners: Vec<PlannerSpec>,
+    /// The problems.
+    pub problems: Vec<ProblemSpec>,
+    /// Runs per planner and problem instance.
+    pub runs: usize,
+    /// Base seed: run `i` uses `seed + i`.
+    pub seed: u64,
+    /// Confidence of the medians' and success rates' intervals, in `(0, 1)`.
+    pub confidence: f64,
+}
+
+impl Experiment {
+    /// Reads an experiment file.
+    ///
+    /// # Errors
+    /// [`HarnessError::Io`] if it cannot be read, [`HarnessError::ExperimentFile`] or
+    /// [`HarnessError::ExperimentField`] if it is malformed.
+    pub fn from_file(path: &Path) -> Result<Self, HarnessError> {
+        let text = std::fs::read_to_string(path).map_err(|source| HarnessError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let origin = path.display().to_string();
+        let stem = path
+            .file_stem()
+            .map_or_else(|| "experiment".into(), |s| s.to_string_lossy().into_owned());
+        ExperimentFile::parse(&text, &origin)?.into_experiment(&origin, &stem, path.parent())
+    }
+
+    /// A shipped experiment (`paper-table`, `ablation`, `smoke`), embedded in the binary.
+    ///
+    /// # Errors
+    /// [`HarnessError::UnknownExperiment`] listing the shipped names.
+    pub fn shipped(name: &str) -> Result<Self, HarnessError> {
+        let shipped = ShippedExperiment::find(name)?;
+        Self::from_toml_str(shipped.text, shipped.name, None)
+    }
+
+    /// Parses the text of an experiment file; `name` names it in errors and by default.
+    ///
+    /// # Errors
+    /// As [`from_file`](Self::from_file).
+    pub fn from_toml_str(
+        text: &str,
+        name: &str,
+        base: Option<&Path>,
+    ) -> Result<Self, HarnessError> {
+        ExperimentFile::parse(text, name)?.into_experiment(name, name, base)
+    }
+
+    /// Checks the experiment's own fields: at least one planner and problem, unique planner
+    /// names, at least one run, a confidence in `(0, 1)`.
+    ///
+    /// # Errors
+    /// [`HarnessError::ExperimentField`] naming the field; `origin` names the experiment.
+    pub fn validate(&self, origin: &str) -> Result<(), HarnessError> {
+        let bad = |field: &str, message: String| HarnessError::ExperimentField {
+            experiment: origin.to_owned(),
+            field: field.to_owned(),
+            message,
+        };
+        if self.planners.is_empty() {
+            return Err(bad(
+                "planners",
+                "is empty; name at least one planner".into(),
+            ));
+        }
+        for (i, p) in self.planners.iter().enumerate() {
+            if self.planners[..i].iter().any(|q| q.name() == p.name()) {
+                return Err(bad(
+                    &format!("planners[{i}]"),
+                    format!(
+                        "repeats the name `{}`; give planners of the same configuration distinct `name`s",
+                        p.name()
+                    ),
+                ));
+            }
+        }
+        if self.problems.is_empty() {
+            return Err(bad(
+                "problems",
+                "is empty; give at least one problem".into(),
+            ));
+        }
+        if self.runs == 0 {
+            return Err(bad("runs", "is 0; it must be at least 1".into()));
+        }
+        if !(self.confidence > 0.0 && self.confidence < 1.0) {
+            return Err(bad(
+                "confidence",
+                format!("is {}; it must lie in (0, 1), e.g. 0.99", self.confidence),
+            ));
+        }
+        if self.seed.checked_add(self.runs as u64).is_none() {
+            return Err(bad("seed", format!("{} + runs overflows", self.seed)));
+        }
+        Ok(())
+    }
+
+    /// Every problem instance, in order (problems, then dimensions, then layout seeds). Builds
+    /// every problem, so a dimension a family does not support is reported here, before any
+    /// planning.
+    ///
+    /// # Errors
+    /// As [`ProblemSpec::instances`]; [`HarnessError::Usage`] when two instances would have
+    /// the same id.
+    pub fn instances(&self) -> Result<Vec<ProblemInstance>, HarnessError> {
+        let mut all: Vec<ProblemInstance> = Vec::new();
+        for spec in &self.problems {
+            for instance in spec.instances()? {
+                if all.iter().any(|i| i.id == instance.id) {
+                    return Err(HarnessError::Usage(format!(
+                        "problem instance `{}` appears twice in the experiment",
+                        instance.id
+                    )));
+                }
+                all.push(instance);
+            }
+        }
+        Ok(all)
+    }
+
+    /// The experiment with `overrides` applied on top of every planner's own.
+    ///
+    /// # Errors
+    /// [`HarnessError::Parameter`] if an override is refused.
+    pub fn with_overrides(mut self, overrides: &ParameterOverrides) -> Result<Self, HarnessError> {
+        if overrides.is_empty() {
+            return Ok(self);
+        }
+        for p in &mut self.planners {
+            *p = PlannerSpec::new(
+                p.configuration(),
+                Some(p.name().to_owned()),
+                &p.overrides().then(overrides),
+            )?;
+        }
+        Ok(self)
+    }
+
+    /// The experiment as an experiment file (written to the results folder, so that a run can
+    /// be repeated exactly).
+    pub fn to_toml(&self) -> String {
+        let mut t = toml::Table::new();
+        t.insert("name".into(), self.name.clone().into());
+        if !self.description.is_empty() {
+            t.insert("description".into(), self.description.clone().into());
+        }
+        t.insert("runs".into(), (self.runs as i64).into());
+        t.insert("seed".into(), (self.seed as i64).into());
+        t.insert("confidence".into(), self.confidence.into());
+        let planners: Vec<toml::Value> = self
+            .planners
+            .iter()
+            .map(|p| {
+                let mut e = toml::Table::new();
+                e.insert("configuration".into(), p.configuration().name().into());
+                e.insert("name".into(), p.name().into());
+                let overrides: toml::Table = p
+                    .overrides()
+                    .entries()
+                    .map(|(k, v)| (k.to_owned(), v.clone()))
+                    .collect();
+                if !overrides.is_empty() {
+                    e.insert("parameters".into(), overrides.into());
+                }
+                e.into()
+            })
+            .collect();
+        t.insert("planners".into(), planners.into());
+        let problems: Vec<toml::Value> = self
+            .problems
+            .iter()
+            .map(|p| {
+                let mut e = toml::Table::new();
+                match &p.source {
+                    ProblemSource::Builtin(name) => {
+                        e.insert("name".into(), name.clone().into());
+                        let dims: Vec<toml::Value> =
+                            p.dimensions.iter().map(|&d| (d as i64).into()).collect();
+                        e.insert("dimensions".into(), dims.into());
+                    }
+                    ProblemSource::File(path) => {
+                        let absolute = std::fs::canonicalize(path).unwrap_or_else(|_| path.clone());
+                        e.insert("file".into(), absolute.display().to_string().into());
+                    }
+                }
+                let time: Vec<toml::Value> = p.budgets.iter().map(|&b| b.into()).collect();
+                e.insert("time".into(), time.into());
+                if p.source.is_seeded() {
+                    let seeds: Vec<toml::Value> =
+                        p.instances.iter().map(|&s| (s as i64).into()).collect();
+                    e.insert("instance_seeds".into(), seeds.into());
+                }
+                if let Some(r) = p.resolution {
+                    e.insert("resolution".into(), r.into());
+                }
+                e.into()
+            })
+            .collect();
+        t.insert("problems".into(), problems.into());
+        toml::to_string(&t).unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shipped_experiments_load_and_round_trip() {
+        for shipped in ShippedExperiment::all() {
+            let e = Experiment::shipped(shipped.name).unwrap();
+            assert!(!e.instances().unwrap().is_empty(), "{}", shipped.name);
+            let again = Experiment::from_toml_str(&e.to_toml(), shipped.name, None).unwrap();
+            assert_eq!(again, e, "{}", shipped.name);
+        }
+    }
+
+    #[test]
+    fn the_paper_table_has_the_papers_budgets() {
+        let e = Experiment::shipped("paper-table").unwrap();
+        assert_eq!(e.runs, 100);
+        let names: Vec<&str> = e.planners.iter().map(PlannerSpec::name).collect();
+        assert_eq!(names, ["EIT*", "MIT*"]);
+        let instances = e.instances().unwrap();
+        // FG, DW, GE: 3 dimensions each; RR: 3 dimensions × 10 layouts.
+        assert_eq!(instances.len(), 9 + 30);
+        let budget = |id: &str| instances.iter().find(|i| i.id == id).unwrap().budget;
+        assert_eq!(budget("flanking-gap-n16"), 0.20);
+        assert_eq!(budget("random-rectangles-n8-i9"), 2.00);
+        assert_eq!(budget("dividing-walls-n4"), 0.30);
+        assert_eq!(budget("goal-enclosure-n8"), 2.00);
+    }
+
+    #[test]
+    fn overrides_and_validation() {
+        let e = Experiment::shipped("ablation").unwrap();
+        let o = ParameterOverrides::default()
+            .with_assignment("batch_size=7")
+            .unwrap();
+        let e = e.with_overrides(&o).unwrap();
+        assert!(
+            e.planners
+                .iter()
+                .all(|p| p.parameters_for_seed(0).batch_size == 7)
+        );
+        let mut bad = e.clone();
+        bad.confidence = 1.0;
+        assert!(
+            bad.validate("x")
+                .unwrap_err()
+                .to_string()
+                .contains("`confidence`")
+        );
+        let mut bad = e.clone();
+        bad.planners.push(bad.planners[0].clone());
+        assert!(
+            bad.validate("x")
+                .unwrap_err()
+                .to_string()
+                .contains("repeats the name `MIT*`")
+        );
+        let mut bad = e;
+        bad.problems.push(bad.problems[0].clone());
+        assert!(
+            bad.instances()
+                .unwrap_err()
+                .to_string()
+                .contains("appears twice")
+        );
+    }
+}

@@ -1,0 +1,136 @@
+//! The look shared by every figure: the embedded font and the planners' colours.
+
+use std::sync::Once;
+
+use mit_star::Configuration;
+use plotters::style::{FontStyle, RGBColor};
+
+use crate::PlannerSpec;
+
+static FONT: Once = Once::new();
+
+/// Registers the embedded font (Noto Sans Regular, SIL Open Font License, from the
+/// `ttf-noto-sans` crate) as plotters' `sans-serif`, once per process. No system font is
+/// needed, so PNG text renders the same everywhere.
+pub(crate) fn ensure_font() {
+    FONT.call_once(|| {
+        let _ =
+            plotters::style::register_font("sans-serif", FontStyle::Normal, ttf_noto_sans::REGULAR);
+    });
+}
+
+/// Fixed colours for the paper's configurations, so MIT* and EIT* look the same in every
+/// figure of every experiment.
+fn configuration_colour(c: Configuration) -> RGBColor {
+    match c {
+        Configuration::MitStar => RGBColor(214, 39, 40),
+        Configuration::EitStar => RGBColor(31, 119, 180),
+        Configuration::MitStarAs => RGBColor(44, 160, 44),
+        Configuration::MitStarEis => RGBColor(148, 103, 189),
+        Configuration::MitStarSc => RGBColor(255, 127, 14),
+    }
+}
+
+/// Colours for further planners of an already coloured configuration.
+const EXTRA: [RGBColor; 6] = [
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+    RGBColor(0, 0, 0),
+];
+
+/// One colour per planner, in experiment order: the first planner of each configuration gets
+/// that configuration's fixed colour (MIT* red, EIT* blue, MIT*-AS green, MIT*-EIS purple,
+/// MIT*-SC orange); further planners of the same configuration get distinct extra colours.
+///
+/// ```
+/// use mit_star_benches::{planner_colours, ParameterOverrides, PlannerSpec};
+/// use mit_star::Configuration::{EitStar, MitStar};
+/// let o = ParameterOverrides::default();
+/// let planners = [PlannerSpec::new(EitStar, None, &o)?, PlannerSpec::new(MitStar, None, &o)?];
+/// let colours = planner_colours(&planners);
+/// assert_eq!(colours[1], plotters::style::RGBColor(214, 39, 40));
+/// # Ok::<(), mit_star_benches::HarnessError>(())
+/// ```
+pub fn planner_colours(planners: &[PlannerSpec]) -> Vec<RGBColor> {
+    let mut extra = EXTRA.iter().cycle();
+    planners
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let first = !planners[..i]
+                .iter()
+                .any(|q| q.configuration() == p.configuration());
+            if first {
+                configuration_colour(p.configuration())
+            } else {
+                *extra.next().unwrap_or(&EXTRA[0])
+            }
+        })
+        .collect()
+}
+
+/// Clips the segment `a → b` to the box `[lo, hi]` (Liang–Barsky); `None` if it lies outside.
+pub(crate) fn clip_segment(
+    a: (f64, f64),
+    b: (f64, f64),
+    lo: (f64, f64),
+    hi: (f64, f64),
+) -> Option<((f64, f64), (f64, f64))> {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    for (p, q) in [
+        (-dx, a.0 - lo.0),
+        (dx, hi.0 - a.0),
+        (-dy, a.1 - lo.1),
+        (dy, hi.1 - a.1),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    (t0 <= t1).then_some((
+        (a.0 + t0 * dx, a.1 + t0 * dy),
+        (a.0 + t1 * dx, a.1 + t1 * dy),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clipping() {
+        let (lo, hi) = ((0.0, 0.0), (1.0, 1.0));
+        assert_eq!(
+            clip_segment((0.2, 0.2), (0.4, 0.4), lo, hi),
+            Some(((0.2, 0.2), (0.4, 0.4)))
+        );
+        let ((a, b), _) = clip_segment((-1.0, 0.5), (0.5, 0.5), lo, hi).unwrap();
+        assert_eq!((a, b), (0.0, 0.5));
+        assert_eq!(clip_segment((2.0, 2.0), (3.0, 3.0), lo, hi), None);
+        assert_eq!(clip_segment((-1.0, 2.0), (2.0, 2.0), lo, hi), None);
+    }
+
+    #[test]
+    fn colours_are_distinct_for_repeated_configurations() {
+        let o = crate::ParameterOverrides::default();
+        let a = PlannerSpec::new(Configuration::MitStar, None, &o).unwrap();
+        let b = PlannerSpec::new(Configuration::MitStar, Some("MIT* b".into()), &o).unwrap();
+        let c = planner_colours(&[a, b]);
+        assert_ne!(c[0], c[1]);
+        ensure_font();
+        ensure_font();
+    }
+}

@@ -1,0 +1,229 @@
+//! [`ProblemSource`]: where an experiment's problem comes from (a built-in family or a file).
+
+use std::path::{Path, PathBuf};
+
+use problems::Problem;
+
+use crate::HarnessError;
+
+/// The built-in family names, comma separated.
+pub(crate) fn builtin_names() -> String {
+    problems::catalogue()
+        .iter()
+        .map(|f| f.name())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A problem: a built-in family of [`problems::catalogue`] (built for any dimension), or a
+/// TOML problem file (its dimension is fixed by the file).
+///
+/// ```
+/// use mit_star_benches::ProblemSource;
+/// let source = ProblemSource::parse("dividing-walls", None)?;
+/// assert_eq!(source.label(), "dividing-walls");
+/// let problem = source.build(4, 0, None)?;
+/// assert_eq!(problem.dimension(), 4);
+/// assert!(ProblemSource::parse("dividing-wall", None).is_err());
+/// # Ok::<(), mit_star_benches::HarnessError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum ProblemSource {
+    /// A built-in family, by name.
+    Builtin(String),
+    /// A problem file.
+    File(PathBuf),
+}
+
+impl ProblemSource {
+    /// A built-in name, or else the path of an existing problem file (relative paths are
+    /// taken relative to `base`, if given).
+    ///
+    /// # Errors
+    /// [`HarnessError::UnknownProblem`] listing the built-in names when `text` is neither.
+    pub fn parse(text: &str, base: Option<&Path>) -> Result<Self, HarnessError> {
+        let text = text.trim();
+        if problems::catalogue().iter().any(|f| f.name() == text) {
+            return Ok(Self::Builtin(text.to_owned()));
+        }
+        let path = match base {
+            Some(base) if Path::new(text).is_relative() => base.join(text),
+            _ => PathBuf::from(text),
+        };
+        if path.is_file() {
+            return Ok(Self::File(path));
+        }
+        Err(HarnessError::UnknownProblem {
+            name: text.to_owned(),
+            known: builtin_names(),
+        })
+    }
+
+    /// A problem file, which must exist.
+    ///
+    /// # Errors
+    /// [`HarnessError::ProblemFile`] if the file cannot be read.
+    pub fn file(path: impl Into<PathBuf>) -> Result<Self, HarnessError> {
+        let path = path.into();
+        if let Err(source) = std::fs::metadata(&path) {
+            return Err(HarnessError::ProblemFile {
+                path: path.clone(),
+                source: problems::ProblemFileError::Io { path, source },
+            });
+        }
+        Ok(Self::File(path))
+    }
+
+    /// `true` if the problem's layout depends on a seed (random rectangles).
+    pub fn is_seeded(&self) -> bool {
+        match self {
+            Self::Builtin(name) => problems::catalogue()
+                .iter()
+                .any(|f| f.name() == name && f.is_seeded()),
+            Self::File(_) => false,
+        }
+    }
+
+    /// A short name without whitespace: the family's name or the file's stem.
+    pub fn label(&self) -> String {
+        let raw = match self {
+            Self::Builtin(name) => name.clone(),
+            Self::File(path) => path.file_stem().map_or_else(
+                || "problem".to_owned(),
+                |s| s.to_string_lossy().into_owned(),
+            ),
+        };
+        sanitise(&raw)
+    }
+
+    /// Builds the problem in `dimension` dimensions (files: must match the file's), with the
+    /// layout seed `instance` (seeded families only) and, if given, another resolution.
+    ///
+    /// # Errors
+    /// [`HarnessError::Problem`] for a dimension the family does not support or a bad
+    /// resolution, [`HarnessError::ProblemFile`] for an unreadable or malformed file, and
+    /// [`HarnessError::Usage`] when a file's dimension differs from `dimension`.
+    pub fn build(
+        &self,
+        dimension: usize,
+        instance: u64,
+        resolution: Option<f64>,
+    ) -> Result<Problem, HarnessError> {
+        let problem = match self {
+            Self::Builtin(name) => {
+                problems::builtin(name, dimension, instance).map_err(|source| {
+                    HarnessError::Problem {
+                        name: name.clone(),
+                        dimension,
+                        source,
+                    }
+                })?
+            }
+            Self::File(path) => {
+                let problem =
+                    Problem::from_file(path).map_err(|source| HarnessError::ProblemFile {
+                        path: path.clone(),
+                        source,
+                    })?;
+                if problem.dimension() != dimension {
+                    return Err(HarnessError::Usage(format!(
+                        "problem file `{}` is {}-dimensional, not {dimension}-dimensional",
+                        path.display(),
+                        problem.dimension()
+                    )));
+                }
+                problem
+            }
+        };
+        match resolution {
+            None => Ok(problem),
+            Some(r) => problem
+                .with_resolution(r)
+                .map_err(|source| HarnessError::Problem {
+                    name: self.label(),
+                    dimension,
+                    source,
+                }),
+        }
+    }
+
+    /// The dimension of a problem file (`None` for built-in families, which have any).
+    ///
+    /// # Errors
+    /// [`HarnessError::ProblemFile`] for an unreadable or malformed file.
+    pub fn fixed_dimension(&self) -> Result<Option<usize>, HarnessError> {
+        match self {
+            Self::Builtin(_) => Ok(None),
+            Self::File(path) => Problem::from_file(path)
+                .map(|p| Some(p.dimension()))
+                .map_err(|source| HarnessError::ProblemFile {
+                    path: path.clone(),
+                    source,
+                }),
+        }
+    }
+}
+
+/// Keeps letters, digits, `-`, `_` and `.`; everything else becomes `-`.
+pub(crate) fn sanitise(text: &str) -> String {
+    let s: String = text
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.') {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect();
+    if s.is_empty() {
+        "problem".to_owned()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_files_and_errors() {
+        let s = ProblemSource::parse("random-rectangles", None).unwrap();
+        assert!(s.is_seeded());
+        assert_eq!(s.fixed_dimension().unwrap(), None);
+        assert!(
+            !ProblemSource::parse("flanking-gap", None)
+                .unwrap()
+                .is_seeded()
+        );
+        let e = ProblemSource::parse("nope", None).unwrap_err().to_string();
+        assert!(
+            e.contains("built-in problems: flanking-gap, dividing-walls"),
+            "{e}"
+        );
+        let e = ProblemSource::Builtin("dividing-walls".into())
+            .build(1, 0, None)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("dividing-walls") && e.contains("1"), "{e}");
+        assert!(ProblemSource::file("/definitely/not/here.toml").is_err());
+        assert_eq!(sanitise("my problem/1"), "my-problem-1");
+    }
+
+    #[test]
+    fn problem_files_fix_the_dimension() {
+        let dir = std::env::temp_dir().join(format!("mit-star-source-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("wall.toml");
+        let problem = problems::builtin("wall-gap", 2, 0).unwrap();
+        std::fs::write(&path, problem.to_toml_string()).unwrap();
+        let s = ProblemSource::parse("wall.toml", Some(&dir)).unwrap();
+        assert_eq!(s, ProblemSource::File(path));
+        assert_eq!(s.label(), "wall");
+        assert_eq!(s.fixed_dimension().unwrap(), Some(2));
+        assert_eq!(s.build(2, 0, Some(1e-4)).unwrap().resolution(), 1e-4);
+        assert!(s.build(3, 0, None).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

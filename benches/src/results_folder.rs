@@ -1,0 +1,192 @@
+//! [`ResultsFolder`]: where an experiment's outputs go, checked before any work starts.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use crate::{
+    BenchmarkLog, ExperimentFigure, ExperimentResults, HarnessError, KpiTable,
+    PlannerArenaDatabase, write_runs_csv, write_runs_jsonl,
+};
+
+/// The name of the Planner Arena database in a results folder.
+pub const DATABASE_FILE: &str = "benchmark.db";
+
+/// A results folder:
+///
+/// | file | what it holds |
+/// |---|---|
+/// | `experiment.toml` | the experiment as run (command-line overrides applied): rerun it with `mit-star bench experiment.toml` |
+/// | `runs.csv` | one row per run: every per-run figure, counters, the trace |
+/// | `runs.jsonl` | one JSON object per run, with the trace, the path and the validation |
+/// | `logs/<instance>.log` | one OMPL benchmark log per problem instance |
+/// | `benchmark.db` | the Planner Arena database (appended to if it exists) |
+/// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
+/// | `kpi.md` | the KPI tables |
+///
+/// [`prepare`](Self::prepare) creates the folder, checks it is writable and opens the
+/// database before any planning, so that a bad folder fails fast.
+#[derive(Debug)]
+pub struct ResultsFolder {
+    path: PathBuf,
+    database: PlannerArenaDatabase,
+}
+
+impl ResultsFolder {
+    /// Creates the folder (and `logs/`, `plots/`), checks that files can be written in it,
+    /// and opens (or creates) its database.
+    ///
+    /// # Errors
+    /// [`HarnessError::OutputFolder`] if the folder cannot be created or written,
+    /// [`HarnessError::Database`] if an existing `benchmark.db` is not a database.
+    pub fn prepare(path: &Path) -> Result<Self, HarnessError> {
+        writable_folder(path)?;
+        for dir in [path.join("logs"), path.join("plots")] {
+            writable_folder(&dir)?;
+        }
+        let database = PlannerArenaDatabase::open(&path.join(DATABASE_FILE))?;
+        Ok(Self {
+            path: path.to_path_buf(),
+            database,
+        })
+    }
+
+    /// The folder.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The database.
+    pub fn database(&self) -> &PlannerArenaDatabase {
+        &self.database
+    }
+
+    /// Writes every output of `results` (plots unless `plots` is false); returns the files
+    /// written. Instances without finished runs (interrupted early) are skipped.
+    ///
+    /// # Errors
+    /// The first file that cannot be written.
+    pub fn write(
+        &mut self,
+        results: &ExperimentResults,
+        plots: bool,
+    ) -> Result<Vec<PathBuf>, HarnessError> {
+        let mut files = Vec::new();
+        let write = |path: PathBuf, text: &str| {
+            std::fs::write(&path, text)
+                .map(|()| path.clone())
+                .map_err(|source| HarnessError::Io { path, source })
+        };
+        files.push(write(
+            self.path.join("experiment.toml"),
+            &results.experiment.to_toml(),
+        )?);
+        let csv = self.path.join("runs.csv");
+        write_runs_csv(&csv, results)?;
+        files.push(csv);
+        let jsonl = self.path.join("runs.jsonl");
+        write_runs_jsonl(&jsonl, results)?;
+        files.push(jsonl);
+        for (index, instance) in results.instances.iter().enumerate() {
+            if results.runs[index].is_empty() {
+                continue;
+            }
+            let log = BenchmarkLog::from_results(results, index);
+            files.push(write(
+                self.path.join("logs").join(format!("{}.log", instance.id)),
+                &log.to_text(),
+            )?);
+            self.database.insert(&log)?;
+            if plots {
+                let svg = self.path.join("plots").join(format!("{}.svg", instance.id));
+                let png = svg.with_extension("png");
+                ExperimentFigure::from_results(results, index).save(&svg, &png)?;
+                files.extend([svg, png]);
+            }
+        }
+        files.push(self.database.path().to_path_buf());
+        let kpi = kpi_markdown(results, &KpiTable::from_results(results));
+        files.push(write(self.path.join("kpi.md"), &kpi)?);
+        Ok(files)
+    }
+}
+
+/// Creates `path` if needed and checks that a file can be written in it.
+///
+/// # Errors
+/// [`HarnessError::OutputFolder`] naming the folder and the operating system's reason.
+pub fn writable_folder(path: &Path) -> Result<(), HarnessError> {
+    let fail = |source| HarnessError::OutputFolder {
+        path: path.to_path_buf(),
+        source,
+    };
+    std::fs::create_dir_all(path).map_err(fail)?;
+    let probe = path.join(".mit-star-write-test");
+    std::fs::write(&probe, b"ok").map_err(fail)?;
+    std::fs::remove_file(&probe).map_err(fail)
+}
+
+/// `kpi.md`: how the experiment ran, then the paper-style table and the full table.
+pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
+    let e = &results.experiment;
+    let mut s = format!("# {}\n\n", e.name);
+    if !e.description.is_empty() {
+        let _ = writeln!(s, "{}\n", e.description);
+    }
+    let _ = writeln!(
+        s,
+        "Started {} UTC on `{}` ({}); {} runs per planner and instance, seeds {}..{}; \
+         {} runs finished in {:.1} s with **{} runs executing concurrently**.{}\n",
+        results.started_at,
+        results.machine.hostname,
+        results.machine.cpu,
+        e.runs,
+        e.seed,
+        e.seed + e.runs as u64 - 1,
+        results.run_count(),
+        results.total_time,
+        results.concurrency,
+        if results.interrupted {
+            " **Interrupted (Ctrl-C): only finished runs are included.**"
+        } else {
+            ""
+        }
+    );
+    let invalid = results.invalid_runs();
+    if !invalid.is_empty() {
+        let _ = writeln!(
+            s,
+            "**WARNING: {} runs returned a path that failed the independent full-resolution \
+             validation; they count as failures:**\n",
+            invalid.len()
+        );
+        for r in invalid {
+            let _ = writeln!(
+                s,
+                "- {} run {} (seed {}) on {}: {}",
+                r.planner,
+                r.run,
+                r.seed,
+                r.instance,
+                r.validation
+                    .as_ref()
+                    .and_then(|v| v.failure.clone())
+                    .unwrap_or_default()
+            );
+        }
+        s.push('\n');
+    }
+    let _ = writeln!(
+        s,
+        "## Medians (paper's Table I layout)\n\nMedian time to the first solution `t_init` [s], \
+         median first-solution cost `c_init`, median final cost `c_final`; failed runs count \
+         as ∞. t_init gain = 1 − t_MIT / t_EIT.\n\n{}",
+        table.paper_markdown()
+    );
+    let _ = writeln!(
+        s,
+        "## All KPIs\n\nmin, median [{:.0} % confidence interval], max.\n\n{}",
+        100.0 * table.confidence,
+        table.full_markdown()
+    );
+    s
+}

@@ -1,0 +1,66 @@
+//! [`ShippedExperiment`]: the experiment files embedded in the binary.
+
+use crate::HarnessError;
+
+/// An experiment file shipped with the tool (`benches/experiments/*.toml`), embedded in the
+/// binary so that `mit-star bench --experiment NAME` works from any folder.
+///
+/// ```
+/// use mit_star_benches::ShippedExperiment;
+/// let names: Vec<&str> = ShippedExperiment::all().iter().map(|e| e.name).collect();
+/// assert_eq!(names, ["paper-table", "ablation", "smoke"]);
+/// assert!(ShippedExperiment::find("smoke")?.text.contains("[[problems]]"));
+/// # Ok::<(), mit_star_benches::HarnessError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ShippedExperiment {
+    /// The name (the file's stem).
+    pub name: &'static str,
+    /// One line on what it runs.
+    pub summary: &'static str,
+    /// The file's text.
+    pub text: &'static str,
+}
+
+static SHIPPED: [ShippedExperiment; 3] = [
+    ShippedExperiment {
+        name: "paper-table",
+        summary: "the paper's Table I: MIT* vs EIT* on FG, RR (10 layouts), DW and GE, the paper's budgets, 100 runs",
+        text: include_str!("../experiments/paper-table.toml"),
+    },
+    ShippedExperiment {
+        name: "ablation",
+        summary: "the paper's ablation: all five configurations on GE R^2 (0.01 s) and DW R^4 (0.07 s), 100 runs",
+        text: include_str!("../experiments/ablation.toml"),
+    },
+    ShippedExperiment {
+        name: "smoke",
+        summary: "a quick check: all five configurations on FG R^4, DW R^4, GE R^2, RR R^4 (layout 1), 20 runs (about a minute on 2 cores)",
+        text: include_str!("../experiments/smoke.toml"),
+    },
+];
+
+impl ShippedExperiment {
+    /// Every shipped experiment.
+    pub fn all() -> &'static [ShippedExperiment] {
+        &SHIPPED
+    }
+
+    /// The shipped experiment `name`.
+    ///
+    /// # Errors
+    /// [`HarnessError::UnknownExperiment`] listing the shipped names.
+    pub fn find(name: &str) -> Result<&'static ShippedExperiment, HarnessError> {
+        SHIPPED
+            .iter()
+            .find(|e| e.name == name.trim())
+            .ok_or_else(|| HarnessError::UnknownExperiment {
+                name: name.trim().to_owned(),
+                known: SHIPPED
+                    .iter()
+                    .map(|e| e.name)
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
+    }
+}

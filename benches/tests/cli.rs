@@ -1,0 +1,363 @@
+//! The `mit-star` binary: input errors are reported with a clear message and a non-zero exit
+//! code before any work; the listings and `plan` work.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn mit_star(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mit-star"))
+        .args(args)
+        .current_dir(env!("CARGO_TARGET_TMPDIR"))
+        .output()
+        .unwrap()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+/// Runs a command that must fail with exit code 2 and a message containing every `needle`.
+fn refused(args: &[&str], needles: &[&str]) {
+    let out = mit_star(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    for needle in needles {
+        assert!(
+            stderr.contains(needle),
+            "{args:?}: `{needle}` not in: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn unknown_names_list_the_valid_ones() {
+    refused(
+        &[
+            "bench",
+            "--planners",
+            "mit-star,rrt-star",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "2",
+            "--time",
+            "0.02",
+        ],
+        &[
+            "unknown planner `rrt-star`",
+            "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc",
+        ],
+    );
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-wall",
+            "--dim",
+            "2",
+            "--time",
+            "0.02",
+        ],
+        &[
+            "unknown problem `dividing-wall`",
+            "flanking-gap, dividing-walls, goal-enclosure",
+        ],
+    );
+    refused(
+        &["bench", "--experiment", "paper"],
+        &["unknown experiment `paper`", "paper-table, ablation, smoke"],
+    );
+    refused(
+        &["plan", "--planner", "prm", "--problem", "dividing-walls"],
+        &["unknown planner `prm`"],
+    );
+}
+
+#[test]
+fn bad_values_are_refused_before_any_work() {
+    let out = scratch("never-written");
+    let o = out.to_str().unwrap();
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "1",
+            "--time",
+            "0.02",
+            "-o",
+            o,
+        ],
+        &["dividing-walls", "1"],
+    );
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "2",
+            "--time",
+            "0.02",
+            "--set",
+            "batch_size=0",
+            "-o",
+            o,
+        ],
+        &["parameter `batch_size`"],
+    );
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "2",
+            "--time",
+            "0.02",
+            "--set",
+            "bach_size=3",
+            "-o",
+            o,
+        ],
+        &["parameter `bach_size`: unknown parameter"],
+    );
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "2",
+            "--time",
+            "-1",
+            "-o",
+            o,
+        ],
+        &["-1"],
+    );
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dims",
+            "2,4",
+            "--time",
+            "1,2,3",
+            "-o",
+            o,
+        ],
+        &["3 values for 2 dimensions"],
+    );
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "2",
+            "-o",
+            o,
+        ],
+        &["--time"],
+    );
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "2",
+            "--time",
+            "0.1",
+            "--runs",
+            "0",
+            "-o",
+            o,
+        ],
+        &["`runs`"],
+    );
+    refused(
+        &["bench", "--experiment", "smoke", "--dim", "2"],
+        &["cannot be combined"],
+    );
+    refused(
+        &["plan", "--problem", "dividing-walls", "--time", "0"],
+        &["--time 0"],
+    );
+    assert!(
+        !out.exists(),
+        "nothing may be written when the input is refused"
+    );
+}
+
+#[test]
+fn malformed_experiment_files_name_the_field() {
+    let dir = scratch("files");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("bad.toml");
+    std::fs::write(
+        &file,
+        "planners = ['mit-star']\n[[problems]]\nname = 'flanking-gap'\ndimensions = [4, 8]\ntime = [0.1, 0.2, 0.3]\n",
+    )
+    .unwrap();
+    refused(
+        &["bench", file.to_str().unwrap()],
+        &["`problems[0].time`", "3 budgets for 2 dimensions"],
+    );
+    std::fs::write(&file, "planners = ['mit-star']\nrunz = 3\n").unwrap();
+    refused(
+        &["bench", file.to_str().unwrap()],
+        &["unknown field `runz`"],
+    );
+}
+
+#[test]
+fn unwritable_output_folders_are_refused() {
+    let dir = scratch("blocked");
+    std::fs::create_dir_all(&dir).unwrap();
+    let blocker = dir.join("a-file");
+    std::fs::write(&blocker, "not a folder").unwrap();
+    let inside = blocker.join("results");
+    refused(
+        &[
+            "bench",
+            "--problem",
+            "dividing-walls",
+            "--dim",
+            "2",
+            "--time",
+            "0.02",
+            "--runs",
+            "1",
+            "-o",
+            inside.to_str().unwrap(),
+        ],
+        &["is not writable"],
+    );
+}
+
+#[test]
+fn listings() {
+    let out = mit_star(&["problems", "--dim", "4"]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    for name in [
+        "flanking-gap",
+        "dividing-walls",
+        "goal-enclosure",
+        "random-rectangles",
+        "repeating-rectangles",
+    ] {
+        assert!(text.contains(name), "{name}");
+    }
+    assert!(text.contains("wall_width"));
+    let out = mit_star(&["planners"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("mit-star-eis") && text.contains("batch_size"));
+    let out = mit_star(&["experiments", "--print", "smoke"]);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("[[problems]]"));
+}
+
+#[test]
+fn plan_prints_the_result_and_draws_2d_runs() {
+    let dir = scratch("plan");
+    let out = mit_star(&[
+        "plan",
+        "--planner",
+        "eit-star",
+        "--problem",
+        "goal-enclosure",
+        "--time",
+        "0.05",
+        "--seed",
+        "3",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains("EIT* on goal-enclosure R^2 (seed 3, budget 0.05 s)"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("counters:") && stdout.contains("state validity checks"));
+    for ext in ["svg", "png"] {
+        let path = dir.join(format!("goal-enclosure-n2-eit-star-seed3.{ext}"));
+        assert!(
+            std::fs::metadata(&path)
+                .map(|m| m.len() > 5_000)
+                .unwrap_or(false),
+            "{}",
+            path.display()
+        );
+    }
+    // JSON output, and no picture in 4-D.
+    let out = mit_star(&[
+        "plan",
+        "--problem",
+        "obstacle-free",
+        "--dim",
+        "4",
+        "--time",
+        "0.02",
+        "--json",
+        "-o",
+        dir.join("4d").to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(value["status"], "solved");
+    assert!(value["files"].as_array().unwrap().is_empty());
+    assert!(!dir.join("4d").exists());
+}
+
+#[test]
+fn bench_with_flags_writes_a_results_folder() {
+    let dir = scratch("bench");
+    let out = mit_star(&[
+        "bench",
+        "--planners",
+        "mit-star,eit-star",
+        "--problem",
+        "dividing-walls",
+        "--dim",
+        "2",
+        "--runs",
+        "2",
+        "--time",
+        "0.02",
+        "--threads",
+        "2",
+        "--no-plots",
+        "-q",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("| dividing-walls R^2 |"), "{stdout}");
+    assert!(stdout.contains("t_init gain"));
+    for f in [
+        "runs.csv",
+        "runs.jsonl",
+        "benchmark.db",
+        "kpi.md",
+        "experiment.toml",
+        "logs/dividing-walls-n2.log",
+    ] {
+        assert!(dir.join(f).exists(), "{f}");
+    }
+}

@@ -1,0 +1,125 @@
+//! Adding a batch of samples — EIT*'s "improve approximation" (spec §3.4): prune, sample under
+//! the current bound, reconnect, restart both searches.
+
+use heuristics::Heuristic;
+use samplers::{CostBound, SampleError, Sampler};
+use spaces::StateSpace;
+use validity::{Counted, EdgeChecker, StateValidity};
+
+use crate::eit::Eit;
+use crate::graph::Neighbourhood;
+use crate::vertex::NONE;
+use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
+
+impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+where
+    S: StateSpace,
+    V: StateValidity,
+    Smp: Sampler<S, Counted<V>> + Clone,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+    H: Heuristic<S>,
+{
+    /// The bound samples are drawn under: the best solution's cost if there is one; otherwise
+    /// unbounded (an estimated-informed-set sampler substitutes its estimate).
+    pub(crate) fn sampling_bound(&self) -> CostBound {
+        if self.best_cost.is_finite() {
+            CostBound::Solution(self.best_cost)
+        } else {
+            CostBound::Unbounded
+        }
+    }
+
+    /// Sets `k` or `r` for the current number of vertices `q` (start and goals included).
+    pub(crate) fn update_neighbourhood(&mut self) -> f64 {
+        let q = self.graph.vertex_count();
+        let n = self.space.dimension();
+        let eta = self.parameters.rewire_factor;
+        match self.parameters.connection {
+            Connection::KNearest => {
+                let k = k_nearest(q, n, eta);
+                self.graph.set_neighbourhood(Neighbourhood::Nearest(k));
+                k as f64
+            }
+            Connection::RDisc => {
+                let bound = self.sampling_bound();
+                let measure = self
+                    .sampler
+                    .sampled_measure(&self.space, bound)
+                    .min(self.space.measure());
+                let r = r_disc(q, n, eta, measure);
+                self.graph.set_neighbourhood(Neighbourhood::Radius(r));
+                r
+            }
+        }
+    }
+
+    /// Adds a batch of samples (spec §3.4).
+    pub(crate) fn add_batch(&mut self, stop: &crate::termination::SolveStop<'_>) {
+        let solved = self.best_cost.is_finite();
+        // 1. MIT*: the estimated informed set expands if a batch in it found no solution.
+        self.sampler.observe_batch_end(solved);
+        // 2. Prune with the true solution cost only.
+        let mut pruned = 0;
+        if self.parameters.pruning && solved && self.best_cost < self.last_prune_cost {
+            let protected: Vec<u32> = self.solution_vertices().iter().map(|v| v.0).collect();
+            pruned = self
+                .graph
+                .prune(self.best_cost, &protected, &mut self.scratch);
+            self.last_prune_cost = self.best_cost;
+            self.counters.pruned += pruned as u64;
+        }
+        // 3. Sample under the current bound (reported as the sampler applies it: an
+        //    estimated-informed-set sampler replaces "unbounded" by its estimate).
+        let bound = self.sampling_bound();
+        let effective = match (bound, self.sampler.estimated_cost()) {
+            (CostBound::Unbounded, Some(estimate)) => CostBound::Estimated(estimate),
+            _ => bound,
+        };
+        let mut ids = std::mem::take(&mut self.batch_ids);
+        ids.clear();
+        let mut sample = std::mem::take(&mut self.sample);
+        for _ in 0..self.parameters.batch_size {
+            match self
+                .sampler
+                .sample(&self.space, &self.validity, bound, stop, &mut sample)
+            {
+                Ok(()) => {
+                    let vertex = self.new_vertex(VertexKind::Sample, &sample);
+                    ids.push(self.graph.add_vertex(&sample, vertex));
+                }
+                Err(SampleError::EmptySet { .. }) => {
+                    self.exhausted = true;
+                    break;
+                }
+                Err(_) => break,
+            }
+        }
+        self.sample = sample;
+        self.counters.samples += ids.len() as u64;
+        // 4. Reconnect: new vertices visible, caches dropped, k or r for the new q.
+        self.graph.commit(&ids);
+        let samples = ids.len();
+        self.batch_ids = ids;
+        let connection = self.update_neighbourhood();
+        // 5. Reset the sparse level, restart the reverse search, re-seed the forward search.
+        self.checker.reset();
+        self.forward.clear();
+        self.restart_reverse(stop);
+        self.expand_forward(self.start_id, NONE, stop);
+        self.counters.batches += 1;
+        let vertices = self.graph.vertex_count() as u64;
+        let edges = self.graph.edge_count() as u64;
+        self.counters.peak_vertices = self.counters.peak_vertices.max(vertices);
+        self.counters.peak_edges = self.counters.peak_edges.max(edges);
+        if let Some(observer) = self.observer.as_mut() {
+            observer.on_batch(&BatchEvent {
+                batch: self.counters.batches,
+                samples,
+                pruned,
+                vertices: vertices as usize,
+                bound: effective,
+                connection,
+            });
+        }
+    }
+}

@@ -1,0 +1,254 @@
+//! [`Builder`]: validated construction of an [`Eit`] configuration.
+
+use heuristics::{Euclidean, Heuristic};
+use problems::Problem;
+use samplers::Sampler;
+use spaces::{RealVectorSpace, StateSpace};
+use validity::{Counted, EdgeChecker, StateValidity, World};
+
+use crate::components::configuration_name;
+use crate::eit::validate_query;
+use crate::{
+    BuildError, CheckerPart, Connection, EisExpansionForm, EisExpansionRule, Eit, Observer,
+    Parameters, SamplerPart,
+};
+
+/// Builds an [`Eit`] planner: the query and parts are required, every parameter has the spec's
+/// default and a chained setter; [`build`](Self::build) validates everything once.
+///
+/// ```
+/// use mit_star::{MitStar, Parameters};
+/// use spaces::RealVectorSpace;
+/// use validity::World;
+///
+/// let space = RealVectorSpace::cube(2, -0.5, 0.5)?;
+/// let world = World::in_space(&space);
+/// let planner = MitStar::builder(space, world, vec![-0.4, 0.0], vec![vec![0.4, 0.0]])
+///     .batch_size(50)
+///     .rewire_factor(1.2)
+///     .seed(42)
+///     .build()?;
+/// assert_eq!(planner.parameters().batch_size, 50);
+///
+/// // Bad parameters are refused with a typed error naming them.
+/// let space = RealVectorSpace::cube(2, -0.5, 0.5)?;
+/// let err = MitStar::builder(space, World::new(vec![-0.5; 2], vec![0.5; 2]), vec![-0.4, 0.0], vec![vec![0.4, 0.0]])
+///     .batch_size(0)
+///     .build()
+///     .unwrap_err();
+/// assert_eq!(err.to_string(), "parameter `batch_size` is 0; it must be at least 1");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub struct Builder<S, V, Smp, E, H = Euclidean> {
+    space: S,
+    validity: V,
+    start: Vec<f64>,
+    goals: Vec<Vec<f64>>,
+    parameters: Parameters,
+    heuristic: H,
+    sampler: Option<Smp>,
+    checker: Option<E>,
+    observer: Option<Box<dyn Observer>>,
+    name: Option<String>,
+}
+
+impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
+    /// Starts building a planner for the query `start → goals` in `space` with `validity`.
+    pub fn builder(
+        space: S,
+        validity: V,
+        start: Vec<f64>,
+        goals: Vec<Vec<f64>>,
+    ) -> Builder<S, V, Smp, E, H> {
+        Builder {
+            space,
+            validity,
+            start,
+            goals,
+            parameters: Parameters::default(),
+            heuristic: H::default(),
+            sampler: None,
+            checker: None,
+            observer: None,
+            name: None,
+        }
+    }
+}
+
+impl<Smp, E, H: Default> Eit<RealVectorSpace, World, Smp, E, H> {
+    /// Starts building a planner for a benchmark [`Problem`]: its space, world, start, goals
+    /// and resolution.
+    ///
+    /// ```
+    /// use mit_star::{EitStar, FirstSolution, Planner};
+    /// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+    /// let mut planner = EitStar::for_problem(&problem).seed(1).build()?;
+    /// let outcome = planner.solve(&FirstSolution)?;
+    /// assert!(outcome.cost() >= problem.optimum().unwrap());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn for_problem(problem: &Problem) -> Builder<RealVectorSpace, World, Smp, E, H> {
+        Self::builder(
+            problem.space().clone(),
+            problem.world().clone(),
+            problem.start().to_vec(),
+            problem.goals().to_vec(),
+        )
+        .resolution(problem.resolution())
+    }
+}
+
+impl<S, V, Smp, E, H> Builder<S, V, Smp, E, H> {
+    /// Replaces every parameter.
+    pub fn parameters(mut self, parameters: Parameters) -> Self {
+        self.parameters = parameters;
+        self
+    }
+
+    /// Samples per batch (default 100).
+    pub fn batch_size(mut self, batch_size: usize) -> Self {
+        self.parameters.batch_size = batch_size;
+        self
+    }
+
+    /// The RGG constant `η` (default 1.001).
+    pub fn rewire_factor(mut self, eta: f64) -> Self {
+        self.parameters.rewire_factor = eta;
+        self
+    }
+
+    /// k-nearest (default) or r-disc connection.
+    pub fn connection(mut self, connection: Connection) -> Self {
+        self.parameters.connection = connection;
+        self
+    }
+
+    /// Pruning on (default) or off.
+    pub fn pruning(mut self, pruning: bool) -> Self {
+        self.parameters.pruning = pruning;
+        self
+    }
+
+    /// Collision-check resolution, a fraction of the maximum extent (default 5e-6).
+    pub fn resolution(mut self, resolution: f64) -> Self {
+        self.parameters.resolution = resolution;
+        self
+    }
+
+    /// Seed of the sampler (default 0).
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.parameters.seed = seed;
+        self
+    }
+
+    /// Whether the reverse search suspends when the forward queue is empty (default `true`,
+    /// the MIT* authors' rule).
+    pub fn suspend_reverse_when_forward_empty(mut self, suspend: bool) -> Self {
+        self.parameters.suspend_reverse_when_forward_empty = suspend;
+        self
+    }
+
+    /// The adaptive sampler's `δ` as a fraction of the maximum extent (default 0.1).
+    pub fn gaussian_std_fraction(mut self, fraction: f64) -> Self {
+        self.parameters.gaussian_std_fraction = fraction;
+        self
+    }
+
+    /// The adaptive sampler's segment checks per repair (default 8).
+    pub fn bridge_checks(mut self, checks: usize) -> Self {
+        self.parameters.bridge_checks = checks;
+        self
+    }
+
+    /// The length-related checker's `Δ₀` and floor (in steps `L`) and `Ω` (defaults 2000, 10,
+    /// 0.5).
+    pub fn sparse_spacing(mut self, initial_steps: f64, factor: f64, min_steps: f64) -> Self {
+        self.parameters.sparse_initial_steps = initial_steps;
+        self.parameters.sparse_factor = factor;
+        self.parameters.sparse_min_steps = min_steps;
+        self
+    }
+
+    /// How the estimated informed set computes and applies `e_γ`.
+    pub fn eis_expansion(mut self, form: EisExpansionForm, rule: EisExpansionRule) -> Self {
+        self.parameters.eis_expansion_form = form;
+        self.parameters.eis_expansion_rule = rule;
+        self
+    }
+
+    /// Uses this heuristic instead of `H::default()`.
+    pub fn heuristic(mut self, heuristic: H) -> Self {
+        self.heuristic = heuristic;
+        self
+    }
+
+    /// Uses this sampler instead of building one from the parameters.
+    pub fn sampler(mut self, sampler: Smp) -> Self {
+        self.sampler = Some(sampler);
+        self
+    }
+
+    /// Uses this edge checker instead of building one from the parameters.
+    pub fn edge_checker(mut self, checker: E) -> Self {
+        self.checker = Some(checker);
+        self
+    }
+
+    /// Installs an observer.
+    pub fn observer(mut self, observer: Box<dyn Observer>) -> Self {
+        self.observer = Some(observer);
+        self
+    }
+
+    /// The name reports print (default: the configuration's name, e.g. `MIT*`).
+    pub fn name(mut self, name: impl Into<String>) -> Self {
+        self.name = Some(name.into());
+        self
+    }
+}
+
+impl<S, V, Smp, E, H> Builder<S, V, Smp, E, H>
+where
+    S: StateSpace,
+    V: StateValidity,
+    Smp: Sampler<S, Counted<V>> + SamplerPart<S> + Clone,
+    E: EdgeChecker<S, Counted<V>> + CheckerPart<S> + Clone,
+    H: Heuristic<S>,
+{
+    /// Validates the parameters and the query and builds the planner.
+    ///
+    /// # Errors
+    /// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
+    /// malformed query, and the parts' own errors ([`BuildError::Sampler`],
+    /// [`BuildError::Validity`]).
+    pub fn build(self) -> Result<Eit<S, V, Smp, E, H>, BuildError> {
+        self.parameters.validate()?;
+        validate_query(&self.space, &self.validity, &self.start, &self.goals)?;
+        let sampler = match self.sampler {
+            Some(sampler) => sampler,
+            None => Smp::build_part(&self.space, &self.start, &self.goals, &self.parameters)?,
+        };
+        let checker = match self.checker {
+            Some(checker) => checker,
+            None => E::build_part(&self.space, &self.parameters)?,
+        };
+        let name = self
+            .name
+            .unwrap_or_else(|| configuration_name(&Smp::part_name(), E::NAME));
+        let mut planner = Eit::with_parts(
+            self.space,
+            self.validity,
+            self.start,
+            self.goals,
+            sampler,
+            checker,
+            self.heuristic,
+            self.parameters,
+        );
+        planner.set_name(name);
+        if let Some(observer) = self.observer {
+            planner.set_observer(observer);
+        }
+        Ok(planner)
+    }
+}

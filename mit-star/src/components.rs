@@ -1,0 +1,221 @@
+//! [`SamplerPart`] and [`CheckerPart`]: how the builder makes a configuration's parts from
+//! [`Parameters`].
+
+use samplers::{
+    AdaptiveSampler, BridgeSampler, Estimated, ExpansionForm, ExpansionRule, GaussianSampler,
+    InformedSampler, UniformSampler,
+};
+use spaces::StateSpace;
+use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, step_from_resolution};
+
+use crate::{BuildError, EisExpansionForm, EisExpansionRule, Parameters};
+
+/// A sampler the [`Builder`](crate::Builder) can make from [`Parameters`] and the query.
+///
+/// Implemented for every sampler of the `samplers` crate; implement it for your own sampler to
+/// use it with the builder (or pass a ready sampler to [`Eit::with_parts`](crate::Eit::with_parts)).
+pub trait SamplerPart<S: StateSpace>: Sized {
+    /// Short name used in planner names (`"informed"`, `"estimated(adaptive)"`, …).
+    fn part_name() -> String;
+
+    /// Builds the sampler for `start` and `goals` in `space`, seeded with `parameters.seed`.
+    ///
+    /// # Errors
+    /// [`BuildError::Sampler`] if the sampler refuses the query or a parameter.
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        parameters: &Parameters,
+    ) -> Result<Self, BuildError>;
+}
+
+/// An edge checker the [`Builder`](crate::Builder) can make from [`Parameters`].
+pub trait CheckerPart<S: StateSpace>: Sized {
+    /// Short name used in planner names (`"fixed-sparse"`, `"length-adaptive"`, …).
+    const NAME: &'static str;
+
+    /// Builds the checker for `space` at `parameters.resolution`.
+    ///
+    /// # Errors
+    /// [`BuildError::Validity`] if the checker refuses a parameter.
+    fn build_part(space: &S, parameters: &Parameters) -> Result<Self, BuildError>;
+}
+
+impl<S: StateSpace> SamplerPart<S> for UniformSampler {
+    fn part_name() -> String {
+        "uniform".into()
+    }
+    fn build_part(_: &S, _: &[f64], _: &[Vec<f64>], p: &Parameters) -> Result<Self, BuildError> {
+        Ok(UniformSampler::new(p.seed))
+    }
+}
+
+impl<S: StateSpace> SamplerPart<S> for InformedSampler {
+    fn part_name() -> String {
+        "informed".into()
+    }
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        p: &Parameters,
+    ) -> Result<Self, BuildError> {
+        Ok(InformedSampler::new(space, start, goals, p.seed)?)
+    }
+}
+
+impl<S: StateSpace> SamplerPart<S> for AdaptiveSampler {
+    fn part_name() -> String {
+        "adaptive".into()
+    }
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        p: &Parameters,
+    ) -> Result<Self, BuildError> {
+        Ok(AdaptiveSampler::new(space, start, goals, p.seed)?
+            .with_std_dev(p.gaussian_std_fraction * space.maximum_extent())?
+            .with_bridge_checks(p.bridge_checks)?)
+    }
+}
+
+impl<S: StateSpace> SamplerPart<S> for GaussianSampler {
+    fn part_name() -> String {
+        "gaussian".into()
+    }
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        p: &Parameters,
+    ) -> Result<Self, BuildError> {
+        Ok(GaussianSampler::new(space, start, goals, p.seed)?
+            .with_std_dev(p.gaussian_std_fraction * space.maximum_extent())?)
+    }
+}
+
+impl<S: StateSpace> SamplerPart<S> for BridgeSampler {
+    fn part_name() -> String {
+        "bridge".into()
+    }
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        p: &Parameters,
+    ) -> Result<Self, BuildError> {
+        Ok(BridgeSampler::new(space, start, goals, p.seed)?
+            .with_std_dev(p.gaussian_std_fraction * space.maximum_extent())?)
+    }
+}
+
+/// MIT*'s estimated informed set around any sampler the builder can make.
+impl<S: StateSpace, T: SamplerPart<S>> SamplerPart<S> for Estimated<T> {
+    fn part_name() -> String {
+        format!("estimated({})", T::part_name())
+    }
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        p: &Parameters,
+    ) -> Result<Self, BuildError> {
+        let form = match p.eis_expansion_form {
+            EisExpansionForm::Paper => ExpansionForm::Paper,
+            EisExpansionForm::Authors => ExpansionForm::Authors,
+        };
+        let rule = match p.eis_expansion_rule {
+            EisExpansionRule::PerBatch => ExpansionRule::PerBatch,
+            EisExpansionRule::PerInvalidEdge => ExpansionRule::PerInvalidEdge,
+        };
+        Ok(Estimated::new(T::build_part(space, start, goals, p)?)
+            .with_form(form)
+            .with_rule(rule))
+    }
+}
+
+impl<S: StateSpace> CheckerPart<S> for FixedSparseChecker {
+    const NAME: &'static str = "fixed-sparse";
+    fn build_part(space: &S, p: &Parameters) -> Result<Self, BuildError> {
+        Ok(FixedSparseChecker::from_resolution(space, p.resolution)?)
+    }
+}
+
+impl<S: StateSpace> CheckerPart<S> for LengthAdaptiveChecker {
+    const NAME: &'static str = "length-adaptive";
+    fn build_part(space: &S, p: &Parameters) -> Result<Self, BuildError> {
+        let step = step_from_resolution(space, p.resolution)?;
+        Ok(LengthAdaptiveChecker::with_parameters(
+            step,
+            p.sparse_initial_steps * step,
+            p.sparse_factor,
+            p.sparse_min_steps * step,
+        )?)
+    }
+}
+
+impl<S: StateSpace> CheckerPart<S> for DenseChecker {
+    const NAME: &'static str = "dense";
+    fn build_part(space: &S, p: &Parameters) -> Result<Self, BuildError> {
+        Ok(DenseChecker::from_resolution(space, p.resolution)?)
+    }
+}
+
+/// The paper's name of the configuration made of these parts, or a descriptive one.
+pub(crate) fn configuration_name(sampler: &str, checker: &str) -> String {
+    match (sampler, checker) {
+        ("estimated(adaptive)", "length-adaptive") => "MIT*".into(),
+        ("informed", "fixed-sparse") => "EIT*".into(),
+        ("adaptive", "fixed-sparse") => "MIT*-AS".into(),
+        ("estimated(informed)", "fixed-sparse") => "MIT*-EIS".into(),
+        ("informed", "length-adaptive") => "MIT*-SC".into(),
+        (s, c) => format!("EIT*[{s} sampler, {c} checks]"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use spaces::RealVectorSpace;
+
+    #[test]
+    fn parts_follow_the_parameters() {
+        let space = RealVectorSpace::cube(4, -0.5, 0.5).unwrap();
+        let p = Parameters::default();
+        let checker = <LengthAdaptiveChecker as CheckerPart<_>>::build_part(&space, &p).unwrap();
+        // Δ₀ = 2000 L with L = 5e-6 · 2.
+        assert!((checker.spacing() - 2000.0 * 1e-5).abs() < 1e-12);
+        let sampler = <AdaptiveSampler as SamplerPart<_>>::build_part(
+            &space,
+            &[-0.45, 0.0, 0.0, 0.0],
+            &[vec![0.45, 0.0, 0.0, 0.0]],
+            &p,
+        )
+        .unwrap();
+        assert!((sampler.std_dev() - 0.2).abs() < 1e-12);
+        assert_eq!(sampler.bridge_checks(), 8);
+        let bad = Parameters {
+            sparse_factor: 1.5,
+            ..Parameters::default()
+        };
+        assert!(matches!(
+            <LengthAdaptiveChecker as CheckerPart<_>>::build_part(&space, &bad),
+            Err(BuildError::Validity(_))
+        ));
+        assert_eq!(configuration_name("informed", "fixed-sparse"), "EIT*");
+        type Mit = Estimated<AdaptiveSampler>;
+        assert_eq!(
+            configuration_name(
+                &<Mit as SamplerPart<RealVectorSpace>>::part_name(),
+                "length-adaptive"
+            ),
+            "MIT*"
+        );
+        assert_eq!(
+            configuration_name("gaussian", "dense"),
+            "EIT*[gaussian sampler, dense checks]"
+        );
+    }
+}

@@ -1,0 +1,179 @@
+//! [`Configuration`]: the paper's configurations chosen at run time, and [`build_planner`].
+
+use std::fmt;
+use std::str::FromStr;
+
+use problems::Problem;
+use serde::{Deserialize, Serialize};
+use spaces::RealVectorSpace;
+use validity::StateValidity;
+
+use crate::{BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters, Planner};
+
+/// A configuration of the MIT*/EIT* family, for choosing one at run time (command lines,
+/// benchmark files). The names are `mit-star`, `eit-star`, `mit-star-as`, `mit-star-eis` and
+/// `mit-star-sc`.
+///
+/// ```
+/// use mit_star::Configuration;
+/// let c: Configuration = "mit-star-sc".parse()?;
+/// assert_eq!(c, Configuration::MitStarSc);
+/// assert_eq!(c.to_string(), "mit-star-sc");
+/// assert_eq!(c.label(), "MIT*-SC");
+/// assert!("rrt".parse::<Configuration>().is_err());
+/// # Ok::<(), mit_star::BuildError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Configuration {
+    /// Adaptive sampler, estimated informed set, length-related sparse checks.
+    MitStar,
+    /// Informed sampler, fixed sparse levels.
+    EitStar,
+    /// EIT* with the adaptive sampler.
+    MitStarAs,
+    /// EIT* with the estimated informed set.
+    MitStarEis,
+    /// EIT* with length-related sparse checks.
+    MitStarSc,
+}
+
+impl Configuration {
+    /// Every configuration, MIT* first.
+    pub const ALL: [Self; 5] = [
+        Self::MitStar,
+        Self::EitStar,
+        Self::MitStarAs,
+        Self::MitStarEis,
+        Self::MitStarSc,
+    ];
+
+    /// The command-line name (`mit-star`, …).
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::MitStar => "mit-star",
+            Self::EitStar => "eit-star",
+            Self::MitStarAs => "mit-star-as",
+            Self::MitStarEis => "mit-star-eis",
+            Self::MitStarSc => "mit-star-sc",
+        }
+    }
+
+    /// The paper's label (`MIT*`, `EIT*`, `MIT*-AS`, …).
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::MitStar => "MIT*",
+            Self::EitStar => "EIT*",
+            Self::MitStarAs => "MIT*-AS",
+            Self::MitStarEis => "MIT*-EIS",
+            Self::MitStarSc => "MIT*-SC",
+        }
+    }
+}
+
+impl fmt::Display for Configuration {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Configuration {
+    type Err = BuildError;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Self::ALL
+            .into_iter()
+            .find(|c| c.name() == s)
+            .ok_or_else(|| BuildError::UnknownConfiguration {
+                name: s.to_string(),
+                expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc",
+            })
+    }
+}
+
+/// Builds the planner of `configuration` for `problem`, with `parameters` (the problem's
+/// resolution replaces `parameters.resolution`).
+///
+/// # Errors
+/// As [`Builder::build`](crate::Builder::build).
+///
+/// ```
+/// use mit_star::{build_planner, Configuration, IterationLimit, Parameters};
+/// let problem = problems::ObstacleFree::new(3).build()?;
+/// let mut planner = build_planner(Configuration::EitStar, &problem, &Parameters::default())?;
+/// let outcome = planner.solve(&IterationLimit::new(50))?;
+/// assert_eq!(planner.name(), "EIT*");
+/// assert!((outcome.cost() - problem.straight_line_cost()).abs() < 1e-12);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn build_planner(
+    configuration: Configuration,
+    problem: &Problem,
+    parameters: &Parameters,
+) -> Result<Box<dyn Planner + Send>, BuildError> {
+    build_planner_with(configuration, problem, parameters, problem.world().clone())
+}
+
+/// [`build_planner`] with another validity checker than the problem's world — a wrapper that
+/// times or logs checks, or a different collision model over the problem's space, start, goals
+/// and resolution.
+///
+/// # Errors
+/// As [`Builder::build`](crate::Builder::build).
+///
+/// ```
+/// use mit_star::{build_planner_with, Configuration, FirstSolution, Parameters};
+/// use validity::Counted;
+/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let counted = Counted::new(problem.world().clone());
+/// let mut planner = build_planner_with(Configuration::MitStar, &problem, &Parameters::default(), counted)?;
+/// assert!(planner.solve(&FirstSolution)?.is_solved());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn build_planner_with<V>(
+    configuration: Configuration,
+    problem: &Problem,
+    parameters: &Parameters,
+    validity: V,
+) -> Result<Box<dyn Planner + Send>, BuildError>
+where
+    V: StateValidity + Send + 'static,
+{
+    let mut parameters = parameters.clone();
+    parameters.resolution = problem.resolution();
+    let space = problem.space().clone();
+    let (start, goals) = (problem.start().to_vec(), problem.goals().to_vec());
+    let label = configuration.label();
+    Ok(match configuration {
+        Configuration::MitStar => Box::new(
+            MitStar::<RealVectorSpace, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+        Configuration::EitStar => Box::new(
+            EitStar::<RealVectorSpace, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+        Configuration::MitStarAs => Box::new(
+            MitStarAs::<RealVectorSpace, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+        Configuration::MitStarEis => Box::new(
+            MitStarEis::<RealVectorSpace, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+        Configuration::MitStarSc => Box::new(
+            MitStarSc::<RealVectorSpace, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+    })
+}

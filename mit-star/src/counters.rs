@@ -1,0 +1,44 @@
+//! [`Counters`]: how much work a planner did, for benchmarks.
+
+use serde::{Deserialize, Serialize};
+
+/// Work counters of a planner since it was built or last [cleared](crate::Planner::clear).
+///
+/// Shared by every planner of the framework; a planner leaves at zero what it does not do.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct Counters {
+    /// Iterations of the planner's main loop.
+    pub iterations: u64,
+    /// Batches of samples added.
+    pub batches: u64,
+    /// Valid samples added to the graph.
+    pub samples: u64,
+    /// Raw candidates the sampler drew (before validity and informed-set tests).
+    pub samples_drawn: u64,
+    /// State validity checks, by every part (sampler and edge checks).
+    pub validity_checks: u64,
+    /// Sparse edge checks requested.
+    pub sparse_checks: u64,
+    /// Full edge checks requested.
+    pub full_checks: u64,
+    /// Grid points tested by edge checks.
+    pub points_tested: u64,
+    /// Nearest-neighbour queries.
+    pub neighbour_queries: u64,
+    /// Restarts of the reverse search after an invalid lazy edge.
+    pub reverse_restarts: u64,
+    /// Reverse-search iterations.
+    pub reverse_iterations: u64,
+    /// Forward-search iterations.
+    pub forward_iterations: u64,
+    /// Vertices removed by pruning.
+    pub pruned: u64,
+    /// Vertices in the graph now.
+    pub vertices: u64,
+    /// Stored (checked) edges now.
+    pub edges: u64,
+    /// Most vertices the graph held at once.
+    pub peak_vertices: u64,
+    /// Most stored edges the graph held at once.
+    pub peak_edges: u64,
+}

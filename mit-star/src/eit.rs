@@ -1,0 +1,479 @@
+//! [`Eit`]: the EIT* search skeleton every configuration of the family (MIT*, EIT*, the
+//! ablations) is an instance of.
+
+use std::time::Duration;
+
+use heuristics::{Euclidean, Heuristic};
+use samplers::Sampler;
+use spaces::{StateSpace, States};
+use validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
+
+use crate::forward_queue::ForwardQueue;
+use crate::graph::RandomGeometricGraph;
+use crate::reverse_queue::ReverseQueue;
+use crate::termination::SolveStop;
+use crate::vertex::{NONE, Vertex};
+use crate::{
+    Counters, Endpoint, Observer, Outcome, Parameters, Planner, PlannerError, Solution,
+    Termination, Trace, VertexId, VertexKind,
+};
+
+/// Asymmetric bidirectional lazy search on a batched random geometric graph — the EIT*
+/// skeleton of Strub and Gammell (IJRR 2022) that MIT* (Zhang et al., T-ASE 2025) builds on —
+/// generic over its parts:
+///
+/// | parameter | part | trait |
+/// |---|---|---|
+/// | `S` | state space | [`StateSpace`] |
+/// | `V` | state validity (wrapped in [`Counted`]) | [`StateValidity`] |
+/// | `Smp` | sampler (uniform, informed, adaptive, estimated informed set) | [`Sampler`] |
+/// | `E` | edge checker (fixed or length-related sparse levels, dense) | [`EdgeChecker`] |
+/// | `H` | admissible heuristic | [`Heuristic`] |
+///
+/// MIT*, EIT* and the paper's ablations are type aliases choosing the parts
+/// ([`MitStar`](crate::MitStar), [`EitStar`](crate::EitStar), [`MitStarAs`](crate::MitStarAs),
+/// [`MitStarEis`](crate::MitStarEis), [`MitStarSc`](crate::MitStarSc)).
+///
+/// # Algorithm
+/// A lazy reverse search from the goals computes admissible cost-to-go `ĥ`, cost-to-go
+/// estimates `h̃` and effort-to-go `e` over the RGG using only sparse edge checks; a forward
+/// search from the start follows it, checking edges at full resolution (effort-greedy before
+/// the first solution, A* after), and restarts the reverse search whenever an edge of the lazy
+/// path turns out invalid. When neither search can improve, a new batch of samples is drawn
+/// (under the current cost bound), samples that cannot improve the solution are pruned, and both
+/// searches restart on the denser graph, the forward tree persisting.
+///
+/// # Arguments
+/// The query (start, goals) and the parts; build with [`Eit::builder`] (parameters validated
+/// once) or [`Eit::with_parts`].
+///
+/// # Returns
+/// [`Planner::solve`] returns the best valid path so far ([`Outcome`]); repeated calls keep
+/// improving it. Every edge of a returned path was checked at full resolution.
+///
+/// # Complexity
+/// Per batch of `m` samples with `q` in total: `O(m log² q)` amortised to insert them in the
+/// nearest-neighbour forest, one `O(log q + k)` neighbour query per expanded vertex, and
+/// `O(log |queue|)` per queued edge; memory `O(q·k)` for the cached neighbourhoods and one
+/// record per checked edge. Edge checking (state validity calls) dominates in practice.
+///
+/// # Example
+/// ```
+/// use mit_star::{EitStar, IterationLimit, Planner};
+/// use spaces::RealVectorSpace;
+/// use validity::{AxisBox, World};
+///
+/// let space = RealVectorSpace::cube(2, -0.5, 0.5)?;
+/// let world = World::in_space(&space).with_obstacle(AxisBox::new(vec![0.0, -0.1], vec![0.1, 0.8]))?;
+/// let mut planner = EitStar::builder(space, world, vec![-0.4, 0.0], vec![vec![0.4, 0.0]])
+///     .resolution(1e-3)
+///     .seed(7)
+///     .build()?;
+/// let outcome = planner.solve(&IterationLimit::new(20_000))?;
+/// let solution = outcome.solution().expect("a path around the wall");
+/// assert!(solution.cost >= 0.8);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub struct Eit<S, V, Smp, E, H = Euclidean> {
+    pub(crate) space: S,
+    pub(crate) validity: Counted<V>,
+    pub(crate) sampler: Smp,
+    pub(crate) checker: E,
+    pub(crate) heuristic: H,
+    pub(crate) parameters: Parameters,
+    pub(crate) name: String,
+    pub(crate) start: Vec<f64>,
+    pub(crate) goals: Vec<Vec<f64>>,
+    /// The sampler and checker as built, restored by `clear`.
+    initial: (Smp, E),
+    pub(crate) step: f64,
+    pub(crate) graph: RandomGeometricGraph,
+    pub(crate) forward: ForwardQueue,
+    pub(crate) reverse: ReverseQueue,
+    pub(crate) reverse_tag: u32,
+    pub(crate) start_id: u32,
+    pub(crate) goal_ids: Vec<u32>,
+    pub(crate) best_cost: f64,
+    pub(crate) best_goal: u32,
+    pub(crate) lower_bound: f64,
+    pub(crate) last_prune_cost: f64,
+    /// The informed set is empty: no better solution exists.
+    pub(crate) exhausted: bool,
+    ready: bool,
+    pub(crate) trace: Trace,
+    pub(crate) counters: Counters,
+    pub(crate) elapsed: Duration,
+    pub(crate) observer: Option<Box<dyn Observer>>,
+    pub(crate) scratch: Vec<u32>,
+    pub(crate) extras: Vec<u32>,
+    pub(crate) batch_ids: Vec<u32>,
+    pub(crate) sample: Vec<f64>,
+}
+
+impl<S, V, Smp, E, H> std::fmt::Debug for Eit<S, V, Smp, E, H> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Eit")
+            .field("name", &self.name)
+            .field("parameters", &self.parameters)
+            .field("vertices", &self.graph.vertex_count())
+            .field("best_cost", &self.best_cost)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+where
+    S: StateSpace,
+    V: StateValidity,
+    Smp: Sampler<S, Counted<V>> + Clone,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+    H: Heuristic<S>,
+{
+    /// A planner from ready-made parts. Prefer [`Eit::builder`], which builds the parts from
+    /// validated [`Parameters`]; here `parameters` only sets the search's own options (batch
+    /// size, η, connection, pruning, suspension rule) and is reported by
+    /// [`settings`](Planner::settings).
+    #[allow(clippy::too_many_arguments)]
+    pub fn with_parts(
+        space: S,
+        validity: V,
+        start: Vec<f64>,
+        goals: Vec<Vec<f64>>,
+        sampler: Smp,
+        checker: E,
+        heuristic: H,
+        parameters: Parameters,
+    ) -> Self {
+        let step = <E as EdgeChecker<S, Counted<V>>>::step(&checker);
+        let n = space.dimension();
+        let euclidean = space.is_euclidean();
+        Self {
+            initial: (sampler.clone(), checker.clone()),
+            space,
+            validity: Counted::new(validity),
+            sampler,
+            checker,
+            heuristic,
+            parameters,
+            name: String::from("EIT*-skeleton"),
+            start,
+            goals,
+            step,
+            graph: RandomGeometricGraph::new(n, euclidean),
+            forward: ForwardQueue::default(),
+            reverse: ReverseQueue::default(),
+            reverse_tag: 0,
+            start_id: NONE,
+            goal_ids: Vec::new(),
+            best_cost: f64::INFINITY,
+            best_goal: NONE,
+            lower_bound: 0.0,
+            last_prune_cost: f64::INFINITY,
+            exhausted: false,
+            ready: false,
+            trace: Trace::default(),
+            counters: Counters::default(),
+            elapsed: Duration::ZERO,
+            observer: None,
+            scratch: Vec::new(),
+            extras: Vec::new(),
+            batch_ids: Vec::new(),
+            sample: vec![0.0; n],
+        }
+    }
+
+    /// Sets the name reports print.
+    pub fn set_name(&mut self, name: impl Into<String>) {
+        self.name = name.into();
+    }
+
+    /// Installs an observer of solutions, batches and restarts.
+    pub fn set_observer(&mut self, observer: Box<dyn Observer>) {
+        self.observer = Some(observer);
+    }
+
+    /// The parameters.
+    pub fn parameters(&self) -> &Parameters {
+        &self.parameters
+    }
+
+    /// The random geometric graph, read-only (vertices, forward tree, checked edges).
+    pub fn graph(&self) -> &RandomGeometricGraph {
+        &self.graph
+    }
+
+    /// The state space.
+    pub fn space(&self) -> &S {
+        &self.space
+    }
+
+    /// The validity checker given at construction.
+    pub fn validity(&self) -> &V {
+        self.validity.inner()
+    }
+
+    /// The sampler.
+    pub fn sampler(&self) -> &Smp {
+        &self.sampler
+    }
+
+    /// The full-resolution collision-check step `L`.
+    pub fn step(&self) -> f64 {
+        self.step
+    }
+
+    /// The vertices of the best solution, start first (empty without one).
+    pub fn solution_vertices(&self) -> Vec<VertexId> {
+        let mut path = Vec::new();
+        if self.best_goal == NONE {
+            return path;
+        }
+        let mut v = self.best_goal;
+        while v != NONE {
+            path.push(VertexId(v));
+            v = self.graph.vertex(v).parent;
+        }
+        path.reverse();
+        path
+    }
+
+    /// Checks the query: at least one goal; start and goals of the space's dimension, finite,
+    /// in bounds and valid.
+    ///
+    /// # Errors
+    /// The first problem found, naming the state.
+    pub fn validate_query(&self) -> Result<(), PlannerError> {
+        validate_query(&self.space, self.validity.inner(), &self.start, &self.goals)
+    }
+
+    /// Builds the initial graph (start and goals) and both searches, once.
+    fn setup(&mut self) -> Result<(), PlannerError> {
+        if self.ready {
+            return Ok(());
+        }
+        self.validate_query()?;
+        let n = self.space.dimension();
+        self.graph = RandomGeometricGraph::new(n, self.space.is_euclidean());
+        let start = self.start.clone();
+        let vertex = self.new_vertex(VertexKind::Start, &start);
+        self.start_id = self.graph.add_vertex(&start, vertex);
+        self.graph.vertex_mut(self.start_id).g = 0.0;
+        self.goal_ids.clear();
+        for i in 0..self.goals.len() {
+            let goal = self.goals[i].clone();
+            let vertex = self.new_vertex(VertexKind::Goal, &goal);
+            let id = self.graph.add_vertex(&goal, vertex);
+            self.goal_ids.push(id);
+        }
+        self.lower_bound = self
+            .heuristic
+            .cost_to_go(&self.space, &self.start, &self.goals);
+        let mut ids = self.goal_ids.clone();
+        ids.push(self.start_id);
+        self.graph.commit(&ids);
+        self.update_neighbourhood();
+        self.forward.clear();
+        self.restart_reverse(&spaces::Never);
+        self.expand_forward(self.start_id, NONE, &spaces::Never);
+        self.ready = true;
+        Ok(())
+    }
+
+    /// A vertex for `state` with its static heuristic values.
+    pub(crate) fn new_vertex(&self, kind: VertexKind, state: &[f64]) -> Vertex {
+        let (space, h) = (&self.space, &self.heuristic);
+        let to_come = h.cost_to_come(space, &self.start, state);
+        let to_go = h.cost_to_go(space, state, &self.goals);
+        let effort = h.effort(space, &self.start, state, self.step);
+        Vertex::new(kind, to_come, to_go, effort)
+    }
+
+    /// One iteration (spec §3.1).
+    pub(crate) fn iterate(&mut self, stop: &SolveStop<'_>) {
+        self.counters.iterations += 1;
+        if self.sampler.wants_batch() {
+            self.add_batch(stop);
+        } else if self.continue_reverse() {
+            self.reverse_step(stop);
+        } else if self.continue_forward() {
+            self.forward_step(stop);
+        } else {
+            self.add_batch(stop);
+        }
+    }
+
+    /// `true` once no better solution can exist.
+    fn is_optimal(&self) -> bool {
+        self.exhausted || self.best_cost <= self.lower_bound * (1.0 + 1e-12)
+    }
+
+    /// Records a new best solution ending at `goal`.
+    pub(crate) fn record_solution(&mut self, goal: u32, stop: &SolveStop<'_>) {
+        let cost = self.graph.vertex(goal).g;
+        if cost >= self.best_cost {
+            return;
+        }
+        self.best_cost = cost;
+        self.best_goal = goal;
+        let time = (self.elapsed + stop.elapsed()).as_secs_f64();
+        self.trace.push(time, cost);
+        if let Some(observer) = self.observer.as_mut() {
+            observer.on_solution(&crate::SolutionEvent {
+                time,
+                cost,
+                iteration: self.counters.iterations,
+                vertices: self.graph.vertex_count(),
+            });
+        }
+    }
+
+    /// The best solution's path, after checking that every edge of it is whitelisted.
+    fn extract_solution(&self) -> Result<Option<Solution>, PlannerError> {
+        let vertices = self.solution_vertices();
+        if vertices.is_empty() {
+            return Ok(None);
+        }
+        let mut path = States::with_capacity(self.space.dimension(), vertices.len());
+        for (i, v) in vertices.iter().enumerate() {
+            let x = self.graph.state(v.0);
+            if i > 0 {
+                let u = vertices[i - 1].0;
+                let (a, b) = (self.graph.state(u), x);
+                let grid = EdgeGrid::new(self.space.distance(a, b), self.step);
+                let whitelisted = grid.points() == 0
+                    || self.graph.edge(u, v.0).is_some_and(|r| {
+                        r.status == EdgeStatus::Valid && r.progress.tested() >= grid.points()
+                    });
+                if !whitelisted {
+                    return Err(PlannerError::Internal(format!(
+                        "solution edge {u} → {} was not fully checked",
+                        v.0
+                    )));
+                }
+            }
+            path.push(x);
+        }
+        Ok(Some(Solution {
+            path,
+            cost: self.best_cost,
+        }))
+    }
+}
+
+/// Checks a query against a space and a validity checker.
+pub(crate) fn validate_query<S, V>(
+    space: &S,
+    validity: &V,
+    start: &[f64],
+    goals: &[Vec<f64>],
+) -> Result<(), PlannerError>
+where
+    S: StateSpace + ?Sized,
+    V: StateValidity + ?Sized,
+{
+    if goals.is_empty() {
+        return Err(PlannerError::NoGoals);
+    }
+    let endpoints = std::iter::once((Endpoint::Start, start)).chain(
+        goals
+            .iter()
+            .enumerate()
+            .map(|(i, g)| (Endpoint::Goal(i), g.as_slice())),
+    );
+    for (endpoint, state) in endpoints {
+        space
+            .check_state(state)
+            .map_err(|source| PlannerError::State { endpoint, source })?;
+        if !validity.is_valid(state) {
+            return Err(PlannerError::InCollision {
+                endpoint,
+                state: state.to_vec(),
+            });
+        }
+    }
+    Ok(())
+}
+
+impl<S, V, Smp, E, H> Planner for Eit<S, V, Smp, E, H>
+where
+    S: StateSpace,
+    V: StateValidity,
+    Smp: Sampler<S, Counted<V>> + Clone,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+    H: Heuristic<S>,
+{
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
+        let stop = SolveStop::new(termination);
+        self.setup()?;
+        let mut iterations = 0;
+        loop {
+            stop.update(iterations, self.best_cost);
+            if spaces::Stop::should_stop(&stop) || self.is_optimal() {
+                break;
+            }
+            self.iterate(&stop);
+            iterations += 1;
+        }
+        self.elapsed += stop.elapsed();
+        Ok(match self.extract_solution()? {
+            Some(solution) => Outcome::Solved(solution),
+            None => Outcome::NoSolution,
+        })
+    }
+
+    fn clear(&mut self) {
+        self.sampler = self.initial.0.clone();
+        self.checker = self.initial.1.clone();
+        self.validity.reset();
+        self.graph = RandomGeometricGraph::new(self.space.dimension(), self.space.is_euclidean());
+        self.forward.clear();
+        self.reverse.clear();
+        self.reverse_tag = 0;
+        self.start_id = NONE;
+        self.goal_ids.clear();
+        self.best_cost = f64::INFINITY;
+        self.best_goal = NONE;
+        self.last_prune_cost = f64::INFINITY;
+        self.exhausted = false;
+        self.ready = false;
+        self.trace.clear();
+        self.counters = Counters::default();
+        self.elapsed = Duration::ZERO;
+    }
+
+    fn best_cost(&self) -> f64 {
+        self.best_cost
+    }
+
+    fn trace(&self) -> &Trace {
+        &self.trace
+    }
+
+    fn counters(&self) -> Counters {
+        let mut c = self.counters;
+        let edges = <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker);
+        c.sparse_checks = edges.sparse_checks;
+        c.full_checks = edges.full_checks;
+        c.points_tested = edges.points_tested;
+        c.validity_checks = self.validity.count();
+        c.samples_drawn = self.sampler.counters().drawn;
+        c.neighbour_queries = self.graph.neighbour_queries();
+        c.vertices = self.graph.vertex_count() as u64;
+        c.edges = self.graph.edge_count() as u64;
+        c.peak_vertices = c.peak_vertices.max(c.vertices);
+        c.peak_edges = c.peak_edges.max(c.edges);
+        c
+    }
+
+    fn settings(&self) -> Vec<(String, String)> {
+        self.parameters.settings()
+    }
+
+    fn snapshot(&self) -> Option<crate::Snapshot> {
+        Some(self.graph_snapshot())
+    }
+}

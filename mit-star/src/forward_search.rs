@@ -1,0 +1,250 @@
+//! The forward search from the start (spec §3.3): full edge checks, effort-greedy before the
+//! first solution and A* after, and the reverse-search restart when a lazy edge is invalid.
+
+use heuristics::Heuristic;
+use samplers::{LazyPathFailure, Sampler};
+use spaces::{StateSpace, Stop};
+use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+
+use crate::RestartEvent;
+use crate::eit::Eit;
+use crate::forward_queue::{ForwardEdge, Front};
+use crate::graph::EdgeRecord;
+use crate::reverse_search::forward_keys;
+use crate::termination::SolveStop;
+use crate::vertex::NONE;
+
+impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+where
+    S: StateSpace,
+    V: StateValidity,
+    Smp: Sampler<S, Counted<V>> + Clone,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+    H: Heuristic<S>,
+{
+    /// `ε = ∞` before the first solution, `ε = 1` after.
+    pub(crate) fn front(&self) -> Front {
+        if self.best_cost.is_finite() {
+            Front::Optimal
+        } else {
+            Front::Greedy
+        }
+    }
+
+    /// Should the forward search take the next step: is there an edge whose admissible key
+    /// beats the current solution?
+    pub(crate) fn continue_forward(&mut self) -> bool {
+        !self.forward.is_empty() && self.forward.min_lower() < self.best_cost
+    }
+
+    /// Queues `edge` with its current keys.
+    fn queue_forward(&mut self, edge: ForwardEdge) {
+        let keys = forward_keys(&self.graph, self.reverse_tag, self.step, &edge);
+        let open = !self.graph.vertex(edge.target).is_closed(self.reverse_tag);
+        self.forward.insert_or_update(edge, keys, open);
+    }
+
+    /// Queues the forward edges out of `v` (except back to `exclude` and known-invalid ones):
+    /// its cached neighbours plus its tree neighbours.
+    pub(crate) fn expand_forward(&mut self, v: u32, exclude: u32, stop: &dyn Stop) {
+        let len = self.graph.neighbours(v, &self.space, &self.heuristic, stop);
+        let tag = self.graph.tag;
+        self.graph.vertex_mut(v).forward_expanded = tag;
+        for i in 0..len {
+            let n = self.graph.neighbour(v, i);
+            if n.id == exclude || self.is_blacklisted(v, n.id) {
+                continue;
+            }
+            self.queue_forward(ForwardEdge {
+                source: v,
+                target: n.id,
+                hint: i as u32,
+                cost: n.cost,
+                distance: n.distance,
+            });
+        }
+        self.collect_tree_extras(v, len, true);
+        for j in 0..self.extras.len() {
+            let w = self.extras[j];
+            if w == exclude || self.is_blacklisted(v, w) {
+                continue;
+            }
+            let (cost, distance) = self.edge_geometry(v, w, NONE);
+            self.queue_forward(ForwardEdge {
+                source: v,
+                target: w,
+                hint: NONE,
+                cost,
+                distance,
+            });
+        }
+    }
+
+    /// `true` if the edge `v — w` is known invalid.
+    fn is_blacklisted(&self, v: u32, w: u32) -> bool {
+        self.graph
+            .edge(v, w)
+            .is_some_and(|r| r.status == EdgeStatus::Invalid)
+    }
+
+    /// One forward-search step.
+    pub(crate) fn forward_step(&mut self, stop: &SolveStop<'_>) {
+        self.counters.forward_iterations += 1;
+        let front = self.front();
+        let Some((edge, _)) = self.forward.pop(front) else {
+            return;
+        };
+        let (u, v, tag) = (edge.source, edge.target, self.reverse_tag);
+        let target = self.graph.vertex(v);
+        // A forward-tree edge (the tree persists across batches): just continue through it.
+        if target.parent == u {
+            if !target.is_goal() {
+                self.expand_forward(v, u, stop);
+            }
+            return;
+        }
+        let g_u = self.graph.vertex(u).g;
+        let (g_v, h_v) = (target.g, target.h(tag));
+        if g_u + edge.cost >= g_v {
+            return;
+        }
+        if self.best_cost.is_finite() && g_u + edge.cost + h_v >= self.best_cost {
+            return;
+        }
+        let record = self.graph.edge(u, v);
+        let status = match record.map(|r| r.status) {
+            Some(status @ (EdgeStatus::Valid | EdgeStatus::Invalid)) => status,
+            _ => {
+                let mut progress = record.map_or(EdgeProgress::UNTESTED, |r| r.progress);
+                let before = progress;
+                let (a, b) = (self.graph.state(u), self.graph.state(v));
+                let status =
+                    self.checker
+                        .check_full(&self.space, &self.validity, a, b, &mut progress, stop);
+                if progress != before || record.is_none() {
+                    self.graph.store_edge(u, v, EdgeRecord { progress, status });
+                }
+                status
+            }
+        };
+        match status {
+            EdgeStatus::Valid => {
+                let new_g = g_u + edge.distance;
+                if new_g < g_v && (!self.best_cost.is_finite() || new_g + h_v < self.best_cost) {
+                    self.rewire(v, u, edge.distance, stop);
+                }
+            }
+            EdgeStatus::Invalid => {
+                let x = self.graph.vertex(u);
+                let y = self.graph.vertex(v);
+                let lazy = x.reverse_parent(tag) == v || y.reverse_parent(tag) == u;
+                if lazy {
+                    self.repair_lazy_path(g_u, edge.cost, h_v, stop);
+                }
+            }
+            // The termination condition fired mid-check: keep the edge (and its progress).
+            EdgeStatus::Unknown => self.queue_forward(edge),
+        }
+    }
+
+    /// Makes `u` the forward parent of `v` through an edge of true cost `cost`, propagates the
+    /// new cost-to-come through `v`'s subtree, records improved solutions and expands `v`.
+    fn rewire(&mut self, v: u32, u: u32, cost: f64, stop: &SolveStop<'_>) {
+        self.graph.set_forward_parent(v, u, cost);
+        // Propagate to the subtree (iteratively; reuse the scratch stack).
+        let mut stack = std::mem::take(&mut self.scratch);
+        stack.clear();
+        let mut child = self.graph.vertex(v).first_child;
+        while child != NONE {
+            stack.push(child);
+            child = self.graph.vertex(child).next_sibling;
+        }
+        let batch = self.graph.tag;
+        while let Some(d) = stack.pop() {
+            let parent = self.graph.vertex(d).parent;
+            let g = self.graph.vertex(parent).g + self.graph.vertex(d).parent_cost;
+            self.graph.vertex_mut(d).g = g;
+            let mut child = self.graph.vertex(d).first_child;
+            while child != NONE {
+                stack.push(child);
+                child = self.graph.vertex(child).next_sibling;
+            }
+            if self.graph.vertex(d).is_goal() {
+                self.record_solution(d, stop);
+            } else if self.graph.vertex(d).forward_expanded == batch {
+                self.refresh_outgoing(d);
+            }
+        }
+        self.scratch = stack;
+        if self.graph.vertex(v).is_goal() {
+            self.record_solution(v, stop);
+        } else {
+            self.expand_forward(v, u, stop);
+        }
+    }
+
+    /// Re-keys the queued forward edges out of `d` after its cost-to-come decreased.
+    fn refresh_outgoing(&mut self, d: u32) {
+        let x = self.graph.vertex(d);
+        if x.neighbours_tag != self.graph.tag {
+            return;
+        }
+        let len = x.neighbours_len as usize;
+        let (graph, tag, step) = (&self.graph, self.reverse_tag, self.step);
+        for i in 0..len {
+            let n = graph.neighbour(d, i);
+            let edge = ForwardEdge {
+                source: d,
+                target: n.id,
+                hint: i as u32,
+                cost: n.cost,
+                distance: n.distance,
+            };
+            self.forward
+                .update(d, n.id, forward_keys(graph, tag, step, &edge));
+        }
+        self.collect_tree_extras(d, len, true);
+        for j in 0..self.extras.len() {
+            let w = self.extras[j];
+            let (cost, distance) = self.edge_geometry(d, w, NONE);
+            let edge = ForwardEdge {
+                source: d,
+                target: w,
+                hint: NONE,
+                cost,
+                distance,
+            };
+            let keys = forward_keys(&self.graph, self.reverse_tag, self.step, &edge);
+            self.forward.update(d, w, keys);
+        }
+    }
+
+    /// The lazy path had an invalid edge `x_s → x_t` (spec §3.3): tell the sampler (MIT*'s
+    /// estimated informed set) while no solution exists, refine the sparse checks, restart the
+    /// reverse search and re-key the forward queue.
+    fn repair_lazy_path(
+        &mut self,
+        g_source: f64,
+        edge_estimate: f64,
+        h_target: f64,
+        stop: &dyn Stop,
+    ) {
+        if !self.best_cost.is_finite() {
+            self.sampler.observe_invalid_lazy_edge(LazyPathFailure {
+                cost_to_come: g_source,
+                edge_estimate,
+                cost_to_go: h_target,
+            });
+        }
+        self.checker.refine();
+        self.counters.reverse_restarts += 1;
+        self.restart_reverse(stop);
+        if let Some(observer) = self.observer.as_mut() {
+            observer.on_reverse_restart(&RestartEvent {
+                restarts: self.counters.reverse_restarts,
+                sparse_level: <E as EdgeChecker<S, Counted<V>>>::level(&self.checker),
+                solved: self.best_cost.is_finite(),
+            });
+        }
+    }
+}

@@ -1,0 +1,295 @@
+//! [`RandomGeometricGraph`]: the planner's samples, their neighbourhoods and the edges it has
+//! touched, on a petgraph [`StableGraph`].
+
+use std::collections::HashMap;
+
+use petgraph::Undirected;
+use petgraph::graph::{EdgeIndex, NodeIndex};
+use petgraph::stable_graph::StableGraph;
+use spaces::States;
+use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
+
+use crate::Neighbours;
+use crate::edge_hasher::{BuildEdgeHasher, edge_key};
+use crate::vertex::{NONE, Vertex};
+
+use crate::{NearestNeighbors, VertexId, VertexKind};
+
+/// The key of the undirected edge `u — v`.
+#[inline]
+fn pair(u: u32, v: u32) -> u64 {
+    edge_key(u.min(v), u.max(v))
+}
+
+/// What the planner knows about an edge it has checked (the weight of a stored edge).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct EdgeRecord {
+    /// Grid points tested so far, or "invalid".
+    pub(crate) progress: EdgeProgress,
+    /// Whitelisted (`Valid`), blacklisted (`Invalid`) or not yet decided.
+    pub(crate) status: EdgeStatus,
+}
+
+/// One cached neighbour of a vertex: who (id and birth stamp, so a pruned or reused id is
+/// recognised), the admissible edge cost `ĉ`, and the metric distance (which sizes the edge's
+/// check grid and orders the list).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Neighbour {
+    pub(crate) id: u32,
+    pub(crate) birth: u32,
+    pub(crate) cost: f64,
+    pub(crate) distance: f64,
+}
+
+/// How vertices are connected in the current batch.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Neighbourhood {
+    /// The `k` nearest vertices.
+    Nearest(usize),
+    /// Every vertex within the radius.
+    Radius(f64),
+}
+
+/// Birth stamp of a removed vertex.
+pub(crate) const DEAD: u32 = u32::MAX;
+
+/// The random geometric graph (RGG) over every sample the planner keeps.
+///
+/// Vertices are the samples, the start and the goals; their states live in one contiguous
+/// [`States`] store indexed by vertex id, and their search data is the node weight of a petgraph
+/// [`StableGraph`] (so ids stay valid when pruning removes vertices). The graph is implicit: a
+/// vertex's neighbours — its `k` nearest vertices or those within a radius, found with
+/// [`NearestNeighbors`] — are computed when it is first expanded and cached with their `ĉ` and
+/// distance; in later batches the cached list is brought up to date by dropping pruned vertices
+/// and merging in the samples added since (exactly the list a fresh query would give). Only
+/// edges the planner has checked are stored, as petgraph edges carrying their checking progress
+/// and white/black status, with a hash index for constant-time lookup.
+///
+/// The planner owns one; [`Eit::graph`](crate::Eit::graph) exposes it read-only for inspection
+/// (tests, plots).
+#[derive(Debug, Clone)]
+pub struct RandomGeometricGraph {
+    pub(crate) graph: StableGraph<Vertex, EdgeRecord, Undirected, u32>,
+    pub(crate) states: States,
+    /// Birth stamp per id (`DEAD` once removed); a new vertex gets a fresh stamp.
+    pub(crate) births: Vec<u32>,
+    next_birth: u32,
+    /// Stored edges by their (smaller, larger) vertex pair.
+    edges: HashMap<u64, u32, BuildEdgeHasher>,
+    pub(crate) nn: NearestNeighbors,
+    pub(crate) euclidean: bool,
+    /// Cached neighbour list per id, nearest first (`neighbours_len` entries used this batch).
+    pub(crate) lists: Vec<Vec<Neighbour>>,
+    /// Batch tag: lists validated with another tag must be brought up to date.
+    pub(crate) tag: u32,
+    /// Every vertex ever committed, in order: a list covering `log[..p]` misses `log[p..]`.
+    pub(crate) log: Vec<(u32, u32)>,
+    pub(crate) neighbourhood: Neighbourhood,
+    pub(crate) found: Neighbours,
+    pub(crate) linear_queries: u64,
+}
+
+impl RandomGeometricGraph {
+    /// An empty graph for states of `dimension` coordinates. With `euclidean` the neighbours
+    /// are found with kd-trees, otherwise by a linear scan with the space's metric.
+    pub(crate) fn new(dimension: usize, euclidean: bool) -> Self {
+        Self {
+            graph: StableGraph::default(),
+            states: States::new(dimension),
+            births: Vec::new(),
+            next_birth: 0,
+            edges: HashMap::default(),
+            nn: NearestNeighbors::new(dimension),
+            euclidean,
+            lists: Vec::new(),
+            tag: 1,
+            log: Vec::new(),
+            neighbourhood: Neighbourhood::Nearest(1),
+            found: Neighbours::new(),
+            linear_queries: 0,
+        }
+    }
+
+    /// Adds a vertex at `state` (not yet visible to neighbour queries until
+    /// [`commit`](Self::commit)).
+    pub(crate) fn add_vertex(&mut self, state: &[f64], vertex: Vertex) -> u32 {
+        let id = self.graph.add_node(vertex).index();
+        if id == self.states.len() {
+            self.states.push(state);
+            self.births.push(DEAD);
+            self.lists.push(Vec::new());
+        } else {
+            self.states[id].copy_from_slice(state);
+            self.lists[id].clear();
+        }
+        self.births[id] = self.next_birth;
+        self.next_birth = self.next_birth.wrapping_add(1) % DEAD;
+        id as u32
+    }
+
+    /// Makes `ids` visible to neighbour queries and starts a new batch.
+    pub(crate) fn commit(&mut self, ids: &[u32]) {
+        let (states, births) = (&self.states, &self.births);
+        if self.euclidean {
+            self.nn.insert_born(
+                ids.iter()
+                    .map(|&id| (id, births[id as usize], &states[id as usize])),
+            );
+        }
+        self.log
+            .extend(ids.iter().map(|&id| (id, births[id as usize])));
+        self.new_batch();
+    }
+
+    /// Starts a new batch: cached lists must be brought up to date before use.
+    pub(crate) fn new_batch(&mut self) {
+        self.tag = self.tag.wrapping_add(1).max(1);
+    }
+
+    /// Sets the connection rule for the current batch.
+    pub(crate) fn set_neighbourhood(&mut self, neighbourhood: Neighbourhood) {
+        self.neighbourhood = neighbourhood;
+    }
+
+    /// The state of vertex `v`.
+    #[inline]
+    pub(crate) fn state(&self, v: u32) -> &[f64] {
+        &self.states[v as usize]
+    }
+
+    /// The search data of vertex `v`.
+    #[inline]
+    pub(crate) fn vertex(&self, v: u32) -> &Vertex {
+        &self.graph[NodeIndex::new(v as usize)]
+    }
+
+    /// The search data of vertex `v`, mutably.
+    #[inline]
+    pub(crate) fn vertex_mut(&mut self, v: u32) -> &mut Vertex {
+        &mut self.graph[NodeIndex::new(v as usize)]
+    }
+
+    /// Neighbour queries answered so far (full queries; incremental updates not counted).
+    pub(crate) fn neighbour_queries(&self) -> u64 {
+        self.nn.queries() + self.linear_queries
+    }
+
+    /// The `i`-th cached neighbour of `v`.
+    #[inline]
+    pub(crate) fn neighbour(&self, v: u32, i: usize) -> Neighbour {
+        self.lists[v as usize][i]
+    }
+
+    /// The `i`-th cached neighbour of `v` if it is `w` (a hint from a queued edge).
+    #[inline]
+    pub(crate) fn hinted(&self, v: u32, i: u32, w: u32) -> Option<Neighbour> {
+        self.lists[v as usize]
+            .get(i as usize)
+            .filter(|n| n.id == w)
+            .copied()
+    }
+
+    /// What is known about the edge `u — v`: its record if it was checked before.
+    #[inline]
+    pub(crate) fn edge(&self, u: u32, v: u32) -> Option<EdgeRecord> {
+        self.edges
+            .get(&pair(u, v))
+            .map(|&e| self.graph[EdgeIndex::new(e as usize)])
+    }
+
+    /// Progress of the edge `u — v` (untested if never checked).
+    #[inline]
+    pub(crate) fn progress(&self, u: u32, v: u32) -> EdgeProgress {
+        self.edge(u, v)
+            .map_or(EdgeProgress::UNTESTED, |r| r.progress)
+    }
+
+    /// Stores what a check learned about the edge `u — v`.
+    pub(crate) fn store_edge(&mut self, u: u32, v: u32, record: EdgeRecord) {
+        let key = pair(u, v);
+        if let Some(&e) = self.edges.get(&key) {
+            self.graph[EdgeIndex::new(e as usize)] = record;
+            return;
+        }
+        let e = self.graph.add_edge(
+            NodeIndex::new(u as usize),
+            NodeIndex::new(v as usize),
+            record,
+        );
+        self.edges.insert(key, e.index() as u32);
+    }
+
+    /// Removes vertex `v` and its stored edges.
+    pub(crate) fn remove_vertex(&mut self, v: u32) {
+        let node = NodeIndex::new(v as usize);
+        let mut edges = self.graph.neighbors(node).detach();
+        while let Some((_, w)) = edges.next(&self.graph) {
+            self.edges.remove(&pair(v, w.index() as u32));
+        }
+        self.graph.remove_node(node);
+        self.births[v as usize] = DEAD;
+        self.lists[v as usize].clear();
+    }
+
+    // ----- read-only view -----
+
+    /// Number of vertices (samples, start and goals).
+    pub fn vertex_count(&self) -> usize {
+        self.graph.node_count()
+    }
+
+    /// Number of stored (checked) edges, white-, black- or not yet listed.
+    pub fn edge_count(&self) -> usize {
+        self.graph.edge_count()
+    }
+
+    /// Every vertex with its state, in id order.
+    pub fn vertices(&self) -> impl Iterator<Item = (VertexId, &[f64])> + '_ {
+        self.graph
+            .node_indices()
+            .map(|n| (VertexId(n.index() as u32), &self.states[n.index()]))
+    }
+
+    /// The state of a vertex (`None` if the id is not in use).
+    pub fn state_of(&self, v: VertexId) -> Option<&[f64]> {
+        self.graph
+            .contains_node(NodeIndex::new(v.index()))
+            .then(|| &self.states[v.index()])
+    }
+
+    /// What a vertex stands for (`None` if the id is not in use).
+    pub fn kind(&self, v: VertexId) -> Option<VertexKind> {
+        self.graph
+            .node_weight(NodeIndex::new(v.index()))
+            .map(|x| x.kind)
+    }
+
+    /// The cost-to-come of a vertex in the forward tree (∞ if not in it).
+    pub fn cost_to_come(&self, v: VertexId) -> f64 {
+        self.graph
+            .node_weight(NodeIndex::new(v.index()))
+            .map_or(f64::INFINITY, |x| x.g)
+    }
+
+    /// The forward-tree parent of a vertex.
+    pub fn forward_parent(&self, v: VertexId) -> Option<VertexId> {
+        let x = self.graph.node_weight(NodeIndex::new(v.index()))?;
+        (x.parent != NONE).then_some(VertexId(x.parent))
+    }
+
+    /// Every forward-tree edge as `(parent, child)`.
+    pub fn forward_edges(&self) -> impl Iterator<Item = (VertexId, VertexId)> + '_ {
+        self.graph.node_indices().filter_map(|n| {
+            let p = self.graph[n].parent;
+            (p != NONE).then_some((VertexId(p), VertexId(n.index() as u32)))
+        })
+    }
+
+    /// The white/black status of the edge `a — b` whose check grid has step `step`: `Valid` if
+    /// every grid point was tested valid (or the grid has none), `Invalid` if one was invalid,
+    /// `Unknown` otherwise or if the edge was never checked.
+    pub fn edge_status(&self, a: VertexId, b: VertexId, distance: f64, step: f64) -> EdgeStatus {
+        let grid = EdgeGrid::new(distance, step);
+        self.progress(a.0, b.0).status(&grid)
+    }
+}

@@ -1,0 +1,379 @@
+//! [`KdTree`]: a static, bucketed kd-tree over points of any dimension, with exact k-nearest and
+//! radius queries that never allocate once their buffers are warm.
+
+use crate::Neighbours;
+
+/// Points per leaf bucket. Small enough that leaves are scanned quickly, large enough that the
+/// tree stays shallow.
+pub(crate) const BUCKET: usize = 12;
+
+/// Marks a leaf in [`Node::dim`].
+pub(crate) const LEAF: u32 = u32::MAX;
+
+/// Which points a query may return: all, or those whose birth stamp is still current
+/// (`births[id] == birth`), so removed points can stay in a tree until it is rebuilt.
+#[derive(Clone, Copy)]
+pub(crate) enum Alive<'a> {
+    /// Every point.
+    All,
+    /// Points whose stamp equals the current stamp of their id.
+    Current(&'a [u32]),
+}
+
+impl Alive<'_> {
+    #[inline]
+    pub(crate) fn contains(self, id: u32, birth: u32) -> bool {
+        match self {
+            Self::All => true,
+            Self::Current(births) => births.get(id as usize) == Some(&birth),
+        }
+    }
+}
+
+/// One node: a leaf owns the points `start..end` (in tree order); an inner node splits along
+/// `dim` with every left point `≤ low` and every right point `≥ high` on that coordinate.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Node {
+    pub(crate) start: u32,
+    pub(crate) end: u32,
+    pub(crate) dim: u32,
+    pub(crate) low: f64,
+    pub(crate) high: f64,
+    pub(crate) left: u32,
+    pub(crate) right: u32,
+}
+
+/// A static kd-tree over a set of points identified by `u32` ids.
+///
+/// Built once in `O(q log q)` (median splits along the widest coordinate of each cell, the
+/// points partitioned in place so every pass is sequential; the shape is a deterministic
+/// function of the input), then
+/// queried for exact Euclidean k-nearest neighbours ([`nearest`](Self::nearest)) or every point
+/// within a radius ([`within`](Self::within)). The points' coordinates are copied into the tree
+/// in leaf order, so a leaf scan reads contiguous memory. Queries use the incremental
+/// cell-distance bound of Arya and Mount (exact squared distance from the query to each cell),
+/// which keeps pruning effective up to a few dozen dimensions.
+///
+/// Ties are broken by id: among points at equal distance the smaller id is nearer. Results are
+/// therefore a deterministic function of the point set, whatever order the points came in.
+///
+/// ```
+/// use mit_star::{KdTree, Neighbours};
+/// let points = [[0.0, 0.0], [1.0, 0.0], [0.0, 2.0], [5.0, 5.0]];
+/// let tree = KdTree::build(2, points.iter().enumerate().map(|(i, p)| (i as u32, &p[..])));
+/// let mut found = Neighbours::new();
+/// tree.nearest(&[0.9, 0.1], 2, &mut found);
+/// let ids: Vec<u32> = found.iter().map(|&(_, id)| id).collect();
+/// assert_eq!(ids, [1, 0]);
+/// ```
+#[derive(Debug, Clone)]
+pub struct KdTree {
+    pub(crate) dimension: usize,
+    pub(crate) ids: Vec<u32>,
+    /// Birth stamp of each point: a query skips points whose stamp is no longer current.
+    pub(crate) births: Vec<u32>,
+    pub(crate) coordinates: Vec<f64>,
+    pub(crate) nodes: Vec<Node>,
+    pub(crate) lower: Vec<f64>,
+    pub(crate) upper: Vec<f64>,
+}
+
+/// Squared Euclidean distance of two coordinate slices.
+#[inline]
+pub(crate) fn squared_distance(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum()
+}
+
+impl KdTree {
+    /// Builds a tree over `points`, each an `(id, coordinates)` pair of length `dimension`.
+    ///
+    /// # Panics
+    /// If a point's length differs from `dimension` (the planner only passes its own states).
+    pub fn build<'a>(dimension: usize, points: impl IntoIterator<Item = (u32, &'a [f64])>) -> Self {
+        let mut ids = Vec::new();
+        let mut coordinates = Vec::new();
+        for (id, point) in points {
+            assert_eq!(point.len(), dimension, "point of wrong dimension");
+            ids.push(id);
+            coordinates.extend_from_slice(point);
+        }
+        let births = vec![0; ids.len()];
+        Self::from_parts(dimension, &ids, &births, &coordinates, &spaces::Never)
+            .unwrap_or_else(|| Self::empty(dimension))
+    }
+
+    /// A tree with no point.
+    pub(crate) fn empty(dimension: usize) -> Self {
+        Self {
+            dimension,
+            ids: Vec::new(),
+            births: Vec::new(),
+            coordinates: Vec::new(),
+            nodes: Vec::new(),
+            lower: vec![f64::INFINITY; dimension],
+            upper: vec![f64::NEG_INFINITY; dimension],
+        }
+    }
+
+    /// Number of points in the tree.
+    pub fn len(&self) -> usize {
+        self.ids.len()
+    }
+
+    /// `true` if the tree holds no point.
+    pub fn is_empty(&self) -> bool {
+        self.ids.is_empty()
+    }
+
+    /// Coordinate dimension of the points.
+    pub fn dimension(&self) -> usize {
+        self.dimension
+    }
+
+    /// The ids, birth stamps and coordinates of every point, in tree order.
+    pub(crate) fn parts(&self) -> (&[u32], &[u32], &[f64]) {
+        (&self.ids, &self.births, &self.coordinates)
+    }
+
+    /// Squared distance from `query` to the tree's bounding box, with the per-dimension
+    /// offsets written to `offsets`.
+    fn box_distance(&self, query: &[f64], offsets: &mut Vec<f64>) -> f64 {
+        offsets.clear();
+        let mut total = 0.0;
+        for ((&q, &lo), &hi) in query.iter().zip(&self.lower).zip(&self.upper) {
+            let o = if q < lo {
+                lo - q
+            } else if q > hi {
+                q - hi
+            } else {
+                0.0
+            };
+            offsets.push(o * o);
+            total += o * o;
+        }
+        total
+    }
+
+    /// Adds this tree's points to a k-nearest query already in progress in `found` (so several
+    /// trees can share one query). Use [`nearest`](Self::nearest) for a fresh query.
+    pub(crate) fn nearest_into(&self, query: &[f64], found: &mut Neighbours, alive: Alive<'_>) {
+        if self.is_empty() || found.k == 0 {
+            return;
+        }
+        let mut offsets = std::mem::take(&mut found.offsets);
+        let bound = self.box_distance(query, &mut offsets);
+        if bound <= found.worst() {
+            self.search_nearest(0, query, bound, &mut offsets, found, alive);
+        }
+        found.offsets = offsets;
+    }
+
+    /// The `k` points nearest to `query` (Euclidean), written to `found` nearest first.
+    pub fn nearest(&self, query: &[f64], k: usize, found: &mut Neighbours) {
+        found.reset(k);
+        self.nearest_into(query, found, Alive::All);
+    }
+
+    fn search_nearest(
+        &self,
+        node: u32,
+        query: &[f64],
+        bound: f64,
+        offsets: &mut [f64],
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+    ) {
+        let node = self.nodes[node as usize];
+        if node.dim == LEAF {
+            let n = self.dimension;
+            let mut worst = found.worst();
+            let (start, end) = (node.start as usize, node.end as usize);
+            for ((point, &id), &birth) in self.coordinates[start * n..end * n]
+                .chunks_exact(n)
+                .zip(&self.ids[start..end])
+                .zip(&self.births[start..end])
+            {
+                let d = squared_distance(query, point);
+                if d <= worst && alive.contains(id, birth) {
+                    found.offer(d, id);
+                    worst = found.worst();
+                }
+            }
+            return;
+        }
+        let dim = node.dim as usize;
+        let q = query[dim];
+        // Nearer child first; the far cell's offset along `dim` is to its boundary.
+        let (near, far, cut) = if (q - node.low) + (q - node.high) < 0.0 {
+            (node.left, node.right, (node.high - q) * (node.high - q))
+        } else {
+            (node.right, node.left, (q - node.low) * (q - node.low))
+        };
+        self.search_nearest(near, query, bound, offsets, found, alive);
+        let saved = offsets[dim];
+        let far_bound = bound + cut - saved;
+        if far_bound <= found.worst() {
+            offsets[dim] = cut;
+            self.search_nearest(far, query, far_bound, offsets, found, alive);
+            offsets[dim] = saved;
+        }
+    }
+
+    /// Adds every point within squared distance `radius2` of `query` to `found` (unsorted).
+    pub(crate) fn within_into(
+        &self,
+        query: &[f64],
+        radius2: f64,
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+    ) {
+        if self.is_empty() {
+            return;
+        }
+        let mut offsets = std::mem::take(&mut found.offsets);
+        let bound = self.box_distance(query, &mut offsets);
+        if bound <= radius2 {
+            self.search_within(0, query, bound, radius2, &mut offsets, found, alive);
+        }
+        found.offsets = offsets;
+    }
+
+    /// Every point within distance `radius` of `query`, written to `found` nearest first.
+    pub fn within(&self, query: &[f64], radius: f64, found: &mut Neighbours) {
+        found.reset(usize::MAX);
+        self.within_into(query, radius * radius, found, Alive::All);
+        found.sort();
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn search_within(
+        &self,
+        node: u32,
+        query: &[f64],
+        bound: f64,
+        radius2: f64,
+        offsets: &mut [f64],
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+    ) {
+        let node = self.nodes[node as usize];
+        if node.dim == LEAF {
+            let n = self.dimension;
+            for p in node.start as usize..node.end as usize {
+                let d = squared_distance(query, &self.coordinates[p * n..(p + 1) * n]);
+                if d <= radius2 && alive.contains(self.ids[p], self.births[p]) {
+                    found.push_unordered(d, self.ids[p]);
+                }
+            }
+            return;
+        }
+        let dim = node.dim as usize;
+        let q = query[dim];
+        let (near, far, cut) = if (q - node.low) + (q - node.high) < 0.0 {
+            (node.left, node.right, (node.high - q) * (node.high - q))
+        } else {
+            (node.right, node.left, (q - node.low) * (q - node.low))
+        };
+        self.search_within(near, query, bound, radius2, offsets, found, alive);
+        let saved = offsets[dim];
+        let far_bound = bound + cut - saved;
+        if far_bound <= radius2 {
+            offsets[dim] = cut;
+            self.search_within(far, query, far_bound, radius2, offsets, found, alive);
+            offsets[dim] = saved;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use spaces::SeededRng;
+    use spaces::rand::{RngExt, SeedableRng};
+
+    fn random_points(n: usize, count: usize, seed: u64) -> Vec<f64> {
+        let mut rng = SeededRng::seed_from_u64(seed);
+        (0..n * count)
+            .map(|_| rng.random_range(-1.0..1.0))
+            .collect()
+    }
+
+    fn brute_nearest(points: &[f64], n: usize, query: &[f64], k: usize) -> Vec<(f64, u32)> {
+        let mut all: Vec<(f64, u32)> = points
+            .chunks_exact(n)
+            .enumerate()
+            .map(|(i, p)| (squared_distance(query, p), i as u32))
+            .collect();
+        all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        all.truncate(k);
+        all
+    }
+
+    #[test]
+    fn nearest_matches_brute_force_in_2_to_32_dimensions() {
+        let mut found = Neighbours::new();
+        for n in [2, 3, 4, 8, 16, 32] {
+            let points = random_points(n, 700, n as u64);
+            let tree = KdTree::build(
+                n,
+                points
+                    .chunks_exact(n)
+                    .enumerate()
+                    .map(|(i, p)| (i as u32, p)),
+            );
+            assert_eq!(tree.len(), 700);
+            let queries = random_points(n, 40, 1000 + n as u64);
+            for query in queries.chunks_exact(n) {
+                for k in [1, 7, 25, 800] {
+                    tree.nearest(query, k, &mut found);
+                    let expected = brute_nearest(&points, n, query, k);
+                    let got: Vec<(f64, u32)> = found.iter().copied().collect();
+                    assert_eq!(got, expected, "n={n} k={k}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn within_matches_brute_force() {
+        let mut found = Neighbours::new();
+        for n in [2, 5, 12] {
+            let points = random_points(n, 500, 77 + n as u64);
+            let tree = KdTree::build(
+                n,
+                points
+                    .chunks_exact(n)
+                    .enumerate()
+                    .map(|(i, p)| (i as u32, p)),
+            );
+            for query in random_points(n, 30, 5 + n as u64).chunks_exact(n) {
+                for radius in [0.1, 0.5, 1.2] {
+                    tree.within(query, radius, &mut found);
+                    let mut expected = brute_nearest(&points, n, query, usize::MAX);
+                    expected.retain(|&(d, _)| d <= radius * radius);
+                    assert_eq!(found.iter().copied().collect::<Vec<_>>(), expected);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn duplicate_points_and_ties_break_by_id() {
+        let points = [[0.5, 0.5]; 40];
+        let tree = KdTree::build(
+            2,
+            points
+                .iter()
+                .enumerate()
+                .rev()
+                .map(|(i, p)| (i as u32, &p[..])),
+        );
+        let mut found = Neighbours::new();
+        tree.nearest(&[0.0, 0.0], 3, &mut found);
+        let ids: Vec<u32> = found.iter().map(|&(_, id)| id).collect();
+        assert_eq!(ids, [0, 1, 2]);
+        let empty = KdTree::build(2, std::iter::empty());
+        empty.nearest(&[0.0, 0.0], 3, &mut found);
+        assert!(found.is_empty());
+    }
+}

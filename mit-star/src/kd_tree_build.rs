@@ -1,0 +1,196 @@
+//! Building a [`KdTree`]: median splits along the widest coordinate, points partitioned in
+//! place, the stop condition polled as work accumulates.
+
+use spaces::Stop;
+
+use crate::KdTree;
+use crate::kd_tree::{BUCKET, LEAF, Node};
+
+/// Cells larger than this take their split value from an evenly spaced sample of this size.
+const SAMPLED_MEDIAN: usize = 1023;
+
+/// Points of work between two polls of the stop condition while building.
+const POLL_WORK: usize = 16_384;
+
+/// The stop condition of a build, the work done since it was last polled, and scratch space.
+struct Budget<'a> {
+    stop: &'a dyn Stop,
+    work: usize,
+    scratch: Scratch,
+}
+
+/// Buffers reused by every split of a build.
+#[derive(Default)]
+struct Scratch {
+    column: Vec<f64>,
+    select: Vec<f64>,
+}
+
+impl KdTree {
+    /// Builds a tree from ids, birth stamps and coordinates (row after row); `None` if `stop`
+    /// fired first (it is polled every few thousand points of work).
+    pub(crate) fn from_parts(
+        dimension: usize,
+        ids: &[u32],
+        births: &[u32],
+        coordinates: &[f64],
+        stop: &dyn Stop,
+    ) -> Option<Self> {
+        let count = ids.len();
+        let mut tree = Self::empty(dimension);
+        if count == 0 || dimension == 0 {
+            return Some(tree);
+        }
+        // The tree's own arrays, partitioned in place level by level: every pass over a cell is
+        // sequential, and the points end in leaf order with no final gather.
+        tree.ids = ids.to_vec();
+        tree.births = births.to_vec();
+        tree.coordinates = coordinates.to_vec();
+        tree.nodes.reserve(2 * count / BUCKET + 1);
+        for row in tree.coordinates.chunks_exact(dimension) {
+            for (d, &x) in row.iter().enumerate() {
+                tree.lower[d] = tree.lower[d].min(x);
+                tree.upper[d] = tree.upper[d].max(x);
+            }
+        }
+        let (mut lo, mut hi) = (tree.lower.clone(), tree.upper.clone());
+        let mut budget = Budget {
+            stop,
+            work: 0,
+            scratch: Scratch::default(),
+        };
+        tree.split(0, count, &mut lo, &mut hi, &mut budget)?;
+        Some(tree)
+    }
+
+    /// Swaps points `a` and `b` (rows, ids, stamps).
+    #[inline]
+    fn swap_points(&mut self, a: usize, b: usize) {
+        if a == b {
+            return;
+        }
+        let n = self.dimension;
+        let (first, second) = (a.min(b), a.max(b));
+        let (head, tail) = self.coordinates.split_at_mut(second * n);
+        head[first * n..(first + 1) * n].swap_with_slice(&mut tail[..n]);
+        self.ids.swap(a, b);
+        self.births.swap(a, b);
+    }
+
+    /// Recursively builds the subtree over points `start..end`, whose bounding box is
+    /// `lo..hi`; returns the node index.
+    fn split(
+        &mut self,
+        start: usize,
+        end: usize,
+        lo: &mut [f64],
+        hi: &mut [f64],
+        budget: &mut Budget<'_>,
+    ) -> Option<u32> {
+        let m = end - start;
+        budget.work += m;
+        if budget.work >= POLL_WORK {
+            budget.work = 0;
+            if budget.stop.should_stop() {
+                return None;
+            }
+        }
+        let n = self.dimension;
+        let index = self.nodes.len() as u32;
+        // Widest coordinate of the cell.
+        let (dim, spread) =
+            (0..n)
+                .map(|d| (d, hi[d] - lo[d]))
+                .fold(
+                    (0, f64::NEG_INFINITY),
+                    |best, c| if c.1 > best.1 { c } else { best },
+                );
+        let leaf = Node {
+            start: start as u32,
+            end: end as u32,
+            dim: LEAF,
+            low: 0.0,
+            high: 0.0,
+            left: 0,
+            right: 0,
+        };
+        if m <= BUCKET || spread <= 0.0 {
+            self.nodes.push(leaf);
+            return Some(index);
+        }
+        // Median along `dim`, then a three-way partition of the points around it (less,
+        // equal, greater); the median position falls among the equal ones.
+        let scratch = &mut budget.scratch;
+        scratch.column.clear();
+        scratch
+            .column
+            .extend((start..end).map(|p| self.coordinates[p * n + dim]));
+        // The split value: the exact median of small cells, the median of an evenly spaced
+        // sample of large ones (the tree stays balanced to within a few percent).
+        scratch.select.clear();
+        if m <= SAMPLED_MEDIAN {
+            scratch.select.extend_from_slice(&scratch.column);
+        } else {
+            let stride = m / SAMPLED_MEDIAN;
+            scratch
+                .select
+                .extend(scratch.column.iter().step_by(stride).take(SAMPLED_MEDIAN));
+        }
+        let half = scratch.select.len() / 2;
+        let median = *scratch
+            .select
+            .select_nth_unstable_by(half, f64::total_cmp)
+            .1;
+        let mut column = std::mem::take(&mut budget.scratch.column);
+        let (mut less, mut i, mut greater) = (0, 0, m);
+        while i < greater {
+            if column[i] < median {
+                column.swap(less, i);
+                self.swap_points(start + less, start + i);
+                less += 1;
+                i += 1;
+            } else if column[i] > median {
+                greater -= 1;
+                column.swap(i, greater);
+                self.swap_points(start + i, start + greater);
+            } else {
+                i += 1;
+            }
+        }
+        // Split at the middle, moved into the run of points equal to the split value when the
+        // sampled median is off (both halves stay non-empty: the median is a cell point).
+        let mid = (m / 2).clamp(less.max(1), greater.min(m - 1).max(less.max(1)));
+        let low = if mid > less {
+            median
+        } else {
+            column[..mid]
+                .iter()
+                .copied()
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        let high = if greater > mid {
+            median
+        } else {
+            column[mid..].iter().copied().fold(f64::INFINITY, f64::min)
+        };
+        budget.scratch.column = column;
+        self.nodes.push(Node {
+            dim: dim as u32,
+            low,
+            high,
+            ..leaf
+        });
+        let saved_hi = hi[dim];
+        hi[dim] = low;
+        let l = self.split(start, start + mid, lo, hi, budget)?;
+        hi[dim] = saved_hi;
+        let saved_lo = lo[dim];
+        lo[dim] = high;
+        let r = self.split(start + mid, end, lo, hi, budget)?;
+        lo[dim] = saved_lo;
+        let node = &mut self.nodes[index as usize];
+        node.left = l;
+        node.right = r;
+        Some(index)
+    }
+}

@@ -1,0 +1,379 @@
+//! [`NearestNeighbors`]: exact nearest-neighbour search over points that arrive in batches and
+//! are removed by pruning.
+
+use spaces::{Never, Stop};
+
+use crate::Neighbours;
+use crate::kd_tree::{Alive, KdTree, squared_distance};
+
+/// Points that may wait in the linear buffer before a query builds them into a tree (the
+/// buffer may also hold up to a quarter of the points already in trees).
+const PENDING_LIMIT: usize = 256;
+
+/// A set of points, growing in batches, with exact Euclidean k-nearest and radius queries.
+///
+/// Samples arrive a batch at a time and leave only when the planner prunes, so static
+/// [`KdTree`]s fit — except that rebuilding one over every point after each batch of 100 would
+/// cost `O(q log q)` per batch. This structure keeps a few static trees of doubling sizes
+/// (Bentley and Saxe's logarithmic method): new points wait in a buffer that queries scan
+/// linearly; when a query finds the buffer large (more than 256 points and a quarter of the
+/// points in trees) it is built into a tree, two trees of similar size being merged. Insertion
+/// costs `O(log² q)` amortised per point (nothing while nobody queries) and a query visits
+/// `O(log q)` trees sharing one result bound.
+///
+/// Removal is lazy: every point carries a birth stamp, and the planner's queries skip points
+/// whose stamp is no longer current (removed, or their id reused); the trees are rebuilt once
+/// dead points outnumber live ones. Builds poll a stop condition and are abandoned (the buffer
+/// stays linear, results stay exact) if it fires, so a deadline is never held up by a rebuild.
+///
+/// Results are exact and a deterministic function of the live point set: ties are broken by id.
+///
+/// ```
+/// use mit_star::{NearestNeighbors, Neighbours};
+/// let mut nn = NearestNeighbors::new(2);
+/// nn.insert([(0u32, &[0.0, 0.0][..]), (1, &[1.0, 0.0][..])]);
+/// nn.insert([(2u32, &[0.2, 0.1][..])]);
+/// let mut found = Neighbours::new();
+/// nn.nearest(&[0.25, 0.0], 2, &mut found);
+/// assert_eq!(found.iter().map(|&(_, id)| id).collect::<Vec<_>>(), [2, 0]);
+/// ```
+#[derive(Debug, Clone)]
+pub struct NearestNeighbors {
+    dimension: usize,
+    trees: Vec<KdTree>,
+    pending_ids: Vec<u32>,
+    pending_births: Vec<u32>,
+    pending: Vec<f64>,
+    /// Points stored (live or dead).
+    stored: usize,
+    /// Stored points known to be dead.
+    dead: usize,
+    queries: u64,
+}
+
+impl NearestNeighbors {
+    /// An empty set of points of `dimension` coordinates.
+    pub fn new(dimension: usize) -> Self {
+        Self {
+            dimension,
+            trees: Vec::new(),
+            pending_ids: Vec::new(),
+            pending_births: Vec::new(),
+            pending: Vec::new(),
+            stored: 0,
+            dead: 0,
+            queries: 0,
+        }
+    }
+
+    /// Number of live points.
+    pub fn len(&self) -> usize {
+        self.stored - self.dead
+    }
+
+    /// `true` if there is no live point.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Number of static trees currently held (logarithmic in the number of points).
+    pub fn tree_count(&self) -> usize {
+        self.trees.len()
+    }
+
+    /// Queries answered so far.
+    pub fn queries(&self) -> u64 {
+        self.queries
+    }
+
+    /// Adds a batch of `(id, coordinates)` points.
+    ///
+    /// # Panics
+    /// If a point's length differs from the dimension.
+    pub fn insert<'a>(&mut self, points: impl IntoIterator<Item = (u32, &'a [f64])>) {
+        self.insert_born(points.into_iter().map(|(id, x)| (id, 0, x)));
+    }
+
+    /// Adds points with their birth stamps.
+    pub(crate) fn insert_born<'a>(
+        &mut self,
+        points: impl IntoIterator<Item = (u32, u32, &'a [f64])>,
+    ) {
+        for (id, birth, point) in points {
+            assert_eq!(point.len(), self.dimension, "point of wrong dimension");
+            self.pending_ids.push(id);
+            self.pending_births.push(birth);
+            self.pending.extend_from_slice(point);
+            self.stored += 1;
+        }
+    }
+
+    /// Records that `count` stored points died (their stamps are no longer current).
+    pub(crate) fn note_removed(&mut self, count: usize) {
+        self.dead = (self.dead + count).min(self.stored);
+    }
+
+    /// Keeps the structure efficient: rebuilds without dead points once they outnumber live
+    /// ones, and builds the buffer into trees once it is large. Either is skipped if `stop`
+    /// fires during the build.
+    fn maintain(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
+        if self.dead > 0 && 2 * self.dead > self.stored {
+            self.rebuild_alive(alive, stop);
+        }
+        let in_trees = self.stored - self.pending_ids.len();
+        if self.pending_ids.len() > PENDING_LIMIT.max(in_trees / 4) {
+            self.flush(stop);
+        }
+    }
+
+    /// One tree over the live points (trees and buffer); nothing changes if `stop` fires.
+    fn rebuild_alive(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
+        let n = self.dimension;
+        let (mut ids, mut births, mut xs) = (Vec::new(), Vec::new(), Vec::new());
+        let mut keep = |id: u32, birth: u32, x: &[f64]| {
+            if alive.contains(id, birth) {
+                ids.push(id);
+                births.push(birth);
+                xs.extend_from_slice(x);
+            }
+        };
+        for tree in &self.trees {
+            let (i, b, x) = tree.parts();
+            for j in 0..i.len() {
+                keep(i[j], b[j], &x[j * n..(j + 1) * n]);
+            }
+        }
+        for j in 0..self.pending_ids.len() {
+            keep(
+                self.pending_ids[j],
+                self.pending_births[j],
+                &self.pending[j * n..(j + 1) * n],
+            );
+        }
+        let live = ids.len();
+        if let Some(tree) = KdTree::from_parts(n, &ids, &births, &xs, stop) {
+            self.trees = vec![tree];
+            self.pending_ids.clear();
+            self.pending_births.clear();
+            self.pending.clear();
+            self.stored = live;
+            self.dead = 0;
+        }
+    }
+
+    /// Builds the waiting points into a tree and merges trees of similar size.
+    fn flush(&mut self, stop: &dyn Stop) {
+        if self.pending_ids.is_empty() {
+            return;
+        }
+        let built = KdTree::from_parts(
+            self.dimension,
+            &self.pending_ids,
+            &self.pending_births,
+            &self.pending,
+            stop,
+        );
+        match built {
+            Some(tree) => {
+                self.trees.push(tree);
+                self.pending_ids.clear();
+                self.pending_births.clear();
+                self.pending.clear();
+            }
+            None => return,
+        }
+        // Merge while the newest tree is at least half the size of the one before it.
+        while self.trees.len() >= 2 {
+            let last = self.trees.len() - 1;
+            if self.trees[last - 1].len() > 2 * self.trees[last].len() {
+                break;
+            }
+            match merge(
+                self.dimension,
+                &self.trees[last - 1],
+                &self.trees[last],
+                stop,
+            ) {
+                Some(tree) => {
+                    self.trees.truncate(last - 1);
+                    self.trees.push(tree);
+                }
+                None => break,
+            }
+        }
+    }
+
+    /// The `k` points nearest to `query`, nearest first, in `found`.
+    pub fn nearest(&mut self, query: &[f64], k: usize, found: &mut Neighbours) {
+        self.nearest_alive(query, k, found, Alive::All, &Never);
+    }
+
+    /// Every point within `radius` of `query`, nearest first, in `found`.
+    pub fn within(&mut self, query: &[f64], radius: f64, found: &mut Neighbours) {
+        self.within_alive(query, radius, found, Alive::All, &Never);
+    }
+
+    /// The `k` nearest live points.
+    pub(crate) fn nearest_alive(
+        &mut self,
+        query: &[f64],
+        k: usize,
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+        stop: &dyn Stop,
+    ) {
+        self.queries += 1;
+        self.maintain(alive, stop);
+        found.reset(k);
+        // Largest tree first: it holds most of the neighbours, so the bound tightens early.
+        for tree in &self.trees {
+            tree.nearest_into(query, found, alive);
+        }
+        let n = self.dimension;
+        for (i, &id) in self.pending_ids.iter().enumerate() {
+            let d = squared_distance(query, &self.pending[i * n..(i + 1) * n]);
+            if d <= found.worst() && alive.contains(id, self.pending_births[i]) {
+                found.offer(d, id);
+            }
+        }
+    }
+
+    /// Every live point within `radius`.
+    pub(crate) fn within_alive(
+        &mut self,
+        query: &[f64],
+        radius: f64,
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+        stop: &dyn Stop,
+    ) {
+        self.queries += 1;
+        self.maintain(alive, stop);
+        found.reset(usize::MAX);
+        let radius2 = radius * radius;
+        for tree in &self.trees {
+            tree.within_into(query, radius2, found, alive);
+        }
+        let n = self.dimension;
+        for (i, &id) in self.pending_ids.iter().enumerate() {
+            let d = squared_distance(query, &self.pending[i * n..(i + 1) * n]);
+            if d <= radius2 && alive.contains(id, self.pending_births[i]) {
+                found.push_unordered(d, id);
+            }
+        }
+        found.sort();
+    }
+}
+
+/// One tree holding the points of two (`None` if `stop` fired).
+fn merge(dimension: usize, a: &KdTree, b: &KdTree, stop: &dyn Stop) -> Option<KdTree> {
+    let (ids_a, births_a, xs_a) = a.parts();
+    let (ids_b, births_b, xs_b) = b.parts();
+    KdTree::from_parts(
+        dimension,
+        &[ids_a, ids_b].concat(),
+        &[births_a, births_b].concat(),
+        &[xs_a, xs_b].concat(),
+        stop,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use spaces::SeededRng;
+    use spaces::rand::{RngExt, SeedableRng};
+
+    fn brute(
+        points: &[f64],
+        n: usize,
+        query: &[f64],
+        live: impl Fn(u32) -> bool,
+    ) -> Vec<(f64, u32)> {
+        let mut all: Vec<(f64, u32)> = points
+            .chunks_exact(n)
+            .enumerate()
+            .map(|(i, p)| (squared_distance(query, p), i as u32))
+            .filter(|&(_, i)| live(i))
+            .collect();
+        all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        all
+    }
+
+    #[test]
+    fn batches_and_removals_match_brute_force() {
+        let n = 6;
+        let mut rng = SeededRng::seed_from_u64(3);
+        let mut points: Vec<f64> = Vec::new();
+        let mut births: Vec<u32> = Vec::new();
+        let mut nn = NearestNeighbors::new(n);
+        let mut found = Neighbours::new();
+        for batch in 0..40u32 {
+            let first = points.len() / n;
+            for _ in 0..(37 * n) {
+                points.push(rng.random_range(-0.5..0.5));
+            }
+            births.resize(points.len() / n, batch);
+            let slice = &points[first * n..];
+            nn.insert_born(
+                slice
+                    .chunks_exact(n)
+                    .enumerate()
+                    .map(|(i, p)| ((first + i) as u32, batch, p)),
+            );
+            // Kill every third point of an earlier batch now and then.
+            if batch % 7 == 6 {
+                let mut killed = 0;
+                for b in births.iter_mut().step_by(3) {
+                    if *b != u32::MAX {
+                        *b = u32::MAX;
+                        killed += 1;
+                    }
+                }
+                nn.note_removed(killed);
+            }
+            let live = |i: u32| births[i as usize] != u32::MAX;
+            assert!(
+                nn.tree_count() <= 8,
+                "batch {batch}: {} trees",
+                nn.tree_count()
+            );
+            let query: Vec<f64> = (0..n).map(|_| rng.random_range(-0.5..0.5)).collect();
+            let alive = Alive::Current(&births);
+            nn.nearest_alive(&query, 10, &mut found, alive, &Never);
+            let expected = brute(&points, n, &query, live);
+            assert_eq!(
+                found.iter().copied().collect::<Vec<_>>(),
+                expected[..10.min(expected.len())]
+            );
+            nn.within_alive(&query, 0.4, &mut found, alive, &Never);
+            let within: Vec<_> = expected.into_iter().filter(|&(d, _)| d <= 0.16).collect();
+            assert_eq!(found.iter().copied().collect::<Vec<_>>(), within);
+        }
+        assert_eq!(nn.len(), births.iter().filter(|&&b| b != u32::MAX).count());
+        assert!(nn.queries() > 0);
+    }
+
+    #[test]
+    fn a_stopped_build_keeps_answers_exact() {
+        let n = 3;
+        let mut rng = SeededRng::seed_from_u64(5);
+        let points: Vec<f64> = (0..3000 * n).map(|_| rng.random_range(-1.0..1.0)).collect();
+        let mut nn = NearestNeighbors::new(n);
+        nn.insert(
+            points
+                .chunks_exact(n)
+                .enumerate()
+                .map(|(i, p)| (i as u32, p)),
+        );
+        let always = || true;
+        let mut found = Neighbours::new();
+        nn.nearest_alive(&[0.1, 0.2, 0.3], 5, &mut found, Alive::All, &always);
+        assert_eq!(nn.tree_count(), 0, "the build was abandoned");
+        let expected = brute(&points, n, &[0.1, 0.2, 0.3], |_| true);
+        assert_eq!(found.iter().copied().collect::<Vec<_>>(), expected[..5]);
+        nn.nearest(&[0.1, 0.2, 0.3], 5, &mut found);
+        assert_eq!(nn.tree_count(), 1, "built once nothing stops it");
+        assert_eq!(found.iter().copied().collect::<Vec<_>>(), expected[..5]);
+    }
+}

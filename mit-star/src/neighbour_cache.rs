@@ -1,0 +1,301 @@
+//! The RGG's neighbour lists: computed on first expansion, cached per vertex, and brought up
+//! to date incrementally in later batches (dropping pruned vertices, merging new samples).
+
+use heuristics::Heuristic;
+use spaces::{StateSpace, Stop};
+
+use crate::Neighbours;
+use crate::graph::{DEAD, Neighbour, Neighbourhood, RandomGeometricGraph};
+use crate::kd_tree::Alive;
+
+/// Extra nearest neighbours kept beyond `k`, so a list survives a few increments of `k` and a
+/// few pruned neighbours.
+const SLACK: usize = 4;
+
+/// Above this many samples added since a list was made, a fresh tree query beats scanning
+/// them (a query costs about as much as a few hundred distance computations).
+const MERGE_LIMIT: usize = 400;
+
+impl RandomGeometricGraph {
+    /// The number of neighbours of `v` in this batch — entries `0..len` of its list, nearest
+    /// first ([`neighbour`](Self::neighbour)) — computing or updating the cached list as needed.
+    /// `stop` may interrupt tree building (never the answer).
+    pub(crate) fn neighbours<S, H>(
+        &mut self,
+        v: u32,
+        space: &S,
+        heuristic: &H,
+        stop: &dyn Stop,
+    ) -> usize
+    where
+        S: StateSpace + ?Sized,
+        H: Heuristic<S> + ?Sized,
+    {
+        let x = self.vertex(v);
+        if x.neighbours_tag == self.tag {
+            return x.neighbours_len as usize;
+        }
+        let (had_list, from, wanted, radius) = (
+            x.neighbours_tag != 0,
+            x.neighbours_log as usize,
+            x.neighbours_wanted as usize,
+            x.neighbours_radius,
+        );
+        let mut list = std::mem::take(&mut self.lists[v as usize]);
+        // Pruned (or reused) neighbours leave; the rest are still the nearest survivors.
+        let before = list.len();
+        let births = &self.births;
+        list.retain(|n| births[n.id as usize] == n.birth);
+        let wanted = wanted.saturating_sub(before - list.len());
+        let added = self.log.len() - from;
+        let reusable = had_list
+            && added <= MERGE_LIMIT
+            && match self.neighbourhood {
+                Neighbourhood::Nearest(k) => k <= wanted,
+                Neighbourhood::Radius(r) => r <= radius,
+            };
+        let wanted = if reusable {
+            self.merge_added(v, from, wanted, space, heuristic, &mut list)
+        } else {
+            list.clear();
+            self.query(v, space, heuristic, stop, &mut list)
+        };
+        let used = match self.neighbourhood {
+            Neighbourhood::Nearest(k) => k.min(list.len()),
+            Neighbourhood::Radius(_) => list.len(),
+        };
+        self.lists[v as usize] = list;
+        let (tag, log) = (self.tag, self.log.len() as u32);
+        let radius = match self.neighbourhood {
+            Neighbourhood::Nearest(_) => 0.0,
+            Neighbourhood::Radius(r) => r,
+        };
+        let x = self.vertex_mut(v);
+        x.neighbours_tag = tag;
+        x.neighbours_len = used as u32;
+        x.neighbours_wanted = wanted as u32;
+        x.neighbours_radius = radius;
+        x.neighbours_log = log;
+        used
+    }
+
+    /// A fresh list for `v` in `out`; returns how many nearest neighbours it holds exactly
+    /// (`k + SLACK`, or 0 for r-disc).
+    fn query<S, H>(
+        &mut self,
+        v: u32,
+        space: &S,
+        heuristic: &H,
+        stop: &dyn Stop,
+        out: &mut Vec<Neighbour>,
+    ) -> usize
+    where
+        S: StateSpace + ?Sized,
+        H: Heuristic<S> + ?Sized,
+    {
+        let mut found = std::mem::take(&mut self.found);
+        let wanted = match self.neighbourhood {
+            Neighbourhood::Nearest(k) => k + SLACK,
+            Neighbourhood::Radius(_) => 0,
+        };
+        let query = &self.states[v as usize];
+        let alive = Alive::Current(&self.births);
+        if self.euclidean {
+            match self.neighbourhood {
+                // One more: the vertex itself is in the set.
+                Neighbourhood::Nearest(_) => {
+                    self.nn
+                        .nearest_alive(query, wanted + 1, &mut found, alive, stop);
+                }
+                Neighbourhood::Radius(r) => self.nn.within_alive(query, r, &mut found, alive, stop),
+            }
+        } else {
+            self.linear_query(v, space, wanted, &mut found);
+        }
+        for &(_, w) in found.iter() {
+            if w != v {
+                out.push(self.entry(v, w, space, heuristic));
+            }
+        }
+        if let Neighbourhood::Nearest(_) = self.neighbourhood {
+            out.truncate(wanted);
+        }
+        self.found = found;
+        wanted
+    }
+
+    /// Merges into `list` (the surviving old neighbours of `v`, exact for the `wanted` nearest)
+    /// the live samples added since log position `from`; returns how many nearest neighbours
+    /// the result holds exactly.
+    fn merge_added<S, H>(
+        &mut self,
+        v: u32,
+        from: usize,
+        wanted: usize,
+        space: &S,
+        heuristic: &H,
+        list: &mut Vec<Neighbour>,
+    ) -> usize
+    where
+        S: StateSpace + ?Sized,
+        H: Heuristic<S> + ?Sized,
+    {
+        // A new sample farther than the radius, or than the farthest of the `wanted` old
+        // neighbours, cannot enter the list.
+        let bound = match self.neighbourhood {
+            Neighbourhood::Radius(r) => r,
+            Neighbourhood::Nearest(_) if list.len() >= wanted && wanted > 0 => {
+                list[wanted - 1].distance
+            }
+            Neighbourhood::Nearest(_) => f64::INFINITY,
+        };
+        let x = &self.states[v as usize];
+        let order =
+            |a: &Neighbour, b: &Neighbour| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id));
+        for i in from..self.log.len() {
+            let (w, birth) = self.log[i];
+            if w == v || self.births[w as usize] != birth {
+                continue;
+            }
+            if space.distance(x, &self.states[w as usize]) <= bound {
+                // Few candidates pass the bound: insert each in order.
+                let n = self.entry(v, w, space, heuristic);
+                let at = list.partition_point(|m| order(m, &n).is_lt());
+                list.insert(at, n);
+            }
+        }
+        match self.neighbourhood {
+            Neighbourhood::Nearest(_) => {
+                // The survivors held the `wanted` nearest old points, so the merge is exact up
+                // to that many.
+                list.truncate(wanted);
+                wanted
+            }
+            Neighbourhood::Radius(r) => {
+                list.retain(|n| n.distance <= r);
+                0
+            }
+        }
+    }
+
+    /// A list entry for the neighbour `w` of `v`.
+    fn entry<S, H>(&self, v: u32, w: u32, space: &S, heuristic: &H) -> Neighbour
+    where
+        S: StateSpace + ?Sized,
+        H: Heuristic<S> + ?Sized,
+    {
+        let (a, b) = (&self.states[v as usize], &self.states[w as usize]);
+        Neighbour {
+            id: w,
+            birth: self.births[w as usize],
+            cost: heuristic.edge_cost(space, a, b),
+            distance: space.distance(a, b),
+        }
+    }
+
+    /// Neighbours of `v` by the space's own metric, by scanning every vertex.
+    fn linear_query<S: StateSpace + ?Sized>(
+        &mut self,
+        v: u32,
+        space: &S,
+        wanted: usize,
+        found: &mut Neighbours,
+    ) {
+        self.linear_queries += 1;
+        let query = &self.states[v as usize];
+        match self.neighbourhood {
+            Neighbourhood::Nearest(_) => found.reset(wanted + 1),
+            Neighbourhood::Radius(_) => found.reset(usize::MAX),
+        }
+        for node in self.graph.node_indices() {
+            let id = node.index();
+            debug_assert_ne!(self.births[id], DEAD);
+            let d = space.distance(query, &self.states[id]);
+            match self.neighbourhood {
+                Neighbourhood::Nearest(_) => {
+                    if d * d <= found.worst() {
+                        found.offer(d * d, id as u32);
+                    }
+                }
+                Neighbourhood::Radius(r) => {
+                    if d <= r {
+                        found.push_unordered(d * d, id as u32);
+                    }
+                }
+            }
+        }
+        if let Neighbourhood::Radius(_) = self.neighbourhood {
+            found.sort();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::VertexKind;
+    use crate::vertex::Vertex;
+    use heuristics::Euclidean;
+    use spaces::rand::{RngExt, SeedableRng};
+    use spaces::{Never, RealVectorSpace, SeededRng, euclidean_distance};
+
+    /// The ids of the `k` nearest vertices to `v` (or those within `r`), by brute force.
+    fn brute(g: &RandomGeometricGraph, v: u32, rule: Neighbourhood) -> Vec<u32> {
+        let x = g.state(v);
+        let mut all: Vec<(f64, u32)> = g
+            .graph
+            .node_indices()
+            .map(|n| n.index() as u32)
+            .filter(|&w| w != v)
+            .map(|w| (euclidean_distance(x, g.state(w)), w))
+            .collect();
+        all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        match rule {
+            Neighbourhood::Nearest(k) => all.truncate(k),
+            Neighbourhood::Radius(r) => all.retain(|&(d, _)| d <= r),
+        }
+        all.into_iter().map(|(_, w)| w).collect()
+    }
+
+    #[test]
+    fn incremental_lists_equal_fresh_queries_across_batches_and_pruning() {
+        for (n, euclidean) in [(3, true), (8, true), (4, false)] {
+            let space = RealVectorSpace::cube(n, -0.5, 0.5).unwrap();
+            let mut g = RandomGeometricGraph::new(n, euclidean);
+            let mut rng = SeededRng::seed_from_u64(n as u64);
+            let mut x = vec![0.0; n];
+            let mut removed = Vec::new();
+            for batch in 0..30 {
+                let ids: Vec<u32> = (0..60)
+                    .map(|_| {
+                        x.iter_mut().for_each(|c| *c = rng.random_range(-0.5..0.5));
+                        let cost = x[0] + 0.5;
+                        g.add_vertex(&x, Vertex::new(VertexKind::Sample, cost, cost, 0))
+                    })
+                    .collect();
+                g.commit(&ids);
+                let rule = if batch % 3 == 2 {
+                    Neighbourhood::Radius(0.6 - 0.01 * batch as f64)
+                } else {
+                    Neighbourhood::Nearest(5 + batch / 4)
+                };
+                g.set_neighbourhood(rule);
+                // The same few vertices every batch exercise the incremental path.
+                for v in [0u32, 7, 33, 70, ids[0]] {
+                    if g.graph
+                        .contains_node(petgraph::graph::NodeIndex::new(v as usize))
+                    {
+                        let len = g.neighbours(v, &space, &Euclidean, &Never);
+                        let got: Vec<u32> = (0..len).map(|i| g.neighbour(v, i).id).collect();
+                        assert_eq!(got, brute(&g, v, rule), "n={n} batch={batch} v={v}");
+                    }
+                }
+                // Prune a slice of the space now and then (ids get reused afterwards).
+                if batch % 8 == 5 {
+                    let bound = 1.6 - 0.1 * (batch / 8) as f64;
+                    assert!(g.prune(bound, &[], &mut removed) > 0);
+                }
+            }
+        }
+    }
+}

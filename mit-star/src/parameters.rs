@@ -1,0 +1,316 @@
+//! [`Parameters`]: every tunable number of the EIT*/MIT* family, validated once.
+
+use serde::{Deserialize, Serialize};
+
+use crate::BuildError;
+
+/// How the random geometric graph connects a vertex (spec §3.4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Connection {
+    /// The `k = ⌈η · e · (1 + 1/n) · ln q⌉` nearest vertices (the default).
+    #[default]
+    KNearest,
+    /// Every vertex within `r = η · 2 · ((1 + 1/n) · λ / ζ_n · ln q / q)^(1/n)`, `λ` the measure
+    /// of the set the sampler draws from.
+    RDisc,
+}
+
+/// How MIT*'s estimated informed set grows its cost from the reliability `γ` (spec §6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum EisExpansionForm {
+    /// The paper's `e_γ = √(1 + (1 − γ)²)` (the default).
+    #[default]
+    Paper,
+    /// The authors' code, `e_γ = √(1 + (1 − γ))`.
+    Authors,
+}
+
+/// When MIT*'s estimated informed set expands (spec §6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum EisExpansionRule {
+    /// Once per batch sampled inside it that ends without a valid solution (the default).
+    #[default]
+    PerBatch,
+    /// On every invalid edge of the lazy path (a literal reading of the paper's Alg. 1).
+    PerInvalidEdge,
+}
+
+/// The parameters of an [`Eit`](crate::Eit) planner and its parts, with the spec's defaults
+/// (§9). Serialisable, so benchmark output can record exactly what ran.
+///
+/// ```
+/// use mit_star::Parameters;
+/// let p = Parameters::default();
+/// assert_eq!((p.batch_size, p.rewire_factor), (100, 1.001));
+/// assert!(p.validate().is_ok());
+/// let bad = Parameters { batch_size: 0, ..Parameters::default() };
+/// assert_eq!(bad.validate().unwrap_err().to_string(),
+///            "parameter `batch_size` is 0; it must be at least 1");
+/// ```
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Parameters {
+    /// Samples per batch.
+    pub batch_size: usize,
+    /// The RGG constant `η > 0` scaling `k` or `r`.
+    pub rewire_factor: f64,
+    /// k-nearest or r-disc connection.
+    pub connection: Connection,
+    /// Remove samples that cannot improve the solution at each new batch.
+    pub pruning: bool,
+    /// Collision-check resolution, a fraction of the space's maximum extent (`L = r · extent`).
+    pub resolution: f64,
+    /// Seed of the sampler's random generator.
+    pub seed: u64,
+    /// Suspend the reverse search when the forward queue is empty (the MIT* authors' rule);
+    /// `false` keeps exhausting the reverse queue as upstream EIT* does.
+    pub suspend_reverse_when_forward_empty: bool,
+    /// Standard deviation `δ` of the adaptive sampler, as a fraction of the maximum extent.
+    pub gaussian_std_fraction: f64,
+    /// Segment points the adaptive sampler tests per repair.
+    pub bridge_checks: usize,
+    /// Initial sparse spacing `Δ₀` of the length-related checker, in steps `L`.
+    pub sparse_initial_steps: f64,
+    /// Refinement factor `Ω ∈ (0, 1)` of the length-related checker.
+    pub sparse_factor: f64,
+    /// Finest sparse spacing of the length-related checker, in steps `L`.
+    pub sparse_min_steps: f64,
+    /// How the estimated informed set computes `e_γ`.
+    pub eis_expansion_form: EisExpansionForm,
+    /// When the estimated informed set expands.
+    pub eis_expansion_rule: EisExpansionRule,
+}
+
+impl Default for Parameters {
+    fn default() -> Self {
+        Self {
+            batch_size: 100,
+            rewire_factor: 1.001,
+            connection: Connection::KNearest,
+            pruning: true,
+            resolution: 5e-6,
+            seed: 0,
+            suspend_reverse_when_forward_empty: true,
+            gaussian_std_fraction: 0.1,
+            bridge_checks: 8,
+            sparse_initial_steps: 2000.0,
+            sparse_factor: 0.5,
+            sparse_min_steps: 10.0,
+            eis_expansion_form: EisExpansionForm::Paper,
+            eis_expansion_rule: EisExpansionRule::PerBatch,
+        }
+    }
+}
+
+fn positive(name: &'static str, value: f64) -> Result<(), BuildError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(BuildError::Parameter {
+            name,
+            value,
+            requirement: "it must be finite and positive",
+        })
+    }
+}
+
+impl Parameters {
+    /// Checks every parameter.
+    ///
+    /// # Errors
+    /// [`BuildError::Parameter`] naming the first parameter out of range: a batch size or bridge
+    /// count of 0, a non-positive or non-finite `η`, resolution, `δ` or sparse spacing, or `Ω`
+    /// outside `(0, 1)`.
+    pub fn validate(&self) -> Result<(), BuildError> {
+        if self.batch_size == 0 {
+            return Err(BuildError::Parameter {
+                name: "batch_size",
+                value: 0.0,
+                requirement: "it must be at least 1",
+            });
+        }
+        if self.bridge_checks == 0 {
+            return Err(BuildError::Parameter {
+                name: "bridge_checks",
+                value: 0.0,
+                requirement: "it must be at least 1",
+            });
+        }
+        positive("rewire_factor", self.rewire_factor)?;
+        positive("resolution", self.resolution)?;
+        positive("gaussian_std_fraction", self.gaussian_std_fraction)?;
+        positive("sparse_initial_steps", self.sparse_initial_steps)?;
+        positive("sparse_min_steps", self.sparse_min_steps)?;
+        if !(self.sparse_factor > 0.0 && self.sparse_factor < 1.0) {
+            return Err(BuildError::Parameter {
+                name: "sparse_factor",
+                value: self.sparse_factor,
+                requirement: "the refinement factor Ω must lie in (0, 1)",
+            });
+        }
+        Ok(())
+    }
+
+    /// The parameters as `(name, value)` text pairs, for benchmark logs (OMPL's "common
+    /// properties").
+    pub fn settings(&self) -> Vec<(String, String)> {
+        let connection = match self.connection {
+            Connection::KNearest => "k-nearest",
+            Connection::RDisc => "r-disc",
+        };
+        let form = match self.eis_expansion_form {
+            EisExpansionForm::Paper => "paper",
+            EisExpansionForm::Authors => "authors",
+        };
+        let rule = match self.eis_expansion_rule {
+            EisExpansionRule::PerBatch => "per-batch",
+            EisExpansionRule::PerInvalidEdge => "per-invalid-edge",
+        };
+        [
+            ("batch_size", self.batch_size.to_string()),
+            ("rewire_factor", self.rewire_factor.to_string()),
+            ("connection", connection.to_string()),
+            ("pruning", self.pruning.to_string()),
+            ("resolution", self.resolution.to_string()),
+            ("seed", self.seed.to_string()),
+            (
+                "suspend_reverse_when_forward_empty",
+                self.suspend_reverse_when_forward_empty.to_string(),
+            ),
+            (
+                "gaussian_std_fraction",
+                self.gaussian_std_fraction.to_string(),
+            ),
+            ("bridge_checks", self.bridge_checks.to_string()),
+            (
+                "sparse_initial_steps",
+                self.sparse_initial_steps.to_string(),
+            ),
+            ("sparse_factor", self.sparse_factor.to_string()),
+            ("sparse_min_steps", self.sparse_min_steps.to_string()),
+            ("eis_expansion_form", form.to_string()),
+            ("eis_expansion_rule", rule.to_string()),
+        ]
+        .into_iter()
+        .map(|(k, v)| (k.to_string(), v))
+        .collect()
+    }
+}
+
+/// `k = ⌈η · e · (1 + 1/n) · ln q⌉` for `q` samples in `n` dimensions (at least 1). Unlike
+/// OMPL, `e · (1 + 1/n)` is not truncated to an integer.
+///
+/// ```
+/// // q = 100 samples in R^4 with η = 1.001: ⌈1.001 · e · 1.25 · ln 100⌉ = 16.
+/// assert_eq!(mit_star::k_nearest(100, 4, 1.001), 16);
+/// ```
+pub fn k_nearest(q: usize, n: usize, eta: f64) -> usize {
+    let q = (q.max(2)) as f64;
+    let n = n.max(1) as f64;
+    let k = (eta * std::f64::consts::E * (1.0 + 1.0 / n) * q.ln()).ceil();
+    if k.is_finite() {
+        (k as usize).max(1)
+    } else {
+        1
+    }
+}
+
+/// `r = η · 2 · ((1 + 1/n) · λ / ζ_n · ln q / q)^(1/n)` (Karaman and Frazzoli's PRM* radius as
+/// OMPL codes it, spec §3.4), `λ` the measure of the sampled set.
+///
+/// ```
+/// let r = mit_star::r_disc(1000, 2, 1.0, 1.0);
+/// let expected = 2.0 * (1.5 / std::f64::consts::PI * (1000f64).ln() / 1000.0).sqrt();
+/// assert!((r - expected).abs() < 1e-12);
+/// ```
+pub fn r_disc(q: usize, n: usize, eta: f64, measure: f64) -> f64 {
+    let q = (q.max(2)) as f64;
+    let nf = n.max(1) as f64;
+    let zeta = spaces::unit_ball_measure(n.max(1));
+    eta * 2.0 * ((1.0 + 1.0 / nf) * measure / zeta * q.ln() / q).powf(1.0 / nf)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_bad_parameter_is_named() {
+        let cases: [(Parameters, &str); 7] = [
+            (
+                Parameters {
+                    rewire_factor: 0.0,
+                    ..Default::default()
+                },
+                "rewire_factor",
+            ),
+            (
+                Parameters {
+                    rewire_factor: f64::NAN,
+                    ..Default::default()
+                },
+                "rewire_factor",
+            ),
+            (
+                Parameters {
+                    resolution: -1.0,
+                    ..Default::default()
+                },
+                "resolution",
+            ),
+            (
+                Parameters {
+                    gaussian_std_fraction: 0.0,
+                    ..Default::default()
+                },
+                "gaussian_std_fraction",
+            ),
+            (
+                Parameters {
+                    sparse_factor: 1.0,
+                    ..Default::default()
+                },
+                "sparse_factor",
+            ),
+            (
+                Parameters {
+                    sparse_min_steps: f64::INFINITY,
+                    ..Default::default()
+                },
+                "sparse_min_steps",
+            ),
+            (
+                Parameters {
+                    bridge_checks: 0,
+                    ..Default::default()
+                },
+                "bridge_checks",
+            ),
+        ];
+        for (p, name) in cases {
+            match p.validate() {
+                Err(BuildError::Parameter { name: got, .. }) => assert_eq!(got, name),
+                other => panic!("{name}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn connection_formulas() {
+        // ln 2 · e · 1.5 · 1.001 = 2.83 → 3 (OMPL would truncate e·1.5 to 4 → 3 as well).
+        assert_eq!(k_nearest(2, 2, 1.001), 3);
+        assert!(k_nearest(10_000, 8, 1.001) > k_nearest(100, 8, 1.001));
+        // The radius shrinks as samples accumulate and grows with the measure.
+        assert!(r_disc(1000, 4, 1.001, 1.0) < r_disc(100, 4, 1.001, 1.0));
+        assert!(r_disc(100, 4, 1.001, 2.0) > r_disc(100, 4, 1.001, 1.0));
+        let settings = Parameters::default().settings();
+        assert!(
+            settings
+                .iter()
+                .any(|(k, v)| k == "connection" && v == "k-nearest")
+        );
+    }
+}

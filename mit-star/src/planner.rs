@@ -1,0 +1,103 @@
+//! The [`Planner`] trait every planner of the framework implements, and what `solve` returns.
+
+use spaces::States;
+
+use crate::{Counters, PlannerError, Snapshot, Termination, Trace};
+
+/// A valid path from the start to a goal.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// The path's states, start first, goal last. Every edge between consecutive states was
+    /// checked at full resolution.
+    pub path: States,
+    /// The path's cost (length).
+    pub cost: f64,
+}
+
+/// What [`Planner::solve`] found.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome {
+    /// The best solution found so far.
+    Solved(Solution),
+    /// No solution within the termination condition (not an error).
+    NoSolution,
+}
+
+impl Outcome {
+    /// The solution, if any.
+    pub fn solution(&self) -> Option<&Solution> {
+        match self {
+            Self::Solved(s) => Some(s),
+            Self::NoSolution => None,
+        }
+    }
+
+    /// `true` if a solution was found.
+    pub fn is_solved(&self) -> bool {
+        matches!(self, Self::Solved(_))
+    }
+
+    /// The solution's cost, `∞` without one.
+    pub fn cost(&self) -> f64 {
+        self.solution().map_or(f64::INFINITY, |s| s.cost)
+    }
+}
+
+/// A motion planner: OMPL's `Planner`, reduced to what benchmarks and applications use.
+///
+/// Anytime planners improve their solution across repeated [`solve`](Self::solve) calls;
+/// [`clear`](Self::clear) forgets everything so the planner can be reused for a fresh run with
+/// no state leaking between queries. Object safe: run-time configurations are
+/// `Box<dyn Planner + Send>` ([`build_planner`](crate::build_planner)).
+pub trait Planner {
+    /// The planner's name, as benchmark reports print it (e.g. `MIT*`).
+    fn name(&self) -> &str;
+
+    /// Plans until `termination` fires (or the solution is provably optimal) and returns the
+    /// best solution so far. A returned path is always valid at full resolution.
+    ///
+    /// # Errors
+    /// [`PlannerError`] if the query is malformed: no goal, a start or goal of the wrong
+    /// dimension, not finite, out of bounds, or in collision.
+    fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError>;
+
+    /// Forgets every sample, tree, solution, counter and random state: the next `solve` behaves
+    /// exactly like the first `solve` of a freshly built planner with the same parameters.
+    fn clear(&mut self);
+
+    /// Cost of the best solution so far (`∞` if none).
+    fn best_cost(&self) -> f64;
+
+    /// Every improvement of the best solution, `(time, cost)`, oldest first.
+    fn trace(&self) -> &Trace;
+
+    /// Work counters since construction or the last `clear`.
+    fn counters(&self) -> Counters;
+
+    /// The planner's parameters as `(name, value)` pairs, for benchmark logs.
+    fn settings(&self) -> Vec<(String, String)>;
+
+    /// A read-only copy of the planner's samples, trees and cost bounds (for pictures of runs),
+    /// if the planner offers one. The default offers none.
+    fn snapshot(&self) -> Option<Snapshot> {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn outcome_accessors() {
+        let mut path = States::new(2);
+        path.push(&[0.0, 0.0]);
+        path.push(&[1.0, 0.0]);
+        let solved = Outcome::Solved(Solution { path, cost: 1.0 });
+        assert!(solved.is_solved());
+        assert_eq!(solved.cost(), 1.0);
+        assert_eq!(solved.solution().map(|s| s.path.len()), Some(2));
+        assert!(!Outcome::NoSolution.is_solved());
+        assert_eq!(Outcome::NoSolution.cost(), f64::INFINITY);
+    }
+}

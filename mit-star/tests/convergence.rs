@@ -1,0 +1,86 @@
+//! Asymptotic behaviour (spec §10): on problems with a known optimum, the cost approaches it as
+//! the planner is given more iterations.
+
+mod common;
+
+use common::{assert_solution_sound, assert_trace_monotone};
+use mit_star::{EitStar, IterationLimit, MitStar, Planner};
+use problems::{ObstacleFree, Problem, WallGap};
+
+/// Costs after successive iteration budgets, and the final relative gap to the optimum.
+fn costs_over_time(problem: &Problem, budgets: &[u64], seed: u64, mit: bool) -> Vec<f64> {
+    let mut costs = Vec::new();
+    if mit {
+        let mut planner = MitStar::for_problem(problem).seed(seed).build().unwrap();
+        for &b in budgets {
+            let outcome = planner.solve(&IterationLimit::new(b)).unwrap();
+            if let Some(s) = outcome.solution() {
+                assert_solution_sound(&planner, s, problem.start(), problem.goals());
+            }
+            costs.push(outcome.cost());
+        }
+        assert_trace_monotone(&planner);
+    } else {
+        let mut planner = EitStar::for_problem(problem).seed(seed).build().unwrap();
+        for &b in budgets {
+            let outcome = planner.solve(&IterationLimit::new(b)).unwrap();
+            if let Some(s) = outcome.solution() {
+                assert_solution_sound(&planner, s, problem.start(), problem.goals());
+            }
+            costs.push(outcome.cost());
+        }
+        assert_trace_monotone(&planner);
+    }
+    costs
+}
+
+#[test]
+fn wall_gap_cost_converges_toward_the_optimum() {
+    let problem = WallGap::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-4)
+        .unwrap();
+    let optimum = problem
+        .optimum()
+        .expect("wall gap has a closed-form optimum");
+    for mit in [false, true] {
+        let costs = costs_over_time(&problem, &[3_000, 20_000, 60_000], 21, mit);
+        assert!(costs[0].is_finite(), "solved early: {costs:?}");
+        assert!(costs.windows(2).all(|w| w[1] <= w[0]), "{costs:?}");
+        assert!(
+            costs[2] < costs[0],
+            "more time improved the path: {costs:?}"
+        );
+        let gap = costs[2] / optimum - 1.0;
+        assert!(
+            (0.0..0.05).contains(&gap),
+            "within 5 % of {optimum}: {costs:?}"
+        );
+    }
+}
+
+#[test]
+fn obstacle_free_r8_is_the_straight_line() {
+    let problem = ObstacleFree::new(8).build().unwrap();
+    let optimum = problem.optimum().unwrap();
+    let costs = costs_over_time(&problem, &[100], 0, true);
+    assert!((costs[0] - optimum).abs() <= 1e-12 * optimum);
+}
+
+#[test]
+fn dividing_walls_r2_cost_converges_toward_the_optimum() {
+    let problem = problems::DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-4)
+        .unwrap();
+    let optimum = problem.optimum().unwrap();
+    let costs = costs_over_time(&problem, &[2_000, 30_000, 80_000], 5, true);
+    assert!(costs[0].is_finite(), "{costs:?}");
+    assert!(costs[2] < costs[0], "{costs:?}");
+    assert!(
+        costs[2] / optimum - 1.0 < 0.08,
+        "within 8 % of {optimum}: {costs:?}"
+    );
+}

@@ -1,0 +1,420 @@
+//! The planners' guarantees (spec §10): valid paths, monotone traces, determinism (also across
+//! threads), the deadline, `clear`, repeated `solve`, observers, and typed errors for bad input.
+
+mod common;
+
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use common::{assert_solution_sound, assert_trace_monotone};
+use mit_star::{
+    BuildError, CostThreshold, Counters, EitStar, Endpoint, FirstSolution, IterationLimit, MitStar,
+    MitStarSc, Observer, Outcome, Planner, PlannerError, SolutionEvent, TerminationExt, TimeLimit,
+};
+use problems::{DividingWalls, GoalEnclosure, Problem};
+use spaces::{RealVectorSpace, SpaceError};
+use validity::{AxisBox, World};
+
+/// PDT's dividing walls in R^4 at the paper's resolution.
+fn dividing_walls_4() -> Problem {
+    DividingWalls::new(4).build().expect("a valid problem")
+}
+
+/// Everything a run reports that must be bit-identical for equal seeds.
+fn fingerprint(planner: &dyn Planner, outcome: &Outcome) -> (Vec<u64>, Vec<u64>, Counters) {
+    let costs = planner
+        .trace()
+        .points()
+        .iter()
+        .map(|p| p.cost.to_bits())
+        .collect();
+    let path = outcome
+        .solution()
+        .map(|s| s.path.as_flat().iter().map(|x| x.to_bits()).collect())
+        .unwrap_or_default();
+    (costs, path, planner.counters())
+}
+
+#[test]
+fn eit_and_mit_find_valid_paths_on_dividing_walls_r4() {
+    let problem = dividing_walls_4();
+    let mut eit = EitStar::for_problem(&problem).seed(3).build().unwrap();
+    let outcome = eit.solve(&IterationLimit::new(2_500)).unwrap();
+    let solution = outcome
+        .solution()
+        .expect("EIT* solves DW R^4 within 2500 iterations");
+    assert_solution_sound(&eit, solution, problem.start(), problem.goals());
+    assert!(solution.cost >= problem.optimum().unwrap() - 1e-9);
+    assert_trace_monotone(&eit);
+
+    let mut mit = MitStar::for_problem(&problem).seed(3).build().unwrap();
+    let outcome = mit.solve(&IterationLimit::new(2_500)).unwrap();
+    let solution = outcome
+        .solution()
+        .expect("MIT* solves DW R^4 within 2500 iterations");
+    assert_solution_sound(&mit, solution, problem.start(), problem.goals());
+    assert_trace_monotone(&mit);
+    let counters = mit.counters();
+    assert!(counters.full_checks > 0 && counters.sparse_checks > 0 && counters.batches > 0);
+    assert!(counters.validity_checks >= counters.points_tested + counters.samples);
+}
+
+#[test]
+fn same_seed_gives_bit_identical_results() {
+    let problem = dividing_walls_4();
+    let run = |seed| {
+        let mut planner = MitStar::for_problem(&problem).seed(seed).build().unwrap();
+        let outcome = planner.solve(&IterationLimit::new(1_500)).unwrap();
+        fingerprint(&planner, &outcome)
+    };
+    let a = run(11);
+    assert!(!a.0.is_empty(), "the run should find a solution");
+    assert_eq!(a, run(11));
+    assert_ne!(a.1, run(12).1, "another seed, another path");
+}
+
+#[test]
+fn parallel_runs_are_deterministic() {
+    let problem = dividing_walls_4();
+    let run = |problem: Problem, seed: u64| {
+        let mut planner = EitStar::for_problem(&problem).seed(seed).build().unwrap();
+        let outcome = planner.solve(&IterationLimit::new(1_500)).unwrap();
+        fingerprint(&planner, &outcome)
+    };
+    let sequential = [run(problem.clone(), 5), run(problem.clone(), 6)];
+    let threads: Vec<_> = [5, 6]
+        .into_iter()
+        .map(|seed| {
+            let problem = problem.clone();
+            std::thread::spawn(move || run(problem, seed))
+        })
+        .collect();
+    let parallel: Vec<_> = threads.into_iter().map(|t| t.join().unwrap()).collect();
+    assert_eq!(parallel, sequential);
+}
+
+#[test]
+fn the_deadline_is_honoured() {
+    // GE R^8 keeps the planner busy far beyond the budget.
+    let problem = GoalEnclosure::new(8).build().unwrap();
+    for budget_ms in [30, 120] {
+        let started = Instant::now();
+        let mut planner = EitStar::for_problem(&problem).seed(1).build().unwrap();
+        let budget = Duration::from_millis(budget_ms);
+        planner.solve(&TimeLimit::until(started + budget)).unwrap();
+        let elapsed = started.elapsed();
+        // Generous margin for shared machines; the benchmark reports the exact overshoot.
+        assert!(
+            elapsed < budget + Duration::from_millis(50),
+            "budget {budget:?}, took {elapsed:?}"
+        );
+    }
+}
+
+#[test]
+fn clear_makes_the_planner_as_good_as_new() {
+    let problem = dividing_walls_4();
+    let mut fresh = MitStarSc::for_problem(&problem).seed(9).build().unwrap();
+    let first = fresh.solve(&IterationLimit::new(1_200)).unwrap();
+    let expected = fingerprint(&fresh, &first);
+    // Run more, then clear: nothing of the first query may leak into the second.
+    fresh.solve(&IterationLimit::new(500)).unwrap();
+    fresh.clear();
+    assert_eq!(fresh.best_cost(), f64::INFINITY);
+    assert!(fresh.trace().is_empty());
+    assert_eq!(fresh.counters(), Counters::default());
+    let again = fresh.solve(&IterationLimit::new(1_200)).unwrap();
+    assert_eq!(fingerprint(&fresh, &again), expected);
+}
+
+#[test]
+fn repeated_solve_calls_keep_improving() {
+    let problem = DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-4)
+        .unwrap();
+    let mut planner = EitStar::for_problem(&problem).seed(2).build().unwrap();
+    let first = planner.solve(&FirstSolution).unwrap();
+    assert!(first.is_solved());
+    assert_eq!(planner.trace().len(), 1);
+    let mut previous = first.cost();
+    for _ in 0..4 {
+        let outcome = planner.solve(&IterationLimit::new(2_000)).unwrap();
+        assert!(outcome.cost() <= previous);
+        previous = outcome.cost();
+        assert_solution_sound(
+            &planner,
+            outcome.solution().unwrap(),
+            problem.start(),
+            problem.goals(),
+        );
+    }
+    assert!(
+        planner.trace().len() > 1,
+        "more solve calls found better paths"
+    );
+    assert_trace_monotone(&planner);
+}
+
+#[test]
+fn cost_thresholds_and_first_solutions_stop_early() {
+    let problem = DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-4)
+        .unwrap();
+    let mut planner = EitStar::for_problem(&problem).seed(4).build().unwrap();
+    let outcome = planner
+        .solve(&CostThreshold::new(1.5).or(IterationLimit::new(50_000)))
+        .unwrap();
+    assert!(outcome.cost() <= 1.5, "stopped at {}", outcome.cost());
+    let counters = planner.counters();
+    planner.clear();
+    let outcome = planner.solve(&FirstSolution).unwrap();
+    assert!(outcome.is_solved());
+    assert!(planner.counters().iterations <= counters.iterations);
+}
+
+#[derive(Clone, Default)]
+struct Recorder(Arc<Mutex<Vec<f64>>>);
+
+impl Observer for Recorder {
+    fn on_solution(&mut self, event: &SolutionEvent) {
+        self.0.lock().unwrap().push(event.cost);
+    }
+}
+
+#[test]
+fn the_observer_sees_every_improvement() {
+    let problem = DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-4)
+        .unwrap();
+    let recorder = Recorder::default();
+    let mut planner = MitStar::for_problem(&problem)
+        .seed(1)
+        .observer(Box::new(recorder.clone()))
+        .build()
+        .unwrap();
+    planner.solve(&IterationLimit::new(5_000)).unwrap();
+    let trace: Vec<f64> = planner.trace().points().iter().map(|p| p.cost).collect();
+    assert!(!trace.is_empty());
+    assert_eq!(*recorder.0.lock().unwrap(), trace);
+}
+
+#[test]
+fn obstacle_free_queries_are_solved_optimally_at_once() {
+    let problem = problems::ObstacleFree::new(4).build().unwrap();
+    let mut planner = MitStar::for_problem(&problem).build().unwrap();
+    let outcome = planner.solve(&IterationLimit::new(10_000)).unwrap();
+    // The straight edge is checked first; with the optimum found, solve returns at once.
+    assert_eq!(outcome.cost(), problem.straight_line_cost());
+    assert!(planner.counters().iterations < 20);
+    assert_solution_sound(
+        &planner,
+        outcome.solution().unwrap(),
+        problem.start(),
+        problem.goals(),
+    );
+}
+
+#[test]
+fn several_goals_are_searched_together() {
+    let space = RealVectorSpace::cube(2, -0.5, 0.5).unwrap();
+    let world = World::in_space(&space)
+        .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.1, 0.8]))
+        .unwrap();
+    let start = vec![-0.4, 0.0];
+    let goals = vec![vec![0.4, 0.0], vec![-0.1, 0.45]];
+    let mut planner = EitStar::builder(space, world, start.clone(), goals.clone())
+        .resolution(1e-4)
+        .seed(8)
+        .build()
+        .unwrap();
+    let outcome = planner.solve(&IterationLimit::new(5_000)).unwrap();
+    let solution = outcome.solution().expect("the unobstructed goal is easy");
+    assert_solution_sound(&planner, solution, &start, &goals);
+}
+
+fn small_world() -> (RealVectorSpace, World) {
+    let space = RealVectorSpace::cube(2, -0.5, 0.5).unwrap();
+    let world = World::in_space(&space)
+        .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.2, 0.2]))
+        .unwrap();
+    (space, world)
+}
+
+#[test]
+fn bad_parameters_are_typed_errors_naming_the_parameter() {
+    let parameter = |result: Result<MitStar, BuildError>| match result {
+        Err(BuildError::Parameter { name, .. }) => name,
+        other => panic!("expected a parameter error, got {other:?}"),
+    };
+    let builder = || {
+        let (space, world) = small_world();
+        MitStar::builder(space, world, vec![-0.4, 0.0], vec![vec![0.4, 0.0]])
+    };
+    assert_eq!(parameter(builder().batch_size(0).build()), "batch_size");
+    assert_eq!(
+        parameter(builder().rewire_factor(0.0).build()),
+        "rewire_factor"
+    );
+    assert_eq!(
+        parameter(builder().rewire_factor(f64::NAN).build()),
+        "rewire_factor"
+    );
+    assert_eq!(parameter(builder().resolution(-1e-3).build()), "resolution");
+    assert_eq!(
+        parameter(builder().gaussian_std_fraction(0.0).build()),
+        "gaussian_std_fraction"
+    );
+    assert_eq!(
+        parameter(builder().bridge_checks(0).build()),
+        "bridge_checks"
+    );
+    assert_eq!(
+        parameter(builder().sparse_spacing(2000.0, 1.0, 10.0).build()),
+        "sparse_factor"
+    );
+    assert_eq!(
+        parameter(builder().sparse_spacing(0.0, 0.5, 10.0).build()),
+        "sparse_initial_steps"
+    );
+    assert!(builder().build().is_ok());
+}
+
+#[test]
+fn bad_queries_are_typed_errors_naming_the_state() {
+    let query = |start: Vec<f64>, goals: Vec<Vec<f64>>| {
+        let (space, world) = small_world();
+        match EitStar::builder(space, world, start, goals).build() {
+            Err(BuildError::Query(e)) => e,
+            other => panic!("expected a query error, got {other:?}"),
+        }
+    };
+    assert_eq!(query(vec![-0.4, 0.0], vec![]), PlannerError::NoGoals);
+    assert!(matches!(
+        query(vec![0.0, 0.0], vec![vec![0.4, 0.0]]),
+        PlannerError::InCollision {
+            endpoint: Endpoint::Start,
+            ..
+        }
+    ));
+    assert!(matches!(
+        query(vec![-0.4, 0.0], vec![vec![0.4, 0.0], vec![0.9, 0.0]]),
+        PlannerError::State {
+            endpoint: Endpoint::Goal(1),
+            source: SpaceError::OutOfBounds { index: 0, .. }
+        }
+    ));
+    assert!(matches!(
+        query(vec![-0.4, 0.0, 0.0], vec![vec![0.4, 0.0]]),
+        PlannerError::State {
+            endpoint: Endpoint::Start,
+            source: SpaceError::DimensionMismatch {
+                expected: 2,
+                got: 3
+            }
+        }
+    ));
+    assert!(matches!(
+        query(vec![-0.4, f64::NAN], vec![vec![0.4, 0.0]]),
+        PlannerError::State {
+            source: SpaceError::NonFiniteState { index: 1, .. },
+            ..
+        }
+    ));
+    // A planner assembled from parts re-checks the query in `solve`.
+    let (space, world) = small_world();
+    let sampler = samplers::UniformSampler::new(0);
+    let checker = validity::DenseChecker::from_resolution(&space, 1e-3).unwrap();
+    let mut planner = mit_star::Eit::with_parts(
+        space,
+        world,
+        vec![-0.4, 0.0],
+        vec![vec![0.05, 0.05]],
+        sampler,
+        checker,
+        heuristics::Euclidean,
+        mit_star::Parameters::default(),
+    );
+    let err = planner.solve(&IterationLimit::new(10)).unwrap_err();
+    assert_eq!(err.to_string(), "goal 0 [0.05, 0.05] is in collision");
+}
+
+#[test]
+fn r_disc_connection_finds_valid_paths() {
+    let problem = DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-4)
+        .unwrap();
+    let mut planner = MitStar::for_problem(&problem)
+        .connection(mit_star::Connection::RDisc)
+        .seed(3)
+        .build()
+        .unwrap();
+    let outcome = planner.solve(&IterationLimit::new(20_000)).unwrap();
+    let solution = outcome.solution().expect("r-disc MIT* solves DW R^2");
+    assert_solution_sound(&planner, solution, problem.start(), problem.goals());
+    assert_trace_monotone(&planner);
+    assert_eq!(planner.parameters().connection, mit_star::Connection::RDisc);
+}
+
+/// A two-joint arm whose first joint wraps: the short way from −3 to 3 rad crosses ±π. An
+/// obstacle blocks the middle of the joint box, and the validity check knows nothing of
+/// wrapping, so the planner must use the space's metric and interpolation throughout.
+#[test]
+fn joint_spaces_use_their_own_metric() {
+    use spaces::{Joint, JointSpace, StateSpace};
+    struct Block;
+    impl validity::StateValidity for Block {
+        fn is_valid(&self, q: &[f64]) -> bool {
+            !(q[0].abs() < 2.0 && q[1].abs() < 1.0)
+        }
+    }
+    let space = JointSpace::new(vec![
+        Joint::continuous("base"),
+        Joint::revolute("elbow", -2.0, 2.0),
+    ])
+    .unwrap();
+    let start = vec![-2.5, 0.0];
+    let goal = vec![2.5, 0.0];
+    type Planner = mit_star::Eit<
+        JointSpace,
+        Block,
+        samplers::InformedSampler,
+        validity::FixedSparseChecker,
+        heuristics::SpaceMetric,
+    >;
+    let mut planner = Planner::builder(space.clone(), Block, start, vec![goal])
+        .resolution(1e-4)
+        .seed(5)
+        .build()
+        .unwrap();
+    let outcome = planner.solve(&IterationLimit::new(5_000)).unwrap();
+    let solution = outcome
+        .solution()
+        .expect("the wrap-around route is short and free");
+    // Across ±π the distance is 2π − 5 ≈ 1.28: the planner found the wrapping route.
+    assert!(solution.cost < 2.0, "cost {}", solution.cost);
+    // Independent check through the space's own interpolation, at half the step.
+    let path = &solution.path;
+    let mut x = vec![0.0; 2];
+    for i in 1..path.len() {
+        let (a, b) = (&path[i - 1], &path[i]);
+        let pieces = (space.distance(a, b) / (planner.step() / 2.0))
+            .ceil()
+            .max(1.0) as usize;
+        for j in 0..=pieces {
+            space.interpolate(a, b, j as f64 / pieces as f64, &mut x);
+            assert!(
+                validity::StateValidity::is_valid(&Block, &x),
+                "invalid at {x:?}"
+            );
+        }
+    }
+    assert!(planner.counters().neighbour_queries > 0);
+}
