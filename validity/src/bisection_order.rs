@@ -16,11 +16,13 @@
 //! allocation, so a check can resume where an earlier one stopped.
 
 /// The canonical grid of one edge: `intervals` equal steps, interior points `1 … intervals-1`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EdgeGrid {
     intervals: u64,
     /// `2^D`, the largest power of two not above `intervals`.
     dyadic: u64,
+    /// `1 / N`, so that a grid fraction is one multiplication.
+    inverse: f64,
 }
 
 impl EdgeGrid {
@@ -45,7 +47,11 @@ impl EdgeGrid {
     pub fn with_intervals(intervals: u64) -> Self {
         let intervals = intervals.max(1);
         let dyadic = 1u64 << (63 - intervals.leading_zeros());
-        Self { intervals, dyadic }
+        Self {
+            intervals,
+            dyadic,
+            inverse: 1.0 / intervals as f64,
+        }
     }
 
     /// Number of intervals `N`.
@@ -63,7 +69,7 @@ impl EdgeGrid {
     /// Fraction along the edge of grid index `i`.
     #[inline]
     pub fn fraction(&self, index: u64) -> f64 {
-        index as f64 / self.intervals as f64
+        index as f64 * self.inverse
     }
 
     /// Grid index (in `1 … N-1`) of position `j` (0-based) of the bisection order.
@@ -101,12 +107,6 @@ impl EdgeGrid {
         count.min(self.dyadic - 1)
     }
 
-    /// `true` if grid index `i` belongs to levels `1 … D`.
-    #[inline]
-    fn is_leveled(&self, i: u64) -> bool {
-        self.leveled_up_to(i) > if i == 0 { 0 } else { self.leveled_up_to(i - 1) }
-    }
-
     /// The `r`-th (0-based) grid index, ascending, that is not a level point.
     fn nth_leftover(&self, r: u64) -> u64 {
         // Smallest i with i − leveled_up_to(i) ≥ r + 1; the left side is non-decreasing in i.
@@ -123,19 +123,32 @@ impl EdgeGrid {
     }
 
     /// Iterates over the grid indices of bisection-order positions `from .. to`.
+    ///
+    /// Starting costs `O(log N)`; each further step a few additions and one 128-bit multiply —
+    /// no division — so walking a whole grid costs about as much as counting it.
     pub fn order(&self, from: u64, to: u64) -> BisectionOrder {
         let to = to.min(self.points());
-        let leftover_cursor = if from.max(self.dyadic - 1) < to {
-            self.nth_leftover(from.saturating_sub(self.dyadic - 1))
-        } else {
-            0
-        };
-        BisectionOrder {
+        let leveled = self.dyadic - 1;
+        let mut order = BisectionOrder {
             grid: *self,
             position: from,
             end: to,
-            leftover_cursor,
+            depth: 1,
+            m: 1,
+            cursor: 0,
+            next_level_m: 0,
+        };
+        if from >= to {
+            return order;
         }
+        if from < leveled {
+            let depth = 64 - (from + 1).leading_zeros();
+            order.depth = depth;
+            order.m = 2 * (from + 1 - (1u64 << (depth - 1))) + 1;
+        } else {
+            order.enter_leftovers(from - leveled);
+        }
+        order
     }
 }
 
@@ -145,8 +158,32 @@ pub struct BisectionOrder {
     grid: EdgeGrid,
     position: u64,
     end: u64,
-    /// Next candidate grid index in the ascending leftover phase.
-    leftover_cursor: u64,
+    /// Level phase: current depth `d` and odd numerator `m` of the next point `⌊m·N / 2^d⌋`.
+    depth: u32,
+    m: u64,
+    /// Leftover phase: next candidate grid index, and the numerator `m` (over `2^D`) of the
+    /// first level point not below it — a merge of two ascending sequences.
+    cursor: u64,
+    next_level_m: u64,
+}
+
+impl BisectionOrder {
+    /// Positions the leftover phase at its `r`-th index.
+    fn enter_leftovers(&mut self, r: u64) {
+        self.cursor = self.grid.nth_leftover(r);
+        self.next_level_m = self.grid.leveled_up_to(self.cursor - 1) + 1;
+    }
+
+    /// The level point with numerator `m` over `2^D`, or `u64::MAX` past the last one.
+    #[inline]
+    fn level_point_at_full_depth(&self, m: u64) -> u64 {
+        if m < self.grid.dyadic {
+            let depth = 63 - self.grid.dyadic.leading_zeros();
+            self.grid.level_point(m, depth)
+        } else {
+            u64::MAX
+        }
+    }
 }
 
 impl Iterator for BisectionOrder {
@@ -159,15 +196,29 @@ impl Iterator for BisectionOrder {
         }
         let j = self.position;
         self.position += 1;
-        if j < self.grid.dyadic - 1 {
-            return Some(self.grid.point(j));
+        let leveled = self.grid.dyadic - 1;
+        if j < leveled {
+            let index = self.grid.level_point(self.m, self.depth);
+            self.m += 2;
+            if self.m >= 1u64 << self.depth {
+                self.depth += 1;
+                self.m = 1;
+            }
+            if self.position == leveled && self.position < self.end {
+                self.enter_leftovers(0);
+            }
+            return Some(index);
         }
-        while self.grid.is_leveled(self.leftover_cursor) {
-            self.leftover_cursor += 1;
+        // Skip the level points: both sequences ascend, so this is a merge.
+        let mut level = self.level_point_at_full_depth(self.next_level_m);
+        while self.cursor == level {
+            self.cursor += 1;
+            self.next_level_m += 1;
+            level = self.level_point_at_full_depth(self.next_level_m);
         }
-        let i = self.leftover_cursor;
-        self.leftover_cursor += 1;
-        Some(i)
+        let index = self.cursor;
+        self.cursor += 1;
+        Some(index)
     }
 
     fn size_hint(&self) -> (usize, Option<usize>) {
