@@ -2,9 +2,7 @@
 
 use validity::AxisBox;
 
-use crate::family::{
-    axis_point, check_dimension, check_point, check_positive, on_axis, unit_world,
-};
+use crate::family::{axis_point, check_endpoints, check_positive, on_axis, unit_world};
 use crate::optimum::slab_crossing;
 use crate::{Parameter, Problem, ProblemError};
 
@@ -78,9 +76,7 @@ impl CenterSquare {
     /// bounds or in the cube.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         check_positive(name, "side", self.side)?;
         let world = unit_world(n).with_obstacle(AxisBox::cube(vec![0.0; n], self.side))?;
         Problem::new(name, world, self.start.clone(), vec![self.goal.clone()])?

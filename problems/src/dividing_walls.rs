@@ -1,8 +1,6 @@
 //! [`DividingWalls`]: PDT's dividing walls — three full walls cut by six slots.
 
-use validity::AxisBox;
-
-use crate::family::{FULL, axis_point, check_dimension, check_point, unit_world};
+use crate::family::{FULL, axis_point, check_endpoints, unit_world, xy_box};
 use crate::optimum::{distance_to_union, slab_crossing};
 use crate::{Parameter, Problem, ProblemError};
 
@@ -103,24 +101,16 @@ impl DividingWalls {
     /// goal out of bounds or in a wall.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         check_pairs("walls", &self.walls)?;
         check_pairs("gaps", &self.gaps)?;
 
         let mut world = unit_world(n);
-        for &(x, thickness) in &self.walls {
-            let mut widths = vec![FULL; n];
-            widths[0] = thickness;
-            world.add_obstacle(AxisBox::new(axis_point(n, x), widths))?;
+        for &wall in &self.walls {
+            world.add_obstacle(xy_box(n, wall, (0.0, FULL), FULL))?;
         }
-        for &(y, width) in &self.gaps {
-            let mut center = vec![0.0; n];
-            center[1] = y;
-            let mut widths = vec![FULL; n];
-            widths[1] = width;
-            world.add_anti_obstacle(AxisBox::new(center, widths))?;
+        for &gap in &self.gaps {
+            world.add_anti_obstacle(xy_box(n, (0.0, FULL), gap, FULL))?;
         }
         Problem::new(name, world, self.start.clone(), vec![self.goal.clone()])?
             .with_optimum(self.optimum())

@@ -1,7 +1,7 @@
-//! Shared plumbing of the problem families: the unit-cube world, parameter checks, and points
-//! on the x-axis.
+//! Shared plumbing of the problem families: the unit-cube world, walls and slots across it,
+//! parameter checks, and points on the x-axis.
 
-use validity::World;
+use validity::{AxisBox, World};
 
 use crate::ProblemError;
 
@@ -23,6 +23,23 @@ pub(crate) fn check_dimension(problem: &'static str, n: usize) -> Result<(), Pro
 /// The empty world `[-0.5, 0.5]^n`.
 pub(crate) fn unit_world(n: usize) -> World {
     World::new(vec![-HALF; n], vec![HALF; n])
+}
+
+/// The box centred at `(x, y, 0, …, 0)` in `R^n`, `x_width` wide in `x`, `y_width` in `y` and
+/// `rest_width` in every other coordinate: a wall across the x-axis, or a slot through one.
+pub(crate) fn xy_box(
+    n: usize,
+    (x, x_width): (f64, f64),
+    (y, y_width): (f64, f64),
+    rest_width: f64,
+) -> AxisBox {
+    let mut center = vec![0.0; n];
+    center[0] = x;
+    center[1] = y;
+    let mut widths = vec![rest_width; n];
+    widths[0] = x_width;
+    widths[1] = y_width;
+    AxisBox::new(center, widths)
 }
 
 /// The point `(x, 0, …, 0)` in `R^n`.
@@ -97,6 +114,19 @@ pub(crate) fn check_point(
         });
     }
     Ok(())
+}
+
+/// The checks every family starts its build with: `n ≥ 2`, and start and goal with `n` finite
+/// coordinates each.
+pub(crate) fn check_endpoints(
+    problem: &'static str,
+    n: usize,
+    start: &[f64],
+    goal: &[f64],
+) -> Result<(), ProblemError> {
+    check_dimension(problem, n)?;
+    check_point(problem, "start", start, n)?;
+    check_point(problem, "goal", goal, n)
 }
 
 #[cfg(test)]

@@ -1,9 +1,7 @@
 //! [`FlankingGap`]: PDT's flanking gap — a wall with a small square hole, flanked by corridors.
 
-use validity::AxisBox;
-
 use crate::family::{
-    axis_point, check_dimension, check_finite, check_point, check_positive, on_axis, unit_world,
+    axis_point, check_endpoints, check_finite, check_positive, on_axis, unit_world, xy_box,
 };
 use crate::optimum::{distance_to_union, slab_crossing};
 use crate::{Parameter, Problem, ProblemError};
@@ -136,23 +134,18 @@ impl FlankingGap {
     /// bounds or in the wall.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         check_positive(name, "thickness", self.thickness)?;
         check_positive(name, "wall_width", self.wall_width)?;
         check_finite(name, "gap_offset", self.gap_offset)?;
         check_positive(name, "gap_width", self.gap_width)?;
 
-        let mut wall_widths = vec![self.wall_width; n];
-        wall_widths[0] = self.thickness;
-        let mut gap_center = vec![0.0; n];
-        gap_center[1] = self.gap_offset + 0.5 * self.gap_width;
-        let mut gap_widths = vec![self.gap_width; n];
-        gap_widths[0] = self.thickness;
+        let across = (0.0, self.thickness);
+        let (wall, gap) = (self.wall_width, self.gap_width);
+        let gap_center = self.gap_offset + 0.5 * gap;
         let world = unit_world(n)
-            .with_obstacle(AxisBox::new(vec![0.0; n], wall_widths))?
-            .with_anti_obstacle(AxisBox::new(gap_center, gap_widths))?;
+            .with_obstacle(xy_box(n, across, (0.0, wall), wall))?
+            .with_anti_obstacle(xy_box(n, across, (gap_center, gap), gap))?;
         Problem::new(name, world, self.start.clone(), vec![self.goal.clone()])?
             .with_optimum(self.optimum())
     }

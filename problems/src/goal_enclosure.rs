@@ -1,10 +1,7 @@
 //! [`GoalEnclosure`]: PDT's goal enclosure — the goal sits in a hollow cube opening away from
 //! the start.
 
-use crate::enclosure::Sizes;
-use crate::family::{axis_point, check_dimension, check_point, on_axis, unit_world};
-use crate::optimum::enclosure_escape;
-use crate::{Parameter, Problem, ProblemError};
+use crate::enclosure::{EnclosedEnds, Enclosure, Ends};
 
 /// PDT's **goal enclosure** in `[-0.5, 0.5]^n`: the goal lies inside a hollow cube whose only
 /// opening is in the face pointing to `+x`, away from the start, so a planner must go around.
@@ -37,109 +34,28 @@ use crate::{Parameter, Problem, ProblemError};
 /// assert!(problem.world().is_valid(&[0.21, 0.0])); // the opening
 /// # Ok::<(), problems::ProblemError>(())
 /// ```
-#[derive(Debug, Clone, PartialEq)]
-pub struct GoalEnclosure {
-    n: usize,
-    start: Vec<f64>,
-    goal: Vec<f64>,
-    sizes: Sizes,
-}
+pub type GoalEnclosure = Enclosure<GoalEnclosed>;
 
-impl GoalEnclosure {
-    /// The family's name in the [catalogue](crate::catalogue).
-    pub const NAME: &'static str = "goal-enclosure";
+/// The [`EnclosedEnds`](crate::EnclosedEnds) of [`GoalEnclosure`]: only the goal is enclosed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct GoalEnclosed;
 
-    /// PDT's defaults in `n` dimensions (checked by [`build`](Self::build): `n ≥ 2`).
-    pub fn new(n: usize) -> Self {
-        Self {
-            n,
-            start: axis_point(n, -0.2),
-            goal: axis_point(n, 0.2),
-            sizes: Sizes::PDT,
-        }
+impl EnclosedEnds for GoalEnclosed {}
+
+impl Ends for GoalEnclosed {
+    const NAME: &'static str = "goal-enclosure";
+    const START: bool = false;
+    const GOAL: bool = true;
+
+    fn optimum(sx: f64, gx: f64, h: f64, escape: f64) -> Option<f64> {
+        (sx < gx - h && gx + h < 0.5).then(|| (gx - h - sx).hypot(h) + escape)
     }
-
-    /// Sets the start state.
-    pub fn start(mut self, start: Vec<f64>) -> Self {
-        self.start = start;
-        self
-    }
-
-    /// Sets the goal state (the enclosure's centre).
-    pub fn goal(mut self, goal: Vec<f64>) -> Self {
-        self.goal = goal;
-        self
-    }
-
-    /// Sets the side of the enclosing cube.
-    pub fn outside(mut self, outside: f64) -> Self {
-        self.sizes.outside = outside;
-        self
-    }
-
-    /// Sets the side of the hollow (less than `outside`).
-    pub fn inside(mut self, inside: f64) -> Self {
-        self.sizes.inside = inside;
-        self
-    }
-
-    /// Sets the width of the opening in every coordinate but `x`.
-    pub fn gap(mut self, gap: f64) -> Self {
-        self.sizes.gap = gap;
-        self
-    }
-
-    /// The current parameter values, for listings.
-    pub fn parameters(&self) -> Vec<Parameter> {
-        enclosure_parameters(&self.start, &self.goal, &self.sizes)
-    }
-
-    /// Builds the problem.
-    ///
-    /// # Errors
-    /// [`ProblemError::Dimension`] if `n < 2`; [`ProblemError::Parameter`] for a size that is
-    /// not finite and positive, `inside ≥ outside`, or a start or goal of the wrong length;
-    /// [`ProblemError::State`] or [`ProblemError::InCollision`] for a start or goal out of
-    /// bounds or in the shell.
-    pub fn build(&self) -> Result<Problem, ProblemError> {
-        let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
-        self.sizes.check(name)?;
-        let mut world = unit_world(n);
-        self.sizes.add_to(&mut world, &self.goal, 1.0)?;
-        Problem::new(name, world, self.start.clone(), vec![self.goal.clone()])?
-            .with_optimum(self.optimum())
-    }
-
-    /// The closed-form optimum (type docs).
-    fn optimum(&self) -> Option<f64> {
-        let (sx, gx, h) = (self.start[0], self.goal[0], self.sizes.half());
-        let applies = on_axis(&self.start)
-            && on_axis(&self.goal)
-            && self.sizes.has_closed_form()
-            && sx < gx - h
-            && gx + h < 0.5;
-        applies
-            .then(|| (gx - h - sx).hypot(h) + enclosure_escape(self.sizes.outside, self.sizes.gap))
-    }
-}
-
-/// The parameter listing shared by the three enclosure families.
-pub(crate) fn enclosure_parameters(start: &[f64], goal: &[f64], sizes: &Sizes) -> Vec<Parameter> {
-    vec![
-        Parameter::point("start", start, "start state"),
-        Parameter::point("goal", goal, "goal state"),
-        Parameter::number("outside", sizes.outside, "side of the enclosing cube"),
-        Parameter::number("inside", sizes.inside, "side of the hollow"),
-        Parameter::number("gap", sizes.gap, "width of the opening"),
-    ]
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ProblemError;
     use crate::test_support::{polyline_is_valid, polyline_length};
     use validity::StateValidity;
 

@@ -41,6 +41,7 @@
 //! | [`NarrowPassage`] | `narrow-passage`: a full wall with one slot |
 //! | [`StartEnclosure`] | `start-enclosure`: the start in a hollow cube opening away from the goal |
 //! | [`DoubleEnclosure`] | `double-enclosure`: both ends enclosed |
+//! | [`Enclosure`], [`EnclosedEnds`] | the three enclosure families' shared builder, and which ends it encloses ([`GoalEnclosed`], [`StartEnclosed`], [`BothEnclosed`]) |
 //! | [`RepeatingRectangles`] | `repeating-rectangles`: a lattice of `49^n` small cubes |
 //! | [`catalogue`], [`builtin`], [`Family`], [`Parameter`] | the families by name, with descriptions and default parameters |
 //! | [`problem_file`] | the TOML problem file format ([`Problem::from_toml_str`], [`Problem::from_file`], [`Problem::to_toml_string`]) |
@@ -78,14 +79,15 @@ mod wall_gap;
 pub use catalogue::{Family, Parameter, builtin, catalogue};
 pub use center_square::CenterSquare;
 pub use dividing_walls::DividingWalls;
-pub use double_enclosure::DoubleEnclosure;
+pub use double_enclosure::{BothEnclosed, DoubleEnclosure};
+pub use enclosure::{EnclosedEnds, Enclosure};
 pub use error::{Endpoint, Location, ProblemError, ProblemFileError};
 pub use flanking_gap::FlankingGap;
-pub use goal_enclosure::GoalEnclosure;
+pub use goal_enclosure::{GoalEnclosed, GoalEnclosure};
 pub use narrow_passage::NarrowPassage;
 pub use obstacle_free::ObstacleFree;
 pub use problem::Problem;
 pub use random_rectangles::RandomRectangles;
 pub use repeating_rectangles::RepeatingRectangles;
-pub use start_enclosure::StartEnclosure;
+pub use start_enclosure::{StartEnclosed, StartEnclosure};
 pub use wall_gap::WallGap;

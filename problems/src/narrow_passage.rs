@@ -1,9 +1,7 @@
 //! [`NarrowPassage`]: a full wall with one slot.
 
-use validity::AxisBox;
-
 use crate::family::{
-    FULL, HALF, axis_point, check_dimension, check_finite, check_point, check_positive, unit_world,
+    FULL, HALF, axis_point, check_endpoints, check_finite, check_positive, unit_world, xy_box,
 };
 use crate::optimum::{distance_to_union, slab_crossing};
 use crate::{Parameter, Problem, ProblemError};
@@ -100,23 +98,15 @@ impl NarrowPassage {
     /// bounds or in the wall.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         check_positive(name, "thickness", self.thickness)?;
         check_finite(name, "gap_center", self.gap_center)?;
         check_positive(name, "gap_width", self.gap_width)?;
 
-        let mut wall_widths = vec![FULL; n];
-        wall_widths[0] = self.thickness;
-        let mut gap_center = vec![0.0; n];
-        gap_center[1] = self.gap_center;
-        let mut gap_widths = vec![FULL; n];
-        gap_widths[0] = self.thickness;
-        gap_widths[1] = self.gap_width;
+        let across = (0.0, self.thickness);
         let world = unit_world(n)
-            .with_obstacle(AxisBox::new(vec![0.0; n], wall_widths))?
-            .with_anti_obstacle(AxisBox::new(gap_center, gap_widths))?;
+            .with_obstacle(xy_box(n, across, (0.0, FULL), FULL))?
+            .with_anti_obstacle(xy_box(n, across, (self.gap_center, self.gap_width), FULL))?;
         Problem::new(name, world, self.start.clone(), vec![self.goal.clone()])?
             .with_optimum(self.optimum())
     }

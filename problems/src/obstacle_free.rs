@@ -1,6 +1,6 @@
 //! [`ObstacleFree`]: the empty unit cube.
 
-use crate::family::{axis_point, check_dimension, check_point, unit_world};
+use crate::family::{axis_point, check_endpoints, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **obstacle-free** problem: the empty `[-0.5, 0.5]^n`.
@@ -63,9 +63,7 @@ impl ObstacleFree {
     /// of the wrong length or not finite; [`ProblemError::State`] for one out of bounds.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         let problem = Problem::new(
             name,
             unit_world(n),

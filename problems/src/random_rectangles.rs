@@ -4,7 +4,7 @@ use rand::{RngExt, SeedableRng};
 use spaces::{SeededRng, StateSpace};
 use validity::AxisBox;
 
-use crate::family::{check_dimension, check_point, check_positive, unit_world};
+use crate::family::{check_endpoints, check_positive, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **random rectangles** in `[-0.5, 0.5]^n`: `count` axis-aligned boxes placed at random,
@@ -136,9 +136,7 @@ impl RandomRectangles {
     /// boxes; [`ProblemError::State`] for a start or goal out of bounds.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         check_positive(name, "min_side", self.min_side)?;
         check_positive(name, "max_side", self.max_side)?;
         if self.min_side > self.max_side {

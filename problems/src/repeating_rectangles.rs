@@ -2,7 +2,7 @@
 
 use validity::Lattice;
 
-use crate::family::{axis_point, check_dimension, check_point, check_positive, unit_world};
+use crate::family::{axis_point, check_endpoints, check_positive, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **repeating rectangles** in `[-0.5, 0.5]^n`: a regular grid of `count^n` cubes of side
@@ -96,9 +96,7 @@ impl RepeatingRectangles {
     /// [`ProblemError::InCollision`] for a start or goal out of bounds or in a cube.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         if self.count == 0 {
             return Err(ProblemError::Parameter {
                 problem: name,

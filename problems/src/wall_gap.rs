@@ -1,9 +1,7 @@
 //! [`WallGap`]: a wall with a slot, and a corridor past its end.
 
-use validity::AxisBox;
-
 use crate::family::{
-    FULL, HALF, axis_point, check_dimension, check_finite, check_point, check_positive, unit_world,
+    FULL, HALF, axis_point, check_endpoints, check_finite, check_positive, unit_world, xy_box,
 };
 use crate::optimum::{distance_to_union, slab_crossing};
 use crate::{Parameter, Problem, ProblemError};
@@ -112,9 +110,7 @@ impl WallGap {
     /// start or goal out of bounds or in the wall.
     pub fn build(&self) -> Result<Problem, ProblemError> {
         let (name, n) = (Self::NAME, self.n);
-        check_dimension(name, n)?;
-        check_point(name, "start", &self.start, n)?;
-        check_point(name, "goal", &self.goal, n)?;
+        check_endpoints(name, n, &self.start, &self.goal)?;
         check_positive(name, "thickness", self.thickness)?;
         if !(self.wall_top.is_finite() && self.wall_top > -HALF) {
             return Err(ProblemError::Parameter {
@@ -126,19 +122,11 @@ impl WallGap {
         check_finite(name, "gap_center", self.gap_center)?;
         check_positive(name, "gap_width", self.gap_width)?;
 
-        let mut wall_center = vec![0.0; n];
-        wall_center[1] = 0.5 * (self.wall_top - HALF);
-        let mut wall_widths = vec![FULL; n];
-        wall_widths[0] = self.thickness;
-        wall_widths[1] = self.wall_top + HALF;
-        let mut gap_center = vec![0.0; n];
-        gap_center[1] = self.gap_center;
-        let mut gap_widths = vec![FULL; n];
-        gap_widths[0] = self.thickness;
-        gap_widths[1] = self.gap_width;
+        let across = (0.0, self.thickness);
+        let wall = (0.5 * (self.wall_top - HALF), self.wall_top + HALF);
         let world = unit_world(n)
-            .with_obstacle(AxisBox::new(wall_center, wall_widths))?
-            .with_anti_obstacle(AxisBox::new(gap_center, gap_widths))?;
+            .with_obstacle(xy_box(n, across, wall, FULL))?
+            .with_anti_obstacle(xy_box(n, across, (self.gap_center, self.gap_width), FULL))?;
         Problem::new(name, world, self.start.clone(), vec![self.goal.clone()])?
             .with_optimum(self.optimum())
     }

@@ -1,9 +1,9 @@
 //! [`AdaptiveSampler`]: MIT*'s obstacle-based adaptive sampler (spec §4, paper Alg. 2).
 
-use rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, Stop};
+use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
+use crate::informed_draws::InformedDraws;
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError,
     SegmentSearch,
@@ -44,11 +44,9 @@ use crate::{
 /// ```
 #[derive(Debug, Clone)]
 pub struct AdaptiveSampler {
-    set: InformedSet,
+    draws: InformedDraws,
     step: GaussianStep,
     search: SegmentSearch,
-    rng: SeededRng,
-    counters: SamplerCounters,
     /// Scratch: `x_pre` once found invalid, and `x_temp`.
     pre: Vec<f64>,
     temp: Vec<f64>,
@@ -68,14 +66,12 @@ impl AdaptiveSampler {
         S: StateSpace + ?Sized,
         G: AsRef<[f64]>,
     {
-        let set = InformedSet::new(space, start, goals)?;
-        let n = set.dimension();
+        let draws = InformedDraws::new(space, start, goals, seed)?;
+        let n = draws.set.dimension();
         Ok(Self {
-            set,
+            draws,
             step: GaussianStep::for_space(space)?,
             search: SegmentSearch::new(Self::DEFAULT_BRIDGE_CHECKS)?,
-            rng: SeededRng::seed_from_u64(seed),
-            counters: SamplerCounters::default(),
             pre: vec![0.0; n],
             temp: vec![0.0; n],
         })
@@ -111,7 +107,7 @@ impl AdaptiveSampler {
 
     /// The informed-set geometry this sampler draws from.
     pub fn informed_set(&self) -> &InformedSet {
-        &self.set
+        &self.draws.set
     }
 }
 
@@ -131,50 +127,39 @@ where
         let cost = bound.cost();
         // `draw` polls `stop` before every candidate, the segment search before every point.
         loop {
-            self.set.draw(space, &mut self.rng, cost, stop, out)?;
+            self.draws.draw(space, cost, stop, out)?;
             if validity.is_valid(out) {
-                self.counters.returned += 1;
-                return Ok(());
+                return self.draws.returned();
             }
             self.pre.copy_from_slice(out);
-            self.step
-                .perturb(space, &mut self.rng, &self.pre, &mut self.temp);
-            self.counters.drawn += 1;
-            if !self.set.contains(space, cost, &self.temp) {
-                self.counters.rejected += 1;
+            self.draws
+                .perturb(&self.step, space, &self.pre, &mut self.temp);
+            if !self.draws.set.contains(space, cost, &self.temp) {
+                self.draws.reject();
             } else if validity.is_valid(&self.temp) {
                 out.copy_from_slice(&self.temp);
-                self.counters.returned += 1;
-                return Ok(());
+                return self.draws.returned();
             }
-            let set = &self.set;
-            let found = self.search.find(
-                space,
-                validity,
-                &self.pre,
-                &self.temp,
-                |x| set.contains(space, cost, x),
-                stop,
-                &mut self.counters,
-                out,
-            )?;
-            if found {
-                self.counters.returned += 1;
+            let segment = (self.pre.as_slice(), self.temp.as_slice());
+            if self
+                .draws
+                .search_segment(&self.search, space, validity, segment, cost, stop, out)?
+            {
                 return Ok(());
             }
         }
     }
 
     fn sampled_measure(&self, space: &S, bound: CostBound) -> f64 {
-        self.set.measure(space, bound.cost())
+        self.draws.measure(space, bound)
     }
 
     fn reseed(&mut self, seed: u64) {
-        self.rng = SeededRng::seed_from_u64(seed);
+        self.draws.reseed(seed);
     }
 
     fn counters(&self) -> SamplerCounters {
-        self.set.with_own(self.counters)
+        self.draws.counters()
     }
 }
 

@@ -1,9 +1,9 @@
 //! [`BridgeSampler`]: Hsu et al.'s bridge test, restricted to the informed set.
 
-use rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, Stop};
+use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
+use crate::informed_draws::InformedDraws;
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError,
     SegmentSearch,
@@ -38,10 +38,8 @@ use crate::{
 /// ```
 #[derive(Debug, Clone)]
 pub struct BridgeSampler {
-    set: InformedSet,
+    draws: InformedDraws,
     step: GaussianStep,
-    rng: SeededRng,
-    counters: SamplerCounters,
     /// Scratch: the bridge's ends `x1` and `x2`.
     first: Vec<f64>,
     second: Vec<f64>,
@@ -58,13 +56,11 @@ impl BridgeSampler {
         S: StateSpace + ?Sized,
         G: AsRef<[f64]>,
     {
-        let set = InformedSet::new(space, start, goals)?;
-        let n = set.dimension();
+        let draws = InformedDraws::new(space, start, goals, seed)?;
+        let n = draws.set.dimension();
         Ok(Self {
-            set,
+            draws,
             step: GaussianStep::for_space(space)?,
-            rng: SeededRng::seed_from_u64(seed),
-            counters: SamplerCounters::default(),
             first: vec![0.0; n],
             second: vec![0.0; n],
         })
@@ -86,7 +82,7 @@ impl BridgeSampler {
 
     /// The informed-set geometry this sampler draws from.
     pub fn informed_set(&self) -> &InformedSet {
-        &self.set
+        &self.draws.set
     }
 }
 
@@ -103,49 +99,39 @@ where
         stop: &dyn Stop,
         out: &mut [f64],
     ) -> Result<(), SampleError> {
-        self.set.check_dimensions(space, out)?;
+        self.draws.set.check_dimensions(space, out)?;
         let cost = bound.cost();
         let midpoint = SegmentSearch::midpoint();
         // `draw` polls `stop` before every candidate.
         loop {
-            self.set
-                .draw(space, &mut self.rng, cost, stop, &mut self.first)?;
+            self.draws.draw(space, cost, stop, &mut self.first)?;
             if validity.is_valid(&self.first) {
                 continue;
             }
-            self.step
-                .perturb(space, &mut self.rng, &self.first, &mut self.second);
-            self.counters.drawn += 1;
+            self.draws
+                .perturb(&self.step, space, &self.first, &mut self.second);
             if validity.is_valid(&self.second) {
                 continue;
             }
-            let set = &self.set;
-            let found = midpoint.find(
-                space,
-                validity,
-                &self.first,
-                &self.second,
-                |x| set.contains(space, cost, x),
-                stop,
-                &mut self.counters,
-                out,
-            )?;
-            if found {
-                self.counters.returned += 1;
+            let bridge = (self.first.as_slice(), self.second.as_slice());
+            if self
+                .draws
+                .search_segment(&midpoint, space, validity, bridge, cost, stop, out)?
+            {
                 return Ok(());
             }
         }
     }
 
     fn sampled_measure(&self, space: &S, bound: CostBound) -> f64 {
-        self.set.measure(space, bound.cost())
+        self.draws.measure(space, bound)
     }
 
     fn reseed(&mut self, seed: u64) {
-        self.rng = SeededRng::seed_from_u64(seed);
+        self.draws.reseed(seed);
     }
 
     fn counters(&self) -> SamplerCounters {
-        self.set.with_own(self.counters)
+        self.draws.counters()
     }
 }

@@ -1,9 +1,9 @@
 //! [`GaussianSampler`]: Boor et al.'s Gaussian sampling, restricted to the informed set.
 
-use rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, Stop};
+use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
+use crate::informed_draws::InformedDraws;
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError,
 };
@@ -35,10 +35,8 @@ use crate::{
 /// ```
 #[derive(Debug, Clone)]
 pub struct GaussianSampler {
-    set: InformedSet,
+    draws: InformedDraws,
     step: GaussianStep,
-    rng: SeededRng,
-    counters: SamplerCounters,
     /// Scratch: the Gaussian neighbour `x2`.
     neighbour: Vec<f64>,
 }
@@ -54,13 +52,11 @@ impl GaussianSampler {
         S: StateSpace + ?Sized,
         G: AsRef<[f64]>,
     {
-        let set = InformedSet::new(space, start, goals)?;
+        let draws = InformedDraws::new(space, start, goals, seed)?;
         Ok(Self {
-            neighbour: vec![0.0; set.dimension()],
-            set,
+            neighbour: vec![0.0; draws.set.dimension()],
+            draws,
             step: GaussianStep::for_space(space)?,
-            rng: SeededRng::seed_from_u64(seed),
-            counters: SamplerCounters::default(),
         })
     }
 
@@ -80,7 +76,7 @@ impl GaussianSampler {
 
     /// The informed-set geometry this sampler draws from.
     pub fn informed_set(&self) -> &InformedSet {
-        &self.set
+        &self.draws.set
     }
 }
 
@@ -100,22 +96,17 @@ where
         let cost = bound.cost();
         // `draw` polls `stop` before every candidate.
         loop {
-            self.set.draw(space, &mut self.rng, cost, stop, out)?;
-            self.step
-                .perturb(space, &mut self.rng, out, &mut self.neighbour);
-            self.counters.drawn += 1;
+            self.draws.draw(space, cost, stop, out)?;
+            self.draws
+                .perturb(&self.step, space, out, &mut self.neighbour);
             match (validity.is_valid(out), validity.is_valid(&self.neighbour)) {
-                (true, false) => {
-                    self.counters.returned += 1;
-                    return Ok(());
-                }
+                (true, false) => return self.draws.returned(),
                 (false, true) => {
-                    if self.set.contains(space, cost, &self.neighbour) {
+                    if self.draws.set.contains(space, cost, &self.neighbour) {
                         out.copy_from_slice(&self.neighbour);
-                        self.counters.returned += 1;
-                        return Ok(());
+                        return self.draws.returned();
                     }
-                    self.counters.rejected += 1;
+                    self.draws.reject();
                 }
                 _ => {}
             }
@@ -123,14 +114,14 @@ where
     }
 
     fn sampled_measure(&self, space: &S, bound: CostBound) -> f64 {
-        self.set.measure(space, bound.cost())
+        self.draws.measure(space, bound)
     }
 
     fn reseed(&mut self, seed: u64) {
-        self.rng = SeededRng::seed_from_u64(seed);
+        self.draws.reseed(seed);
     }
 
     fn counters(&self) -> SamplerCounters {
-        self.set.with_own(self.counters)
+        self.draws.counters()
     }
 }

@@ -1,9 +1,9 @@
 //! [`InformedSampler`]: valid states uniform over the informed set of the cost bound.
 
-use rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, Stop};
+use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
+use crate::informed_draws::InformedDraws;
 use crate::{CostBound, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError};
 
 /// Direct informed sampling (Gammell et al.; spec §7): states uniform over the informed set of
@@ -30,9 +30,7 @@ use crate::{CostBound, InformedSet, SampleError, Sampler, SamplerCounters, Sampl
 /// ```
 #[derive(Debug, Clone)]
 pub struct InformedSampler {
-    set: InformedSet,
-    rng: SeededRng,
-    counters: SamplerCounters,
+    draws: InformedDraws,
 }
 
 impl InformedSampler {
@@ -46,15 +44,13 @@ impl InformedSampler {
         G: AsRef<[f64]>,
     {
         Ok(Self {
-            set: InformedSet::new(space, start, goals)?,
-            rng: SeededRng::seed_from_u64(seed),
-            counters: SamplerCounters::default(),
+            draws: InformedDraws::new(space, start, goals, seed)?,
         })
     }
 
     /// The informed-set geometry this sampler draws from.
     pub fn informed_set(&self) -> &InformedSet {
-        &self.set
+        &self.draws.set
     }
 }
 
@@ -73,24 +69,22 @@ where
     ) -> Result<(), SampleError> {
         // `draw` polls `stop` before every candidate, so this loop needs no poll of its own.
         loop {
-            self.set
-                .draw(space, &mut self.rng, bound.cost(), stop, out)?;
+            self.draws.draw(space, bound.cost(), stop, out)?;
             if validity.is_valid(out) {
-                self.counters.returned += 1;
-                return Ok(());
+                return self.draws.returned();
             }
         }
     }
 
     fn sampled_measure(&self, space: &S, bound: CostBound) -> f64 {
-        self.set.measure(space, bound.cost())
+        self.draws.measure(space, bound)
     }
 
     fn reseed(&mut self, seed: u64) {
-        self.rng = SeededRng::seed_from_u64(seed);
+        self.draws.reseed(seed);
     }
 
     fn counters(&self) -> SamplerCounters {
-        self.set.with_own(self.counters)
+        self.draws.counters()
     }
 }

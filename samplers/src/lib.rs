@@ -59,6 +59,7 @@ mod estimated_informed_set;
 mod gaussian_sampler;
 mod gaussian_step;
 mod hyperspheroid;
+mod informed_draws;
 mod informed_sampler;
 mod informed_set;
 mod sampler;

@@ -1,0 +1,133 @@
+//! [`InformedDraws`]: what every informed sampler owns — the informed set, the seeded generator
+//! and the work counters — and the steps they share.
+
+use rand::SeedableRng;
+use spaces::{SeededRng, StateSpace, Stop};
+use validity::StateValidity;
+
+use crate::{
+    CostBound, GaussianStep, InformedSet, SampleError, SamplerCounters, SamplerError, SegmentSearch,
+};
+
+/// The informed set a sampler draws from, its seeded generator and its own counters (the set
+/// counts its draws itself).
+#[derive(Debug, Clone)]
+pub(crate) struct InformedDraws {
+    /// The informed-set geometry.
+    pub(crate) set: InformedSet,
+    rng: SeededRng,
+    counters: SamplerCounters,
+}
+
+impl InformedDraws {
+    /// The informed set of `start` and `goals` in `space`, and a generator seeded with `seed`.
+    ///
+    /// # Errors
+    /// As [`InformedSet::new`].
+    pub(crate) fn new<S, G>(
+        space: &S,
+        start: &[f64],
+        goals: &[G],
+        seed: u64,
+    ) -> Result<Self, SamplerError>
+    where
+        S: StateSpace + ?Sized,
+        G: AsRef<[f64]>,
+    {
+        Ok(Self {
+            set: InformedSet::new(space, start, goals)?,
+            rng: SeededRng::seed_from_u64(seed),
+            counters: SamplerCounters::default(),
+        })
+    }
+
+    /// Draws `out` uniformly from the informed set of `cost` ([`InformedSet::draw`]).
+    ///
+    /// # Errors
+    /// As [`InformedSet::draw`].
+    pub(crate) fn draw<S: StateSpace + ?Sized>(
+        &mut self,
+        space: &S,
+        cost: Option<f64>,
+        stop: &dyn Stop,
+        out: &mut [f64],
+    ) -> Result<(), SampleError> {
+        self.set.draw(space, &mut self.rng, cost, stop, out)
+    }
+
+    /// Writes a Gaussian neighbour of `from` into `to` and counts it as drawn.
+    pub(crate) fn perturb<S: StateSpace + ?Sized>(
+        &mut self,
+        step: &GaussianStep,
+        space: &S,
+        from: &[f64],
+        to: &mut [f64],
+    ) {
+        step.perturb(space, &mut self.rng, from, to);
+        self.counters.drawn += 1;
+    }
+
+    /// Counts a candidate turned down for lying outside the informed set.
+    pub(crate) fn reject(&mut self) {
+        self.counters.rejected += 1;
+    }
+
+    /// Counts a state returned to the planner; `Ok(())` for the sampler to return.
+    pub(crate) fn returned(&mut self) -> Result<(), SampleError> {
+        self.counters.returned += 1;
+        Ok(())
+    }
+
+    /// Searches the segment `a → b` with `search` for a valid state inside the informed set of
+    /// `cost` and writes it into `out` ([`SegmentSearch::find`]); a state found is counted as
+    /// returned. Returns whether one was found.
+    ///
+    /// # Errors
+    /// As [`SegmentSearch::find`].
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn search_segment<S, V>(
+        &mut self,
+        search: &SegmentSearch,
+        space: &S,
+        validity: &V,
+        (a, b): (&[f64], &[f64]),
+        cost: Option<f64>,
+        stop: &dyn Stop,
+        out: &mut [f64],
+    ) -> Result<bool, SampleError>
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let set = &self.set;
+        let found = search.find(
+            space,
+            validity,
+            a,
+            b,
+            |x| set.contains(space, cost, x),
+            stop,
+            &mut self.counters,
+            out,
+        )?;
+        if found {
+            self.counters.returned += 1;
+        }
+        Ok(found)
+    }
+
+    /// The measure of the informed set of `bound` ([`Sampler::sampled_measure`](crate::Sampler::sampled_measure)).
+    pub(crate) fn measure<S: StateSpace + ?Sized>(&self, space: &S, bound: CostBound) -> f64 {
+        self.set.measure(space, bound.cost())
+    }
+
+    /// Restarts the generator from `seed` ([`Sampler::reseed`](crate::Sampler::reseed)).
+    pub(crate) fn reseed(&mut self, seed: u64) {
+        self.rng = SeededRng::seed_from_u64(seed);
+    }
+
+    /// The set's counters and the sampler's own, summed ([`Sampler::counters`](crate::Sampler::counters)).
+    pub(crate) fn counters(&self) -> SamplerCounters {
+        self.set.with_own(self.counters)
+    }
+}
