@@ -18,6 +18,18 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
+/// Runs a command that must succeed; returns its standard output.
+fn succeeded(args: &[&str]) -> String {
+    let out = mit_star(args);
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        out.status.success(),
+        "{args:?}: {stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    stdout
+}
+
 /// Runs a command that must fail with exit code 2 and a message containing every `needle`.
 fn refused(args: &[&str], needles: &[&str]) {
     let out = mit_star(args);
@@ -243,9 +255,7 @@ fn unwritable_output_folders_are_refused() {
 
 #[test]
 fn listings() {
-    let out = mit_star(&["problems", "--dim", "4"]);
-    assert!(out.status.success());
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = succeeded(&["problems", "--dim", "4"]);
     for name in [
         "flanking-gap",
         "dividing-walls",
@@ -256,17 +266,15 @@ fn listings() {
         assert!(text.contains(name), "{name}");
     }
     assert!(text.contains("wall_width"));
-    let out = mit_star(&["planners"]);
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = succeeded(&["planners"]);
     assert!(text.contains("mit-star-eis") && text.contains("batch_size"));
-    let out = mit_star(&["experiments", "--print", "smoke"]);
-    assert!(String::from_utf8_lossy(&out.stdout).contains("[[problems]]"));
+    assert!(succeeded(&["experiments", "--print", "smoke"]).contains("[[problems]]"));
 }
 
 #[test]
 fn plan_prints_the_result_and_draws_2d_runs() {
     let dir = scratch("plan");
-    let out = mit_star(&[
+    let stdout = succeeded(&[
         "plan",
         "--planner",
         "eit-star",
@@ -279,12 +287,6 @@ fn plan_prints_the_result_and_draws_2d_runs() {
         "-o",
         dir.to_str().unwrap(),
     ]);
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{stdout}{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     assert!(
         stdout.contains("EIT* on goal-enclosure R^2 (seed 3, budget 0.05 s)"),
         "{stdout}"
@@ -301,7 +303,7 @@ fn plan_prints_the_result_and_draws_2d_runs() {
         );
     }
     // JSON output, and no picture in 4-D.
-    let out = mit_star(&[
+    let stdout = succeeded(&[
         "plan",
         "--problem",
         "obstacle-free",
@@ -313,8 +315,7 @@ fn plan_prints_the_result_and_draws_2d_runs() {
         "-o",
         dir.join("4d").to_str().unwrap(),
     ]);
-    assert!(out.status.success());
-    let value: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let value: serde_json::Value = serde_json::from_str(&stdout).unwrap();
     assert_eq!(value["status"], "solved");
     assert!(value["files"].as_array().unwrap().is_empty());
     assert!(!dir.join("4d").exists());
@@ -323,7 +324,7 @@ fn plan_prints_the_result_and_draws_2d_runs() {
 #[test]
 fn bench_with_flags_writes_a_results_folder() {
     let dir = scratch("bench");
-    let out = mit_star(&[
+    let stdout = succeeded(&[
         "bench",
         "--planners",
         "mit-star,eit-star",
@@ -342,12 +343,6 @@ fn bench_with_flags_writes_a_results_folder() {
         "-o",
         dir.to_str().unwrap(),
     ]);
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{stdout}{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     assert!(stdout.contains("| dividing-walls R^2 |"), "{stdout}");
     assert!(stdout.contains("t_init gain"));
     for f in [
