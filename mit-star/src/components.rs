@@ -2,13 +2,12 @@
 //! [`Parameters`].
 
 use samplers::{
-    AdaptiveSampler, BridgeSampler, Estimated, ExpansionForm, ExpansionRule, GaussianSampler,
-    InformedSampler, UniformSampler,
+    AdaptiveSampler, BridgeSampler, Estimated, GaussianSampler, InformedSampler, UniformSampler,
 };
 use spaces::StateSpace;
 use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, step_from_resolution};
 
-use crate::{BuildError, EisExpansionForm, EisExpansionRule, Parameters};
+use crate::{BuildError, Parameters};
 
 /// A sampler the [`Builder`](crate::Builder) can make from [`Parameters`] and the query.
 ///
@@ -122,17 +121,9 @@ impl<S: StateSpace, T: SamplerPart<S>> SamplerPart<S> for Estimated<T> {
         goals: &[Vec<f64>],
         p: &Parameters,
     ) -> Result<Self, BuildError> {
-        let form = match p.eis_expansion_form {
-            EisExpansionForm::Paper => ExpansionForm::Paper,
-            EisExpansionForm::Authors => ExpansionForm::Authors,
-        };
-        let rule = match p.eis_expansion_rule {
-            EisExpansionRule::PerBatch => ExpansionRule::PerBatch,
-            EisExpansionRule::PerInvalidEdge => ExpansionRule::PerInvalidEdge,
-        };
         Ok(Estimated::new(T::build_part(space, start, goals, p)?)
-            .with_form(form)
-            .with_rule(rule))
+            .with_form(p.eis_expansion_form)
+            .with_rule(p.eis_expansion_rule))
     }
 }
 

@@ -16,27 +16,13 @@ pub enum Connection {
     RDisc,
 }
 
-/// How MIT*'s estimated informed set grows its cost from the reliability `γ` (spec §6).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum EisExpansionForm {
-    /// The paper's `e_γ = √(1 + (1 − γ)²)` (the default).
-    #[default]
-    Paper,
-    /// The authors' code, `e_γ = √(1 + (1 − γ))`.
-    Authors,
-}
+/// How MIT*'s estimated informed set grows its cost from the reliability `γ` (spec §6): the
+/// `samplers` crate's [`ExpansionForm`](samplers::ExpansionForm), under the planner's name.
+pub use samplers::ExpansionForm as EisExpansionForm;
 
-/// When MIT*'s estimated informed set expands (spec §6).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum EisExpansionRule {
-    /// Once per batch sampled inside it that ends without a valid solution (the default).
-    #[default]
-    PerBatch,
-    /// On every invalid edge of the lazy path (a literal reading of the paper's Alg. 1).
-    PerInvalidEdge,
-}
+/// When MIT*'s estimated informed set expands (spec §6): the `samplers` crate's
+/// [`ExpansionRule`](samplers::ExpansionRule), under the planner's name.
+pub use samplers::ExpansionRule as EisExpansionRule;
 
 /// The parameters of an [`Eit`](crate::Eit) planner and its parts, with the spec's defaults
 /// (§9). Serialisable, so benchmark output can record exactly what ran.

@@ -3,8 +3,10 @@
 
 use crate::{CostBound, SamplerError};
 
-/// How the expansion factor `e_γ` follows from the reliability `γ`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// How the expansion factor `e_γ` follows from the reliability `γ`. Serialised as `paper` or
+/// `authors`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum ExpansionForm {
     /// The paper's equation, `e_γ = √(1 + (1 − γ)²)` (the default).
     #[default]
@@ -26,8 +28,9 @@ impl ExpansionForm {
 
 /// When an existing estimate expands (case 3). The [`Estimated`](crate::Estimated) wrapper
 /// applies the rule; a planner driving an [`EstimatedInformedSet`] directly applies it itself —
-/// the estimate only records it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// the estimate only records it. Serialised as `per-batch` or `per-invalid-edge`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum ExpansionRule {
     /// Once per batch sampled inside the estimate that ends without a valid solution (the
     /// authors' code; the default).
