@@ -129,14 +129,14 @@ impl GridWalker {
         EdgeGrid::new(space.distance(a, b), self.step)
     }
 
-    /// Tests the positions of the bisection order of edge `(a, b)` up to `target` (exclusive)
-    /// that `progress` has not covered yet, stopping at the first invalid point. Updates
-    /// `progress`.
+    /// Tests the positions of the bisection order of edge `(a, b)` on its canonical `grid`
+    /// (from [`grid`](Self::grid)) up to `target` (exclusive) that `progress` has not covered
+    /// yet, stopping at the first invalid point. Updates `progress`.
     pub fn advance<S, V>(
         &mut self,
         space: &S,
         validity: &V,
-        (a, b): (&[f64], &[f64]),
+        (a, b, grid): (&[f64], &[f64], EdgeGrid),
         target: u64,
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
@@ -145,7 +145,6 @@ impl GridWalker {
         S: StateSpace + ?Sized,
         V: StateValidity + ?Sized,
     {
-        let grid = self.grid(space, a, b);
         if progress.is_invalid() {
             return EdgeStatus::Invalid;
         }
@@ -225,10 +224,13 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus {
-        let budget = self.sparse_budget(space.distance(a, b));
+        // One distance per check: it gives both the sparse budget and the grid.
+        let length = space.distance(a, b);
+        let budget = self.sparse_budget(length);
         let walker = self.walker_mut();
         walker.counters_mut().sparse_checks += 1;
-        walker.advance(space, validity, (a, b), budget, progress, stop)
+        let grid = EdgeGrid::new(length, walker.step());
+        walker.advance(space, validity, (a, b, grid), budget, progress, stop)
     }
 
     /// Full check of `a → b`: tests every grid point not yet tested. Returns
@@ -245,7 +247,8 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     ) -> EdgeStatus {
         let walker = self.walker_mut();
         walker.counters_mut().full_checks += 1;
-        walker.advance(space, validity, (a, b), u64::MAX, progress, stop)
+        let grid = walker.grid(space, a, b);
+        walker.advance(space, validity, (a, b, grid), u64::MAX, progress, stop)
     }
 
     /// Grid points a full check of `a → b` would still test (the effort of the edge).
