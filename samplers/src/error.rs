@@ -47,12 +47,6 @@ pub enum SamplerError {
     /// An informed set needs at least one goal.
     #[error("an informed set needs at least one goal, none was given")]
     NoGoals,
-    /// The singular value decomposition behind a hyperspheroid's rotation did not converge.
-    #[error("the SVD for the rotation of goal {goal}'s hyperspheroid did not converge")]
-    Decomposition {
-        /// Index of the goal.
-        goal: usize,
-    },
     /// A parameter that must be a finite positive number is not.
     #[error("{name} must be finite and positive, got {value}")]
     NotPositive {

@@ -3,7 +3,10 @@
 use rand::{Rng, RngExt};
 use spaces::{StateSpace, Stop};
 
-use crate::hyperspheroid::{ln_unit_ball_measure, push_rotation, sample_unit_ball};
+use crate::hyperspheroid::{
+    dense_rotation, ln_unit_ball_measure, push_plane_rotation, rotate_about_centre,
+    sample_unit_ball,
+};
 use crate::{SampleError, SamplerCounters, SamplerError, prolate_hyperspheroid_measure};
 
 /// The informed set of a path-length objective: every state that could lie on a path from the
@@ -40,8 +43,10 @@ pub struct InformedSet {
     centres: Vec<f64>,
     /// Per goal, `s_min = d(start, goal)`.
     minimum_costs: Vec<f64>,
-    /// `m` row-major `n × n` rotation matrices.
-    rotations: Vec<f64>,
+    /// Per goal, the plane rotation taking `e1` onto the start→goal direction: its unit axis
+    /// `w` (`m × n`) and `(cos, sin)` of its angle (`O(n)` each; see `push_plane_rotation`).
+    axes: Vec<f64>,
+    turns: Vec<(f64, f64)>,
     /// The smallest `s_min`.
     minimum: f64,
     /// `ln ζ_n`, the log-volume of the unit `n`-ball.
@@ -58,7 +63,7 @@ impl InformedSet {
     ///
     /// # Errors
     /// [`SamplerError`] if there is no goal, the start or a goal has the wrong dimension or a
-    /// non-finite coordinate, or a rotation's SVD fails.
+    /// non-finite coordinate.
     pub fn new<S, G>(space: &S, start: &[f64], goals: &[G]) -> Result<Self, SamplerError>
     where
         S: StateSpace + ?Sized,
@@ -84,7 +89,8 @@ impl InformedSet {
             goals: Vec::with_capacity(m * n),
             centres: Vec::with_capacity(m * n),
             minimum_costs: Vec::with_capacity(m),
-            rotations: Vec::with_capacity(m * n * n),
+            axes: Vec::with_capacity(m * n),
+            turns: Vec::with_capacity(m),
             minimum: f64::INFINITY,
             ln_unit_ball: ln_unit_ball_measure(n),
             ball: vec![0.0; n],
@@ -126,13 +132,14 @@ impl InformedSet {
             let norm = norm.sqrt();
             if norm > 0.0 {
                 direction.iter_mut().for_each(|d| *d /= norm);
-                push_rotation(&mut set.rotations, &direction)
-                    .map_err(|()| SamplerError::Decomposition { goal: index })?;
             } else {
                 // Start and goal coincide: the hyperspheroid is a ball, any rotation will do.
-                set.rotations
-                    .extend((0..n * n).map(|k| if k % (n + 1) == 0 { 1.0 } else { 0.0 }));
+                direction.iter_mut().enumerate().for_each(|(i, d)| {
+                    *d = if i == 0 { 1.0 } else { 0.0 };
+                });
             }
+            let turn = push_plane_rotation(&mut set.axes, &direction);
+            set.turns.push(turn);
         }
         Ok(set)
     }
@@ -162,16 +169,17 @@ impl InformedSet {
         self.row(&self.centres, index, self.dimension)
     }
 
-    /// Rotation `R` of goal `index`'s hyperspheroid as a row-major `n × n` matrix, `None` if out
-    /// of range.
+    /// Rotation `R` of goal `index`'s hyperspheroid as a row-major `n × n` matrix (built on
+    /// request, `O(n²)`; draws apply it implicitly in `O(n)`), `None` if out of range.
     ///
-    /// `R = U · diag(1, …, 1, det U · det V) · Vᵀ` from the SVD `U Σ Vᵀ = k1 · e1ᵀ`, with `k1` the
-    /// unit start→goal vector: orthonormal, `det R = +1`, and `R e1 = k1` for `n ≥ 2` (in one
-    /// dimension the only rotation is the identity; the interval is symmetric, so sampling is
+    /// `R` turns the plane of `e1` and `k1`, the unit start→goal vector, by their angle and fixes
+    /// the orthogonal complement: orthonormal, `det R = +1`, and `R e1 = k1` for `n ≥ 2` (in one
+    /// dimension no rotation takes `e1` to `−e1`; the interval is symmetric, so sampling is
     /// unaffected). The identity when start and goal coincide.
-    pub fn rotation(&self, index: usize) -> Option<&[f64]> {
-        let n2 = self.dimension * self.dimension;
-        self.row(&self.rotations, index, n2)
+    pub fn rotation(&self, index: usize) -> Option<Vec<f64>> {
+        let axis = self.row(&self.axes, index, self.dimension)?;
+        let (c, s) = self.turns[index];
+        Some(dense_rotation((c, s, axis)))
     }
 
     /// `s_min = d(start, goal)` of goal `index`, `None` if out of range.
@@ -375,11 +383,10 @@ impl InformedSet {
             let minor = ((cost - s) * (cost + s)).sqrt() / 2.0;
             self.ball[0] *= major;
             self.ball[1..].iter_mut().for_each(|v| *v *= minor);
-            let rotation = &self.rotations[goal * n * n..(goal + 1) * n * n];
+            let (c, sin) = self.turns[goal];
+            let axis = &self.axes[goal * n..(goal + 1) * n];
             let centre = &self.centres[goal * n..(goal + 1) * n];
-            for ((o, row), c) in out.iter_mut().zip(rotation.chunks_exact(n)).zip(centre) {
-                *o = c + row.iter().zip(&self.ball).map(|(r, v)| r * v).sum::<f64>();
-            }
+            rotate_about_centre((c, sin, axis), &self.ball, centre, out);
             self.counters.drawn += 1;
             if !space.contains(out) {
                 self.counters.rejected += 1;
@@ -535,7 +542,7 @@ mod tests {
         let space = RealVectorSpace::cube(3, -1.0, 1.0).unwrap();
         let mut set = InformedSet::new(&space, &[0.1; 3], &[[0.1; 3]]).unwrap();
         let identity: Vec<f64> = (0..9).map(|k| if k % 4 == 0 { 1.0 } else { 0.0 }).collect();
-        assert_eq!(set.rotation(0), Some(identity.as_slice()));
+        assert_eq!(set.rotation(0), Some(identity.clone()));
         let mut rng = SeededRng::seed_from_u64(5);
         let mut x = [0.0; 3];
         for _ in 0..500 {

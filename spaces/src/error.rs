@@ -24,6 +24,17 @@ pub enum SpaceError {
         /// The offending value.
         value: f64,
     },
+    /// The bounds are so far apart (or so close) that the space's diagonal or volume is not a
+    /// positive finite `f64`: distances, measures and step sizes would overflow or vanish.
+    #[error(
+        "the bounds span a space whose {quantity} is {value} in f64 arithmetic; rescale the problem so that its sides and volume are finite and positive"
+    )]
+    UnrepresentableSize {
+        /// `diagonal` or `volume`.
+        quantity: &'static str,
+        /// What it computed to (`inf`, or `0`).
+        value: f64,
+    },
     /// A lower bound is not strictly below its upper bound.
     #[error("coordinate {index} has lower bound {lower} not below upper bound {upper}")]
     EmptyInterval {

@@ -153,6 +153,11 @@ impl JointSpace {
             .map(|j| matches!(j.kind, JointKind::Continuous))
             .collect();
         let euclidean = !wraps.iter().any(|&w| w) && weights.iter().all(|&w| w == 1.0);
+        for (quantity, value) in [("diagonal", extent_sq.sqrt()), ("volume", measure)] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(SpaceError::UnrepresentableSize { quantity, value });
+            }
+        }
         Ok(Self {
             joints,
             weights,

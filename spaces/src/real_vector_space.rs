@@ -28,8 +28,9 @@ impl RealVectorSpace {
     /// A box with the given lower and upper corners.
     ///
     /// # Errors
-    /// [`SpaceError`] if the dimension is zero, the lengths differ, a bound is not finite, or a
-    /// lower bound is not strictly below its upper bound.
+    /// [`SpaceError`] if the dimension is zero, the lengths differ, a bound is not finite, a
+    /// lower bound is not strictly below its upper bound, or the diagonal or volume of the box
+    /// overflows or underflows `f64`.
     pub fn new(lower: Vec<f64>, upper: Vec<f64>) -> Result<Self, SpaceError> {
         if lower.len() != upper.len() {
             return Err(SpaceError::BoundsLength {
@@ -61,6 +62,11 @@ impl RealVectorSpace {
             .map(|(lo, hi)| (hi - lo) * (hi - lo))
             .sum::<f64>()
             .sqrt();
+        for (quantity, value) in [("diagonal", extent), ("volume", measure)] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(SpaceError::UnrepresentableSize { quantity, value });
+            }
+        }
         Ok(Self {
             lower,
             upper,
