@@ -3,13 +3,16 @@
 
 use heuristics::Heuristic;
 use samplers::{CostBound, SampleError, Sampler};
-use spaces::StateSpace;
+use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::eit::Eit;
 use crate::graph::Neighbourhood;
 use crate::vertex::NONE;
 use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
+
+/// Samples of a batch made visible to neighbour queries (and indexed) at a time.
+const INDEX_CHUNK: usize = 4096;
 
 impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
 where
@@ -53,6 +56,18 @@ where
         }
     }
 
+    /// Resets the sparse level, clears the forward queue and restarts both searches: the
+    /// reverse search from the goals, the forward search from the start.
+    pub(crate) fn restart_searches(&mut self, stop: &crate::termination::SolveStop<'_>) {
+        self.restart_pending = false;
+        // Deferred expansions would only have queued edges these restarts discard.
+        self.deferred.clear();
+        self.checker.reset();
+        self.forward.clear();
+        self.restart_reverse(stop);
+        self.expand_forward(self.start_id, NONE, stop);
+    }
+
     /// Adds a batch of samples (spec §3.4).
     pub(crate) fn add_batch(&mut self, stop: &crate::termination::SolveStop<'_>) {
         let solved = self.best_cost.is_finite();
@@ -60,7 +75,13 @@ where
         self.sampler.observe_batch_end(solved);
         // 2. Prune with the true solution cost only.
         let mut pruned = 0;
-        if self.parameters.pruning && solved && self.best_cost < self.last_prune_cost {
+        // Pruning walks the whole graph without polling: when the termination condition has
+        // fired it waits for the next batch (the bound it would prune with is kept).
+        if self.parameters.pruning
+            && solved
+            && self.best_cost < self.last_prune_cost
+            && !stop.should_stop()
+        {
             let protected: Vec<u32> = self.solution_vertices().iter().map(|v| v.0).collect();
             pruned = self
                 .graph
@@ -78,6 +99,7 @@ where
         let mut ids = std::mem::take(&mut self.batch_ids);
         ids.clear();
         let mut sample = std::mem::take(&mut self.sample);
+        let mut committed = 0;
         for _ in 0..self.parameters.batch_size {
             match self
                 .sampler
@@ -86,6 +108,13 @@ where
                 Ok(()) => {
                     let vertex = self.new_vertex(VertexKind::Sample, &sample);
                     ids.push(self.graph.add_vertex(&sample, vertex));
+                    // Large batches are indexed as they grow (nearest-neighbour trees built
+                    // in polled steps), not in one unpolled piece at the end.
+                    if ids.len() - committed == INDEX_CHUNK {
+                        self.graph.commit(&ids[committed..]);
+                        self.graph.index_pending(stop);
+                        committed = ids.len();
+                    }
                 }
                 Err(SampleError::EmptySet { .. }) => {
                     self.exhausted = true;
@@ -97,15 +126,18 @@ where
         self.sample = sample;
         self.counters.samples += ids.len() as u64;
         // 4. Reconnect: new vertices visible, caches dropped, k or r for the new q.
-        self.graph.commit(&ids);
+        self.graph.commit(&ids[committed..]);
         let samples = ids.len();
         self.batch_ids = ids;
         let connection = self.update_neighbourhood();
-        // 5. Reset the sparse level, restart the reverse search, re-seed the forward search.
-        self.checker.reset();
-        self.forward.clear();
-        self.restart_reverse(stop);
-        self.expand_forward(self.start_id, NONE, stop);
+        // 5. Reset the sparse level, restart the reverse search, re-seed the forward search —
+        //    in the next iteration if the termination condition fired meanwhile (the restart
+        //    queries the neighbours of the goals and the start over every new sample).
+        if stop.should_stop() {
+            self.restart_pending = true;
+        } else {
+            self.restart_searches(stop);
+        }
         self.counters.batches += 1;
         let vertices = self.graph.vertex_count() as u64;
         let edges = self.graph.edge_count() as u64;

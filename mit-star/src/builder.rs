@@ -50,6 +50,8 @@ pub struct Builder<S, V, Smp, E, H = Euclidean> {
     checker: Option<E>,
     observer: Option<Box<dyn Observer>>,
     name: Option<String>,
+    /// What was wrong with the problem given to [`Eit::for_problem`], reported by `build`.
+    problem_error: Option<problems::ProblemError>,
 }
 
 impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
@@ -71,13 +73,16 @@ impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
             checker: None,
             observer: None,
             name: None,
+            problem_error: None,
         }
     }
 }
 
 impl<Smp, E, H: Default> Eit<RealVectorSpace, World, Smp, E, H> {
     /// Starts building a planner for a benchmark [`Problem`]: its space, world, start, goals
-    /// and resolution.
+    /// and resolution. [`build`](Builder::build) refuses a problem whose collision-check step
+    /// is coarser than its thinnest obstacle unless the problem allows it
+    /// ([`Problem::check_step`]).
     ///
     /// ```
     /// use mit_star::{EitStar, FirstSolution, Planner};
@@ -88,13 +93,15 @@ impl<Smp, E, H: Default> Eit<RealVectorSpace, World, Smp, E, H> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn for_problem(problem: &Problem) -> Builder<RealVectorSpace, World, Smp, E, H> {
-        Self::builder(
+        let mut builder = Self::builder(
             problem.space().clone(),
             problem.world().clone(),
             problem.start().to_vec(),
             problem.goals().to_vec(),
         )
-        .resolution(problem.resolution())
+        .resolution(problem.resolution());
+        builder.problem_error = problem.check_step().err();
+        builder
     }
 }
 
@@ -222,6 +229,9 @@ where
     /// malformed query, and the parts' own errors ([`BuildError::Sampler`],
     /// [`BuildError::Validity`]).
     pub fn build(self) -> Result<Eit<S, V, Smp, E, H>, BuildError> {
+        if let Some(error) = self.problem_error {
+            return Err(BuildError::Problem(error));
+        }
         self.parameters.validate()?;
         validate_query(&self.space, &self.validity, &self.start, &self.goals)?;
         let sampler = match self.sampler {

@@ -139,6 +139,7 @@ pub fn build_planner_with<V>(
 where
     V: StateValidity + Send + 'static,
 {
+    problem.check_step()?;
     let mut parameters = parameters.clone();
     parameters.resolution = problem.resolution();
     let space = problem.space().clone();

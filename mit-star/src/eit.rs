@@ -99,6 +99,13 @@ pub struct Eit<S, V, Smp, E, H = Euclidean> {
     pub(crate) last_prune_cost: f64,
     /// The informed set is empty: no better solution exists.
     pub(crate) exhausted: bool,
+    /// A batch was added when the termination condition had fired: its restart of both
+    /// searches (neighbour queries over every new sample) waits for the next iteration.
+    pub(crate) restart_pending: bool,
+    /// Expansions asked for after the termination condition fired, as
+    /// `(vertex, excluded neighbour, forward?)`: each costs a neighbour query, so they wait for
+    /// the next iteration, which performs them first, in order.
+    pub(crate) deferred: Vec<(u32, u32, bool)>,
     ready: bool,
     pub(crate) trace: Trace,
     pub(crate) counters: Counters,
@@ -170,6 +177,8 @@ where
             lower_bound: 0.0,
             last_prune_cost: f64::INFINITY,
             exhausted: false,
+            restart_pending: false,
+            deferred: Vec::new(),
             ready: false,
             trace: Trace::default(),
             counters: Counters::default(),
@@ -247,7 +256,7 @@ where
     }
 
     /// Builds the initial graph (start and goals) and both searches, once.
-    fn setup(&mut self) -> Result<(), PlannerError> {
+    fn setup(&mut self, stop: &SolveStop<'_>) -> Result<(), PlannerError> {
         if self.ready {
             return Ok(());
         }
@@ -273,9 +282,8 @@ where
         self.graph.commit(&ids);
         self.update_neighbourhood();
         self.forward.clear();
-        self.restart_reverse(&spaces::Never);
-        self.expand_forward(self.start_id, NONE, &spaces::Never);
         self.ready = true;
+        self.restart_searches(stop);
         Ok(())
     }
 
@@ -291,7 +299,11 @@ where
     /// One iteration (spec §3.1).
     pub(crate) fn iterate(&mut self, stop: &SolveStop<'_>) {
         self.counters.iterations += 1;
-        if self.sampler.wants_batch() {
+        if !self.deferred.is_empty() {
+            self.run_deferred(stop);
+        } else if self.restart_pending {
+            self.restart_searches(stop);
+        } else if self.sampler.wants_batch() {
             self.add_batch(stop);
         } else if self.continue_reverse() {
             self.reverse_step(stop);
@@ -299,6 +311,26 @@ where
             self.forward_step(stop);
         } else {
             self.add_batch(stop);
+        }
+    }
+
+    /// Performs the expansions deferred when the termination condition fired, in order, until
+    /// it fires again.
+    fn run_deferred(&mut self, stop: &SolveStop<'_>) {
+        let pending = std::mem::take(&mut self.deferred);
+        for (i, &(v, exclude, forward)) in pending.iter().enumerate() {
+            if spaces::Stop::should_stop(stop) {
+                // Keep the rest, ahead of anything deferred meanwhile.
+                let mut rest = pending[i..].to_vec();
+                rest.append(&mut self.deferred);
+                self.deferred = rest;
+                return;
+            }
+            if forward {
+                self.expand_forward(v, exclude, stop);
+            } else {
+                self.expand_reverse(v, exclude, stop);
+            }
         }
     }
 
@@ -408,7 +440,7 @@ where
 
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
         let stop = SolveStop::new(termination);
-        self.setup()?;
+        self.setup(&stop)?;
         let mut iterations = 0;
         loop {
             stop.update(iterations, self.best_cost);
@@ -439,6 +471,8 @@ where
         self.best_goal = NONE;
         self.last_prune_cost = f64::INFINITY;
         self.exhausted = false;
+        self.restart_pending = false;
+        self.deferred.clear();
         self.ready = false;
         self.trace.clear();
         self.counters = Counters::default();

@@ -57,7 +57,7 @@ pub enum PlannerError {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum BuildError {
     /// A parameter is out of its range.
-    #[error("parameter `{name}` is {value}; {requirement}")]
+    #[error("parameter `{name}` is {}; {requirement}", crate::error::short(*.value))]
     Parameter {
         /// The parameter's name.
         name: &'static str,
@@ -86,6 +86,21 @@ pub enum BuildError {
         /// The names accepted.
         expected: &'static str,
     },
+}
+
+/// A number for a message: plain for everyday magnitudes, in exponent form otherwise, so that
+/// `1e308` never prints as 309 digits.
+pub(crate) fn short(value: f64) -> String {
+    let magnitude = value.abs();
+    if !value.is_finite() || magnitude == 0.0 || (1e-4..1e7).contains(&magnitude) {
+        format!("{value}")
+    } else {
+        // Four significant digits, trailing zeros dropped: 7.071e-6, 1e308.
+        let text = format!("{value:.3e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exponent}")
+    }
 }
 
 #[cfg(test)]
@@ -121,3 +136,4 @@ mod tests {
         );
     }
 }
+

@@ -47,7 +47,12 @@ where
     /// Queues the forward edges out of `v` (except back to `exclude` and known-invalid ones):
     /// its cached neighbours plus its tree neighbours.
     pub(crate) fn expand_forward(&mut self, v: u32, exclude: u32, stop: &dyn Stop) {
-        let len = self.graph.neighbours(v, &self.space, &self.heuristic, stop);
+        let Some(len) = self.graph.neighbours(v, &self.space, &self.heuristic, stop) else {
+            // The termination condition fired during the neighbour query: the expansion waits
+            // for the next iteration.
+            self.deferred.push((v, exclude, true));
+            return;
+        };
         let tag = self.graph.tag;
         self.graph.vertex_mut(v).forward_expanded = tag;
         for i in 0..len {

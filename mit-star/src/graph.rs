@@ -11,6 +11,7 @@ use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 
 use crate::Neighbours;
 use crate::edge_hasher::{BuildEdgeHasher, edge_key};
+use crate::kd_tree::Alive;
 use crate::vertex::{NONE, Vertex};
 
 use crate::{NearestNeighbors, VertexId, VertexKind};
@@ -86,6 +87,9 @@ pub struct RandomGeometricGraph {
     pub(crate) log: Vec<(u32, u32)>,
     pub(crate) neighbourhood: Neighbourhood,
     pub(crate) found: Neighbours,
+    /// Scratch for a fresh neighbour list (kept apart from the cached one until the query
+    /// completes).
+    pub(crate) scratch_list: Vec<Neighbour>,
     pub(crate) linear_queries: u64,
 }
 
@@ -106,6 +110,7 @@ impl RandomGeometricGraph {
             log: Vec::new(),
             neighbourhood: Neighbourhood::Nearest(1),
             found: Neighbours::new(),
+            scratch_list: Vec::new(),
             linear_queries: 0,
         }
     }
@@ -139,6 +144,14 @@ impl RandomGeometricGraph {
         self.log
             .extend(ids.iter().map(|&id| (id, births[id as usize])));
         self.new_batch();
+    }
+
+    /// Builds the committed samples waiting in the nearest-neighbour buffer into trees if the
+    /// buffer is large, unless `stop` fires (then they stay in the exact linear buffer).
+    pub(crate) fn index_pending(&mut self, stop: &dyn spaces::Stop) {
+        if self.euclidean {
+            self.nn.maintain(Alive::Current(&self.births), stop);
+        }
     }
 
     /// Starts a new batch: cached lists must be brought up to date before use.

@@ -155,15 +155,22 @@ impl KdTree {
     }
 
     /// Adds this tree's points to a k-nearest query already in progress in `found` (so several
-    /// trees can share one query). Use [`nearest`](Self::nearest) for a fresh query.
-    pub(crate) fn nearest_into(&self, query: &[f64], found: &mut Neighbours, alive: Alive<'_>) {
+    /// trees can share one query). Use [`nearest`](Self::nearest) for a fresh query. Stops early,
+    /// leaving `poll.stopped` set and `found` incomplete, if `poll`'s condition fires.
+    pub(crate) fn nearest_into(
+        &self,
+        query: &[f64],
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+        poll: &mut Poll<'_>,
+    ) {
         if self.is_empty() || found.k == 0 {
             return;
         }
         let mut offsets = std::mem::take(&mut found.offsets);
         let bound = self.box_distance(query, &mut offsets);
         if bound <= found.worst() {
-            self.search_nearest(0, query, bound, &mut offsets, found, alive);
+            self.search_nearest(0, query, bound, &mut offsets, found, (alive, poll));
         }
         found.offsets = offsets;
     }
@@ -171,7 +178,7 @@ impl KdTree {
     /// The `k` points nearest to `query` (Euclidean), written to `found` nearest first.
     pub fn nearest(&self, query: &[f64], k: usize, found: &mut Neighbours) {
         found.reset(k);
-        self.nearest_into(query, found, Alive::All);
+        self.nearest_into(query, found, Alive::All, &mut Poll::new(&spaces::Never));
     }
 
     fn search_nearest(
@@ -181,10 +188,13 @@ impl KdTree {
         bound: f64,
         offsets: &mut [f64],
         found: &mut Neighbours,
-        alive: Alive<'_>,
+        (alive, poll): (Alive<'_>, &mut Poll<'_>),
     ) {
         let node = self.nodes[node as usize];
         if node.dim == LEAF {
+            if poll.tick(node.end - node.start) {
+                return;
+            }
             let n = self.dimension;
             let mut worst = found.worst();
             let (start, end) = (node.start as usize, node.end as usize);
@@ -209,12 +219,12 @@ impl KdTree {
         } else {
             (node.right, node.left, (q - node.low) * (q - node.low))
         };
-        self.search_nearest(near, query, bound, offsets, found, alive);
+        self.search_nearest(near, query, bound, offsets, found, (alive, &mut *poll));
         let saved = offsets[dim];
         let far_bound = bound + cut - saved;
-        if far_bound <= found.worst() {
+        if far_bound <= found.worst() && !poll.stopped {
             offsets[dim] = cut;
-            self.search_nearest(far, query, far_bound, offsets, found, alive);
+            self.search_nearest(far, query, far_bound, offsets, found, (alive, poll));
             offsets[dim] = saved;
         }
     }
@@ -226,6 +236,7 @@ impl KdTree {
         radius2: f64,
         found: &mut Neighbours,
         alive: Alive<'_>,
+        poll: &mut Poll<'_>,
     ) {
         if self.is_empty() {
             return;
@@ -233,7 +244,7 @@ impl KdTree {
         let mut offsets = std::mem::take(&mut found.offsets);
         let bound = self.box_distance(query, &mut offsets);
         if bound <= radius2 {
-            self.search_within(0, query, bound, radius2, &mut offsets, found, alive);
+            self.search_within(0, query, bound, radius2, &mut offsets, found, (alive, poll));
         }
         found.offsets = offsets;
     }
@@ -241,7 +252,13 @@ impl KdTree {
     /// Every point within distance `radius` of `query`, written to `found` nearest first.
     pub fn within(&self, query: &[f64], radius: f64, found: &mut Neighbours) {
         found.reset(usize::MAX);
-        self.within_into(query, radius * radius, found, Alive::All);
+        self.within_into(
+            query,
+            radius * radius,
+            found,
+            Alive::All,
+            &mut Poll::new(&spaces::Never),
+        );
         found.sort();
     }
 
@@ -254,10 +271,13 @@ impl KdTree {
         radius2: f64,
         offsets: &mut [f64],
         found: &mut Neighbours,
-        alive: Alive<'_>,
+        (alive, poll): (Alive<'_>, &mut Poll<'_>),
     ) {
         let node = self.nodes[node as usize];
         if node.dim == LEAF {
+            if poll.tick(node.end - node.start) {
+                return;
+            }
             let n = self.dimension;
             for p in node.start as usize..node.end as usize {
                 let d = squared_distance(query, &self.coordinates[p * n..(p + 1) * n]);
@@ -274,14 +294,68 @@ impl KdTree {
         } else {
             (node.right, node.left, (q - node.low) * (q - node.low))
         };
-        self.search_within(near, query, bound, radius2, offsets, found, alive);
+        self.search_within(
+            near,
+            query,
+            bound,
+            radius2,
+            offsets,
+            found,
+            (alive, &mut *poll),
+        );
         let saved = offsets[dim];
         let far_bound = bound + cut - saved;
-        if far_bound <= radius2 {
+        if far_bound <= radius2 && !poll.stopped {
             offsets[dim] = cut;
-            self.search_within(far, query, far_bound, radius2, offsets, found, alive);
+            self.search_within(
+                far,
+                query,
+                far_bound,
+                radius2,
+                offsets,
+                found,
+                (alive, poll),
+            );
             offsets[dim] = saved;
         }
+    }
+}
+
+/// Points a query examines between two polls of its stop condition.
+const QUERY_POLL: u32 = 8192;
+
+/// The stop condition of a query and the work since it was last polled. A query over hundreds
+/// of thousands of points in high dimension (where trees prune little) takes milliseconds, so
+/// the planner's queries can be abandoned — and the expansion that asked retried later.
+pub(crate) struct Poll<'a> {
+    stop: &'a dyn spaces::Stop,
+    work: u32,
+    /// Set once the condition fired: the query's answer is incomplete.
+    pub(crate) stopped: bool,
+}
+
+impl<'a> Poll<'a> {
+    /// A fresh poll of `stop`.
+    pub(crate) fn new(stop: &'a dyn spaces::Stop) -> Self {
+        Self {
+            stop,
+            work: 0,
+            stopped: false,
+        }
+    }
+
+    /// Counts `points` of work; `true` if the query must stop (now or before).
+    #[inline]
+    pub(crate) fn tick(&mut self, points: u32) -> bool {
+        if self.stopped {
+            return true;
+        }
+        self.work += points;
+        if self.work >= QUERY_POLL {
+            self.work = 0;
+            self.stopped = self.stop.should_stop();
+        }
+        self.stopped
     }
 }
 

@@ -28,12 +28,24 @@ struct Scratch {
 
 impl KdTree {
     /// Builds a tree from ids, birth stamps and coordinates (row after row); `None` if `stop`
-    /// fired first (it is polled every few thousand points of work).
+    /// fired first (it is polled every few thousand points of work, copying included).
     pub(crate) fn from_parts(
         dimension: usize,
         ids: &[u32],
         births: &[u32],
         coordinates: &[f64],
+        stop: &dyn Stop,
+    ) -> Option<Self> {
+        let coordinates = polled_concat(&[coordinates], stop)?;
+        Self::from_owned(dimension, ids.to_vec(), births.to_vec(), coordinates, stop)
+    }
+
+    /// [`from_parts`](Self::from_parts) taking the arrays it partitions in place.
+    pub(crate) fn from_owned(
+        dimension: usize,
+        ids: Vec<u32>,
+        births: Vec<u32>,
+        coordinates: Vec<f64>,
         stop: &dyn Stop,
     ) -> Option<Self> {
         let count = ids.len();
@@ -43,14 +55,19 @@ impl KdTree {
         }
         // The tree's own arrays, partitioned in place level by level: every pass over a cell is
         // sequential, and the points end in leaf order with no final gather.
-        tree.ids = ids.to_vec();
-        tree.births = births.to_vec();
-        tree.coordinates = coordinates.to_vec();
+        tree.ids = ids;
+        tree.births = births;
+        tree.coordinates = coordinates;
         tree.nodes.reserve(2 * count / BUCKET + 1);
-        for row in tree.coordinates.chunks_exact(dimension) {
-            for (d, &x) in row.iter().enumerate() {
-                tree.lower[d] = tree.lower[d].min(x);
-                tree.upper[d] = tree.upper[d].max(x);
+        for chunk in tree.coordinates.chunks(POLL_WORK * dimension) {
+            for row in chunk.chunks_exact(dimension) {
+                for (d, &x) in row.iter().enumerate() {
+                    tree.lower[d] = tree.lower[d].min(x);
+                    tree.upper[d] = tree.upper[d].max(x);
+                }
+            }
+            if stop.should_stop() {
+                return None;
             }
         }
         let (mut lo, mut hi) = (tree.lower.clone(), tree.upper.clone());
@@ -193,4 +210,21 @@ impl KdTree {
         node.right = r;
         Some(index)
     }
+}
+
+/// The concatenation of `parts`, copied a slice of [`POLL_WORK`] values at a time with `stop`
+/// polled in between (`None` if it fired): copying millions of coordinates takes tens of
+/// milliseconds, page faults included.
+pub(crate) fn polled_concat(parts: &[&[f64]], stop: &dyn Stop) -> Option<Vec<f64>> {
+    let total = parts.iter().map(|p| p.len()).sum();
+    let mut out = Vec::with_capacity(total);
+    for part in parts {
+        for chunk in part.chunks(POLL_WORK * 8) {
+            out.extend_from_slice(chunk);
+            if stop.should_stop() {
+                return None;
+            }
+        }
+    }
+    Some(out)
 }

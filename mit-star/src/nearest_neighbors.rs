@@ -4,11 +4,18 @@
 use spaces::{Never, Stop};
 
 use crate::Neighbours;
-use crate::kd_tree::{Alive, KdTree, squared_distance};
+use crate::kd_tree::{Alive, KdTree, Poll, squared_distance};
+use crate::kd_tree_build::polled_concat;
 
 /// Points that may wait in the linear buffer before a query builds them into a tree (the
 /// buffer may also hold up to a quarter of the points already in trees).
 const PENDING_LIMIT: usize = 256;
+
+/// Buffered points scanned between two polls of a query's stop condition.
+const PENDING_POLL: usize = 4096;
+
+/// Points gathered between two polls of the stop condition when rebuilding.
+const POLL_POINTS: usize = 4096;
 
 /// A set of points, growing in batches, with exact Euclidean k-nearest and radius queries.
 ///
@@ -116,8 +123,18 @@ impl NearestNeighbors {
     /// Keeps the structure efficient: rebuilds without dead points once they outnumber live
     /// ones, and builds the buffer into trees once it is large. Either is skipped if `stop`
     /// fires during the build.
-    fn maintain(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
-        if self.dead > 0 && 2 * self.dead > self.stored {
+    ///
+    /// A build first copies the points it indexes, so once `stop` has fired no build is even
+    /// started: every query after a deadline would otherwise copy the whole set again only to
+    /// abandon the build at its first poll.
+    pub(crate) fn maintain(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
+        let rebuild = self.dead > 0 && 2 * self.dead > self.stored;
+        let in_trees = self.stored - self.pending_ids.len();
+        let flush = self.pending_ids.len() > PENDING_LIMIT.max(in_trees / 4);
+        if !(rebuild || flush) || stop.should_stop() {
+            return;
+        }
+        if rebuild {
             self.rebuild_alive(alive, stop);
         }
         let in_trees = self.stored - self.pending_ids.len();
@@ -141,6 +158,9 @@ impl NearestNeighbors {
             let (i, b, x) = tree.parts();
             for j in 0..i.len() {
                 keep(i[j], b[j], &x[j * n..(j + 1) * n]);
+                if j % POLL_POINTS == POLL_POINTS - 1 && stop.should_stop() {
+                    return;
+                }
             }
         }
         for j in 0..self.pending_ids.len() {
@@ -149,9 +169,12 @@ impl NearestNeighbors {
                 self.pending_births[j],
                 &self.pending[j * n..(j + 1) * n],
             );
+            if j % POLL_POINTS == POLL_POINTS - 1 && stop.should_stop() {
+                return;
+            }
         }
         let live = ids.len();
-        if let Some(tree) = KdTree::from_parts(n, &ids, &births, &xs, stop) {
+        if let Some(tree) = KdTree::from_owned(n, ids, births, xs, stop) {
             self.trees = vec![tree];
             self.pending_ids.clear();
             self.pending_births.clear();
@@ -213,7 +236,7 @@ impl NearestNeighbors {
         self.within_alive(query, radius, found, Alive::All, &Never);
     }
 
-    /// The `k` nearest live points.
+    /// The `k` nearest live points; `false` (and `found` incomplete) if `stop` fired first.
     pub(crate) fn nearest_alive(
         &mut self,
         query: &[f64],
@@ -221,24 +244,38 @@ impl NearestNeighbors {
         found: &mut Neighbours,
         alive: Alive<'_>,
         stop: &dyn Stop,
-    ) {
+    ) -> bool {
         self.queries += 1;
         self.maintain(alive, stop);
         found.reset(k);
+        let mut poll = Poll::new(stop);
         // Largest tree first: it holds most of the neighbours, so the bound tightens early.
         for tree in &self.trees {
-            tree.nearest_into(query, found, alive);
+            tree.nearest_into(query, found, alive, &mut poll);
         }
         let n = self.dimension;
-        for (i, &id) in self.pending_ids.iter().enumerate() {
-            let d = squared_distance(query, &self.pending[i * n..(i + 1) * n]);
-            if d <= found.worst() && alive.contains(id, self.pending_births[i]) {
-                found.offer(d, id);
+        for (c, (chunk, ids)) in self
+            .pending
+            .chunks(PENDING_POLL * n)
+            .zip(self.pending_ids.chunks(PENDING_POLL))
+            .enumerate()
+        {
+            if poll.tick(ids.len() as u32) {
+                return false;
+            }
+            for (i, (&id, x)) in ids.iter().zip(chunk.chunks_exact(n)).enumerate() {
+                let d = squared_distance(query, x);
+                if d <= found.worst()
+                    && alive.contains(id, self.pending_births[c * PENDING_POLL + i])
+                {
+                    found.offer(d, id);
+                }
             }
         }
+        !poll.stopped
     }
 
-    /// Every live point within `radius`.
+    /// Every live point within `radius`; `false` (and `found` incomplete) if `stop` fired first.
     pub(crate) fn within_alive(
         &mut self,
         query: &[f64],
@@ -246,22 +283,34 @@ impl NearestNeighbors {
         found: &mut Neighbours,
         alive: Alive<'_>,
         stop: &dyn Stop,
-    ) {
+    ) -> bool {
         self.queries += 1;
         self.maintain(alive, stop);
         found.reset(usize::MAX);
         let radius2 = radius * radius;
+        let mut poll = Poll::new(stop);
         for tree in &self.trees {
-            tree.within_into(query, radius2, found, alive);
+            tree.within_into(query, radius2, found, alive, &mut poll);
         }
         let n = self.dimension;
-        for (i, &id) in self.pending_ids.iter().enumerate() {
-            let d = squared_distance(query, &self.pending[i * n..(i + 1) * n]);
-            if d <= radius2 && alive.contains(id, self.pending_births[i]) {
-                found.push_unordered(d, id);
+        for (c, (chunk, ids)) in self
+            .pending
+            .chunks(PENDING_POLL * n)
+            .zip(self.pending_ids.chunks(PENDING_POLL))
+            .enumerate()
+        {
+            if poll.tick(ids.len() as u32) {
+                return false;
+            }
+            for (i, (&id, x)) in ids.iter().zip(chunk.chunks_exact(n)).enumerate() {
+                let d = squared_distance(query, x);
+                if d <= radius2 && alive.contains(id, self.pending_births[c * PENDING_POLL + i]) {
+                    found.push_unordered(d, id);
+                }
             }
         }
         found.sort();
+        !poll.stopped
     }
 }
 
@@ -269,11 +318,12 @@ impl NearestNeighbors {
 fn merge(dimension: usize, a: &KdTree, b: &KdTree, stop: &dyn Stop) -> Option<KdTree> {
     let (ids_a, births_a, xs_a) = a.parts();
     let (ids_b, births_b, xs_b) = b.parts();
-    KdTree::from_parts(
+    let coordinates = polled_concat(&[xs_a, xs_b], stop)?;
+    KdTree::from_owned(
         dimension,
-        &[ids_a, ids_b].concat(),
-        &[births_a, births_b].concat(),
-        &[xs_a, xs_b].concat(),
+        [ids_a, ids_b].concat(),
+        [births_a, births_b].concat(),
+        coordinates,
         stop,
     )
 }
@@ -374,6 +424,39 @@ mod tests {
         assert_eq!(found.iter().copied().collect::<Vec<_>>(), expected[..5]);
         nn.nearest(&[0.1, 0.2, 0.3], 5, &mut found);
         assert_eq!(nn.tree_count(), 1, "built once nothing stops it");
+        assert_eq!(found.iter().copied().collect::<Vec<_>>(), expected[..5]);
+    }
+
+    #[test]
+    fn a_stopped_query_says_it_is_incomplete() {
+        let n = 4;
+        let mut rng = SeededRng::seed_from_u64(6);
+        let points: Vec<f64> = (0..40_000 * n)
+            .map(|_| rng.random_range(-1.0..1.0))
+            .collect();
+        let mut nn = NearestNeighbors::new(n);
+        nn.insert(
+            points
+                .chunks_exact(n)
+                .enumerate()
+                .map(|(i, p)| (i as u32, p)),
+        );
+        let always = || true;
+        let mut found = Neighbours::new();
+        let query = [0.1, 0.2, 0.3, 0.4];
+        assert!(!nn.nearest_alive(&query, 5, &mut found, Alive::All, &always));
+        assert!(!nn.within_alive(&query, 0.3, &mut found, Alive::All, &always));
+        assert_eq!(
+            nn.tree_count(),
+            0,
+            "no build starts once the condition fired"
+        );
+        // Trees answer in polled pieces too.
+        nn.nearest(&query, 5, &mut found);
+        assert!(nn.tree_count() > 0);
+        assert!(!nn.nearest_alive(&query, 40_000, &mut found, Alive::All, &always));
+        assert!(nn.nearest_alive(&query, 5, &mut found, Alive::All, &Never));
+        let expected = brute(&points, n, &query, |_| true);
         assert_eq!(found.iter().copied().collect::<Vec<_>>(), expected[..5]);
     }
 }

@@ -6,7 +6,7 @@ use spaces::{StateSpace, Stop};
 
 use crate::Neighbours;
 use crate::graph::{DEAD, Neighbour, Neighbourhood, RandomGeometricGraph};
-use crate::kd_tree::Alive;
+use crate::kd_tree::{Alive, Poll};
 
 /// Extra nearest neighbours kept beyond `k`, so a list survives a few increments of `k` and a
 /// few pruned neighbours.
@@ -19,21 +19,22 @@ const MERGE_LIMIT: usize = 400;
 impl RandomGeometricGraph {
     /// The number of neighbours of `v` in this batch — entries `0..len` of its list, nearest
     /// first ([`neighbour`](Self::neighbour)) — computing or updating the cached list as needed.
-    /// `stop` may interrupt tree building (never the answer).
+    /// `None` if `stop` fired during a fresh query: then nothing changed (the cached list and
+    /// its bookkeeping are as before), and the caller retries later.
     pub(crate) fn neighbours<S, H>(
         &mut self,
         v: u32,
         space: &S,
         heuristic: &H,
         stop: &dyn Stop,
-    ) -> usize
+    ) -> Option<usize>
     where
         S: StateSpace + ?Sized,
         H: Heuristic<S> + ?Sized,
     {
         let x = self.vertex(v);
         if x.neighbours_tag == self.tag {
-            return x.neighbours_len as usize;
+            return Some(x.neighbours_len as usize);
         }
         let (had_list, from, wanted, radius) = (
             x.neighbours_tag != 0,
@@ -57,8 +58,22 @@ impl RandomGeometricGraph {
         let wanted = if reusable {
             self.merge_added(v, from, wanted, space, heuristic, &mut list)
         } else {
-            list.clear();
-            self.query(v, space, heuristic, stop, &mut list)
+            let mut fresh = std::mem::take(&mut self.scratch_list);
+            fresh.clear();
+            match self.query(v, space, heuristic, stop, &mut fresh) {
+                Some(wanted) => {
+                    self.scratch_list = std::mem::replace(&mut list, fresh);
+                    wanted
+                }
+                None => {
+                    // Interrupted: the old list and its bookkeeping stay as they were (the
+                    // pruned entries dropped above are recomputed on the retry).
+                    self.scratch_list = fresh;
+                    self.lists[v as usize] = list;
+                    self.vertex_mut(v).neighbours_tag = 0;
+                    return None;
+                }
+            }
         };
         let used = match self.neighbourhood {
             Neighbourhood::Nearest(k) => k.min(list.len()),
@@ -76,7 +91,7 @@ impl RandomGeometricGraph {
         x.neighbours_wanted = wanted as u32;
         x.neighbours_radius = radius;
         x.neighbours_log = log;
-        used
+        Some(used)
     }
 
     /// A fresh list for `v` in `out`; returns how many nearest neighbours it holds exactly
@@ -88,7 +103,7 @@ impl RandomGeometricGraph {
         heuristic: &H,
         stop: &dyn Stop,
         out: &mut Vec<Neighbour>,
-    ) -> usize
+    ) -> Option<usize>
     where
         S: StateSpace + ?Sized,
         H: Heuristic<S> + ?Sized,
@@ -100,17 +115,21 @@ impl RandomGeometricGraph {
         };
         let query = &self.states[v as usize];
         let alive = Alive::Current(&self.births);
-        if self.euclidean {
+        let complete = if self.euclidean {
             match self.neighbourhood {
                 // One more: the vertex itself is in the set.
                 Neighbourhood::Nearest(_) => {
                     self.nn
-                        .nearest_alive(query, wanted + 1, &mut found, alive, stop);
+                        .nearest_alive(query, wanted + 1, &mut found, alive, stop)
                 }
                 Neighbourhood::Radius(r) => self.nn.within_alive(query, r, &mut found, alive, stop),
             }
         } else {
-            self.linear_query(v, space, wanted, &mut found);
+            self.linear_query(v, space, wanted, &mut found, stop)
+        };
+        if !complete {
+            self.found = found;
+            return None;
         }
         for &(_, w) in found.iter() {
             if w != v {
@@ -121,7 +140,7 @@ impl RandomGeometricGraph {
             out.truncate(wanted);
         }
         self.found = found;
-        wanted
+        Some(wanted)
     }
 
     /// Merges into `list` (the surviving old neighbours of `v`, exact for the `wanted` nearest)
@@ -200,14 +219,19 @@ impl RandomGeometricGraph {
         space: &S,
         wanted: usize,
         found: &mut Neighbours,
-    ) {
+        stop: &dyn Stop,
+    ) -> bool {
         self.linear_queries += 1;
+        let mut poll = Poll::new(stop);
         let query = &self.states[v as usize];
         match self.neighbourhood {
             Neighbourhood::Nearest(_) => found.reset(wanted + 1),
             Neighbourhood::Radius(_) => found.reset(usize::MAX),
         }
         for node in self.graph.node_indices() {
+            if poll.tick(1) {
+                return false;
+            }
             let id = node.index();
             debug_assert_ne!(self.births[id], DEAD);
             let d = space.distance(query, &self.states[id]);
@@ -227,6 +251,7 @@ impl RandomGeometricGraph {
         if let Neighbourhood::Radius(_) = self.neighbourhood {
             found.sort();
         }
+        true
     }
 }
 
@@ -285,7 +310,7 @@ mod tests {
                     if g.graph
                         .contains_node(petgraph::graph::NodeIndex::new(v as usize))
                     {
-                        let len = g.neighbours(v, &space, &Euclidean, &Never);
+                        let len = g.neighbours(v, &space, &Euclidean, &Never).unwrap();
                         let got: Vec<u32> = (0..len).map(|i| g.neighbour(v, i).id).collect();
                         assert_eq!(got, brute(&g, v, rule), "n={n} batch={batch} v={v}");
                     }

@@ -126,7 +126,13 @@ impl Parameters {
             });
         }
         positive("rewire_factor", self.rewire_factor)?;
-        positive("resolution", self.resolution)?;
+        if !(self.resolution > 0.0 && self.resolution < 1.0) {
+            return Err(BuildError::Parameter {
+                name: "resolution",
+                value: self.resolution,
+                requirement: "it must lie strictly between 0 and 1 (a fraction of the maximum extent)",
+            });
+        }
         positive("gaussian_std_fraction", self.gaussian_std_fraction)?;
         positive("sparse_initial_steps", self.sparse_initial_steps)?;
         positive("sparse_min_steps", self.sparse_min_steps)?;

@@ -53,6 +53,9 @@ where
     pub(crate) fn restart_reverse(&mut self, stop: &dyn Stop) {
         self.reverse_tag = self.reverse_tag.wrapping_add(1).max(1);
         self.reverse.clear();
+        // A deferred reverse expansion belongs to the search being discarded (its queue entries
+        // would have been cleared just now).
+        self.deferred.retain(|&(_, _, forward)| forward);
         let tag = self.reverse_tag;
         for i in 0..self.goal_ids.len() {
             let goal = self.graph.vertex_mut(self.goal_ids[i]);
@@ -81,6 +84,12 @@ where
     /// Queues the reverse edges out of `v` (except to `exclude`) that could improve their
     /// target and, once a solution exists, could lead to a better one.
     pub(crate) fn expand_reverse(&mut self, v: u32, exclude: u32, stop: &dyn Stop) {
+        let Some(len) = self.graph.neighbours(v, &self.space, &self.heuristic, stop) else {
+            // The termination condition fired during the neighbour query: the expansion waits
+            // for the next iteration.
+            self.deferred.push((v, exclude, false));
+            return;
+        };
         let tag = self.reverse_tag;
         let version = {
             let x = self.graph.vertex_mut(v);
@@ -88,7 +97,6 @@ where
             x.reverse_version
         };
         let (h, effort) = (self.graph.vertex(v).h, self.graph.vertex(v).effort);
-        let len = self.graph.neighbours(v, &self.space, &self.heuristic, stop);
         let mut pushed = 0;
         for i in 0..len {
             let n = self.graph.neighbour(v, i);

@@ -8,8 +8,9 @@ use std::time::{Duration, Instant};
 
 use common::{assert_solution_sound, assert_trace_monotone};
 use mit_star::{
-    BuildError, CostThreshold, Counters, EitStar, Endpoint, FirstSolution, IterationLimit, MitStar,
-    MitStarSc, Observer, Outcome, Planner, PlannerError, SolutionEvent, TerminationExt, TimeLimit,
+    BuildError, Configuration, CostThreshold, Counters, EitStar, Endpoint, FirstSolution,
+    IterationLimit, MitStar, MitStarSc, Observer, Outcome, Parameters, Planner, PlannerError,
+    SolutionEvent, TerminationExt, TimeLimit, build_planner,
 };
 use problems::{DividingWalls, GoalEnclosure, Problem};
 use spaces::{RealVectorSpace, SpaceError};
@@ -107,6 +108,62 @@ fn the_deadline_is_honoured() {
         assert!(
             elapsed < budget + Duration::from_millis(50),
             "budget {budget:?}, took {elapsed:?}"
+        );
+    }
+}
+
+#[test]
+fn every_configuration_returns_near_its_deadline_at_any_size() {
+    // A small stress matrix (the full one is `examples/deadline_stress.rs`): huge batches,
+    // high dimension, construction on the run's clock. The margin is generous for shared
+    // machines; the example reports the exact overshoot.
+    for dimension in [2, 16, 32] {
+        let problem = GoalEnclosure::new(dimension).build().unwrap();
+        for configuration in Configuration::ALL {
+            for batch_size in [1, 10_000, 1_000_000] {
+                let parameters = Parameters {
+                    batch_size,
+                    ..Parameters::default()
+                };
+                let started = Instant::now();
+                let budget = Duration::from_millis(40);
+                let mut planner = build_planner(configuration, &problem, &parameters).unwrap();
+                planner.solve(&TimeLimit::until(started + budget)).unwrap();
+                let elapsed = started.elapsed();
+                assert!(
+                    elapsed < budget + Duration::from_millis(40),
+                    "{} R^{dimension} batch {batch_size}: took {elapsed:?}",
+                    configuration.name()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn interrupted_solves_resume_into_valid_solutions() {
+    // Many tiny budgets interrupt queries, expansions and batch restarts mid-way; what was
+    // deferred must be finished later, and the solution must be as valid as ever.
+    let problem = dividing_walls_4();
+    for configuration in Configuration::ALL {
+        let mut planner = build_planner(configuration, &problem, &Parameters::default()).unwrap();
+        let mut outcome = None;
+        for _ in 0..400 {
+            let o = planner
+                .solve(&TimeLimit::new(Duration::from_micros(300)))
+                .unwrap();
+            if o.is_solved() {
+                outcome = Some(o);
+                break;
+            }
+        }
+        let outcome = outcome.expect("solved within 400 short solves");
+        let solution = outcome.solution().unwrap();
+        assert_eq!(&solution.path[0], problem.start());
+        assert!(
+            common::path_is_valid(problem.world(), &solution.path, problem.step()),
+            "{}: the resumed planner returned an invalid path",
+            configuration.name()
         );
     }
 }

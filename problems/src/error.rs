@@ -25,6 +25,25 @@ impl fmt::Display for Endpoint {
     }
 }
 
+/// A number for a message: plain for everyday magnitudes, in exponent form otherwise.
+pub(crate) fn short(value: f64) -> String {
+    let magnitude = value.abs();
+    if !value.is_finite() || magnitude == 0.0 || (1e-4..1e7).contains(&magnitude) {
+        format!("{value}")
+    } else {
+        // Four significant digits, trailing zeros dropped: 7.071e-6, 1e308.
+        let text = format!("{value:.3e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+        format!("{mantissa}e{exponent}")
+    }
+}
+
+/// An optional extent for a message.
+fn optional(value: Option<f64>) -> String {
+    value.map_or_else(|| "none".to_owned(), short)
+}
+
 /// What is wrong with a planning problem or with the parameters of a problem family.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ProblemError {
@@ -72,6 +91,39 @@ pub enum ProblemError {
     /// A problem was given no goal.
     #[error("a problem needs at least one goal")]
     NoGoals,
+    /// The collision-check resolution is outside `(0, 1)`.
+    #[error(
+        "the collision-check resolution is {value}; it must lie strictly between 0 and 1 (a fraction of the space's maximum extent)"
+    )]
+    Resolution {
+        /// The value given.
+        value: f64,
+    },
+    /// The collision-check step is larger than the thinnest obstacle or anti-obstacle, so an
+    /// edge could pass through an obstacle between two checked points, and the problem did not
+    /// allow that explicitly.
+    #[error(
+        "the collision-check step {} (resolution {} × maximum extent {}) is larger than the \
+         thinnest obstacle ({}) or anti-obstacle ({}): an edge could cross an obstacle between \
+         two checked points; use a resolution of at most {}, or allow a coarse step explicitly \
+         (`allow_coarse_step = true` in a problem file, `--allow-coarse-step` on the command line)",
+        short(*.step), short(*.resolution), short(*.extent), optional(*.obstacle),
+        optional(*.anti_obstacle), short(*.largest_resolution)
+    )]
+    StepTooCoarse {
+        /// The step `L = resolution × extent`.
+        step: f64,
+        /// The resolution.
+        resolution: f64,
+        /// The space's maximum extent.
+        extent: f64,
+        /// The smallest side of any obstacle (`None` without obstacles).
+        obstacle: Option<f64>,
+        /// The smallest side of any anti-obstacle (`None` without anti-obstacles).
+        anti_obstacle: Option<f64>,
+        /// The largest resolution whose step is not above either.
+        largest_resolution: f64,
+    },
     /// A claimed optimal cost is not finite or is below the straight-line distance to the
     /// nearest goal, which no path can beat.
     #[error(

@@ -43,6 +43,7 @@ pub struct Problem {
     resolution: f64,
     step: f64,
     optimum: Option<f64>,
+    coarse_step_allowed: bool,
 }
 
 impl Problem {
@@ -76,6 +77,7 @@ impl Problem {
             resolution,
             step,
             optimum: None,
+            coarse_step_allowed: false,
         };
         problem.validate()?;
         Ok(problem)
@@ -83,12 +85,100 @@ impl Problem {
 
     /// Sets the collision-check resolution, a fraction of the space's maximum extent.
     ///
+    /// Whether the step it gives is fine enough for the world's thinnest obstacle is checked
+    /// by [`check_step`](Self::check_step), which planners call before planning.
+    ///
     /// # Errors
-    /// [`ProblemError::Validity`] if `resolution` is not finite and positive.
+    /// [`ProblemError::Resolution`] unless `0 < resolution < 1`.
     pub fn with_resolution(mut self, resolution: f64) -> Result<Self, ProblemError> {
+        if !(resolution > 0.0 && resolution < 1.0) {
+            return Err(ProblemError::Resolution { value: resolution });
+        }
         self.step = validity::step_from_resolution(&self.space, resolution)?;
         self.resolution = resolution;
         Ok(self)
+    }
+
+    /// Allows (or forbids again) a collision-check step larger than the thinnest obstacle or
+    /// anti-obstacle. With it allowed, edges can cross thin obstacles between two checked
+    /// points: returned paths must then be validated exactly (the experiment harness does).
+    pub fn allowing_coarse_step(mut self, allow: bool) -> Self {
+        self.coarse_step_allowed = allow;
+        self
+    }
+
+    /// `true` if a step coarser than the thinnest obstacle was allowed explicitly.
+    pub fn coarse_step_allowed(&self) -> bool {
+        self.coarse_step_allowed
+    }
+
+    /// The smallest side of any obstacle and of any anti-obstacle of the world.
+    pub fn thinnest_extents(&self) -> (Option<f64>, Option<f64>) {
+        let thinnest = |boxes: &[validity::AxisBox], cubes: Option<f64>| {
+            boxes
+                .iter()
+                .flat_map(|b| b.widths.iter().copied())
+                .chain(cubes)
+                .reduce(f64::min)
+        };
+        let cubes = self
+            .world
+            .lattices()
+            .iter()
+            .filter(|l| l.count > 0)
+            .map(|l| l.side)
+            .reduce(f64::min);
+        (
+            thinnest(self.world.obstacles(), cubes),
+            thinnest(self.world.anti_obstacles(), None),
+        )
+    }
+
+    /// `true` if the step is larger than the thinnest obstacle or anti-obstacle.
+    pub fn step_is_coarse(&self) -> bool {
+        let (obstacle, anti) = self.thinnest_extents();
+        [obstacle, anti]
+            .into_iter()
+            .flatten()
+            .any(|thinnest| self.step > thinnest)
+    }
+
+    /// Checks that the collision-check step is not larger than the world's thinnest obstacle
+    /// or anti-obstacle, unless a coarse step was [allowed](Self::allowing_coarse_step).
+    ///
+    /// ```
+    /// use problems::Problem;
+    /// let text = "name = 'thin'\nstart = [-0.3, 0.0]\ngoal = [0.3, 0.0]\n\
+    ///             [bounds]\nlower = [-0.5, -0.5]\nupper = [0.5, 0.5]\n\
+    ///             [[obstacles]]\ncenter = [0.0, 0.0]\nwidths = [1e-6, 1.0]\n";
+    /// let problem = Problem::from_toml_str(text)?;
+    /// let err = problem.check_step().unwrap_err().to_string();
+    /// assert!(err.contains("step 7.071e-6") && err.contains("thinnest obstacle (1e-6)"), "{err}");
+    /// assert!(problem.clone().with_resolution(5e-7)?.check_step().is_ok());
+    /// assert!(problem.allowing_coarse_step(true).check_step().is_ok());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`ProblemError::StepTooCoarse`] naming the step and both extents.
+    pub fn check_step(&self) -> Result<(), ProblemError> {
+        if self.coarse_step_allowed || !self.step_is_coarse() {
+            return Ok(());
+        }
+        let (obstacle, anti_obstacle) = self.thinnest_extents();
+        let extent = self.space.maximum_extent();
+        let thinnest = [obstacle, anti_obstacle]
+            .into_iter()
+            .flatten()
+            .fold(f64::INFINITY, f64::min);
+        Err(ProblemError::StepTooCoarse {
+            step: self.step,
+            resolution: self.resolution,
+            extent,
+            obstacle,
+            anti_obstacle,
+            largest_resolution: thinnest / extent,
+        })
     }
 
     /// Records the optimal cost (or forgets it, with `None`). Only give a value that is known
@@ -205,7 +295,7 @@ impl Problem {
 mod tests {
     use super::*;
     use spaces::SpaceError;
-    use validity::{AxisBox, ValidityError};
+    use validity::AxisBox;
 
     fn wall_world() -> World {
         World::new(vec![-0.5; 2], vec![0.5; 2])
@@ -234,12 +324,35 @@ mod tests {
     fn step_scales_with_resolution_and_extent() {
         let p = wall().with_resolution(1e-3).unwrap();
         assert!((p.step() - 1e-3 * 2f64.sqrt()).abs() < 1e-15);
-        let err = wall().with_resolution(0.0).unwrap_err();
-        assert!(matches!(
-            err,
-            ProblemError::Validity(ValidityError::NotPositive { .. })
-        ));
-        assert!(wall().with_resolution(f64::NAN).is_err());
+        for bad in [0.0, -0.0, 1.0, 1e300, -1e-9, f64::NAN, f64::INFINITY] {
+            let err = wall().with_resolution(bad).unwrap_err();
+            assert!(matches!(err, ProblemError::Resolution { .. }), "{bad}");
+            assert!(
+                err.to_string().contains("strictly between 0 and 1"),
+                "{err}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_step_coarser_than_the_thinnest_obstacle_is_refused_unless_allowed() {
+        let world = World::new(vec![-0.5; 2], vec![0.5; 2])
+            .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![1e-6, 1.0]))
+            .unwrap()
+            .with_anti_obstacle(AxisBox::new(vec![0.0, 0.3], vec![0.2, 2e-6]))
+            .unwrap();
+        let p = Problem::new("thin", world, vec![-0.3, 0.0], vec![vec![0.3, 0.0]]).unwrap();
+        assert_eq!(p.thinnest_extents(), (Some(1e-6), Some(2e-6)));
+        let err = p.check_step().unwrap_err().to_string();
+        assert!(err.contains("thinnest obstacle (1e-6)"), "{err}");
+        assert!(err.contains("anti-obstacle (2e-6)"), "{err}");
+        assert!(err.contains("--allow-coarse-step"), "{err}");
+        let fine = p.clone().with_resolution(5e-7).unwrap();
+        assert!(fine.check_step().is_ok() && !fine.step_is_coarse());
+        let allowed = p.allowing_coarse_step(true);
+        assert!(allowed.check_step().is_ok() && allowed.step_is_coarse());
+        let round_trip = Problem::from_toml_str(&allowed.to_toml_string()).unwrap();
+        assert!(round_trip.coarse_step_allowed());
     }
 
     #[test]

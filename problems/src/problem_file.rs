@@ -7,6 +7,7 @@
 //! |---|---|---|
 //! | `name` | yes | the problem's name |
 //! | `resolution` | no (5e-6) | collision-check resolution, a fraction of the maximum extent |
+//! | `allow_coarse_step` | no (false) | allow a collision-check step larger than the thinnest obstacle or anti-obstacle ([`Problem::check_step`]) |
 //! | `optimum` | no | the optimal cost, only if known exactly |
 //! | `start` | yes | the start state |
 //! | `goal` / `goals` | exactly one | one goal state, or a non-empty list of them |
@@ -42,7 +43,7 @@
 //! names the field (`obstacles[2].widths has 3 values, but the bounds have 2`): TOML syntax
 //! (with line and column), missing and unknown fields, wrong types, wrong lengths, values that
 //! are not finite (TOML allows `nan` and `inf`), negative widths, empty bound intervals,
-//! `goal` and `goals` together or neither, a non-positive resolution, start or goals out of
+//! `goal` and `goals` together or neither, a resolution outside `(0, 1)`, start or goals out of
 //! bounds or in collision.
 
 use std::path::Path;
@@ -59,6 +60,8 @@ use crate::{Endpoint, Location, Problem, ProblemError, ProblemFileError};
 struct FileSpec {
     name: String,
     resolution: Option<f64>,
+    #[serde(default)]
+    allow_coarse_step: bool,
     optimum: Option<f64>,
     start: Vec<f64>,
     goal: Option<Vec<f64>>,
@@ -186,12 +189,12 @@ impl FileSpec {
     fn into_problem(self) -> Result<Problem, ProblemFileError> {
         let n = check_bounds(&self.bounds)?;
         if let Some(resolution) = self.resolution
-            && !(resolution.is_finite() && resolution > 0.0)
+            && !(resolution > 0.0 && resolution < 1.0)
         {
             return Err(bad_value(
                 "resolution",
                 resolution,
-                "it must be finite and positive",
+                "it must lie strictly between 0 and 1 (a fraction of the maximum extent)",
             ));
         }
         if let Some(optimum) = self.optimum
@@ -246,7 +249,9 @@ impl FileSpec {
             Some(resolution) => problem.with_resolution(resolution)?,
             None => problem,
         };
-        Ok(problem.with_optimum(self.optimum)?)
+        Ok(problem
+            .allowing_coarse_step(self.allow_coarse_step)
+            .with_optimum(self.optimum)?)
     }
 }
 

@@ -228,8 +228,8 @@ fn goal_and_goals() {
 }
 
 #[test]
-fn resolution_must_be_positive() {
-    for bad in ["0.0", "-1e-3", "nan"] {
+fn resolution_must_lie_between_zero_and_one() {
+    for bad in ["0.0", "-0.0", "-1e-3", "nan", "inf", "1.0", "1e300", "-inf"] {
         let err = error(&BASE.replace(
             "name = \"wall\"",
             &format!("name = \"wall\"\nresolution = {bad}"),
@@ -238,7 +238,12 @@ fn resolution_must_be_positive() {
             matches!(&err, ProblemFileError::BadValue { field, .. } if field == "resolution"),
             "{bad}: {err:?}"
         );
-        assert!(err.to_string().ends_with("it must be finite and positive"));
+        assert!(
+            err.to_string().ends_with(
+                "it must lie strictly between 0 and 1 (a fraction of the maximum extent)"
+            ),
+            "{err}"
+        );
     }
     let p = load(&BASE.replace("name = \"wall\"", "name = \"wall\"\nresolution = 1e-3")).unwrap();
     assert!((p.step() - 1e-3 * 2f64.sqrt()).abs() < 1e-15);

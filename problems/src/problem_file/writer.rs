@@ -9,6 +9,9 @@ impl Problem {
         let mut out = String::new();
         out.push_str(&format!("name = {}\n", quote(self.name())));
         out.push_str(&format!("resolution = {}\n", number(self.resolution())));
+        if self.coarse_step_allowed() {
+            out.push_str("allow_coarse_step = true\n");
+        }
         if let Some(optimum) = self.optimum() {
             out.push_str(&format!("optimum = {}\n", number(optimum)));
         }

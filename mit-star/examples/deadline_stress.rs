@@ -1,0 +1,177 @@
+//! `deadline_stress`: does every planner return on time, whatever the dimension, batch size and
+//! budget? The stress matrix of the reliability issue.
+//!
+//! ```text
+//! cargo run --release -p mit-star --example deadline_stress
+//! cargo run --release -p mit-star --example deadline_stress -- --problem dividing-walls --seeds 3
+//! ```
+//!
+//! For every configuration × dimension (2, 4, 8, 16, 32) × batch size (1, 100, 10⁴, 10⁶) ×
+//! budget (1 ms, 10 ms, 100 ms, 1 s) it takes the clock, builds the planner (construction counts
+//! against the budget, as in the harness), solves until the deadline and measures how late
+//! `solve` returned. A run is on time if it returned within `max(1 ms, 1 % of the budget)` of
+//! its deadline. Prints the worst overshoot per configuration and budget, every late run, and
+//! exits with code 1 if any run was late.
+
+use std::time::{Duration, Instant};
+
+use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
+
+/// One measured run.
+struct Run {
+    configuration: Configuration,
+    dimension: usize,
+    batch: usize,
+    budget: f64,
+    seed: u64,
+    late: f64,
+    solved: bool,
+}
+
+fn main() {
+    let mut problem = "goal-enclosure".to_owned();
+    let mut seeds = 1_u64;
+    let mut dimensions = vec![2, 4, 8, 16, 32];
+    let mut batches = vec![1_usize, 100, 10_000, 1_000_000];
+    let mut budgets = vec![0.001, 0.01, 0.1, 1.0];
+    let mut configurations = Configuration::ALL.to_vec();
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        let value = args.next().unwrap_or_default();
+        match arg.as_str() {
+            "--problem" => problem = value,
+            "--seeds" => seeds = value.parse().unwrap_or(1).max(1),
+            "--dims" => dimensions = list(&value),
+            "--batches" => batches = list(&value),
+            "--budgets" => budgets = list(&value),
+            "--planners" => {
+                configurations = value
+                    .split(',')
+                    .filter_map(|name| name.parse::<Configuration>().ok())
+                    .collect();
+            }
+            other => {
+                eprintln!(
+                    "unknown option {other}; options: --problem NAME --seeds N --dims 2,4,8 \
+                     --batches 1,100 --budgets 0.01,0.1 --planners mit-star,eit-star"
+                );
+                std::process::exit(2);
+            }
+        }
+    }
+    let mut runs = Vec::new();
+    let clock = Instant::now();
+    for &dimension in &dimensions {
+        let base = match problems::builtin(&problem, dimension, 0) {
+            Ok(p) => p,
+            Err(e) => {
+                eprintln!("{problem} in {dimension} dimensions: {e}");
+                std::process::exit(2);
+            }
+        };
+        for &configuration in &configurations {
+            for &batch in &batches {
+                for &budget in &budgets {
+                    for seed in 0..seeds {
+                        let parameters = Parameters {
+                            batch_size: batch,
+                            seed,
+                            ..Parameters::default()
+                        };
+                        let started = Instant::now();
+                        let deadline = started + Duration::from_secs_f64(budget);
+                        // Lateness is taken when `solve` returns, before the planner is
+                        // dropped (freeing a large graph is the caller's time, not the
+                        // planner's).
+                        let (solved, late) = match build_planner(configuration, &base, &parameters)
+                        {
+                            Ok(mut planner) => {
+                                let outcome = planner.solve(&TimeLimit::until(deadline));
+                                let late = started.elapsed().as_secs_f64() - budget;
+                                if std::env::var_os("DEADLINE_STRESS_DEBUG").is_some()
+                                    && late > (0.01 * budget).max(0.001)
+                                {
+                                    eprintln!(
+                                        "late run: deadline {deadline:?}, returned {:?}",
+                                        Instant::now()
+                                    );
+                                }
+                                (outcome.is_ok_and(|o| o.is_solved()), late)
+                            }
+                            Err(e) => {
+                                eprintln!("{}: {e}", configuration.name());
+                                std::process::exit(1);
+                            }
+                        };
+                        runs.push(Run {
+                            configuration,
+                            dimension,
+                            batch,
+                            budget,
+                            seed,
+                            late,
+                            solved,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    let allowed = |budget: f64| (0.01 * budget).max(0.001);
+    println!(
+        "## deadline stress on {problem}: {} runs in {:.1} s (dimensions {dimensions:?}, batch sizes {batches:?})\n",
+        runs.len(),
+        clock.elapsed().as_secs_f64()
+    );
+    print!("| configuration |");
+    for budget in &budgets {
+        print!(" worst overshoot, {budget} s budget (ms) |");
+    }
+    println!(" late runs | solved |");
+    println!("|---|{}---|---|", "---|".repeat(budgets.len()));
+    for &configuration in &configurations {
+        let mine: Vec<&Run> = runs
+            .iter()
+            .filter(|r| r.configuration == configuration)
+            .collect();
+        print!("| {} |", configuration.label());
+        for &budget in &budgets {
+            let worst = mine
+                .iter()
+                .filter(|r| r.budget == budget)
+                .map(|r| r.late)
+                .fold(f64::NEG_INFINITY, f64::max);
+            print!(" {:.3} |", 1e3 * worst);
+        }
+        let late = mine.iter().filter(|r| r.late > allowed(r.budget)).count();
+        let solved = mine.iter().filter(|r| r.solved).count();
+        println!(" {late} of {} | {solved} |", mine.len());
+    }
+    let late: Vec<&Run> = runs.iter().filter(|r| r.late > allowed(r.budget)).collect();
+    println!(
+        "\non time (within max(1 ms, 1 % of the budget)): {} of {} runs",
+        runs.len() - late.len(),
+        runs.len()
+    );
+    for r in &late {
+        println!(
+            "LATE: {} R^{} batch {} budget {} s seed {}: {:.3} ms late",
+            r.configuration.label(),
+            r.dimension,
+            r.batch,
+            r.budget,
+            r.seed,
+            1e3 * r.late
+        );
+    }
+    if !late.is_empty() {
+        std::process::exit(1);
+    }
+}
+
+/// A comma-separated list of numbers (unparsable entries are skipped).
+fn list<T: std::str::FromStr>(text: &str) -> Vec<T> {
+    text.split(',')
+        .filter_map(|v| v.trim().parse().ok())
+        .collect()
+}
