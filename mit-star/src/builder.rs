@@ -233,6 +233,7 @@ where
             return Err(BuildError::Problem(error));
         }
         self.parameters.validate()?;
+        check_batch_memory(self.parameters.batch_size, self.space.dimension())?;
         validate_query(&self.space, &self.validity, &self.start, &self.goals)?;
         let sampler = match self.sampler {
             Some(sampler) => sampler,
@@ -261,4 +262,27 @@ where
         }
         Ok(planner)
     }
+}
+
+/// Memory one sample takes in the planner, in `n` dimensions: its state three times (graph,
+/// nearest-neighbour buffer, tree) plus its vertex record and neighbour list, generously.
+fn bytes_per_sample(n: usize) -> u64 {
+    24 * n as u64 + 512
+}
+
+/// Refuses a batch size whose one batch of samples could not fit in this machine's memory.
+fn check_batch_memory(batch_size: usize, n: usize) -> Result<(), BuildError> {
+    let budget = spaces::MemoryBudget::of_machine();
+    let bytes = spaces::MemoryBudget::bytes_for(&[batch_size as u64, bytes_per_sample(n)]);
+    if bytes.is_some_and(|b| budget.fits(b)) {
+        return Ok(());
+    }
+    Err(BuildError::TooLarge {
+        what: format!("a batch of {batch_size} samples in {n} dimensions"),
+        needed: bytes.map_or_else(
+            || "more than 16 EiB".to_owned(),
+            spaces::MemoryBudget::describe,
+        ),
+        available: spaces::MemoryBudget::describe(budget.bytes()),
+    })
 }

@@ -66,6 +66,16 @@ pub enum BuildError {
         /// What it must satisfy.
         requirement: &'static str,
     },
+    /// A parameter asks for more memory than this machine has (refused before allocating).
+    #[error("{what} would need about {needed} of memory; this machine has {available} available")]
+    TooLarge {
+        /// What was asked for.
+        what: String,
+        /// The estimated size.
+        needed: String,
+        /// What the machine has available.
+        available: String,
+    },
     /// An edge checker refused its parameters (step, sparse spacing, refinement factor Ω).
     #[error("edge checker: {0}")]
     Validity(#[from] validity::ValidityError),
@@ -136,4 +146,3 @@ mod tests {
         );
     }
 }
-

@@ -323,6 +323,23 @@ fn bad_parameters_are_typed_errors_naming_the_parameter() {
         "rewire_factor"
     );
     assert_eq!(parameter(builder().resolution(-1e-3).build()), "resolution");
+    for extreme in [0.0, 1.0, 1e300, f64::INFINITY, f64::NAN, -0.0, 5e-324] {
+        let r = builder().resolution(extreme).build();
+        if extreme == 5e-324 {
+            // A subnormal resolution is in (0, 1): legal, if absurdly fine.
+            assert!(r.is_ok(), "{extreme}");
+        } else {
+            assert_eq!(parameter(r), "resolution", "{extreme}");
+        }
+    }
+    match builder().batch_size(usize::MAX).build() {
+        Err(e @ BuildError::TooLarge { .. }) => {
+            let text = e.to_string();
+            assert!(text.contains("samples in 2 dimensions"), "{text}");
+            assert!(text.contains("available"), "{text}");
+        }
+        other => panic!("expected a memory error, got {other:?}"),
+    }
     assert_eq!(
         parameter(builder().gaussian_std_fraction(0.0).build()),
         "gaussian_std_fraction"

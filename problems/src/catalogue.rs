@@ -3,6 +3,8 @@
 
 use std::fmt::Display;
 
+use spaces::MemoryBudget;
+
 use crate::{
     CenterSquare, DividingWalls, DoubleEnclosure, FlankingGap, GoalEnclosure, NarrowPassage,
     ObstacleFree, Problem, ProblemError, RandomRectangles, RepeatingRectangles, StartEnclosure,
@@ -90,9 +92,29 @@ impl Family {
     /// Builds the family's problem with its defaults in `n` dimensions.
     ///
     /// # Errors
-    /// As the family's `build`: [`ProblemError::Dimension`] if `n < 2`.
+    /// As the family's `build`: [`ProblemError::Dimension`] if `n < 2`;
+    /// [`ProblemError::TooLarge`] if the problem could not fit in this machine's memory (no
+    /// family holds more than `4n` boxes of `n` dimensions, so `n²` sets the size: `R^100000`
+    /// would need over a terabyte).
     pub fn build(&self, n: usize, seed: u64) -> Result<Problem, ProblemError> {
+        let budget = MemoryBudget::of_machine();
+        let bytes = Self::estimated_bytes(n);
+        if !bytes.is_some_and(|b| budget.fits(b)) {
+            return Err(ProblemError::TooLarge {
+                what: format!("{} in {n} dimensions", self.name),
+                needed: bytes.map_or_else(|| "more than 16 EiB".to_owned(), MemoryBudget::describe),
+                available: MemoryBudget::describe(budget.bytes()),
+            });
+        }
         (self.build)(n, seed)
+    }
+
+    /// A generous upper bound on the memory a built-in problem takes in `n` dimensions (at most
+    /// `4n` boxes, each stored three times as `n` centres, `n` widths and `2n` bounds), `None`
+    /// if it overflows.
+    pub fn estimated_bytes(n: usize) -> Option<u64> {
+        let n = n as u64;
+        MemoryBudget::bytes_for(&[4, n.max(64), n, 4 * 8])
     }
 
     /// The family's parameters with their defaults in `n` dimensions (some defaults depend on
@@ -227,6 +249,19 @@ pub fn builtin(name: &str, n: usize, seed: u64) -> Result<Problem, ProblemError>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn dimensions_beyond_the_machine_are_refused_before_building() {
+        let err = builtin("goal-enclosure", 100_000, 0).unwrap_err();
+        assert!(matches!(err, ProblemError::TooLarge { .. }), "{err:?}");
+        let text = err.to_string();
+        assert!(
+            text.contains("goal-enclosure in 100000 dimensions"),
+            "{text}"
+        );
+        assert!(builtin("goal-enclosure", usize::MAX, 0).is_err());
+        assert!(builtin("goal-enclosure", 64, 0).is_ok());
+    }
 
     #[test]
     fn names_are_the_documented_ones() {

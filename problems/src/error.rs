@@ -91,6 +91,16 @@ pub enum ProblemError {
     /// A problem was given no goal.
     #[error("a problem needs at least one goal")]
     NoGoals,
+    /// A problem too large for this machine's memory, refused before allocating it.
+    #[error("{what} would need about {needed} of memory; this machine has {available} available")]
+    TooLarge {
+        /// What was asked for.
+        what: String,
+        /// The estimated size.
+        needed: String,
+        /// What the machine has available.
+        available: String,
+    },
     /// The collision-check resolution is outside `(0, 1)`.
     #[error(
         "the collision-check resolution is {value}; it must lie strictly between 0 and 1 (a fraction of the space's maximum extent)"

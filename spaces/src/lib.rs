@@ -33,12 +33,14 @@
 //! | [`Stop`], [`Deadline`], [`Never`] | stop conditions polled by every loop |
 //! | [`SeededRng`] | the project's portable, seedable random generator |
 //! | [`unit_ball_measure`], [`euclidean_distance`], [`wrap_angle`] | geometric helpers |
+//! | [`MemoryBudget`] | memory a request may claim, checked before allocating |
 //! | [`SpaceError`] | what is wrong with a space or a state |
 
 #![forbid(unsafe_code)]
 
 mod error;
 mod joint_space;
+mod memory_budget;
 mod real_vector_space;
 mod state_space;
 mod states;
@@ -46,6 +48,7 @@ mod stop;
 
 pub use error::SpaceError;
 pub use joint_space::{Joint, JointKind, JointSpace, wrap_angle};
+pub use memory_budget::MemoryBudget;
 pub use real_vector_space::{RealVectorSpace, euclidean_distance};
 pub use state_space::{StateSpace, unit_ball_measure};
 pub use states::States;
