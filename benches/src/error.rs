@@ -100,6 +100,19 @@ pub enum HarnessError {
         /// What is wrong with its value.
         message: String,
     },
+    /// A time budget that no clock can hold (zero, negative, non-finite or absurdly large).
+    #[error(
+        "`{what} {}`: a time budget must be a positive number of seconds, at most {:e} (about 116 days)",
+        crate::short_number(source.0),
+        crate::MAX_BUDGET_SECONDS
+    )]
+    Budget {
+        /// Where the budget was given, e.g. `--time` or `problems[0].time`.
+        what: String,
+        /// The value and the rule.
+        #[source]
+        source: crate::BudgetError,
+    },
     /// The command line combines options that do not go together, or lacks a required one.
     #[error("{0}")]
     Usage(String),

@@ -51,6 +51,7 @@
 //! | [`ExperimentFigure`], [`RunPicture`], [`planner_colours`] | figures of experiments; pictures of 2-D runs |
 //! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
 //! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `problems`, `planners`, `experiments`) |
+//! | [`budget_duration`], [`deadline_after`], [`BudgetError`], [`short_number`] | time budgets checked into durations; numbers for messages |
 //! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
 //!
 //! The command line and the output formats are described in `docs/experiments.md`.
@@ -58,6 +59,7 @@
 #![forbid(unsafe_code)]
 
 mod benchmark_log;
+mod budget;
 pub mod commands;
 mod error;
 mod executor;
@@ -87,6 +89,7 @@ mod shipped_experiment;
 pub mod statistics;
 
 pub use benchmark_log::{BenchmarkLog, OMPL_STATUS, PlannerLog};
+pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};
 pub use error::HarnessError;
 pub use executor::{ExecutionOptions, Executor};
 pub use experiment::Experiment;

@@ -53,6 +53,9 @@ impl ProblemSource {
         if path.is_file() {
             return Ok(Self::File(path));
         }
+        if path.is_dir() {
+            return Self::file(path);
+        }
         Err(HarnessError::UnknownProblem {
             name: text.to_owned(),
             known: builtin_names(),
@@ -65,6 +68,12 @@ impl ProblemSource {
     /// [`HarnessError::ProblemFile`] if the file cannot be read.
     pub fn file(path: impl Into<PathBuf>) -> Result<Self, HarnessError> {
         let path = path.into();
+        if path.is_dir() {
+            return Err(HarnessError::Usage(format!(
+                "`{}` is a folder, not a problem file (give a .toml file; see `problems/examples/`)",
+                path.display()
+            )));
+        }
         if let Err(source) = std::fs::metadata(&path) {
             return Err(HarnessError::ProblemFile {
                 path: path.clone(),

@@ -2,14 +2,14 @@
 //! its execution.
 
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use mit_star::{Counters, Planner, Progress, Termination, TerminationExt, TimeLimit, TracePoint};
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use spaces::SeededRng;
 
-use crate::{PathValidation, PlannerSpec, ProblemInstance, RunRecord, RunStatus};
+use crate::{PathValidation, PlannerSpec, ProblemInstance, RunRecord, RunStatus, deadline_after};
 
 /// Decorrelates the planner-order shuffle from the planners' own seeds.
 const SHUFFLE_SALT: u64 = 0x5eed_0f0b_de5a_1700;
@@ -140,24 +140,52 @@ impl RunJob {
         if interrupt.load(Ordering::Relaxed) {
             return None;
         }
-        let budget = Duration::from_secs_f64(instance.budget);
-        let mut record = self.blank_record(instance, planner);
-        let parameters = planner.parameters_for_seed(self.seed);
         let started = Instant::now();
-        let deadline = started + budget;
-        let built =
-            mit_star::build_planner(planner.configuration(), &instance.problem, &parameters);
+        let deadline = match deadline_after(started, instance.budget) {
+            Ok(deadline) => deadline,
+            Err(e) => return Some((self.failed(instance, planner, started, &e), None)),
+        };
+        let parameters = planner.parameters_for_seed(self.seed);
+        match mit_star::build_planner(planner.configuration(), &instance.problem, &parameters) {
+            Ok(built) => self.solve_built(instance, planner, built, (started, deadline), interrupt),
+            Err(e) => Some((self.failed(instance, planner, started, &e), None)),
+        }
+    }
+
+    /// A record of a run that failed before planning (a budget no clock holds, a planner that
+    /// could not be built).
+    fn failed(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        started: Instant,
+        error: &dyn std::fmt::Display,
+    ) -> RunRecord {
+        let mut record = self.blank_record(instance, planner);
+        record.status = RunStatus::Error;
+        record.error = Some(error.to_string());
+        record.setup_time = started.elapsed().as_secs_f64();
+        record.run_time = record.setup_time;
+        record
+    }
+
+    /// Runs a planner built by the caller since `started` (so its construction counts against
+    /// the budget) until `deadline`, and records the run as [`execute`](Self::execute) does.
+    /// Used by `mit-star plan`, which builds the planner itself to report build errors as typed
+    /// errors — and builds it once.
+    ///
+    /// Returns `None` if `interrupt` was raised before the run finished.
+    pub fn solve_built(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        mut built: Box<dyn Planner + Send>,
+        (started, deadline): (Instant, Instant),
+        interrupt: &AtomicBool,
+    ) -> Option<(RunRecord, Option<Box<dyn Planner + Send>>)> {
+        let mut record = self.blank_record(instance, planner);
         let setup = started.elapsed();
         record.setup_time = setup.as_secs_f64();
-        let mut built = match built {
-            Ok(p) => p,
-            Err(e) => {
-                record.status = RunStatus::Error;
-                record.error = Some(e.to_string());
-                record.run_time = started.elapsed().as_secs_f64();
-                return Some((record, None));
-            }
-        };
         let stop = TimeLimit::until(deadline).or(Interrupted(interrupt));
         let outcome = built.solve(&stop);
         record.run_time = started.elapsed().as_secs_f64();

@@ -25,18 +25,18 @@ impl fmt::Display for Endpoint {
     }
 }
 
-/// A number for a message: plain for everyday magnitudes, in exponent form otherwise.
-pub(crate) fn short(value: f64) -> String {
-    let magnitude = value.abs();
-    if !value.is_finite() || magnitude == 0.0 || (1e-4..1e7).contains(&magnitude) {
-        format!("{value}")
+/// `1 value`, `3 values`.
+fn count(n: usize, noun: &str) -> String {
+    if n == 1 {
+        format!("1 {noun}")
     } else {
-        // Four significant digits, trailing zeros dropped: 7.071e-6, 1e308.
-        let text = format!("{value:.3e}");
-        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-        format!("{mantissa}e{exponent}")
+        format!("{n} {noun}s")
     }
+}
+
+/// A number for a message ([`spaces::short_number`]).
+pub(crate) fn short(value: f64) -> String {
+    spaces::short_number(value)
 }
 
 /// An optional extent for a message.
@@ -103,7 +103,8 @@ pub enum ProblemError {
     },
     /// The collision-check resolution is outside `(0, 1)`.
     #[error(
-        "the collision-check resolution is {value}; it must lie strictly between 0 and 1 (a fraction of the space's maximum extent)"
+        "the collision-check resolution is {}; it must lie strictly between 0 and 1 (a fraction of the space's maximum extent)",
+        short(*.value)
     )]
     Resolution {
         /// The value given.
@@ -242,7 +243,7 @@ pub enum ProblemFileError {
     },
     /// A number is not acceptable for its field (not finite, a negative width, a non-positive
     /// resolution, …).
-    #[error("`{field}` is {value}; {requirement}")]
+    #[error("`{field}` is {}; {requirement}", short(*.value))]
     BadValue {
         /// The field, with indices.
         field: String,
@@ -258,7 +259,7 @@ pub enum ProblemFileError {
         field: String,
     },
     /// A vector has a different number of values than the bounds have dimensions.
-    #[error("`{field}` has {got} values, but the bounds have {expected}")]
+    #[error("`{field}` has {}, but the bounds have {expected}", count(*.got, "value"))]
     Dimension {
         /// The field, with index.
         field: String,
@@ -268,7 +269,11 @@ pub enum ProblemFileError {
         expected: usize,
     },
     /// `bounds.lower` and `bounds.upper` differ in length.
-    #[error("`bounds.lower` has {lower} values but `bounds.upper` has {upper}")]
+    #[error(
+        "`bounds.lower` has {} but `bounds.upper` has {}",
+        count(*.lower, "value"),
+        count(*.upper, "value")
+    )]
     BoundsLength {
         /// Length of `bounds.lower`.
         lower: usize,
@@ -279,7 +284,11 @@ pub enum ProblemFileError {
     #[error("`bounds.lower` and `bounds.upper` are empty; a problem needs at least one dimension")]
     NoDimensions,
     /// A lower bound is not strictly below its upper bound.
-    #[error("`bounds.lower[{index}]` = {lower} is not below `bounds.upper[{index}]` = {upper}")]
+    #[error(
+        "`bounds.lower[{index}]` = {} is not below `bounds.upper[{index}]` = {}",
+        short(*.lower),
+        short(*.upper)
+    )]
     EmptyInterval {
         /// Coordinate index.
         index: usize,

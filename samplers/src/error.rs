@@ -48,7 +48,7 @@ pub enum SamplerError {
     #[error("an informed set needs at least one goal, none was given")]
     NoGoals,
     /// A parameter that must be a finite positive number is not.
-    #[error("{name} must be finite and positive, got {value}")]
+    #[error("{name} must be finite and positive, got {}", spaces::short_number(*.value))]
     NotPositive {
         /// Which parameter.
         name: &'static str,
@@ -56,7 +56,10 @@ pub enum SamplerError {
         value: f64,
     },
     /// A cost given to the estimated informed set is negative or not finite.
-    #[error("{name} must be finite and non-negative, got {value}")]
+    #[error(
+        "{name} must be finite and non-negative, got {}",
+        spaces::short_number(*.value)
+    )]
     NegativeCost {
         /// Which input.
         name: &'static str,

@@ -9,7 +9,7 @@ pub enum SpaceError {
     #[error("a state space needs at least one dimension")]
     ZeroDimension,
     /// Lower and upper bound vectors differ in length.
-    #[error("bounds have {lower} lower and {upper} upper values; they must match")]
+    #[error("bounds have {lower} lower and {upper} upper value(s); they must match")]
     BoundsLength {
         /// Number of lower bounds given.
         lower: usize,
@@ -27,7 +27,8 @@ pub enum SpaceError {
     /// The bounds are so far apart (or so close) that the space's diagonal or volume is not a
     /// positive finite `f64`: distances, measures and step sizes would overflow or vanish.
     #[error(
-        "the bounds span a space whose {quantity} is {value} in f64 arithmetic; rescale the problem so that its sides and volume are finite and positive"
+        "the bounds span a space whose {quantity} is {} in f64 arithmetic; rescale the problem so that its sides and volume are finite and positive",
+        crate::short_number(*.value)
     )]
     UnrepresentableSize {
         /// `diagonal` or `volume`.
@@ -36,7 +37,11 @@ pub enum SpaceError {
         value: f64,
     },
     /// A lower bound is not strictly below its upper bound.
-    #[error("coordinate {index} has lower bound {lower} not below upper bound {upper}")]
+    #[error(
+        "coordinate {index} has lower bound {} not below upper bound {}",
+        crate::short_number(*.lower),
+        crate::short_number(*.upper)
+    )]
     EmptyInterval {
         /// Coordinate index.
         index: usize,
@@ -70,7 +75,12 @@ pub enum SpaceError {
         value: f64,
     },
     /// A state lies outside the space's bounds.
-    #[error("coordinate {index} of the state is {value}, outside the bounds [{lower}, {upper}]")]
+    #[error(
+        "coordinate {index} of the state is {}, outside the bounds [{}, {}]",
+        crate::short_number(*.value),
+        crate::short_number(*.lower),
+        crate::short_number(*.upper)
+    )]
     OutOfBounds {
         /// Coordinate index.
         index: usize,

@@ -33,6 +33,7 @@
 //! | [`Stop`], [`Deadline`], [`Never`] | stop conditions polled by every loop |
 //! | [`SeededRng`] | the project's portable, seedable random generator |
 //! | [`unit_ball_measure`], [`euclidean_distance`], [`wrap_angle`] | geometric helpers |
+//! | [`short_number`] | numbers for messages (`1e308`, not 309 digits) |
 //! | [`MemoryBudget`] | memory a request may claim, checked before allocating |
 //! | [`SpaceError`] | what is wrong with a space or a state |
 
@@ -42,6 +43,7 @@ mod error;
 mod joint_space;
 mod memory_budget;
 mod real_vector_space;
+mod short_number;
 mod state_space;
 mod states;
 mod stop;
@@ -50,6 +52,7 @@ pub use error::SpaceError;
 pub use joint_space::{Joint, JointKind, JointSpace, wrap_angle};
 pub use memory_budget::MemoryBudget;
 pub use real_vector_space::{RealVectorSpace, euclidean_distance};
+pub use short_number::short_number;
 pub use state_space::{StateSpace, unit_ball_measure};
 pub use states::States;
 pub use stop::{Deadline, Never, Stop};

@@ -87,7 +87,7 @@ impl Cli {
     /// Whatever the command reports; input errors are found before any planning.
     pub fn run(&self, interrupt: Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
         match &self.command {
-            Command::Plan(args) => args.run(),
+            Command::Plan(args) => args.run(&interrupt),
             Command::Bench(args) => args.run(interrupt),
             Command::Problems(args) => args.run(),
             Command::Planners => listings::print_planners(),

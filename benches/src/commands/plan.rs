@@ -2,6 +2,7 @@
 
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
+use std::time::Instant;
 
 use clap::Args;
 
@@ -9,7 +10,8 @@ use crate::commands::CommandOutcome;
 use crate::kpi_table::number;
 use crate::{
     HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, RunJob,
-    RunPicture, RunRecord, RunStatus, parse_configuration, problem_source::sanitise,
+    RunPicture, RunRecord, RunStatus, budget_duration, deadline_after, parse_configuration,
+    problem_source::sanitise, short_number,
 };
 
 /// Options of `mit-star plan`.
@@ -31,7 +33,7 @@ pub struct PlanArgs {
     #[arg(long, default_value_t = 0)]
     pub instance: u64,
     /// Time budget in seconds (planner construction included).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub time: f64,
     /// The planner's seed.
     #[arg(long, default_value_t = 0)]
@@ -40,8 +42,12 @@ pub struct PlanArgs {
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
     /// Collision-check resolution (fraction of the maximum extent) instead of the problem's.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub resolution: Option<f64>,
+    /// Allow a collision-check step larger than the thinnest obstacle or anti-obstacle
+    /// (refused otherwise: edges could cross thin obstacles between checked points).
+    #[arg(long)]
+    pub allow_coarse_step: bool,
     /// Folder for the picture of a 2-D run.
     #[arg(long, short, default_value = "results/plan")]
     pub output: PathBuf,
@@ -59,19 +65,17 @@ impl PlanArgs {
     /// # Errors
     /// Unknown planner or problem, bad parameters, dimension or budget, an unwritable output
     /// folder (all before planning), or a failed picture.
-    pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+    pub fn run(&self, interrupt: &AtomicBool) -> Result<CommandOutcome, HarnessError> {
         let configuration = parse_configuration(&self.planner)?;
         let mut overrides = ParameterOverrides::default();
         for s in &self.set {
             overrides.push_assignment(s)?;
         }
         let spec = PlannerSpec::new(configuration, None, &overrides)?;
-        if !(self.time.is_finite() && self.time > 0.0) {
-            return Err(HarnessError::Usage(format!(
-                "--time {} is not a positive number of seconds",
-                self.time
-            )));
-        }
+        budget_duration(self.time).map_err(|source| HarnessError::Budget {
+            what: "--time".into(),
+            source,
+        })?;
         let source = match (&self.problem, &self.problem_file) {
             (_, Some(path)) => ProblemSource::file(path)?,
             (Some(text), None) => ProblemSource::parse(text, None)?,
@@ -86,7 +90,17 @@ impl PlanArgs {
             (Some(n), _) => n,
             (None, d) => d.unwrap_or(2),
         };
-        let problem = source.build(dimension, self.instance, self.resolution)?;
+        let problem = source
+            .build(dimension, self.instance, self.resolution)?
+            .allowing_coarse_step(self.allow_coarse_step);
+        let label = source.label();
+        problem
+            .check_step()
+            .map_err(|source| HarnessError::Problem {
+                name: label,
+                dimension,
+                source,
+            })?;
         let seeded = source.is_seeded();
         let instance = ProblemInstance {
             id: ProblemInstance::make_id(
@@ -101,8 +115,35 @@ impl PlanArgs {
             budget: self.time,
             problem,
         };
-        // Build once before timing, so parameter errors surface as errors.
-        mit_star::build_planner(
+        let picture = dimension == 2 && !self.no_picture;
+        if picture {
+            crate::writable_folder(&self.output)?;
+        }
+        if instance.problem.step_is_coarse() {
+            let (obstacle, anti) = instance.problem.thinnest_extents();
+            eprintln!(
+                "warning: the collision-check step {} is larger than the thinnest obstacle ({}) \
+                 or anti-obstacle ({}); edges may cross them between checked points (allowed by \
+                 --allow-coarse-step or the problem file)",
+                short_number(instance.problem.step()),
+                obstacle.map_or_else(|| "none".to_owned(), short_number),
+                anti.map_or_else(|| "none".to_owned(), short_number),
+            );
+        }
+        let job = RunJob {
+            instance: 0,
+            planner: 0,
+            run: 0,
+            seed: self.seed,
+        };
+        // Build once, on the run's clock: construction counts against the budget.
+        let started = Instant::now();
+        let deadline =
+            deadline_after(started, self.time).map_err(|source| HarnessError::Budget {
+                what: "--time".into(),
+                source,
+            })?;
+        let built = mit_star::build_planner(
             configuration,
             &instance.problem,
             &spec.parameters_for_seed(self.seed),
@@ -111,19 +152,11 @@ impl PlanArgs {
             planner: spec.name().to_owned(),
             source,
         })?;
-        let picture = dimension == 2 && !self.no_picture;
-        if picture {
-            crate::writable_folder(&self.output)?;
-        }
-        let job = RunJob {
-            instance: 0,
-            planner: 0,
-            run: 0,
-            seed: self.seed,
+        let Some((record, planner)) =
+            job.solve_built(&instance, &spec, built, (started, deadline), interrupt)
+        else {
+            return Ok(CommandOutcome::Interrupted);
         };
-        let (record, planner) = job
-            .execute_keeping_planner(&instance, &spec, &AtomicBool::new(false))
-            .ok_or_else(|| HarnessError::Usage("the run was interrupted".into()))?;
         let mut files = Vec::new();
         if picture && let Some(snapshot) = planner.as_ref().and_then(|p| p.snapshot()) {
             let stem = format!(
