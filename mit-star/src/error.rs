@@ -98,19 +98,9 @@ pub enum BuildError {
     },
 }
 
-/// A number for a message: plain for everyday magnitudes, in exponent form otherwise, so that
-/// `1e308` never prints as 309 digits.
+/// A number for a message ([`spaces::short_number`]).
 pub(crate) fn short(value: f64) -> String {
-    let magnitude = value.abs();
-    if !value.is_finite() || magnitude == 0.0 || (1e-4..1e7).contains(&magnitude) {
-        format!("{value}")
-    } else {
-        // Four significant digits, trailing zeros dropped: 7.071e-6, 1e308.
-        let text = format!("{value:.3e}");
-        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-        let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-        format!("{mantissa}e{exponent}")
-    }
+    spaces::short_number(value)
 }
 
 #[cfg(test)]

@@ -542,7 +542,7 @@ mod tests {
         let space = RealVectorSpace::cube(3, -1.0, 1.0).unwrap();
         let mut set = InformedSet::new(&space, &[0.1; 3], &[[0.1; 3]]).unwrap();
         let identity: Vec<f64> = (0..9).map(|k| if k % 4 == 0 { 1.0 } else { 0.0 }).collect();
-        assert_eq!(set.rotation(0), Some(identity.clone()));
+        assert_eq!(set.rotation(0), Some(identity));
         let mut rng = SeededRng::seed_from_u64(5);
         let mut x = [0.0; 3];
         for _ in 0..500 {
