@@ -212,8 +212,9 @@ impl Experiment {
                             p.dimensions.iter().map(|&d| (d as i64).into()).collect();
                         e.insert("dimensions".into(), dims.into());
                     }
-                    ProblemSource::File(path) => {
-                        let absolute = std::fs::canonicalize(path).unwrap_or_else(|_| path.clone());
+                    ProblemSource::File(file) => {
+                        let absolute = std::fs::canonicalize(file.path())
+                            .unwrap_or_else(|_| file.path().to_path_buf());
                         e.insert("file".into(), absolute.display().to_string().into());
                     }
                 }

@@ -104,7 +104,7 @@ pub use planner_arena_database::PlannerArenaDatabase;
 pub use planner_spec::{PlannerSpec, parse_configuration};
 pub use plot_style::planner_colours;
 pub use problem_instance::ProblemInstance;
-pub use problem_source::ProblemSource;
+pub use problem_source::{ProblemFile, ProblemSource};
 pub use problem_spec::ProblemSpec;
 pub use raw_runs::{CSV_COLUMNS, write_runs_csv, write_runs_jsonl};
 pub use results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};

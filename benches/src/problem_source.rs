@@ -1,6 +1,7 @@
 //! [`ProblemSource`]: where an experiment's problem comes from (a built-in family or a file).
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use problems::Problem;
 
@@ -31,9 +32,61 @@ pub(crate) fn builtin_names() -> String {
 pub enum ProblemSource {
     /// A built-in family, by name.
     Builtin(String),
-    /// A problem file.
-    File(PathBuf),
+    /// A problem file, read and checked once.
+    File(ProblemFile),
 }
+
+/// A problem file read once: its path and the problem it defines (a world of 100 000 boxes is
+/// several megabytes of TOML; every instance of an experiment shares the one parsed copy).
+#[derive(Debug, Clone)]
+pub struct ProblemFile {
+    path: PathBuf,
+    problem: Arc<Problem>,
+}
+
+impl ProblemFile {
+    /// Reads and checks the file.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] for a folder, [`HarnessError::ProblemFile`] for an unreadable
+    /// or malformed file.
+    pub fn read(path: impl Into<PathBuf>) -> Result<Self, HarnessError> {
+        let path = path.into();
+        if path.is_dir() {
+            return Err(HarnessError::Usage(format!(
+                "`{}` is a folder, not a problem file (give a .toml file; see `problems/examples/`)",
+                path.display()
+            )));
+        }
+        let problem = Problem::from_file(&path).map_err(|source| HarnessError::ProblemFile {
+            path: path.clone(),
+            source,
+        })?;
+        Ok(Self {
+            path,
+            problem: Arc::new(problem),
+        })
+    }
+
+    /// The file's path.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The problem it defines.
+    pub fn problem(&self) -> &Problem {
+        &self.problem
+    }
+}
+
+/// Files are the same source when their paths are.
+impl PartialEq for ProblemFile {
+    fn eq(&self, other: &Self) -> bool {
+        self.path == other.path
+    }
+}
+
+impl Eq for ProblemFile {}
 
 impl ProblemSource {
     /// A built-in name, or else the path of an existing problem file (relative paths are
@@ -50,10 +103,7 @@ impl ProblemSource {
             Some(base) if Path::new(text).is_relative() => base.join(text),
             _ => PathBuf::from(text),
         };
-        if path.is_file() {
-            return Ok(Self::File(path));
-        }
-        if path.is_dir() {
+        if path.is_file() || path.is_dir() {
             return Self::file(path);
         }
         Err(HarnessError::UnknownProblem {
@@ -62,25 +112,12 @@ impl ProblemSource {
         })
     }
 
-    /// A problem file, which must exist.
+    /// A problem file, read and checked now (once).
     ///
     /// # Errors
-    /// [`HarnessError::ProblemFile`] if the file cannot be read.
+    /// As [`ProblemFile::read`].
     pub fn file(path: impl Into<PathBuf>) -> Result<Self, HarnessError> {
-        let path = path.into();
-        if path.is_dir() {
-            return Err(HarnessError::Usage(format!(
-                "`{}` is a folder, not a problem file (give a .toml file; see `problems/examples/`)",
-                path.display()
-            )));
-        }
-        if let Err(source) = std::fs::metadata(&path) {
-            return Err(HarnessError::ProblemFile {
-                path: path.clone(),
-                source: problems::ProblemFileError::Io { path, source },
-            });
-        }
-        Ok(Self::File(path))
+        ProblemFile::read(path).map(Self::File)
     }
 
     /// `true` if the problem's layout depends on a seed (random rectangles).
@@ -97,7 +134,7 @@ impl ProblemSource {
     pub fn label(&self) -> String {
         let raw = match self {
             Self::Builtin(name) => name.clone(),
-            Self::File(path) => path.file_stem().map_or_else(
+            Self::File(file) => file.path().file_stem().map_or_else(
                 || "problem".to_owned(),
                 |s| s.to_string_lossy().into_owned(),
             ),
@@ -128,20 +165,16 @@ impl ProblemSource {
                     }
                 })?
             }
-            Self::File(path) => {
-                let problem =
-                    Problem::from_file(path).map_err(|source| HarnessError::ProblemFile {
-                        path: path.clone(),
-                        source,
-                    })?;
+            Self::File(file) => {
+                let problem = file.problem();
                 if problem.dimension() != dimension {
                     return Err(HarnessError::Usage(format!(
                         "problem file `{}` is {}-dimensional, not {dimension}-dimensional",
-                        path.display(),
+                        file.path().display(),
                         problem.dimension()
                     )));
                 }
-                problem
+                problem.clone()
             }
         };
         match resolution {
@@ -163,12 +196,7 @@ impl ProblemSource {
     pub fn fixed_dimension(&self) -> Result<Option<usize>, HarnessError> {
         match self {
             Self::Builtin(_) => Ok(None),
-            Self::File(path) => Problem::from_file(path)
-                .map(|p| Some(p.dimension()))
-                .map_err(|source| HarnessError::ProblemFile {
-                    path: path.clone(),
-                    source,
-                }),
+            Self::File(file) => Ok(Some(file.problem().dimension())),
         }
     }
 }
@@ -228,7 +256,11 @@ mod tests {
         let problem = problems::builtin("wall-gap", 2, 0).unwrap();
         std::fs::write(&path, problem.to_toml_string()).unwrap();
         let s = ProblemSource::parse("wall.toml", Some(&dir)).unwrap();
-        assert_eq!(s, ProblemSource::File(path));
+        assert_eq!(s, ProblemSource::file(&path).unwrap());
+        let ProblemSource::File(file) = &s else {
+            panic!("a file source")
+        };
+        assert_eq!(file.path(), path);
         assert_eq!(s.label(), "wall");
         assert_eq!(s.fixed_dimension().unwrap(), Some(2));
         assert_eq!(s.build(2, 0, Some(1e-4)).unwrap().resolution(), 1e-4);

@@ -135,11 +135,18 @@ impl Problem {
     /// # Errors
     /// A [`ProblemFileError`] naming the first problem found (module docs).
     pub fn from_toml_str(text: &str) -> Result<Self, ProblemFileError> {
-        let table: toml::Table = text.parse().map_err(|e| syntax_error(text, &e))?;
-        if table.is_empty() {
-            return Err(ProblemFileError::Empty);
-        }
-        let spec: FileSpec = toml::from_str(text).map_err(|e| schema_error(text, &e))?;
+        // One parse on the happy path; the error path parses again as a plain table to tell
+        // a syntax error and an empty file from a schema error.
+        let spec: FileSpec = match toml::from_str(text) {
+            Ok(spec) => spec,
+            Err(schema) => {
+                let table: toml::Table = text.parse().map_err(|e| syntax_error(text, &e))?;
+                if table.is_empty() {
+                    return Err(ProblemFileError::Empty);
+                }
+                return Err(schema_error(text, &schema));
+            }
+        };
         spec.into_problem()
     }
 
