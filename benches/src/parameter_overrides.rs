@@ -137,14 +137,47 @@ impl ParameterOverrides {
                         .unwrap_or_else(|| "?".into()),
                     message: e.message().trim().to_owned(),
                 })?;
-        parameters.validate().map_err(|e| HarnessError::Parameter {
-            key: match &e {
-                mit_star::BuildError::Parameter { name, .. } => (*name).to_owned(),
-                _ => "parameters".to_owned(),
+        parameters.validate().map_err(|e| match e {
+            // The key is named once: `parameter `x`: is 0; it must be at least 1`.
+            mit_star::BuildError::Parameter {
+                name,
+                value,
+                requirement,
+            } => HarnessError::Parameter {
+                key: name.to_owned(),
+                message: format!("is {}; {requirement}", spaces::short_number(value)),
             },
-            message: e.to_string(),
+            other => HarnessError::Parameter {
+                key: "parameters".to_owned(),
+                message: other.to_string(),
+            },
         })?;
         Ok(parameters)
+    }
+}
+
+/// What a parameter's default says its values are, in words.
+fn kind(default: &toml::Value) -> &'static str {
+    match default {
+        toml::Value::Integer(_) => "a whole number, 0 or more",
+        toml::Value::Float(_) => "a number",
+        toml::Value::Boolean(_) => "`true` or `false`",
+        toml::Value::String(_) => "a name",
+        _ => "a value",
+    }
+}
+
+/// A value as the user wrote it, short.
+fn shown(value: &toml::Value) -> String {
+    let text = match value {
+        toml::Value::String(s) => format!("`{s}`"),
+        toml::Value::Float(f) => spaces::short_number(*f),
+        other => other.to_string(),
+    };
+    if text.chars().count() > 40 {
+        format!("{}…", text.chars().take(40).collect::<String>())
+    } else {
+        text
     }
 }
 
@@ -181,10 +214,18 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         return Err(HarnessError::Parameter {
             key: key.to_owned(),
             message: format!(
-                "expects a value of type {} (default {default}), got type {} ({value})",
-                default.type_str(),
-                value.type_str()
+                "expects {} (default {default}), got {}",
+                kind(default),
+                shown(&value)
             ),
+        });
+    }
+    if let toml::Value::Integer(i) = value
+        && i < 0
+    {
+        return Err(HarnessError::Parameter {
+            key: key.to_owned(),
+            message: format!("expects {} (default {default}), got {i}", kind(default)),
         });
     }
     if let (toml::Value::String(_), toml::Value::String(_)) = (default, &value) {
@@ -238,9 +279,14 @@ mod tests {
         assert!(!m.contains("seed,"), "{m}");
         let m = message(o.clone().with_assignment("batch_size=many"));
         assert!(
-            m.contains("`batch_size`: expects a value of type integer"),
+            m.contains("`batch_size`: expects a whole number, 0 or more (default 100), got `many`"),
             "{m}"
         );
+        for bad in ["-1", "18446744073709551616", "1e308", "nan"] {
+            let m = message(o.clone().with_assignment(&format!("batch_size={bad}")));
+            assert!(m.contains("expects a whole number"), "{bad}: {m}");
+            assert!(!m.contains("usize") && m.len() < 120, "{bad}: {m}");
+        }
         let m = message(o.clone().with_assignment("connection=r-disk"));
         assert!(m.contains("`connection`") && m.contains("r-disk"), "{m}");
         let m = message(o.clone().with_assignment("seed=3"));
@@ -250,7 +296,7 @@ mod tests {
         // Range errors come from Parameters::validate, naming the parameter.
         let zero = o.with_assignment("batch_size=0").unwrap();
         let m = zero.apply(&Parameters::default()).unwrap_err().to_string();
-        assert!(m.starts_with("parameter `batch_size`:"), "{m}");
+        assert_eq!(m, "parameter `batch_size`: is 0; it must be at least 1");
     }
 
     #[test]
