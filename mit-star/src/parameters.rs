@@ -200,11 +200,14 @@ impl Parameters {
 /// assert_eq!(mit_star::k_nearest(100, 4, 1.001), 16);
 /// ```
 pub fn k_nearest(q: usize, n: usize, eta: f64) -> usize {
-    let q = (q.max(2)) as f64;
+    // Never more neighbours than vertices: a huge `η` connects everything, it does not
+    // overflow the neighbour lists.
+    let count = q.max(2);
+    let q = count as f64;
     let n = n.max(1) as f64;
     let k = (eta * std::f64::consts::E * (1.0 + 1.0 / n) * q.ln()).ceil();
     if k.is_finite() {
-        (k as usize).max(1)
+        (k as usize).clamp(1, count)
     } else {
         1
     }

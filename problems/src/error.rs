@@ -305,7 +305,10 @@ pub enum ProblemFileError {
     NoGoal,
     /// The start or a goal lies outside the bounds.
     #[error(
-        "`{field}` is outside the bounds: coordinate {index} is {value}, not in [{lower}, {upper}]"
+        "`{field}` is outside the bounds: coordinate {index} is {}, not in [{}, {}]",
+        short(*.value),
+        short(*.lower),
+        short(*.upper)
     )]
     OutOfBounds {
         /// `start`, `goal` or `goals[i]`.

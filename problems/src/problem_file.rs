@@ -182,13 +182,46 @@ fn schema_error(text: &str, error: &toml::de::Error) -> ProblemFileError {
     let location = span
         .as_ref()
         .map(|span| Location::of_offset(text, span.start));
-    let mut message = error.message().to_owned();
+    let mut message = humanise(error.message());
     if let Some(location) = location
         && let Some(line) = text.lines().nth(location.line - 1)
     {
         message.push_str(&format!(", in `{}`", line.trim()));
     }
     ProblemFileError::Schema { location, message }
+}
+
+/// A deserialiser's message in the file's words: no Rust type names, no 300-digit numbers.
+fn humanise(message: &str) -> String {
+    let mut text = message.to_owned();
+    for (rust, words) in [
+        ("expected usize", "expected a whole number, 0 or more"),
+        ("expected u64", "expected a whole number, 0 or more"),
+        ("expected u32", "expected a whole number, 0 or more"),
+        ("expected i64", "expected a whole number"),
+        ("expected f64", "expected a number"),
+        ("floating point", "number"),
+    ] {
+        text = text.replace(rust, words);
+    }
+    // Shorten long numbers quoted in backticks.
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text.as_str();
+    while let Some(open) = rest.find('`') {
+        let Some(close) = rest[open + 1..].find('`') else {
+            break;
+        };
+        let quoted = &rest[open + 1..open + 1 + close];
+        out.push_str(&rest[..=open]);
+        match quoted.parse::<f64>() {
+            Ok(value) if quoted.len() > 12 => out.push_str(&spaces::short_number(value)),
+            _ => out.push_str(quoted),
+        }
+        out.push('`');
+        rest = &rest[open + close + 2..];
+    }
+    out.push_str(rest);
+    out
 }
 
 impl FileSpec {
