@@ -85,8 +85,35 @@ pub struct GridWalker {
     counters: EdgeCounters,
 }
 
-/// How many grid points a walk tests between two polls of the stop condition.
-pub const STOP_POLL: u64 = 256;
+/// How many grid points a walk tests between two polls of the stop condition: small enough that
+/// a slow validity checker (an arm with meshes, 100 µs a state) stops within a few
+/// milliseconds, large enough that reading the clock costs little next to 32 state checks.
+pub const STOP_POLL: u64 = 32;
+
+/// The edge `a — b` with its ends in canonical order: the lexicographically smaller state first
+/// (coordinates compared with `f64::total_cmp`).
+///
+/// Every walk of an edge starts from this end, whichever end the caller named, so that a sparse
+/// check from one end and a full check from the other test disjoint prefixes of *one* order of
+/// *one* grid. (The bisection order is not symmetric under `i → N − i` unless `2^D` divides `N`:
+/// walking from the other end would skip points never tested and repeat others.)
+///
+/// ```
+/// let (a, b) = ([0.5, 0.0], [0.1, 0.9]);
+/// assert_eq!(validity::canonical_ends(&a, &b), (&b[..], &a[..]));
+/// assert_eq!(validity::canonical_ends(&b, &a), (&b[..], &a[..]));
+/// ```
+#[inline]
+pub fn canonical_ends<'a>(a: &'a [f64], b: &'a [f64]) -> (&'a [f64], &'a [f64]) {
+    for (x, y) in a.iter().zip(b) {
+        match x.total_cmp(y) {
+            std::cmp::Ordering::Less => return (a, b),
+            std::cmp::Ordering::Greater => return (b, a),
+            std::cmp::Ordering::Equal => {}
+        }
+    }
+    (a, b)
+}
 
 impl GridWalker {
     /// A walker for grids of step `step` (the full-resolution check length `L`).
@@ -123,15 +150,20 @@ impl GridWalker {
         &mut self.counters
     }
 
-    /// The canonical grid of the edge `a → b`.
+    /// The canonical grid of the edge `a — b` (its length measured from the
+    /// [canonical end](canonical_ends), so both directions give the same grid).
     #[inline]
     pub fn grid<S: StateSpace + ?Sized>(&self, space: &S, a: &[f64], b: &[f64]) -> EdgeGrid {
+        let (a, b) = canonical_ends(a, b);
         EdgeGrid::new(space.distance(a, b), self.step)
     }
 
     /// Tests the positions of the bisection order of edge `(a, b)` on its canonical `grid`
     /// (from [`grid`](Self::grid)) up to `target` (exclusive) that `progress` has not covered
     /// yet, stopping at the first invalid point. Updates `progress`.
+    ///
+    /// The walk starts from the [canonical end](canonical_ends) of the edge whatever the order
+    /// of `a` and `b`, so progress made from either end continues the same order.
     pub fn advance<S, V>(
         &mut self,
         space: &S,
@@ -148,6 +180,7 @@ impl GridWalker {
         if progress.is_invalid() {
             return EdgeStatus::Invalid;
         }
+        let (a, b) = canonical_ends(a, b);
         let target = target.min(grid.points());
         if progress.0 >= target {
             return progress.status(&grid);
@@ -179,9 +212,10 @@ impl GridWalker {
 /// walking is shared ([`GridWalker`]). Object safe for fixed `S`, `V`:
 /// `Box<dyn EdgeChecker<RealVectorSpace, World>>` works.
 ///
-/// # Guarantees (pinned by `tests/edge_checkers.rs`)
+/// # Guarantees (pinned by `tests/edge_checkers.rs` and `tests/edge_direction.rs`)
 /// - a finer check never turns an invalid edge valid;
-/// - no grid point of an edge is tested twice across its sparse and full checks;
+/// - no grid point of an edge is tested twice across its sparse and full checks, whichever
+///   end each check names (every walk starts from the [canonical end](canonical_ends));
 /// - a full check that returns [`EdgeStatus::Valid`] has tested every grid point.
 pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     /// Grid points a sparse check at the current level tests on an edge of `length` (before
@@ -224,7 +258,9 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus {
-        // One distance per check: it gives both the sparse budget and the grid.
+        // One distance per check, from the canonical end: it gives both the sparse budget and
+        // the grid, identical from either end.
+        let (a, b) = canonical_ends(a, b);
         let length = space.distance(a, b);
         let budget = self.sparse_budget(length);
         let walker = self.walker_mut();

@@ -40,7 +40,7 @@
 //! | [`FixedSparseChecker`] | EIT*'s sparse levels: 1, 3, 7, 15, … checks per edge |
 //! | [`LengthAdaptiveChecker`] | MIT*'s length-related adaptive sparse checks |
 //! | [`EdgeGrid`], [`BisectionOrder`] | the canonical grid of an edge and its bisection order |
-//! | [`EdgeProgress`], [`EdgeStatus`], [`EdgeCounters`], [`GridWalker`] | per-edge memory, outcomes, counters, the shared walker |
+//! | [`EdgeProgress`], [`EdgeStatus`], [`EdgeCounters`], [`GridWalker`], [`canonical_ends`] | per-edge memory, outcomes, counters, the shared walker, the end every walk starts from |
 //! | [`ValidityError`] | malformed parameters or worlds |
 
 #![forbid(unsafe_code)]
@@ -57,7 +57,7 @@ mod world;
 pub use bisection_order::{BisectionOrder, EdgeGrid};
 pub use dense_checker::DenseChecker;
 pub use edge_checker::{
-    EdgeChecker, EdgeCounters, EdgeProgress, EdgeStatus, GridWalker, STOP_POLL,
+    EdgeChecker, EdgeCounters, EdgeProgress, EdgeStatus, GridWalker, STOP_POLL, canonical_ends,
 };
 pub use error::ValidityError;
 pub use fixed_sparse_checker::FixedSparseChecker;
