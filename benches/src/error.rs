@@ -102,7 +102,7 @@ pub enum HarnessError {
     },
     /// A time budget that no clock can hold (zero, negative, non-finite or absurdly large).
     #[error(
-        "`{what} {}`: a time budget must be a positive number of seconds, at most {:e} (about 116 days)",
+        "{what}: {} is not a usable time budget; give a positive number of seconds, at most {:e} (about 116 days)",
         crate::short_number(source.0),
         crate::MAX_BUDGET_SECONDS
     )]

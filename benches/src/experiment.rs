@@ -117,10 +117,34 @@ impl Experiment {
         if self.runs == 0 {
             return Err(bad("runs", "is 0; it must be at least 1".into()));
         }
+        // Every run's record is kept until the results are written: refuse, before allocating
+        // the schedule, what could not fit (`runs = 1e12` aborted on allocation).
+        let budget = spaces::MemoryBudget::of_machine();
+        let runs = self.runs as u64;
+        let bytes = spaces::MemoryBudget::bytes_for(&[
+            runs,
+            self.planners.len() as u64,
+            self.problems.len() as u64,
+            crate::RUN_RECORD_BYTES,
+        ]);
+        if !bytes.is_some_and(|b| budget.fits(b)) {
+            return Err(bad(
+                "runs",
+                format!(
+                    "is {runs}: the runs' records would need about {} of memory per problem \
+                     dimension, and this machine has {} available",
+                    bytes.map_or_else(|| "more than 16 EiB".into(), spaces::MemoryBudget::describe),
+                    spaces::MemoryBudget::describe(budget.bytes())
+                ),
+            ));
+        }
         if !(self.confidence > 0.0 && self.confidence < 1.0) {
             return Err(bad(
                 "confidence",
-                format!("is {}; it must lie in (0, 1), e.g. 0.99", self.confidence),
+                format!(
+                    "is {}; it must lie in (0, 1), e.g. 0.99",
+                    spaces::short_number(self.confidence)
+                ),
             ));
         }
         if self.seed.checked_add(self.runs as u64).is_none() {

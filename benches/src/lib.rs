@@ -108,7 +108,7 @@ pub use problem_source::{ProblemFile, ProblemSource};
 pub use problem_spec::ProblemSpec;
 pub use raw_runs::{CSV_COLUMNS, write_runs_csv, write_runs_jsonl};
 pub use results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
-pub use run_job::RunJob;
+pub use run_job::{RUN_RECORD_BYTES, RunJob};
 pub use run_picture::RunPicture;
 pub use run_record::{RunRecord, RunStatus};
 pub(crate) use setup_text::setup_description;

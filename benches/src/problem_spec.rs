@@ -51,11 +51,11 @@ impl ProblemSpec {
                 self.dimensions.len()
             )));
         }
-        if let Some(b) = self.budgets.iter().find(|b| !(b.is_finite() && **b > 0.0)) {
-            return Err(HarnessError::Usage(format!(
-                "problem `{}`: time budget {b} is not a positive number of seconds",
-                self.source.label()
-            )));
+        for &b in &self.budgets {
+            crate::budget_duration(b).map_err(|source| HarnessError::Budget {
+                what: format!("problem `{}`, `time`", self.source.label()),
+                source,
+            })?;
         }
         let seeded = self.source.is_seeded();
         if !seeded && self.instances.len() > 1 {
@@ -69,6 +69,13 @@ impl ProblemSpec {
         for (&dimension, &budget) in self.dimensions.iter().zip(&self.budgets) {
             for &instance in &self.instances {
                 let problem = self.source.build(dimension, instance, self.resolution)?;
+                problem
+                    .check_step()
+                    .map_err(|source| HarnessError::Problem {
+                        name: label.clone(),
+                        dimension,
+                        source,
+                    })?;
                 let id = ProblemInstance::make_id(&label, dimension, seeded.then_some(instance));
                 out.push(ProblemInstance {
                     id,

@@ -11,6 +11,10 @@ use spaces::SeededRng;
 
 use crate::{PathValidation, PlannerSpec, ProblemInstance, RunRecord, RunStatus, deadline_after};
 
+/// Memory a finished run's record takes until the results are written, generously (counters,
+/// trace, path): the unit of the run-count limit.
+pub const RUN_RECORD_BYTES: u64 = 4096;
+
 /// Decorrelates the planner-order shuffle from the planners' own seeds.
 const SHUFFLE_SALT: u64 = 0x5eed_0f0b_de5a_1700;
 

@@ -199,7 +199,7 @@ fn bad_values_are_refused_before_any_work() {
     );
     refused(
         &["plan", "--problem", "dividing-walls", "--time", "0"],
-        &["--time 0"],
+        &["--time: 0 is not a usable time budget"],
     );
     assert!(
         !out.exists(),

@@ -131,7 +131,7 @@ fn budgets_no_clock_can_hold_are_refused() {
                 bad,
                 "--no-picture",
             ],
-            &["`--time", "time budget"],
+            &["--time: ", "not a usable time budget"],
         );
     }
 }
