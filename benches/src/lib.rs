@@ -41,7 +41,7 @@
 //! | [`PlannerSpec`], [`parse_configuration`], [`ParameterOverrides`] | a planner of an experiment; configuration names; `key = value` parameter changes |
 //! | [`ProblemSpec`], [`ProblemSource`], [`ProblemInstance`] | a problem over dimensions and layouts; built-in or file; one concrete instance with its budget |
 //! | [`RunJob`], [`Executor`], [`ExecutionOptions`] | the shuffled, seeded schedule of runs; parallel execution with progress and Ctrl-C |
-//! | [`RunRecord`], [`RunStatus`], [`PathValidation`] | what one run measured; how it ended; the independent path check |
+//! | [`RunRecord`], [`RunStatus`], [`PathValidation`], [`ValidationMethod`] | what one run measured; how it ended; the independent path check (exact for box worlds) |
 //! | [`ExperimentResults`], [`MachineInfo`], [`iso_timestamp`] | every finished run, with how, when and where it ran |
 //! | [`statistics`] | medians and their confidence intervals, Clopper–Pearson, anytime series |
 //! | [`KpiTable`], [`KpiRow`], [`t_init_gain`] | the paper's Table I and the full KPIs |
@@ -99,7 +99,7 @@ pub use kpi_table::{KpiRow, KpiTable, t_init_gain};
 pub use log_value::{EnumType, ExperimentProperty, LogValue, Property, PropertyType};
 pub use machine_info::{MachineInfo, iso_timestamp};
 pub use parameter_overrides::ParameterOverrides;
-pub use path_validation::PathValidation;
+pub use path_validation::{PathValidation, ValidationMethod};
 pub use planner_arena_database::PlannerArenaDatabase;
 pub use planner_spec::{PlannerSpec, parse_configuration};
 pub use plot_style::planner_colours;

@@ -1,29 +1,68 @@
-//! [`PathValidation`]: an independent, full-resolution check of a returned path.
+//! [`PathValidation`]: an independent check of a returned path — exact for box worlds.
 
 use problems::Problem;
 use serde::{Deserialize, Serialize};
 use spaces::euclidean_distance;
-use validity::StateValidity;
+use validity::{SegmentCause, SegmentVerdict, StateValidity, World};
+
+/// How a path was validated.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum ValidationMethod {
+    /// Every segment decided exactly against every box of the world (slab tests, no grid:
+    /// [`World::segment_verdict`]). What the harness does for every benchmark problem.
+    ExactBoxes,
+    /// Every segment re-checked at grid points `step` apart — at least 4× finer than the
+    /// planner's step — for validity checkers that cannot decide segments exactly.
+    Resampled {
+        /// The re-check step.
+        step: f64,
+    },
+}
+
+impl ValidationMethod {
+    /// One line for reports: what was done.
+    pub fn describe(&self) -> String {
+        match self {
+            Self::ExactBoxes => "exactly against every box (segment slab tests, no grid)".into(),
+            Self::Resampled { step } => format!(
+                "at a step of {} (at least 4× finer than planning)",
+                spaces::short_number(*step)
+            ),
+        }
+    }
+}
 
 /// The result of re-checking a path independently of the planner: the path must start at the
-/// start, end at a goal, and every state along it — each segment interpolated at a step no
-/// larger than the problem's collision-check step — must be valid in the world (bounds
-/// included). Its length must match the cost the planner reported.
+/// start, end at a goal, every segment must be valid, and its length must match the cost the
+/// planner reported.
+///
+/// Box worlds — every benchmark problem — are validated **exactly**
+/// ([`ValidationMethod::ExactBoxes`]): a path the planner's grid let through a wall thinner
+/// than its step fails here. Other validity checkers are re-checked at a step at least 4×
+/// finer than the planner's ([`check_resampled`](Self::check_resampled)). `valid` is `true`
+/// only if the chosen check passed; reports name the method.
 ///
 /// ```
 /// let problem = problems::builtin("obstacle-free", 2, 0)?;
 /// let path = vec![problem.start().to_vec(), problem.goals()[0].clone()];
 /// let v = mit_star_benches::PathValidation::check(&problem, &path, problem.straight_line_cost());
 /// assert!(v.valid, "{:?}", v.failure);
-/// assert!(v.states_checked > 1000);
+/// assert_eq!(v.method, mit_star_benches::ValidationMethod::ExactBoxes);
+/// assert_eq!(v.segments_checked, 1);
 /// # Ok::<(), problems::ProblemError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PathValidation {
     /// `true` if every check passed.
     pub valid: bool,
-    /// States tested with the world's validity check.
+    /// How the segments were checked.
+    pub method: ValidationMethod,
+    /// States tested with the point test: the path's states, plus the resampled points with
+    /// [`ValidationMethod::Resampled`].
     pub states_checked: u64,
+    /// Segments checked (exactly, with [`ValidationMethod::ExactBoxes`]).
+    pub segments_checked: u64,
     /// The path's length, recomputed.
     pub length: f64,
     /// What failed first, if anything.
@@ -31,84 +70,139 @@ pub struct PathValidation {
 }
 
 impl PathValidation {
-    /// Checks `path` (states, start first) against `problem`, and its length against
+    /// Checks `path` (states, start first) against `problem` exactly, and its length against
     /// `reported_cost`.
     pub fn check(problem: &Problem, path: &[Vec<f64>], reported_cost: f64) -> Self {
         let world = problem.world();
-        let step = problem.step();
-        let mut checked = 0_u64;
-        let mut length = 0.0;
-        let fail = |checked: u64, length: f64, why: String| Self {
+        Self::walk(
+            (problem.start(), problem.goals()),
+            path,
+            reported_cost,
+            ValidationMethod::ExactBoxes,
+            world,
+            |a, b, _| match world.segment_verdict(a, b) {
+                SegmentVerdict::Valid => Ok(0),
+                SegmentVerdict::Invalid { t, cause } => Err(describe(world, t, cause)),
+            },
+        )
+    }
+
+    /// Checks `path` against any validity checker by re-testing every segment at grid points
+    /// `planning_step / 4` apart (or finer), for checkers that cannot decide segments exactly.
+    pub fn check_resampled<V: StateValidity + ?Sized>(
+        validity: &V,
+        (start, goals): (&[f64], &[Vec<f64>]),
+        path: &[Vec<f64>],
+        reported_cost: f64,
+        planning_step: f64,
+    ) -> Self {
+        let step = planning_step / 4.0;
+        let mut point = Vec::new();
+        Self::walk(
+            (start, goals),
+            path,
+            reported_cost,
+            ValidationMethod::Resampled { step },
+            validity,
+            |a, b, d| {
+                let pieces = (d / step).ceil().clamp(1.0, 1e12) as u64;
+                point.resize(a.len(), 0.0);
+                for k in 1..pieces {
+                    let t = k as f64 / pieces as f64;
+                    for (p, (x, y)) in point.iter_mut().zip(a.iter().zip(b)) {
+                        *p = x + t * (y - x);
+                    }
+                    if !validity.is_valid(&point) {
+                        return Err(format!("collides at t = {t:.9} ({point:?})"));
+                    }
+                }
+                Ok(pieces - 1)
+            },
+        )
+    }
+
+    /// The checks shared by both methods: ends, states, segments (with `segment`, returning
+    /// the points it tested or why it failed) and length.
+    fn walk<V: StateValidity + ?Sized>(
+        (start, goals): (&[f64], &[Vec<f64>]),
+        path: &[Vec<f64>],
+        reported_cost: f64,
+        method: ValidationMethod,
+        validity: &V,
+        mut segment: impl FnMut(&[f64], &[f64], f64) -> Result<u64, String>,
+    ) -> Self {
+        let mut result = Self {
             valid: false,
-            states_checked: checked,
-            length,
-            failure: Some(why),
+            method,
+            states_checked: 0,
+            segments_checked: 0,
+            length: 0.0,
+            failure: None,
+        };
+        let fail = |mut result: Self, why: String| {
+            result.failure = Some(why);
+            result
         };
         let close = |a: &[f64], b: &[f64]| a.len() == b.len() && euclidean_distance(a, b) <= 1e-9;
         let (Some(first), Some(last)) = (path.first(), path.last()) else {
-            return fail(0, 0.0, "the path is empty".into());
+            return fail(result, "the path is empty".into());
         };
-        if !close(first, problem.start()) {
+        if !close(first, start) {
             return fail(
-                0,
-                0.0,
+                result,
                 format!("the path starts at {first:?}, not at the start"),
             );
         }
-        if !problem.goals().iter().any(|g| close(last, g)) {
-            return fail(0, 0.0, format!("the path ends at {last:?}, not at a goal"));
+        if !goals.iter().any(|g| close(last, g)) {
+            return fail(result, format!("the path ends at {last:?}, not at a goal"));
         }
-        let n = problem.dimension();
-        let mut point = vec![0.0; n];
+        let n = start.len();
         for (i, state) in path.iter().enumerate() {
             if state.len() != n || state.iter().any(|x| !x.is_finite()) {
-                return fail(
-                    checked,
-                    length,
-                    format!("state {i} is malformed: {state:?}"),
-                );
+                return fail(result, format!("state {i} is malformed: {state:?}"));
             }
-            checked += 1;
-            if !world.is_valid(state) {
-                return fail(checked, length, format!("state {i} {state:?} is invalid"));
+            result.states_checked += 1;
+            if !validity.is_valid(state) {
+                return fail(result, format!("state {i} {state:?} is invalid"));
             }
             if i == 0 {
                 continue;
             }
             let a = &path[i - 1];
             let d = euclidean_distance(a, state);
-            length += d;
-            let segments = (d / step).ceil().max(1.0) as u64;
-            for k in 1..segments {
-                let t = k as f64 / segments as f64;
-                for (p, (x, y)) in point.iter_mut().zip(a.iter().zip(state)) {
-                    *p = x + t * (y - x);
-                }
-                checked += 1;
-                if !world.is_valid(&point) {
-                    return fail(
-                        checked,
-                        length,
-                        format!("segment {} → {i} collides at {point:?}", i - 1),
-                    );
-                }
+            result.length += d;
+            result.segments_checked += 1;
+            match segment(a, state, d) {
+                Ok(points) => result.states_checked += points,
+                Err(why) => return fail(result, format!("segment {} → {i} {why}", i - 1)),
             }
         }
-        if (length - reported_cost).abs() > 1e-9 * reported_cost.abs().max(1.0) {
-            return fail(
-                checked,
-                length,
-                format!(
-                    "the path's length {length} differs from the reported cost {reported_cost}"
-                ),
+        if (result.length - reported_cost).abs() > 1e-9 * reported_cost.abs().max(1.0) {
+            let why = format!(
+                "the path's length {} differs from the reported cost {reported_cost}",
+                result.length
             );
+            return fail(result, why);
         }
-        Self {
-            valid: true,
-            states_checked: checked,
-            length,
-            failure: None,
+        result.valid = true;
+        result
+    }
+}
+
+/// Why an exact segment check failed, in words.
+fn describe(world: &World, t: f64, cause: SegmentCause) -> String {
+    let at = format!("at t = {t:.9}");
+    match cause {
+        SegmentCause::Malformed => "has a malformed end".into(),
+        SegmentCause::OutOfBounds => format!("leaves the bounds {at}"),
+        SegmentCause::Obstacle(i) => {
+            let b = &world.obstacles()[i];
+            format!(
+                "collides {at} with obstacle {i} (centre {:?}, widths {:?})",
+                b.center, b.widths
+            )
         }
+        SegmentCause::Lattice(i) => format!("collides {at} with a cube of lattice {i}"),
     }
 }
 
@@ -122,12 +216,50 @@ mod tests {
     }
 
     #[test]
-    fn a_path_through_a_wall_fails() {
+    fn a_path_through_a_wall_fails_both_ways() {
         let p = wall();
         let path = vec![p.start().to_vec(), p.goals()[0].clone()];
         let v = PathValidation::check(&p, &path, p.straight_line_cost());
         assert!(!v.valid);
         assert!(v.failure.as_deref().unwrap().contains("collides"), "{v:?}");
+        assert!(
+            v.failure.as_deref().unwrap().contains("obstacle 0"),
+            "{v:?}"
+        );
+        let r = PathValidation::check_resampled(
+            p.world(),
+            (p.start(), p.goals()),
+            &path,
+            p.straight_line_cost(),
+            p.step(),
+        );
+        assert!(!r.valid && r.failure.unwrap().contains("collides"));
+        assert_eq!(
+            r.method,
+            ValidationMethod::Resampled {
+                step: p.step() / 4.0
+            }
+        );
+    }
+
+    #[test]
+    fn a_wall_thinner_than_any_step_is_found_exactly() {
+        let text = "name = 'tw'\nstart = [-0.3, 0.0]\ngoal = [0.3, 0.0]\n\
+                    [bounds]\nlower = [-0.5, -0.5]\nupper = [0.5, 0.5]\n\
+                    [[obstacles]]\ncenter = [0.0, 0.0]\nwidths = [1e-6, 1.0]\n";
+        let p = Problem::from_toml_str(text).unwrap();
+        let path = vec![p.start().to_vec(), p.goals()[0].clone()];
+        let v = PathValidation::check(&p, &path, 0.6);
+        assert!(!v.valid, "{v:?}");
+        // A grid of 179 pieces (odd: no point lands within 5e-7 of x = 0) walks through it.
+        let coarse = PathValidation::check_resampled(
+            p.world(),
+            (p.start(), p.goals()),
+            &path,
+            0.6,
+            4.0 * 0.6 / 178.5,
+        );
+        assert!(coarse.valid, "{coarse:?}");
     }
 
     #[test]
@@ -153,11 +285,18 @@ mod tests {
     }
 
     #[test]
-    fn the_step_is_at_most_the_problems() {
+    fn resampling_is_at_least_four_times_finer() {
         let p = problems::builtin("obstacle-free", 2, 0).unwrap();
         let path = vec![p.start().to_vec(), p.goals()[0].clone()];
-        let v = PathValidation::check(&p, &path, p.straight_line_cost());
-        let needed = (p.straight_line_cost() / p.step()).ceil() as u64 + 1;
+        let v = PathValidation::check_resampled(
+            p.world(),
+            (p.start(), p.goals()),
+            &path,
+            p.straight_line_cost(),
+            p.step(),
+        );
+        let needed = 4 * (p.straight_line_cost() / p.step()).floor() as u64;
         assert!(v.valid && v.states_checked >= needed, "{v:?}");
+        assert!(v.method.describe().contains("4× finer"));
     }
 }

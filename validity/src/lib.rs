@@ -33,6 +33,7 @@
 //! |---|---|
 //! | [`StateValidity`] | the trait: is one state valid |
 //! | [`World`], [`AxisBox`], [`Lattice`] | axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics) |
+//! | [`World::segment_verdict`], [`SegmentVerdict`], [`SegmentCause`] | exact validation of a straight segment against a world (slab tests, no grid) |
 //! | [`AllValid`] | the empty world |
 //! | [`Counted`] | wrapper counting validity calls |
 //! | [`EdgeChecker`] | the trait: sparse and full edge checks with per-edge memory |
@@ -51,6 +52,7 @@ mod edge_checker;
 mod error;
 mod fixed_sparse_checker;
 mod length_adaptive_checker;
+mod segment_validation;
 mod state_validity;
 mod world;
 
@@ -62,6 +64,7 @@ pub use edge_checker::{
 pub use error::ValidityError;
 pub use fixed_sparse_checker::FixedSparseChecker;
 pub use length_adaptive_checker::LengthAdaptiveChecker;
+pub use segment_validation::{SegmentCause, SegmentVerdict};
 pub use state_validity::{AllValid, Counted, StateValidity};
 pub use world::{AxisBox, Lattice, World};
 

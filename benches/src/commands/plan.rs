@@ -218,12 +218,15 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     let validation = r.validation.as_ref();
     match r.status {
         RunStatus::Solved => say!(
-            "  solved; path validated independently at full resolution ({} states checked)",
+            "  solved; path validated independently, {} ({} segments, {} states)",
+            validation.map_or_else(String::new, |v| v.method.describe()),
+            validation.map_or(0, |v| v.segments_checked),
             validation.map_or(0, |v| v.states_checked)
         ),
         RunStatus::Unsolved => say!("  no solution within the budget"),
         RunStatus::InvalidPath => say!(
-            "  INVALID PATH: the returned path failed the independent validation: {}",
+            "  INVALID PATH: the returned path failed the independent validation ({}): {}",
+            validation.map_or_else(String::new, |v| v.method.describe()),
             validation
                 .and_then(|v| v.failure.clone())
                 .unwrap_or_default()
