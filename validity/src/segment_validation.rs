@@ -113,7 +113,7 @@ impl World {
                 note(t, SegmentCause::Obstacle(index));
             }
         }
-        for (index, lattice) in self.lattices().iter().enumerate() {
+        for index in 0..self.lattices().len() {
             for interval in lattice_intervals(self, index, a, b) {
                 if let Some(t) = uncovered(interval, &free) {
                     note(t, SegmentCause::Lattice(index));
