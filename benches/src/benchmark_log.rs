@@ -161,7 +161,8 @@ impl BenchmarkLog {
         s
     }
 
-    /// The log of instance `index` of `results`.
+    /// The log of instance `index` of `results`; its header's run count is the number of runs
+    /// recorded (per planner, the most any planner has), not the number planned.
     pub fn from_results(results: &ExperimentResults, index: usize) -> Self {
         let instance = &results.instances[index];
         let experiment = &results.experiment;
@@ -224,7 +225,8 @@ impl BenchmarkLog {
             seed: experiment.seed,
             time_limit: instance.budget,
             memory_limit: -1.0,
-            runs_per_planner: Some(experiment.runs),
+            // The recorded truth: an interrupted experiment has fewer runs than planned.
+            runs_per_planner: Some(recorded_runs_per_planner(results, index)),
             total_time: results.total_time,
             enums: vec![EnumType {
                 name: "status".into(),
@@ -317,4 +319,15 @@ fn run_values(r: &RunRecord) -> Vec<LogValue> {
     ];
     v.extend(r.counter_values().iter().map(|(_, c)| LogValue::count(*c)));
     v
+}
+
+/// Runs recorded per planner on instance `index` (the most any planner has).
+pub(crate) fn recorded_runs_per_planner(results: &ExperimentResults, index: usize) -> usize {
+    results
+        .experiment
+        .planners
+        .iter()
+        .map(|spec| results.runs_of(index, spec.name()).len())
+        .max()
+        .unwrap_or(0)
 }

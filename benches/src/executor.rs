@@ -1,6 +1,7 @@
 //! [`Executor`]: runs an experiment's jobs in parallel, with progress, interruption and
 //! deterministic per-run seeds.
 
+use std::collections::HashSet;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Instant, SystemTime};
@@ -12,8 +13,15 @@ use crate::{
     RunStatus, iso_timestamp,
 };
 
+/// A run's identity in a results folder: instance id, planner name, run index.
+pub type RunKey = (String, String, usize);
+
+/// Called with each finished run (its instance's index and record), from the worker thread
+/// that ran it, before the worker takes the next job.
+pub type RecordSink = dyn Fn(usize, &RunRecord) + Send + Sync;
+
 /// How to execute an experiment.
-#[derive(Debug, Clone)]
+#[derive(Clone)]
 pub struct ExecutionOptions {
     /// Worker threads: runs executing at the same time (at least 1).
     pub threads: usize,
@@ -22,6 +30,23 @@ pub struct ExecutionOptions {
     /// Raised (e.g. by a Ctrl-C handler) to stop: running runs are abandoned, finished runs
     /// are kept.
     pub interrupt: Arc<AtomicBool>,
+    /// Runs already recorded (by an earlier, interrupted `bench` into the same folder): they
+    /// are not run again.
+    pub recorded: HashSet<RunKey>,
+    /// Where each finished run goes the moment it finishes (e.g. a [`RunJournal`](crate::RunJournal)).
+    pub on_record: Option<Arc<RecordSink>>,
+}
+
+impl std::fmt::Debug for ExecutionOptions {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ExecutionOptions")
+            .field("threads", &self.threads)
+            .field("progress", &self.progress)
+            .field("interrupt", &self.interrupt)
+            .field("recorded", &self.recorded.len())
+            .field("on_record", &self.on_record.is_some())
+            .finish()
+    }
 }
 
 impl Default for ExecutionOptions {
@@ -31,6 +56,8 @@ impl Default for ExecutionOptions {
             threads: std::thread::available_parallelism().map_or(1, |n| n.get()),
             progress: false,
             interrupt: Arc::new(AtomicBool::new(false)),
+            recorded: HashSet::new(),
+            on_record: None,
         }
     }
 }
@@ -73,12 +100,23 @@ impl Executor {
         if self.options.threads == 0 {
             return Err(HarnessError::Usage("--threads must be at least 1".into()));
         }
-        let jobs = RunJob::schedule(
+        let recorded = &self.options.recorded;
+        let jobs: Vec<RunJob> = RunJob::schedule(
             instances.len(),
             experiment.planners.len(),
             experiment.runs,
             experiment.seed,
-        );
+        )
+        .into_iter()
+        .filter(|job| {
+            let key = (
+                instances[job.instance].id.clone(),
+                experiment.planners[job.planner].name().to_owned(),
+                job.run,
+            );
+            !recorded.contains(&key)
+        })
+        .collect();
         let concurrency = self.options.threads.min(jobs.len().max(1));
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(concurrency)
@@ -107,6 +145,9 @@ impl Executor {
                             break;
                         };
                         report(&progress, &record);
+                        if let Some(sink) = &self.options.on_record {
+                            sink(job.instance, &record);
+                        }
                         let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
                         progress.set_message(format!(
                             "{finished}/{} runs · {}",

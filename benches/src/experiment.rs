@@ -45,12 +45,17 @@ impl Experiment {
     /// Reads an experiment file.
     ///
     /// # Errors
-    /// [`HarnessError::Io`] if it cannot be read, [`HarnessError::ExperimentFile`] or
-    /// [`HarnessError::ExperimentField`] if it is malformed.
+    /// [`HarnessError::ExperimentFile`] if it cannot be read or is malformed,
+    /// [`HarnessError::ExperimentField`] naming a malformed field.
     pub fn from_file(path: &Path) -> Result<Self, HarnessError> {
-        let text = std::fs::read_to_string(path).map_err(|source| HarnessError::Io {
-            path: path.to_path_buf(),
-            source,
+        // Not a file the user can give is an input error (exit code 2), not an I/O failure.
+        let text = std::fs::read_to_string(path).map_err(|e| HarnessError::ExperimentFile {
+            file: path.display().to_string(),
+            message: if path.is_dir() {
+                "is a folder, not an experiment file".into()
+            } else {
+                format!("cannot be read: {e}")
+            },
         })?;
         let origin = path.display().to_string();
         let stem = path
@@ -91,6 +96,22 @@ impl Experiment {
             field: field.to_owned(),
             message,
         };
+        // The name becomes the default output folder `results/<name>`: nothing may escape it.
+        let safe = |c: char| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.');
+        if self.name.is_empty()
+            || self.name.starts_with('.')
+            || !self.name.chars().all(safe)
+            || self.name.len() > 100
+        {
+            return Err(bad(
+                "name",
+                format!(
+                    "is {:?}; an experiment name names its results folder: use 1 to 100 letters, \
+                     digits, `-`, `_` or `.`, not starting with `.`",
+                    self.name
+                ),
+            ));
+        }
         if self.planners.is_empty() {
             return Err(bad(
                 "planners",

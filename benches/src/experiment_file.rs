@@ -214,7 +214,10 @@ impl ExperimentFile {
             problems.push(problem_spec(p, i, base, origin)?);
         }
         let experiment = Experiment {
-            name: self.name.unwrap_or_else(|| default_name.to_owned()),
+            // An explicit name is checked as given; the default (a file's stem) is made safe.
+            name: self
+                .name
+                .unwrap_or_else(|| crate::problem_source::sanitise(default_name)),
             description: self.description.unwrap_or_default(),
             planners,
             problems,

@@ -40,7 +40,8 @@
 //! | [`Experiment`], [`experiment_file`], [`ShippedExperiment`] | an experiment; its TOML file format; the embedded `paper-table`, `ablation`, `smoke` |
 //! | [`PlannerSpec`], [`parse_configuration`], [`ParameterOverrides`] | a planner of an experiment; configuration names; `key = value` parameter changes |
 //! | [`ProblemSpec`], [`ProblemSource`], [`ProblemInstance`] | a problem over dimensions and layouts; built-in or file; one concrete instance with its budget |
-//! | [`RunJob`], [`Executor`], [`ExecutionOptions`] | the shuffled, seeded schedule of runs; parallel execution with progress and Ctrl-C |
+//! | [`RunJob`], [`Executor`], [`ExecutionOptions`], [`Interrupt`] | the shuffled, seeded schedule of runs; parallel execution with progress; SIGINT/SIGTERM |
+//! | [`RunJournal`], [`results_from_records`] | every finished run appended to the raw files and committed to the database at once; reading them back |
 //! | [`RunRecord`], [`RunStatus`], [`PathValidation`], [`ValidationMethod`] | what one run measured; how it ended; the independent path check (exact for box worlds) |
 //! | [`ExperimentResults`], [`MachineInfo`], [`iso_timestamp`] | every finished run, with how, when and where it ran |
 //! | [`statistics`] | medians and their confidence intervals, Clopper–Pearson, anytime series |
@@ -67,6 +68,7 @@ mod experiment;
 mod experiment_figure;
 pub mod experiment_file;
 mod experiment_results;
+mod interrupt;
 mod kpi_table;
 mod log_parser;
 mod log_value;
@@ -82,6 +84,7 @@ mod problem_spec;
 mod raw_runs;
 mod results_folder;
 mod run_job;
+mod run_journal;
 mod run_picture;
 mod run_record;
 mod setup_text;
@@ -91,10 +94,11 @@ pub mod statistics;
 pub use benchmark_log::{BenchmarkLog, OMPL_STATUS, PlannerLog};
 pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};
 pub use error::HarnessError;
-pub use executor::{ExecutionOptions, Executor};
+pub use executor::{ExecutionOptions, Executor, RecordSink, RunKey};
 pub use experiment::Experiment;
 pub use experiment_figure::ExperimentFigure;
 pub use experiment_results::ExperimentResults;
+pub use interrupt::Interrupt;
 pub use kpi_table::{KpiRow, KpiTable, t_init_gain};
 pub use log_value::{EnumType, ExperimentProperty, LogValue, Property, PropertyType};
 pub use machine_info::{MachineInfo, iso_timestamp};
@@ -109,6 +113,7 @@ pub use problem_spec::ProblemSpec;
 pub use raw_runs::{CSV_COLUMNS, write_runs_csv, write_runs_jsonl};
 pub use results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
 pub use run_job::{RUN_RECORD_BYTES, RunJob};
+pub use run_journal::{RunJournal, results_from_records};
 pub use run_picture::RunPicture;
 pub use run_record::{RunRecord, RunStatus};
 pub(crate) use setup_text::setup_description;

@@ -3,28 +3,22 @@
 #![forbid(unsafe_code)]
 
 use std::process::ExitCode;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use clap::Parser;
-use mit_star_benches::commands::Cli;
+use mit_star_benches::Interrupt;
+use mit_star_benches::commands::{Cli, CommandOutcome};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let interrupt = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&interrupt);
-    // First Ctrl-C: stop starting runs, abandon running ones, write finished ones.
-    // Second Ctrl-C: leave at once.
-    let _ = ctrlc::set_handler(move || {
-        if flag.swap(true, Ordering::SeqCst) {
-            eprintln!("\ninterrupted twice: leaving without writing results");
-            std::process::exit(130);
+    let interrupt = match Interrupt::install() {
+        Ok(interrupt) => interrupt,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(1);
         }
-        eprintln!(
-            "\ninterrupted: finishing, then writing the finished runs (Ctrl-C again to quit)"
-        );
-    });
-    match cli.run(interrupt) {
+    };
+    match cli.run(interrupt.flag()) {
+        Ok(CommandOutcome::Interrupted) => ExitCode::from(interrupt.exit_code()),
         Ok(outcome) => outcome.exit_code(),
         Err(e) => {
             eprintln!("error: {e}");

@@ -211,6 +211,49 @@ impl PlannerArenaDatabase {
         }
         c.execute(&insert("experiments", &names), params_from_iter(values))?;
         let experiment = c.last_insert_rowid();
+        self.insert_planners(experiment, log)?;
+        Ok(experiment)
+    }
+
+    /// Appends the runs of `log` to the existing experiment `experiment` in one transaction
+    /// and sets its `runcount` and `totaltime` — how a run is committed the moment it finishes.
+    ///
+    /// # Errors
+    /// [`HarnessError::Database`] if SQLite refuses (nothing is written then).
+    pub fn append_runs(
+        &mut self,
+        experiment: i64,
+        log: &BenchmarkLog,
+        run_count: usize,
+        total_time: f64,
+    ) -> Result<(), HarnessError> {
+        self.connection
+            .execute_batch("BEGIN")
+            .map_err(|e| self.fail(e))?;
+        let result = self.insert_planners(experiment, log).and_then(|()| {
+            self.connection
+                .execute(
+                    "UPDATE experiments SET runcount = ?1, totaltime = ?2 WHERE id = ?3",
+                    rusqlite::params![run_count as i64, total_time, experiment],
+                )
+                .map(|_| ())
+        });
+        match result {
+            Ok(()) => self
+                .connection
+                .execute_batch("COMMIT")
+                .map_err(|e| self.fail(e)),
+            Err(e) => {
+                let _ = self.connection.execute_batch("ROLLBACK");
+                Err(self.fail(e))
+            }
+        }
+    }
+
+    /// Inserts the planner configurations, runs and progress samples of `log` under
+    /// `experiment`.
+    fn insert_planners(&self, experiment: i64, log: &BenchmarkLog) -> Result<(), rusqlite::Error> {
+        let c = &self.connection;
         for planner in &log.planners {
             let settings = planner.settings();
             let existing = c
@@ -260,7 +303,7 @@ impl PlannerArenaDatabase {
                 }
             }
         }
-        Ok(experiment)
+        Ok(())
     }
 }
 

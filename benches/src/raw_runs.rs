@@ -4,7 +4,7 @@
 use std::io::Write as _;
 use std::path::Path;
 
-use crate::{ExperimentResults, HarnessError, RunRecord};
+use crate::{ExperimentResults, HarnessError, ProblemInstance, RunRecord};
 
 /// The fixed CSV columns before the counters (the trace column comes last).
 pub const CSV_COLUMNS: [&str; 23] = [
@@ -38,18 +38,8 @@ fn optional(v: Option<f64>) -> String {
         .map_or_else(String::new, |x| x.to_string())
 }
 
-/// Writes `runs.csv`: one row per finished run, the columns of [`CSV_COLUMNS`], then one
-/// column per work counter (snake case), then `trace` (`time:cost` pairs separated by spaces,
-/// seconds since the run started). Empty cells mean "none" (no solution, no error).
-///
-/// # Errors
-/// [`HarnessError::Io`] or [`HarnessError::Serialise`] if the file cannot be written.
-pub fn write_runs_csv(path: &Path, results: &ExperimentResults) -> Result<(), HarnessError> {
-    let fail = |message: String| HarnessError::Serialise {
-        path: path.to_path_buf(),
-        message,
-    };
-    let mut w = csv::Writer::from_path(path).map_err(|e| fail(e.to_string()))?;
+/// The header of `runs.csv`: [`CSV_COLUMNS`], the counters, the trace.
+pub(crate) fn csv_header() -> Vec<String> {
     let mut header: Vec<String> = CSV_COLUMNS.iter().map(|s| (*s).to_owned()).collect();
     header.extend(
         RunRecord::counter_names()
@@ -57,59 +47,105 @@ pub fn write_runs_csv(path: &Path, results: &ExperimentResults) -> Result<(), Ha
             .map(|n| n.replace(' ', "_")),
     );
     header.push("trace".into());
-    w.write_record(&header).map_err(|e| fail(e.to_string()))?;
+    header
+}
+
+/// One run's row of `runs.csv`.
+pub(crate) fn csv_row(
+    instance: &ProblemInstance,
+    concurrency: usize,
+    r: &RunRecord,
+) -> Vec<String> {
+    let mut row = vec![
+        instance.id.clone(),
+        instance.label.clone(),
+        instance.dimension.to_string(),
+        instance.instance.to_string(),
+        instance.budget.to_string(),
+        concurrency.to_string(),
+        r.planner.clone(),
+        r.configuration.name().to_owned(),
+        r.run.to_string(),
+        r.seed.to_string(),
+        r.status.name().to_owned(),
+        r.is_success().to_string(),
+        r.validation
+            .as_ref()
+            .map_or_else(String::new, |v| v.valid.to_string()),
+        r.setup_time.to_string(),
+        r.run_time.to_string(),
+        optional(r.initial_time),
+        optional(r.initial_cost),
+        optional(r.final_cost),
+        r.trace.len().to_string(),
+        r.path.len().to_string(),
+        r.validation
+            .as_ref()
+            .map_or_else(String::new, |v| v.states_checked.to_string()),
+        r.validation
+            .as_ref()
+            .and_then(|v| v.failure.clone())
+            .unwrap_or_default(),
+        r.error.clone().unwrap_or_default(),
+    ];
+    row.extend(r.counter_values().iter().map(|(_, c)| c.to_string()));
+    row.push(
+        r.trace
+            .iter()
+            .map(|p| format!("{}:{}", p.time, p.cost))
+            .collect::<Vec<_>>()
+            .join(" "),
+    );
+    row
+}
+
+/// One run as a line of `runs.jsonl` (without the newline): the record plus its instance's
+/// problem, dimension and layout seed and the run's concurrency.
+///
+/// # Errors
+/// [`HarnessError::Serialise`] naming `path` if the record cannot be serialised.
+pub(crate) fn json_line(
+    path: &Path,
+    instance: &ProblemInstance,
+    concurrency: usize,
+    r: &RunRecord,
+) -> Result<String, HarnessError> {
+    let mut value = serde_json::to_value(r).map_err(|e| HarnessError::Serialise {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    if let Some(object) = value.as_object_mut() {
+        object.insert("problem".into(), instance.label.clone().into());
+        object.insert("dimension".into(), instance.dimension.into());
+        object.insert("instance_seed".into(), instance.instance.into());
+        object.insert("concurrent_runs".into(), concurrency.into());
+    }
+    Ok(value.to_string())
+}
+
+/// Writes every run of `results` to `path` as CSV (a header, then one row per run).
+///
+/// # Errors
+/// [`HarnessError::Serialise`] if the file cannot be written.
+pub fn write_runs_csv(path: &Path, results: &ExperimentResults) -> Result<(), HarnessError> {
+    let fail = |message: String| HarnessError::Serialise {
+        path: path.to_path_buf(),
+        message,
+    };
+    let mut w = csv::Writer::from_path(path).map_err(|e| fail(e.to_string()))?;
+    w.write_record(csv_header())
+        .map_err(|e| fail(e.to_string()))?;
     for (index, runs) in results.runs.iter().enumerate() {
         let instance = &results.instances[index];
         for r in runs {
-            let mut row = vec![
-                instance.id.clone(),
-                instance.label.clone(),
-                instance.dimension.to_string(),
-                instance.instance.to_string(),
-                instance.budget.to_string(),
-                results.concurrency.to_string(),
-                r.planner.clone(),
-                r.configuration.name().to_owned(),
-                r.run.to_string(),
-                r.seed.to_string(),
-                r.status.name().to_owned(),
-                r.is_success().to_string(),
-                r.validation
-                    .as_ref()
-                    .map_or_else(String::new, |v| v.valid.to_string()),
-                r.setup_time.to_string(),
-                r.run_time.to_string(),
-                optional(r.initial_time),
-                optional(r.initial_cost),
-                optional(r.final_cost),
-                r.trace.len().to_string(),
-                r.path.len().to_string(),
-                r.validation
-                    .as_ref()
-                    .map_or_else(String::new, |v| v.states_checked.to_string()),
-                r.validation
-                    .as_ref()
-                    .and_then(|v| v.failure.clone())
-                    .unwrap_or_default(),
-                r.error.clone().unwrap_or_default(),
-            ];
-            row.extend(r.counter_values().iter().map(|(_, c)| c.to_string()));
-            row.push(
-                r.trace
-                    .iter()
-                    .map(|p| format!("{}:{}", p.time, p.cost))
-                    .collect::<Vec<_>>()
-                    .join(" "),
-            );
-            w.write_record(&row).map_err(|e| fail(e.to_string()))?;
+            w.write_record(csv_row(instance, results.concurrency, r))
+                .map_err(|e| fail(e.to_string()))?;
         }
     }
     w.flush().map_err(|e| fail(e.to_string()))
 }
 
-/// Writes `runs.jsonl`: one JSON object per finished run — every field of [`RunRecord`]
-/// (trace, path, validation, counters) plus `problem`, `dimension`, `instance_seed` and
-/// `concurrent_runs`.
+/// Writes every run of `results` to `path` as JSON lines.
 ///
 /// # Errors
 /// [`HarnessError::Io`] or [`HarnessError::Serialise`] if the file cannot be written.
@@ -123,17 +159,12 @@ pub fn write_runs_jsonl(path: &Path, results: &ExperimentResults) -> Result<(), 
     for (index, runs) in results.runs.iter().enumerate() {
         let instance = &results.instances[index];
         for r in runs {
-            let mut value = serde_json::to_value(r).map_err(|e| HarnessError::Serialise {
-                path: path.to_path_buf(),
-                message: e.to_string(),
-            })?;
-            if let Some(object) = value.as_object_mut() {
-                object.insert("problem".into(), instance.label.clone().into());
-                object.insert("dimension".into(), instance.dimension.into());
-                object.insert("instance_seed".into(), instance.instance.into());
-                object.insert("concurrent_runs".into(), results.concurrency.into());
-            }
-            writeln!(out, "{value}").map_err(io)?;
+            writeln!(
+                out,
+                "{}",
+                json_line(path, instance, results.concurrency, r)?
+            )
+            .map_err(io)?;
         }
     }
     out.flush().map_err(io)

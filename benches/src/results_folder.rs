@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::{
-    BenchmarkLog, ExperimentFigure, ExperimentResults, HarnessError, KpiTable,
+    BenchmarkLog, Experiment, ExperimentFigure, ExperimentResults, HarnessError, KpiTable,
     PlannerArenaDatabase, write_runs_csv, write_runs_jsonl,
 };
 
@@ -15,11 +15,11 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 ///
 /// | file | what it holds |
 /// |---|---|
-/// | `experiment.toml` | the experiment as run (command-line overrides applied): rerun it with `mit-star bench experiment.toml` |
-/// | `runs.csv` | one row per run: every per-run figure, counters, the trace |
-/// | `runs.jsonl` | one JSON object per run, with the trace, the path and the validation |
-/// | `logs/<instance>.log` | one OMPL benchmark log per problem instance |
-/// | `benchmark.db` | the Planner Arena database (appended to if it exists) |
+/// | `experiment.toml` | the experiment as run (command-line overrides applied): rerun it with `mit-star bench experiment.toml`; a folder holds one experiment, and running it again resumes it |
+/// | `runs.csv` | one row per run, appended the moment the run finishes: every per-run figure, counters, the trace |
+/// | `runs.jsonl` | one JSON object per run, appended likewise, with the trace, the path and the validation |
+/// | `logs/<instance>.log` | one OMPL benchmark log per problem instance, rebuilt from every recorded run |
+/// | `benchmark.db` | the Planner Arena database: each run committed as it finishes, then rebuilt from every recorded run |
 /// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
 /// | `kpi.md` | the KPI tables |
 ///
@@ -110,6 +110,96 @@ impl ResultsFolder {
     }
 }
 
+impl ResultsFolder {
+    /// Claims the folder for `experiment`: writes `experiment.toml` if the folder holds none,
+    /// and refuses a folder that holds another experiment (its runs would be mixed with this
+    /// one's). The same experiment again resumes: runs already recorded are skipped.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] naming both experiments; [`HarnessError::Io`] if the file
+    /// cannot be written.
+    pub fn claim(&self, experiment: &Experiment) -> Result<PathBuf, HarnessError> {
+        let path = self.path.join("experiment.toml");
+        let text = experiment.to_toml();
+        match std::fs::read_to_string(&path) {
+            Ok(existing) if existing == text => Ok(path),
+            Ok(existing) => {
+                let other = existing
+                    .lines()
+                    .find_map(|l| l.strip_prefix("name = "))
+                    .unwrap_or("another experiment")
+                    .trim_matches('"')
+                    .to_owned();
+                Err(HarnessError::Usage(format!(
+                    "`{}` holds the results of experiment `{other}` (see its experiment.toml), \
+                     not those of `{}` as defined now; write to another --output folder \
+                     (a folder is resumed only by the same experiment)",
+                    self.path.display(),
+                    experiment.name
+                )))
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => std::fs::write(&path, text)
+                .map(|()| path.clone())
+                .map_err(|source| HarnessError::Io { path, source }),
+            Err(source) => Err(HarnessError::Io { path, source }),
+        }
+    }
+
+    /// Rebuilds everything derived from the raw runs — one OMPL `.log` per instance, the
+    /// Planner Arena database (replaced atomically), plots and `kpi.md` — from `results`, every
+    /// run recorded in the folder. The raw files are the journal's and are not touched.
+    ///
+    /// # Errors
+    /// Whatever cannot be written.
+    pub fn finish(
+        &mut self,
+        results: &ExperimentResults,
+        plots: bool,
+    ) -> Result<Vec<PathBuf>, HarnessError> {
+        let mut files = vec![
+            self.path.join("experiment.toml"),
+            self.path.join("runs.csv"),
+            self.path.join("runs.jsonl"),
+        ];
+        let write = |path: PathBuf, text: &str| {
+            std::fs::write(&path, text)
+                .map(|()| path.clone())
+                .map_err(|source| HarnessError::Io { path, source })
+        };
+        let fresh = self.path.join(format!("{DATABASE_FILE}.new"));
+        let _ = std::fs::remove_file(&fresh);
+        let mut database = PlannerArenaDatabase::open(&fresh)?;
+        for (index, instance) in results.instances.iter().enumerate() {
+            if results.runs[index].is_empty() {
+                continue;
+            }
+            let log = BenchmarkLog::from_results(results, index);
+            files.push(write(
+                self.path.join("logs").join(format!("{}.log", instance.id)),
+                &log.to_text(),
+            )?);
+            database.insert(&log)?;
+            if plots {
+                let svg = self.path.join("plots").join(format!("{}.svg", instance.id));
+                let png = svg.with_extension("png");
+                ExperimentFigure::from_results(results, index).save(&svg, &png)?;
+                files.extend([svg, png]);
+            }
+        }
+        drop(database);
+        let target = self.path.join(DATABASE_FILE);
+        std::fs::rename(&fresh, &target).map_err(|source| HarnessError::Io {
+            path: target.clone(),
+            source,
+        })?;
+        self.database = PlannerArenaDatabase::open(&target)?;
+        files.push(target);
+        let kpi = kpi_markdown(results, &KpiTable::from_results(results));
+        files.push(write(self.path.join("kpi.md"), &kpi)?);
+        Ok(files)
+    }
+}
+
 /// Creates `path` if needed and checks that a file can be written in it.
 ///
 /// # Errors
@@ -146,7 +236,7 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
         results.total_time,
         results.concurrency,
         if results.interrupted {
-            " **Interrupted (Ctrl-C): only finished runs are included.**"
+            " **Interrupted (SIGINT or SIGTERM): only finished runs are included.**"
         } else {
             ""
         }

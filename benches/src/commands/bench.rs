@@ -1,16 +1,20 @@
 //! `mit-star bench`: run an experiment and write its results folder.
 
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
-use std::sync::atomic::AtomicBool;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::SystemTime;
 
 use clap::Args;
 
 use crate::commands::CommandOutcome;
+use crate::results_folder::DATABASE_FILE;
 use crate::{
-    ExecutionOptions, Executor, Experiment, HarnessError, KpiTable, ParameterOverrides,
-    PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec, ResultsFolder, ShippedExperiment,
-    parse_configuration,
+    ExecutionOptions, Executor, Experiment, ExperimentResults, HarnessError, KpiTable, MachineInfo,
+    ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec, ResultsFolder,
+    RunJournal, RunKey, RunRecord, RunStatus, ShippedExperiment, iso_timestamp,
+    parse_configuration, results_from_records,
 };
 
 /// Options of `mit-star bench`.
@@ -235,48 +239,127 @@ impl BenchArgs {
             .clone()
             .unwrap_or_else(|| Path::new("results").join(&experiment.name));
         let mut folder = ResultsFolder::prepare(&output)?;
+        folder.claim(&experiment)?;
+        // Runs recorded by an earlier, interrupted bench of this experiment are not rerun.
+        let earlier = RunJournal::read_records(folder.path())?;
+        let recorded: HashSet<RunKey> = earlier
+            .iter()
+            .map(|r| (r.instance.clone(), r.planner.clone(), r.run))
+            .collect();
         let jobs = instances.len() * experiment.planners.len() * experiment.runs;
         let budget: f64 = instances.iter().map(|i| i.budget).sum::<f64>()
             * (experiment.planners.len() * experiment.runs) as f64;
         let concurrency = threads.min(jobs.max(1));
         eprintln!(
-            "experiment `{}`: {} planners × {} problem instances × {} runs = {jobs} runs; \
+            "experiment `{}`: {} planners × {} problem instances × {} runs = {jobs} runs{}; \
              {:.1} s of budget on {concurrency} threads ≈ {:.1} s",
             experiment.name,
             experiment.planners.len(),
             instances.len(),
             experiment.runs,
+            if recorded.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    " ({} already recorded in the folder: resuming)",
+                    recorded.len()
+                )
+            },
             budget,
             budget / concurrency as f64
         );
+        // Every finished run goes to disk (raw files and database) before its worker starts
+        // the next one: SIGTERM, SIGKILL or a crash lose at most the runs in flight.
+        let template = ExperimentResults {
+            experiment: experiment.clone(),
+            instances: instances.clone(),
+            runs: vec![Vec::new(); instances.len()],
+            started_at: iso_timestamp(SystemTime::now()),
+            total_time: 0.0,
+            concurrency,
+            interrupted: false,
+            machine: MachineInfo::detect(),
+        };
+        let journal = Arc::new(Mutex::new(RunJournal::open(
+            folder.path(),
+            &folder.path().join(DATABASE_FILE),
+        )?));
+        let failure: Arc<Mutex<Option<HarnessError>>> = Arc::new(Mutex::new(None));
+        let sink = {
+            let (journal, failure, interrupt) = (
+                Arc::clone(&journal),
+                Arc::clone(&failure),
+                Arc::clone(&interrupt),
+            );
+            move |index: usize, record: &RunRecord| {
+                let written = journal
+                    .lock()
+                    .map_err(|_| HarnessError::Usage("the run journal was poisoned".into()))
+                    .and_then(|mut j| j.append(&template, index, record));
+                if let Err(e) = written
+                    && let Ok(mut slot) = failure.lock()
+                {
+                    // Stop: results that cannot be written must not be computed.
+                    slot.get_or_insert(e);
+                    interrupt.store(true, Ordering::SeqCst);
+                }
+            }
+        };
         let executor = Executor::new(ExecutionOptions {
             threads,
             progress: !self.quiet,
             interrupt,
+            recorded,
+            on_record: Some(Arc::new(sink)),
         });
         let results = executor.run(&experiment, instances)?;
+        drop(journal);
+        if let Some(e) = failure.lock().ok().and_then(|mut f| f.take()) {
+            return Err(e);
+        }
         if results.interrupted {
             eprintln!(
-                "interrupted: writing the {} finished runs",
+                "interrupted: {} runs finished in this session; rebuilding the summaries from every recorded run",
                 results.run_count()
             );
         }
-        let files = folder.write(&results, !self.no_plots)?;
-        let table = KpiTable::from_results(&results);
-        say!("{}", crate::kpi_markdown(&results, &table));
-        say!("Results in {}:", folder.path().display());
+        let new_runs = results.run_count();
+        let all = results_from_records(
+            &results,
+            RunJournal::read_records(folder.path())?,
+            &results.instances,
+        );
+        let files = folder.finish(&all, !self.no_plots)?;
+        let table = KpiTable::from_results(&all);
+        say!("{}", crate::kpi_markdown(&all, &table));
+        say!(
+            "Results in {} ({new_runs} runs added, {} recorded):",
+            folder.path().display(),
+            all.run_count()
+        );
         for f in files {
             say!("  {}", f.display());
         }
-        let invalid = results.invalid_runs();
+        let invalid = all.invalid_runs();
         if !invalid.is_empty() {
             eprintln!(
                 "WARNING: {} runs returned paths that failed the independent validation (see kpi.md)",
                 invalid.len()
             );
         }
+        let errors = all
+            .all_runs()
+            .filter(|r| r.status == RunStatus::Error)
+            .count();
+        if errors > 0 {
+            eprintln!(
+                "ERROR: {errors} runs ended in an error (see the `error` column of runs.csv); exit code 1"
+            );
+        }
         Ok(if results.interrupted {
             CommandOutcome::Interrupted
+        } else if errors > 0 {
+            CommandOutcome::RunErrors
         } else if !invalid.is_empty() {
             CommandOutcome::InvalidPaths
         } else {

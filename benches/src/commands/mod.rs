@@ -65,8 +65,11 @@ pub enum CommandOutcome {
     Success,
     /// Some returned paths failed the independent validation (exit code 3; results written).
     InvalidPaths,
-    /// Interrupted with Ctrl-C (exit code 130; finished runs written).
+    /// Interrupted by SIGINT or SIGTERM (finished runs written; the binary exits with 130 or
+    /// 143, after the signal).
     Interrupted,
+    /// Every run was written, but some ended in an error (exit code 1).
+    RunErrors,
 }
 
 impl CommandOutcome {
@@ -76,6 +79,7 @@ impl CommandOutcome {
             Self::Success => ExitCode::SUCCESS,
             Self::InvalidPaths => ExitCode::from(3),
             Self::Interrupted => ExitCode::from(130),
+            Self::RunErrors => ExitCode::from(1),
         }
     }
 }
