@@ -114,23 +114,9 @@ impl Problem {
 
     /// The smallest side of any obstacle and of any anti-obstacle of the world.
     pub fn thinnest_extents(&self) -> (Option<f64>, Option<f64>) {
-        let thinnest = |boxes: &[validity::AxisBox], cubes: Option<f64>| {
-            boxes
-                .iter()
-                .flat_map(|b| b.widths.iter().copied())
-                .chain(cubes)
-                .reduce(f64::min)
-        };
-        let cubes = self
-            .world
-            .lattices()
-            .iter()
-            .filter(|l| l.count > 0)
-            .map(|l| l.side)
-            .reduce(f64::min);
         (
-            thinnest(self.world.obstacles(), cubes),
-            thinnest(self.world.anti_obstacles(), None),
+            self.world.thinnest_obstacle(),
+            self.world.thinnest_anti_obstacle(),
         )
     }
 

@@ -135,6 +135,17 @@ impl Problem {
     /// # Errors
     /// A [`ProblemFileError`] naming the first problem found (module docs).
     pub fn from_toml_str(text: &str) -> Result<Self, ProblemFileError> {
+        // Large worlds: plain box blocks are read line by line, the rest by the TOML parser.
+        if let Some((rest, obstacles, antis)) = box_blocks::split_box_blocks(text)
+            && !(obstacles.is_empty() && antis.is_empty())
+            && let Ok(mut spec) = toml::from_str::<FileSpec>(&rest)
+            && spec.obstacles.is_empty()
+            && spec.anti_obstacles.is_empty()
+        {
+            spec.obstacles = obstacles;
+            spec.anti_obstacles = antis;
+            return spec.into_problem();
+        }
         // One parse on the happy path; the error path parses again as a plain table to tell
         // a syntax error and an empty file from a schema error.
         let spec: FileSpec = match toml::from_str(text) {
@@ -266,11 +277,11 @@ impl FileSpec {
 
         let mut world = World::new(self.bounds.lower, self.bounds.upper);
         for (i, b) in self.obstacles.into_iter().enumerate() {
-            let b = check_box(&format!("obstacles[{i}]"), b, n)?;
+            let b = check_box(("obstacles", i), b, n)?;
             world.add_obstacle(b).map_err(ProblemError::from)?;
         }
         for (i, b) in self.anti_obstacles.into_iter().enumerate() {
-            let b = check_box(&format!("anti_obstacles[{i}]"), b, n)?;
+            let b = check_box(("anti_obstacles", i), b, n)?;
             world.add_anti_obstacle(b).map_err(ProblemError::from)?;
         }
         for (i, l) in self.lattices.into_iter().enumerate() {
@@ -346,7 +357,20 @@ fn check_state(field: &str, state: &[f64], bounds: &BoundsSpec) -> Result<(), Pr
 }
 
 /// Checks an obstacle or anti-obstacle: lengths, finite, widths not negative.
-fn check_box(field: &str, b: BoxSpec, n: usize) -> Result<AxisBox, ProblemFileError> {
+fn check_box(
+    (table, index): (&str, usize),
+    b: BoxSpec,
+    n: usize,
+) -> Result<AxisBox, ProblemFileError> {
+    let plain = b.center.len() == n
+        && b.widths.len() == n
+        && b.center.iter().all(|x| x.is_finite())
+        && b.widths.iter().all(|w| w.is_finite() && *w >= 0.0);
+    if plain {
+        return Ok(AxisBox::new(b.center, b.widths));
+    }
+    // Only a box with a problem pays for its field names.
+    let field = format!("{table}[{index}]");
     let (center, widths) = (format!("{field}.center"), format!("{field}.widths"));
     check_length(&center, &b.center, n)?;
     check_length(&widths, &b.widths, n)?;
@@ -418,6 +442,7 @@ fn bad_value(field: &str, value: f64, requirement: &'static str) -> ProblemFileE
     }
 }
 
+mod box_blocks;
 mod writer;
 
 #[cfg(test)]

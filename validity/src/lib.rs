@@ -47,6 +47,7 @@
 #![forbid(unsafe_code)]
 
 mod bisection_order;
+mod box_tree;
 mod dense_checker;
 mod edge_checker;
 mod error;
@@ -66,7 +67,7 @@ pub use fixed_sparse_checker::FixedSparseChecker;
 pub use length_adaptive_checker::LengthAdaptiveChecker;
 pub use segment_validation::{SegmentCause, SegmentVerdict};
 pub use state_validity::{AllValid, Counted, StateValidity};
-pub use world::{AxisBox, Lattice, World};
+pub use world::{AxisBox, Lattice, TREE_THRESHOLD, World};
 
 /// The full-resolution step `L = resolution × maximum extent` (OMPL's convention, spec §2).
 ///

@@ -1,8 +1,16 @@
 //! [`World`]: axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics).
 
+use std::sync::OnceLock;
+
 use spaces::StateSpace;
 
+use crate::box_tree::BoxTree;
 use crate::{StateValidity, ValidityError};
+
+/// Above this many boxes a world checks states through a bounding-volume hierarchy; at or
+/// below it a linear scan of the contiguous rows is as fast (measured: `benches/primitives.rs`,
+/// group `world_boxes`).
+pub const TREE_THRESHOLD: usize = 32;
 
 /// An axis-aligned hyperrectangle given by its centre and full side lengths.
 #[derive(Debug, Clone, PartialEq)]
@@ -64,7 +72,7 @@ pub struct Lattice {
 /// assert!(!world.is_valid(&[0.7, 0.0]));  // out of bounds
 /// # Ok::<(), validity::ValidityError>(())
 /// ```
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct World {
     lower: Vec<f64>,
     upper: Vec<f64>,
@@ -75,6 +83,21 @@ pub struct World {
     obstacle_rows: Vec<f64>,
     /// Anti-obstacles likewise.
     anti_rows: Vec<f64>,
+    /// Hierarchies over the rows of large worlds, built on first use after the last change.
+    obstacle_tree: OnceLock<BoxTree>,
+    anti_tree: OnceLock<BoxTree>,
+}
+
+/// Worlds are equal when they define the same valid set the same way (the hierarchies are
+/// caches).
+impl PartialEq for World {
+    fn eq(&self, other: &Self) -> bool {
+        self.lower == other.lower
+            && self.upper == other.upper
+            && self.obstacles == other.obstacles
+            && self.anti_obstacles == other.anti_obstacles
+            && self.lattices == other.lattices
+    }
 }
 
 impl World {
@@ -89,6 +112,8 @@ impl World {
             lattices: Vec::new(),
             obstacle_rows: Vec::new(),
             anti_rows: Vec::new(),
+            obstacle_tree: OnceLock::new(),
+            anti_tree: OnceLock::new(),
         }
     }
 
@@ -171,6 +196,7 @@ impl World {
         self.validate(&obstacle, "obstacle", index)?;
         push_rows(&mut self.obstacle_rows, &obstacle);
         self.obstacles.push(obstacle);
+        self.obstacle_tree = OnceLock::new();
         Ok(())
     }
 
@@ -183,6 +209,7 @@ impl World {
         self.validate(&anti, "anti-obstacle", index)?;
         push_rows(&mut self.anti_rows, &anti);
         self.anti_obstacles.push(anti);
+        self.anti_tree = OnceLock::new();
         Ok(())
     }
 
@@ -241,11 +268,43 @@ impl World {
     /// `true` if the state is inside some obstacle (ignoring anti-obstacles and bounds).
     #[inline]
     pub fn in_obstacle(&self, state: &[f64]) -> bool {
-        in_any(&self.obstacle_rows, state)
+        self.in_boxes(&self.obstacle_rows, &self.obstacle_tree, state)
             || self
                 .lattices
                 .iter()
                 .any(|l| l.count > 0 && self.in_lattice(l, state))
+    }
+}
+
+impl World {
+    /// `true` if `state` lies in a box of `rows`: a scan for small worlds, the hierarchy
+    /// (built once, on first use) above [`TREE_THRESHOLD`] boxes.
+    #[inline]
+    fn in_boxes(&self, rows: &[f64], tree: &OnceLock<BoxTree>, state: &[f64]) -> bool {
+        let width = 2 * state.len();
+        if width == 0 || rows.len() <= TREE_THRESHOLD * width {
+            return in_any(rows, state);
+        }
+        tree.get_or_init(|| BoxTree::build(rows, state.len()))
+            .contains(state)
+    }
+
+    /// The smallest full side of any obstacle or lattice cube (`None` without obstacles).
+    pub fn thinnest_obstacle(&self) -> Option<f64> {
+        let cubes = self.lattices.iter().filter(|l| l.count > 0).map(|l| l.side);
+        self.obstacles
+            .iter()
+            .flat_map(|b| b.widths.iter().copied())
+            .chain(cubes)
+            .reduce(f64::min)
+    }
+
+    /// The smallest full side of any anti-obstacle (`None` without anti-obstacles).
+    pub fn thinnest_anti_obstacle(&self) -> Option<f64> {
+        self.anti_obstacles
+            .iter()
+            .flat_map(|b| b.widths.iter().copied())
+            .reduce(f64::min)
     }
 }
 
@@ -276,7 +335,8 @@ impl StateValidity for World {
     #[inline]
     fn is_valid(&self, state: &[f64]) -> bool {
         // Most states are in no obstacle: test obstacles first, anti-obstacles only on a hit.
-        self.in_bounds(state) && (!self.in_obstacle(state) || in_any(&self.anti_rows, state))
+        self.in_bounds(state)
+            && (!self.in_obstacle(state) || self.in_boxes(&self.anti_rows, &self.anti_tree, state))
     }
 }
 

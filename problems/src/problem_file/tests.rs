@@ -325,3 +325,36 @@ fn quoting_escapes_control_characters() {
     assert_eq!(number(5e-6), "5e-6");
     assert_eq!(array(&[-0.5, 0.0, 1.0]), "[-0.5, 0.0, 1.0]");
 }
+
+/// The same file through the general TOML parser only (no fast path for box blocks).
+fn through_toml_only(text: &str) -> Result<Problem, ProblemFileError> {
+    toml::from_str::<super::FileSpec>(text)
+        .map_err(|e| super::schema_error(text, &e))?
+        .into_problem()
+}
+
+#[test]
+fn the_box_block_fast_path_reads_every_file_as_toml_does() {
+    for family in crate::catalogue() {
+        for n in [2, 3, 5, 8] {
+            for seed in 0..3 {
+                let problem = family.build(n, seed).unwrap();
+                let text = problem.to_toml_string();
+                let fast = Problem::from_toml_str(&text).unwrap();
+                assert_eq!(fast, through_toml_only(&text).unwrap(), "{}", family.name());
+                assert_eq!(fast, problem, "{} round trip", family.name());
+            }
+        }
+    }
+    // Odd but valid TOML takes the general path and means the same.
+    let odd = BASE.replace(
+        "[[obstacles]]",
+        "[[obstacles]] # the wall, with a comment\n# and a comment line",
+    );
+    assert_eq!(load(&odd).unwrap(), through_toml_only(&odd).unwrap());
+    let underscores = BASE.replace("widths = [0.2, 0.8]", "widths = [0.2, 0.8_0]");
+    assert_eq!(
+        load(&underscores).is_ok(),
+        through_toml_only(&underscores).is_ok()
+    );
+}
