@@ -27,7 +27,11 @@ impl Mix {
 }
 
 fn main() {
-    let boxes = 100_000;
+    // `LARGE_WORLD_BOXES=32` measures a small world instead (the scan/hierarchy threshold).
+    let boxes: usize = std::env::var("LARGE_WORLD_BOXES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(100_000);
     let queries = 200_000;
     println!("| n | build (ms) | hierarchy (ns/check) | linear scan (ns/check) | speed-up |");
     println!("|---|---|---|---|---|");
@@ -36,7 +40,8 @@ fn main() {
         let mut world = World::new(vec![-0.5; n], vec![0.5; n]);
         for _ in 0..boxes {
             let center: Vec<f64> = (0..n).map(|_| rng.next() - 0.5).collect();
-            let widths: Vec<f64> = (0..n).map(|_| 0.01 + 0.01 * rng.next()).collect();
+            let side = if boxes > 1000 { 0.01 } else { 0.1 };
+            let widths: Vec<f64> = (0..n).map(|_| side + side * rng.next()).collect();
             world.add_obstacle(AxisBox::new(center, widths)).unwrap();
         }
         let states: Vec<Vec<f64>> = (0..queries)

@@ -8,8 +8,9 @@ use crate::box_tree::BoxTree;
 use crate::{StateValidity, ValidityError};
 
 /// Above this many boxes a world checks states through a bounding-volume hierarchy; at or
-/// below it a linear scan of the contiguous rows is as fast (measured: `benches/primitives.rs`,
-/// group `world_boxes`).
+/// below it a linear scan of the contiguous rows is as fast. Measured with
+/// `LARGE_WORLD_BOXES=32 cargo run --release -p validity --example large_world` (and 33): about
+/// 160 ns per check in R^4 either way; at 128 boxes the hierarchy is 4–9× faster.
 pub const TREE_THRESHOLD: usize = 32;
 
 /// An axis-aligned hyperrectangle given by its centre and full side lengths.
