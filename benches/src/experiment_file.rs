@@ -169,7 +169,7 @@ impl ExperimentFile {
     pub fn parse(text: &str, origin: &str) -> Result<Self, HarnessError> {
         toml::from_str(text).map_err(|e| HarnessError::ExperimentFile {
             file: origin.to_owned(),
-            message: e.to_string().trim_end().to_owned(),
+            message: problems::humanise(e.to_string().trim_end()),
         })
     }
 
@@ -302,11 +302,10 @@ fn problem_spec(
             ));
         }
     };
-    if let Some(b) = budgets.iter().find(|b| !(b.is_finite() && **b > 0.0)) {
-        return Err(bad(
-            ".time",
-            HarnessError::Usage(format!("{b} is not a positive number of seconds")),
-        ));
+    for &b in &budgets {
+        if let Err(e) = crate::budget_duration(b) {
+            return Err(bad(".time", HarnessError::Usage(e.to_string())));
+        }
     }
     let instances = match (p.instances, p.instance_seeds) {
         (Some(_), Some(_)) => {

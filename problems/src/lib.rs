@@ -44,7 +44,7 @@
 //! | [`Enclosure`], [`EnclosedEnds`] | the three enclosure families' shared builder, and which ends it encloses ([`GoalEnclosed`], [`StartEnclosed`], [`BothEnclosed`]) |
 //! | [`RepeatingRectangles`] | `repeating-rectangles`: a lattice of `49^n` small cubes |
 //! | [`catalogue`], [`builtin`], [`Family`], [`Parameter`] | the families by name, with descriptions and default parameters |
-//! | [`problem_file`] | the TOML problem file format ([`Problem::from_toml_str`], [`Problem::from_file`], [`Problem::to_toml_string`]) |
+//! | [`problem_file`] | the TOML problem file format ([`Problem::from_toml_str`], [`Problem::from_file`], [`Problem::to_toml_string`]); [`humanise`] for TOML messages |
 //! | [`ProblemError`], [`ProblemFileError`], [`Endpoint`], [`Location`] | what is wrong, and where |
 //!
 //! Every family lives in `[-0.5, 0.5]^n` (add 0.5 for the paper's unit-cube coordinates), gives
@@ -87,6 +87,7 @@ pub use goal_enclosure::{GoalEnclosed, GoalEnclosure};
 pub use narrow_passage::NarrowPassage;
 pub use obstacle_free::ObstacleFree;
 pub use problem::Problem;
+pub use problem_file::humanise;
 pub use random_rectangles::RandomRectangles;
 pub use repeating_rectangles::RepeatingRectangles;
 pub use start_enclosure::{StartEnclosed, StartEnclosure};

@@ -202,8 +202,14 @@ fn schema_error(text: &str, error: &toml::de::Error) -> ProblemFileError {
     ProblemFileError::Schema { location, message }
 }
 
-/// A deserialiser's message in the file's words: no Rust type names, no 300-digit numbers.
-fn humanise(message: &str) -> String {
+/// A TOML deserialiser's message in the file's words: no Rust type names (`usize`, `f64`), no
+/// 300-digit numbers. Shared by every TOML file format of the project.
+///
+/// ```
+/// let m = problems::humanise("invalid type: floating point `100000000000000000000.0`, expected usize");
+/// assert_eq!(m, "invalid type: number `1e20`, expected a whole number, 0 or more");
+/// ```
+pub fn humanise(message: &str) -> String {
     let mut text = message.to_owned();
     for (rust, words) in [
         ("expected usize", "expected a whole number, 0 or more"),
