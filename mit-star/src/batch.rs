@@ -60,6 +60,7 @@ where
     /// reverse search from the goals, the forward search from the start.
     pub(crate) fn restart_searches(&mut self, stop: &crate::termination::SolveStop<'_>) {
         self.restart_pending = false;
+        self.reverse_restart_pending = false;
         // Deferred expansions would only have queued edges these restarts discard.
         self.deferred.clear();
         self.checker.reset();

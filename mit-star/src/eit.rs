@@ -106,6 +106,8 @@ pub struct Eit<S, V, Smp, E, H = Euclidean> {
     /// `(vertex, excluded neighbour, forward?)`: each costs a neighbour query, so they wait for
     /// the next iteration, which performs them first, in order.
     pub(crate) deferred: Vec<(u32, u32, bool)>,
+    /// A reverse-search restart asked for after the termination condition fired.
+    pub(crate) reverse_restart_pending: bool,
     ready: bool,
     pub(crate) trace: Trace,
     pub(crate) counters: Counters,
@@ -179,6 +181,7 @@ where
             exhausted: false,
             restart_pending: false,
             deferred: Vec::new(),
+            reverse_restart_pending: false,
             ready: false,
             trace: Trace::default(),
             counters: Counters::default(),
@@ -299,7 +302,11 @@ where
     /// One iteration (spec §3.1).
     pub(crate) fn iterate(&mut self, stop: &SolveStop<'_>) {
         self.counters.iterations += 1;
-        if !self.deferred.is_empty() {
+        if self.reverse_restart_pending {
+            // First: the restart discards the reverse expansions deferred before it.
+            self.reverse_restart_pending = false;
+            self.restart_reverse(stop);
+        } else if !self.deferred.is_empty() {
             self.run_deferred(stop);
         } else if self.restart_pending {
             self.restart_searches(stop);
@@ -473,6 +480,7 @@ where
         self.exhausted = false;
         self.restart_pending = false;
         self.deferred.clear();
+        self.reverse_restart_pending = false;
         self.ready = false;
         self.trace.clear();
         self.counters = Counters::default();

@@ -243,7 +243,13 @@ where
         }
         self.checker.refine();
         self.counters.reverse_restarts += 1;
-        self.restart_reverse(stop);
+        // The restart re-keys the whole forward queue without polling: after the deadline it
+        // waits for the next iteration.
+        if stop.should_stop() {
+            self.reverse_restart_pending = true;
+        } else {
+            self.restart_reverse(stop);
+        }
         if let Some(observer) = self.observer.as_mut() {
             observer.on_reverse_restart(&RestartEvent {
                 restarts: self.counters.reverse_restarts,

@@ -200,14 +200,15 @@ impl Parameters {
 /// assert_eq!(mit_star::k_nearest(100, 4, 1.001), 16);
 /// ```
 pub fn k_nearest(q: usize, n: usize, eta: f64) -> usize {
-    // Never more neighbours than vertices: a huge `η` connects everything, it does not
-    // overflow the neighbour lists.
+    // Never far more neighbours than vertices: a huge `η` connects everything, it does not
+    // overflow the neighbour lists (the floor of 64 keeps the formula's value for small `q`).
     let count = q.max(2);
+    let cap = count.max(64);
     let q = count as f64;
     let n = n.max(1) as f64;
     let k = (eta * std::f64::consts::E * (1.0 + 1.0 / n) * q.ln()).ceil();
     if k.is_finite() {
-        (k as usize).clamp(1, count)
+        (k as usize).clamp(1, cap)
     } else {
         1
     }
