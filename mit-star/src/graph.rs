@@ -6,12 +6,12 @@ use std::collections::HashMap;
 use petgraph::Undirected;
 use petgraph::graph::{EdgeIndex, NodeIndex};
 use petgraph::stable_graph::StableGraph;
-use spaces::States;
 use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 
 use crate::Neighbours;
 use crate::edge_hasher::{BuildEdgeHasher, edge_key};
 use crate::kd_tree::Alive;
+use crate::state_chunks::StateChunks;
 use crate::vertex::{NONE, Vertex};
 
 use crate::{NearestNeighbors, VertexId, VertexKind};
@@ -56,8 +56,8 @@ pub(crate) const DEAD: u32 = u32::MAX;
 
 /// The random geometric graph (RGG) over every sample the planner keeps.
 ///
-/// Vertices are the samples, the start and the goals; their states live in one contiguous
-/// [`States`] store indexed by vertex id, and their search data is the node weight of a petgraph
+/// Vertices are the samples, the start and the goals; their states live in contiguous chunks
+/// indexed by vertex id (chunks, so that growing never copies them), and their search data is the node weight of a petgraph
 /// [`StableGraph`] (so ids stay valid when pruning removes vertices). The graph is implicit: a
 /// vertex's neighbours — its `k` nearest vertices or those within a radius, found with
 /// [`NearestNeighbors`] — are computed when it is first expanded and cached with their `ĉ` and
@@ -71,7 +71,7 @@ pub(crate) const DEAD: u32 = u32::MAX;
 #[derive(Debug, Clone)]
 pub struct RandomGeometricGraph {
     pub(crate) graph: StableGraph<Vertex, EdgeRecord, Undirected, u32>,
-    pub(crate) states: States,
+    pub(crate) states: StateChunks,
     /// Birth stamp per id (`DEAD` once removed); a new vertex gets a fresh stamp.
     pub(crate) births: Vec<u32>,
     next_birth: u32,
@@ -99,7 +99,7 @@ impl RandomGeometricGraph {
     pub(crate) fn new(dimension: usize, euclidean: bool) -> Self {
         Self {
             graph: StableGraph::default(),
-            states: States::new(dimension),
+            states: StateChunks::new(dimension),
             births: Vec::new(),
             next_birth: 0,
             edges: HashMap::default(),
