@@ -50,8 +50,10 @@ mod bisection_order;
 mod box_tree;
 mod dense_checker;
 mod edge_checker;
+mod edge_progress;
 mod error;
 mod fixed_sparse_checker;
+mod grid_walker;
 mod length_adaptive_checker;
 mod segment_validation;
 mod state_validity;
@@ -59,11 +61,11 @@ mod world;
 
 pub use bisection_order::{BisectionOrder, EdgeGrid};
 pub use dense_checker::DenseChecker;
-pub use edge_checker::{
-    EdgeChecker, EdgeCounters, EdgeProgress, EdgeStatus, GridWalker, STOP_POLL, canonical_ends,
-};
+pub use edge_checker::EdgeChecker;
+pub use edge_progress::{EdgeProgress, EdgeStatus};
 pub use error::ValidityError;
 pub use fixed_sparse_checker::FixedSparseChecker;
+pub use grid_walker::{EdgeCounters, GridWalker, STOP_POLL, canonical_ends};
 pub use length_adaptive_checker::LengthAdaptiveChecker;
 pub use segment_validation::{SegmentCause, SegmentVerdict};
 pub use state_validity::{AllValid, Counted, StateValidity};

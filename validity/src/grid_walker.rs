@@ -1,0 +1,276 @@
+//! The walk over an edge's canonical grid shared by every checker ([`GridWalker`]), the end it
+//! starts from ([`canonical_ends`]) and how often it polls the stop condition ([`STOP_POLL`]).
+
+use spaces::{StateSpace, Stop};
+
+use crate::{EdgeGrid, EdgeProgress, EdgeStatus, StateValidity, ValidityError};
+
+/// Counters of edge-checking work, for benchmarks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct EdgeCounters {
+    /// Sparse checks requested.
+    pub sparse_checks: u64,
+    /// Full checks requested.
+    pub full_checks: u64,
+    /// Grid points tested (state validity calls made by edge checks).
+    pub points_tested: u64,
+}
+
+/// Walks an edge's canonical grid in bisection order, testing states; shared by every checker.
+///
+/// Owns the one scratch state the walk needs (allocated once, on first use), so checking an edge
+/// never allocates. Polls the stop condition every [`STOP_POLL`] points, and before the first
+/// point of a walk longer than that (see [`advance`](Self::advance)).
+#[derive(Debug, Clone)]
+pub struct GridWalker {
+    step: f64,
+    scratch: Vec<f64>,
+    counters: EdgeCounters,
+}
+
+/// How many grid points a walk tests between two polls of the stop condition: small enough that
+/// a slow validity checker (an arm with meshes, 100 µs a state) stops within a few
+/// milliseconds, large enough that reading the clock costs little next to 32 state checks.
+///
+/// A walk of more than `STOP_POLL` points polls before its first point and after every
+/// `STOP_POLL` points tested, so a walk begun after the stop fired tests nothing and a running
+/// walk tests at most `STOP_POLL` points after it fires. A walk of at most `STOP_POLL` points
+/// never polls (it is over before a poll would be due). A poll only ends a walk when the stop
+/// has fired: a walk the stop lets run always tests at least one point.
+pub const STOP_POLL: u64 = 32;
+
+/// The edge `a — b` with its ends in canonical order: the lexicographically smaller state first
+/// (coordinates compared with `f64::total_cmp`).
+///
+/// Every walk of an edge starts from this end, whichever end the caller named, so that a sparse
+/// check from one end and a full check from the other test disjoint prefixes of *one* order of
+/// *one* grid. (The bisection order is not symmetric under `i → N − i` unless `2^D` divides `N`:
+/// walking from the other end would skip points never tested and repeat others.)
+///
+/// ```
+/// let (a, b) = ([0.5, 0.0], [0.1, 0.9]);
+/// assert_eq!(validity::canonical_ends(&a, &b), (&b[..], &a[..]));
+/// assert_eq!(validity::canonical_ends(&b, &a), (&b[..], &a[..]));
+/// ```
+#[inline]
+pub fn canonical_ends<'a>(a: &'a [f64], b: &'a [f64]) -> (&'a [f64], &'a [f64]) {
+    for (x, y) in a.iter().zip(b) {
+        match x.total_cmp(y) {
+            std::cmp::Ordering::Less => return (a, b),
+            std::cmp::Ordering::Greater => return (b, a),
+            std::cmp::Ordering::Equal => {}
+        }
+    }
+    (a, b)
+}
+
+impl GridWalker {
+    /// A walker for grids of step `step` (the full-resolution check length `L`).
+    ///
+    /// # Errors
+    /// [`ValidityError::NotPositive`] if `step` is not finite and positive.
+    pub fn new(step: f64) -> Result<Self, ValidityError> {
+        if !(step.is_finite() && step > 0.0) {
+            return Err(ValidityError::NotPositive {
+                name: "edge-check step",
+                value: step,
+            });
+        }
+        Ok(Self {
+            step,
+            scratch: Vec::new(),
+            counters: EdgeCounters::default(),
+        })
+    }
+
+    /// The full-resolution step `L`.
+    #[inline]
+    pub fn step(&self) -> f64 {
+        self.step
+    }
+
+    /// Work counters so far.
+    pub fn counters(&self) -> EdgeCounters {
+        self.counters
+    }
+
+    /// Mutable access to the counters (to count checks and to reset).
+    pub fn counters_mut(&mut self) -> &mut EdgeCounters {
+        &mut self.counters
+    }
+
+    /// The canonical grid of the edge `a — b` (its length measured from the
+    /// [canonical end](canonical_ends), so both directions give the same grid).
+    #[inline]
+    pub fn grid<S: StateSpace + ?Sized>(&self, space: &S, a: &[f64], b: &[f64]) -> EdgeGrid {
+        let (a, b) = canonical_ends(a, b);
+        EdgeGrid::new(space.distance(a, b), self.step)
+    }
+
+    /// Tests the positions of the bisection order of edge `(a, b)` on its canonical `grid`
+    /// (from [`grid`](Self::grid)) up to `target` (exclusive) that `progress` has not covered
+    /// yet, stopping at the first invalid point. Updates `progress`.
+    ///
+    /// The walk starts from the [canonical end](canonical_ends) of the edge whatever the order
+    /// of `a` and `b`: the grid's fractions are measured from that end, so `progress` made from
+    /// either end continues the same order of the same points. The stop condition is polled as
+    /// [`STOP_POLL`] describes; a stopped walk keeps the progress made, so a later call resumes.
+    pub fn advance<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b, grid): (&[f64], &[f64], EdgeGrid),
+        target: u64,
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        if progress.is_invalid() {
+            return EdgeStatus::Invalid;
+        }
+        let (a, b) = canonical_ends(a, b);
+        let target = target.min(grid.points());
+        if progress.0 >= target {
+            return progress.status(&grid);
+        }
+        self.scratch.resize(space.dimension(), 0.0);
+        let start = progress.0;
+        // A walk longer than one poll period polls before its first point too (a walk begun
+        // after the deadline tests nothing); a shorter walk never polls: it ends within
+        // `STOP_POLL` points anyway, and one clock read would cost as much as a few of them.
+        let polls_first = target - start > STOP_POLL;
+        let mut position = start;
+        for index in grid.order(start, target) {
+            let walked = position - start;
+            if walked % STOP_POLL == 0 && (walked > 0 || polls_first) && stop.should_stop() {
+                break;
+            }
+            space.interpolate(a, b, grid.fraction(index), &mut self.scratch);
+            self.counters.points_tested += 1;
+            if !validity.is_valid(&self.scratch) {
+                *progress = EdgeProgress(EdgeProgress::INVALID);
+                return EdgeStatus::Invalid;
+            }
+            position += 1;
+        }
+        *progress = EdgeProgress(position);
+        progress.status(&grid)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::cell::Cell;
+
+    use spaces::{Never, RealVectorSpace};
+
+    use super::*;
+    use crate::{AllValid, Counted};
+
+    /// Counts its polls and fires from poll number `fires_at` (1-based) on.
+    struct Polls {
+        polls: Cell<u64>,
+        fires_at: u64,
+    }
+
+    impl Polls {
+        fn firing_at(fires_at: u64) -> Self {
+            Self {
+                polls: Cell::new(0),
+                fires_at,
+            }
+        }
+    }
+
+    impl Stop for Polls {
+        fn should_stop(&self) -> bool {
+            self.polls.set(self.polls.get() + 1);
+            self.polls.get() >= self.fires_at
+        }
+    }
+
+    /// Walks the whole grid of `intervals` intervals on `[0, 1]` from fresh progress.
+    fn walk(intervals: u64, stop: &dyn Stop) -> (EdgeStatus, EdgeProgress, u64) {
+        let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
+        let mut walker = GridWalker::new(1.0 / intervals as f64).unwrap();
+        let validity = Counted::new(AllValid);
+        let mut progress = EdgeProgress::default();
+        let grid = EdgeGrid::with_intervals(intervals);
+        let status = walker.advance(
+            &space,
+            &validity,
+            (&[0.0], &[1.0], grid),
+            u64::MAX,
+            &mut progress,
+            stop,
+        );
+        (status, progress, validity.count())
+    }
+
+    #[test]
+    fn a_walk_begun_after_the_stop_tests_nothing_unless_it_is_short() {
+        let fired = Polls::firing_at(1);
+        // 33 points: longer than one poll period, polled before the first point.
+        let (status, progress, tested) = walk(34, &fired);
+        assert_eq!(
+            (status, progress.tested(), tested),
+            (EdgeStatus::Unknown, 0, 0)
+        );
+        assert_eq!(fired.polls.get(), 1);
+        // 32 points: never polled, finished.
+        let fired = Polls::firing_at(1);
+        let (status, progress, tested) = walk(33, &fired);
+        assert_eq!(
+            (status, progress.tested(), tested),
+            (EdgeStatus::Valid, 32, 32)
+        );
+        assert_eq!(fired.polls.get(), 0);
+    }
+
+    #[test]
+    fn polls_come_every_stop_poll_points() {
+        for fires_at in 1..6 {
+            let stop = Polls::firing_at(fires_at);
+            let (status, progress, tested) = walk(1000, &stop);
+            assert_eq!(status, EdgeStatus::Unknown);
+            assert_eq!(progress.tested(), STOP_POLL * (fires_at - 1));
+            assert_eq!(tested, progress.tested());
+            assert_eq!(stop.polls.get(), fires_at);
+        }
+        for intervals in [2_u64, 33, 34, 65, 66, 1000] {
+            let stop = Polls::firing_at(u64::MAX);
+            let (status, progress, _) = walk(intervals, &stop);
+            let points = intervals - 1;
+            assert_eq!((status, progress.tested()), (EdgeStatus::Valid, points));
+            let expected = if points > STOP_POLL {
+                points.div_ceil(STOP_POLL)
+            } else {
+                0
+            };
+            assert_eq!(stop.polls.get(), expected, "{points} points");
+        }
+    }
+
+    #[test]
+    fn a_stopped_walk_resumes_where_it_stopped() {
+        let (_, mut progress, _) = walk(1000, &Polls::firing_at(3));
+        assert_eq!(progress.tested(), 2 * STOP_POLL);
+        let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
+        let mut walker = GridWalker::new(1e-3).unwrap();
+        let validity = Counted::new(AllValid);
+        // Resumed from the other end: the same order continues.
+        let status = walker.advance(
+            &space,
+            &validity,
+            (&[1.0], &[0.0], EdgeGrid::with_intervals(1000)),
+            u64::MAX,
+            &mut progress,
+            &Never,
+        );
+        assert_eq!(status, EdgeStatus::Valid);
+        assert_eq!(validity.count(), 999 - 2 * STOP_POLL);
+    }
+}
