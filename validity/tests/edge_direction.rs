@@ -90,6 +90,10 @@ proptest! {
             prop_assert_ne!(status, EdgeStatus::Invalid);
         }
         let mut c = checker(final_kind, step, 0);
+        // The remaining work is the same from either end, and is what the full check will do.
+        let remaining = c.remaining(&space, a, b, progress);
+        prop_assert_eq!(remaining, c.remaining(&space, b, a, progress));
+        prop_assert_eq!(remaining, grid.points() - recorder.seen.borrow().len() as u64);
         let (x, y) = if full_from_b { (b, a) } else { (a, b) };
         let status = c.check_full(&space, recorder, x, y, &mut progress, &Never);
         prop_assert_eq!(status, EdgeStatus::Valid);
