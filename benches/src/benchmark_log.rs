@@ -164,13 +164,26 @@ impl BenchmarkLog {
     /// The log of instance `index` of `results`; its header's run count is the number of runs
     /// recorded (per planner, the most any planner has), not the number planned.
     pub fn from_results(results: &ExperimentResults, index: usize) -> Self {
+        Self::from_runs(results, index, &results.runs[index], results.total_time)
+    }
+
+    /// The log of instance `index` of `results` holding `runs` (runs of that instance, in
+    /// place of `results.runs[index]`) and total time `total_time`: how a single finished run
+    /// is committed to the database without copying the experiment's results.
+    pub(crate) fn from_runs(
+        results: &ExperimentResults,
+        index: usize,
+        runs: &[RunRecord],
+        total_time: f64,
+    ) -> Self {
         let instance = &results.instances[index];
         let experiment = &results.experiment;
         let planners = experiment
             .planners
             .iter()
             .map(|spec| {
-                let runs = results.runs_of(index, spec.name());
+                let runs: Vec<&RunRecord> =
+                    runs.iter().filter(|r| r.planner == spec.name()).collect();
                 let mut common: Vec<(String, String)> = spec
                     .parameters_for_seed(experiment.seed)
                     .settings()
@@ -226,8 +239,8 @@ impl BenchmarkLog {
             time_limit: instance.budget,
             memory_limit: -1.0,
             // The recorded truth: an interrupted experiment has fewer runs than planned.
-            runs_per_planner: Some(recorded_runs_per_planner(results, index)),
-            total_time: results.total_time,
+            runs_per_planner: Some(recorded_runs_per_planner(results, runs)),
+            total_time,
             enums: vec![EnumType {
                 name: "status".into(),
                 values: OMPL_STATUS.iter().map(|s| (*s).to_owned()).collect(),
@@ -321,13 +334,13 @@ fn run_values(r: &RunRecord) -> Vec<LogValue> {
     v
 }
 
-/// Runs recorded per planner on instance `index` (the most any planner has).
-pub(crate) fn recorded_runs_per_planner(results: &ExperimentResults, index: usize) -> usize {
+/// Runs per planner of the experiment among `runs` (the most any planner has).
+fn recorded_runs_per_planner(results: &ExperimentResults, runs: &[RunRecord]) -> usize {
     results
         .experiment
         .planners
         .iter()
-        .map(|spec| results.runs_of(index, spec.name()).len())
+        .map(|spec| runs.iter().filter(|r| r.planner == spec.name()).count())
         .max()
         .unwrap_or(0)
 }

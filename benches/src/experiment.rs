@@ -97,17 +97,11 @@ impl Experiment {
             message,
         };
         // The name becomes the default output folder `results/<name>`: nothing may escape it.
-        let safe = |c: char| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.');
-        if self.name.is_empty()
-            || self.name.starts_with('.')
-            || !self.name.chars().all(safe)
-            || self.name.len() > 100
-        {
+        if !is_safe_name(&self.name) {
             return Err(bad(
                 "name",
                 format!(
-                    "is {:?}; an experiment name names its results folder: use 1 to 100 letters, \
-                     digits, `-`, `_` or `.`, not starting with `.`",
+                    "is {:?}; an experiment name names its results folder: {NAME_RULE}",
                     self.name
                 ),
             ));
@@ -281,9 +275,102 @@ impl Experiment {
     }
 }
 
+/// The rule of experiment names, which name their results folder `results/<name>`.
+pub(crate) const NAME_RULE: &str = "use 1 to 100 letters, digits, `-`, `_` or `.`, not starting \
+     with `.` and without `..`";
+
+/// Longest experiment name.
+const MAX_NAME_LENGTH: usize = 100;
+
+/// `true` if `name` follows [`NAME_RULE`]: a single, visible path component that cannot leave
+/// `results/`.
+pub(crate) fn is_safe_name(name: &str) -> bool {
+    let allowed = |c: char| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.');
+    !name.is_empty()
+        && name.len() <= MAX_NAME_LENGTH
+        && !name.starts_with('.')
+        && !name.contains("..")
+        && name.chars().all(allowed)
+}
+
+/// A name following [`NAME_RULE`] made from `text` (a file's stem, a problem label): other
+/// characters become `-`, leading dots and repeated dots are dropped, it is cut to 100
+/// characters, and an empty result is `experiment`. Only default names are made this way;
+/// names the user gives are checked as given.
+pub(crate) fn safe_name(text: &str) -> String {
+    let mut name = String::with_capacity(text.len().min(MAX_NAME_LENGTH));
+    for c in text.chars() {
+        let c = if c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.') {
+            c
+        } else {
+            '-'
+        };
+        if c == '.' && (name.is_empty() || name.ends_with('.')) {
+            continue;
+        }
+        if name.len() == MAX_NAME_LENGTH {
+            break;
+        }
+        name.push(c);
+    }
+    if name.is_empty() {
+        "experiment".to_owned()
+    } else {
+        name
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn names_that_could_leave_the_results_folder_are_refused() {
+        for bad in [
+            "",
+            ".",
+            "..",
+            "../../escape",
+            "a/b",
+            "/abs",
+            ".hidden",
+            "a..b",
+            "a\\b",
+            "é",
+            "a b",
+        ] {
+            assert!(!is_safe_name(bad), "{bad:?}");
+            let mut e = Experiment::shipped("smoke").unwrap();
+            e.name = bad.to_owned();
+            let message = e.validate("x").unwrap_err().to_string();
+            assert!(
+                message.contains("`name`") && message.contains(NAME_RULE),
+                "{message}"
+            );
+        }
+        assert!(!is_safe_name(&"x".repeat(101)));
+        for good in ["smoke", "paper-table", "dw_2.v3", &"x".repeat(100)] {
+            assert!(is_safe_name(good), "{good:?}");
+        }
+    }
+
+    #[test]
+    fn default_names_are_made_safe() {
+        for (text, name) in [
+            ("smoke", "smoke"),
+            ("../../escape", "-.-escape"),
+            ("", "experiment"),
+            ("...", "experiment"),
+            (".hidden", "hidden"),
+            ("my experiment (2)", "my-experiment--2-"),
+            ("a..b", "a.b"),
+        ] {
+            let made = safe_name(text);
+            assert!(is_safe_name(&made), "{text:?} -> {made:?}");
+            assert_eq!(made, name, "{text:?}");
+        }
+        assert_eq!(safe_name(&"y".repeat(300)).len(), 100);
+    }
 
     #[test]
     fn shipped_experiments_load_and_round_trip() {

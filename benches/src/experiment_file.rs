@@ -217,7 +217,7 @@ impl ExperimentFile {
             // An explicit name is checked as given; the default (a file's stem) is made safe.
             name: self
                 .name
-                .unwrap_or_else(|| crate::problem_source::sanitise(default_name)),
+                .unwrap_or_else(|| crate::experiment::safe_name(default_name)),
             description: self.description.unwrap_or_default(),
             planners,
             problems,

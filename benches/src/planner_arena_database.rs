@@ -1,10 +1,11 @@
 //! [`PlannerArenaDatabase`]: the SQLite benchmark database Planner Arena reads, in the schema
 //! OMPL's `ompl_benchmark_statistics.py` builds.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use rusqlite::types::Value;
-use rusqlite::{Connection, params_from_iter};
+use rusqlite::{Connection, OptionalExtension as _, params_from_iter};
 
 use crate::{BenchmarkLog, HarnessError, LogValue};
 
@@ -29,6 +30,9 @@ CREATE TABLE IF NOT EXISTS progress
     (runid INTEGER, time REAL, PRIMARY KEY (runid, time),
     FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 ";
+
+/// An experiment row's id and its runs per planner name.
+pub(crate) type ExperimentRow = (i64, HashMap<String, usize>);
 
 /// A Planner Arena benchmark database (SQLite), created if missing and appended to otherwise.
 ///
@@ -213,6 +217,53 @@ impl PlannerArenaDatabase {
         let experiment = c.last_insert_rowid();
         self.insert_planners(experiment, log)?;
         Ok(experiment)
+    }
+
+    /// The experiment row of a problem instance — OMPL experiment `name` with the experiment
+    /// properties `dimension` and `instance` — and its runs per planner name; `None` if the
+    /// database has no such row (the newest if it has several). How a resumed `bench` keeps
+    /// committing to the row an earlier, interrupted `bench` created.
+    ///
+    /// # Errors
+    /// [`HarnessError::Database`] if SQLite refuses the query.
+    pub(crate) fn find_experiment(
+        &self,
+        name: &str,
+        dimension: usize,
+        instance: u64,
+    ) -> Result<Option<ExperimentRow>, HarnessError> {
+        let columns = self.columns("experiments").map_err(|e| self.fail(e))?;
+        if !["dimension", "instance"]
+            .iter()
+            .all(|c| columns.iter().any(|k| k == c))
+        {
+            return Ok(None);
+        }
+        let id = self
+            .connection
+            .query_row(
+                "SELECT id FROM experiments WHERE name = ?1 AND dimension = ?2 AND instance = ?3 \
+                 ORDER BY id DESC LIMIT 1",
+                rusqlite::params![name, dimension as i64, instance as i64],
+                |r| r.get::<_, i64>(0),
+            )
+            .optional()
+            .map_err(|e| self.fail(e))?;
+        let Some(id) = id else { return Ok(None) };
+        let mut statement = self
+            .connection
+            .prepare(
+                "SELECT p.name, count(*) FROM runs r JOIN plannerConfigs p ON r.plannerid = p.id \
+                 WHERE r.experimentid = ?1 GROUP BY p.name",
+            )
+            .map_err(|e| self.fail(e))?;
+        let counts = statement
+            .query_map([id], |r| {
+                Ok((r.get::<_, String>(0)?, r.get::<_, i64>(1)? as usize))
+            })
+            .and_then(Iterator::collect::<Result<HashMap<_, _>, _>>)
+            .map_err(|e| self.fail(e))?;
+        Ok(Some((id, counts)))
     }
 
     /// Appends the runs of `log` to the existing experiment `experiment` in one transaction

@@ -50,7 +50,32 @@ pub(crate) fn csv_header() -> Vec<String> {
     header
 }
 
-/// One run's row of `runs.csv`.
+/// `text` on one line: line breaks become spaces, so that every row of `runs.csv` is one line
+/// (`runs.jsonl` keeps messages as they are).
+fn one_line(text: &str) -> String {
+    if text.contains(['\n', '\r']) {
+        text.replace("\r\n", " ").replace(['\n', '\r'], " ")
+    } else {
+        text.to_owned()
+    }
+}
+
+/// `fields` as one CSV record, terminated by a line break, ready to be appended with a single
+/// write.
+///
+/// # Errors
+/// [`HarnessError::Serialise`] naming `path` if the record cannot be encoded.
+pub(crate) fn csv_bytes(path: &Path, fields: &[String]) -> Result<Vec<u8>, HarnessError> {
+    let mut w = csv::Writer::from_writer(Vec::with_capacity(1024));
+    w.write_record(fields)
+        .and_then(|()| w.into_inner().map_err(|e| csv::Error::from(e.into_error())))
+        .map_err(|e| HarnessError::Serialise {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })
+}
+
+/// One run's row of `runs.csv` (every field on one line).
 pub(crate) fn csv_row(
     instance: &ProblemInstance,
     concurrency: usize,
@@ -63,7 +88,7 @@ pub(crate) fn csv_row(
         instance.instance.to_string(),
         instance.budget.to_string(),
         concurrency.to_string(),
-        r.planner.clone(),
+        one_line(&r.planner),
         r.configuration.name().to_owned(),
         r.run.to_string(),
         r.seed.to_string(),
@@ -84,9 +109,9 @@ pub(crate) fn csv_row(
             .map_or_else(String::new, |v| v.states_checked.to_string()),
         r.validation
             .as_ref()
-            .and_then(|v| v.failure.clone())
-            .unwrap_or_default(),
-        r.error.clone().unwrap_or_default(),
+            .and_then(|v| v.failure.as_deref())
+            .map_or_else(String::new, one_line),
+        r.error.as_deref().map_or_else(String::new, one_line),
     ];
     row.extend(r.counter_values().iter().map(|(_, c)| c.to_string()));
     row.push(

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use crate::{
     BenchmarkLog, Experiment, ExperimentFigure, ExperimentResults, HarnessError, KpiTable,
-    PlannerArenaDatabase, write_runs_csv, write_runs_jsonl,
+    PlannerArenaDatabase, RunJournal, results_from_records,
 };
 
 /// The name of the Planner Arena database in a results folder.
@@ -16,15 +16,16 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 /// | file | what it holds |
 /// |---|---|
 /// | `experiment.toml` | the experiment as run (command-line overrides applied): rerun it with `mit-star bench experiment.toml`; a folder holds one experiment, and running it again resumes it |
-/// | `runs.csv` | one row per run, appended the moment the run finishes: every per-run figure, counters, the trace |
-/// | `runs.jsonl` | one JSON object per run, appended likewise, with the trace, the path and the validation |
+/// | `runs.csv` | one row per run (one line each), appended the moment the run finishes: every per-run figure, counters, the trace |
+/// | `runs.jsonl` | one JSON object per run, appended likewise, with the trace, the path and the validation: the journal every summary is rebuilt from |
 /// | `logs/<instance>.log` | one OMPL benchmark log per problem instance, rebuilt from every recorded run |
 /// | `benchmark.db` | the Planner Arena database: each run committed as it finishes, then rebuilt from every recorded run |
 /// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
 /// | `kpi.md` | the KPI tables |
 ///
 /// [`prepare`](Self::prepare) creates the folder, checks it is writable and opens the
-/// database before any planning, so that a bad folder fails fast.
+/// database before any planning, so that a bad folder fails fast. Nothing is ever written outside the folder: its
+/// files are the fixed names above and instance ids, which are file-name safe.
 #[derive(Debug)]
 pub struct ResultsFolder {
     path: PathBuf,
@@ -60,64 +61,46 @@ impl ResultsFolder {
         &self.database
     }
 
-    /// Writes every output of `results` (plots unless `plots` is false); returns the files
-    /// written. Instances without finished runs (interrupted early) are skipped.
+    /// Records every run of `results` in the folder as `bench` does, for library use:
+    /// [`claim`](Self::claim)s the folder for `results.experiment`, appends the runs not yet
+    /// recorded through a [`RunJournal`], then [`finish`](Self::finish)es from every run
+    /// recorded. Returns the files written. Nothing recorded before is overwritten.
     ///
     /// # Errors
-    /// The first file that cannot be written.
+    /// Those of [`claim`](Self::claim), [`RunJournal::open`], [`RunJournal::append`] and
+    /// [`finish`](Self::finish).
     pub fn write(
         &mut self,
         results: &ExperimentResults,
         plots: bool,
     ) -> Result<Vec<PathBuf>, HarnessError> {
-        let mut files = Vec::new();
-        let write = |path: PathBuf, text: &str| {
-            std::fs::write(&path, text)
-                .map(|()| path.clone())
-                .map_err(|source| HarnessError::Io { path, source })
-        };
-        files.push(write(
-            self.path.join("experiment.toml"),
-            &results.experiment.to_toml(),
-        )?);
-        let csv = self.path.join("runs.csv");
-        write_runs_csv(&csv, results)?;
-        files.push(csv);
-        let jsonl = self.path.join("runs.jsonl");
-        write_runs_jsonl(&jsonl, results)?;
-        files.push(jsonl);
-        for (index, instance) in results.instances.iter().enumerate() {
-            if results.runs[index].is_empty() {
-                continue;
-            }
-            let log = BenchmarkLog::from_results(results, index);
-            files.push(write(
-                self.path.join("logs").join(format!("{}.log", instance.id)),
-                &log.to_text(),
-            )?);
-            self.database.insert(&log)?;
-            if plots {
-                let svg = self.path.join("plots").join(format!("{}.svg", instance.id));
-                let png = svg.with_extension("png");
-                ExperimentFigure::from_results(results, index).save(&svg, &png)?;
-                files.extend([svg, png]);
+        self.claim(&results.experiment)?;
+        let mut journal = RunJournal::open(&self.path, &results.instances)?;
+        for (index, runs) in results.runs.iter().enumerate() {
+            for record in runs {
+                let key = (record.instance.clone(), record.planner.clone(), record.run);
+                if !journal.recorded().contains(&key) {
+                    journal.append(results, index, record)?;
+                }
             }
         }
-        files.push(self.database.path().to_path_buf());
-        let kpi = kpi_markdown(results, &KpiTable::from_results(results));
-        files.push(write(self.path.join("kpi.md"), &kpi)?);
-        Ok(files)
+        drop(journal);
+        let all = results_from_records(
+            results,
+            RunJournal::read_records(&self.path)?,
+            &results.instances,
+        );
+        self.finish(&all, plots)
     }
-}
 
-impl ResultsFolder {
     /// Claims the folder for `experiment`: writes `experiment.toml` if the folder holds none,
     /// and refuses a folder that holds another experiment (its runs would be mixed with this
-    /// one's). The same experiment again resumes: runs already recorded are skipped.
+    /// one's) or runs without an `experiment.toml`. The same experiment again resumes: runs
+    /// already recorded are skipped.
     ///
     /// # Errors
-    /// [`HarnessError::Usage`] naming both experiments; [`HarnessError::Io`] if the file
-    /// cannot be written.
+    /// [`HarnessError::Usage`] naming both experiments, or the runs of unknown origin;
+    /// [`HarnessError::Io`] if the file cannot be written.
     pub fn claim(&self, experiment: &Experiment) -> Result<PathBuf, HarnessError> {
         let path = self.path.join("experiment.toml");
         let text = experiment.to_toml();
@@ -138,16 +121,28 @@ impl ResultsFolder {
                     experiment.name
                 )))
             }
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => std::fs::write(&path, text)
-                .map(|()| path.clone())
-                .map_err(|source| HarnessError::Io { path, source }),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                let has_runs = ["runs.jsonl", "runs.csv"]
+                    .iter()
+                    .any(|f| std::fs::metadata(self.path.join(f)).is_ok_and(|m| m.len() > 0));
+                if has_runs {
+                    return Err(HarnessError::Usage(format!(
+                        "`{}` holds runs but no experiment.toml, so they cannot be told apart \
+                         from those of `{}`; write to another --output folder",
+                        self.path.display(),
+                        experiment.name
+                    )));
+                }
+                write_replacing(&path, text.as_bytes())?;
+                Ok(path)
+            }
             Err(source) => Err(HarnessError::Io { path, source }),
         }
     }
 
     /// Rebuilds everything derived from the raw runs — one OMPL `.log` per instance, the
-    /// Planner Arena database (replaced atomically), plots and `kpi.md` — from `results`, every
-    /// run recorded in the folder. The raw files are the journal's and are not touched.
+    /// Planner Arena database, plots and `kpi.md`, each replaced atomically — from `results`,
+    /// every run recorded in the folder. The raw files are the journal's and are not touched.
     ///
     /// # Errors
     /// Whatever cannot be written.
@@ -161,23 +156,22 @@ impl ResultsFolder {
             self.path.join("runs.csv"),
             self.path.join("runs.jsonl"),
         ];
-        let write = |path: PathBuf, text: &str| {
-            std::fs::write(&path, text)
-                .map(|()| path.clone())
-                .map_err(|source| HarnessError::Io { path, source })
-        };
         let fresh = self.path.join(format!("{DATABASE_FILE}.new"));
-        let _ = std::fs::remove_file(&fresh);
+        for stale in [
+            fresh.clone(),
+            self.path.join(format!("{DATABASE_FILE}.new-journal")),
+        ] {
+            let _ = std::fs::remove_file(stale);
+        }
         let mut database = PlannerArenaDatabase::open(&fresh)?;
         for (index, instance) in results.instances.iter().enumerate() {
             if results.runs[index].is_empty() {
                 continue;
             }
             let log = BenchmarkLog::from_results(results, index);
-            files.push(write(
-                self.path.join("logs").join(format!("{}.log", instance.id)),
-                &log.to_text(),
-            )?);
+            let path = self.path.join("logs").join(format!("{}.log", instance.id));
+            write_replacing(&path, log.to_text().as_bytes())?;
+            files.push(path);
             database.insert(&log)?;
             if plots {
                 let svg = self.path.join("plots").join(format!("{}.svg", instance.id));
@@ -195,9 +189,28 @@ impl ResultsFolder {
         self.database = PlannerArenaDatabase::open(&target)?;
         files.push(target);
         let kpi = kpi_markdown(results, &KpiTable::from_results(results));
-        files.push(write(self.path.join("kpi.md"), &kpi)?);
+        let path = self.path.join("kpi.md");
+        write_replacing(&path, kpi.as_bytes())?;
+        files.push(path);
         Ok(files)
     }
+}
+
+/// Writes `bytes` to `path` by writing a temporary file beside it and renaming it over
+/// `path`: a reader (or a crash) sees the old file or the new one, never half of one.
+///
+/// # Errors
+/// [`HarnessError::Io`] naming the file.
+fn write_replacing(path: &Path, bytes: &[u8]) -> Result<(), HarnessError> {
+    let mut temporary = path.as_os_str().to_owned();
+    temporary.push(".new");
+    let temporary = PathBuf::from(temporary);
+    std::fs::write(&temporary, bytes)
+        .and_then(|()| std::fs::rename(&temporary, path))
+        .map_err(|source| HarnessError::Io {
+            path: path.to_path_buf(),
+            source,
+        })
 }
 
 /// Creates `path` if needed and checks that a file can be written in it.
@@ -222,16 +235,18 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
     if !e.description.is_empty() {
         let _ = writeln!(s, "{}\n", e.description);
     }
+    let planned = results.instances.len() * e.planners.len() * e.runs;
     let _ = writeln!(
         s,
         "Started {} UTC on `{}` ({}); {} runs per planner and instance, seeds {}..{}; \
-         {} runs finished in {:.1} s with **{} runs executing concurrently**.{}\n",
+         {} of {planned} runs recorded; the last `bench` took {:.1} s with **{} runs executing \
+         concurrently**.{}\n",
         results.started_at,
         results.machine.hostname,
         results.machine.cpu,
         e.runs,
         e.seed,
-        e.seed + e.runs as u64 - 1,
+        e.seed.saturating_add(e.runs as u64).saturating_sub(1),
         results.run_count(),
         results.total_time,
         results.concurrency,
@@ -279,4 +294,60 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
         table.full_markdown()
     );
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir =
+            std::env::temp_dir().join(format!("mit-star-folder-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
+    #[test]
+    fn a_folder_holds_one_experiment() {
+        let dir = scratch("claim");
+        let folder = ResultsFolder::prepare(&dir).unwrap();
+        let smoke = Experiment::shipped("smoke").unwrap();
+        let toml = folder.claim(&smoke).unwrap();
+        let written = std::fs::read_to_string(&toml).unwrap();
+        folder.claim(&smoke).unwrap();
+        let mut other = smoke.clone();
+        other.runs += 1;
+        let message = folder.claim(&other).unwrap_err().to_string();
+        assert!(
+            message.contains("holds the results of experiment `smoke`"),
+            "{message}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(&toml).unwrap(),
+            written,
+            "not clobbered"
+        );
+
+        std::fs::remove_file(&toml).unwrap();
+        std::fs::write(dir.join("runs.csv"), "instance\n").unwrap();
+        let message = folder.claim(&smoke).unwrap_err().to_string();
+        assert!(
+            message.contains("holds runs but no experiment.toml"),
+            "{message}"
+        );
+        assert!(!toml.exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn replacing_a_file_leaves_no_temporary() {
+        let dir = scratch("replace");
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("kpi.md");
+        write_replacing(&path, b"old").unwrap();
+        write_replacing(&path, b"new").unwrap();
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "new");
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

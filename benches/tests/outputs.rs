@@ -259,10 +259,20 @@ fn the_database_has_planner_arenas_schema_and_appends() {
     assert!(settings.starts_with("batch_size = 50\n;"), "{settings:?}");
     drop(db);
 
-    // Append the same experiment again: new ids, same planner configurations.
+    // A results folder refuses to rebuild (and so lose) a database holding runs its raw
+    // files do not have.
     let mut folder = ResultsFolder::prepare(&copy).unwrap();
-    folder.write(results, false).unwrap();
-    let db = folder.database();
+    let refused = folder.write(results, false).unwrap_err().to_string();
+    assert!(refused.contains("holds 8 runs"), "{refused}");
+    drop(folder);
+
+    // Append the same experiment again: new ids, same planner configurations.
+    let mut db = PlannerArenaDatabase::open(&copy.join("benchmark.db")).unwrap();
+    for index in 0..results.instances.len() {
+        db.insert(&BenchmarkLog::from_results(results, index))
+            .unwrap();
+    }
+    let db = &db;
     assert_eq!(db.count("experiments").unwrap(), 4);
     assert_eq!(db.count("runs").unwrap(), 2 * results.run_count() as i64);
     assert_eq!(db.count("plannerConfigs").unwrap(), 2);

@@ -32,15 +32,19 @@ fn main() {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(100_000);
+    // `LARGE_WORLD_SIDE=0.1` draws sides in [0.1, 0.2] (PDT's random rectangles) instead.
+    let side: Option<f64> = std::env::var("LARGE_WORLD_SIDE")
+        .ok()
+        .and_then(|v| v.parse().ok());
     let queries = 200_000;
     println!("| n | build (ms) | hierarchy (ns/check) | linear scan (ns/check) | speed-up |");
     println!("|---|---|---|---|---|");
-    for n in [2, 4, 8] {
+    for n in [2, 4, 8, 16] {
         let mut rng = Mix(n as u64);
         let mut world = World::new(vec![-0.5; n], vec![0.5; n]);
         for _ in 0..boxes {
             let center: Vec<f64> = (0..n).map(|_| rng.next() - 0.5).collect();
-            let side = if boxes > 1000 { 0.01 } else { 0.1 };
+            let side = side.unwrap_or(if boxes > 1000 { 0.01 } else { 0.1 });
             let widths: Vec<f64> = (0..n).map(|_| side + side * rng.next()).collect();
             world.add_obstacle(AxisBox::new(center, widths)).unwrap();
         }

@@ -1,6 +1,5 @@
 //! `mit-star bench`: run an experiment and write its results folder.
 
-use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
@@ -9,12 +8,11 @@ use std::time::SystemTime;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
-use crate::results_folder::DATABASE_FILE;
 use crate::{
     ExecutionOptions, Executor, Experiment, ExperimentResults, HarnessError, KpiTable, MachineInfo,
     ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec, ResultsFolder,
-    RunJournal, RunKey, RunRecord, RunStatus, ShippedExperiment, iso_timestamp,
-    parse_configuration, results_from_records,
+    RunJournal, RunRecord, ShippedExperiment, iso_timestamp, parse_configuration,
+    results_from_records,
 };
 
 /// Options of `mit-star bench`.
@@ -208,7 +206,11 @@ impl BenchArgs {
             let first = &problems[0];
             let dims: Vec<String> = first.dimensions.iter().map(|d| format!("n{d}")).collect();
             let more = if problems.len() > 1 { "-and-more" } else { "" };
-            format!("{}-{}{more}", first.source.label(), dims.join("-"))
+            crate::experiment::safe_name(&format!(
+                "{}-{}{more}",
+                first.source.label(),
+                dims.join("-")
+            ))
         });
         Ok(Experiment {
             name,
@@ -240,16 +242,15 @@ impl BenchArgs {
             .unwrap_or_else(|| Path::new("results").join(&experiment.name));
         let mut folder = ResultsFolder::prepare(&output)?;
         folder.claim(&experiment)?;
-        // Runs recorded by an earlier, interrupted bench of this experiment are not rerun.
-        let earlier = RunJournal::read_records(folder.path())?;
-        let recorded: HashSet<RunKey> = earlier
-            .iter()
-            .map(|r| (r.instance.clone(), r.planner.clone(), r.run))
-            .collect();
+        // Every finished run goes to disk (raw files and database) before its worker starts
+        // the next one: SIGTERM, SIGKILL or a crash lose at most the runs in flight. Runs
+        // recorded by an earlier bench of this experiment are not rerun.
+        let journal = RunJournal::open(folder.path(), &instances)?;
+        let recorded = journal.recorded().clone();
         let jobs = instances.len() * experiment.planners.len() * experiment.runs;
         let budget: f64 = instances.iter().map(|i| i.budget).sum::<f64>()
             * (experiment.planners.len() * experiment.runs) as f64;
-        let concurrency = threads.min(jobs.max(1));
+        let concurrency = threads.min(jobs.saturating_sub(recorded.len()).max(1));
         eprintln!(
             "experiment `{}`: {} planners × {} problem instances × {} runs = {jobs} runs{}; \
              {:.1} s of budget on {concurrency} threads ≈ {:.1} s",
@@ -268,8 +269,6 @@ impl BenchArgs {
             budget,
             budget / concurrency as f64
         );
-        // Every finished run goes to disk (raw files and database) before its worker starts
-        // the next one: SIGTERM, SIGKILL or a crash lose at most the runs in flight.
         let template = ExperimentResults {
             experiment: experiment.clone(),
             instances: instances.clone(),
@@ -280,10 +279,7 @@ impl BenchArgs {
             interrupted: false,
             machine: MachineInfo::detect(),
         };
-        let journal = Arc::new(Mutex::new(RunJournal::open(
-            folder.path(),
-            &folder.path().join(DATABASE_FILE),
-        )?));
+        let journal = Arc::new(Mutex::new(journal));
         let failure: Arc<Mutex<Option<HarnessError>>> = Arc::new(Mutex::new(None));
         let sink = {
             let (journal, failure, interrupt) = (
@@ -313,6 +309,8 @@ impl BenchArgs {
             on_record: Some(Arc::new(sink)),
         });
         let results = executor.run(&experiment, instances)?;
+        // Close the raw files and the journal's database connection before rebuilding.
+        drop(executor);
         drop(journal);
         if let Some(e) = failure.lock().ok().and_then(|mut f| f.take()) {
             return Err(e);
@@ -347,24 +345,35 @@ impl BenchArgs {
                 invalid.len()
             );
         }
-        let errors = all
-            .all_runs()
-            .filter(|r| r.status == RunStatus::Error)
-            .count();
+        let errors = all.failed_runs().len();
+        let outcome = outcome(results.interrupted, errors, invalid.len());
         if errors > 0 {
             eprintln!(
-                "ERROR: {errors} runs ended in an error (see the `error` column of runs.csv); exit code 1"
+                "ERROR: {errors} of {} recorded runs ended in an error (see the `error` column of \
+                 runs.csv){}",
+                all.run_count(),
+                if outcome == CommandOutcome::RunErrors {
+                    "; exit code 1"
+                } else {
+                    ""
+                }
             );
         }
-        Ok(if results.interrupted {
-            CommandOutcome::Interrupted
-        } else if errors > 0 {
-            CommandOutcome::RunErrors
-        } else if !invalid.is_empty() {
-            CommandOutcome::InvalidPaths
-        } else {
-            CommandOutcome::Success
-        })
+        Ok(outcome)
+    }
+}
+
+/// How `bench` ends: interrupted (the signal's exit code) before runs that ended in an error
+/// (exit code 1, whenever any recorded run did) before invalid paths (3) before success.
+fn outcome(interrupted: bool, errors: usize, invalid: usize) -> CommandOutcome {
+    if interrupted {
+        CommandOutcome::Interrupted
+    } else if errors > 0 {
+        CommandOutcome::RunErrors
+    } else if invalid > 0 {
+        CommandOutcome::InvalidPaths
+    } else {
+        CommandOutcome::Success
     }
 }
 
@@ -388,4 +397,21 @@ fn check_planners_build(
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_exit_1_unless_interrupted_and_before_invalid_paths() {
+        assert_eq!(outcome(false, 0, 0), CommandOutcome::Success);
+        assert_eq!(outcome(false, 0, 2), CommandOutcome::InvalidPaths);
+        assert_eq!(outcome(false, 1, 2), CommandOutcome::RunErrors);
+        assert_eq!(outcome(true, 1, 2), CommandOutcome::Interrupted);
+        assert_eq!(
+            CommandOutcome::RunErrors.exit_code(),
+            std::process::ExitCode::from(1)
+        );
+    }
 }
