@@ -1,10 +1,10 @@
 //! [`Builder`]: validated construction of an [`Eit`] configuration.
 
 use heuristics::{Euclidean, Heuristic};
-use problems::Problem;
+use problems::PlanningProblem;
 use samplers::Sampler;
-use spaces::{RealVectorSpace, StateSpace};
-use validity::{Counted, EdgeChecker, StateValidity, World};
+use spaces::StateSpace;
+use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::components::configuration_name;
 use crate::eit::validate_query;
@@ -78,11 +78,12 @@ impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
     }
 }
 
-impl<Smp, E, H: Default> Eit<RealVectorSpace, World, Smp, E, H> {
-    /// Starts building a planner for a benchmark [`Problem`]: its space, world, start, goals
-    /// and resolution. [`build`](Builder::build) refuses a problem whose collision-check step
-    /// is coarser than its thinnest obstacle unless the problem allows it
-    /// ([`Problem::check_step`]).
+impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
+    /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
+    /// [`Problem`](problems::Problem), a robot-arm problem, or your own: its space, validity
+    /// checker, start, goals and resolution. [`build`](Builder::build) refuses a problem that
+    /// refuses its collision-check step ([`PlanningProblem::check_step`]: a box world whose
+    /// step is coarser than its thinnest obstacle, unless the problem allows it).
     ///
     /// ```
     /// use mit_star::{EitStar, FirstSolution, Planner};
@@ -92,10 +93,15 @@ impl<Smp, E, H: Default> Eit<RealVectorSpace, World, Smp, E, H> {
     /// assert!(outcome.cost() >= problem.optimum().unwrap());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn for_problem(problem: &Problem) -> Builder<RealVectorSpace, World, Smp, E, H> {
+    pub fn for_problem<P>(problem: &P) -> Builder<S, V, Smp, E, H>
+    where
+        P: PlanningProblem<Space = S, Validity = V>,
+        S: Clone,
+        V: Clone,
+    {
         let mut builder = Self::builder(
             problem.space().clone(),
-            problem.world().clone(),
+            problem.validity().clone(),
             problem.start().to_vec(),
             problem.goals().to_vec(),
         )

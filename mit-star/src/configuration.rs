@@ -3,9 +3,8 @@
 use std::fmt;
 use std::str::FromStr;
 
-use problems::Problem;
+use problems::PlanningProblem;
 use serde::{Deserialize, Serialize};
-use spaces::RealVectorSpace;
 use validity::StateValidity;
 
 use crate::{BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters, Planner};
@@ -91,11 +90,13 @@ impl FromStr for Configuration {
     }
 }
 
-/// Builds the planner of `configuration` for `problem`, with `parameters` (the problem's
+/// Builds the planner of `configuration` for `problem` — a box-world [`problems::Problem`], a
+/// robot-arm problem, or any other [`PlanningProblem`] — with `parameters` (the problem's
 /// resolution replaces `parameters.resolution`).
 ///
 /// # Errors
-/// As [`Builder::build`](crate::Builder::build).
+/// [`BuildError::Problem`] if the problem refuses its check step, else as
+/// [`Builder::build`](crate::Builder::build).
 ///
 /// ```
 /// use mit_star::{build_planner, Configuration, IterationLimit, Parameters};
@@ -106,20 +107,25 @@ impl FromStr for Configuration {
 /// assert!((outcome.cost() - problem.straight_line_cost()).abs() < 1e-12);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn build_planner(
+pub fn build_planner<P: PlanningProblem>(
     configuration: Configuration,
-    problem: &Problem,
+    problem: &P,
     parameters: &Parameters,
 ) -> Result<Box<dyn Planner + Send>, BuildError> {
-    build_planner_with(configuration, problem, parameters, problem.world().clone())
+    build_planner_with(
+        configuration,
+        problem,
+        parameters,
+        problem.validity().clone(),
+    )
 }
 
-/// [`build_planner`] with another validity checker than the problem's world — a wrapper that
+/// [`build_planner`] with another validity checker than the problem's own — a wrapper that
 /// times or logs checks, or a different collision model over the problem's space, start, goals
 /// and resolution.
 ///
 /// # Errors
-/// As [`Builder::build`](crate::Builder::build).
+/// As [`build_planner`].
 ///
 /// ```
 /// use mit_star::{build_planner_with, Configuration, FirstSolution, Parameters};
@@ -130,13 +136,14 @@ pub fn build_planner(
 /// assert!(planner.solve(&FirstSolution)?.is_solved());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub fn build_planner_with<V>(
+pub fn build_planner_with<P, V>(
     configuration: Configuration,
-    problem: &Problem,
+    problem: &P,
     parameters: &Parameters,
     validity: V,
 ) -> Result<Box<dyn Planner + Send>, BuildError>
 where
+    P: PlanningProblem,
     V: StateValidity + Send + 'static,
 {
     problem.check_step()?;
@@ -147,31 +154,31 @@ where
     let label = configuration.label();
     Ok(match configuration {
         Configuration::MitStar => Box::new(
-            MitStar::<RealVectorSpace, V>::builder(space, validity, start, goals)
+            MitStar::<P::Space, V>::builder(space, validity, start, goals)
                 .parameters(parameters)
                 .name(label)
                 .build()?,
         ),
         Configuration::EitStar => Box::new(
-            EitStar::<RealVectorSpace, V>::builder(space, validity, start, goals)
+            EitStar::<P::Space, V>::builder(space, validity, start, goals)
                 .parameters(parameters)
                 .name(label)
                 .build()?,
         ),
         Configuration::MitStarAs => Box::new(
-            MitStarAs::<RealVectorSpace, V>::builder(space, validity, start, goals)
+            MitStarAs::<P::Space, V>::builder(space, validity, start, goals)
                 .parameters(parameters)
                 .name(label)
                 .build()?,
         ),
         Configuration::MitStarEis => Box::new(
-            MitStarEis::<RealVectorSpace, V>::builder(space, validity, start, goals)
+            MitStarEis::<P::Space, V>::builder(space, validity, start, goals)
                 .parameters(parameters)
                 .name(label)
                 .build()?,
         ),
         Configuration::MitStarSc => Box::new(
-            MitStarSc::<RealVectorSpace, V>::builder(space, validity, start, goals)
+            MitStarSc::<P::Space, V>::builder(space, validity, start, goals)
                 .parameters(parameters)
                 .name(label)
                 .build()?,

@@ -30,7 +30,8 @@
 //! # Catalogue
 //! | item | what it is |
 //! |---|---|
-//! | [`Problem`] | a named problem: space, world, start, goals, resolution, known optimum |
+//! | [`PlanningProblem`] | the trait every planner accepts: space, validity checker, start, goals, resolution (box worlds here, arms in the `robot` crate) |
+//! | [`Problem`] | a named box-world problem: space, world, start, goals, resolution, known optimum |
 //! | [`FlankingGap`] | `flanking-gap`: a wall short of the bounds with a small square hole |
 //! | [`DividingWalls`] | `dividing-walls`: three full walls crossed through six slots |
 //! | [`GoalEnclosure`] | `goal-enclosure`: the goal in a hollow cube opening away from the start |
@@ -67,6 +68,7 @@ mod goal_enclosure;
 mod narrow_passage;
 mod obstacle_free;
 mod optimum;
+mod planning_problem;
 mod problem;
 pub mod problem_file;
 mod random_rectangles;
@@ -86,6 +88,7 @@ pub use flanking_gap::FlankingGap;
 pub use goal_enclosure::{GoalEnclosed, GoalEnclosure};
 pub use narrow_passage::NarrowPassage;
 pub use obstacle_free::ObstacleFree;
+pub use planning_problem::PlanningProblem;
 pub use problem::Problem;
 pub use problem_file::humanise;
 pub use random_rectangles::RandomRectangles;

@@ -1,0 +1,122 @@
+//! [`PlanningProblem`]: what every planner needs from a problem, whatever its space and world.
+
+use spaces::StateSpace;
+use validity::StateValidity;
+
+use crate::{Problem, ProblemError};
+
+/// A motion-planning query with everything a planner needs to answer it: the state space, the
+/// validity checker, the start, the goals, and the collision-check resolution.
+///
+/// Implemented by the box-world benchmark [`Problem`] (a point in `R^n` among axis-aligned
+/// boxes) and by robot-arm problems (the `robot` crate's `ArmProblem`: a joint space and a
+/// sphere-model collision checker). Planner builders and the experiment harness accept any
+/// implementation, so every planner plans for every kind of problem through one front door.
+///
+/// ```
+/// use problems::PlanningProblem;
+/// use spaces::StateSpace;
+/// fn describe<P: PlanningProblem>(p: &P) -> String {
+///     let step = p.check_step().unwrap();
+///     format!("{}: {} dimensions, step {step}", p.name(), p.space().dimension())
+/// }
+/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-3)?;
+/// assert!(describe(&problem).starts_with("dividing-walls: 2 dimensions"));
+/// # Ok::<(), problems::ProblemError>(())
+/// ```
+pub trait PlanningProblem {
+    /// The configuration space.
+    type Space: StateSpace + Clone + Send + 'static;
+    /// The state validity checker.
+    type Validity: StateValidity + Clone + Send + 'static;
+
+    /// A short name for logs and outputs.
+    fn name(&self) -> &str;
+
+    /// The configuration space.
+    fn space(&self) -> &Self::Space;
+
+    /// The state validity checker.
+    fn validity(&self) -> &Self::Validity;
+
+    /// The start state.
+    fn start(&self) -> &[f64];
+
+    /// The goal states.
+    fn goals(&self) -> &[Vec<f64>];
+
+    /// The collision-check resolution, a fraction of the space's maximum extent (OMPL's
+    /// convention): edges are checked every `resolution × maximum_extent`.
+    fn resolution(&self) -> f64;
+
+    /// The collision-check step `resolution × maximum_extent`, or an error if the problem knows
+    /// that this step would miss obstacles (a box world whose thinnest box is thinner than the
+    /// step, see [`Problem::check_step`]).
+    ///
+    /// # Errors
+    /// [`ProblemError::StepTooCoarse`] (box worlds) or the problem's own refusal.
+    fn check_step(&self) -> Result<f64, ProblemError> {
+        Ok(self.resolution() * self.space().maximum_extent())
+    }
+}
+
+impl PlanningProblem for Problem {
+    type Space = spaces::RealVectorSpace;
+    type Validity = validity::World;
+
+    fn name(&self) -> &str {
+        Problem::name(self)
+    }
+
+    fn space(&self) -> &Self::Space {
+        Problem::space(self)
+    }
+
+    fn validity(&self) -> &Self::Validity {
+        self.world()
+    }
+
+    fn start(&self) -> &[f64] {
+        Problem::start(self)
+    }
+
+    fn goals(&self) -> &[Vec<f64>] {
+        Problem::goals(self)
+    }
+
+    fn resolution(&self) -> f64 {
+        Problem::resolution(self)
+    }
+
+    fn check_step(&self) -> Result<f64, ProblemError> {
+        Problem::check_step(self)?;
+        Ok(Problem::resolution(self) * Problem::space(self).maximum_extent())
+    }
+}
+
+impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
+    type Space = P::Space;
+    type Validity = P::Validity;
+
+    fn name(&self) -> &str {
+        (**self).name()
+    }
+    fn space(&self) -> &Self::Space {
+        (**self).space()
+    }
+    fn validity(&self) -> &Self::Validity {
+        (**self).validity()
+    }
+    fn start(&self) -> &[f64] {
+        (**self).start()
+    }
+    fn goals(&self) -> &[Vec<f64>] {
+        (**self).goals()
+    }
+    fn resolution(&self) -> f64 {
+        (**self).resolution()
+    }
+    fn check_step(&self) -> Result<f64, ProblemError> {
+        (**self).check_step()
+    }
+}
