@@ -1,8 +1,6 @@
 //! [`ProblemInstance`]: one concrete problem of an experiment, with its time budget.
 
-use problems::Problem;
-
-use crate::ProblemSource;
+use crate::{InstanceProblem, ProblemSource};
 
 /// One problem instance of an experiment: a problem in one dimension (and, for seeded
 /// families, one layout), with the time budget of each run. Each instance is one OMPL
@@ -23,7 +21,7 @@ pub struct ProblemInstance {
     /// Wall-clock budget of each run in seconds (planner construction included).
     pub budget: f64,
     /// The problem.
-    pub problem: Problem,
+    pub problem: InstanceProblem,
 }
 
 impl ProblemInstance {

@@ -5,6 +5,8 @@ use std::sync::Arc;
 
 use problems::Problem;
 
+use crate::InstanceProblem;
+
 use crate::HarnessError;
 
 /// The built-in family names, comma separated.
@@ -154,7 +156,7 @@ impl ProblemSource {
         dimension: usize,
         instance: u64,
         resolution: Option<f64>,
-    ) -> Result<Problem, HarnessError> {
+    ) -> Result<InstanceProblem, HarnessError> {
         let problem = match self {
             Self::Builtin(name) => {
                 problems::builtin(name, dimension, instance).map_err(|source| {
@@ -187,6 +189,7 @@ impl ProblemSource {
                     source,
                 }),
         }
+        .map(InstanceProblem::Boxes)
     }
 
     /// The dimension of a problem file (`None` for built-in families, which have any).

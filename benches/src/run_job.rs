@@ -9,7 +9,7 @@ use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use spaces::SeededRng;
 
-use crate::{PathValidation, PlannerSpec, ProblemInstance, RunRecord, RunStatus, deadline_after};
+use crate::{PlannerSpec, ProblemInstance, RunRecord, RunStatus, deadline_after};
 
 /// Memory a finished run's record takes until the results are written, generously (counters,
 /// trace, path): the unit of the run-count limit.
@@ -150,7 +150,10 @@ impl RunJob {
             Err(e) => return Some((self.failed(instance, planner, started, &e), None)),
         };
         let parameters = planner.parameters_for_seed(self.seed);
-        match mit_star::build_planner(planner.configuration(), &instance.problem, &parameters) {
+        match instance
+            .problem
+            .build_planner(planner.configuration(), &parameters)
+        {
             Ok(built) => self.solve_built(instance, planner, built, (started, deadline), interrupt),
             Err(e) => Some((self.failed(instance, planner, started, &e), None)),
         }
@@ -221,8 +224,7 @@ impl RunJob {
                 Some(solution) => {
                     record.final_cost = Some(solution.cost);
                     record.path = solution.path.iter().map(<[f64]>::to_vec).collect();
-                    let validation =
-                        PathValidation::check(&instance.problem, &record.path, solution.cost);
+                    let validation = instance.problem.validate(&record.path, solution.cost);
                     record.status = if validation.valid {
                         RunStatus::Solved
                     } else {

@@ -54,7 +54,7 @@ pub(crate) fn setup_description(results: &ExperimentResults, index: usize) -> St
             "no"
         },
     );
-    for line in p.to_toml_string().lines() {
+    for line in p.describe().lines() {
         text.push_str("  ");
         text.push_str(line);
         text.push('\n');

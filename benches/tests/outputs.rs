@@ -335,7 +335,7 @@ fn invalid_paths_are_flagged_in_every_output() {
     let victim = &mut results.runs[0][0];
     victim.path = vec![problem.start().to_vec(), problem.goals()[0].clone()];
     victim.final_cost = Some(problem.straight_line_cost());
-    let validation = PathValidation::check(&problem, &victim.path, problem.straight_line_cost());
+    let validation = problem.validate(&victim.path, problem.straight_line_cost());
     assert!(!validation.valid);
     victim.status = RunStatus::InvalidPath;
     victim.validation = Some(PathValidation {

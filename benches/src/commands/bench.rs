@@ -385,15 +385,16 @@ fn check_planners_build(
 ) -> Result<(), HarnessError> {
     for instance in instances {
         for spec in &experiment.planners {
-            mit_star::build_planner(
-                spec.configuration(),
-                &instance.problem,
-                &spec.parameters_for_seed(experiment.seed),
-            )
-            .map_err(|source| HarnessError::Build {
-                planner: format!("{} on {}", spec.name(), instance.id),
-                source,
-            })?;
+            instance
+                .problem
+                .build_planner(
+                    spec.configuration(),
+                    &spec.parameters_for_seed(experiment.seed),
+                )
+                .map_err(|source| HarnessError::Build {
+                    planner: format!("{} on {}", spec.name(), instance.id),
+                    source,
+                })?;
         }
     }
     Ok(())

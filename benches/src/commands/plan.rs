@@ -119,8 +119,10 @@ impl PlanArgs {
         if picture {
             crate::writable_folder(&self.output)?;
         }
-        if instance.problem.step_is_coarse() {
-            let (obstacle, anti) = instance.problem.thinnest_extents();
+        if let Some(boxes) = instance.problem.as_boxes()
+            && boxes.step_is_coarse()
+        {
+            let (obstacle, anti) = boxes.thinnest_extents();
             eprintln!(
                 "warning: the collision-check step {} is larger than the thinnest obstacle ({}) \
                  or anti-obstacle ({}); edges may cross them between checked points (allowed by \
@@ -143,22 +145,23 @@ impl PlanArgs {
                 what: "--time".into(),
                 source,
             })?;
-        let built = mit_star::build_planner(
-            configuration,
-            &instance.problem,
-            &spec.parameters_for_seed(self.seed),
-        )
-        .map_err(|source| HarnessError::Build {
-            planner: spec.name().to_owned(),
-            source,
-        })?;
+        let built = instance
+            .problem
+            .build_planner(configuration, &spec.parameters_for_seed(self.seed))
+            .map_err(|source| HarnessError::Build {
+                planner: spec.name().to_owned(),
+                source,
+            })?;
         let Some((record, planner)) =
             job.solve_built(&instance, &spec, built, (started, deadline), interrupt)
         else {
             return Ok(CommandOutcome::Interrupted);
         };
         let mut files = Vec::new();
-        if picture && let Some(snapshot) = planner.as_ref().and_then(|p| p.snapshot()) {
+        if picture
+            && let Some(boxes) = instance.problem.as_boxes()
+            && let Some(snapshot) = planner.as_ref().and_then(|p| p.snapshot())
+        {
             let stem = format!(
                 "{}-{}-seed{}",
                 instance.id,
@@ -175,7 +178,7 @@ impl PlanArgs {
                 self.time,
                 number(record.final_cost.unwrap_or(f64::INFINITY))
             );
-            RunPicture::new(&instance.problem, &snapshot, &record.path, title)?.save(&svg, &png)?;
+            RunPicture::new(boxes, &snapshot, &record.path, title)?.save(&svg, &png)?;
             files.extend([svg, png]);
         }
         if self.json {
