@@ -76,19 +76,22 @@ where
         self.sampler.observe_batch_end(solved);
         // 2. Prune with the true solution cost only.
         let mut pruned = 0;
-        // Pruning walks the whole graph without polling: when the termination condition has
-        // fired it waits for the next batch (the bound it would prune with is kept).
+        // Pruning's scan polls the termination condition: when it fires (before or during
+        // the scan), pruning waits for the next batch (the bound it would prune with is kept).
         if self.parameters.pruning
             && solved
             && self.best_cost < self.last_prune_cost
             && !stop.should_stop()
         {
             let protected: Vec<u32> = self.solution_vertices().iter().map(|v| v.0).collect();
-            pruned = self
-                .graph
-                .prune(self.best_cost, &protected, &mut self.scratch);
-            self.last_prune_cost = self.best_cost;
-            self.counters.pruned += pruned as u64;
+            if let Some(removed) =
+                self.graph
+                    .prune(self.best_cost, &protected, &mut self.scratch, stop)
+            {
+                pruned = removed;
+                self.last_prune_cost = self.best_cost;
+                self.counters.pruned += pruned as u64;
+            }
         }
         // 3. Sample under the current bound (reported as the sampler applies it: an
         //    estimated-informed-set sampler replaces "unbounded" by its estimate).

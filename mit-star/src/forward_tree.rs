@@ -3,6 +3,10 @@
 use crate::graph::RandomGeometricGraph;
 use crate::vertex::NONE;
 
+/// Vertices the pruning scan visits between two polls of the stop condition (a few tens of
+/// microseconds of work).
+const PRUNE_POLL: usize = 4096;
+
 impl RandomGeometricGraph {
     /// Removes `child` from its forward parent's child list (keeps its own subtree).
     pub(crate) fn unlink_child(&mut self, child: u32) {
@@ -71,9 +75,23 @@ impl RandomGeometricGraph {
     /// `bound`, except those in `protected` (start and goals are never removed). Forward
     /// subtrees hanging from removed vertices are detached (their vertices stay as samples with
     /// `g = ∞`). Starts a new batch. Returns the number of vertices removed.
-    pub(crate) fn prune(&mut self, bound: f64, protected: &[u32], removed: &mut Vec<u32>) -> usize {
+    ///
+    /// The scan for prunable vertices polls `stop` every [`PRUNE_POLL`] vertices; if it fires,
+    /// nothing is removed and `None` is returned (the caller prunes at a later batch). The
+    /// removal itself, proportional to the vertices removed, runs to the end.
+    pub(crate) fn prune(
+        &mut self,
+        bound: f64,
+        protected: &[u32],
+        removed: &mut Vec<u32>,
+        stop: &dyn spaces::Stop,
+    ) -> Option<usize> {
         removed.clear();
-        for node in self.graph.node_indices() {
+        for (scanned, node) in self.graph.node_indices().enumerate() {
+            if scanned % PRUNE_POLL == PRUNE_POLL - 1 && stop.should_stop() {
+                removed.clear();
+                return None;
+            }
             let v = &self.graph[node];
             let id = node.index() as u32;
             if !v.is_terminal()
@@ -110,7 +128,7 @@ impl RandomGeometricGraph {
         // The trees forget them lazily (their birth stamps are dead).
         self.nn.note_removed(removed.len());
         self.new_batch();
-        removed.len()
+        Some(removed.len())
     }
 }
 
@@ -158,16 +176,45 @@ mod tests {
         let (mut g, [s, a, b, c, d]) = tree();
         // Admissible costs: a 2, b 4, c 6, d 3. Bound 3.5 removes b and c, keeps a and d.
         let mut removed = Vec::new();
-        assert_eq!(g.prune(3.5, &[], &mut removed), 2);
+        assert_eq!(g.prune(3.5, &[], &mut removed, &spaces::Never), Some(2));
         assert_eq!(removed, [b, c]);
         assert_eq!(g.vertex_count(), 3);
         assert_eq!(g.vertex(a).first_child, d);
         // Protection keeps a vertex whatever its bound; detached subtrees lose their g.
         let (mut g, [_, a, b, c, _]) = tree();
-        assert_eq!(g.prune(1.0, &[b], &mut removed), 3);
+        assert_eq!(g.prune(1.0, &[b], &mut removed, &spaces::Never), Some(3));
         assert_eq!(removed, [a, c, 4]);
         assert_eq!(g.vertex(b).g, f64::INFINITY);
         assert_eq!(g.vertex(b).parent, NONE);
         assert_eq!(g.vertex(s).first_child, NONE);
+    }
+
+    /// Fires on every poll.
+    struct Fired;
+    impl spaces::Stop for Fired {
+        fn should_stop(&self) -> bool {
+            true
+        }
+    }
+
+    #[test]
+    fn a_stop_during_the_scan_removes_nothing() {
+        let mut g = RandomGeometricGraph::new(1, true);
+        let start = g.add_vertex(&[0.0], Vertex::new(VertexKind::Start, 0.0, 0.0, 0));
+        g.vertex_mut(start).g = 0.0;
+        for i in 0..2 * super::PRUNE_POLL {
+            let x = 1.0 + i as f64;
+            g.add_vertex(&[x], Vertex::new(VertexKind::Sample, x, x, 0));
+        }
+        let count = g.vertex_count();
+        let mut removed = Vec::new();
+        assert_eq!(g.prune(0.5, &[], &mut removed, &Fired), None);
+        assert!(removed.is_empty());
+        assert_eq!(g.vertex_count(), count);
+        // Without the stop, every sample goes.
+        assert_eq!(
+            g.prune(0.5, &[], &mut removed, &spaces::Never),
+            Some(count - 1)
+        );
     }
 }

@@ -318,7 +318,7 @@ mod tests {
                 // Prune a slice of the space now and then (ids get reused afterwards).
                 if batch % 8 == 5 {
                     let bound = 1.6 - 0.1 * (batch / 8) as f64;
-                    assert!(g.prune(bound, &[], &mut removed) > 0);
+                    assert!(g.prune(bound, &[], &mut removed, &spaces::Never).unwrap() > 0);
                 }
             }
         }
