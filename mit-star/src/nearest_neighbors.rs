@@ -248,7 +248,7 @@ impl NearestNeighbors {
         self.queries += 1;
         self.maintain(alive, stop);
         found.reset(k);
-        let mut poll = Poll::new(stop);
+        let mut poll = Poll::new(stop, self.dimension);
         // Largest tree first: it holds most of the neighbours, so the bound tightens early.
         for tree in &self.trees {
             tree.nearest_into(query, found, alive, &mut poll);
@@ -288,7 +288,7 @@ impl NearestNeighbors {
         self.maintain(alive, stop);
         found.reset(usize::MAX);
         let radius2 = radius * radius;
-        let mut poll = Poll::new(stop);
+        let mut poll = Poll::new(stop, self.dimension);
         for tree in &self.trees {
             tree.within_into(query, radius2, found, alive, &mut poll);
         }

@@ -222,8 +222,8 @@ impl RandomGeometricGraph {
         stop: &dyn Stop,
     ) -> bool {
         self.linear_queries += 1;
-        let mut poll = Poll::new(stop);
         let query = &self.states[v as usize];
+        let mut poll = Poll::new(stop, query.len());
         match self.neighbourhood {
             Neighbourhood::Nearest(_) => found.reset(wanted + 1),
             Neighbourhood::Radius(_) => found.reset(usize::MAX),
