@@ -102,6 +102,9 @@ where
         };
         let mut ids = std::mem::take(&mut self.batch_ids);
         ids.clear();
+        // Grow every per-vertex array once, here, rather than by copies mid-batch.
+        ids.reserve(self.parameters.batch_size);
+        self.graph.reserve(self.parameters.batch_size);
         let mut sample = std::mem::take(&mut self.sample);
         let mut committed = 0;
         for _ in 0..self.parameters.batch_size {

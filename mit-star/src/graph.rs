@@ -132,6 +132,19 @@ impl RandomGeometricGraph {
         id as u32
     }
 
+    /// Makes room for `additional` more vertices in every per-vertex array, so that adding a
+    /// batch does not copy them while it samples (a growing array copies everything it holds,
+    /// tens of milliseconds for a large graph, with no chance to poll the stop condition).
+    pub(crate) fn reserve(&mut self, additional: usize) {
+        self.graph.reserve_nodes(additional);
+        self.births.reserve(additional);
+        self.lists.reserve(additional);
+        self.log.reserve(additional);
+        if self.euclidean {
+            self.nn.reserve_pending(additional);
+        }
+    }
+
     /// Makes `ids` visible to neighbour queries and starts a new batch.
     pub(crate) fn commit(&mut self, ids: &[u32]) {
         let (states, births) = (&self.states, &self.births);

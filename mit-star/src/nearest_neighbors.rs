@@ -115,6 +115,14 @@ impl NearestNeighbors {
         }
     }
 
+    /// Makes room for `additional` more pending points.
+    pub(crate) fn reserve_pending(&mut self, additional: usize) {
+        self.pending_ids.reserve(additional);
+        self.pending_births.reserve(additional);
+        self.pending
+            .reserve(additional.saturating_mul(self.dimension));
+    }
+
     /// Records that `count` stored points died (their stamps are no longer current).
     pub(crate) fn note_removed(&mut self, count: usize) {
         self.dead = (self.dead + count).min(self.stored);
