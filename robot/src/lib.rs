@@ -4,10 +4,52 @@
 //! "spherised" models of VAMP and MotionBenchMaker); its actuated joints span a
 //! [`spaces::JointSpace`]. A scene is a set of boxes, cylinders and spheres in the robot's base
 //! frame, read from MotionBenchMaker's MoveIt YAML. Checking a configuration places every
-//! sphere by forward kinematics and tests it against the scene and the robot itself.
+//! sphere by forward kinematics and tests it against the scene and the robot itself. An
+//! [`ArmProblem`] is a [`problems::PlanningProblem`]: every planner plans for it.
+//!
+//! ```
+//! use mit_star::{FirstSolution, MitStar, Planner, TerminationExt};
+//! let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/table_pick_panda");
+//! let problem = robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
+//! let mut planner = MitStar::for_problem(&problem).seed(1).build()?;
+//! let outcome = planner.solve(&FirstSolution.or(mit_star::TimeLimit::seconds(5.0)))?;
+//! assert!(outcome.is_solved());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 //!
 //! # Catalogue
 //! | item | what it is |
 //! |---|---|
+//! | [`RobotModel`], [`LinkFrame`], [`Motion`], [`LinkSphere`], [`rpy_matrix`] | a sphere-model robot from URDF (urdf-rs) and SRDF (its disabled pairs), links in tree order |
+//! | [`Kinematics`] | forward kinematics: link poses and sphere centres, `f32` and `f64`, no allocation |
+//! | [`Obstacle`], [`Shape`] | boxes, cylinders and spheres with poses; exact sphere contact tests |
+//! | [`Scene`] | a MoveIt planning scene (MotionBenchMaker YAML): obstacles and allowed collisions |
+//! | [`MbmProblem`] | a MotionBenchMaker scene + request pair |
+//! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases |
+//! | [`ArmProblem`], [`CHECKS_PER_UNIT`] | an arm planning problem, with VAMP's default check density |
+//! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 
 #![forbid(unsafe_code)]
+
+mod arm_checker;
+mod arm_error;
+mod arm_problem;
+mod kinematics;
+mod mbm_problem;
+mod model_error;
+mod obstacle;
+mod robot_model;
+mod scene;
+mod scene_error;
+mod srdf;
+
+pub use arm_checker::ArmChecker;
+pub use arm_error::ArmError;
+pub use arm_problem::{ArmProblem, CHECKS_PER_UNIT};
+pub use kinematics::Kinematics;
+pub use mbm_problem::MbmProblem;
+pub use model_error::ModelError;
+pub use obstacle::{Obstacle, Shape};
+pub use robot_model::{LinkFrame, LinkSphere, Motion, RobotModel, rpy_matrix};
+pub use scene::Scene;
+pub use scene_error::SceneError;

@@ -1,0 +1,179 @@
+//! [`ArmProblem`]: a robot arm, a scene, a start and a goal configuration — a
+//! [`PlanningProblem`] every planner accepts.
+
+use std::path::Path;
+use std::sync::Arc;
+
+use problems::{PlanningProblem, ProblemError};
+use spaces::{JointSpace, StateSpace};
+use validity::StateValidity;
+
+use crate::{ArmChecker, ArmError, MbmProblem, RobotModel, Scene};
+
+/// VAMP's default collision-check density: 32 checks per unit of joint-space distance.
+pub const CHECKS_PER_UNIT: f64 = 32.0;
+
+/// The Panda sphere model shipped with the crate (VAMP's, 59 spheres).
+const PANDA_URDF: &str = include_str!("../data/panda/panda_spherized.urdf");
+/// The Panda's MoveIt semantic description (its disabled self-collision pairs).
+const PANDA_SRDF: &str = include_str!("../data/panda/panda.srdf");
+
+/// A planning problem for a robot arm: plan the arm's joints from `start` to `goal` among the
+/// scene's obstacles without self-collision.
+///
+/// The collision-check step defaults to VAMP's 32 checks per unit of joint-space distance
+/// ([`CHECKS_PER_UNIT`]); [`with_resolution`](Self::with_resolution) selects a fraction of the
+/// maximum extent instead (the paper's `5e-3`).
+///
+/// ```
+/// use problems::PlanningProblem;
+/// use validity::StateValidity;
+/// let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/box_panda");
+/// let problem = robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
+/// assert_eq!(problem.name(), "box_panda/0001");
+/// assert_eq!(problem.start().len(), 7);
+/// assert!(problem.validity().is_valid(problem.start()));
+/// # Ok::<(), robot::ArmError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct ArmProblem {
+    name: String,
+    robot: Arc<RobotModel>,
+    scene: Arc<Scene>,
+    checker: ArmChecker,
+    start: Vec<f64>,
+    goals: Vec<Vec<f64>>,
+    resolution: f64,
+}
+
+impl ArmProblem {
+    /// The problem of `robot` (its SRDF already applied) in `scene` from `start` to `goal`
+    /// (joint values in the order of [`RobotModel::joint_space`]). The scene's allowed-collision
+    /// pairs are removed from the robot's self-collision pairs.
+    ///
+    /// # Errors
+    /// [`ArmError::Model`] for an allowed pair naming an unknown link, [`ArmError::Query`] for
+    /// a start or goal of the wrong length, not finite, or outside the joint limits.
+    pub fn new(
+        name: impl Into<String>,
+        robot: RobotModel,
+        scene: Scene,
+        start: Vec<f64>,
+        goal: Vec<f64>,
+    ) -> Result<Self, ArmError> {
+        let name = name.into();
+        let robot = robot.allow_collisions(
+            scene
+                .allowed_pairs()
+                .iter()
+                .map(|(a, b)| (a.as_str(), b.as_str())),
+        )?;
+        let space = robot.joint_space();
+        for (what, state) in [("start", &start), ("goal", &goal)] {
+            space.check_state(state).map_err(|source| ArmError::Query {
+                problem: name.clone(),
+                what,
+                source,
+            })?;
+        }
+        let resolution = 1.0 / (CHECKS_PER_UNIT * space.maximum_extent());
+        let (robot, scene) = (Arc::new(robot), Arc::new(scene));
+        let checker = ArmChecker::new(&robot, &scene);
+        Ok(Self {
+            name,
+            robot,
+            scene,
+            checker,
+            start,
+            goals: vec![goal],
+            resolution,
+        })
+    }
+
+    /// MotionBenchMaker problem `index` (1-based, as in `scene0001.yaml`) of `folder`, for the
+    /// Panda sphere model shipped with this crate.
+    ///
+    /// # Errors
+    /// [`ArmError::Scene`] for missing or malformed files, [`ArmError::Query`] for joint values
+    /// outside the limits.
+    pub fn panda_mbm(folder: &Path, index: usize) -> Result<Self, ArmError> {
+        let robot = RobotModel::from_urdf_str(PANDA_URDF)?.with_srdf_str(PANDA_SRDF)?;
+        Self::mbm(robot, folder, index)
+    }
+
+    /// MotionBenchMaker problem `index` of `folder` for `robot` (SRDF applied).
+    ///
+    /// # Errors
+    /// As [`panda_mbm`](Self::panda_mbm).
+    pub fn mbm(robot: RobotModel, folder: &Path, index: usize) -> Result<Self, ArmError> {
+        let problem = MbmProblem::load(folder, index)?;
+        let names = robot.joint_names();
+        let names: Vec<&str> = names.iter().map(String::as_str).collect();
+        let start = problem.start_for(&names)?;
+        let goal = problem.goal_for(&names)?;
+        let name = problem.name.clone();
+        Self::new(name, robot, problem.scene, start, goal)
+    }
+
+    /// The same problem checked every `resolution × maximum extent` (OMPL's convention; the
+    /// paper uses `5e-3`).
+    ///
+    /// # Errors
+    /// [`ArmError::Resolution`] unless `0 < resolution < 1`.
+    pub fn with_resolution(mut self, resolution: f64) -> Result<Self, ArmError> {
+        if !(resolution > 0.0 && resolution < 1.0) {
+            return Err(ArmError::Resolution(resolution));
+        }
+        self.resolution = resolution;
+        Ok(self)
+    }
+
+    /// The robot (SRDF and the scene's allowed collisions applied).
+    pub fn robot(&self) -> &RobotModel {
+        &self.robot
+    }
+
+    /// The scene.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// `true` if the start and the goal are collision-free (MotionBenchMaker has a few
+    /// problems where one is not; benchmarks count and skip them).
+    pub fn ends_are_valid(&self) -> bool {
+        self.checker.is_valid(&self.start) && self.goals.iter().all(|g| self.checker.is_valid(g))
+    }
+}
+
+impl PlanningProblem for ArmProblem {
+    type Space = JointSpace;
+    type Validity = ArmChecker;
+
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn space(&self) -> &JointSpace {
+        self.robot.joint_space()
+    }
+
+    fn validity(&self) -> &ArmChecker {
+        &self.checker
+    }
+
+    fn start(&self) -> &[f64] {
+        &self.start
+    }
+
+    fn goals(&self) -> &[Vec<f64>] {
+        &self.goals
+    }
+
+    fn resolution(&self) -> f64 {
+        self.resolution
+    }
+
+    fn check_step(&self) -> Result<f64, ProblemError> {
+        Ok(self.resolution * self.space().maximum_extent())
+    }
+}

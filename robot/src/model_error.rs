@@ -1,0 +1,113 @@
+//! [`ModelError`]: why a robot model could not be loaded.
+
+use std::path::PathBuf;
+
+use thiserror::Error;
+
+/// Why a [`RobotModel`](crate::RobotModel) could not be made from a URDF or SRDF, or why a
+/// change to its collision pairs was refused. Every variant names the file or element at fault.
+#[derive(Debug, Error)]
+pub enum ModelError {
+    /// A file could not be read.
+    #[error("cannot read `{path}`: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+    /// The URDF is not well-formed or not a URDF.
+    #[error("{origin}: not a readable URDF: {message}")]
+    Urdf {
+        /// The file (or `"URDF text"`).
+        origin: String,
+        /// The parser's message.
+        message: String,
+    },
+    /// The SRDF is not well-formed XML.
+    #[error("{origin}: not a readable SRDF: {message}")]
+    Srdf {
+        /// The file (or `"SRDF text"`).
+        origin: String,
+        /// The parser's message.
+        message: String,
+    },
+    /// A collision element that is not a sphere.
+    #[error(
+        "link `{link}`: collision geometry `{kind}` is not supported (only spheres: use a spherised model)"
+    )]
+    UnsupportedGeometry {
+        /// The link.
+        link: String,
+        /// `box`, `cylinder`, `mesh`, …
+        kind: &'static str,
+    },
+    /// A joint type or feature this model cannot represent.
+    #[error("joint `{joint}`: {what} is not supported")]
+    UnsupportedJoint {
+        /// The joint.
+        joint: String,
+        /// What is unsupported (`a floating joint`, `mimic`, …).
+        what: &'static str,
+    },
+    /// The links do not form one tree.
+    #[error("the links do not form one tree: {why}")]
+    NotATree {
+        /// What is wrong (no root, several roots, a link with two parents, a cycle).
+        why: String,
+    },
+    /// A joint names a link the URDF does not have.
+    #[error("joint `{joint}` names link `{link}`, which the URDF does not define")]
+    UnknownJointLink {
+        /// The joint.
+        joint: String,
+        /// The missing link.
+        link: String,
+    },
+    /// A moving joint with a zero (or non-finite) axis.
+    #[error("joint `{joint}`: the axis {axis:?} has no direction")]
+    BadAxis {
+        /// The joint.
+        joint: String,
+        /// The axis as written.
+        axis: [f64; 3],
+    },
+    /// Joint limits that do not bound an interval.
+    #[error(
+        "joint `{joint}`: limits [{lower}, {upper}] are not a finite interval with lower < upper"
+    )]
+    BadLimits {
+        /// The joint.
+        joint: String,
+        /// Lower limit.
+        lower: f64,
+        /// Upper limit.
+        upper: f64,
+    },
+    /// A number that must be finite (an origin, a radius) is not, or a radius is not positive.
+    #[error("{element}: {what} {value} is not usable")]
+    BadNumber {
+        /// The link or joint.
+        element: String,
+        /// The quantity (`sphere radius`, `origin`, …).
+        what: &'static str,
+        /// The value.
+        value: f64,
+    },
+    /// The model has no joint that moves.
+    #[error("the robot has no revolute, continuous or prismatic joint to plan for")]
+    NoJoints,
+    /// An SRDF or an allowed-collision entry names a link the robot does not have.
+    #[error("{origin}: link `{link}` is not a link of robot `{robot}`")]
+    UnknownLink {
+        /// The SRDF file, or the scene's allowed-collision matrix.
+        origin: String,
+        /// The unknown name.
+        link: String,
+        /// The robot's name.
+        robot: String,
+    },
+    /// The joint space could not be made.
+    #[error("joint space: {0}")]
+    Space(#[from] spaces::SpaceError),
+}

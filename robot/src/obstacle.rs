@@ -1,0 +1,174 @@
+//! [`Obstacle`]: a box, cylinder or sphere placed in the world, and exact sphere tests.
+
+use glam::{Affine3A, DAffine3, DQuat, DVec3, Vec3A};
+
+/// The shape of an obstacle, in its own frame (centred at the origin).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// A box with these half side lengths along x, y, z.
+    Cuboid {
+        /// Half side lengths.
+        half_extents: DVec3,
+    },
+    /// A cylinder along z: `|z| ≤ half_height`, `x² + y² ≤ radius²`.
+    Cylinder {
+        /// Half of the height.
+        half_height: f64,
+        /// Radius.
+        radius: f64,
+    },
+    /// A ball.
+    Sphere {
+        /// Radius.
+        radius: f64,
+    },
+}
+
+/// A solid obstacle: a [`Shape`] at a pose (rotation then translation) in the robot's base
+/// frame, with its `f32` world-to-local transform for the fast tests and a bounding sphere.
+///
+/// Contact convention: a ball and a solid **collide** when they share at least one point —
+/// when the distance from the ball's centre to the solid is at most the ball's radius
+/// (touching counts as collision, as in VAMP and FCL's boolean queries).
+///
+/// ```
+/// use glam::{DQuat, DVec3, Vec3A};
+/// use robot::{Obstacle, Shape};
+/// let wall = Obstacle::new(
+///     Shape::Cuboid { half_extents: DVec3::new(0.01, 0.5, 0.5) },
+///     DVec3::new(0.5, 0.0, 0.0),
+///     DQuat::IDENTITY,
+/// );
+/// assert!(wall.collides_sphere(Vec3A::new(0.45, 0.0, 0.0), 0.05));
+/// assert!(!wall.collides_sphere(Vec3A::new(0.4, 0.0, 0.0), 0.05));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Obstacle {
+    shape: Shape,
+    pose: DAffine3,
+    /// World to local, `f32`.
+    inverse: Affine3A,
+    /// World to local, `f64`.
+    inverse64: DAffine3,
+    /// The shape's parameters in `f32`: half extents, or (radius, half height, 0).
+    size: Vec3A,
+    center: Vec3A,
+    bound: f32,
+}
+
+impl Obstacle {
+    /// `shape` rotated by `rotation` (normalised here) and moved to `position`.
+    pub fn new(shape: Shape, position: DVec3, rotation: DQuat) -> Self {
+        let pose = DAffine3::from_rotation_translation(rotation.normalize(), position);
+        let inverse64 = pose.inverse();
+        let (size, bound) = match shape {
+            Shape::Cuboid { half_extents } => (half_extents.as_vec3a(), half_extents.length()),
+            Shape::Cylinder {
+                half_height,
+                radius,
+            } => (
+                Vec3A::new(radius as f32, half_height as f32, 0.0),
+                radius.hypot(half_height),
+            ),
+            Shape::Sphere { radius } => (Vec3A::splat(radius as f32), radius),
+        };
+        Self {
+            shape,
+            pose,
+            inverse: crate::kinematics::to_f32(&inverse64),
+            inverse64,
+            size,
+            center: position.as_vec3a(),
+            // Rounded up so that the `f32` cull never rejects a real contact.
+            bound: (bound * (1.0 + 1e-6) + 1e-6) as f32,
+        }
+    }
+
+    /// The shape.
+    pub fn shape(&self) -> Shape {
+        self.shape
+    }
+
+    /// The pose (local to world).
+    pub fn pose(&self) -> DAffine3 {
+        self.pose
+    }
+
+    /// Centre and radius of a sphere enclosing the obstacle.
+    pub fn bounding_sphere(&self) -> (Vec3A, f32) {
+        (self.center, self.bound)
+    }
+
+    /// `true` if the ball of `radius` at `center` meets the obstacle (`f32`, the fast test).
+    #[inline]
+    pub fn collides_sphere(&self, center: Vec3A, radius: f32) -> bool {
+        let reach = self.bound + radius;
+        if center.distance_squared(self.center) > reach * reach {
+            return false;
+        }
+        let p = self.inverse.transform_point3a(center);
+        let excess = match self.shape {
+            Shape::Cuboid { .. } => (p.abs() - self.size).max(Vec3A::ZERO).length_squared(),
+            Shape::Cylinder { .. } => {
+                let radial = (p.x * p.x + p.y * p.y).sqrt() - self.size.x;
+                let axial = p.z.abs() - self.size.y;
+                let (r, a) = (radial.max(0.0), axial.max(0.0));
+                r * r + a * a
+            }
+            Shape::Sphere { .. } => {
+                let d = (p.length() - self.size.x).max(0.0);
+                d * d
+            }
+        };
+        excess <= radius * radius
+    }
+
+    /// The distance from `point` to the solid (0 inside), in `f64`: the reference for the
+    /// fast test.
+    pub fn distance_f64(&self, point: DVec3) -> f64 {
+        let p = self.inverse64.transform_point3(point);
+        match self.shape {
+            Shape::Cuboid { half_extents } => (p.abs() - half_extents).max(DVec3::ZERO).length(),
+            Shape::Cylinder {
+                half_height,
+                radius,
+            } => {
+                let radial = (p.x.hypot(p.y) - radius).max(0.0);
+                let axial = (p.z.abs() - half_height).max(0.0);
+                radial.hypot(axial)
+            }
+            Shape::Sphere { radius } => (p.length() - radius).max(0.0),
+        }
+    }
+
+    /// `f64` twin of [`collides_sphere`](Self::collides_sphere).
+    pub fn collides_sphere_f64(&self, center: DVec3, radius: f64) -> bool {
+        self.distance_f64(center) <= radius
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rotated_cylinders_and_spheres() {
+        // A cylinder lying along x (z rotated onto x), radius 0.1, length 1.
+        let rod = Obstacle::new(
+            Shape::Cylinder {
+                half_height: 0.5,
+                radius: 0.1,
+            },
+            DVec3::ZERO,
+            DQuat::from_rotation_y(std::f64::consts::FRAC_PI_2),
+        );
+        assert!(rod.collides_sphere(Vec3A::new(0.45, 0.0, 0.15), 0.06));
+        assert!(!rod.collides_sphere(Vec3A::new(0.45, 0.0, 0.25), 0.06));
+        assert!(!rod.collides_sphere(Vec3A::new(0.62, 0.0, 0.0), 0.1));
+        assert!((rod.distance_f64(DVec3::new(0.0, 0.3, 0.0)) - 0.2).abs() < 1e-12);
+        let ball = Obstacle::new(Shape::Sphere { radius: 0.2 }, DVec3::X, DQuat::IDENTITY);
+        assert!(ball.collides_sphere(Vec3A::new(1.0, 0.29, 0.0), 0.1));
+        assert!(!ball.collides_sphere(Vec3A::new(1.0, 0.31, 0.0), 0.1));
+        assert_eq!(ball.distance_f64(DVec3::X), 0.0);
+    }
+}

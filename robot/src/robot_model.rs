@@ -1,0 +1,454 @@
+//! [`RobotModel`]: a kinematic tree with spheres as collision geometry, read from URDF.
+
+use std::collections::{HashMap, HashSet};
+use std::ops::Range;
+use std::path::Path;
+
+use glam::{DAffine3, DMat3, DQuat, DVec3};
+use spaces::{Joint, JointSpace};
+
+use crate::ModelError;
+
+/// How the joint above a link moves it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Motion {
+    /// Rigidly attached to its parent.
+    Fixed,
+    /// Rotates about `axis` (a unit vector in the joint frame) by coordinate `coordinate`.
+    Revolute {
+        /// The unit axis.
+        axis: DVec3,
+        /// Index of the joint value in a configuration.
+        coordinate: usize,
+    },
+    /// Slides along `axis` by coordinate `coordinate`.
+    Prismatic {
+        /// The unit axis.
+        axis: DVec3,
+        /// Index of the joint value in a configuration.
+        coordinate: usize,
+    },
+}
+
+/// One link in tree order: its parent (an earlier link) and the joint between them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkFrame {
+    /// The link's name.
+    pub name: String,
+    /// Index of the parent link (`None` for the root, which is link 0).
+    pub parent: Option<usize>,
+    /// The joint's origin in the parent's frame (URDF `<origin xyz rpy>`).
+    pub origin: DAffine3,
+    /// How the joint moves the link.
+    pub motion: Motion,
+}
+
+/// One collision sphere, in its link's frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinkSphere {
+    /// Index of the link it rides on.
+    pub link: usize,
+    /// Centre in the link's frame.
+    pub center: DVec3,
+    /// Radius.
+    pub radius: f64,
+}
+
+/// A robot arm whose collision geometry is spheres: links in tree order (every link after its
+/// parent), the actuated joints as a [`JointSpace`], the spheres grouped by link, and the link
+/// pairs checked for self-collision.
+///
+/// Actuated joints (revolute, continuous, prismatic) are the configuration's coordinates in
+/// depth-first tree order from the root (for the Panda: `panda_joint1` … `panda_joint7`);
+/// fixed joints ride along. Without an SRDF every pair of links with spheres is checked for
+/// self-collision, adjacent links included: apply the robot's SRDF
+/// ([`with_srdf_str`](Self::with_srdf_str)) as MoveIt does.
+///
+/// ```
+/// let urdf = include_str!("../data/panda/panda_spherized.urdf");
+/// let srdf = include_str!("../data/panda/panda.srdf");
+/// let panda = robot::RobotModel::from_urdf_str(urdf)?.with_srdf_str(srdf)?;
+/// assert_eq!(panda.joint_names().len(), 7);
+/// assert_eq!(panda.spheres().len(), 59);
+/// # Ok::<(), robot::ModelError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct RobotModel {
+    name: String,
+    links: Vec<LinkFrame>,
+    space: JointSpace,
+    joint_names: Vec<String>,
+    spheres: Vec<LinkSphere>,
+    ranges: Vec<Range<usize>>,
+    bounds: Vec<Option<(DVec3, f64)>>,
+    pairs: Vec<(usize, usize)>,
+}
+
+impl RobotModel {
+    /// Reads a URDF file.
+    ///
+    /// # Errors
+    /// [`ModelError::Io`] if it cannot be read, else as [`from_urdf_str`](Self::from_urdf_str).
+    pub fn from_urdf_file(path: &Path) -> Result<Self, ModelError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ModelError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Self::parse(&text, &path.display().to_string())
+    }
+
+    /// Reads a URDF document.
+    ///
+    /// # Errors
+    /// [`ModelError::Urdf`] for malformed XML, and the variants naming a link or joint for
+    /// non-sphere collision geometry, unsupported joints, bad axes, limits or numbers, and
+    /// links that do not form one tree.
+    pub fn from_urdf_str(text: &str) -> Result<Self, ModelError> {
+        Self::parse(text, "URDF text")
+    }
+
+    fn parse(text: &str, origin: &str) -> Result<Self, ModelError> {
+        let urdf = urdf_rs::read_from_string(text).map_err(|e| ModelError::Urdf {
+            origin: origin.to_owned(),
+            message: e.to_string(),
+        })?;
+        let names: HashSet<&str> = urdf.links.iter().map(|l| l.name.as_str()).collect();
+        let mut children: HashMap<&str, Vec<&urdf_rs::Joint>> = HashMap::new();
+        let mut has_parent: HashSet<&str> = HashSet::new();
+        for joint in &urdf.joints {
+            for link in [&joint.parent.link, &joint.child.link] {
+                if !names.contains(link.as_str()) {
+                    return Err(ModelError::UnknownJointLink {
+                        joint: joint.name.clone(),
+                        link: link.clone(),
+                    });
+                }
+            }
+            if !has_parent.insert(joint.child.link.as_str()) {
+                return Err(ModelError::NotATree {
+                    why: format!("link `{}` has two parent joints", joint.child.link),
+                });
+            }
+            children
+                .entry(joint.parent.link.as_str())
+                .or_default()
+                .push(joint);
+        }
+        let roots: Vec<&str> = urdf
+            .links
+            .iter()
+            .map(|l| l.name.as_str())
+            .filter(|n| !has_parent.contains(n))
+            .collect();
+        let root = match roots.as_slice() {
+            [root] => *root,
+            [] => {
+                return Err(ModelError::NotATree {
+                    why: "every link has a parent (a cycle)".into(),
+                });
+            }
+            many => {
+                return Err(ModelError::NotATree {
+                    why: format!("{} roots: {}", many.len(), many.join(", ")),
+                });
+            }
+        };
+        // Depth-first from the root, children in document order.
+        let mut links = Vec::with_capacity(urdf.links.len());
+        let mut joints = Vec::new();
+        let mut stack: Vec<(Option<usize>, &str, Option<&urdf_rs::Joint>)> =
+            vec![(None, root, None)];
+        while let Some((parent, name, joint)) = stack.pop() {
+            let index = links.len();
+            let (origin, motion) = match joint {
+                None => (DAffine3::IDENTITY, Motion::Fixed),
+                Some(j) => joint_frame(j, &mut joints)?,
+            };
+            links.push(LinkFrame {
+                name: name.to_owned(),
+                parent,
+                origin,
+                motion,
+            });
+            for j in children.get(name).into_iter().flatten().rev() {
+                stack.push((Some(index), j.child.link.as_str(), Some(j)));
+            }
+        }
+        if links.len() != urdf.links.len() {
+            return Err(ModelError::NotATree {
+                why: "some links are not reachable from the root (a cycle)".into(),
+            });
+        }
+        if joints.is_empty() {
+            return Err(ModelError::NoJoints);
+        }
+        let joint_names = joints.iter().map(|j: &Joint| j.name.clone()).collect();
+        let space = JointSpace::new(joints)?;
+        let by_name: HashMap<&str, &urdf_rs::Link> =
+            urdf.links.iter().map(|l| (l.name.as_str(), l)).collect();
+        let (mut spheres, mut ranges, mut bounds) = (Vec::new(), Vec::new(), Vec::new());
+        for (index, frame) in links.iter().enumerate() {
+            let first = spheres.len();
+            for collision in &by_name[frame.name.as_str()].collision {
+                let radius = match collision.geometry {
+                    urdf_rs::Geometry::Sphere { radius } => radius,
+                    ref other => {
+                        return Err(ModelError::UnsupportedGeometry {
+                            link: frame.name.clone(),
+                            kind: geometry_kind(other),
+                        });
+                    }
+                };
+                if !(radius.is_finite() && radius > 0.0) {
+                    return Err(bad(&frame.name, "sphere radius", radius));
+                }
+                let pose = pose(&collision.origin, &frame.name)?;
+                spheres.push(LinkSphere {
+                    link: index,
+                    center: pose.translation,
+                    radius,
+                });
+            }
+            ranges.push(first..spheres.len());
+            bounds.push(bounding_sphere(&spheres[first..]));
+        }
+        let with_spheres: Vec<usize> = (0..links.len()).filter(|&l| bounds[l].is_some()).collect();
+        let mut pairs = Vec::new();
+        for (k, &i) in with_spheres.iter().enumerate() {
+            for &j in &with_spheres[k + 1..] {
+                pairs.push((i, j));
+            }
+        }
+        Ok(Self {
+            name: urdf.name,
+            links,
+            space,
+            joint_names,
+            spheres,
+            ranges,
+            bounds,
+            pairs,
+        })
+    }
+
+    /// The robot's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The links in tree order (every link after its parent; the root first).
+    pub fn links(&self) -> &[LinkFrame] {
+        &self.links
+    }
+
+    /// The link names in tree order.
+    pub fn link_names(&self) -> impl Iterator<Item = &str> {
+        self.links.iter().map(|l| l.name.as_str())
+    }
+
+    /// The index of the link called `name`.
+    pub fn link_index(&self, name: &str) -> Option<usize> {
+        self.links.iter().position(|l| l.name == name)
+    }
+
+    /// The configuration space: the actuated joints with their limits.
+    pub fn joint_space(&self) -> &JointSpace {
+        &self.space
+    }
+
+    /// The actuated joints' names, in coordinate order.
+    pub fn joint_names(&self) -> &[String] {
+        &self.joint_names
+    }
+
+    /// Every collision sphere, grouped by link in tree order.
+    pub fn spheres(&self) -> &[LinkSphere] {
+        &self.spheres
+    }
+
+    /// The spheres of `link`, as a range of [`spheres`](Self::spheres).
+    pub fn link_sphere_range(&self, link: usize) -> Range<usize> {
+        self.ranges.get(link).cloned().unwrap_or(0..0)
+    }
+
+    /// Per link: a sphere (centre in the link frame, radius) enclosing all of its spheres, or
+    /// `None` for a link without spheres. The centre is the mean of the sphere centres and the
+    /// radius the largest `|c_i − centre| + r_i`: not minimal, but tight for the elongated
+    /// clusters of spherised links, and exact for one sphere.
+    pub fn link_bounding_spheres(&self) -> &[Option<(DVec3, f64)>] {
+        &self.bounds
+    }
+
+    /// The link pairs checked for self-collision: both links have spheres, `i < j`, and
+    /// neither the SRDF nor an allowed-collision entry disabled the pair.
+    pub fn self_collision_pairs(&self) -> &[(usize, usize)] {
+        &self.pairs
+    }
+
+    /// Applies an SRDF document: its `disable_collisions` pairs are no longer checked.
+    ///
+    /// # Errors
+    /// [`ModelError::Srdf`] for malformed XML, [`ModelError::UnknownLink`] for a pair naming
+    /// a link the robot does not have.
+    pub fn with_srdf_str(self, text: &str) -> Result<Self, ModelError> {
+        let pairs = crate::srdf::disabled_pairs(text, "SRDF text")?;
+        self.disable(&pairs, "SRDF text")
+    }
+
+    /// Applies an SRDF file (see [`with_srdf_str`](Self::with_srdf_str)).
+    ///
+    /// # Errors
+    /// [`ModelError::Io`] if it cannot be read, else as [`with_srdf_str`](Self::with_srdf_str).
+    pub fn with_srdf_file(self, path: &Path) -> Result<Self, ModelError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ModelError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let origin = path.display().to_string();
+        let pairs = crate::srdf::disabled_pairs(&text, &origin)?;
+        self.disable(&pairs, &origin)
+    }
+
+    /// Stops checking the given link pairs for self-collision (a MoveIt scene's
+    /// allowed-collision matrix). Pairs involving links without spheres change nothing.
+    ///
+    /// # Errors
+    /// [`ModelError::UnknownLink`] for a name that is not a link of the robot.
+    pub fn allow_collisions<'a>(
+        self,
+        pairs: impl IntoIterator<Item = (&'a str, &'a str)>,
+    ) -> Result<Self, ModelError> {
+        let pairs: Vec<(String, String)> = pairs
+            .into_iter()
+            .map(|(a, b)| (a.to_owned(), b.to_owned()))
+            .collect();
+        self.disable(&pairs, "allowed-collision matrix")
+    }
+
+    fn disable(mut self, pairs: &[(String, String)], origin: &str) -> Result<Self, ModelError> {
+        let mut off = HashSet::new();
+        for (a, b) in pairs {
+            let index = |name: &str| {
+                self.link_index(name)
+                    .ok_or_else(|| ModelError::UnknownLink {
+                        origin: origin.to_owned(),
+                        link: name.to_owned(),
+                        robot: self.name.clone(),
+                    })
+            };
+            let (i, j) = (index(a)?, index(b)?);
+            off.insert((i.min(j), i.max(j)));
+        }
+        self.pairs.retain(|p| !off.contains(p));
+        Ok(self)
+    }
+}
+
+/// The origin and motion of a URDF joint; pushes its coordinate onto `joints` if it moves.
+fn joint_frame(
+    joint: &urdf_rs::Joint,
+    joints: &mut Vec<Joint>,
+) -> Result<(DAffine3, Motion), ModelError> {
+    use urdf_rs::JointType as T;
+    let origin = pose(&joint.origin, &joint.name)?;
+    let what = match joint.joint_type {
+        // A fixed joint does not move, whatever it claims to mimic.
+        T::Fixed => return Ok((origin, Motion::Fixed)),
+        T::Revolute | T::Continuous | T::Prismatic => None,
+        T::Floating => Some("a floating joint"),
+        T::Planar => Some("a planar joint"),
+        T::Spherical => Some("a spherical joint"),
+    };
+    let what = what.or(joint.mimic.as_ref().map(|_| "a mimic joint"));
+    if let Some(what) = what {
+        return Err(ModelError::UnsupportedJoint {
+            joint: joint.name.clone(),
+            what,
+        });
+    }
+    let raw = DVec3::from_array(joint.axis.xyz.0);
+    let axis = raw.try_normalize().ok_or(ModelError::BadAxis {
+        joint: joint.name.clone(),
+        axis: joint.axis.xyz.0,
+    })?;
+    let coordinate = joints.len();
+    let (lower, upper) = (joint.limit.lower, joint.limit.upper);
+    let limited = |j: fn(String, f64, f64) -> Joint| {
+        if lower.is_finite() && upper.is_finite() && lower < upper {
+            Ok(j(joint.name.clone(), lower, upper))
+        } else {
+            Err(ModelError::BadLimits {
+                joint: joint.name.clone(),
+                lower,
+                upper,
+            })
+        }
+    };
+    let (spec, motion) = match joint.joint_type {
+        T::Revolute => (
+            limited(|n, l, u| Joint::revolute(n, l, u))?,
+            Motion::Revolute { axis, coordinate },
+        ),
+        T::Prismatic => (
+            limited(|n, l, u| Joint::prismatic(n, l, u))?,
+            Motion::Prismatic { axis, coordinate },
+        ),
+        _ => (
+            Joint::continuous(joint.name.clone()),
+            Motion::Revolute { axis, coordinate },
+        ),
+    };
+    joints.push(spec);
+    Ok((origin, motion))
+}
+
+/// A URDF pose: translation `xyz`, rotation `Rz(yaw)·Ry(pitch)·Rx(roll)` from `rpy`.
+fn pose(p: &urdf_rs::Pose, element: &str) -> Result<DAffine3, ModelError> {
+    for &v in p.xyz.0.iter().chain(&p.rpy.0) {
+        if !v.is_finite() {
+            return Err(bad(element, "origin", v));
+        }
+    }
+    Ok(DAffine3::from_mat3_translation(
+        rpy_matrix(p.rpy.0),
+        DVec3::from_array(p.xyz.0),
+    ))
+}
+
+/// The URDF rotation of roll, pitch, yaw: `Rz(yaw)·Ry(pitch)·Rx(roll)`.
+pub fn rpy_matrix([roll, pitch, yaw]: [f64; 3]) -> DMat3 {
+    DMat3::from_quat(
+        DQuat::from_rotation_z(yaw) * DQuat::from_rotation_y(pitch) * DQuat::from_rotation_x(roll),
+    )
+}
+
+fn bad(element: &str, what: &'static str, value: f64) -> ModelError {
+    ModelError::BadNumber {
+        element: element.to_owned(),
+        what,
+        value,
+    }
+}
+
+fn geometry_kind(g: &urdf_rs::Geometry) -> &'static str {
+    match g {
+        urdf_rs::Geometry::Box { .. } => "box",
+        urdf_rs::Geometry::Cylinder { .. } => "cylinder",
+        urdf_rs::Geometry::Capsule { .. } => "capsule",
+        urdf_rs::Geometry::Sphere { .. } => "sphere",
+        urdf_rs::Geometry::Mesh { .. } => "mesh",
+    }
+}
+
+/// The enclosing sphere of [`RobotModel::link_bounding_spheres`].
+fn bounding_sphere(spheres: &[LinkSphere]) -> Option<(DVec3, f64)> {
+    if spheres.is_empty() {
+        return None;
+    }
+    let center = spheres.iter().map(|s| s.center).sum::<DVec3>() / spheres.len() as f64;
+    let radius = spheres
+        .iter()
+        .map(|s| s.center.distance(center) + s.radius)
+        .fold(0.0, f64::max);
+    Some((center, radius))
+}
