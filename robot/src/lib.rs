@@ -26,6 +26,7 @@
 //! | [`Scene`] | a MoveIt planning scene (MotionBenchMaker YAML): obstacles and allowed collisions |
 //! | [`MbmProblem`] | a MotionBenchMaker scene + request pair |
 //! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases |
+//! | [`ParryChecker`] | the reference checker: `f64`, parry queries, no culling (tests and path re-checks) |
 //! | [`ArmProblem`], [`CHECKS_PER_UNIT`] | an arm planning problem, with VAMP's default check density |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 
@@ -38,6 +39,7 @@ mod kinematics;
 mod mbm_problem;
 mod model_error;
 mod obstacle;
+mod parry_checker;
 mod robot_model;
 mod scene;
 mod scene_error;
@@ -50,6 +52,7 @@ pub use kinematics::Kinematics;
 pub use mbm_problem::MbmProblem;
 pub use model_error::ModelError;
 pub use obstacle::{Obstacle, Shape};
+pub use parry_checker::ParryChecker;
 pub use robot_model::{LinkFrame, LinkSphere, Motion, RobotModel, rpy_matrix};
 pub use scene::Scene;
 pub use scene_error::SceneError;

@@ -386,11 +386,11 @@ fn joint_frame(
     };
     let (spec, motion) = match joint.joint_type {
         T::Revolute => (
-            limited(|n, l, u| Joint::revolute(n, l, u))?,
+            limited(Joint::revolute)?,
             Motion::Revolute { axis, coordinate },
         ),
         T::Prismatic => (
-            limited(|n, l, u| Joint::prismatic(n, l, u))?,
+            limited(Joint::prismatic)?,
             Motion::Prismatic { axis, coordinate },
         ),
         _ => (

@@ -168,21 +168,30 @@ impl Scene {
                     format!("{} rows for {n} entry_names", acm.entry_values.len()),
                 ));
             }
+            // Every row's length first, so that reading the mirror entry never goes out of
+            // bounds.
+            if let Some((i, row)) = acm
+                .entry_values
+                .iter()
+                .enumerate()
+                .find(|(_, r)| r.len() != n)
+            {
+                return Err(field(
+                    format!("allowed_collision_matrix.entry_values[{i}]"),
+                    format!("{} values for {n} entry_names", row.len()),
+                ));
+            }
             for (i, row) in acm.entry_values.iter().enumerate() {
-                if row.len() != n {
-                    return Err(field(
-                        format!("allowed_collision_matrix.entry_values[{i}]"),
-                        format!("{} values for {n} entry_names", row.len()),
-                    ));
-                }
-                for j in i + 1..n {
-                    if row[j] != acm.entry_values[j][i] {
+                for (j, (&value, mirror)) in
+                    row.iter().zip(&acm.entry_values).enumerate().skip(i + 1)
+                {
+                    if value != mirror[i] {
                         return Err(field(
                             format!("allowed_collision_matrix.entry_values[{i}][{j}]"),
                             "the matrix is not symmetric".into(),
                         ));
                     }
-                    if row[j] {
+                    if value {
                         let (a, b) = (&acm.entry_names[i], &acm.entry_names[j]);
                         scene.allowed.push((a.clone(), b.clone()));
                     }
@@ -268,7 +277,7 @@ fn pose(p: &PoseMessage) -> Result<(DVec3, DQuat), String> {
     }
     let q = DQuat::from_xyzw(qx, qy, qz, qw);
     let norm = q.length();
-    if !(norm > 1e-9) {
+    if norm <= 1e-9 {
         return Err("orientation is the zero quaternion".into());
     }
     Ok((DVec3::new(x, y, z), q / norm))

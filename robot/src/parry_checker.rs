@@ -1,0 +1,155 @@
+//! [`ParryChecker`]: the reference collision checker, in `f64` with parry's shape queries.
+
+use std::cell::RefCell;
+use std::sync::Arc;
+
+use glam::{DAffine3, DQuat, DVec3};
+use parry3d_f64::math::Pose;
+use parry3d_f64::query::intersection_test;
+use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape};
+use spaces::StateSpace;
+use validity::StateValidity;
+
+use crate::{Kinematics, RobotModel, Scene, Shape};
+
+/// Per-clone scratch: link poses, and sphere centres with radii.
+type Placed = (Vec<DAffine3>, Vec<(DVec3, f64)>);
+
+#[derive(Debug)]
+struct Shared {
+    fk: Kinematics,
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    /// Obstacles as parry shapes with their poses.
+    obstacles: Vec<(Pose, SharedShape)>,
+    /// Per link: its spheres' indices (empty for a link without spheres).
+    link_spheres: Vec<std::ops::Range<usize>>,
+    pairs: Vec<(usize, usize)>,
+}
+
+/// The reference checker: the same model and scene as [`ArmChecker`](crate::ArmChecker), but
+/// every sphere placed in `f64` and every test a parry query (balls against cuboids,
+/// cylinders and balls), with no broad phase and no early culling — slow and independent.
+///
+/// It is what the property tests compare the fast checker with, and what the experiment
+/// harness re-checks returned arm paths with.
+/// [`is_valid_with_margin`](Self::is_valid_with_margin) grows (or, negative, shrinks) every
+/// robot sphere, which states the tolerance of a comparison on touching contacts.
+///
+/// ```
+/// use validity::StateValidity;
+/// let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/box_panda");
+/// let problem = robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
+/// let reference = robot::ParryChecker::new(problem.robot(), problem.scene());
+/// let start = problems::PlanningProblem::start(&problem).to_vec();
+/// assert!(reference.is_valid(&start));
+/// # Ok::<(), robot::ArmError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct ParryChecker {
+    shared: Arc<Shared>,
+    scratch: RefCell<Placed>,
+}
+
+impl ParryChecker {
+    /// The reference checker of `robot` (its self-collision pairs as they stand) in `scene`.
+    pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
+        let fk = Kinematics::new(robot);
+        let obstacles = scene
+            .obstacles()
+            .iter()
+            .map(|o| {
+                let pose = o.pose();
+                let rotation = DQuat::from_mat3(&pose.matrix3);
+                let (shape, local) = match o.shape() {
+                    Shape::Cuboid { half_extents } => {
+                        (SharedShape::new(Cuboid::new(half_extents)), DQuat::IDENTITY)
+                    }
+                    // Parry's cylinders run along y, MoveIt's along z: turn y onto z.
+                    Shape::Cylinder {
+                        half_height,
+                        radius,
+                    } => (
+                        SharedShape::new(Cylinder::new(half_height, radius)),
+                        DQuat::from_rotation_x(std::f64::consts::FRAC_PI_2),
+                    ),
+                    Shape::Sphere { radius } => {
+                        (SharedShape::new(Ball::new(radius)), DQuat::IDENTITY)
+                    }
+                };
+                (Pose::from_parts(pose.translation, rotation * local), shape)
+            })
+            .collect();
+        let space = robot.joint_space();
+        let link_spheres = (0..robot.links().len())
+            .map(|l| robot.link_sphere_range(l))
+            .collect();
+        let scratch = (
+            vec![DAffine3::IDENTITY; fk.link_count()],
+            vec![(DVec3::ZERO, 0.0); fk.sphere_count()],
+        );
+        Self {
+            shared: Arc::new(Shared {
+                fk,
+                lower: space.lower().to_vec(),
+                upper: space.upper().to_vec(),
+                obstacles,
+                link_spheres,
+                pairs: robot.self_collision_pairs().to_vec(),
+            }),
+            scratch: RefCell::new(scratch),
+        }
+    }
+
+    /// Validity with every robot sphere's radius changed by `margin` (metres; a sphere whose
+    /// radius would not stay positive is a point). `margin = 0` is [`is_valid`](StateValidity::is_valid).
+    pub fn is_valid_with_margin(&self, q: &[f64], margin: f64) -> bool {
+        let s = &*self.shared;
+        if q.len() != s.lower.len()
+            || q.iter()
+                .zip(s.lower.iter().zip(&s.upper))
+                .any(|(x, (lo, hi))| !(lo <= x && x <= hi))
+        {
+            return false;
+        }
+        let mut guard = self.scratch.borrow_mut();
+        let (links, centers) = &mut *guard;
+        s.fk.sphere_centers_f64(q, links, centers);
+        let ball =
+            |&(c, r): &(DVec3, f64)| (Pose::from_translation(c), Ball::new((r + margin).max(0.0)));
+        let meets = |p1: &Pose,
+                     g1: &dyn parry3d_f64::shape::Shape,
+                     p2: &Pose,
+                     g2: &dyn parry3d_f64::shape::Shape| {
+            // Balls, cuboids and cylinders are all supported by the default dispatcher.
+            intersection_test(p1, g1, p2, g2).is_ok_and(|i| i.intersecting)
+        };
+        for sphere in centers.iter() {
+            let (p, b) = ball(sphere);
+            if s.obstacles
+                .iter()
+                .any(|(op, shape)| meets(&p, &b, op, shape.as_ref()))
+            {
+                return false;
+            }
+        }
+        for &(a, b) in &s.pairs {
+            for i in s.link_spheres[a].clone() {
+                let (pi, bi) = ball(&centers[i]);
+                for j in s.link_spheres[b].clone() {
+                    let (pj, bj) = ball(&centers[j]);
+                    if meets(&pi, &bi, &pj, &bj) {
+                        return false;
+                    }
+                }
+            }
+        }
+        true
+    }
+}
+
+impl StateValidity for ParryChecker {
+    fn is_valid(&self, q: &[f64]) -> bool {
+        self.is_valid_with_margin(q, 0.0)
+    }
+}
