@@ -136,12 +136,23 @@ impl GridWalker {
         if progress.0 >= target {
             return progress.status(&grid);
         }
-        self.scratch.resize(space.dimension(), 0.0);
         let start = progress.0;
         // A walk longer than one poll period polls before its first point too (a walk begun
         // after the deadline tests nothing); a shorter walk never polls: it ends within
         // `STOP_POLL` points anyway, and one clock read would cost as much as a few of them.
         let polls_first = target - start > STOP_POLL;
+        let width = validity.batch_width().clamp(1, STOP_POLL as usize);
+        if width > 1 {
+            return self.advance_batched(
+                space,
+                validity,
+                (a, b, grid),
+                (target, width, polls_first),
+                progress,
+                stop,
+            );
+        }
+        self.scratch.resize(space.dimension(), 0.0);
         let mut position = start;
         for index in grid.order(start, target) {
             let walked = position - start;
@@ -155,6 +166,64 @@ impl GridWalker {
                 return EdgeStatus::Invalid;
             }
             position += 1;
+        }
+        *progress = EdgeProgress(position);
+        progress.status(&grid)
+    }
+
+    /// [`advance`](Self::advance) for a checker with batches: the next `width` points of the
+    /// bisection order (fewer at the end of the walk or of a poll period) go to
+    /// [`StateValidity::first_invalid`] in one call. Each point of the order is drawn from
+    /// the order once, so no point is tested twice; polls fall on the same positions as in
+    /// the one-by-one walk, because a batch never straddles a poll.
+    #[inline(never)]
+    fn advance_batched<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b, grid): (&[f64], &[f64], EdgeGrid),
+        (target, width, polls_first): (u64, usize, bool),
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let dimension = space.dimension();
+        self.scratch.resize(dimension * width, 0.0);
+        let start = progress.0;
+        let mut position = start;
+        let mut order = grid.order(start, target);
+        while position < target {
+            let walked = position - start;
+            if walked % STOP_POLL == 0 && (walked > 0 || polls_first) && stop.should_stop() {
+                break;
+            }
+            let until_poll = STOP_POLL - walked % STOP_POLL;
+            let n = (width as u64).min(until_poll).min(target - position) as usize;
+            let mut filled = 0;
+            for (slot, index) in self
+                .scratch
+                .chunks_exact_mut(dimension)
+                .zip(&mut order)
+                .take(n)
+            {
+                space.interpolate(a, b, grid.fraction(index), slot);
+                filled += 1;
+            }
+            if filled == 0 {
+                break;
+            }
+            self.counters.points_tested += filled as u64;
+            if validity
+                .first_invalid(&self.scratch[..filled * dimension], dimension)
+                .is_some()
+            {
+                *progress = EdgeProgress(EdgeProgress::INVALID);
+                return EdgeStatus::Invalid;
+            }
+            position += filled as u64;
         }
         *progress = EdgeProgress(position);
         progress.status(&grid)

@@ -10,6 +10,40 @@ use std::cell::Cell;
 pub trait StateValidity {
     /// `true` if the state is valid.
     fn is_valid(&self, state: &[f64]) -> bool;
+
+    /// How many states [`first_invalid`](Self::first_invalid) likes to receive at once: the
+    /// lane count of a SIMD checker (8 for an arm checked in `f32x8`), 1 (the default) for
+    /// a checker that gains nothing from batches. Edge checks group up to this many grid
+    /// points of the bisection order into one call.
+    #[inline]
+    fn batch_width(&self) -> usize {
+        1
+    }
+
+    /// The index of the first invalid state among `states` — consecutive states of
+    /// `dimension` coordinates each — or `None` if all are valid.
+    ///
+    /// Must answer exactly what testing the states one by one with
+    /// [`is_valid`](Self::is_valid) in order would: a batched implementation may test every
+    /// state at once, but reports the *first* invalid one. The default does exactly that,
+    /// stopping at the first invalid state.
+    ///
+    /// ```
+    /// use validity::{AllValid, StateValidity};
+    /// struct RightHalf;
+    /// impl StateValidity for RightHalf {
+    ///     fn is_valid(&self, s: &[f64]) -> bool { s[0] >= 0.5 }
+    /// }
+    /// let states = [0.9, 0.0, 0.7, 0.0, 0.2, 0.0, 0.1, 0.0];
+    /// assert_eq!(RightHalf.first_invalid(&states, 2), Some(2));
+    /// assert_eq!(AllValid.first_invalid(&states, 2), None);
+    /// ```
+    #[inline]
+    fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        states
+            .chunks_exact(dimension.max(1))
+            .position(|s| !self.is_valid(s))
+    }
 }
 
 impl<V: StateValidity + ?Sized> StateValidity for &V {
@@ -17,12 +51,32 @@ impl<V: StateValidity + ?Sized> StateValidity for &V {
     fn is_valid(&self, state: &[f64]) -> bool {
         (**self).is_valid(state)
     }
+
+    #[inline]
+    fn batch_width(&self) -> usize {
+        (**self).batch_width()
+    }
+
+    #[inline]
+    fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        (**self).first_invalid(states, dimension)
+    }
 }
 
 impl<V: StateValidity + ?Sized> StateValidity for Box<V> {
     #[inline]
     fn is_valid(&self, state: &[f64]) -> bool {
         (**self).is_valid(state)
+    }
+
+    #[inline]
+    fn batch_width(&self) -> usize {
+        (**self).batch_width()
+    }
+
+    #[inline]
+    fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        (**self).first_invalid(states, dimension)
     }
 }
 
@@ -90,5 +144,24 @@ impl<V: StateValidity> StateValidity for Counted<V> {
     fn is_valid(&self, state: &[f64]) -> bool {
         self.count.set(self.count.get() + 1);
         self.inner.is_valid(state)
+    }
+
+    #[inline]
+    fn batch_width(&self) -> usize {
+        self.inner.batch_width()
+    }
+
+    /// Counts the states tested: one by one up to the first invalid for a checker without
+    /// batches, the whole batch for a batched checker (it tests them all).
+    #[inline]
+    fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        if self.inner.batch_width() <= 1 {
+            return states
+                .chunks_exact(dimension.max(1))
+                .position(|s| !self.is_valid(s));
+        }
+        let n = states.len() / dimension.max(1);
+        self.count.set(self.count.get() + n as u64);
+        self.inner.first_invalid(states, dimension)
     }
 }
