@@ -108,6 +108,9 @@ fn checker<'a>(kind: usize, step: f64) -> Checker<'a> {
     }
 }
 
+/// Statuses and progress after each check, the states tested, the batch sizes.
+type Walked = (Vec<(EdgeStatus, EdgeProgress)>, Vec<Vec<f64>>, Vec<usize>);
+
 /// One check: `(sparse?, reversed?, refine before?)`.
 type Plan = Vec<(bool, bool, bool)>;
 
@@ -118,7 +121,7 @@ fn run(
     (kind, step, width): (usize, f64, usize),
     plan: &Plan,
     stop: &dyn Stop,
-) -> (Vec<(EdgeStatus, EdgeProgress)>, Vec<Vec<f64>>, Vec<usize>) {
+) -> Walked {
     let space = RealVectorSpace::cube(a.len(), -0.5, 0.5).unwrap();
     let validity = Batched::new(world, width);
     let mut checker = checker(kind, step);
