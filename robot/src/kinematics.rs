@@ -102,6 +102,19 @@ impl Kinematics {
         self.dimension
     }
 
+    /// Link `i`'s step of the walk in `f32`: its parent (`usize::MAX` for the root), the
+    /// joint origin, the joint's unit axis and coordinate (`None` if fixed), and whether the
+    /// joint is prismatic. For the SIMD walk, which mirrors [`link_poses`](Self::link_poses).
+    pub(crate) fn step(&self, i: usize) -> (usize, Affine3A, Option<(Vec3A, usize)>, bool) {
+        let s = &self.steps[i];
+        (
+            s.parent,
+            s.origin,
+            s.axis.map(|(a, _, c)| (a, c)),
+            s.prismatic,
+        )
+    }
+
     /// The radius of sphere `i` in `f32`.
     #[inline]
     pub fn radius(&self, i: usize) -> f32 {

@@ -36,6 +36,7 @@ mod arm_checker;
 mod arm_error;
 mod arm_problem;
 mod kinematics;
+mod lanes;
 mod mbm_problem;
 mod model_error;
 mod obstacle;

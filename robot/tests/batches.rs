@@ -1,0 +1,102 @@
+//! The arm checker's eight-lane batches against its scalar check and against parry.
+//!
+//! Random scenes and runs of 1 to 20 configurations (some outside the joint limits): the
+//! batch's first invalid configuration is the one the scalar check finds first, and the one
+//! parry finds first, whenever no configuration of the run lies within the stated tolerance
+//! of touching (see `parry_agreement.rs`).
+
+use glam::{DQuat, DVec3};
+use proptest::prelude::*;
+use robot::{ArmChecker, Obstacle, ParryChecker, RobotModel, Scene, Shape};
+use spaces::StateSpace;
+use validity::StateValidity;
+
+const TOLERANCE: f64 = 1e-4;
+
+fn panda() -> RobotModel {
+    RobotModel::from_urdf_str(include_str!("../data/panda/panda_spherized.urdf"))
+        .unwrap()
+        .with_srdf_str(include_str!("../data/panda/panda.srdf"))
+        .unwrap()
+}
+
+fn obstacle() -> impl Strategy<Value = Obstacle> {
+    let shape = prop_oneof![
+        (0.01..0.4f64, 0.01..0.4f64, 0.01..0.4f64).prop_map(|(x, y, z)| Shape::Cuboid {
+            half_extents: DVec3::new(x, y, z)
+        }),
+        (0.01..0.4f64, 0.01..0.3f64).prop_map(|(h, r)| Shape::Cylinder {
+            half_height: h,
+            radius: r
+        }),
+        (0.01..0.3f64).prop_map(|r| Shape::Sphere { radius: r }),
+    ];
+    (
+        shape,
+        (-0.9..0.9f64, -0.9..0.9f64, -0.2..1.3f64),
+        (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64, 0.1..1.0f64),
+    )
+        .prop_map(|(s, (x, y, z), (a, b, c, d))| {
+            Obstacle::new(
+                s,
+                DVec3::new(x, y, z),
+                DQuat::from_xyzw(a, b, c, d).normalize(),
+            )
+        })
+}
+
+/// Configurations as one flat run; a few stray 5 % beyond the limits.
+fn run() -> impl Strategy<Value = Vec<f64>> {
+    let robot = panda();
+    let space = robot.joint_space();
+    let (lower, upper) = (space.lower().to_vec(), space.upper().to_vec());
+    prop::collection::vec(prop::collection::vec(0.0..1.0f64, 7), 1..=20).prop_map(move |qs| {
+        qs.into_iter()
+            .flat_map(|u| {
+                (0..7)
+                    .map(|j| {
+                        let span = upper[j] - lower[j];
+                        lower[j] - 0.05 * span + u[j] * 1.1 * span
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn batches_find_the_first_invalid_configuration(
+        obstacles in prop::collection::vec(obstacle(), 0..5),
+        states in run(),
+    ) {
+        let robot = panda();
+        let scene = Scene::new(obstacles);
+        let fast = ArmChecker::new(&robot, &scene);
+        let reference = ParryChecker::new(&robot, &scene);
+        let configurations: Vec<&[f64]> = states.chunks_exact(7).collect();
+        let sure = configurations.iter().all(|q| {
+            reference.is_valid_with_margin(q, TOLERANCE) == reference.is_valid_with_margin(q, -TOLERANCE)
+        });
+        prop_assume!(sure);
+        let scalar = configurations.iter().position(|q| !fast.is_valid(q));
+        let parry = configurations.iter().position(|q| !reference.is_valid(q));
+        prop_assert_eq!(fast.batch_width(), 8);
+        prop_assert_eq!(fast.first_invalid(&states, 7), scalar);
+        prop_assert_eq!(scalar, parry);
+    }
+}
+
+#[test]
+fn a_batch_of_the_wrong_dimension_is_invalid_at_once() {
+    let checker = ArmChecker::new(&panda(), &Scene::new(Vec::new()));
+    assert_eq!(checker.first_invalid(&[0.0; 12], 6), Some(0));
+    let home = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
+    let batch: Vec<f64> = home.iter().cycle().take(7 * 11).copied().collect();
+    assert_eq!(checker.first_invalid(&batch, 7), None);
+    let mut broken = batch.clone();
+    broken[7 * 9 + 2] = f64::NAN;
+    assert_eq!(checker.first_invalid(&broken, 7), Some(9));
+}
