@@ -138,8 +138,8 @@ impl LaneKinematics {
                 }
                 LaneJoint::Prismatic(u, c) => {
                     let d = pose.rotate(u);
-                    for k in 0..3 {
-                        pose.t[k] += d[k] * q[c];
+                    for (t, d) in pose.t.iter_mut().zip(d) {
+                        *t += d * q[c];
                     }
                 }
             }
