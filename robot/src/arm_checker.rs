@@ -184,7 +184,13 @@ impl StateValidity for ArmChecker {
                     placed[k] = true;
                 }
             }
+            // Each sphere of the first link against the second's bounding sphere, then its
+            // spheres.
             for i in la.1.clone() {
+                let near = s.spheres[i].1 + lb.3;
+                if centers[i].distance_squared(bounds[b]) > near * near {
+                    continue;
+                }
                 for j in lb.1.clone() {
                     let r = s.spheres[i].1 + s.spheres[j].1;
                     if centers[i].distance_squared(centers[j]) <= r * r {
@@ -307,6 +313,15 @@ impl ArmChecker {
                 }
             }
             for i in la.1.clone() {
+                let near = f32x8::splat(s.spheres[i].1 + lb.3);
+                if distance_squared(&centers8[i], &bounds8[b])
+                    .simd_le(near * near)
+                    .to_bitmask()
+                    & active
+                    == 0
+                {
+                    continue;
+                }
                 for j in lb.1.clone() {
                     let r = f32x8::splat(s.spheres[i].1 + s.spheres[j].1);
                     let hit = distance_squared(&centers8[i], &centers8[j])

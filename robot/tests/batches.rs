@@ -96,7 +96,7 @@ fn a_batch_of_the_wrong_dimension_is_invalid_at_once() {
     let home = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
     let batch: Vec<f64> = home.iter().cycle().take(7 * 11).copied().collect();
     assert_eq!(checker.first_invalid(&batch, 7), None);
-    let mut broken = batch.clone();
+    let mut broken = batch;
     broken[7 * 9 + 2] = f64::NAN;
     assert_eq!(checker.first_invalid(&broken, 7), Some(9));
 }
