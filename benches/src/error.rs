@@ -116,6 +116,14 @@ pub enum HarnessError {
     /// The command line combines options that do not go together, or lacks a required one.
     #[error("{0}")]
     Usage(String),
+    /// A MotionBenchMaker folder or arm problem could not be read.
+    #[error("arm problem `{name}`: {source}")]
+    Arm {
+        /// The folder or problem.
+        name: String,
+        /// Why.
+        source: robot::ArmError,
+    },
     /// The output folder cannot be created or written.
     #[error("output folder `{}` is not writable: {source}", path.display())]
     OutputFolder {

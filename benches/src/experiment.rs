@@ -256,6 +256,14 @@ impl Experiment {
                             .unwrap_or_else(|_| file.path().to_path_buf());
                         e.insert("file".into(), absolute.display().to_string().into());
                     }
+                    ProblemSource::Mbm(folder) => {
+                        let absolute = std::fs::canonicalize(folder.path())
+                            .unwrap_or_else(|_| folder.path().to_path_buf());
+                        e.insert("name".into(), format!("mbm:{}", absolute.display()).into());
+                        let dims: Vec<toml::Value> =
+                            p.dimensions.iter().map(|&d| (d as i64).into()).collect();
+                        e.insert("dimensions".into(), dims.into());
+                    }
                 }
                 let time: Vec<toml::Value> = p.budgets.iter().map(|&b| b.into()).collect();
                 e.insert("time".into(), time.into());

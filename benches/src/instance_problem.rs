@@ -1,17 +1,45 @@
 //! [`InstanceProblem`]: the problem of an experiment's instance, whatever its kind.
 
+use std::sync::Arc;
+
 use mit_star::{BuildError, Configuration, Parameters, Planner};
 use problems::{PlanningProblem, Problem, ProblemError};
+use robot::{ArmProblem, ParryChecker};
+use spaces::StateSpace;
 
 use crate::PathValidation;
 
 /// The problem of one [`ProblemInstance`](crate::ProblemInstance): a box world (the PDT
-/// families and problem files). Every kind plans through [`PlanningProblem`]; what differs is
-/// how a path is validated independently, what a picture shows, and what a log describes.
-#[derive(Debug, Clone, PartialEq)]
+/// families and problem files) or a robot arm in a scene (MotionBenchMaker). Every kind plans
+/// through [`PlanningProblem`]; what differs is how a path is validated independently, what a
+/// picture shows, and what a log describes.
+// A handful of instances per experiment: the size of the box variant does not matter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone)]
 pub enum InstanceProblem {
     /// A point among axis-aligned boxes in `R^n`.
     Boxes(Problem),
+    /// The Panda among a MotionBenchMaker scene's primitives (shared: the scene and checker
+    /// are built once per instance).
+    Arm(Arc<ArmProblem>),
+}
+
+/// Arm problems are equal when they are the same problem of the same folder at the same
+/// resolution.
+impl PartialEq for InstanceProblem {
+    fn eq(&self, other: &Self) -> bool {
+        match (self, other) {
+            (Self::Boxes(a), Self::Boxes(b)) => a == b,
+            (Self::Arm(a), Self::Arm(b)) => {
+                Arc::ptr_eq(a, b)
+                    || (a.name() == b.name()
+                        && a.resolution() == b.resolution()
+                        && a.start() == b.start()
+                        && a.goals() == b.goals())
+            }
+            _ => false,
+        }
+    }
 }
 
 impl InstanceProblem {
@@ -19,6 +47,7 @@ impl InstanceProblem {
     pub fn as_boxes(&self) -> Option<&Problem> {
         match self {
             Self::Boxes(p) => Some(p),
+            Self::Arm(_) => None,
         }
     }
 
@@ -28,6 +57,7 @@ impl InstanceProblem {
     pub fn allowing_coarse_step(self, allow: bool) -> Self {
         match self {
             Self::Boxes(p) => Self::Boxes(p.allowing_coarse_step(allow)),
+            arm @ Self::Arm(_) => arm,
         }
     }
 
@@ -39,6 +69,7 @@ impl InstanceProblem {
     pub fn check_step(&self) -> Result<f64, ProblemError> {
         match self {
             Self::Boxes(p) => PlanningProblem::check_step(p),
+            Self::Arm(p) => p.check_step(),
         }
     }
 
@@ -46,6 +77,7 @@ impl InstanceProblem {
     pub fn dimension(&self) -> usize {
         match self {
             Self::Boxes(p) => p.dimension(),
+            Self::Arm(p) => p.space().dimension(),
         }
     }
 
@@ -53,6 +85,7 @@ impl InstanceProblem {
     pub fn start(&self) -> &[f64] {
         match self {
             Self::Boxes(p) => p.start(),
+            Self::Arm(p) => p.start(),
         }
     }
 
@@ -60,6 +93,7 @@ impl InstanceProblem {
     pub fn goals(&self) -> &[Vec<f64>] {
         match self {
             Self::Boxes(p) => p.goals(),
+            Self::Arm(p) => p.goals(),
         }
     }
 
@@ -67,6 +101,7 @@ impl InstanceProblem {
     pub fn resolution(&self) -> f64 {
         match self {
             Self::Boxes(p) => p.resolution(),
+            Self::Arm(p) => p.resolution(),
         }
     }
 
@@ -74,6 +109,7 @@ impl InstanceProblem {
     pub fn step(&self) -> f64 {
         match self {
             Self::Boxes(p) => p.step(),
+            Self::Arm(p) => p.resolution() * p.space().maximum_extent(),
         }
     }
 
@@ -81,6 +117,7 @@ impl InstanceProblem {
     pub fn optimum(&self) -> Option<f64> {
         match self {
             Self::Boxes(p) => p.optimum(),
+            Self::Arm(_) => None,
         }
     }
 
@@ -88,6 +125,11 @@ impl InstanceProblem {
     pub fn straight_line_cost(&self) -> f64 {
         match self {
             Self::Boxes(p) => p.straight_line_cost(),
+            Self::Arm(p) => p
+                .goals()
+                .iter()
+                .map(|g| p.space().distance(p.start(), g))
+                .fold(f64::INFINITY, f64::min),
         }
     }
 
@@ -102,13 +144,32 @@ impl InstanceProblem {
     ) -> Result<Box<dyn Planner + Send>, BuildError> {
         match self {
             Self::Boxes(p) => mit_star::build_planner(configuration, p, parameters),
+            Self::Arm(p) => mit_star::build_planner(configuration, &**p, parameters),
         }
     }
 
-    /// Validates a returned path independently of the planner: exactly for box worlds.
+    /// `false` for an arm problem whose start or goal is in collision (MotionBenchMaker has
+    /// a few; experiments skip them). Box worlds refuse such ends when they are built.
+    pub fn ends_are_valid(&self) -> bool {
+        match self {
+            Self::Boxes(_) => true,
+            Self::Arm(p) => p.ends_are_valid(),
+        }
+    }
+
+    /// Validates a returned path independently of the planner: exactly for box worlds, with
+    /// parry at a quarter of the planning step for arms.
     pub fn validate(&self, path: &[Vec<f64>], reported_cost: f64) -> PathValidation {
         match self {
             Self::Boxes(p) => PathValidation::check(p, path, reported_cost),
+            // The independent re-check: parry's queries in f64, 4× finer than planning.
+            Self::Arm(p) => PathValidation::check_resampled(
+                &ParryChecker::new(p.robot(), p.scene()),
+                (p.start(), p.goals()),
+                path,
+                reported_cost,
+                self.step(),
+            ),
         }
     }
 
@@ -116,6 +177,39 @@ impl InstanceProblem {
     pub fn describe(&self) -> String {
         match self {
             Self::Boxes(p) => p.to_toml_string(),
+            Self::Arm(p) => describe_arm(p),
         }
     }
+}
+
+/// An arm problem as text for logs: robot, scene, ends and resolution, one `key = value` per
+/// line.
+fn describe_arm(p: &ArmProblem) -> String {
+    let numbers = |q: &[f64]| {
+        let v: Vec<String> = q.iter().map(|x| format!("{x}")).collect();
+        format!("[{}]", v.join(", "))
+    };
+    let mut kinds = [0usize; 3];
+    for o in p.scene().obstacles() {
+        kinds[match o.shape() {
+            robot::Shape::Cuboid { .. } => 0,
+            robot::Shape::Cylinder { .. } => 1,
+            robot::Shape::Sphere { .. } => 2,
+        }] += 1;
+    }
+    format!(
+        "name = \"{}\"\nrobot = \"{}\"\njoints = {}\nspheres = {}\nself_collision_pairs = {}\n\
+         obstacles = {{ boxes = {}, cylinders = {}, spheres = {} }}\nstart = {}\ngoal = {}\nresolution = {}\n",
+        p.name(),
+        p.robot().name(),
+        p.space().dimension(),
+        p.robot().spheres().len(),
+        p.robot().self_collision_pairs().len(),
+        kinds[0],
+        kinds[1],
+        kinds[2],
+        numbers(p.start()),
+        numbers(&p.goals()[0]),
+        p.resolution()
+    )
 }

@@ -69,6 +69,13 @@ impl ProblemSpec {
         for (&dimension, &budget) in self.dimensions.iter().zip(&self.budgets) {
             for &instance in &self.instances {
                 let problem = self.source.build(dimension, instance, self.resolution)?;
+                if !problem.ends_are_valid() {
+                    eprintln!(
+                        "note: {} problem {instance}: the start or goal is in collision; skipped",
+                        label
+                    );
+                    continue;
+                }
                 problem
                     .check_step()
                     .map_err(|source| HarnessError::Problem {

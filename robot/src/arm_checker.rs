@@ -1,8 +1,8 @@
 //! [`ArmChecker`]: is an arm configuration collision-free in its scene and with itself.
 
-use std::cell::RefCell;
 use std::ops::Range;
 use std::sync::Arc;
+use std::sync::{Mutex, PoisonError};
 
 use glam::{Affine3A, Vec3A};
 use spaces::StateSpace;
@@ -63,11 +63,14 @@ struct Scratch {
 /// first invalid configuration.
 ///
 /// Clones share the model and scene (an [`Arc`]) and own their scratch buffers, so a check
-/// never allocates. A checker is `Send` but not `Sync`: one per planner.
-#[derive(Debug, Clone)]
+/// never allocates. The scratch sits behind a [`Mutex`] so that problems holding a checker
+/// can be shared between threads; each planner owns its own clone, so the lock is never
+/// contended (an uncontended lock costs a few nanoseconds against a check of about a
+/// microsecond).
+#[derive(Debug)]
 pub struct ArmChecker {
     shared: Arc<Shared>,
-    scratch: RefCell<Scratch>,
+    scratch: Mutex<Scratch>,
 }
 
 impl ArmChecker {
@@ -117,13 +120,28 @@ impl ArmChecker {
                 spheres,
                 pairs,
             }),
-            scratch: RefCell::new(scratch),
+            scratch: Mutex::new(scratch),
         }
     }
 
     /// The forward kinematics it uses.
     pub fn kinematics(&self) -> &Kinematics {
         &self.shared.fk
+    }
+}
+
+/// A clone shares the model and scene and gets fresh scratch buffers.
+impl Clone for ArmChecker {
+    fn clone(&self) -> Self {
+        let scratch = self
+            .scratch
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone();
+        Self {
+            shared: Arc::clone(&self.shared),
+            scratch: Mutex::new(scratch),
+        }
     }
 }
 
@@ -137,7 +155,7 @@ impl StateValidity for ArmChecker {
         {
             return false;
         }
-        let mut guard = self.scratch.borrow_mut();
+        let mut guard = self.scratch.lock().unwrap_or_else(PoisonError::into_inner);
         let Scratch {
             poses,
             centers,
@@ -229,7 +247,7 @@ impl ArmChecker {
         if dimension != s.lower.len() {
             return live;
         }
-        let mut guard = self.scratch.borrow_mut();
+        let mut guard = self.scratch.lock().unwrap_or_else(PoisonError::into_inner);
         let Scratch {
             poses8,
             centers8,

@@ -97,8 +97,16 @@ impl ArmProblem {
     /// [`ArmError::Scene`] for missing or malformed files, [`ArmError::Query`] for joint values
     /// outside the limits.
     pub fn panda_mbm(folder: &Path, index: usize) -> Result<Self, ArmError> {
-        let robot = RobotModel::from_urdf_str(PANDA_URDF)?.with_srdf_str(PANDA_SRDF)?;
-        Self::mbm(robot, folder, index)
+        Self::mbm(Self::panda()?, folder, index)
+    }
+
+    /// The Panda sphere model shipped with this crate (VAMP's spherised URDF, 59 spheres),
+    /// its SRDF applied.
+    ///
+    /// # Errors
+    /// None in practice (the files are compiled in and tested); typed for form's sake.
+    pub fn panda() -> Result<RobotModel, ArmError> {
+        Ok(RobotModel::from_urdf_str(PANDA_URDF)?.with_srdf_str(PANDA_SRDF)?)
     }
 
     /// MotionBenchMaker problem `index` of `folder` for `robot` (SRDF applied).

@@ -43,9 +43,11 @@ pub struct BenchArgs {
     /// Seconds per run: one value, or one per dimension (flags mode).
     #[arg(long, value_delimiter = ',')]
     pub time: Vec<f64>,
-    /// Layouts of seeded problems (random-rectangles): seeds 0..K (flags mode).
+    /// Instances (flags mode): `K` — layout seeds 0..K of seeded problems
+    /// (random-rectangles), or the first K problems of a MotionBenchMaker folder; `A-B` —
+    /// seeds or problem indices A to B inclusive (`mbm:PATH --instances 1-100`).
     #[arg(long)]
-    pub instances: Option<u64>,
+    pub instances: Option<String>,
     /// Collision-check resolution instead of the problems' (flags mode).
     #[arg(long)]
     pub resolution: Option<f64>,
@@ -184,15 +186,15 @@ impl BenchArgs {
                     )));
                 }
             };
-            let instances = match self.instances {
-                Some(0) => return Err(usage("--instances must be at least 1")),
-                Some(k) if source.is_seeded() => (0..k).collect(),
-                Some(k) if k > 1 => {
+            let instances = match self.instances.as_deref() {
+                None if source.is_seeded() => vec![first_instance(&source)],
+                None => vec![0],
+                Some(_) if !source.is_seeded() => {
                     return Err(HarnessError::Usage(format!(
                         "`{text}` does not depend on a seed: --instances does not apply"
                     )));
                 }
-                _ => vec![0],
+                Some(range) => instance_range(range, &source)?,
             };
             problems.push(ProblemSpec {
                 source,
@@ -398,6 +400,49 @@ fn check_planners_build(
         }
     }
     Ok(())
+}
+
+/// The default instance: seed 0, or a MotionBenchMaker folder's first problem.
+pub(crate) fn first_instance(source: &ProblemSource) -> u64 {
+    match source {
+        ProblemSource::Mbm(folder) => folder.indices()[0] as u64,
+        _ => 0,
+    }
+}
+
+/// `--instances`: `K` (seeds 0..K, or a folder's first K problems) or `A-B` (inclusive).
+fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, HarnessError> {
+    let bad = || {
+        HarnessError::Usage(format!(
+            "--instances `{text}`: give a count K or an inclusive range A-B (e.g. 1-100)"
+        ))
+    };
+    let number = |s: &str| s.trim().parse::<u64>().map_err(|_| bad());
+    let instances: Vec<u64> = match text.split_once('-') {
+        Some((a, b)) => {
+            let (a, b) = (number(a)?, number(b)?);
+            if a > b {
+                return Err(bad());
+            }
+            (a..=b).collect()
+        }
+        None => {
+            let k = number(text)?;
+            if k == 0 {
+                return Err(HarnessError::Usage("--instances must be at least 1".into()));
+            }
+            match source {
+                ProblemSource::Mbm(folder) => folder
+                    .indices()
+                    .iter()
+                    .take(k as usize)
+                    .map(|&i| i as u64)
+                    .collect(),
+                _ => (0..k).collect(),
+            }
+        }
+    };
+    Ok(instances)
 }
 
 #[cfg(test)]

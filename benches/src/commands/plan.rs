@@ -29,9 +29,10 @@ pub struct PlanArgs {
     /// Dimension of a built-in problem (default 2).
     #[arg(long)]
     pub dim: Option<usize>,
-    /// Layout seed of seeded problems (random-rectangles).
-    #[arg(long, default_value_t = 0)]
-    pub instance: u64,
+    /// Layout seed of seeded problems (random-rectangles, default 0), or the problem index
+    /// in a MotionBenchMaker folder (`--problem mbm:PATH`, default its first problem).
+    #[arg(long)]
+    pub instance: Option<u64>,
     /// Time budget in seconds (planner construction included).
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub time: f64,
@@ -90,8 +91,11 @@ impl PlanArgs {
             (Some(n), _) => n,
             (None, d) => d.unwrap_or(2),
         };
+        let instance_number = self
+            .instance
+            .unwrap_or_else(|| crate::commands::bench::first_instance(&source));
         let problem = source
-            .build(dimension, self.instance, self.resolution)?
+            .build(dimension, instance_number, self.resolution)?
             .allowing_coarse_step(self.allow_coarse_step);
         let label = source.label();
         problem
@@ -106,12 +110,12 @@ impl PlanArgs {
             id: ProblemInstance::make_id(
                 &source.label(),
                 dimension,
-                seeded.then_some(self.instance),
+                seeded.then_some(instance_number),
             ),
             label: source.label(),
             source,
             dimension,
-            instance: self.instance,
+            instance: instance_number,
             budget: self.time,
             problem,
         };
