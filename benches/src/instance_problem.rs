@@ -51,6 +51,14 @@ impl InstanceProblem {
         }
     }
 
+    /// The arm problem, if this is one.
+    pub fn as_arm(&self) -> Option<&Arc<ArmProblem>> {
+        match self {
+            Self::Boxes(_) => None,
+            Self::Arm(p) => Some(p),
+        }
+    }
+
     /// Allows (or not) a box world's check step to be coarser than its thinnest obstacle
     /// ([`Problem::allowing_coarse_step`]); other kinds are unchanged.
     #[must_use]

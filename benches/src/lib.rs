@@ -49,7 +49,7 @@
 //! | [`BenchmarkLog`] (+ [`PlannerLog`], [`Property`], [`PropertyType`], [`LogValue`], [`EnumType`], [`ExperimentProperty`]) | OMPL benchmark logs: write and parse |
 //! | [`PlannerArenaDatabase`] | the SQLite database Planner Arena reads |
 //! | [`write_runs_csv`], [`write_runs_jsonl`] | raw runs |
-//! | [`ExperimentFigure`], [`RunPicture`], [`planner_colours`] | figures of experiments; pictures of 2-D runs |
+//! | [`ExperimentFigure`], [`RunPicture`], [`ArmPicture`], [`planner_colours`] | figures of experiments; pictures of 2-D runs and of arm plans |
 //! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
 //! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `problems`, `planners`, `experiments`) |
 //! | [`budget_duration`], [`deadline_after`], [`BudgetError`], [`short_number`] | time budgets checked into durations; numbers for messages |
@@ -59,6 +59,7 @@
 
 #![forbid(unsafe_code)]
 
+mod arm_picture;
 mod benchmark_log;
 mod budget;
 pub mod commands;
@@ -92,6 +93,7 @@ mod setup_text;
 mod shipped_experiment;
 pub mod statistics;
 
+pub use arm_picture::ArmPicture;
 pub use benchmark_log::{BenchmarkLog, OMPL_STATUS, PlannerLog};
 pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};
 pub use error::HarnessError;

@@ -9,8 +9,8 @@ use clap::Args;
 use crate::commands::CommandOutcome;
 use crate::kpi_table::number;
 use crate::{
-    HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, RunJob,
-    RunPicture, RunRecord, RunStatus, budget_duration, deadline_after, parse_configuration,
+    ArmPicture, HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource,
+    RunJob, RunPicture, RunRecord, RunStatus, budget_duration, deadline_after, parse_configuration,
     problem_source::sanitise, short_number,
 };
 
@@ -49,10 +49,10 @@ pub struct PlanArgs {
     /// (refused otherwise: edges could cross thin obstacles between checked points).
     #[arg(long)]
     pub allow_coarse_step: bool,
-    /// Folder for the picture of a 2-D run.
+    /// Folder for the picture of a 2-D run or an arm plan.
     #[arg(long, short, default_value = "results/plan")]
     pub output: PathBuf,
-    /// Do not draw the picture of a 2-D run.
+    /// Do not draw the picture of a 2-D run or an arm plan.
     #[arg(long)]
     pub no_picture: bool,
     /// Print the result as JSON instead of text.
@@ -119,7 +119,8 @@ impl PlanArgs {
             budget: self.time,
             problem,
         };
-        let picture = dimension == 2 && !self.no_picture;
+        let arm = instance.problem.as_arm().cloned();
+        let picture = (dimension == 2 || arm.is_some()) && !self.no_picture;
         if picture {
             crate::writable_folder(&self.output)?;
         }
@@ -162,26 +163,32 @@ impl PlanArgs {
             return Ok(CommandOutcome::Interrupted);
         };
         let mut files = Vec::new();
+        let stem = format!(
+            "{}-{}-seed{}",
+            instance.id,
+            sanitise(configuration.name()),
+            self.seed
+        );
+        let title = format!(
+            "{} on {} · seed {} · {} s · cost {}",
+            spec.name(),
+            instance.title(),
+            self.seed,
+            self.time,
+            number(record.final_cost.unwrap_or(f64::INFINITY))
+        );
+        if picture && let Some(arm) = &arm {
+            let svg = self.output.join(format!("{stem}.svg"));
+            let png = self.output.join(format!("{stem}.png"));
+            ArmPicture::new(arm, &record.path, title.clone()).save(&svg, &png)?;
+            files.extend([svg, png]);
+        }
         if picture
             && let Some(boxes) = instance.problem.as_boxes()
             && let Some(snapshot) = planner.as_ref().and_then(|p| p.snapshot())
         {
-            let stem = format!(
-                "{}-{}-seed{}",
-                instance.id,
-                sanitise(configuration.name()),
-                self.seed
-            );
             let svg = self.output.join(format!("{stem}.svg"));
             let png = self.output.join(format!("{stem}.png"));
-            let title = format!(
-                "{} on {} · seed {} · {} s · cost {}",
-                spec.name(),
-                instance.title(),
-                self.seed,
-                self.time,
-                number(record.final_cost.unwrap_or(f64::INFINITY))
-            );
             RunPicture::new(boxes, &snapshot, &record.path, title)?.save(&svg, &png)?;
             files.extend([svg, png]);
         }
