@@ -194,7 +194,11 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
             message: (*why).to_owned(),
         });
     }
-    let defaults = defaults_table(&Parameters::default());
+    // Optional parameters (absent from the default table) are named with a sample value.
+    let defaults = defaults_table(&Parameters {
+        certification: Some(1),
+        ..Parameters::default()
+    });
     let Some(default) = defaults.get(key) else {
         let known: Vec<&str> = defaults
             .keys()

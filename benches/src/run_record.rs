@@ -122,18 +122,18 @@ impl RunRecord {
 
     /// The work counters as `(property name, value)`, in a fixed order: the one list every
     /// output (CSV, OMPL log, database) takes them from.
-    pub fn counter_values(&self) -> [(&'static str, u64); 17] {
+    pub fn counter_values(&self) -> [(&'static str, u64); 19] {
         counter_list(&self.counters)
     }
 
     /// The names of [`counter_values`](Self::counter_values), in order.
-    pub fn counter_names() -> [&'static str; 17] {
+    pub fn counter_names() -> [&'static str; 19] {
         counter_list(&Counters::default()).map(|(name, _)| name)
     }
 }
 
 /// The counters of a planner, named.
-fn counter_list(c: &Counters) -> [(&'static str, u64); 17] {
+fn counter_list(c: &Counters) -> [(&'static str, u64); 19] {
     [
         ("iterations", c.iterations),
         ("batches", c.batches),
@@ -143,6 +143,8 @@ fn counter_list(c: &Counters) -> [(&'static str, u64); 17] {
         ("sparse edge checks", c.sparse_checks),
         ("full edge checks", c.full_checks),
         ("edge points tested", c.points_tested),
+        ("certified edges", c.certifications),
+        ("certification failures", c.certification_failures),
         ("nearest neighbour queries", c.neighbour_queries),
         ("reverse search restarts", c.reverse_restarts),
         ("reverse search iterations", c.reverse_iterations),

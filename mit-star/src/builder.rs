@@ -105,7 +105,8 @@ impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
             problem.start().to_vec(),
             problem.goals().to_vec(),
         )
-        .resolution(problem.resolution());
+        .resolution(problem.resolution())
+        .certification(problem.certification());
         builder.problem_error = problem.check_step().err();
         builder
     }
@@ -164,6 +165,13 @@ impl<S, V, Smp, E, H> Builder<S, V, Smp, E, H> {
     /// The adaptive sampler's `δ` as a fraction of the maximum extent (default 0.1).
     pub fn gaussian_std_fraction(mut self, fraction: f64) -> Self {
         self.parameters.gaussian_std_fraction = fraction;
+        self
+    }
+
+    /// Certify forward-tree edges on a grid `factor` times finer than the check step (1: off;
+    /// [`for_problem`](Self::for_problem) takes the problem's).
+    pub fn certification(mut self, factor: u32) -> Self {
+        self.parameters.certification = Some(factor);
         self
     }
 

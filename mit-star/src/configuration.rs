@@ -149,6 +149,9 @@ where
     problem.check_step()?;
     let mut parameters = parameters.clone();
     parameters.resolution = problem.resolution();
+    parameters.certification = parameters
+        .certification
+        .or_else(|| Some(problem.certification()));
     let space = problem.space().clone();
     let (start, goals) = (problem.start().to_vec(), problem.goals().to_vec());
     let label = configuration.label();

@@ -21,8 +21,12 @@ pub struct Counters {
     pub sparse_checks: u64,
     /// Full edge checks requested.
     pub full_checks: u64,
-    /// Grid points tested by edge checks.
+    /// Grid points tested by edge checks (certification included).
     pub points_tested: u64,
+    /// Edges certified on the finer grid before joining the forward tree.
+    pub certifications: u64,
+    /// Certifications that found the edge invalid between its grid points.
+    pub certification_failures: u64,
     /// Nearest-neighbour queries.
     pub neighbour_queries: u64,
     /// Restarts of the reverse search after an invalid lazy edge.

@@ -379,13 +379,21 @@ where
                 let u = vertices[i - 1].0;
                 let (a, b) = (self.graph.state(u), x);
                 let grid = EdgeGrid::new(self.space.distance(a, b), self.step);
+                let record = self.graph.edge(u, v.0);
                 let whitelisted = grid.points() == 0
-                    || self.graph.edge(u, v.0).is_some_and(|r| {
+                    || record.is_some_and(|r| {
                         r.status == EdgeStatus::Valid && r.progress.tested() >= grid.points()
                     });
                 if !whitelisted {
                     return Err(PlannerError::Internal(format!(
                         "solution edge {u} → {} was not fully checked",
+                        v.0
+                    )));
+                }
+                let certify = self.parameters.certification.unwrap_or(1) > 1;
+                if certify && !record.is_some_and(|r| r.certified) {
+                    return Err(PlannerError::Internal(format!(
+                        "solution edge {u} → {} was not certified",
                         v.0
                     )));
                 }
@@ -501,6 +509,8 @@ where
         c.sparse_checks = edges.sparse_checks;
         c.full_checks = edges.full_checks;
         c.points_tested = edges.points_tested;
+        c.certifications = edges.certifications;
+        c.certification_failures = edges.certification_failures;
         c.validity_checks = self.validity.count();
         c.samples_drawn = self.sampler.counters().drawn;
         c.neighbour_queries = self.graph.neighbour_queries();

@@ -127,7 +127,15 @@ where
                     self.checker
                         .check_full(&self.space, &self.validity, a, b, &mut progress, stop);
                 if progress != before || record.is_none() {
-                    self.graph.store_edge(u, v, EdgeRecord { progress, status });
+                    self.graph.store_edge(
+                        u,
+                        v,
+                        EdgeRecord {
+                            progress,
+                            status,
+                            certified: false,
+                        },
+                    );
                 }
                 status
             }
@@ -136,20 +144,77 @@ where
             EdgeStatus::Valid => {
                 let new_g = g_u + edge.distance;
                 if new_g < g_v && (!self.best_cost.is_finite() || new_g + h_v < self.best_cost) {
-                    self.rewire(v, u, edge.distance, stop);
+                    match self.certify(u, v, stop) {
+                        EdgeStatus::Valid => self.rewire(v, u, edge.distance, stop),
+                        EdgeStatus::Invalid => self.invalid_edge(u, v, (g_u, edge.cost, h_v), stop),
+                        EdgeStatus::Unknown => self.queue_forward(edge),
+                    }
                 }
             }
-            EdgeStatus::Invalid => {
-                let x = self.graph.vertex(u);
-                let y = self.graph.vertex(v);
-                let lazy = x.reverse_parent(tag) == v || y.reverse_parent(tag) == u;
-                if lazy {
-                    self.repair_lazy_path(g_u, edge.cost, h_v, stop);
-                }
-            }
+            EdgeStatus::Invalid => self.invalid_edge(u, v, (g_u, edge.cost, h_v), stop),
             // The termination condition fired mid-check: keep the edge (and its progress).
             EdgeStatus::Unknown => self.queue_forward(edge),
         }
+    }
+
+    /// The whitelisted edge `u — v` is invalid after all: if the lazy path went through it,
+    /// repair the reverse search.
+    fn invalid_edge(
+        &mut self,
+        u: u32,
+        v: u32,
+        (g_u, cost, h_v): (f64, f64, f64),
+        stop: &SolveStop<'_>,
+    ) {
+        let tag = self.reverse_tag;
+        let x = self.graph.vertex(u);
+        let y = self.graph.vertex(v);
+        let lazy = x.reverse_parent(tag) == v || y.reverse_parent(tag) == u;
+        if lazy {
+            self.repair_lazy_path(g_u, cost, h_v, stop);
+        }
+    }
+
+    /// Certifies the whitelisted edge `u — v` before it joins the forward tree, on the grid
+    /// [`Parameters::certification`](crate::Parameters) times finer than the check step
+    /// (at once `Valid` without certification or if done before). A failure blacklists the
+    /// edge; a stop mid-way leaves it uncertified (a later call starts over).
+    fn certify(&mut self, u: u32, v: u32, stop: &SolveStop<'_>) -> EdgeStatus {
+        let factor = self.parameters.certification.unwrap_or(1);
+        // An edge shorter than the step has no grid points and perhaps no record yet.
+        let record = self.graph.edge(u, v).unwrap_or(EdgeRecord {
+            progress: EdgeProgress::UNTESTED,
+            status: EdgeStatus::Valid,
+            certified: false,
+        });
+        if factor <= 1 || record.certified {
+            return EdgeStatus::Valid;
+        }
+        let (a, b) = (self.graph.state(u), self.graph.state(v));
+        let status = self
+            .checker
+            .certify(&self.space, &self.validity, a, b, factor, stop);
+        match status {
+            EdgeStatus::Valid => self.graph.store_edge(
+                u,
+                v,
+                EdgeRecord {
+                    certified: true,
+                    ..record
+                },
+            ),
+            EdgeStatus::Invalid => self.graph.store_edge(
+                u,
+                v,
+                EdgeRecord {
+                    progress: EdgeProgress::FOUND_INVALID,
+                    status: EdgeStatus::Invalid,
+                    certified: false,
+                },
+            ),
+            EdgeStatus::Unknown => {}
+        }
+        status
     }
 
     /// Makes `u` the forward parent of `v` through an edge of true cost `cost`, propagates the

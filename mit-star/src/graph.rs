@@ -29,6 +29,8 @@ pub(crate) struct EdgeRecord {
     pub(crate) progress: EdgeProgress,
     /// Whitelisted (`Valid`), blacklisted (`Invalid`) or not yet decided.
     pub(crate) status: EdgeStatus,
+    /// Certified on the finer grid ([`Parameters::certification`](crate::Parameters)).
+    pub(crate) certified: bool,
 }
 
 /// One cached neighbour of a vertex: who (id and birth stamp, so a pruned or reused id is

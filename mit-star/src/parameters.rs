@@ -68,6 +68,11 @@ pub struct Parameters {
     pub eis_expansion_form: EisExpansionForm,
     /// When the estimated informed set expands.
     pub eis_expansion_rule: EisExpansionRule,
+    /// Certify every edge on a grid this many times finer than the check step before it joins
+    /// the forward tree (1: no certification; `None`: the problem's
+    /// [`certification`](problems::PlanningProblem::certification), 4 for arms). Not in the
+    /// paper: it makes returned paths hold at the finer grid too, for a few edges' work.
+    pub certification: Option<u32>,
 }
 
 impl Default for Parameters {
@@ -87,6 +92,7 @@ impl Default for Parameters {
             sparse_min_steps: 10.0,
             eis_expansion_form: EisExpansionForm::Paper,
             eis_expansion_rule: EisExpansionRule::PerBatch,
+            certification: None,
         }
     }
 }
@@ -116,6 +122,13 @@ impl Parameters {
                 name: "batch_size",
                 value: 0.0,
                 requirement: "it must be at least 1",
+            });
+        }
+        if self.certification == Some(0) {
+            return Err(BuildError::Parameter {
+                name: "certification",
+                value: 0.0,
+                requirement: "it must be at least 1 (1: no certification)",
             });
         }
         if self.bridge_checks == 0 {
@@ -185,6 +198,11 @@ impl Parameters {
             ("sparse_min_steps", self.sparse_min_steps.to_string()),
             ("eis_expansion_form", form.to_string()),
             ("eis_expansion_rule", rule.to_string()),
+            (
+                "certification",
+                self.certification
+                    .map_or_else(|| "problem's".to_owned(), |k| k.to_string()),
+            ),
         ]
         .into_iter()
         .map(|(k, v)| (k.to_string(), v))

@@ -225,7 +225,15 @@ where
                     stop,
                 );
                 if progress != before {
-                    self.graph.store_edge(u, v, EdgeRecord { progress, status });
+                    self.graph.store_edge(
+                        u,
+                        v,
+                        EdgeRecord {
+                            progress,
+                            status,
+                            certified: false,
+                        },
+                    );
                 }
                 status
             }

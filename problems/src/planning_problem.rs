@@ -58,6 +58,14 @@ pub trait PlanningProblem {
     fn check_step(&self) -> Result<f64, ProblemError> {
         Ok(self.resolution() * self.space().maximum_extent())
     }
+
+    /// How many times finer than the check step a planner should certify the edges of its
+    /// solution tree (1: not at all). A problem whose contacts can fall between grid points
+    /// (an arm's spheres grazing a corner) asks for more; box worlds, whose paths are
+    /// re-validated exactly, keep 1.
+    fn certification(&self) -> u32 {
+        1
+    }
 }
 
 impl PlanningProblem for Problem {
@@ -118,5 +126,8 @@ impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
     }
     fn check_step(&self) -> Result<f64, ProblemError> {
         (**self).check_step()
+    }
+    fn certification(&self) -> u32 {
+        (**self).certification()
     }
 }

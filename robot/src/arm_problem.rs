@@ -13,6 +13,12 @@ use crate::{ArmChecker, ArmError, MbmProblem, RobotModel, Scene};
 /// VAMP's default collision-check density: 32 checks per unit of joint-space distance.
 pub const CHECKS_PER_UNIT: f64 = 32.0;
 
+/// How many times finer than the check step planners certify the edges of their solution
+/// trees on arm problems: the grid of the independent re-check (a quarter of the step), so
+/// that a contact grazed between two configurations of the planning grid is caught before it
+/// reaches a returned path.
+pub const CERTIFICATION: u32 = 4;
+
 /// The Panda sphere model shipped with the crate (VAMP's, 59 spheres).
 const PANDA_URDF: &str = include_str!("../data/panda/panda_spherized.urdf");
 /// The Panda's MoveIt semantic description (its disabled self-collision pairs).
@@ -44,6 +50,7 @@ pub struct ArmProblem {
     start: Vec<f64>,
     goals: Vec<Vec<f64>>,
     resolution: f64,
+    certification: u32,
 }
 
 impl ArmProblem {
@@ -87,6 +94,7 @@ impl ArmProblem {
             start,
             goals: vec![goal],
             resolution,
+            certification: CERTIFICATION,
         })
     }
 
@@ -99,6 +107,12 @@ impl ArmProblem {
     pub fn panda_mbm(folder: &Path, index: usize) -> Result<Self, ArmError> {
         Self::mbm(Self::panda()?, folder, index)
     }
+
+    /// How many times finer than the check step planners certify the edges of their solution
+    /// trees on arm problems: the grid of the independent re-check (a quarter of the step), so
+    /// that a contact grazed between two configurations of the planning grid is caught before it
+    /// reaches a returned path.
+    pub const CERTIFICATION: u32 = 4;
 
     /// The Panda sphere model shipped with this crate (VAMP's spherised URDF, 59 spheres),
     /// its SRDF applied.
@@ -134,6 +148,15 @@ impl ArmProblem {
         }
         self.resolution = resolution;
         Ok(self)
+    }
+
+    /// The same problem asking planners to certify solution-tree edges on a grid `factor`
+    /// times finer than the check step (default [`CERTIFICATION`]; 1 turns it off; 0 is
+    /// taken as 1).
+    #[must_use]
+    pub fn with_certification(mut self, factor: u32) -> Self {
+        self.certification = factor.max(1);
+        self
     }
 
     /// The robot (SRDF and the scene's allowed collisions applied).
@@ -183,5 +206,9 @@ impl PlanningProblem for ArmProblem {
 
     fn check_step(&self) -> Result<f64, ProblemError> {
         Ok(self.resolution * self.space().maximum_extent())
+    }
+
+    fn certification(&self) -> u32 {
+        self.certification
     }
 }

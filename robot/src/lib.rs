@@ -27,7 +27,7 @@
 //! | [`MbmProblem`] | a MotionBenchMaker scene + request pair |
 //! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases |
 //! | [`ParryChecker`] | the reference checker: `f64`, parry queries, no culling (tests and path re-checks) |
-//! | [`ArmProblem`], [`CHECKS_PER_UNIT`] | an arm planning problem, with VAMP's default check density |
+//! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with VAMP's default check density and the finer grid its solution edges are certified on |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 
 #![forbid(unsafe_code)]
@@ -48,7 +48,7 @@ mod srdf;
 
 pub use arm_checker::ArmChecker;
 pub use arm_error::ArmError;
-pub use arm_problem::{ArmProblem, CHECKS_PER_UNIT};
+pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
 pub use kinematics::Kinematics;
 pub use mbm_problem::MbmProblem;
 pub use model_error::ModelError;

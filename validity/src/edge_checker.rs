@@ -97,6 +97,22 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         walker.advance(space, validity, (a, b, grid), u64::MAX, progress, stop)
     }
 
+    /// Certifies a whitelisted edge on a grid `factor` times finer than its own
+    /// ([`GridWalker::certify`]): [`EdgeStatus::Invalid`] if a point between its grid points
+    /// is invalid, [`EdgeStatus::Unknown`] if `stop` fired first.
+    fn certify(
+        &mut self,
+        space: &S,
+        validity: &V,
+        a: &[f64],
+        b: &[f64],
+        factor: u32,
+        stop: &dyn Stop,
+    ) -> EdgeStatus {
+        self.walker_mut()
+            .certify(space, validity, (a, b), factor, stop)
+    }
+
     /// Grid points a full check of `a → b` would still test (the effort of the edge).
     fn remaining(&self, space: &S, a: &[f64], b: &[f64], progress: EdgeProgress) -> u64 {
         progress.remaining(&self.walker().grid(space, a, b))

@@ -26,6 +26,10 @@ impl EdgeProgress {
     /// Nothing tested yet.
     pub const UNTESTED: Self = Self(0);
 
+    /// Known invalid (an invalid point was found, by a check or a
+    /// [certification](crate::GridWalker::certify)).
+    pub const FOUND_INVALID: Self = Self(Self::INVALID);
+
     /// Number of grid points tested valid so far (0 if the edge is known invalid).
     #[inline]
     pub fn tested(&self) -> u64 {

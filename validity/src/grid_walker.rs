@@ -12,8 +12,12 @@ pub struct EdgeCounters {
     pub sparse_checks: u64,
     /// Full checks requested.
     pub full_checks: u64,
-    /// Grid points tested (state validity calls made by edge checks).
+    /// Grid points tested (state validity calls made by edge checks, certification included).
     pub points_tested: u64,
+    /// Edges certified on a finer grid ([`GridWalker::certify`]), passed or not.
+    pub certifications: u64,
+    /// Certifications that found an invalid point the edge's own grid had missed.
+    pub certification_failures: u64,
 }
 
 /// Walks an edge's canonical grid in bisection order, testing states; shared by every checker.
@@ -230,6 +234,92 @@ impl GridWalker {
     }
 }
 
+impl GridWalker {
+    /// Certifies the edge `a — b` on a grid `factor` times finer than its own: tests, in order
+    /// from the [canonical end](canonical_ends), every point of the grid of step
+    /// `step / factor` that is not a point of the edge's own grid (those were tested by the
+    /// checks that whitelisted it), stopping at the first invalid one.
+    ///
+    /// For checkers whose grid points can miss a thin contact between them (an arm's spheres
+    /// graze a corner between two configurations `L` apart), a planner certifies the edges it
+    /// is about to add to its solution tree; it costs `factor − 1` times the points of those
+    /// few edges. Returns [`EdgeStatus::Valid`] at once for `factor ≤ 1`, and
+    /// [`EdgeStatus::Unknown`] if `stop` fired first (polled as in [`advance`](Self::advance);
+    /// a later call starts over). Batched checkers get [`StateValidity::batch_width`] points
+    /// per call.
+    pub fn certify<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b): (&[f64], &[f64]),
+        factor: u32,
+        stop: &dyn Stop,
+    ) -> EdgeStatus
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        if factor <= 1 {
+            return EdgeStatus::Valid;
+        }
+        let (a, b) = canonical_ends(a, b);
+        let length = space.distance(a, b);
+        let coarse = EdgeGrid::new(length, self.step).intervals();
+        let fine = EdgeGrid::new(length, self.step / f64::from(factor));
+        let (intervals, points) = (fine.intervals(), fine.points());
+        // Fine index `i` lies on the coarse grid when `i · coarse` is a multiple of `intervals`.
+        let skip = |i: u64| u128::from(i) * u128::from(coarse) % u128::from(intervals) == 0;
+        // The shared points are the multiples of `intervals / gcd`: `gcd − 1` of them.
+        let new_points = points - (gcd(coarse, intervals) - 1);
+        self.counters.certifications += 1;
+        let polls_first = new_points > STOP_POLL;
+        let dimension = space.dimension();
+        let width = validity.batch_width().clamp(1, STOP_POLL as usize);
+        self.scratch.resize(dimension * width, 0.0);
+        let mut indices = (1..=points).filter(|&i| !skip(i));
+        let mut walked = 0_u64;
+        loop {
+            if walked % STOP_POLL == 0 && (walked > 0 || polls_first) && stop.should_stop() {
+                return EdgeStatus::Unknown;
+            }
+            let until_poll = STOP_POLL - walked % STOP_POLL;
+            let n = (width as u64).min(until_poll) as usize;
+            let mut filled = 0;
+            for (slot, index) in self
+                .scratch
+                .chunks_exact_mut(dimension)
+                .zip(&mut indices)
+                .take(n)
+            {
+                space.interpolate(a, b, fine.fraction(index), slot);
+                filled += 1;
+            }
+            if filled == 0 {
+                return EdgeStatus::Valid;
+            }
+            self.counters.points_tested += filled as u64;
+            walked += filled as u64;
+            let batch = &self.scratch[..filled * dimension];
+            let invalid = if filled == 1 {
+                !validity.is_valid(batch)
+            } else {
+                validity.first_invalid(batch, dimension).is_some()
+            };
+            if invalid {
+                self.counters.certification_failures += 1;
+                return EdgeStatus::Invalid;
+            }
+        }
+    }
+}
+
+fn gcd(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
 #[cfg(test)]
 mod tests {
     use std::cell::Cell;
@@ -341,5 +431,104 @@ mod tests {
         );
         assert_eq!(status, EdgeStatus::Valid);
         assert_eq!(validity.count(), 999 - 2 * STOP_POLL);
+    }
+
+    /// Valid everywhere except in `(lo, hi)` on the first coordinate; records every state.
+    struct Gap {
+        lo: f64,
+        hi: f64,
+        seen: std::cell::RefCell<Vec<f64>>,
+    }
+
+    impl StateValidity for Gap {
+        fn is_valid(&self, s: &[f64]) -> bool {
+            self.seen.borrow_mut().push(s[0]);
+            !(s[0] > self.lo && s[0] < self.hi)
+        }
+    }
+
+    fn gap(lo: f64, hi: f64) -> Gap {
+        Gap {
+            lo,
+            hi,
+            seen: std::cell::RefCell::new(Vec::new()),
+        }
+    }
+
+    #[test]
+    fn certification_finds_what_falls_between_grid_points() {
+        let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
+        let never = Never;
+        // Grid of 10 intervals: points at 0.1, 0.2, …; the gap (0.12, 0.13) lies between two.
+        let mut walker = GridWalker::new(0.1).unwrap();
+        let thin = gap(0.12, 0.13);
+        let mut progress = EdgeProgress::default();
+        let grid = walker.grid(&space, &[0.0], &[1.0]);
+        let status = walker.advance(
+            &space,
+            &thin,
+            (&[0.0], &[1.0], grid),
+            u64::MAX,
+            &mut progress,
+            &never,
+        );
+        assert_eq!(status, EdgeStatus::Valid);
+        // Four times finer: 0.125 is a point, and it is in the gap.
+        let status = walker.certify(&space, &thin, (&[1.0], &[0.0]), 4, &never);
+        assert_eq!(status, EdgeStatus::Invalid);
+        assert_eq!(walker.counters().certification_failures, 1);
+        // Twice finer misses it (0.15 is the nearest point): the factor is what it says.
+        let status = walker.certify(&space, &gap(0.12, 0.13), (&[0.0], &[1.0]), 2, &never);
+        assert_eq!(status, EdgeStatus::Valid);
+        assert_eq!(walker.counters().certifications, 2);
+    }
+
+    #[test]
+    fn certification_skips_the_edges_own_points() {
+        let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
+        for (length, step, factor) in [
+            (1.0, 0.1, 4),
+            (0.95, 0.1, 4),
+            (0.37, 0.1, 3),
+            (0.05, 0.1, 4),
+        ] {
+            let mut walker = GridWalker::new(step).unwrap();
+            let free = gap(2.0, 3.0);
+            let coarse = EdgeGrid::new(length, step);
+            let fine = EdgeGrid::new(length, step / f64::from(factor));
+            let status = walker.certify(&space, &free, (&[0.0], &[length]), factor, &Never);
+            assert_eq!(status, EdgeStatus::Valid);
+            let seen = free.seen.into_inner();
+            // Every fine point not on the coarse grid, once, in order.
+            let expected: Vec<f64> = (1..fine.intervals())
+                .map(|i| length * fine.fraction(i))
+                .filter(|x| {
+                    (1..coarse.intervals()).all(|j| (length * coarse.fraction(j) - x).abs() > 1e-12)
+                })
+                .collect();
+            assert_eq!(seen.len(), expected.len(), "{length} {step} {factor}");
+            for (a, b) in seen.iter().zip(&expected) {
+                assert!((a - b).abs() < 1e-12);
+            }
+            assert_eq!(walker.counters().points_tested, expected.len() as u64);
+        }
+    }
+
+    #[test]
+    fn certification_polls_and_factor_one_is_free() {
+        let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
+        let mut walker = GridWalker::new(1e-3).unwrap();
+        let free = gap(2.0, 3.0);
+        let stop = Polls::firing_at(1);
+        assert_eq!(
+            walker.certify(&space, &free, (&[0.0], &[1.0]), 4, &stop),
+            EdgeStatus::Unknown
+        );
+        assert_eq!(walker.counters().points_tested, 0);
+        assert_eq!(
+            walker.certify(&space, &free, (&[0.0], &[1.0]), 1, &stop),
+            EdgeStatus::Valid
+        );
+        assert_eq!(walker.counters().certifications, 1);
     }
 }
