@@ -26,6 +26,9 @@ pub struct KpiRow {
     pub invalid: usize,
     /// Time to the first solution (`∞` for failed runs).
     pub initial_time: MedianEstimate,
+    /// The 95th percentile (nearest rank) of the time to the first solution (`∞` for failed
+    /// runs).
+    pub initial_time_p95: f64,
     /// Cost of the first solution.
     pub initial_cost: MedianEstimate,
     /// Final cost.
@@ -65,6 +68,8 @@ pub struct KpiTable {
     /// One row per instance and planner (instance-major), followed, for problems with several
     /// layouts, by the pooled rows.
     pub rows: Vec<KpiRow>,
+    /// The titles of the pooled rows (problems with several layouts), in experiment order.
+    pub families: Vec<String>,
 }
 
 impl KpiTable {
@@ -83,6 +88,7 @@ impl KpiTable {
         }
         let mut rows = Vec::new();
         let mut instances = Vec::new();
+        let mut families = Vec::new();
         for (label, dimension, members) in &groups {
             for &index in members {
                 let title = results.instances[index].title();
@@ -103,6 +109,7 @@ impl KpiTable {
                     .collect();
                 rows.extend(row(&title, spec, &runs, confidence));
             }
+            families.push(title.clone());
             instances.push(title);
         }
         Self {
@@ -115,6 +122,7 @@ impl KpiTable {
                 .collect(),
             instances,
             rows,
+            families,
         }
     }
 
@@ -189,6 +197,41 @@ impl KpiTable {
         s
     }
 
+    /// One row per problem with several layouts (a MotionBenchMaker scene, random rectangles)
+    /// and planner, pooling its layouts: runs, validated solutions (rate), invalid paths,
+    /// median and 95th-percentile `t_init`, median `c_init` and `c_final` (of every run;
+    /// failures count as ∞). `None` without such problems.
+    pub fn families_markdown(&self) -> Option<String> {
+        if self.families.is_empty() {
+            return None;
+        }
+        let mut s = String::from(
+            "| problem | planner | runs | solved | invalid paths | t_init median | t_init p95 | \
+             c_init median | c_final median |\n",
+        );
+        s.push_str(&"|---".repeat(9));
+        s.push_str("|\n");
+        for family in &self.families {
+            for r in self.rows.iter().filter(|r| &r.instance == family) {
+                let _ = writeln!(
+                    s,
+                    "| {} | {} | {} | {} ({:.1} %) | {} | {} | {} | {} | {} |",
+                    r.instance,
+                    r.planner,
+                    r.runs,
+                    r.successes,
+                    100.0 * r.success.rate,
+                    r.invalid,
+                    number(r.initial_time.median),
+                    number(r.initial_time_p95),
+                    number(r.initial_cost.median),
+                    number(r.final_cost.median),
+                );
+            }
+        }
+        Some(s)
+    }
+
     /// Every KPI: min, median `[confidence interval]` and max of `t_init`, `c_init` and
     /// `c_final`, and the success rate, per instance and planner.
     pub fn full_markdown(&self) -> String {
@@ -252,10 +295,26 @@ fn row(
             .filter(|r| r.status == crate::RunStatus::InvalidPath)
             .count(),
         initial_time: estimate(&|r| r.initial_time_or_inf())?,
+        initial_time_p95: percentile(runs.iter().map(|r| r.initial_time_or_inf()).collect(), 0.95),
         initial_cost: estimate(&|r| r.initial_cost_or_inf())?,
         final_cost: estimate(&|r| r.final_cost_or_inf())?,
         success: ClopperPearson::new(successes, runs.len(), confidence),
     })
+}
+
+/// The `q`-quantile of `values` by nearest rank (`∞` for no values; NaN counts as ∞).
+fn percentile(mut values: Vec<f64>, q: f64) -> f64 {
+    if values.is_empty() {
+        return f64::INFINITY;
+    }
+    for v in &mut values {
+        if v.is_nan() {
+            *v = f64::INFINITY;
+        }
+    }
+    values.sort_by(f64::total_cmp);
+    let rank = (q * values.len() as f64).ceil() as usize;
+    values[rank.clamp(1, values.len()) - 1]
 }
 
 /// A number as the paper prints them: four decimals (scientific below 0.001), `∞` if not
@@ -374,11 +433,30 @@ mod tests {
         );
         assert!(paper.contains("| 50.00 % |"), "{paper}");
         assert!(!paper.contains("#1"));
+        // The families table: 4 runs, p95 by nearest rank is the largest of four.
+        assert_eq!(pooled.initial_time_p95, 0.4);
+        let families = table.families_markdown().unwrap();
+        assert!(
+            families.contains(
+                "| random-rectangles R^2 (2 layouts) | MIT* | 4 | 4 (100.0 %) | 0 | 0.3000 | 0.4000 |"
+            ),
+            "{families}"
+        );
         assert!(
             table
                 .full_markdown()
                 .contains("| random-rectangles R^2 #1 | MIT* | 2/2 (100 %) |")
         );
+    }
+
+    #[test]
+    fn percentiles_by_nearest_rank() {
+        let v: Vec<f64> = (1..=100).map(f64::from).collect();
+        assert_eq!(percentile(v.clone(), 0.95), 95.0);
+        assert_eq!(percentile(v, 0.5), 50.0);
+        assert_eq!(percentile(vec![3.0, f64::NAN, 1.0], 0.95), f64::INFINITY);
+        assert_eq!(percentile(vec![2.0], 0.95), 2.0);
+        assert_eq!(percentile(Vec::new(), 0.95), f64::INFINITY);
     }
 
     #[test]

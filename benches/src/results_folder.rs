@@ -287,6 +287,13 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
          as ∞. t_init gain = 1 − t_MIT / t_EIT.\n\n{}",
         table.paper_markdown()
     );
+    if let Some(families) = table.families_markdown() {
+        let _ = writeln!(
+            s,
+            "## Problems with several layouts\n\nEvery layout pooled (a MotionBenchMaker scene's \
+             problems, random rectangles' seeds); failed runs count as ∞.\n\n{families}"
+        );
+    }
     let _ = writeln!(
         s,
         "## All KPIs\n\nmin, median [{:.0} % confidence interval], max.\n\n{}",
