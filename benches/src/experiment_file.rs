@@ -243,6 +243,11 @@ fn problem_spec(
         message: format!("is not acceptable: {e}"),
     };
     let source = match (&p.name, &p.file) {
+        // `mbm:PATH` is a MotionBenchMaker folder (relative to the file's folder, or to the
+        // working folder for a file without one): its errors say what is wrong with it.
+        (Some(name), None) if name.trim().starts_with("mbm:") => {
+            ProblemSource::parse(name, base).map_err(|e| bad(".name", e))?
+        }
         (Some(name), None) => match ProblemSource::parse(name, None) {
             Ok(ProblemSource::Builtin(b)) => ProblemSource::Builtin(b),
             _ => {

@@ -8,7 +8,7 @@ use crate::HarnessError;
 /// ```
 /// use mit_star_benches::ShippedExperiment;
 /// let names: Vec<&str> = ShippedExperiment::all().iter().map(|e| e.name).collect();
-/// assert_eq!(names, ["paper-table", "ablation", "smoke"]);
+/// assert_eq!(names, ["paper-table", "ablation", "smoke", "panda-mbm"]);
 /// assert!(ShippedExperiment::find("smoke")?.text.contains("[[problems]]"));
 /// # Ok::<(), mit_star_benches::HarnessError>(())
 /// ```
@@ -20,23 +20,36 @@ pub struct ShippedExperiment {
     pub summary: &'static str,
     /// The file's text.
     pub text: &'static str,
+    /// Data its problems read from the working folder, and how to get it (`None`: none).
+    pub data: Option<&'static str>,
 }
 
-static SHIPPED: [ShippedExperiment; 3] = [
+static SHIPPED: [ShippedExperiment; 4] = [
     ShippedExperiment {
         name: "paper-table",
         summary: "the paper's Table I: MIT* vs EIT* on FG, RR (10 layouts), DW and GE, the paper's budgets, 100 runs",
         text: include_str!("../experiments/paper-table.toml"),
+        data: None,
     },
     ShippedExperiment {
         name: "ablation",
         summary: "the paper's ablation: all five configurations on GE R^2 (0.01 s) and DW R^4 (0.07 s), 100 runs",
         text: include_str!("../experiments/ablation.toml"),
+        data: None,
     },
     ShippedExperiment {
         name: "smoke",
         summary: "a quick check: all five configurations on FG R^4, DW R^4, GE R^2, RR R^4 (layout 1), 20 runs (about a minute on 2 cores)",
         text: include_str!("../experiments/smoke.toml"),
+        data: None,
+    },
+    ShippedExperiment {
+        name: "panda-mbm",
+        summary: "the Franka Panda in MotionBenchMaker's five scenes × 100 problems: MIT* and EIT*, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 9 minutes on 2 cores)",
+        text: include_str!("../experiments/panda-mbm.toml"),
+        data: Some(
+            "MotionBenchMaker scene folders in target/: `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`",
+        ),
     },
 ];
 

@@ -46,7 +46,7 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Run one planner on one problem; print the result and draw 2-D runs.
+    /// Run one planner on one problem; print the result and draw 2-D runs and arm plans.
     Plan(PlanArgs),
     /// Run an experiment (file, shipped name, or flags) and write its results folder.
     Bench(BenchArgs),
