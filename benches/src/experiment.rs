@@ -383,12 +383,13 @@ mod tests {
     #[test]
     fn shipped_experiments_load_and_round_trip() {
         for shipped in ShippedExperiment::all() {
-            let e = Experiment::shipped(shipped.name).unwrap();
-            // Experiments reading external data (extracted into the working folder) build
-            // their instances only where it is; `tests/arm_experiment.rs` covers them.
-            if shipped.data.is_none() {
-                assert!(!e.instances().unwrap().is_empty(), "{}", shipped.name);
+            // Experiments reading external data (extracted into the working folder) load only
+            // where it is; `tests/arm_experiment.rs` runs them on the sample problems.
+            if shipped.data.is_some() {
+                continue;
             }
+            let e = Experiment::shipped(shipped.name).unwrap();
+            assert!(!e.instances().unwrap().is_empty(), "{}", shipped.name);
             let again = Experiment::from_toml_str(&e.to_toml(), shipped.name, None).unwrap();
             assert_eq!(again, e, "{}", shipped.name);
         }

@@ -28,22 +28,22 @@ fn configuration_colour(c: Configuration) -> RGBColor {
         Configuration::MitStarAs => RGBColor(44, 160, 44),
         Configuration::MitStarEis => RGBColor(148, 103, 189),
         Configuration::MitStarSc => RGBColor(255, 127, 14),
+        Configuration::RrtConnect => RGBColor(23, 190, 207),
     }
 }
 
 /// Colours for further planners of an already coloured configuration.
-const EXTRA: [RGBColor; 6] = [
+const EXTRA: [RGBColor; 5] = [
     RGBColor(140, 86, 75),
     RGBColor(227, 119, 194),
     RGBColor(127, 127, 127),
     RGBColor(188, 189, 34),
-    RGBColor(23, 190, 207),
     RGBColor(0, 0, 0),
 ];
 
 /// One colour per planner, in experiment order: the first planner of each configuration gets
 /// that configuration's fixed colour (MIT* red, EIT* blue, MIT*-AS green, MIT*-EIS purple,
-/// MIT*-SC orange); further planners of the same configuration get distinct extra colours.
+/// MIT*-SC orange, RRT-Connect cyan); further planners of the same configuration get distinct extra colours.
 ///
 /// ```
 /// use mit_star_benches::{planner_colours, ParameterOverrides, PlannerSpec};

@@ -45,7 +45,7 @@ static SHIPPED: [ShippedExperiment; 4] = [
     },
     ShippedExperiment {
         name: "panda-mbm",
-        summary: "the Franka Panda in MotionBenchMaker's five scenes × 100 problems: MIT* and EIT*, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 9 minutes on 2 cores)",
+        summary: "the Franka Panda in MotionBenchMaker's five scenes × 100 problems: MIT*, EIT* and RRT-Connect, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 10 minutes on 2 cores)",
         text: include_str!("../experiments/panda-mbm.toml"),
         data: Some(
             "MotionBenchMaker scene folders in target/: `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`",

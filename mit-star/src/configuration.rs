@@ -1,16 +1,20 @@
-//! [`Configuration`]: the paper's configurations chosen at run time, and [`build_planner`].
+//! [`Configuration`]: the paper's configurations and comparison planners chosen at run time,
+//! and [`build_planner`].
 
 use std::fmt;
 use std::str::FromStr;
 
 use problems::PlanningProblem;
 use serde::{Deserialize, Serialize};
-use validity::StateValidity;
+use validity::{DenseChecker, StateValidity};
 
-use crate::{BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters, Planner};
+use crate::{
+    BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters, Planner, RrtConnect,
+};
 
-/// A configuration of the MIT*/EIT* family, for choosing one at run time (command lines,
-/// benchmark files). The names are `mit-star`, `eit-star`, `mit-star-as`, `mit-star-eis` and
+/// A configuration of the MIT*/EIT* family, or a comparison planner, for choosing one at run
+/// time (command lines, benchmark files). The names are `rrt-connect`, `mit-star`, `eit-star`,
+/// `mit-star-as`, `mit-star-eis` and
 /// `mit-star-sc`.
 ///
 /// ```
@@ -35,17 +39,26 @@ pub enum Configuration {
     MitStarEis,
     /// EIT* with length-related sparse checks.
     MitStarSc,
+    /// RRT-Connect (Kuffner & LaValle 2000): bidirectional trees, first solution.
+    RrtConnect,
 }
 
 impl Configuration {
     /// Every configuration, MIT* first.
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::MitStar,
         Self::EitStar,
         Self::MitStarAs,
         Self::MitStarEis,
         Self::MitStarSc,
+        Self::RrtConnect,
     ];
+
+    /// `true` for the asymptotically optimal configurations (the EIT* family), whose cost keeps
+    /// improving with time; `false` for RRT-Connect, which returns its first solution.
+    pub fn is_asymptotically_optimal(self) -> bool {
+        !matches!(self, Self::RrtConnect)
+    }
 
     /// The command-line name (`mit-star`, …).
     pub fn name(self) -> &'static str {
@@ -55,6 +68,7 @@ impl Configuration {
             Self::MitStarAs => "mit-star-as",
             Self::MitStarEis => "mit-star-eis",
             Self::MitStarSc => "mit-star-sc",
+            Self::RrtConnect => "rrt-connect",
         }
     }
 
@@ -66,6 +80,7 @@ impl Configuration {
             Self::MitStarAs => "MIT*-AS",
             Self::MitStarEis => "MIT*-EIS",
             Self::MitStarSc => "MIT*-SC",
+            Self::RrtConnect => "RRT-Connect",
         }
     }
 }
@@ -85,7 +100,7 @@ impl FromStr for Configuration {
             .find(|c| c.name() == s)
             .ok_or_else(|| BuildError::UnknownConfiguration {
                 name: s.to_string(),
-                expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc",
+                expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, rrt-connect",
             })
     }
 }
@@ -186,5 +201,12 @@ where
                 .name(label)
                 .build()?,
         ),
+        Configuration::RrtConnect => {
+            let checker = DenseChecker::from_resolution(&space, parameters.resolution)?;
+            let mut planner =
+                RrtConnect::with_checker(space, validity, (start, goals), checker, parameters)?;
+            planner.set_name(label);
+            Box::new(planner)
+        }
     })
 }

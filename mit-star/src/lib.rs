@@ -72,6 +72,7 @@ mod parameters;
 mod planner;
 mod reverse_queue;
 mod reverse_search;
+mod rrt_connect;
 mod snapshot;
 mod state_chunks;
 mod termination;
@@ -94,6 +95,7 @@ pub use parameters::{
     Connection, EisExpansionForm, EisExpansionRule, Parameters, k_nearest, r_disc,
 };
 pub use planner::{Outcome, Planner, Solution};
+pub use rrt_connect::{RrtConnect, default_range};
 pub use snapshot::Snapshot;
 pub use termination::{
     And, CostThreshold, FirstSolution, IterationLimit, Or, Progress, Termination, TerminationExt,

@@ -73,6 +73,9 @@ pub struct Parameters {
     /// [`certification`](problems::PlanningProblem::certification), 4 for arms). Not in the
     /// paper: it makes returned paths hold at the finer grid too, for a few edges' work.
     pub certification: Option<u32>,
+    /// RRT-Connect's maximum extension length (`None`: [`default_range`](crate::default_range),
+    /// the paper's per dimension or 0.2 of the maximum extent). Unused by the EIT* family.
+    pub range: Option<f64>,
 }
 
 impl Default for Parameters {
@@ -93,6 +96,7 @@ impl Default for Parameters {
             eis_expansion_form: EisExpansionForm::Paper,
             eis_expansion_rule: EisExpansionRule::PerBatch,
             certification: None,
+            range: None,
         }
     }
 }
@@ -123,6 +127,9 @@ impl Parameters {
                 value: 0.0,
                 requirement: "it must be at least 1",
             });
+        }
+        if let Some(range) = self.range {
+            positive("range", range)?;
         }
         if self.certification == Some(0) {
             return Err(BuildError::Parameter {
@@ -198,6 +205,11 @@ impl Parameters {
             ("sparse_min_steps", self.sparse_min_steps.to_string()),
             ("eis_expansion_form", form.to_string()),
             ("eis_expansion_rule", rule.to_string()),
+            (
+                "range",
+                self.range
+                    .map_or_else(|| "default".to_owned(), |r| r.to_string()),
+            ),
             (
                 "certification",
                 self.certification

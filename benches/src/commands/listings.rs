@@ -70,9 +70,12 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
         Configuration::MitStarAs => "EIT* with the adaptive sampler",
         Configuration::MitStarEis => "EIT* with the estimated informed set",
         Configuration::MitStarSc => "EIT* with length-related sparse checks",
+        Configuration::RrtConnect => {
+            "bidirectional trees, extensions of at most `range`, first solution (parameters: range, resolution, seed, certification)"
+        }
     };
     for c in Configuration::ALL {
-        say!("  {:<14} {:<10} {}", c.name(), c.label(), parts(c));
+        say!("  {:<14} {:<12} {}", c.name(), c.label(), parts(c));
     }
     say!(
         "\nParameters (override with `--set key=value`; `seed` and `resolution` are set by the harness):\n"

@@ -1,0 +1,640 @@
+//! [`RrtConnect`]: Kuffner and LaValle's bidirectional RRT (2000), from the framework's parts.
+
+use std::time::Duration;
+
+use samplers::{CostBound, Sampler, UniformSampler};
+use spaces::{StateSpace, States, Stop};
+use validity::{Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+
+use crate::eit::validate_query;
+use crate::kd_tree::Alive;
+use crate::termination::SolveStop;
+use crate::{
+    BuildError, Counters, NearestNeighbors, Neighbours, Outcome, Parameters, Planner, PlannerError,
+    Snapshot, Solution, Termination, Trace, VertexKind,
+};
+
+/// RRT-Connect (Kuffner & LaValle, ICRA 2000): a tree from the start and a tree from the goals
+/// grow towards uniform samples in steps of at most [`range`](Self::range); after each step,
+/// the other tree greedily extends towards the new state until it is reached or blocked. The
+/// first connection is returned (the planner is not asymptotically optimal: later `solve` calls
+/// return the same path).
+///
+/// Built from the framework's parts: the space's uniform sampling through [`UniformSampler`],
+/// full edge checks through an [`EdgeChecker`] (batched for arms, certified when the problem
+/// asks), [`NearestNeighbors`] per tree (a scan with the space's metric when it is not
+/// Euclidean), the shared termination conditions, trace and counters.
+///
+/// # Arguments
+/// A query (space, validity checker, start, goals) and [`Parameters`]: `resolution` (the
+/// check step), `range` (`None`: the paper's 0.3, 0.5, 1.25, 3.0 in R^2, R^4, R^8, R^16, else
+/// 0.2 of the maximum extent, OMPL's default), `seed`, `certification`.
+///
+/// # Returns
+/// From [`solve`](Planner::solve): the first path found, or no solution when the termination
+/// condition fires first; trees persist across calls.
+///
+/// # Complexity
+/// Per iteration: two nearest-neighbour queries per step (`O(log n)` expected), one motion
+/// check of at most `range / step` states.
+///
+/// ```
+/// use mit_star::{FirstSolution, Planner, RrtConnect, TerminationExt, TimeLimit};
+/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let mut planner = RrtConnect::for_problem(&problem, &mit_star::Parameters::default())?;
+/// let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(5.0)))?;
+/// assert!(outcome.is_solved());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct RrtConnect<S, V, E = DenseChecker> {
+    space: S,
+    validity: Counted<V>,
+    sampler: UniformSampler,
+    checker: E,
+    initial: (UniformSampler, E),
+    parameters: Parameters,
+    range: f64,
+    name: String,
+    start: Vec<f64>,
+    goals: Vec<Vec<f64>>,
+    /// The start tree (0) and the goal tree (1).
+    trees: [Tree; 2],
+    /// The tree that grows towards the next sample.
+    growing: usize,
+    phase: Phase,
+    /// A motion check the stop interrupted, resumed by the next iteration.
+    pending: Option<Motion>,
+    solution: Option<Solution>,
+    trace: Trace,
+    counters: Counters,
+    elapsed: Duration,
+    neighbours: Neighbours,
+    target: Vec<f64>,
+    candidate: Vec<f64>,
+}
+
+/// One tree: states in contiguous storage, parent indices (`u32::MAX` for roots), and the
+/// nearest-neighbour index over its states.
+#[derive(Debug, Clone)]
+struct Tree {
+    states: States,
+    parents: Vec<u32>,
+    nn: NearestNeighbors,
+}
+
+const ROOT: u32 = u32::MAX;
+
+impl Tree {
+    fn new(dimension: usize) -> Self {
+        Self {
+            states: States::new(dimension),
+            parents: Vec::new(),
+            nn: NearestNeighbors::new(dimension),
+        }
+    }
+
+    fn add(&mut self, state: &[f64], parent: u32) -> u32 {
+        let id = self.parents.len() as u32;
+        self.states.push(state);
+        self.parents.push(parent);
+        self.nn.insert([(id, state)]);
+        id
+    }
+
+    fn state(&self, id: u32) -> &[f64] {
+        &self.states[id as usize]
+    }
+
+    /// The path from `id` up to its root, `id` first.
+    fn branch(&self, mut id: u32) -> Vec<u32> {
+        let mut ids = vec![id];
+        while self.parents[id as usize] != ROOT {
+            id = self.parents[id as usize];
+            ids.push(id);
+        }
+        ids
+    }
+}
+
+/// What one step towards a state did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Step {
+    /// Added a state `range` towards the target.
+    Advanced(u32),
+    /// Added the target itself.
+    Reached(u32),
+    /// The candidate or the motion was invalid: nothing added.
+    Trapped,
+    /// The stop fired; a motion check interrupted is pending.
+    Stopped,
+}
+
+/// A motion being checked: from state `near` of `tree` to the planner's candidate state.
+#[derive(Debug, Clone, Copy)]
+struct Motion {
+    tree: usize,
+    near: u32,
+    /// The candidate is the target itself.
+    reached: bool,
+    progress: EdgeProgress,
+}
+
+/// Where an iteration stands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Phase {
+    /// Growing a tree towards a sample.
+    Grow,
+    /// Tree `1 − from` steps towards state `new` of tree `from`.
+    Connect { from: usize, new: u32 },
+}
+
+/// The paper's RRT-Connect range in R^`n` (for its unit-cube problems), else 0.2 of the
+/// maximum extent (OMPL's default).
+pub fn default_range(dimension: usize, maximum_extent: f64) -> f64 {
+    match dimension {
+        2 => 0.3,
+        4 => 0.5,
+        8 => 1.25,
+        16 => 3.0,
+        _ => 0.2 * maximum_extent,
+    }
+}
+
+impl<S, V, E> RrtConnect<S, V, E>
+where
+    S: StateSpace,
+    V: StateValidity,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+{
+    /// A planner for the query with ready-made checker `checker` and `parameters` (validated
+    /// here: the range, the seed's sampler, the certification factor).
+    ///
+    /// # Errors
+    /// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
+    /// malformed query.
+    pub fn with_checker(
+        space: S,
+        validity: V,
+        (start, goals): (Vec<f64>, Vec<Vec<f64>>),
+        checker: E,
+        parameters: Parameters,
+    ) -> Result<Self, BuildError> {
+        parameters.validate()?;
+        validate_query(&space, &validity, &start, &goals)?;
+        let n = space.dimension();
+        let range = parameters
+            .range
+            .unwrap_or_else(|| default_range(n, space.maximum_extent()));
+        let sampler = UniformSampler::new(parameters.seed);
+        Ok(Self {
+            initial: (sampler.clone(), checker.clone()),
+            sampler,
+            checker,
+            validity: Counted::new(validity),
+            range,
+            name: "RRT-Connect".into(),
+            trees: [Tree::new(n), Tree::new(n)],
+            growing: 0,
+            phase: Phase::Grow,
+            pending: None,
+            solution: None,
+            trace: Trace::default(),
+            counters: Counters::default(),
+            elapsed: Duration::ZERO,
+            neighbours: Neighbours::new(),
+            target: vec![0.0; n],
+            candidate: vec![0.0; n],
+            space,
+            parameters,
+            start,
+            goals,
+        })
+    }
+
+    /// The maximum length of one extension.
+    pub fn range(&self) -> f64 {
+        self.range
+    }
+
+    /// Sets the name reports print (default `RRT-Connect`).
+    pub fn set_name(&mut self, name: impl Into<String>) {
+        self.name = name.into();
+    }
+
+    /// Plants the roots once.
+    fn setup(&mut self) {
+        if self.trees[0].parents.is_empty() {
+            self.trees[0].add(&self.start, ROOT);
+            for goal in &self.goals {
+                self.trees[1].add(goal, ROOT);
+            }
+        }
+    }
+
+    /// The state of tree `t` nearest to `target`, or `None` if the stop fired mid-query.
+    fn nearest(&mut self, t: usize, target: &[f64], stop: &dyn Stop) -> Option<u32> {
+        self.counters.neighbour_queries += 1;
+        let tree = &mut self.trees[t];
+        if self.space.is_euclidean() {
+            let complete = tree
+                .nn
+                .nearest_alive(target, 1, &mut self.neighbours, Alive::All, stop);
+            return if complete {
+                self.neighbours.iter().next().map(|&(_, id)| id)
+            } else {
+                None
+            };
+        }
+        let mut best = (f64::INFINITY, 0);
+        for (id, state) in tree.states.iter().enumerate() {
+            if id % 4096 == 4095 && stop.should_stop() {
+                return None;
+            }
+            let d = self.space.distance(state, target);
+            if d < best.0 {
+                best = (d, id as u32);
+            }
+        }
+        Some(best.1)
+    }
+
+    /// Starts a step of tree `t` from its state nearest to `self.target` towards it: the
+    /// candidate state (at most `range` away) goes to `self.candidate` and, if it is valid,
+    /// the motion to it becomes the pending one. `Trapped` if the candidate is invalid,
+    /// `Stopped` if the stop fired during the nearest-neighbour query.
+    fn start_motion(&mut self, t: usize, stop: &dyn Stop) -> Option<Step> {
+        let target = std::mem::take(&mut self.target);
+        let near = self.nearest(t, &target, stop);
+        let step = near.map(|near| {
+            let from = self.trees[t].state(near);
+            let distance = self.space.distance(from, &target);
+            let reached = distance <= self.range;
+            if reached {
+                self.candidate.copy_from_slice(&target);
+            } else {
+                self.space
+                    .interpolate(from, &target, self.range / distance, &mut self.candidate);
+            }
+            if self.validity.is_valid(&self.candidate) {
+                self.pending = Some(Motion {
+                    tree: t,
+                    near,
+                    reached,
+                    progress: EdgeProgress::UNTESTED,
+                });
+                None
+            } else {
+                Some(Step::Trapped)
+            }
+        });
+        self.target = target;
+        step.unwrap_or(Some(Step::Stopped))
+    }
+
+    /// Checks the pending motion (every grid point, then the certification grid when the
+    /// problem asks for one) and adds its end to its tree if it is valid. A check the stop
+    /// interrupts stays pending with its progress, and the next call resumes it.
+    fn finish_motion(&mut self, stop: &dyn Stop) -> Step {
+        let Some(mut motion) = self.pending.take() else {
+            return Step::Trapped;
+        };
+        let from = self.trees[motion.tree].state(motion.near);
+        let mut status = self.checker.check_full(
+            &self.space,
+            &self.validity,
+            from,
+            &self.candidate,
+            &mut motion.progress,
+            stop,
+        );
+        let factor = self.parameters.certification.unwrap_or(1);
+        if status == EdgeStatus::Valid && factor > 1 {
+            status = self.checker.certify(
+                &self.space,
+                &self.validity,
+                from,
+                &self.candidate,
+                factor,
+                stop,
+            );
+        }
+        match status {
+            EdgeStatus::Invalid => Step::Trapped,
+            EdgeStatus::Unknown => {
+                self.pending = Some(motion);
+                Step::Stopped
+            }
+            EdgeStatus::Valid => {
+                let candidate = std::mem::take(&mut self.candidate);
+                let id = self.trees[motion.tree].add(&candidate, motion.near);
+                self.candidate = candidate;
+                self.counters.samples += 1;
+                if motion.reached {
+                    Step::Reached(id)
+                } else {
+                    Step::Advanced(id)
+                }
+            }
+        }
+    }
+
+    /// One iteration: grow a tree one step towards a uniform sample, then let the other tree
+    /// step towards the new state until it reaches it (a solution) or is blocked. Work the
+    /// stop interrupts (a motion check, the connect phase) resumes at the next call.
+    fn iterate(&mut self, stop: &SolveStop<'_>) {
+        self.counters.iterations += 1;
+        loop {
+            let step = match self.phase {
+                Phase::Grow if self.pending.is_none() => {
+                    let mut sample = std::mem::take(&mut self.target);
+                    let drawn = self.sampler.sample(
+                        &self.space,
+                        &self.validity,
+                        CostBound::Unbounded,
+                        stop,
+                        &mut sample,
+                    );
+                    self.target = sample;
+                    // A uniform sampler fails only when stopped (the query was validated).
+                    if drawn.is_err() {
+                        return;
+                    }
+                    let t = self.growing;
+                    // The trees take turns, whatever this step does.
+                    self.growing = 1 - t;
+                    match self.start_motion(t, stop) {
+                        Some(step) => step,
+                        None => self.finish_motion(stop),
+                    }
+                }
+                Phase::Connect { from, new } if self.pending.is_none() => {
+                    let target = self.trees[from].state(new);
+                    self.target.copy_from_slice(target);
+                    match self.start_motion(1 - from, stop) {
+                        Some(step) => step,
+                        None => self.finish_motion(stop),
+                    }
+                }
+                Phase::Grow | Phase::Connect { .. } => self.finish_motion(stop),
+            };
+            match (self.phase, step) {
+                (_, Step::Stopped) => return,
+                (Phase::Grow, Step::Trapped) => return,
+                (Phase::Grow, Step::Advanced(id) | Step::Reached(id)) => {
+                    let from = 1 - self.growing;
+                    self.phase = Phase::Connect { from, new: id };
+                }
+                (Phase::Connect { .. }, Step::Trapped) => {
+                    self.phase = Phase::Grow;
+                    return;
+                }
+                (Phase::Connect { .. }, Step::Advanced(_)) => {}
+                (Phase::Connect { from, new }, Step::Reached(joined)) => {
+                    let (in_start, in_goal) = if from == 0 {
+                        (new, joined)
+                    } else {
+                        (joined, new)
+                    };
+                    self.phase = Phase::Grow;
+                    self.record_solution(in_start, in_goal, stop);
+                    return;
+                }
+            }
+            if stop.should_stop() {
+                return;
+            }
+        }
+    }
+
+    fn record_solution(&mut self, in_start_tree: u32, in_goal_tree: u32, stop: &SolveStop<'_>) {
+        let mut path = States::new(self.space.dimension());
+        let mut ids = self.trees[0].branch(in_start_tree);
+        ids.reverse();
+        for id in ids {
+            path.push(self.trees[0].state(id));
+        }
+        // The meeting state is in both trees: skip its goal-tree copy.
+        for id in self.trees[1].branch(in_goal_tree).into_iter().skip(1) {
+            path.push(self.trees[1].state(id));
+        }
+        let cost = path
+            .iter()
+            .zip(path.iter().skip(1))
+            .map(|(x, y)| self.space.distance(x, y))
+            .sum();
+        let time = (self.elapsed + stop.elapsed()).as_secs_f64();
+        self.trace.push(time, cost);
+        self.solution = Some(Solution { path, cost });
+    }
+}
+
+impl<S, V, E> Planner for RrtConnect<S, V, E>
+where
+    S: StateSpace,
+    V: StateValidity,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+{
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
+        let stop = SolveStop::new(termination);
+        self.setup();
+        let mut iterations = 0;
+        while self.solution.is_none() {
+            stop.update(iterations, self.best_cost());
+            if spaces::Stop::should_stop(&stop) {
+                break;
+            }
+            self.iterate(&stop);
+            iterations += 1;
+        }
+        self.elapsed += stop.elapsed();
+        Ok(match &self.solution {
+            Some(solution) => Outcome::Solved(solution.clone()),
+            None => Outcome::NoSolution,
+        })
+    }
+
+    fn clear(&mut self) {
+        self.sampler = self.initial.0.clone();
+        self.checker = self.initial.1.clone();
+        self.validity.reset();
+        let n = self.space.dimension();
+        self.trees = [Tree::new(n), Tree::new(n)];
+        self.growing = 0;
+        self.phase = Phase::Grow;
+        self.pending = None;
+        self.solution = None;
+        self.trace.clear();
+        self.counters = Counters::default();
+        self.elapsed = Duration::ZERO;
+    }
+
+    fn best_cost(&self) -> f64 {
+        self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)
+    }
+
+    fn trace(&self) -> &Trace {
+        &self.trace
+    }
+
+    fn counters(&self) -> Counters {
+        let mut c = self.counters;
+        let edges = <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker);
+        c.full_checks = edges.full_checks;
+        c.points_tested = edges.points_tested;
+        c.certifications = edges.certifications;
+        c.certification_failures = edges.certification_failures;
+        c.validity_checks = self.validity.count();
+        c.samples_drawn = <UniformSampler as Sampler<S, Counted<V>>>::counters(&self.sampler).drawn;
+        c.vertices = (self.trees[0].parents.len() + self.trees[1].parents.len()) as u64;
+        c.edges = c.vertices.saturating_sub(1 + self.goals.len() as u64);
+        c.peak_vertices = c.vertices;
+        c.peak_edges = c.edges;
+        c
+    }
+
+    fn settings(&self) -> Vec<(String, String)> {
+        let p = &self.parameters;
+        vec![
+            ("range".into(), self.range.to_string()),
+            ("resolution".into(), p.resolution.to_string()),
+            ("seed".into(), p.seed.to_string()),
+            (
+                "certification".into(),
+                p.certification.unwrap_or(1).to_string(),
+            ),
+        ]
+    }
+
+    fn snapshot(&self) -> Option<Snapshot> {
+        let mut states = States::new(self.space.dimension());
+        let mut kinds = Vec::new();
+        let mut edges = [Vec::new(), Vec::new()];
+        for (t, tree) in self.trees.iter().enumerate() {
+            let offset = states.len();
+            for (id, state) in tree.states.iter().enumerate() {
+                states.push(state);
+                let parent = tree.parents[id];
+                kinds.push(match (t, parent) {
+                    (0, ROOT) => VertexKind::Start,
+                    (_, ROOT) => VertexKind::Goal,
+                    _ => VertexKind::Sample,
+                });
+                if parent != ROOT {
+                    edges[t].push((offset + parent as usize, offset + id));
+                }
+            }
+        }
+        let [forward_edges, reverse_edges] = edges;
+        Some(Snapshot {
+            states,
+            kinds,
+            forward_edges,
+            reverse_edges,
+            solution: Vec::new(),
+            best_cost: self.best_cost(),
+            estimated_informed_cost: None,
+        })
+    }
+}
+
+impl<S, V> RrtConnect<S, V, DenseChecker>
+where
+    S: StateSpace + Clone,
+    V: StateValidity + Clone,
+{
+    /// RRT-Connect for `problem` with `parameters` (the problem's resolution replaces
+    /// `parameters.resolution`; its certification applies unless `parameters` sets one).
+    ///
+    /// # Errors
+    /// [`BuildError::Problem`] if the problem refuses its check step, else as
+    /// [`with_checker`](Self::with_checker).
+    pub fn for_problem<P>(problem: &P, parameters: &Parameters) -> Result<Self, BuildError>
+    where
+        P: problems::PlanningProblem<Space = S, Validity = V>,
+    {
+        problem.check_step().map_err(BuildError::Problem)?;
+        let mut parameters = parameters.clone();
+        parameters.resolution = problem.resolution();
+        parameters.certification = parameters
+            .certification
+            .or_else(|| Some(problem.certification()));
+        let checker = DenseChecker::from_resolution(problem.space(), parameters.resolution)?;
+        Self::with_checker(
+            problem.space().clone(),
+            problem.validity().clone(),
+            (problem.start().to_vec(), problem.goals().to_vec()),
+            checker,
+            parameters,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{FirstSolution, TerminationExt, TimeLimit};
+
+    #[test]
+    fn default_ranges_follow_the_paper_then_ompl() {
+        assert_eq!(default_range(2, 1.0), 0.3);
+        assert_eq!(default_range(4, 1.0), 0.5);
+        assert_eq!(default_range(8, 1.0), 1.25);
+        assert_eq!(default_range(16, 1.0), 3.0);
+        assert_eq!(default_range(7, 10.0), 2.0);
+    }
+
+    #[test]
+    fn steps_are_at_most_the_range_and_the_first_solution_stays() {
+        let problem = problems::DividingWalls::new(2)
+            .build()
+            .unwrap()
+            .with_resolution(1e-4)
+            .unwrap();
+        let parameters = Parameters {
+            range: Some(0.1),
+            seed: 3,
+            ..Parameters::default()
+        };
+        let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
+        assert_eq!(planner.range(), 0.1);
+        let stop = FirstSolution.or(TimeLimit::seconds(10.0));
+        let first = planner.solve(&stop).unwrap();
+        let path = &first.solution().unwrap().path;
+        assert_eq!(&path[0], problem.start());
+        assert_eq!(&path[path.len() - 1], &problem.goals()[0][..]);
+        for (a, b) in path.iter().zip(path.iter().skip(1)) {
+            assert!(problem.space().distance(a, b) <= 0.1 + 1e-12);
+            assert!(problem.world().segment_verdict(a, b).is_valid());
+        }
+        assert_eq!(planner.trace().len(), 1);
+        // Not asymptotically optimal: a later call returns the same path at once.
+        let again = planner.solve(&TimeLimit::seconds(0.01)).unwrap();
+        assert_eq!(again, first);
+        let snapshot = planner.snapshot().unwrap();
+        assert_eq!(
+            snapshot.forward_edges.len() + snapshot.reverse_edges.len() + 2,
+            snapshot.states.len()
+        );
+        planner.clear();
+        assert_eq!(planner.best_cost(), f64::INFINITY);
+        assert_eq!(planner.solve(&stop).unwrap(), first);
+    }
+
+    #[test]
+    fn a_bad_range_is_a_typed_error() {
+        let problem = problems::DividingWalls::new(2).build().unwrap();
+        for range in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            let parameters = Parameters {
+                range: Some(range),
+                ..Parameters::default()
+            };
+            let error = RrtConnect::for_problem(&problem, &parameters).unwrap_err();
+            assert!(error.to_string().contains("range"), "{error}");
+        }
+    }
+}
