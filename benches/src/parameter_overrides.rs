@@ -197,6 +197,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
     // Optional parameters (absent from the default table) are named with a sample value.
     let defaults = defaults_table(&Parameters {
         certification: Some(1),
+        range: Some(1.0),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {
@@ -301,6 +302,30 @@ mod tests {
         let zero = o.with_assignment("batch_size=0").unwrap();
         let m = zero.apply(&Parameters::default()).unwrap_err().to_string();
         assert_eq!(m, "parameter `batch_size`: is 0; it must be at least 1");
+    }
+
+    #[test]
+    fn optional_parameters_can_be_set() {
+        let p = ParameterOverrides::default()
+            .with_assignment("range=0.5")
+            .unwrap()
+            .with_assignment("certification=4")
+            .unwrap()
+            .apply(&Parameters::default())
+            .unwrap();
+        assert_eq!((p.range, p.certification), (Some(0.5), Some(4)));
+        // Unset, they stay absent: the planner's or the problem's default applies.
+        let p = ParameterOverrides::default()
+            .apply(&Parameters::default())
+            .unwrap();
+        assert_eq!((p.range, p.certification), (None, None));
+        for (assignment, key) in [("range=-1", "range"), ("certification=0", "certification")] {
+            let o = ParameterOverrides::default()
+                .with_assignment(assignment)
+                .unwrap();
+            let m = o.apply(&Parameters::default()).unwrap_err().to_string();
+            assert!(m.contains(key), "{m}");
+        }
     }
 
     #[test]
