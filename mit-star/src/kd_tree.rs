@@ -98,8 +98,14 @@ impl KdTree {
             coordinates.extend_from_slice(point);
         }
         let births = vec![0; ids.len()];
-        Self::from_parts(dimension, &ids, &births, &coordinates, &spaces::Never)
-            .unwrap_or_else(|| Self::empty(dimension))
+        let mut spare = crate::kd_tree_build::Spare::default();
+        Self::from_parts(
+            dimension,
+            (&ids, &births, &coordinates),
+            &spaces::Never,
+            &mut spare,
+        )
+        .unwrap_or_else(|| Self::empty(dimension))
     }
 
     /// A tree with no point.

@@ -20,6 +20,49 @@ struct Budget<'a> {
     scratch: Scratch,
 }
 
+/// The arrays of a build the stop condition abandoned, kept rather than freed and reused by
+/// the next build.
+///
+/// Returning tens of megabytes to the system takes milliseconds (page-table teardown): freed on
+/// the way out of an abandoned build, they made `solve` return 3–5 ms after its deadline
+/// (`examples/poll_gaps.rs` found it). Kept, they cost at most one extra copy of the points,
+/// and the next build writes into memory that is already mapped.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Spare {
+    ids: Vec<u32>,
+    births: Vec<u32>,
+    coordinates: Vec<f64>,
+}
+
+impl Spare {
+    /// The spare arrays, emptied (their capacity kept), for a new build.
+    pub(crate) fn take(&mut self) -> (Vec<u32>, Vec<u32>, Vec<f64>) {
+        let (mut ids, mut births, mut coordinates) = (
+            std::mem::take(&mut self.ids),
+            std::mem::take(&mut self.births),
+            std::mem::take(&mut self.coordinates),
+        );
+        ids.clear();
+        births.clear();
+        coordinates.clear();
+        (ids, births, coordinates)
+    }
+
+    /// Keeps the arrays of an abandoned build (the larger of each pair, should the spare still
+    /// hold some: the smaller one is freed, so keep the spare empty while building).
+    pub(crate) fn keep(&mut self, ids: Vec<u32>, births: Vec<u32>, coordinates: Vec<f64>) {
+        if ids.capacity() >= self.ids.capacity() {
+            self.ids = ids;
+        }
+        if births.capacity() >= self.births.capacity() {
+            self.births = births;
+        }
+        if coordinates.capacity() >= self.coordinates.capacity() {
+            self.coordinates = coordinates;
+        }
+    }
+}
+
 /// Buffers reused by every split of a build.
 #[derive(Default)]
 struct Scratch {
@@ -29,25 +72,34 @@ struct Scratch {
 
 impl KdTree {
     /// Builds a tree from ids, birth stamps and coordinates (row after row); `None` if `stop`
-    /// fired first (it is polled every few thousand points of work, copying included).
+    /// fired first (it is polled every few thousand points of work, copying included). The
+    /// copies are made in `spare`'s arrays, and an abandoned build leaves them there.
     pub(crate) fn from_parts(
         dimension: usize,
-        ids: &[u32],
-        births: &[u32],
-        coordinates: &[f64],
+        (ids, births, coordinates): (&[u32], &[u32], &[f64]),
         stop: &dyn Stop,
+        spare: &mut Spare,
     ) -> Option<Self> {
-        let coordinates = polled_concat(&[coordinates], stop)?;
-        Self::from_owned(dimension, ids.to_vec(), births.to_vec(), coordinates, stop)
+        let (mut own_ids, mut own_births, buffer) = spare.take();
+        let coordinates = match polled_concat(&[coordinates], stop, buffer) {
+            Ok(coordinates) => coordinates,
+            Err(buffer) => {
+                spare.keep(own_ids, own_births, buffer);
+                return None;
+            }
+        };
+        own_ids.extend_from_slice(ids);
+        own_births.extend_from_slice(births);
+        Self::from_owned(dimension, (own_ids, own_births, coordinates), stop, spare)
     }
 
-    /// [`from_parts`](Self::from_parts) taking the arrays it partitions in place.
+    /// [`from_parts`](Self::from_parts) taking the arrays it partitions in place; an
+    /// abandoned build hands them to `spare`.
     pub(crate) fn from_owned(
         dimension: usize,
-        ids: Vec<u32>,
-        births: Vec<u32>,
-        coordinates: Vec<f64>,
+        (ids, births, coordinates): (Vec<u32>, Vec<u32>, Vec<f64>),
         stop: &dyn Stop,
+        spare: &mut Spare,
     ) -> Option<Self> {
         let count = ids.len();
         let mut tree = Self::empty(dimension);
@@ -60,6 +112,7 @@ impl KdTree {
         tree.births = births;
         tree.coordinates = coordinates;
         tree.nodes.reserve(2 * count / BUCKET + 1);
+        let mut stopped = false;
         for chunk in tree
             .coordinates
             .chunks((POLL_WORK / dimension).max(1) * dimension)
@@ -71,17 +124,26 @@ impl KdTree {
                 }
             }
             if stop.should_stop() {
-                return None;
+                stopped = true;
+                break;
             }
         }
-        let (mut lo, mut hi) = (tree.lower.clone(), tree.upper.clone());
-        let mut budget = Budget {
-            stop,
-            work: 0,
-            scratch: Scratch::default(),
-        };
-        tree.split(0, count, &mut lo, &mut hi, &mut budget)?;
-        Some(tree)
+        if !stopped {
+            let (mut lo, mut hi) = (tree.lower.clone(), tree.upper.clone());
+            let mut budget = Budget {
+                stop,
+                work: 0,
+                scratch: Scratch::default(),
+            };
+            if tree
+                .split(0, count, &mut lo, &mut hi, &mut budget)
+                .is_some()
+            {
+                return Some(tree);
+            }
+        }
+        spare.keep(tree.ids, tree.births, tree.coordinates);
+        None
     }
 
     /// Swaps points `a` and `b` (rows, ids, stamps).
@@ -216,19 +278,25 @@ impl KdTree {
     }
 }
 
-/// The concatenation of `parts`, copied a slice of [`POLL_WORK`] values at a time with `stop`
-/// polled in between (`None` if it fired): copying millions of coordinates takes tens of
-/// milliseconds, page faults included.
-pub(crate) fn polled_concat(parts: &[&[f64]], stop: &dyn Stop) -> Option<Vec<f64>> {
+/// The concatenation of `parts` in `out` (emptied first; its capacity reused), copied a slice
+/// of [`POLL_WORK`] values at a time with `stop` polled in between: copying millions of
+/// coordinates takes tens of milliseconds, page faults included. `Err(out)` if it fired, so
+/// that the caller keeps the buffer rather than free it on the deadline path.
+pub(crate) fn polled_concat(
+    parts: &[&[f64]],
+    stop: &dyn Stop,
+    mut out: Vec<f64>,
+) -> Result<Vec<f64>, Vec<f64>> {
     let total = parts.iter().map(|p| p.len()).sum();
-    let mut out = Vec::with_capacity(total);
+    out.clear();
+    out.reserve(total);
     for part in parts {
         for chunk in part.chunks(POLL_WORK) {
             out.extend_from_slice(chunk);
             if stop.should_stop() {
-                return None;
+                return Err(out);
             }
         }
     }
-    Some(out)
+    Ok(out)
 }

@@ -5,7 +5,7 @@ use spaces::{Never, Stop};
 
 use crate::Neighbours;
 use crate::kd_tree::{Alive, KdTree, Poll, squared_distance};
-use crate::kd_tree_build::polled_concat;
+use crate::kd_tree_build::{Spare, polled_concat};
 
 /// Points that may wait in the linear buffer before a query builds them into a tree (the
 /// buffer may also hold up to a quarter of the points already in trees).
@@ -56,6 +56,8 @@ pub struct NearestNeighbors {
     /// Stored points known to be dead.
     dead: usize,
     queries: u64,
+    /// The arrays of the last abandoned build, reused by the next one.
+    spare: Spare,
 }
 
 impl NearestNeighbors {
@@ -70,6 +72,7 @@ impl NearestNeighbors {
             stored: 0,
             dead: 0,
             queries: 0,
+            spare: Spare::default(),
         }
     }
 
@@ -154,35 +157,44 @@ impl NearestNeighbors {
     /// One tree over the live points (trees and buffer); nothing changes if `stop` fires.
     fn rebuild_alive(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
         let n = self.dimension;
-        let (mut ids, mut births, mut xs) = (Vec::new(), Vec::new(), Vec::new());
-        let mut keep = |id: u32, birth: u32, x: &[f64]| {
-            if alive.contains(id, birth) {
-                ids.push(id);
-                births.push(birth);
-                xs.extend_from_slice(x);
+        let (mut ids, mut births, mut xs) = self.spare.take();
+        let mut stopped = false;
+        'gather: {
+            let mut keep = |id: u32, birth: u32, x: &[f64]| {
+                if alive.contains(id, birth) {
+                    ids.push(id);
+                    births.push(birth);
+                    xs.extend_from_slice(x);
+                }
+            };
+            for tree in &self.trees {
+                let (i, b, x) = tree.parts();
+                for j in 0..i.len() {
+                    keep(i[j], b[j], &x[j * n..(j + 1) * n]);
+                    if j % POLL_POINTS == POLL_POINTS - 1 && stop.should_stop() {
+                        stopped = true;
+                        break 'gather;
+                    }
+                }
             }
-        };
-        for tree in &self.trees {
-            let (i, b, x) = tree.parts();
-            for j in 0..i.len() {
-                keep(i[j], b[j], &x[j * n..(j + 1) * n]);
+            for j in 0..self.pending_ids.len() {
+                keep(
+                    self.pending_ids[j],
+                    self.pending_births[j],
+                    &self.pending[j * n..(j + 1) * n],
+                );
                 if j % POLL_POINTS == POLL_POINTS - 1 && stop.should_stop() {
-                    return;
+                    stopped = true;
+                    break 'gather;
                 }
             }
         }
-        for j in 0..self.pending_ids.len() {
-            keep(
-                self.pending_ids[j],
-                self.pending_births[j],
-                &self.pending[j * n..(j + 1) * n],
-            );
-            if j % POLL_POINTS == POLL_POINTS - 1 && stop.should_stop() {
-                return;
-            }
+        if stopped {
+            self.spare.keep(ids, births, xs);
+            return;
         }
         let live = ids.len();
-        if let Some(tree) = KdTree::from_owned(n, ids, births, xs, stop) {
+        if let Some(tree) = KdTree::from_owned(n, (ids, births, xs), stop, &mut self.spare) {
             self.trees = vec![tree];
             self.pending_ids.clear();
             self.pending_births.clear();
@@ -199,10 +211,9 @@ impl NearestNeighbors {
         }
         let built = KdTree::from_parts(
             self.dimension,
-            &self.pending_ids,
-            &self.pending_births,
-            &self.pending,
+            (&self.pending_ids, &self.pending_births, &self.pending),
             stop,
+            &mut self.spare,
         );
         match built {
             Some(tree) => {
@@ -221,9 +232,9 @@ impl NearestNeighbors {
             }
             match merge(
                 self.dimension,
-                &self.trees[last - 1],
-                &self.trees[last],
+                (&self.trees[last - 1], &self.trees[last]),
                 stop,
+                &mut self.spare,
             ) {
                 Some(tree) => {
                     self.trees.truncate(last - 1);
@@ -322,18 +333,28 @@ impl NearestNeighbors {
     }
 }
 
-/// One tree holding the points of two (`None` if `stop` fired).
-fn merge(dimension: usize, a: &KdTree, b: &KdTree, stop: &dyn Stop) -> Option<KdTree> {
+/// One tree holding the points of two (`None` if `stop` fired; the copies stay in `spare`).
+fn merge(
+    dimension: usize,
+    (a, b): (&KdTree, &KdTree),
+    stop: &dyn Stop,
+    spare: &mut Spare,
+) -> Option<KdTree> {
     let (ids_a, births_a, xs_a) = a.parts();
     let (ids_b, births_b, xs_b) = b.parts();
-    let coordinates = polled_concat(&[xs_a, xs_b], stop)?;
-    KdTree::from_owned(
-        dimension,
-        [ids_a, ids_b].concat(),
-        [births_a, births_b].concat(),
-        coordinates,
-        stop,
-    )
+    let (mut ids, mut births, buffer) = spare.take();
+    let coordinates = match polled_concat(&[xs_a, xs_b], stop, buffer) {
+        Ok(coordinates) => coordinates,
+        Err(buffer) => {
+            spare.keep(ids, births, buffer);
+            return None;
+        }
+    };
+    ids.extend_from_slice(ids_a);
+    ids.extend_from_slice(ids_b);
+    births.extend_from_slice(births_a);
+    births.extend_from_slice(births_b);
+    KdTree::from_owned(dimension, (ids, births, coordinates), stop, spare)
 }
 
 #[cfg(test)]
@@ -356,6 +377,55 @@ mod tests {
             .collect();
         all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         all
+    }
+
+    /// Fires from its `fires_at`-th poll on.
+    struct FiresAt {
+        polls: std::cell::Cell<u32>,
+        fires_at: u32,
+    }
+
+    impl Stop for FiresAt {
+        fn should_stop(&self) -> bool {
+            self.polls.set(self.polls.get() + 1);
+            self.polls.get() >= self.fires_at
+        }
+    }
+
+    #[test]
+    fn an_abandoned_build_keeps_its_arrays_and_answers_stay_exact() {
+        let n = 8;
+        let mut rng = SeededRng::seed_from_u64(5);
+        let points: Vec<f64> = (0..20_000 * n).map(|_| rng.random::<f64>()).collect();
+        let mut nn = NearestNeighbors::new(n);
+        nn.insert(
+            points
+                .chunks_exact(n)
+                .enumerate()
+                .map(|(i, p)| (i as u32, p)),
+        );
+        let mut found = Neighbours::new();
+        let query = vec![0.5; n];
+        for fires_at in [2, 3, 5, 9] {
+            let stop = FiresAt {
+                polls: std::cell::Cell::new(0),
+                fires_at,
+            };
+            // The build is abandoned part way: its copies are kept, not freed.
+            nn.nearest_alive(&query, 5, &mut found, Alive::All, &stop);
+            assert!(nn.spare.take().2.capacity() >= n, "fires at {fires_at}");
+            assert!(nn.trees.is_empty());
+        }
+        // A query that may finish builds the tree, reusing the spare arrays, and is exact.
+        nn.nearest(&query, 5, &mut found);
+        assert_eq!(nn.trees.len(), 1);
+        let expected: Vec<u32> = brute(&points, n, &query, |_| true)
+            .iter()
+            .take(5)
+            .map(|&(_, id)| id)
+            .collect();
+        let got: Vec<u32> = found.iter().map(|&(_, id)| id).collect();
+        assert_eq!(got, expected);
     }
 
     #[test]
