@@ -2,7 +2,6 @@
 
 use std::ops::Range;
 use std::sync::Arc;
-use std::sync::{Mutex, PoisonError};
 
 use glam::{Affine3A, Vec3A};
 use spaces::StateSpace;
@@ -11,6 +10,7 @@ use validity::StateValidity;
 use wide::f32x8;
 
 use crate::lanes::{LANES, LaneKinematics, Point8, Pose8};
+use crate::scratch_cell::ScratchCell;
 use crate::{Kinematics, Obstacle, RobotModel, Scene};
 
 /// What the checks share between clones: the kinematics, the scene and the pair lists.
@@ -63,14 +63,14 @@ struct Scratch {
 /// first invalid configuration.
 ///
 /// Clones share the model and scene (an [`Arc`]) and own their scratch buffers, so a check
-/// never allocates. The scratch sits behind a [`Mutex`] so that problems holding a checker
+/// never allocates. The scratch sits behind a mutex so that problems holding a checker
 /// can be shared between threads; each planner owns its own clone, so the lock is never
 /// contended (an uncontended lock costs a few nanoseconds against a check of about a
 /// microsecond).
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct ArmChecker {
     shared: Arc<Shared>,
-    scratch: Mutex<Scratch>,
+    scratch: ScratchCell<Scratch>,
 }
 
 impl ArmChecker {
@@ -120,28 +120,13 @@ impl ArmChecker {
                 spheres,
                 pairs,
             }),
-            scratch: Mutex::new(scratch),
+            scratch: ScratchCell::new(scratch),
         }
     }
 
     /// The forward kinematics it uses.
     pub fn kinematics(&self) -> &Kinematics {
         &self.shared.fk
-    }
-}
-
-/// A clone shares the model and scene and gets fresh scratch buffers.
-impl Clone for ArmChecker {
-    fn clone(&self) -> Self {
-        let scratch = self
-            .scratch
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .clone();
-        Self {
-            shared: Arc::clone(&self.shared),
-            scratch: Mutex::new(scratch),
-        }
     }
 }
 
@@ -155,7 +140,7 @@ impl StateValidity for ArmChecker {
         {
             return false;
         }
-        let mut guard = self.scratch.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut guard = self.scratch.lock();
         let Scratch {
             poses,
             centers,
@@ -247,7 +232,7 @@ impl ArmChecker {
         if dimension != s.lower.len() {
             return live;
         }
-        let mut guard = self.scratch.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut guard = self.scratch.lock();
         let Scratch {
             poses8,
             centers8,

@@ -129,21 +129,8 @@ impl Kinematics {
     #[inline]
     pub fn link_poses(&self, q: &[f64], out: &mut [Affine3A]) {
         debug_assert!(q.len() >= self.dimension && out.len() >= self.steps.len());
-        for (i, step) in self.steps.iter().enumerate() {
-            let mut local = step.origin;
-            if let Some((axis, _, c)) = step.axis {
-                let value = q[c] as f32;
-                local = if step.prismatic {
-                    local * Affine3A::from_translation((axis * value).into())
-                } else {
-                    local * Affine3A::from_axis_angle(axis.into(), value)
-                };
-            }
-            out[i] = if step.parent == usize::MAX {
-                local
-            } else {
-                out[step.parent] * local
-            };
+        for link in 0..self.steps.len() {
+            self.link_pose(q, link, out);
         }
     }
 

@@ -44,6 +44,7 @@ mod parry_checker;
 mod robot_model;
 mod scene;
 mod scene_error;
+mod scratch_cell;
 mod srdf;
 
 pub use arm_checker::ArmChecker;

@@ -1,7 +1,6 @@
 //! [`ParryChecker`]: the reference collision checker, in `f64` with parry's shape queries.
 
 use std::sync::Arc;
-use std::sync::{Mutex, PoisonError};
 
 use glam::{DAffine3, DQuat, DVec3};
 use parry3d_f64::math::Pose;
@@ -10,6 +9,7 @@ use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape};
 use spaces::StateSpace;
 use validity::StateValidity;
 
+use crate::scratch_cell::ScratchCell;
 use crate::{Kinematics, RobotModel, Scene, Shape};
 
 /// Per-clone scratch: link poses, and sphere centres with radii.
@@ -45,10 +45,10 @@ struct Shared {
 /// assert!(reference.is_valid(&start));
 /// # Ok::<(), robot::ArmError>(())
 /// ```
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct ParryChecker {
     shared: Arc<Shared>,
-    scratch: Mutex<Placed>,
+    scratch: ScratchCell<Placed>,
 }
 
 impl ParryChecker {
@@ -97,7 +97,7 @@ impl ParryChecker {
                 link_spheres,
                 pairs: robot.self_collision_pairs().to_vec(),
             }),
-            scratch: Mutex::new(scratch),
+            scratch: ScratchCell::new(scratch),
         }
     }
 
@@ -112,7 +112,7 @@ impl ParryChecker {
         {
             return false;
         }
-        let mut guard = self.scratch.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut guard = self.scratch.lock();
         let (links, centers) = &mut *guard;
         s.fk.sphere_centers_f64(q, links, centers);
         let ball =
@@ -145,21 +145,6 @@ impl ParryChecker {
             }
         }
         true
-    }
-}
-
-/// A clone shares the model and scene and gets fresh scratch buffers.
-impl Clone for ParryChecker {
-    fn clone(&self) -> Self {
-        let scratch = self
-            .scratch
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .clone();
-        Self {
-            shared: Arc::clone(&self.shared),
-            scratch: Mutex::new(scratch),
-        }
     }
 }
 
