@@ -11,7 +11,7 @@ use problems::PlanningProblem;
 use robot::{ArmProblem, Kinematics, Shape};
 
 use crate::HarnessError;
-use crate::plot_style::ensure_font;
+use crate::plot_style::{Figure, save_svg_and_png};
 
 const OBSTACLE: RGBColor = RGBColor(150, 150, 162);
 const START: RGBColor = RGBColor(0, 150, 60);
@@ -45,6 +45,21 @@ pub struct ArmPicture<'a> {
     problem: &'a ArmProblem,
     path: &'a [Vec<f64>],
     title: String,
+}
+
+/// A picture with its scene placed (once for both files).
+struct Drawn<'p, 'a> {
+    picture: &'p ArmPicture<'a>,
+    items: Vec<Item>,
+    trace: Vec<DVec3>,
+}
+
+impl Figure for Drawn<'_, '_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
+        self.picture
+            .draw(root, &self.items, &self.trace)
+            .map_err(|e| e.to_string())
+    }
 }
 
 /// Something to draw in a view: a filled polygon or a ball, with its depth towards the viewer.
@@ -105,22 +120,13 @@ impl<'a> ArmPicture<'a> {
     /// # Errors
     /// [`HarnessError::Plot`] if either file cannot be drawn or written.
     pub fn save(&self, svg: &Path, png: &Path) -> Result<(), HarnessError> {
-        ensure_font();
-        let fail = |path: &Path, message: String| HarnessError::Plot {
-            path: path.to_path_buf(),
-            message,
-        };
         let (items, trace) = self.scene_items();
-        {
-            let root = SVGBackend::new(svg, SIZE).into_drawing_area();
-            self.draw(&root, &items, &trace)
-                .map_err(|e| fail(svg, e.to_string()))?;
-            root.present().map_err(|e| fail(svg, e.to_string()))?;
-        }
-        let root = BitMapBackend::new(png, SIZE).into_drawing_area();
-        self.draw(&root, &items, &trace)
-            .map_err(|e| fail(png, e.to_string()))?;
-        root.present().map_err(|e| fail(png, e.to_string()))
+        let drawn = Drawn {
+            picture: self,
+            items,
+            trace,
+        };
+        save_svg_and_png(&drawn, SIZE, svg, png)
     }
 
     /// The configurations drawn: start, waypoints, goal, each with its colour and opacity.

@@ -96,22 +96,12 @@ impl ExperimentFigure {
     /// # Errors
     /// [`HarnessError::Plot`] if either file cannot be drawn or written.
     pub fn save(&self, svg: &Path, png: &Path) -> Result<(), HarnessError> {
-        plot_style::ensure_font();
-        let fail = |path: &Path| {
-            let path = path.to_path_buf();
-            move |message: String| HarnessError::Plot { path, message }
-        };
-        {
-            let root = SVGBackend::new(svg, SIZE).into_drawing_area();
-            self.draw(&root).map_err(fail(svg))?;
-            root.present().map_err(|e| fail(svg)(e.to_string()))?;
-        }
-        let root = BitMapBackend::new(png, SIZE).into_drawing_area();
-        self.draw(&root).map_err(fail(png))?;
-        root.present().map_err(|e| fail(png)(e.to_string()))
+        plot_style::save_svg_and_png(self, SIZE, svg, png)
     }
+}
 
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
+impl plot_style::Figure for ExperimentFigure {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let (header, body) = root.split_vertically(82);
         self.draw_header(&header).map_err(|e| e.to_string())?;
@@ -120,7 +110,9 @@ impl ExperimentFigure {
         self.draw_success(&panels[1]).map_err(|e| e.to_string())?;
         self.draw_initial(&panels[2]).map_err(|e| e.to_string())
     }
+}
 
+impl ExperimentFigure {
     fn draw_header<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,

@@ -1,11 +1,46 @@
-//! The look shared by every figure: the embedded font and the planners' colours.
+//! The look shared by every figure: the embedded font, the planners' colours, and saving a
+//! figure as SVG and PNG.
 
+use std::path::Path;
 use std::sync::Once;
 
 use mit_star::Configuration;
+use plotters::coord::Shift;
+use plotters::prelude::{BitMapBackend, DrawingArea, DrawingBackend, IntoDrawingArea, SVGBackend};
 use plotters::style::{FontStyle, RGBColor};
 
-use crate::PlannerSpec;
+use crate::{HarnessError, PlannerSpec};
+
+/// A figure plotters can draw on any backend, saved by [`save_svg_and_png`].
+pub(crate) trait Figure {
+    /// Draws the whole figure on `root`; a failure is described in words.
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>;
+}
+
+/// Draws `figure` at `size` pixels into an SVG and a PNG file (the embedded font registered).
+///
+/// # Errors
+/// [`HarnessError::Plot`] naming the file that could not be drawn or written.
+pub(crate) fn save_svg_and_png(
+    figure: &impl Figure,
+    size: (u32, u32),
+    svg: &Path,
+    png: &Path,
+) -> Result<(), HarnessError> {
+    ensure_font();
+    let fail = |path: &Path| {
+        let path = path.to_path_buf();
+        move |message: String| HarnessError::Plot { path, message }
+    };
+    {
+        let root = SVGBackend::new(svg, size).into_drawing_area();
+        figure.draw_on(&root).map_err(fail(svg))?;
+        root.present().map_err(|e| fail(svg)(e.to_string()))?;
+    }
+    let root = BitMapBackend::new(png, size).into_drawing_area();
+    figure.draw_on(&root).map_err(fail(png))?;
+    root.present().map_err(|e| fail(png)(e.to_string()))
+}
 
 static FONT: Once = Once::new();
 

@@ -10,7 +10,7 @@ use problems::Problem;
 use validity::AxisBox;
 
 use crate::HarnessError;
-use crate::plot_style::{clip_segment, ensure_font};
+use crate::plot_style::{Figure, clip_segment, save_svg_and_png};
 
 const OBSTACLE: RGBColor = RGBColor(110, 110, 120);
 const ANTI_OBSTACLE: RGBColor = RGBColor(200, 235, 200);
@@ -66,22 +66,17 @@ impl<'a> RunPicture<'a> {
     /// # Errors
     /// [`HarnessError::Plot`] if either file cannot be drawn or written.
     pub fn save(&self, svg: &Path, png: &Path) -> Result<(), HarnessError> {
-        ensure_font();
-        let size = (860, 960);
-        let fail = |path: &Path| {
-            let path = path.to_path_buf();
-            move |message: String| HarnessError::Plot { path, message }
-        };
-        {
-            let root = SVGBackend::new(svg, size).into_drawing_area();
-            self.draw(&root).map_err(|e| fail(svg)(e.to_string()))?;
-            root.present().map_err(|e| fail(svg)(e.to_string()))?;
-        }
-        let root = BitMapBackend::new(png, size).into_drawing_area();
-        self.draw(&root).map_err(|e| fail(png)(e.to_string()))?;
-        root.present().map_err(|e| fail(png)(e.to_string()))
+        save_svg_and_png(self, (860, 960), svg, png)
     }
+}
 
+impl Figure for RunPicture<'_> {
+    fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
+        self.draw(root).map_err(|e| e.to_string())
+    }
+}
+
+impl RunPicture<'_> {
     fn draw<DB: DrawingBackend>(
         &self,
         root: &DrawingArea<DB, Shift>,
