@@ -194,47 +194,74 @@ impl GridWalker {
         S: StateSpace + ?Sized,
         V: StateValidity + ?Sized,
     {
+        let start = progress.0;
+        let fractions = grid.order(start, target).map(|index| grid.fraction(index));
+        match self.walk_batches(
+            space,
+            validity,
+            (a, b),
+            fractions,
+            (width, polls_first),
+            stop,
+        ) {
+            Walked::Invalid => {
+                *progress = EdgeProgress(EdgeProgress::INVALID);
+                EdgeStatus::Invalid
+            }
+            Walked::Done(walked) | Walked::Stopped(walked) => {
+                *progress = EdgeProgress(start + walked);
+                progress.status(&grid)
+            }
+        }
+    }
+
+    /// Tests the states at `fractions` of the edge `a → b` in order, `width` to a
+    /// [`StateValidity::first_invalid`] call, polling `stop` every [`STOP_POLL`] points (and
+    /// before the first if `polls_first`) so that no batch straddles a poll.
+    fn walk_batches<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b): (&[f64], &[f64]),
+        fractions: impl Iterator<Item = f64>,
+        (width, polls_first): (usize, bool),
+        stop: &dyn Stop,
+    ) -> Walked
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
         let dimension = space.dimension();
         self.scratch.resize(dimension * width, 0.0);
-        let start = progress.0;
-        let mut position = start;
-        let mut order = grid.order(start, target);
-        while position < target {
-            let walked = position - start;
+        let mut fractions = fractions.peekable();
+        let mut walked = 0_u64;
+        while fractions.peek().is_some() {
             if walked % STOP_POLL == 0 && (walked > 0 || polls_first) && stop.should_stop() {
-                break;
+                return Walked::Stopped(walked);
             }
-            let until_poll = STOP_POLL - walked % STOP_POLL;
-            let n = (width as u64).min(until_poll).min(target - position) as usize;
+            let n = (width as u64).min(STOP_POLL - walked % STOP_POLL) as usize;
             let mut filled = 0;
-            for (slot, index) in self
+            for (slot, t) in self
                 .scratch
                 .chunks_exact_mut(dimension)
-                .zip(&mut order)
+                .zip(&mut fractions)
                 .take(n)
             {
-                space.interpolate(a, b, grid.fraction(index), slot);
+                space.interpolate(a, b, t, slot);
                 filled += 1;
-            }
-            if filled == 0 {
-                break;
             }
             self.counters.points_tested += filled as u64;
             if validity
                 .first_invalid(&self.scratch[..filled * dimension], dimension)
                 .is_some()
             {
-                *progress = EdgeProgress(EdgeProgress::INVALID);
-                return EdgeStatus::Invalid;
+                return Walked::Invalid;
             }
-            position += filled as u64;
+            walked += filled as u64;
         }
-        *progress = EdgeProgress(position);
-        progress.status(&grid)
+        Walked::Done(walked)
     }
-}
 
-impl GridWalker {
     /// Certifies the edge `a — b` on a grid `factor` times finer than its own: tests, in order
     /// from the [canonical end](canonical_ends), every point of the grid of step
     /// `step / factor` that is not a point of the edge's own grid (those were tested by the
@@ -267,50 +294,42 @@ impl GridWalker {
         let coarse = EdgeGrid::new(length, self.step).intervals();
         let fine = EdgeGrid::new(length, self.step / f64::from(factor));
         let (intervals, points) = (fine.intervals(), fine.points());
-        // Fine index `i` lies on the coarse grid when `i · coarse` is a multiple of `intervals`.
-        let skip = |i: u64| u128::from(i) * u128::from(coarse) % u128::from(intervals) == 0;
-        // The shared points are the multiples of `intervals / gcd`: `gcd − 1` of them.
+        // Fine index `i` lies on the coarse grid when `i · coarse` is a multiple of `intervals`;
+        // those are the multiples of `intervals / gcd`, `gcd − 1` of them.
+        let on_coarse = |i: u64| u128::from(i) * u128::from(coarse) % u128::from(intervals) == 0;
         let new_points = points - (gcd(coarse, intervals) - 1);
         self.counters.certifications += 1;
-        let polls_first = new_points > STOP_POLL;
-        let dimension = space.dimension();
         let width = validity.batch_width().clamp(1, STOP_POLL as usize);
-        self.scratch.resize(dimension * width, 0.0);
-        let mut indices = (1..=points).filter(|&i| !skip(i));
-        let mut walked = 0_u64;
-        loop {
-            if walked % STOP_POLL == 0 && (walked > 0 || polls_first) && stop.should_stop() {
-                return EdgeStatus::Unknown;
-            }
-            let until_poll = STOP_POLL - walked % STOP_POLL;
-            let n = (width as u64).min(until_poll) as usize;
-            let mut filled = 0;
-            for (slot, index) in self
-                .scratch
-                .chunks_exact_mut(dimension)
-                .zip(&mut indices)
-                .take(n)
-            {
-                space.interpolate(a, b, fine.fraction(index), slot);
-                filled += 1;
-            }
-            if filled == 0 {
-                return EdgeStatus::Valid;
-            }
-            self.counters.points_tested += filled as u64;
-            walked += filled as u64;
-            let batch = &self.scratch[..filled * dimension];
-            let invalid = if filled == 1 {
-                !validity.is_valid(batch)
-            } else {
-                validity.first_invalid(batch, dimension).is_some()
-            };
-            if invalid {
+        let fractions = (1..=points)
+            .filter(|&i| !on_coarse(i))
+            .map(|i| fine.fraction(i));
+        let polls_first = new_points > STOP_POLL;
+        match self.walk_batches(
+            space,
+            validity,
+            (a, b),
+            fractions,
+            (width, polls_first),
+            stop,
+        ) {
+            Walked::Done(_) => EdgeStatus::Valid,
+            Walked::Stopped(_) => EdgeStatus::Unknown,
+            Walked::Invalid => {
                 self.counters.certification_failures += 1;
-                return EdgeStatus::Invalid;
+                EdgeStatus::Invalid
             }
         }
     }
+}
+
+/// How a [`GridWalker::walk_batches`] walk ended, with the points it tested valid.
+enum Walked {
+    /// Every point valid.
+    Done(u64),
+    /// The stop fired before the rest.
+    Stopped(u64),
+    /// A point was invalid.
+    Invalid,
 }
 
 fn gcd(mut a: u64, mut b: u64) -> u64 {
