@@ -6,7 +6,7 @@ use std::str::FromStr;
 
 use problems::PlanningProblem;
 use serde::{Deserialize, Serialize};
-use validity::{DenseChecker, StateValidity};
+use validity::StateValidity;
 
 use crate::{
     BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters, Planner, RrtConnect,
@@ -53,12 +53,6 @@ impl Configuration {
         Self::MitStarSc,
         Self::RrtConnect,
     ];
-
-    /// `true` for the asymptotically optimal configurations (the EIT* family), whose cost keeps
-    /// improving with time; `false` for RRT-Connect, which returns its first solution.
-    pub fn is_asymptotically_optimal(self) -> bool {
-        !matches!(self, Self::RrtConnect)
-    }
 
     /// The command-line name (`mit-star`, …).
     pub fn name(self) -> &'static str {
@@ -161,12 +155,7 @@ where
     P: PlanningProblem,
     V: StateValidity + Send + 'static,
 {
-    problem.check_step()?;
-    let mut parameters = parameters.clone();
-    parameters.resolution = problem.resolution();
-    parameters.certification = parameters
-        .certification
-        .or_else(|| Some(problem.certification()));
+    let parameters = parameters.for_problem(problem)?;
     let space = problem.space().clone();
     let (start, goals) = (problem.start().to_vec(), problem.goals().to_vec());
     let label = configuration.label();
@@ -202,9 +191,7 @@ where
                 .build()?,
         ),
         Configuration::RrtConnect => {
-            let checker = DenseChecker::from_resolution(&space, parameters.resolution)?;
-            let mut planner =
-                RrtConnect::with_checker(space, validity, (start, goals), checker, parameters)?;
+            let mut planner = RrtConnect::new(space, validity, (start, goals), parameters)?;
             planner.set_name(label);
             Box::new(planner)
         }

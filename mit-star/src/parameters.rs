@@ -114,6 +114,22 @@ fn positive(name: &'static str, value: f64) -> Result<(), BuildError> {
 }
 
 impl Parameters {
+    /// These parameters for `problem`: its resolution replaces `resolution`, and its
+    /// certification applies unless `certification` is set.
+    ///
+    /// # Errors
+    /// [`BuildError::Problem`] if the problem refuses its check step.
+    pub(crate) fn for_problem<P: problems::PlanningProblem>(
+        &self,
+        problem: &P,
+    ) -> Result<Self, BuildError> {
+        problem.check_step()?;
+        let mut parameters = self.clone();
+        parameters.resolution = problem.resolution();
+        parameters.certification = self.certification.or(Some(problem.certification()));
+        Ok(parameters)
+    }
+
     /// Checks every parameter.
     ///
     /// # Errors

@@ -542,6 +542,24 @@ where
     }
 }
 
+impl<S: StateSpace, V: StateValidity> RrtConnect<S, V, DenseChecker> {
+    /// RRT-Connect with full checks at `parameters.resolution`
+    /// ([`with_checker`](Self::with_checker) and a [`DenseChecker`]).
+    ///
+    /// # Errors
+    /// As [`with_checker`](Self::with_checker), and [`BuildError::Validity`] for a resolution
+    /// the checker refuses.
+    pub fn new(
+        space: S,
+        validity: V,
+        query: (Vec<f64>, Vec<Vec<f64>>),
+        parameters: Parameters,
+    ) -> Result<Self, BuildError> {
+        let checker = DenseChecker::from_resolution(&space, parameters.resolution)?;
+        Self::with_checker(space, validity, query, checker, parameters)
+    }
+}
+
 impl<S, V> RrtConnect<S, V, DenseChecker>
 where
     S: StateSpace + Clone,
@@ -552,24 +570,16 @@ where
     ///
     /// # Errors
     /// [`BuildError::Problem`] if the problem refuses its check step, else as
-    /// [`with_checker`](Self::with_checker).
+    /// [`new`](Self::new).
     pub fn for_problem<P>(problem: &P, parameters: &Parameters) -> Result<Self, BuildError>
     where
         P: problems::PlanningProblem<Space = S, Validity = V>,
     {
-        problem.check_step().map_err(BuildError::Problem)?;
-        let mut parameters = parameters.clone();
-        parameters.resolution = problem.resolution();
-        parameters.certification = parameters
-            .certification
-            .or_else(|| Some(problem.certification()));
-        let checker = DenseChecker::from_resolution(problem.space(), parameters.resolution)?;
-        Self::with_checker(
+        Self::new(
             problem.space().clone(),
             problem.validity().clone(),
             (problem.start().to_vec(), problem.goals().to_vec()),
-            checker,
-            parameters,
+            parameters.for_problem(problem)?,
         )
     }
 }
