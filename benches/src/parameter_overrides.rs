@@ -198,6 +198,9 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
     let defaults = defaults_table(&Parameters {
         certification: Some(1),
         range: Some(1.0),
+        initial_inflation: Some(1.0),
+        inflation_scaling: Some(0.0),
+        truncation_scaling: Some(0.0),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {

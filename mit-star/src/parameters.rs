@@ -76,6 +76,21 @@ pub struct Parameters {
     /// RRT-Connect's maximum extension length (`None`: [`default_range`](crate::default_range),
     /// the paper's per dimension or 0.2 of the maximum extent). Unused by the EIT* family.
     pub range: Option<f64>,
+    /// Informed RRT*'s probability of sampling a goal instead of the sampler's state.
+    pub goal_bias: f64,
+    /// Informed RRT*'s k-nearest rewiring factor (OMPL's `rewire_factor` of RRT*; the EIT*
+    /// family and BIT* use `rewire_factor`).
+    pub rrt_rewire_factor: f64,
+    /// BIT*-family inflation `ε₀ ≥ 1` of the heuristic in the edge order of each batch's first
+    /// search (`None`: 1 for BIT*, 10⁶ for ABIT*).
+    pub initial_inflation: Option<f64>,
+    /// ABIT*'s inflation scaling `s ≥ 0`: a batch's second search orders by
+    /// `g + ĉ + (1 + s/q)·ĥ` (`None`: 0 for BIT*, 10 for ABIT*).
+    pub inflation_scaling: Option<f64>,
+    /// ABIT*'s truncation scaling `t ≥ 0`: a batch's search stops once
+    /// `(1 + t/q)·(g + ĉ + ĥ)` of every queued edge reaches the solution cost (`None`: 0 for
+    /// BIT*, 5 for ABIT*).
+    pub truncation_scaling: Option<f64>,
 }
 
 impl Default for Parameters {
@@ -97,6 +112,11 @@ impl Default for Parameters {
             eis_expansion_rule: EisExpansionRule::PerBatch,
             certification: None,
             range: None,
+            goal_bias: 0.05,
+            rrt_rewire_factor: 1.2,
+            initial_inflation: None,
+            inflation_scaling: None,
+            truncation_scaling: None,
         }
     }
 }
@@ -162,6 +182,37 @@ impl Parameters {
             });
         }
         positive("rewire_factor", self.rewire_factor)?;
+        positive("rrt_rewire_factor", self.rrt_rewire_factor)?;
+        if !(0.0..=1.0).contains(&self.goal_bias) {
+            return Err(BuildError::Parameter {
+                name: "goal_bias",
+                value: self.goal_bias,
+                requirement: "it must lie in [0, 1] (a probability)",
+            });
+        }
+        if let Some(inflation) = self.initial_inflation
+            && !(inflation.is_finite() && inflation >= 1.0)
+        {
+            return Err(BuildError::Parameter {
+                name: "initial_inflation",
+                value: inflation,
+                requirement: "it must be finite and at least 1",
+            });
+        }
+        for (name, value) in [
+            ("inflation_scaling", self.inflation_scaling),
+            ("truncation_scaling", self.truncation_scaling),
+        ] {
+            if let Some(v) = value
+                && !(v.is_finite() && v >= 0.0)
+            {
+                return Err(BuildError::Parameter {
+                    name,
+                    value: v,
+                    requirement: "it must be finite and non-negative",
+                });
+            }
+        }
         if !(self.resolution > 0.0 && self.resolution < 1.0) {
             return Err(BuildError::Parameter {
                 name: "resolution",
@@ -230,6 +281,23 @@ impl Parameters {
                 "certification",
                 self.certification
                     .map_or_else(|| "problem's".to_owned(), |k| k.to_string()),
+            ),
+            ("goal_bias", self.goal_bias.to_string()),
+            ("rrt_rewire_factor", self.rrt_rewire_factor.to_string()),
+            (
+                "initial_inflation",
+                self.initial_inflation
+                    .map_or_else(|| "planner's".to_owned(), |v| v.to_string()),
+            ),
+            (
+                "inflation_scaling",
+                self.inflation_scaling
+                    .map_or_else(|| "planner's".to_owned(), |v| v.to_string()),
+            ),
+            (
+                "truncation_scaling",
+                self.truncation_scaling
+                    .map_or_else(|| "planner's".to_owned(), |v| v.to_string()),
             ),
         ]
         .into_iter()
