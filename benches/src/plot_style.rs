@@ -64,21 +64,24 @@ fn configuration_colour(c: Configuration) -> RGBColor {
         Configuration::MitStarEis => RGBColor(148, 103, 189),
         Configuration::MitStarSc => RGBColor(255, 127, 14),
         Configuration::RrtConnect => RGBColor(23, 190, 207),
+        Configuration::BitStar => RGBColor(140, 86, 75),
+        Configuration::AbitStar => RGBColor(227, 119, 194),
+        Configuration::AitStar => RGBColor(188, 189, 34),
     }
 }
 
 /// Colours for further planners of an already coloured configuration.
 const EXTRA: [RGBColor; 5] = [
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
     RGBColor(127, 127, 127),
-    RGBColor(188, 189, 34),
     RGBColor(0, 0, 0),
+    RGBColor(57, 59, 121),
+    RGBColor(140, 109, 49),
+    RGBColor(99, 121, 57),
 ];
 
 /// One colour per planner, in experiment order: the first planner of each configuration gets
 /// that configuration's fixed colour (MIT* red, EIT* blue, MIT*-AS green, MIT*-EIS purple,
-/// MIT*-SC orange, RRT-Connect cyan); further planners of the same configuration get distinct extra colours.
+/// MIT*-SC orange, RRT-Connect cyan, BIT* brown, ABIT* pink, AIT* olive); further planners of the same configuration get distinct extra colours.
 ///
 /// ```
 /// use mit_star_benches::{planner_colours, ParameterOverrides, PlannerSpec};

@@ -1,11 +1,12 @@
-//! The paper's configurations (spec §8) as type aliases of [`Eit`]: each is nothing but a
-//! choice of parts.
+//! The paper's configurations (spec §8) and its comparison planners AIT*, BIT* and ABIT* as
+//! type aliases of [`Eit`]: each is nothing but a choice of parts.
 
+use heuristics::Euclidean;
 use samplers::{AdaptiveSampler, Estimated, InformedSampler};
 use spaces::RealVectorSpace;
-use validity::{FixedSparseChecker, LengthAdaptiveChecker, World};
+use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, World};
 
-use crate::Eit;
+use crate::{APriori, CostInformed, Eit};
 
 /// **MIT*** (Zhang et al. 2025): adaptive sampler inside the estimated informed set
 /// ([`Estimated`] wrapper), length-related sparse collision checks.
@@ -27,3 +28,36 @@ pub type MitStarEis<S = RealVectorSpace, V = World> =
 /// **MIT*-SC**: EIT* with MIT*'s length-related sparse collision checks only.
 pub type MitStarSc<S = RealVectorSpace, V = World> =
     Eit<S, V, InformedSampler, LengthAdaptiveChecker>;
+
+/// **AIT*** (Strub and Gammell, ICRA 2020 / IJRR 2022): direct informed sampling, an unchecked
+/// lazy reverse search ([`CostInformed`]) supplying the forward search's heuristic, full
+/// checks in the forward search only.
+pub type AitStar<S = RealVectorSpace, V = World> =
+    Eit<S, V, InformedSampler, DenseChecker, Euclidean, CostInformed>;
+
+/// **BIT*** (Gammell, Barfoot and Srinivasa, IJRR 2020): direct informed sampling, no reverse
+/// search ([`APriori`]), full checks of the edges the forward search processes in order of
+/// `g + ĉ + ĥ`.
+///
+/// **ABIT*** (Strub and Gammell, ICRA 2020) is this same type with ABIT*'s inflation and
+/// truncation factors ([`Builder::abit_star`](crate::Builder::abit_star),
+/// [`Parameters::abit_star`](crate::Parameters::abit_star)):
+///
+/// ```
+/// use mit_star::{BitStar, FirstSolution, Planner};
+/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let mut abit = BitStar::for_problem(&problem)
+///     .abit_star()
+///     .name("ABIT*")
+///     .build()?;
+/// assert!(abit.solve(&FirstSolution)?.is_solved());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub type BitStar<S = RealVectorSpace, V = World> =
+    Eit<S, V, InformedSampler, DenseChecker, Euclidean, APriori>;
+
+/// **AIT*-EIS** — *not in the paper*: AIT* sampling inside MIT*'s estimated informed set
+/// before its first solution (the [`Estimated`] wrapper reacts to AIT*'s invalid lazy-path
+/// edges as it does to EIT*'s). Remove the wrapper and it is [`AitStar`].
+pub type AitStarEis<S = RealVectorSpace, V = World> =
+    Eit<S, V, Estimated<InformedSampler>, DenseChecker, Euclidean, CostInformed>;

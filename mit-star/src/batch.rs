@@ -8,19 +8,21 @@ use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::eit::Eit;
 use crate::graph::Neighbourhood;
+use crate::guidance::{Guidance, ReverseSearch};
 use crate::vertex::NONE;
 use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
 
 /// Samples of a batch made visible to neighbour queries (and indexed) at a time.
 const INDEX_CHUNK: usize = 4096;
 
-impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
     S: StateSpace,
     V: StateValidity,
     Smp: Sampler<S, Counted<V>> + Clone,
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
+    G: Guidance,
 {
     /// The bound samples are drawn under: the best solution's cost if there is one; otherwise
     /// unbounded (an estimated-informed-set sampler substitutes its estimate).
@@ -67,6 +69,27 @@ where
         self.forward.clear();
         self.restart_reverse(stop);
         self.expand_forward(self.start_id, NONE, stop);
+    }
+
+    /// Neither search can improve on this batch: with the a-priori guidance and a solution,
+    /// first search the batch once more with the final, least inflation `1 + s/q` (ABIT*; BIT*'s
+    /// `s = 0` needs no second search), else add a batch.
+    pub(crate) fn search_exhausted(&mut self, stop: &crate::termination::SolveStop<'_>) {
+        if G::REVERSE == ReverseSearch::None && self.best_cost.is_finite() && !self.final_search {
+            self.final_search = true;
+            let q = self.graph.vertex_count() as f64;
+            let inflation = 1.0 + self.parameters.inflation_scaling.unwrap_or(0.0) / q;
+            if inflation < self.inflation {
+                self.inflation = inflation;
+                if stop.should_stop() {
+                    self.restart_pending = true;
+                } else {
+                    self.restart_searches(stop);
+                }
+                return;
+            }
+        }
+        self.add_batch(stop);
     }
 
     /// Adds a batch of samples (spec §3.4).
@@ -137,6 +160,11 @@ where
         let samples = ids.len();
         self.batch_ids = ids;
         let connection = self.update_neighbourhood();
+        // The a-priori guidance's factors for the new batch (ABIT*; 1 for BIT*).
+        let q = self.graph.vertex_count() as f64;
+        self.inflation = self.parameters.initial_inflation.unwrap_or(1.0);
+        self.truncation = 1.0 + self.parameters.truncation_scaling.unwrap_or(0.0) / q;
+        self.final_search = false;
         // 5. Reset the sparse level, restart the reverse search, re-seed the forward search —
         //    in the next iteration if the termination condition fired meanwhile (the restart
         //    queries the neighbours of the goals and the start over every new sample).

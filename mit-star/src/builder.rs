@@ -8,6 +8,7 @@ use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::components::configuration_name;
 use crate::eit::validate_query;
+use crate::guidance::{EffortInformed, Guidance};
 use crate::{
     BuildError, CheckerPart, Connection, EisExpansionForm, EisExpansionRule, Eit, Observer,
     Parameters, SamplerPart,
@@ -39,7 +40,7 @@ use crate::{
 /// assert_eq!(err.to_string(), "parameter `batch_size` is 0; it must be at least 1");
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub struct Builder<S, V, Smp, E, H = Euclidean> {
+pub struct Builder<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     space: S,
     validity: V,
     start: Vec<f64>,
@@ -52,16 +53,17 @@ pub struct Builder<S, V, Smp, E, H = Euclidean> {
     name: Option<String>,
     /// What was wrong with the problem given to [`Eit::for_problem`], reported by `build`.
     problem_error: Option<problems::ProblemError>,
+    guidance: std::marker::PhantomData<fn() -> G>,
 }
 
-impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
+impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// Starts building a planner for the query `start → goals` in `space` with `validity`.
     pub fn builder(
         space: S,
         validity: V,
         start: Vec<f64>,
         goals: Vec<Vec<f64>>,
-    ) -> Builder<S, V, Smp, E, H> {
+    ) -> Builder<S, V, Smp, E, H, G> {
         Builder {
             space,
             validity,
@@ -74,11 +76,12 @@ impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
             observer: None,
             name: None,
             problem_error: None,
+            guidance: std::marker::PhantomData,
         }
     }
 }
 
-impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
+impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
     /// [`Problem`](problems::Problem), a robot-arm problem, or your own: its space, validity
     /// checker, start, goals and resolution. [`build`](Builder::build) refuses a problem that
@@ -93,7 +96,7 @@ impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
     /// assert!(outcome.cost() >= problem.optimum().unwrap());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn for_problem<P>(problem: &P) -> Builder<S, V, Smp, E, H>
+    pub fn for_problem<P>(problem: &P) -> Builder<S, V, Smp, E, H, G>
     where
         P: PlanningProblem<Space = S, Validity = V>,
         S: Clone,
@@ -112,7 +115,7 @@ impl<S, V, Smp, E, H: Default> Eit<S, V, Smp, E, H> {
     }
 }
 
-impl<S, V, Smp, E, H> Builder<S, V, Smp, E, H> {
+impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
     /// Replaces every parameter.
     pub fn parameters(mut self, parameters: Parameters) -> Self {
         self.parameters = parameters;
@@ -197,6 +200,24 @@ impl<S, V, Smp, E, H> Builder<S, V, Smp, E, H> {
         self
     }
 
+    /// The BIT*-family inflation and truncation (ABIT*; see [`Parameters::initial_inflation`],
+    /// [`inflation_scaling`](Parameters::inflation_scaling) and
+    /// [`truncation_scaling`](Parameters::truncation_scaling)). Only the a-priori guidance
+    /// ([`APriori`](crate::APriori), BIT*) uses them.
+    pub fn inflation(mut self, initial: f64, scaling: f64, truncation_scaling: f64) -> Self {
+        self.parameters.initial_inflation = Some(initial);
+        self.parameters.inflation_scaling = Some(scaling);
+        self.parameters.truncation_scaling = Some(truncation_scaling);
+        self
+    }
+
+    /// ABIT*'s inflation and truncation wherever they are not set
+    /// ([`Parameters::abit_star`]).
+    pub fn abit_star(mut self) -> Self {
+        self.parameters = self.parameters.abit_star();
+        self
+    }
+
     /// Uses this heuristic instead of `H::default()`.
     pub fn heuristic(mut self, heuristic: H) -> Self {
         self.heuristic = heuristic;
@@ -228,13 +249,14 @@ impl<S, V, Smp, E, H> Builder<S, V, Smp, E, H> {
     }
 }
 
-impl<S, V, Smp, E, H> Builder<S, V, Smp, E, H>
+impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G>
 where
     S: StateSpace,
     V: StateValidity,
     Smp: Sampler<S, Counted<V>> + SamplerPart<S> + Clone,
     E: EdgeChecker<S, Counted<V>> + CheckerPart<S> + Clone,
     H: Heuristic<S>,
+    G: Guidance,
 {
     /// Validates the parameters and the query and builds the planner.
     ///
@@ -242,7 +264,7 @@ where
     /// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
     /// malformed query, and the parts' own errors ([`BuildError::Sampler`],
     /// [`BuildError::Validity`]).
-    pub fn build(self) -> Result<Eit<S, V, Smp, E, H>, BuildError> {
+    pub fn build(self) -> Result<Eit<S, V, Smp, E, H, G>, BuildError> {
         if let Some(error) = self.problem_error {
             return Err(BuildError::Problem(error));
         }
@@ -259,7 +281,7 @@ where
         };
         let name = self
             .name
-            .unwrap_or_else(|| configuration_name(&Smp::part_name(), E::NAME));
+            .unwrap_or_else(|| configuration_name(G::NAME, &Smp::part_name(), E::NAME));
         let mut planner = Eit::with_parts(
             self.space,
             self.validity,

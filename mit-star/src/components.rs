@@ -155,14 +155,19 @@ impl<S: StateSpace> CheckerPart<S> for DenseChecker {
 }
 
 /// The paper's name of the configuration made of these parts, or a descriptive one.
-pub(crate) fn configuration_name(sampler: &str, checker: &str) -> String {
-    match (sampler, checker) {
-        ("estimated(adaptive)", "length-adaptive") => "MIT*".into(),
-        ("informed", "fixed-sparse") => "EIT*".into(),
-        ("adaptive", "fixed-sparse") => "MIT*-AS".into(),
-        ("estimated(informed)", "fixed-sparse") => "MIT*-EIS".into(),
-        ("informed", "length-adaptive") => "MIT*-SC".into(),
-        (s, c) => format!("EIT*[{s} sampler, {c} checks]"),
+pub(crate) fn configuration_name(guidance: &str, sampler: &str, checker: &str) -> String {
+    match (guidance, sampler, checker) {
+        ("effort-informed", "estimated(adaptive)", "length-adaptive") => "MIT*".into(),
+        ("effort-informed", "informed", "fixed-sparse") => "EIT*".into(),
+        ("effort-informed", "adaptive", "fixed-sparse") => "MIT*-AS".into(),
+        ("effort-informed", "estimated(informed)", "fixed-sparse") => "MIT*-EIS".into(),
+        ("effort-informed", "informed", "length-adaptive") => "MIT*-SC".into(),
+        ("effort-informed", s, c) => format!("EIT*[{s} sampler, {c} checks]"),
+        ("cost-informed", "informed", "dense") => "AIT*".into(),
+        ("cost-informed", s, c) => format!("AIT*[{s} sampler, {c} checks]"),
+        ("a-priori", "informed", "dense") => "BIT*".into(),
+        ("a-priori", s, c) => format!("BIT*[{s} sampler, {c} checks]"),
+        (g, s, c) => format!("Eit[{g} guidance, {s} sampler, {c} checks]"),
     }
 }
 
@@ -195,17 +200,26 @@ mod tests {
             <LengthAdaptiveChecker as CheckerPart<_>>::build_part(&space, &bad),
             Err(BuildError::Validity(_))
         ));
-        assert_eq!(configuration_name("informed", "fixed-sparse"), "EIT*");
+        assert_eq!(
+            configuration_name("effort-informed", "informed", "fixed-sparse"),
+            "EIT*"
+        );
+        assert_eq!(
+            configuration_name("cost-informed", "informed", "dense"),
+            "AIT*"
+        );
+        assert_eq!(configuration_name("a-priori", "informed", "dense"), "BIT*");
         type Mit = Estimated<AdaptiveSampler>;
         assert_eq!(
             configuration_name(
+                "effort-informed",
                 &<Mit as SamplerPart<RealVectorSpace>>::part_name(),
                 "length-adaptive"
             ),
             "MIT*"
         );
         assert_eq!(
-            configuration_name("gaussian", "dense"),
+            configuration_name("effort-informed", "gaussian", "dense"),
             "EIT*[gaussian sampler, dense checks]"
         );
     }

@@ -9,13 +9,13 @@ use serde::{Deserialize, Serialize};
 use validity::StateValidity;
 
 use crate::{
-    BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters, Planner, RrtConnect,
+    AitStar, BitStar, BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters,
+    Planner, RrtConnect,
 };
 
 /// A configuration of the MIT*/EIT* family, or a comparison planner, for choosing one at run
-/// time (command lines, benchmark files). The names are `rrt-connect`, `mit-star`, `eit-star`,
-/// `mit-star-as`, `mit-star-eis` and
-/// `mit-star-sc`.
+/// time (command lines, benchmark files). The names are `mit-star`, `eit-star`, `mit-star-as`,
+/// `mit-star-eis`, `mit-star-sc`, `rrt-connect`, `bit-star`, `abit-star` and `ait-star`.
 ///
 /// ```
 /// use mit_star::Configuration;
@@ -41,17 +41,27 @@ pub enum Configuration {
     MitStarSc,
     /// RRT-Connect (Kuffner & LaValle 2000): bidirectional trees, first solution.
     RrtConnect,
+    /// BIT* (Gammell et al. 2020): the forward search alone, ordered by the a-priori heuristic.
+    BitStar,
+    /// ABIT* (Strub & Gammell 2020): BIT* with an inflated, then truncated search per batch.
+    AbitStar,
+    /// AIT* (Strub & Gammell 2020/2022): an unchecked lazy reverse search guides the forward
+    /// search.
+    AitStar,
 }
 
 impl Configuration {
     /// Every configuration, MIT* first.
-    pub const ALL: [Self; 6] = [
+    pub const ALL: [Self; 9] = [
         Self::MitStar,
         Self::EitStar,
         Self::MitStarAs,
         Self::MitStarEis,
         Self::MitStarSc,
         Self::RrtConnect,
+        Self::BitStar,
+        Self::AbitStar,
+        Self::AitStar,
     ];
 
     /// The command-line name (`mit-star`, …).
@@ -63,6 +73,9 @@ impl Configuration {
             Self::MitStarEis => "mit-star-eis",
             Self::MitStarSc => "mit-star-sc",
             Self::RrtConnect => "rrt-connect",
+            Self::BitStar => "bit-star",
+            Self::AbitStar => "abit-star",
+            Self::AitStar => "ait-star",
         }
     }
 
@@ -75,6 +88,9 @@ impl Configuration {
             Self::MitStarEis => "MIT*-EIS",
             Self::MitStarSc => "MIT*-SC",
             Self::RrtConnect => "RRT-Connect",
+            Self::BitStar => "BIT*",
+            Self::AbitStar => "ABIT*",
+            Self::AitStar => "AIT*",
         }
     }
 }
@@ -94,7 +110,8 @@ impl FromStr for Configuration {
             .find(|c| c.name() == s)
             .ok_or_else(|| BuildError::UnknownConfiguration {
                 name: s.to_string(),
-                expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, rrt-connect",
+                expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, rrt-connect, \
+                           bit-star, abit-star, ait-star",
             })
     }
 }
@@ -186,6 +203,24 @@ where
         ),
         Configuration::MitStarSc => Box::new(
             MitStarSc::<P::Space, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+        Configuration::BitStar => Box::new(
+            BitStar::<P::Space, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+        Configuration::AbitStar => Box::new(
+            BitStar::<P::Space, V>::builder(space, validity, start, goals)
+                .parameters(parameters.abit_star())
+                .name(label)
+                .build()?,
+        ),
+        Configuration::AitStar => Box::new(
+            AitStar::<P::Space, V>::builder(space, validity, start, goals)
                 .parameters(parameters)
                 .name(label)
                 .build()?,

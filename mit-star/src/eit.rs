@@ -10,6 +10,7 @@ use validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
 
 use crate::forward_queue::ForwardQueue;
 use crate::graph::RandomGeometricGraph;
+use crate::guidance::{EffortInformed, Guidance};
 use crate::reverse_queue::ReverseQueue;
 use crate::termination::SolveStop;
 use crate::vertex::{NONE, Vertex};
@@ -74,12 +75,13 @@ use crate::{
 /// assert!(solution.cost >= 0.8);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub struct Eit<S, V, Smp, E, H = Euclidean> {
+pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) space: S,
     pub(crate) validity: Counted<V>,
     pub(crate) sampler: Smp,
     pub(crate) checker: E,
     pub(crate) heuristic: H,
+    pub(crate) guidance: std::marker::PhantomData<fn() -> G>,
     pub(crate) parameters: Parameters,
     pub(crate) name: String,
     pub(crate) start: Vec<f64>,
@@ -108,6 +110,12 @@ pub struct Eit<S, V, Smp, E, H = Euclidean> {
     pub(crate) deferred: Vec<(u32, u32, bool)>,
     /// A reverse-search restart asked for after the termination condition fired.
     pub(crate) reverse_restart_pending: bool,
+    /// The a-priori guidance's current inflation `ε` of `ĥ` in the forward order (1: none).
+    pub(crate) inflation: f64,
+    /// The a-priori guidance's current truncation factor (1: none).
+    pub(crate) truncation: f64,
+    /// The current batch's search is its final, least inflated one (ABIT*).
+    pub(crate) final_search: bool,
     ready: bool,
     pub(crate) trace: Trace,
     pub(crate) counters: Counters,
@@ -119,7 +127,7 @@ pub struct Eit<S, V, Smp, E, H = Euclidean> {
     pub(crate) sample: Vec<f64>,
 }
 
-impl<S, V, Smp, E, H> std::fmt::Debug for Eit<S, V, Smp, E, H> {
+impl<S, V, Smp, E, H, G> std::fmt::Debug for Eit<S, V, Smp, E, H, G> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Eit")
             .field("name", &self.name)
@@ -130,13 +138,14 @@ impl<S, V, Smp, E, H> std::fmt::Debug for Eit<S, V, Smp, E, H> {
     }
 }
 
-impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
     S: StateSpace,
     V: StateValidity,
     Smp: Sampler<S, Counted<V>> + Clone,
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
+    G: Guidance,
 {
     /// A planner from ready-made parts. Prefer [`Eit::builder`], which builds the parts from
     /// validated [`Parameters`]; here `parameters` only sets the search's own options (batch
@@ -163,6 +172,10 @@ where
             sampler,
             checker,
             heuristic,
+            guidance: std::marker::PhantomData,
+            inflation: parameters.initial_inflation.unwrap_or(1.0),
+            truncation: 1.0,
+            final_search: false,
             parameters,
             name: String::from("EIT*-skeleton"),
             start,
@@ -317,7 +330,7 @@ where
         } else if self.continue_forward() {
             self.forward_step(stop);
         } else {
-            self.add_batch(stop);
+            self.search_exhausted(stop);
         }
     }
 
@@ -441,13 +454,14 @@ where
     Ok(())
 }
 
-impl<S, V, Smp, E, H> Planner for Eit<S, V, Smp, E, H>
+impl<S, V, Smp, E, H, G> Planner for Eit<S, V, Smp, E, H, G>
 where
     S: StateSpace,
     V: StateValidity,
     Smp: Sampler<S, Counted<V>> + Clone,
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
+    G: Guidance,
 {
     fn name(&self) -> &str {
         &self.name
@@ -489,6 +503,9 @@ where
         self.restart_pending = false;
         self.deferred.clear();
         self.reverse_restart_pending = false;
+        self.inflation = self.parameters.initial_inflation.unwrap_or(1.0);
+        self.truncation = 1.0;
+        self.final_search = false;
         self.ready = false;
         self.trace.clear();
         self.counters = Counters::default();

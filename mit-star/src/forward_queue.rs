@@ -37,6 +37,8 @@ pub(crate) enum Front {
     Greedy,
     /// `ε = 1` (a solution exists): A* on the admissible key.
     Optimal,
+    /// BIT*'s order: the least `estimated` key (`g + ĉ + ε·ĥ`, `ε` the inflation).
+    Estimated,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -265,6 +267,7 @@ impl ForwardQueue {
                     Some(lower)
                 }
             }
+            Front::Estimated => Some(estimate),
             Front::Optimal => {
                 if keys(estimate).estimated < keys(lower).lower {
                     Some(estimate)

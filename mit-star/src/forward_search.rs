@@ -10,21 +10,26 @@ use crate::RestartEvent;
 use crate::eit::Eit;
 use crate::forward_queue::{ForwardEdge, Front};
 use crate::graph::EdgeRecord;
+use crate::guidance::{Guidance, ReverseSearch};
 use crate::reverse_search::forward_keys;
 use crate::termination::SolveStop;
 use crate::vertex::NONE;
 
-impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
     S: StateSpace,
     V: StateValidity,
     Smp: Sampler<S, Counted<V>> + Clone,
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
+    G: Guidance,
 {
-    /// `ε = ∞` before the first solution, `ε = 1` after.
+    /// The front selection: BIT*'s (inflated) cost order with the a-priori guidance; else
+    /// `ε = ∞` (effort-greedy, EIT*) or A* before the first solution, A* after.
     pub(crate) fn front(&self) -> Front {
-        if self.best_cost.is_finite() {
+        if G::REVERSE == ReverseSearch::None {
+            Front::Estimated
+        } else if self.best_cost.is_finite() || !G::EFFORT_FIRST {
             Front::Optimal
         } else {
             Front::Greedy
@@ -32,14 +37,14 @@ where
     }
 
     /// Should the forward search take the next step: is there an edge whose admissible key
-    /// beats the current solution?
+    /// (times the truncation factor, 1 but for ABIT*) beats the current solution?
     pub(crate) fn continue_forward(&mut self) -> bool {
-        !self.forward.is_empty() && self.forward.min_lower() < self.best_cost
+        !self.forward.is_empty() && self.forward.min_lower() * self.truncation < self.best_cost
     }
 
     /// Queues `edge` with its current keys.
     fn queue_forward(&mut self, edge: ForwardEdge) {
-        let keys = forward_keys(&self.graph, self.reverse_tag, self.step, &edge);
+        let keys = forward_keys(&self.graph, self.key_rule(), &edge);
         let open = !self.graph.vertex(edge.target).is_closed(self.reverse_tag);
         self.forward.insert_or_update(edge, keys, open);
     }
@@ -99,7 +104,7 @@ where
         let Some((edge, _)) = self.forward.pop(front) else {
             return;
         };
-        let (u, v, tag) = (edge.source, edge.target, self.reverse_tag);
+        let (u, v) = (edge.source, edge.target);
         let target = self.graph.vertex(v);
         // A forward-tree edge (the tree persists across batches): just continue through it.
         if target.parent == u {
@@ -109,11 +114,12 @@ where
             return;
         }
         let g_u = self.graph.vertex(u).g;
-        let (g_v, h_v) = (target.g, target.h(tag));
+        let (g_v, h_v) = (target.g, self.forward_h(v));
         if g_u + edge.cost >= g_v {
             return;
         }
-        if self.best_cost.is_finite() && g_u + edge.cost + h_v >= self.best_cost {
+        if self.best_cost.is_finite() && (g_u + edge.cost + h_v) * self.truncation >= self.best_cost
+        {
             return;
         }
         let record = self.graph.edge(u, v);
@@ -260,7 +266,7 @@ where
             return;
         }
         let len = x.neighbours_len as usize;
-        let (graph, tag, step) = (&self.graph, self.reverse_tag, self.step);
+        let (graph, rule) = (&self.graph, self.key_rule());
         for i in 0..len {
             let n = graph.neighbour(d, i);
             let edge = ForwardEdge {
@@ -271,7 +277,7 @@ where
                 distance: n.distance,
             };
             self.forward
-                .update(d, n.id, forward_keys(graph, tag, step, &edge));
+                .update(d, n.id, forward_keys(graph, rule, &edge));
         }
         self.collect_tree_extras(d, len, true);
         for j in 0..self.extras.len() {
@@ -284,7 +290,7 @@ where
                 cost,
                 distance,
             };
-            let keys = forward_keys(&self.graph, self.reverse_tag, self.step, &edge);
+            let keys = forward_keys(&self.graph, self.key_rule(), &edge);
             self.forward.update(d, w, keys);
         }
     }

@@ -62,6 +62,7 @@ mod forward_queue;
 mod forward_search;
 mod forward_tree;
 mod graph;
+mod guidance;
 mod kd_tree;
 mod kd_tree_build;
 mod nearest_neighbors;
@@ -79,7 +80,9 @@ mod termination;
 mod trace;
 mod vertex;
 
-pub use aliases::{EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc};
+pub use aliases::{
+    AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc,
+};
 pub use builder::Builder;
 pub use components::{CheckerPart, SamplerPart};
 pub use configuration::{Configuration, build_planner, build_planner_with};
@@ -87,6 +90,7 @@ pub use counters::Counters;
 pub use eit::Eit;
 pub use error::{BuildError, Endpoint, PlannerError};
 pub use graph::RandomGeometricGraph;
+pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch};
 pub use kd_tree::KdTree;
 pub use nearest_neighbors::NearestNeighbors;
 pub use neighbours::Neighbours;

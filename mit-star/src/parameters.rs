@@ -121,6 +121,13 @@ impl Default for Parameters {
     }
 }
 
+/// ABIT*'s initial inflation factor (OMPL 2.0's default).
+const ABIT_INITIAL_INFLATION: f64 = 1e6;
+/// ABIT*'s inflation scaling parameter (OMPL 2.0's default).
+const ABIT_INFLATION_SCALING: f64 = 10.0;
+/// ABIT*'s truncation scaling parameter (OMPL 2.0's default).
+const ABIT_TRUNCATION_SCALING: f64 = 5.0;
+
 fn positive(name: &'static str, value: f64) -> Result<(), BuildError> {
     if value.is_finite() && value > 0.0 {
         Ok(())
@@ -148,6 +155,17 @@ impl Parameters {
         parameters.resolution = problem.resolution();
         parameters.certification = self.certification.or(Some(problem.certification()));
         Ok(parameters)
+    }
+
+    /// These parameters with ABIT*'s inflation and truncation (Strub and Gammell, ICRA 2020, as
+    /// OMPL 2.0 sets them: initial inflation 10⁶, inflation scaling 10, truncation scaling 5)
+    /// wherever they are not set: [`BitStar`](crate::BitStar) with them is ABIT*.
+    pub fn abit_star(mut self) -> Self {
+        self.initial_inflation.get_or_insert(ABIT_INITIAL_INFLATION);
+        self.inflation_scaling.get_or_insert(ABIT_INFLATION_SCALING);
+        self.truncation_scaling
+            .get_or_insert(ABIT_TRUNCATION_SCALING);
+        self
     }
 
     /// Checks every parameter.

@@ -8,22 +8,44 @@ use validity::{Counted, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, StateVa
 use crate::eit::Eit;
 use crate::forward_queue::{ForwardEdge, ForwardKeys};
 use crate::graph::{EdgeRecord, RandomGeometricGraph};
+use crate::guidance::{Guidance, ReverseSearch};
 use crate::reverse_queue::ReverseEdge;
 use crate::termination::SolveStop;
 use crate::vertex::{NO_EFFORT, NONE};
 
-/// The forward keys of `edge` under reverse search `tag` with check step `step`.
+/// Where the forward keys take the target's heuristic from.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct KeyRule {
+    /// The reverse search tagged `tag` (or, with `a_priori`, no reverse search).
+    pub(crate) tag: u32,
+    /// The full-resolution check step (sizes an edge's remaining checks).
+    pub(crate) step: f64,
+    /// Use the a-priori `ĥ` (BIT*) instead of the reverse search's values.
+    pub(crate) a_priori: bool,
+    /// Inflation `ε ≥ 1` of the a-priori `ĥ` in the `estimated` key.
+    pub(crate) inflation: f64,
+}
+
+/// The forward keys of `edge` under `rule`.
 pub(crate) fn forward_keys(
     graph: &RandomGeometricGraph,
-    tag: u32,
-    step: f64,
+    rule: KeyRule,
     edge: &ForwardEdge,
 ) -> ForwardKeys {
     let (u, v) = (graph.vertex(edge.source), graph.vertex(edge.target));
     let through = u.g + edge.cost;
     let remaining = graph
         .progress(edge.source, edge.target)
-        .remaining(&EdgeGrid::new(edge.distance, step));
+        .remaining(&EdgeGrid::new(edge.distance, rule.step));
+    if rule.a_priori {
+        let h = v.cost_to_go_bound;
+        return ForwardKeys {
+            lower: through + h,
+            estimated: through + rule.inflation * h,
+            effort: remaining,
+        };
+    }
+    let tag = rule.tag;
     ForwardKeys {
         lower: through + v.h(tag),
         estimated: through + v.h_estimate(tag),
@@ -31,13 +53,14 @@ pub(crate) fn forward_keys(
     }
 }
 
-impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
     S: StateSpace,
     V: StateValidity,
     Smp: Sampler<S, Counted<V>> + Clone,
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
+    G: Guidance,
 {
     /// `true` if a reverse-queue entry is still worth processing: its source has not been
     /// expanded again since, and it could lead to a better solution.
@@ -48,8 +71,29 @@ where
             && edge.k1() < self.best_cost
     }
 
+    /// How forward keys are computed now.
+    pub(crate) fn key_rule(&self) -> KeyRule {
+        KeyRule {
+            tag: self.reverse_tag,
+            step: self.step,
+            a_priori: G::REVERSE == ReverseSearch::None,
+            inflation: self.inflation,
+        }
+    }
+
+    /// `ĥ(v)` as the forward search uses it: the reverse search's, or the a-priori one.
+    pub(crate) fn forward_h(&self, v: u32) -> f64 {
+        let x = self.graph.vertex(v);
+        if G::REVERSE == ReverseSearch::None {
+            x.cost_to_go_bound
+        } else {
+            x.h(self.reverse_tag)
+        }
+    }
+
     /// Restarts the reverse search from the goals: every vertex's `ĥ`, `h̃` and `e` are reset
     /// (by a new tag), the reverse tree and queue cleared, and the forward queue re-keyed.
+    /// Without a reverse search (BIT*) only the forward queue is re-keyed.
     pub(crate) fn restart_reverse(&mut self, stop: &dyn Stop) {
         self.reverse_tag = self.reverse_tag.wrapping_add(1).max(1);
         self.reverse.clear();
@@ -64,8 +108,11 @@ where
             goal.h_estimate = 0.0;
             goal.effort = 0;
         }
-        let (graph, step) = (&self.graph, self.step);
-        self.forward.rebuild(|e| forward_keys(graph, tag, step, e));
+        let (graph, rule) = (&self.graph, self.key_rule());
+        self.forward.rebuild(|e| forward_keys(graph, rule, e));
+        if G::REVERSE == ReverseSearch::None {
+            return;
+        }
         for i in 0..self.goal_ids.len() {
             self.expand_reverse(self.goal_ids[i], NONE, stop);
         }
@@ -213,6 +260,8 @@ where
         let mut progress = record.map_or(EdgeProgress::UNTESTED, |r| r.progress);
         let status = match record.map(|r| r.status) {
             Some(status @ (EdgeStatus::Valid | EdgeStatus::Invalid)) => status,
+            // AIT*: the reverse search checks nothing.
+            _ if G::REVERSE == ReverseSearch::Unchecked => EdgeStatus::Unknown,
             _ => {
                 let before = progress;
                 let (a, b) = (self.graph.state(u), self.graph.state(v));
@@ -257,9 +306,9 @@ where
             effort_u.saturating_add(remaining)
         };
         target.effort = target.effort.min(through);
-        let (graph, step) = (&self.graph, self.step);
+        let (graph, rule) = (&self.graph, self.key_rule());
         self.forward
-            .update_incoming(v, |e| forward_keys(graph, tag, step, e));
+            .update_incoming(v, |e| forward_keys(graph, rule, e));
         self.expand_reverse(v, u, stop);
     }
 

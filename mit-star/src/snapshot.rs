@@ -7,6 +7,7 @@ use samplers::Sampler;
 use spaces::{StateSpace, States};
 use validity::{Counted, EdgeChecker, StateValidity};
 
+use crate::guidance::Guidance;
 use crate::vertex::NONE;
 use crate::{Eit, VertexKind};
 
@@ -49,13 +50,14 @@ pub struct Snapshot {
     pub estimated_informed_cost: Option<f64>,
 }
 
-impl<S, V, Smp, E, H> Eit<S, V, Smp, E, H>
+impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
     S: StateSpace,
     V: StateValidity,
     Smp: Sampler<S, Counted<V>> + Clone,
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
+    G: Guidance,
 {
     /// A [`Snapshot`] of the planner's graph, trees and cost bounds.
     pub fn graph_snapshot(&self) -> Snapshot {

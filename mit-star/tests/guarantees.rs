@@ -411,7 +411,7 @@ fn bad_queries_are_typed_errors_naming_the_state() {
     let (space, world) = small_world();
     let sampler = samplers::UniformSampler::new(0);
     let checker = validity::DenseChecker::from_resolution(&space, 1e-3).unwrap();
-    let mut planner = mit_star::Eit::with_parts(
+    let mut planner = mit_star::Eit::<_, _, _, _, _, mit_star::EffortInformed>::with_parts(
         space,
         world,
         vec![-0.4, 0.0],

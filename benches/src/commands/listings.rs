@@ -73,6 +73,15 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
         Configuration::RrtConnect => {
             "bidirectional trees, extensions of at most `range`, first solution (parameters: range, resolution, seed, certification)"
         }
+        Configuration::BitStar => {
+            "informed sampler, no reverse search: edges in order of g + ĉ + ĥ, full checks (parameters: batch_size, rewire_factor, pruning)"
+        }
+        Configuration::AbitStar => {
+            "BIT* with inflation and truncation (initial_inflation 1e6, inflation_scaling 10, truncation_scaling 5 unless set)"
+        }
+        Configuration::AitStar => {
+            "informed sampler, unchecked lazy reverse search as the forward search's heuristic, full forward checks"
+        }
     };
     for c in Configuration::ALL {
         say!("  {:<14} {:<12} {}", c.name(), c.label(), parts(c));

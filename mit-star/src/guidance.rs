@@ -1,0 +1,77 @@
+//! [`Guidance`]: how the forward search of the [`Eit`](crate::Eit) skeleton is led to the
+//! goals — the part that tells EIT*, AIT* and BIT* apart.
+
+/// What the reverse search from the goals does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ReverseSearch {
+    /// EIT*: a lazy search over the graph that sparse-checks every edge it uses and computes
+    /// cost-to-go bounds, estimates and the effort (state checks) to the goals.
+    SparseChecked,
+    /// AIT*: a lazy search over the graph that checks no edge (only edges the forward search
+    /// found invalid are left out) and computes cost-to-go bounds.
+    Unchecked,
+    /// BIT*: no reverse search; the forward search is guided by the a-priori heuristic `ĥ`.
+    None,
+}
+
+/// How the forward search is guided: a type parameter of [`Eit`](crate::Eit), so EIT*, AIT*
+/// and BIT* are one skeleton — one random geometric graph, one forward queue, one reverse
+/// search, one batch and pruning step — with different parts.
+///
+/// | type | reverse search | forward order before the first solution | paper |
+/// |---|---|---|---|
+/// | [`EffortInformed`] | [`SparseChecked`](ReverseSearch::SparseChecked) | least effort | EIT* (and MIT*) |
+/// | [`CostInformed`] | [`Unchecked`](ReverseSearch::Unchecked) | least cost estimate | AIT* |
+/// | [`APriori`] | [`None`](ReverseSearch::None) | least (inflated) cost estimate | BIT*, ABIT* |
+///
+/// After the first solution every guidance orders the forward queue by cost (A*); BIT*-family
+/// searches may inflate the heuristic in that order and truncate a batch's search
+/// ([`Parameters::initial_inflation`](crate::Parameters), `inflation_scaling`,
+/// `truncation_scaling`: ABIT*).
+pub trait Guidance: 'static {
+    /// Short name used in planner names (`"effort-informed"`, …).
+    const NAME: &'static str;
+    /// What the reverse search does.
+    const REVERSE: ReverseSearch;
+    /// Before the first solution, expand the edge with the least estimated effort (EIT*'s
+    /// `ε = ∞` front) rather than the least cost estimate.
+    const EFFORT_FIRST: bool;
+}
+
+/// EIT*'s guidance (Strub and Gammell, IJRR 2022), kept by MIT*: a sparse-checked reverse
+/// search supplies cost and effort heuristics; effort-greedy until the first solution.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct EffortInformed;
+
+impl Guidance for EffortInformed {
+    const NAME: &'static str = "effort-informed";
+    const REVERSE: ReverseSearch = ReverseSearch::SparseChecked;
+    const EFFORT_FIRST: bool = true;
+}
+
+/// AIT*'s guidance (Strub and Gammell, ICRA 2020 / IJRR 2022): an unchecked lazy reverse search
+/// supplies an adaptive cost-to-go heuristic; the forward search is A* on it throughout. When
+/// the forward search finds an edge of the reverse tree invalid, the reverse search restarts
+/// (OMPL's AIT* with `repair_reverse_search = false`; OMPL's default repairs it in place, which
+/// yields the same heuristic for less work).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct CostInformed;
+
+impl Guidance for CostInformed {
+    const NAME: &'static str = "cost-informed";
+    const REVERSE: ReverseSearch = ReverseSearch::Unchecked;
+    const EFFORT_FIRST: bool = false;
+}
+
+/// BIT*'s guidance (Gammell, Barfoot and Srinivasa, IJRR 2020): no reverse search; edges are
+/// ordered by `g(u) + ĉ(u,v) + ε·ĥ(v)` with the a-priori heuristic `ĥ`. With the default
+/// parameters `ε = 1` (BIT*); ABIT*'s inflation and truncation factors (Strub and Gammell, ICRA
+/// 2020) are parameters of the same planner type.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct APriori;
+
+impl Guidance for APriori {
+    const NAME: &'static str = "a-priori";
+    const REVERSE: ReverseSearch = ReverseSearch::None;
+    const EFFORT_FIRST: bool = false;
+}
