@@ -79,6 +79,12 @@ impl Configuration {
         }
     }
 
+    /// `true` for the asymptotically optimal planners (all but RRT-Connect, which returns its
+    /// first solution).
+    pub fn is_asymptotically_optimal(self) -> bool {
+        self != Self::RrtConnect
+    }
+
     /// The paper's label (`MIT*`, `EIT*`, `MIT*-AS`, …).
     pub fn label(self) -> &'static str {
         match self {

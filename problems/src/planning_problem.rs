@@ -61,8 +61,9 @@ pub trait PlanningProblem {
 
     /// How many times finer than the check step a planner should certify the edges of its
     /// solution tree (1: not at all). A problem whose contacts can fall between grid points
-    /// (an arm's spheres grazing a corner) asks for more; box worlds, whose paths are
-    /// re-validated exactly, keep 1.
+    /// (an arm's spheres grazing a corner, a segment clipping a box's corner) asks for more.
+    /// A validity checker that decides segments exactly (a box world) certifies exactly
+    /// whatever the factor (`validity::GridWalker::certify`).
     fn certification(&self) -> u32 {
         1
     }
@@ -99,6 +100,13 @@ impl PlanningProblem for Problem {
     fn check_step(&self) -> Result<f64, ProblemError> {
         Problem::check_step(self)?;
         Ok(Problem::resolution(self) * Problem::space(self).maximum_extent())
+    }
+
+    /// 2: edges joining a solution tree are certified — exactly, by the world's slab tests —
+    /// so no planner returns a path that clips a box's corner between two grid points (a
+    /// validity checker without segment tests walks a grid twice as fine instead).
+    fn certification(&self) -> u32 {
+        2
     }
 }
 

@@ -274,6 +274,11 @@ impl GridWalker {
     /// [`EdgeStatus::Unknown`] if `stop` fired first (polled as in [`advance`](Self::advance);
     /// a later call starts over). Batched checkers get [`StateValidity::batch_width`] points
     /// per call.
+    ///
+    /// A checker that decides whole segments exactly ([`StateValidity::segment_is_valid`], a
+    /// box [`World`](crate::World)) in a space whose edges are straight lines
+    /// ([`StateSpace::is_euclidean`]) certifies the edge at once, exactly, instead of on the
+    /// finer grid.
     pub fn certify<S, V>(
         &mut self,
         space: &S,
@@ -290,6 +295,16 @@ impl GridWalker {
             return EdgeStatus::Valid;
         }
         let (a, b) = canonical_ends(a, b);
+        if space.is_euclidean()
+            && let Some(valid) = validity.segment_is_valid(a, b)
+        {
+            self.counters.certifications += 1;
+            if valid {
+                return EdgeStatus::Valid;
+            }
+            self.counters.certification_failures += 1;
+            return EdgeStatus::Invalid;
+        }
         let length = space.distance(a, b);
         let coarse = EdgeGrid::new(length, self.step).intervals();
         let fine = EdgeGrid::new(length, self.step / f64::from(factor));

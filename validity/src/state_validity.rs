@@ -44,6 +44,15 @@ pub trait StateValidity {
             .chunks_exact(dimension.max(1))
             .position(|s| !self.is_valid(s))
     }
+
+    /// Decides the whole straight segment `a — b` exactly, if this checker can (`None`, the
+    /// default, when it can only test states). A box [`World`](crate::World) answers with its
+    /// slab tests, so certifying an edge ([`GridWalker::certify`](crate::GridWalker::certify))
+    /// catches a corner clipped between two grid points, whatever the step.
+    #[inline]
+    fn segment_is_valid(&self, _a: &[f64], _b: &[f64]) -> Option<bool> {
+        None
+    }
 }
 
 impl<V: StateValidity + ?Sized> StateValidity for &V {
@@ -61,6 +70,11 @@ impl<V: StateValidity + ?Sized> StateValidity for &V {
     fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
         (**self).first_invalid(states, dimension)
     }
+
+    #[inline]
+    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
+        (**self).segment_is_valid(a, b)
+    }
 }
 
 impl<V: StateValidity + ?Sized> StateValidity for Box<V> {
@@ -77,6 +91,11 @@ impl<V: StateValidity + ?Sized> StateValidity for Box<V> {
     #[inline]
     fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
         (**self).first_invalid(states, dimension)
+    }
+
+    #[inline]
+    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
+        (**self).segment_is_valid(a, b)
     }
 }
 
@@ -163,5 +182,11 @@ impl<V: StateValidity> StateValidity for Counted<V> {
         let n = states.len() / dimension.max(1);
         self.count.set(self.count.get() + n as u64);
         self.inner.first_invalid(states, dimension)
+    }
+
+    /// Not counted: a segment decision is no state check.
+    #[inline]
+    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
+        self.inner.segment_is_valid(a, b)
     }
 }

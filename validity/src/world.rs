@@ -339,6 +339,11 @@ impl StateValidity for World {
         self.in_bounds(state)
             && (!self.in_obstacle(state) || self.in_boxes(&self.anti_rows, &self.anti_tree, state))
     }
+
+    /// The exact slab tests of [`segment_verdict`](World::segment_verdict).
+    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
+        Some(self.segment_verdict(a, b).is_valid())
+    }
 }
 
 #[cfg(test)]
