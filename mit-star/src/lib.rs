@@ -73,6 +73,7 @@ mod planner;
 mod reverse_queue;
 mod reverse_search;
 mod rrt_connect;
+mod rrt_tree;
 mod snapshot;
 mod state_chunks;
 mod termination;

@@ -7,11 +7,11 @@ use spaces::{StateSpace, States, Stop};
 use validity::{Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::eit::validate_query;
-use crate::kd_tree::Alive;
+use crate::rrt_tree::{MotionCheck, ROOT, Tree, steer};
 use crate::termination::SolveStop;
 use crate::{
-    BuildError, Counters, NearestNeighbors, Neighbours, Outcome, Parameters, Planner, PlannerError,
-    Snapshot, Solution, Termination, Trace, VertexKind,
+    BuildError, Counters, Neighbours, Outcome, Parameters, Planner, PlannerError, Snapshot,
+    Solution, Termination, Trace, VertexKind,
 };
 
 /// RRT-Connect (Kuffner & LaValle, ICRA 2000): a tree from the start and a tree from the goals
@@ -22,7 +22,7 @@ use crate::{
 ///
 /// Built from the framework's parts: the space's uniform sampling through [`UniformSampler`],
 /// full edge checks through an [`EdgeChecker`] (batched for arms, certified when the problem
-/// asks), [`NearestNeighbors`] per tree (a scan with the space's metric when it is not
+/// asks), [`NearestNeighbors`](crate::NearestNeighbors) per tree (a scan with the space's metric when it is not
 /// Euclidean), the shared termination conditions, trace and counters.
 ///
 /// # Arguments
@@ -72,49 +72,6 @@ pub struct RrtConnect<S, V, E = DenseChecker> {
     neighbours: Neighbours,
     target: Vec<f64>,
     candidate: Vec<f64>,
-}
-
-/// One tree: states in contiguous storage, parent indices (`u32::MAX` for roots), and the
-/// nearest-neighbour index over its states.
-#[derive(Debug, Clone)]
-struct Tree {
-    states: States,
-    parents: Vec<u32>,
-    nn: NearestNeighbors,
-}
-
-const ROOT: u32 = u32::MAX;
-
-impl Tree {
-    fn new(dimension: usize) -> Self {
-        Self {
-            states: States::new(dimension),
-            parents: Vec::new(),
-            nn: NearestNeighbors::new(dimension),
-        }
-    }
-
-    fn add(&mut self, state: &[f64], parent: u32) -> u32 {
-        let id = self.parents.len() as u32;
-        self.states.push(state);
-        self.parents.push(parent);
-        self.nn.insert([(id, state)]);
-        id
-    }
-
-    fn state(&self, id: u32) -> &[f64] {
-        &self.states[id as usize]
-    }
-
-    /// The path from `id` up to its root, `id` first.
-    fn branch(&self, mut id: u32) -> Vec<u32> {
-        let mut ids = vec![id];
-        while self.parents[id as usize] != ROOT {
-            id = self.parents[id as usize];
-            ids.push(id);
-        }
-        ids
-    }
 }
 
 /// What one step towards a state did.
@@ -235,28 +192,10 @@ where
     /// The state of tree `t` nearest to `target`, or `None` if the stop fired mid-query.
     fn nearest(&mut self, t: usize, target: &[f64], stop: &dyn Stop) -> Option<u32> {
         self.counters.neighbour_queries += 1;
-        let tree = &mut self.trees[t];
-        if self.space.is_euclidean() {
-            let complete = tree
-                .nn
-                .nearest_alive(target, 1, &mut self.neighbours, Alive::All, stop);
-            return if complete {
-                self.neighbours.iter().next().map(|&(_, id)| id)
-            } else {
-                None
-            };
-        }
-        let mut best = (f64::INFINITY, 0);
-        for (id, state) in tree.states.iter().enumerate() {
-            if id % 4096 == 4095 && stop.should_stop() {
-                return None;
-            }
-            let d = self.space.distance(state, target);
-            if d < best.0 {
-                best = (d, id as u32);
-            }
-        }
-        Some(best.1)
+        let complete = self.trees[t].nearest(&self.space, target, 1, &mut self.neighbours, stop);
+        complete
+            .then(|| self.neighbours.iter().next().map(|&(_, id)| id))
+            .flatten()
     }
 
     /// Starts a step of tree `t` from its state nearest to `self.target` towards it: the
@@ -268,14 +207,12 @@ where
         let near = self.nearest(t, &target, stop);
         let step = near.map(|near| {
             let from = self.trees[t].state(near);
-            let distance = self.space.distance(from, &target);
-            let reached = distance <= self.range;
-            if reached {
-                self.candidate.copy_from_slice(&target);
-            } else {
-                self.space
-                    .interpolate(from, &target, self.range / distance, &mut self.candidate);
-            }
+            let reached = steer(
+                &self.space,
+                (from, &target),
+                self.range,
+                &mut self.candidate,
+            );
             if self.validity.is_valid(&self.candidate) {
                 self.pending = Some(Motion {
                     tree: t,
@@ -300,26 +237,13 @@ where
             return Step::Trapped;
         };
         let from = self.trees[motion.tree].state(motion.near);
-        let mut status = self.checker.check_full(
-            &self.space,
-            &self.validity,
-            from,
-            &self.candidate,
-            &mut motion.progress,
-            stop,
-        );
-        let factor = self.parameters.certification.unwrap_or(1);
-        if status == EdgeStatus::Valid && factor > 1 {
-            status = self.checker.certify(
-                &self.space,
-                &self.validity,
-                from,
-                &self.candidate,
-                factor,
-                stop,
-            );
-        }
-        match status {
+        let check = MotionCheck {
+            checker: &mut self.checker,
+            space: &self.space,
+            validity: &self.validity,
+            certification: self.parameters.certification.unwrap_or(1),
+        };
+        match check.run((from, &self.candidate), &mut motion.progress, stop) {
             EdgeStatus::Invalid => Step::Trapped,
             EdgeStatus::Unknown => {
                 self.pending = Some(motion);
