@@ -35,6 +35,7 @@
 //! | [`SamplerPart`], [`CheckerPart`] | how the builder makes parts from parameters |
 //! | [`Configuration`], [`build_planner`], [`build_planner_with`] | choose a configuration at run time (`Box<dyn Planner + Send>`), optionally with your own validity checker |
 //! | [`Planner`], [`Outcome`], [`Solution`] | the trait every planner implements and what `solve` returns |
+//! | [`RrtConnect`], [`InformedRrtStar`] | comparison planners from the same parts: RRT-Connect, and Informed RRT* (k-nearest RRT* with direct informed sampling and pruning) |
 //! | [`Termination`], [`TimeLimit`], [`IterationLimit`], [`CostThreshold`], [`FirstSolution`], [`TerminationExt`] | termination conditions and their `or` / `and` combinators |
 //! | [`Trace`], [`Counters`] | the anytime `(time, cost)` record and work counters |
 //! | [`Snapshot`] | a read-only copy of samples, trees and cost bounds, for pictures of runs |
@@ -62,6 +63,7 @@ mod forward_queue;
 mod forward_search;
 mod forward_tree;
 mod graph;
+mod informed_rrt_star;
 mod kd_tree;
 mod kd_tree_build;
 mod nearest_neighbors;
@@ -73,6 +75,7 @@ mod planner;
 mod reverse_queue;
 mod reverse_search;
 mod rrt_connect;
+mod rrt_star_tree;
 mod rrt_tree;
 mod snapshot;
 mod state_chunks;
@@ -88,6 +91,7 @@ pub use counters::Counters;
 pub use eit::Eit;
 pub use error::{BuildError, Endpoint, PlannerError};
 pub use graph::RandomGeometricGraph;
+pub use informed_rrt_star::InformedRrtStar;
 pub use kd_tree::KdTree;
 pub use nearest_neighbors::NearestNeighbors;
 pub use neighbours::Neighbours;

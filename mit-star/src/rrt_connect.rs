@@ -6,8 +6,7 @@ use samplers::{CostBound, Sampler, UniformSampler};
 use spaces::{StateSpace, States, Stop};
 use validity::{Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
-use crate::eit::validate_query;
-use crate::rrt_tree::{MotionCheck, ROOT, Tree, steer};
+use crate::rrt_tree::{MotionCheck, ROOT, Tree, checked_range, problem_parts, steer};
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Neighbours, Outcome, Parameters, Planner, PlannerError, Snapshot,
@@ -137,12 +136,8 @@ where
         checker: E,
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
-        parameters.validate()?;
-        validate_query(&space, &validity, &start, &goals)?;
+        let range = checked_range(&space, &validity, (&start, &goals), &parameters)?;
         let n = space.dimension();
-        let range = parameters
-            .range
-            .unwrap_or_else(|| default_range(n, space.maximum_extent()));
         let sampler = UniformSampler::new(parameters.seed);
         Ok(Self {
             initial: (sampler.clone(), checker.clone()),
@@ -406,14 +401,11 @@ where
     }
 
     fn counters(&self) -> Counters {
-        let mut c = self.counters;
-        let edges = <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker);
-        c.full_checks = edges.full_checks;
-        c.points_tested = edges.points_tested;
-        c.certifications = edges.certifications;
-        c.certification_failures = edges.certification_failures;
-        c.validity_checks = self.validity.count();
-        c.samples_drawn = <UniformSampler as Sampler<S, Counted<V>>>::counters(&self.sampler).drawn;
+        let mut c = self.counters.with_parts_work(
+            <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker),
+            self.validity.count(),
+            <UniformSampler as Sampler<S, Counted<V>>>::counters(&self.sampler).drawn,
+        );
         c.vertices = (self.trees[0].parents.len() + self.trees[1].parents.len()) as u64;
         c.edges = c.vertices.saturating_sub(1 + self.goals.len() as u64);
         c.peak_vertices = c.vertices;
@@ -499,12 +491,8 @@ where
     where
         P: problems::PlanningProblem<Space = S, Validity = V>,
     {
-        Self::new(
-            problem.space().clone(),
-            problem.validity().clone(),
-            (problem.start().to_vec(), problem.goals().to_vec()),
-            parameters.for_problem(problem)?,
-        )
+        let (space, validity, query, parameters) = problem_parts(problem, parameters)?;
+        Self::new(space, validity, query, parameters)
     }
 }
 

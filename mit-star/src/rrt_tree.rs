@@ -5,8 +5,9 @@
 use spaces::{StateSpace, States, Stop};
 use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
+use crate::eit::validate_query;
 use crate::kd_tree::Alive;
-use crate::{NearestNeighbors, Neighbours};
+use crate::{BuildError, NearestNeighbors, Neighbours, Parameters, default_range};
 
 /// The parent of a root.
 pub(crate) const ROOT: u32 = u32::MAX;
@@ -134,4 +135,48 @@ where
         }
         status
     }
+}
+
+/// What an RRT planner's `for_problem` builds from: the space, the validity checker, the query
+/// and the parameters for the problem.
+pub(crate) type ProblemParts<S, V> = (S, V, (Vec<f64>, Vec<Vec<f64>>), Parameters);
+
+/// The parts of `problem` with `parameters` for it ([`Parameters::for_problem`]: its resolution,
+/// and its certification unless `parameters` sets one).
+///
+/// # Errors
+/// [`BuildError::Problem`] if the problem refuses its check step.
+pub(crate) fn problem_parts<P>(
+    problem: &P,
+    parameters: &Parameters,
+) -> Result<ProblemParts<P::Space, P::Validity>, BuildError>
+where
+    P: problems::PlanningProblem,
+{
+    Ok((
+        problem.space().clone(),
+        problem.validity().clone(),
+        (problem.start().to_vec(), problem.goals().to_vec()),
+        parameters.for_problem(problem)?,
+    ))
+}
+
+/// Validates `parameters` and the query, and returns the range the planner steps by
+/// (`parameters.range`, else [`default_range`]).
+///
+/// # Errors
+/// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
+/// malformed query.
+pub(crate) fn checked_range<S: StateSpace, V: StateValidity>(
+    space: &S,
+    validity: &V,
+    (start, goals): (&[f64], &[Vec<f64>]),
+    parameters: &Parameters,
+) -> Result<f64, BuildError> {
+    parameters.validate()?;
+    validate_query(space, validity, start, goals)?;
+    let extent = space.maximum_extent();
+    Ok(parameters
+        .range
+        .unwrap_or_else(|| default_range(space.dimension(), extent)))
 }
