@@ -1,8 +1,6 @@
 //! [`InformedRrtStar`]: Gammell, Srinivasa and Barfoot's Informed RRT* (IROS 2014), from the
 //! framework's parts.
 
-use std::time::Duration;
-
 #[cfg(doc)]
 use samplers::CostBound;
 use samplers::{InformedSampler, Sampler};
@@ -10,12 +8,12 @@ use spaces::rand::SeedableRng;
 use spaces::{SeededRng, StateSpace, Stop};
 use validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
+use crate::rrt_core::{RrtCore, checked_range, problem_parts};
 use crate::rrt_star_tree::CostTree;
-use crate::rrt_tree::{checked_range, problem_parts};
 use crate::termination::SolveStop;
 use crate::{
-    BuildError, Counters, Neighbours, Outcome, Parameters, Planner, PlannerError, Snapshot,
-    Solution, Termination, Trace, VertexKind,
+    BuildError, Counters, Outcome, Parameters, Planner, PlannerError, Snapshot, Termination, Trace,
+    VertexKind,
 };
 
 #[path = "informed_rrt_star_iteration.rs"]
@@ -95,17 +93,11 @@ const COIN_STREAM: u64 = 0x9E37_79B9_7F4A_7C15;
 /// ```
 #[derive(Debug, Clone)]
 pub struct InformedRrtStar<S, V, Smp = InformedSampler, E = DenseChecker> {
-    space: S,
-    validity: Counted<V>,
-    sampler: Smp,
-    checker: E,
-    initial: (Smp, E),
+    /// The query, parts, parameters, solution and records; its `candidate` is the state being
+    /// added (`range` at most from its nearest vertex towards the state drawn, `target`).
+    core: RrtCore<S, V, Smp, E>,
+    /// The goal-bias coin.
     coin: SeededRng,
-    parameters: Parameters,
-    range: f64,
-    name: String,
-    start: Vec<f64>,
-    goals: Vec<Vec<f64>>,
     tree: CostTree,
     /// The vertex of each goal in the tree, if it is there.
     goal_vertices: Vec<Option<u32>>,
@@ -116,18 +108,9 @@ pub struct InformedRrtStar<S, V, Smp = InformedSampler, E = DenseChecker> {
     phase: Phase,
     /// The neighbourhood of the state being added, cheapest first.
     candidates: Vec<Candidate>,
-    solution: Option<Solution>,
     /// The best cost at the last prune (∞: never pruned).
     pruned_cost: f64,
-    trace: Trace,
-    counters: Counters,
     peak_vertices: usize,
-    elapsed: Duration,
-    neighbours: Neighbours,
-    /// The state drawn.
-    target: Vec<f64>,
-    /// The state being added (`range` at most from its nearest vertex towards `target`).
-    state: Vec<f64>,
 }
 
 impl<S, V, Smp, E> InformedRrtStar<S, V, Smp, E>
@@ -146,51 +129,36 @@ where
     pub fn with_parts(
         space: S,
         validity: V,
-        (start, goals): (Vec<f64>, Vec<Vec<f64>>),
+        query: (Vec<f64>, Vec<Vec<f64>>),
         sampler: Smp,
         checker: E,
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
-        let range = checked_range(&space, &validity, (&start, &goals), &parameters)?;
-        let n = space.dimension();
+        let coin = SeededRng::seed_from_u64(parameters.seed ^ COIN_STREAM);
+        let parts = (sampler, checker);
+        let core = RrtCore::new(space, validity, query, parts, parameters, "Informed RRT*")?;
         Ok(Self {
-            initial: (sampler.clone(), checker.clone()),
-            sampler,
-            checker,
-            coin: SeededRng::seed_from_u64(parameters.seed ^ COIN_STREAM),
-            validity: Counted::new(validity),
-            range,
-            name: "Informed RRT*".into(),
-            tree: CostTree::new(&start),
-            goal_vertices: vec![None; goals.len()],
+            coin,
+            tree: CostTree::new(&core.start),
+            goal_vertices: vec![None; core.goals.len()],
             next_goal: 0,
             best_goal: None,
             phase: Phase::Sample,
             candidates: Vec::new(),
-            solution: None,
             pruned_cost: f64::INFINITY,
-            trace: Trace::default(),
-            counters: Counters::default(),
             peak_vertices: 1,
-            elapsed: Duration::ZERO,
-            neighbours: Neighbours::new(),
-            target: vec![0.0; n],
-            state: vec![0.0; n],
-            space,
-            parameters,
-            start,
-            goals,
+            core,
         })
     }
 
     /// The maximum length of one extension.
     pub fn range(&self) -> f64 {
-        self.range
+        self.core.range
     }
 
     /// Sets the name reports print (default `Informed RRT*`).
     pub fn set_name(&mut self, name: impl Into<String>) {
-        self.name = name.into();
+        self.core.name = name.into();
     }
 }
 
@@ -202,7 +170,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
 {
     fn name(&self) -> &str {
-        &self.name
+        &self.core.name
     }
 
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
@@ -215,46 +183,32 @@ where
             }
             iterations += 1;
         }
-        self.elapsed += stop.elapsed();
-        Ok(match &self.solution {
-            Some(solution) => Outcome::Solved(solution.clone()),
-            None => Outcome::NoSolution,
-        })
+        Ok(self.core.finish(&stop))
     }
 
     fn clear(&mut self) {
-        self.sampler = self.initial.0.clone();
-        self.checker = self.initial.1.clone();
-        self.coin = SeededRng::seed_from_u64(self.parameters.seed ^ COIN_STREAM);
-        self.validity.reset();
-        self.tree = CostTree::new(&self.start);
+        self.core.clear();
+        self.coin = SeededRng::seed_from_u64(self.core.parameters.seed ^ COIN_STREAM);
+        self.tree = CostTree::new(&self.core.start);
         self.goal_vertices.fill(None);
         self.next_goal = 0;
         self.best_goal = None;
         self.phase = Phase::Sample;
         self.candidates.clear();
-        self.solution = None;
         self.pruned_cost = f64::INFINITY;
-        self.trace.clear();
-        self.counters = Counters::default();
         self.peak_vertices = 1;
-        self.elapsed = Duration::ZERO;
     }
 
     fn best_cost(&self) -> f64 {
-        self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)
+        self.core.best_cost()
     }
 
     fn trace(&self) -> &Trace {
-        &self.trace
+        &self.core.trace
     }
 
     fn counters(&self) -> Counters {
-        let mut c = self.counters.with_parts_work(
-            <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker),
-            self.validity.count(),
-            self.sampler.counters().drawn,
-        );
+        let mut c = self.core.counters();
         c.vertices = self.tree.len() as u64;
         c.edges = c.vertices - 1;
         c.peak_vertices = self.peak_vertices as u64;
@@ -263,19 +217,12 @@ where
     }
 
     fn settings(&self) -> Vec<(String, String)> {
-        let p = &self.parameters;
-        vec![
-            ("range".into(), self.range.to_string()),
-            ("goal_bias".into(), p.goal_bias.to_string()),
-            ("rrt_rewire_factor".into(), p.rrt_rewire_factor.to_string()),
-            ("pruning".into(), p.pruning.to_string()),
-            ("resolution".into(), p.resolution.to_string()),
-            ("seed".into(), p.seed.to_string()),
-            (
-                "certification".into(),
-                p.certification.unwrap_or(1).to_string(),
-            ),
-        ]
+        let p = &self.core.parameters;
+        self.core.settings(vec![
+            ("goal_bias", p.goal_bias.to_string()),
+            ("rrt_rewire_factor", p.rrt_rewire_factor.to_string()),
+            ("pruning", p.pruning.to_string()),
+        ])
     }
 
     fn snapshot(&self) -> Option<Snapshot> {

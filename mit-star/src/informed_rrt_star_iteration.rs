@@ -8,9 +8,9 @@ use spaces::{StateSpace, States, Stop};
 use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use super::{InformedRrtStar, PRUNE_THRESHOLD};
-use crate::rrt_tree::{MotionCheck, steer};
+use crate::rrt_tree::steer;
 use crate::termination::SolveStop;
-use crate::{Planner, Solution, k_nearest};
+use crate::{Planner, k_nearest};
 
 /// What is known of a candidate's edge to the new state.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -72,22 +72,17 @@ where
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus {
-        let check = MotionCheck {
-            checker: &mut self.checker,
-            space: &self.space,
-            validity: &self.validity,
-            certification: self.parameters.certification.unwrap_or(1),
-        };
-        check.run((self.tree.state(vertex), &self.state), progress, stop)
+        let from = self.tree.state(vertex);
+        self.core.check_to_candidate(from, progress, stop)
     }
 
     /// With probability `goal_bias`, the next goal not yet in the tree (none once all are).
     fn goal_target(&mut self) -> Option<usize> {
-        let n = self.goals.len();
+        let n = self.core.goals.len();
         let g = (0..n)
             .map(|i| (self.next_goal + i) % n)
             .find(|&g| self.goal_vertices[g].is_none())?;
-        if self.coin.random::<f64>() >= self.parameters.goal_bias {
+        if self.coin.random::<f64>() >= self.core.parameters.goal_bias {
             return None;
         }
         self.next_goal = (g + 1) % n;
@@ -100,30 +95,37 @@ where
     fn draw(&mut self, stop: &dyn Stop) -> Result<bool, SampleError> {
         let goal = self.goal_target();
         if let Some(g) = goal {
-            self.target.copy_from_slice(&self.goals[g]);
+            self.core.target.copy_from_slice(&self.core.goals[g]);
         } else {
             let bound = self
+                .core
                 .solution
                 .as_ref()
                 .map_or(CostBound::Unbounded, |s| CostBound::Solution(s.cost));
-            let drawn =
-                self.sampler
-                    .sample(&self.space, &self.validity, bound, stop, &mut self.target);
+            let drawn = self.core.sampler.sample(
+                &self.core.space,
+                &self.core.validity,
+                bound,
+                stop,
+                &mut self.core.target,
+            );
             match drawn {
                 Ok(()) => {}
                 Err(SampleError::Stopped) => return Ok(false),
                 Err(error) => return Err(error),
             }
         }
-        self.counters.neighbour_queries += 1;
-        if !self
-            .tree
-            .search()
-            .nearest(&self.space, &self.target, 1, &mut self.neighbours, stop)
-        {
+        self.core.counters.neighbour_queries += 1;
+        if !self.tree.search().nearest(
+            &self.core.space,
+            &self.core.target,
+            1,
+            &mut self.core.neighbours,
+            stop,
+        ) {
             return Ok(false);
         }
-        let Some(&(distance, near)) = self.neighbours.iter().next() else {
+        let Some(&(distance, near)) = self.core.neighbours.iter().next() else {
             return Ok(false);
         };
         if distance == 0.0 {
@@ -131,12 +133,12 @@ where
         }
         let from = self.tree.state(near);
         let reached = steer(
-            &self.space,
-            (from, &self.target),
-            self.range,
-            &mut self.state,
+            &self.core.space,
+            (from, &self.core.target),
+            self.core.range,
+            &mut self.core.candidate,
         );
-        if !self.validity.is_valid(&self.state) {
+        if !self.core.validity.is_valid(&self.core.candidate) {
             return Ok(false);
         }
         let goal = goal.filter(|_| reached);
@@ -152,21 +154,29 @@ where
     /// The neighbours of the new state closer than the range (and `near`), cheapest first;
     /// `false` if the stop interrupted the query.
     fn find_neighbourhood(&mut self, near: u32, stop: &dyn Stop) -> bool {
-        let (n, eta) = (self.space.dimension(), self.parameters.rrt_rewire_factor);
+        let (n, eta) = (
+            self.core.space.dimension(),
+            self.core.parameters.rrt_rewire_factor,
+        );
         let k = k_nearest(self.tree.len() + 1, n, eta);
-        self.counters.neighbour_queries += 1;
-        if !self
-            .tree
-            .search()
-            .nearest(&self.space, &self.state, k, &mut self.neighbours, stop)
-        {
+        self.core.counters.neighbour_queries += 1;
+        if !self.tree.search().nearest(
+            &self.core.space,
+            &self.core.candidate,
+            k,
+            &mut self.core.neighbours,
+            stop,
+        ) {
             return false;
         }
         self.candidates.clear();
-        for &(_, id) in self.neighbours.iter() {
-            let distance = self.space.distance(self.tree.state(id), &self.state);
+        for &(_, id) in self.core.neighbours.iter() {
+            let distance = self
+                .core
+                .space
+                .distance(self.tree.state(id), &self.core.candidate);
             // OMPL's k-nearest RRT* connects only neighbours closer than the range.
-            if id == near || distance < self.range {
+            if id == near || distance < self.core.range {
                 let cost = self.tree.cost(id) + distance;
                 let known = Known::Unchecked;
                 self.candidates.push(Candidate {
@@ -192,7 +202,10 @@ where
         mut progress: EdgeProgress,
         stop: &dyn Stop,
     ) -> Option<u32> {
-        let near_edge = self.space.distance(self.tree.state(near), &self.state);
+        let near_edge = self
+            .core
+            .space
+            .distance(self.tree.state(near), &self.core.candidate);
         let through_near = self.tree.cost(near) + near_edge;
         let (parent, edge) = loop {
             let Some(&c) = self.candidates.get(next) else {
@@ -222,11 +235,11 @@ where
         if let Some(c) = self.candidates.iter_mut().find(|c| c.id == parent) {
             c.known = Known::Valid;
         }
-        let new = self.tree.add(&self.state, parent, edge);
+        let new = self.tree.add(&self.core.candidate, parent, edge);
         if let Some(g) = goal {
             self.goal_vertices[g] = Some(new);
         }
-        self.counters.samples += 1;
+        self.core.counters.samples += 1;
         self.peak_vertices = self.peak_vertices.max(self.tree.len());
         Some(new)
     }
@@ -291,21 +304,12 @@ where
         if self.best_goal.is_some_and(|(_, c)| cost_to_come >= c) {
             return;
         }
-        let mut path = States::new(self.space.dimension());
+        let mut path = States::new(self.core.space.dimension());
         for &id in tree.branch(goal).iter().rev() {
             path.push(tree.state(id));
         }
-        let cost = path
-            .iter()
-            .zip(path.iter().skip(1))
-            .map(|(x, y)| self.space.distance(x, y))
-            .sum();
         self.best_goal = Some((goal, cost_to_come));
-        if cost < self.best_cost() {
-            let time = (self.elapsed + stop.elapsed()).as_secs_f64();
-            self.trace.push(time, cost);
-            self.solution = Some(Solution { path, cost });
-        }
+        self.core.record(path, stop);
     }
 
     /// OMPL's `pruneTree`, once the best cost improved by more than 5 % since the last prune
@@ -314,10 +318,10 @@ where
         let best = self.best_cost();
         let pruned = self.pruned_cost;
         let improved = !pruned.is_finite() || (pruned - best).abs() / pruned > PRUNE_THRESHOLD;
-        if !self.parameters.pruning || !best.is_finite() || !improved {
+        if !self.core.parameters.pruning || !best.is_finite() || !improved {
             return;
         }
-        let (space, start, goals) = (&self.space, &self.start, &self.goals);
+        let (space, start, goals) = (&self.core.space, &self.core.start, &self.core.goals);
         let best_goal = self.best_goal.map(|(id, _)| id);
         let keep = |id: u32, x: &[f64]| {
             let to_goal = goals
@@ -330,7 +334,7 @@ where
         let Some(renumbered) = self.tree.prune(keep, stop) else {
             return;
         };
-        self.counters.pruned += (before - self.tree.len()) as u64;
+        self.core.counters.pruned += (before - self.tree.len()) as u64;
         for vertex in &mut self.goal_vertices {
             *vertex = vertex.and_then(|id| renumbered[id as usize]);
         }
@@ -346,7 +350,7 @@ where
         loop {
             match self.phase {
                 Phase::Sample => {
-                    self.counters.iterations += 1;
+                    self.core.counters.iterations += 1;
                     match self.draw(stop) {
                         Ok(true) => {}
                         Ok(false) => return true,

@@ -1,7 +1,9 @@
 //! Tests of [`InformedRrtStar`](super::InformedRrtStar).
 
+use std::time::Duration;
+
 use super::*;
-use crate::{FirstSolution, IterationLimit, TerminationExt, TimeLimit};
+use crate::{FirstSolution, IterationLimit, Solution, TerminationExt, TimeLimit};
 
 /// Every edge of the path valid in the world, the path from the start to a goal, its cost the
 /// sum of its edges.

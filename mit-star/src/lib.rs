@@ -75,6 +75,7 @@ mod planner;
 mod reverse_queue;
 mod reverse_search;
 mod rrt_connect;
+mod rrt_core;
 mod rrt_star_tree;
 mod rrt_tree;
 mod snapshot;

@@ -1,13 +1,11 @@
 //! The pieces the RRT family shares ([`RrtConnect`](crate::RrtConnect),
 //! [`InformedRrtStar`](crate::InformedRrtStar)): a tree of states with its nearest-neighbour
-//! index, steering by at most a range, and the full (optionally certified) motion check.
+//! index, and steering by at most a range.
 
 use spaces::{StateSpace, States, Stop};
-use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
-use crate::eit::validate_query;
 use crate::kd_tree::Alive;
-use crate::{BuildError, NearestNeighbors, Neighbours, Parameters, default_range};
+use crate::{NearestNeighbors, Neighbours};
 
 /// The parent of a root.
 pub(crate) const ROOT: u32 = u32::MAX;
@@ -94,89 +92,4 @@ pub(crate) fn steer<S: StateSpace>(
         space.interpolate(from, target, range / distance, out);
     }
     reached
-}
-
-/// The edge checks of one planner: its checker, and the certification factor it applies (1:
-/// none).
-pub(crate) struct MotionCheck<'a, S, V, E> {
-    pub(crate) checker: &'a mut E,
-    pub(crate) space: &'a S,
-    pub(crate) validity: &'a Counted<V>,
-    pub(crate) certification: u32,
-}
-
-impl<S, V, E> MotionCheck<'_, S, V, E>
-where
-    S: StateSpace,
-    V: StateValidity,
-    E: EdgeChecker<S, Counted<V>>,
-{
-    /// Checks the motion `from → to` at full resolution (every grid point not yet tested, then
-    /// the certification grid when the factor is above 1). `Unknown` if the stop fired first:
-    /// `progress` keeps what was tested and the next call resumes.
-    pub(crate) fn run(
-        self,
-        (from, to): (&[f64], &[f64]),
-        progress: &mut EdgeProgress,
-        stop: &dyn Stop,
-    ) -> EdgeStatus {
-        let status = self
-            .checker
-            .check_full(self.space, self.validity, from, to, progress, stop);
-        if status == EdgeStatus::Valid && self.certification > 1 {
-            return self.checker.certify(
-                self.space,
-                self.validity,
-                from,
-                to,
-                self.certification,
-                stop,
-            );
-        }
-        status
-    }
-}
-
-/// What an RRT planner's `for_problem` builds from: the space, the validity checker, the query
-/// and the parameters for the problem.
-pub(crate) type ProblemParts<S, V> = (S, V, (Vec<f64>, Vec<Vec<f64>>), Parameters);
-
-/// The parts of `problem` with `parameters` for it ([`Parameters::for_problem`]: its resolution,
-/// and its certification unless `parameters` sets one).
-///
-/// # Errors
-/// [`BuildError::Problem`] if the problem refuses its check step.
-pub(crate) fn problem_parts<P>(
-    problem: &P,
-    parameters: &Parameters,
-) -> Result<ProblemParts<P::Space, P::Validity>, BuildError>
-where
-    P: problems::PlanningProblem,
-{
-    Ok((
-        problem.space().clone(),
-        problem.validity().clone(),
-        (problem.start().to_vec(), problem.goals().to_vec()),
-        parameters.for_problem(problem)?,
-    ))
-}
-
-/// Validates `parameters` and the query, and returns the range the planner steps by
-/// (`parameters.range`, else [`default_range`]).
-///
-/// # Errors
-/// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
-/// malformed query.
-pub(crate) fn checked_range<S: StateSpace, V: StateValidity>(
-    space: &S,
-    validity: &V,
-    (start, goals): (&[f64], &[Vec<f64>]),
-    parameters: &Parameters,
-) -> Result<f64, BuildError> {
-    parameters.validate()?;
-    validate_query(space, validity, start, goals)?;
-    let extent = space.maximum_extent();
-    Ok(parameters
-        .range
-        .unwrap_or_else(|| default_range(space.dimension(), extent)))
 }
