@@ -56,15 +56,18 @@ const COIN_STREAM: u64 = 0x9E37_79B9_7F4A_7C15;
 /// through the nearest vertex is never checked as a parent (OMPL checks it when the nearest
 /// vertex is not among the neighbours, and may then pick a dearer parent); (2) goal-biased
 /// draws cycle through the goals not yet in the tree (OMPL cycles through every goal while
-/// fewer goal vertices than goals exist); (3) solutions are exact only (no approximate
-/// solution); (4) edges are fully checked at the problem's resolution and certified on a finer
-/// grid when the problem asks, and a check the termination condition interrupts resumes at the
-/// next `solve` with its progress.
+/// fewer goal vertices than goals exist); (3) rewiring visits the neighbours cheapest first,
+/// not nearest first; (4) solutions are exact only (no approximate solution); (5) edges are
+/// fully checked at the problem's resolution and certified on a finer grid when the problem
+/// asks, and whatever the termination condition interrupts (an edge check with its progress,
+/// a neighbour query, a cost propagation) resumes at the next `solve`; a prune it interrupts is
+/// abandoned and retried after the next iteration; (6) `k` is
+/// [`k_nearest`](crate::k_nearest)'s, whose `e · (1 + 1/n)` is not truncated.
 ///
 /// # Arguments
 /// A query (space, validity checker, start, goals), a [`Sampler`] (by default
 /// [`InformedSampler`], direct informed sampling), an [`EdgeChecker`] (by default
-/// [`DenseChecker`]) and [`Parameters`]: `range` (`None`: [`default_range`]), `goal_bias`,
+/// [`DenseChecker`]) and [`Parameters`]: `range` (`None`: [`default_range`](crate::default_range)), `goal_bias`,
 /// `rrt_rewire_factor`, `pruning`, `resolution`, `seed`, `certification`.
 ///
 /// # Returns
