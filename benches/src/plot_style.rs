@@ -67,12 +67,13 @@ fn configuration_colour(c: Configuration) -> RGBColor {
         Configuration::BitStar => RGBColor(140, 86, 75),
         Configuration::AbitStar => RGBColor(227, 119, 194),
         Configuration::AitStar => RGBColor(188, 189, 34),
+        Configuration::InformedRrtStar => RGBColor(127, 127, 127),
     }
 }
 
 /// Colours for further planners of an already coloured configuration.
 const EXTRA: [RGBColor; 5] = [
-    RGBColor(127, 127, 127),
+    RGBColor(82, 84, 163),
     RGBColor(0, 0, 0),
     RGBColor(57, 59, 121),
     RGBColor(140, 109, 49),
@@ -81,7 +82,7 @@ const EXTRA: [RGBColor; 5] = [
 
 /// One colour per planner, in experiment order: the first planner of each configuration gets
 /// that configuration's fixed colour (MIT* red, EIT* blue, MIT*-AS green, MIT*-EIS purple,
-/// MIT*-SC orange, RRT-Connect cyan, BIT* brown, ABIT* pink, AIT* olive); further planners of the same configuration get distinct extra colours.
+/// MIT*-SC orange, RRT-Connect cyan, BIT* brown, ABIT* pink, AIT* olive, Informed RRT* grey); further planners of the same configuration get distinct extra colours.
 ///
 /// ```
 /// use mit_star_benches::{planner_colours, ParameterOverrides, PlannerSpec};

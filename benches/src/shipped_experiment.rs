@@ -8,7 +8,7 @@ use crate::HarnessError;
 /// ```
 /// use mit_star_benches::ShippedExperiment;
 /// let names: Vec<&str> = ShippedExperiment::all().iter().map(|e| e.name).collect();
-/// assert_eq!(names, ["paper-table", "ablation", "smoke", "panda-mbm"]);
+/// assert_eq!(names, ["paper-table", "ablation", "smoke", "panda-mbm", "paper-planners"]);
 /// assert!(ShippedExperiment::find("smoke")?.text.contains("[[problems]]"));
 /// # Ok::<(), mit_star_benches::HarnessError>(())
 /// ```
@@ -24,7 +24,7 @@ pub struct ShippedExperiment {
     pub data: Option<&'static str>,
 }
 
-static SHIPPED: [ShippedExperiment; 4] = [
+static SHIPPED: [ShippedExperiment; 5] = [
     ShippedExperiment {
         name: "paper-table",
         summary: "the paper's Table I: MIT* vs EIT* on FG, RR (10 layouts), DW and GE, the paper's budgets, 100 runs",
@@ -45,11 +45,17 @@ static SHIPPED: [ShippedExperiment; 4] = [
     },
     ShippedExperiment {
         name: "panda-mbm",
-        summary: "the Franka Panda in MotionBenchMaker's five scenes × 100 problems: MIT*, EIT* and RRT-Connect, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 10 minutes on 2 cores)",
+        summary: "the Franka Panda in MotionBenchMaker's five scenes × 100 problems: MIT*, EIT*, BIT* and RRT-Connect, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 14 minutes on 2 cores)",
         text: include_str!("../experiments/panda-mbm.toml"),
         data: Some(
             "MotionBenchMaker scene folders in target/: `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`",
         ),
+    },
+    ShippedExperiment {
+        name: "paper-planners",
+        summary: "the paper's planner comparison: MIT*, EIT*, AIT*, BIT*, ABIT*, Informed RRT*, RRT-Connect on FG, DW, GE (R^4, R^8) and GE R^2, the paper's budgets, 100 runs (about 20 minutes on 2 cores)",
+        text: include_str!("../experiments/paper-planners.toml"),
+        data: None,
     },
 ];
 

@@ -9,13 +9,14 @@ use serde::{Deserialize, Serialize};
 use validity::StateValidity;
 
 use crate::{
-    AitStar, BitStar, BuildError, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, Parameters,
-    Planner, RrtConnect,
+    AitStar, BitStar, BuildError, EitStar, InformedRrtStar, MitStar, MitStarAs, MitStarEis,
+    MitStarSc, Parameters, Planner, RrtConnect,
 };
 
 /// A configuration of the MIT*/EIT* family, or a comparison planner, for choosing one at run
 /// time (command lines, benchmark files). The names are `mit-star`, `eit-star`, `mit-star-as`,
-/// `mit-star-eis`, `mit-star-sc`, `rrt-connect`, `bit-star`, `abit-star` and `ait-star`.
+/// `mit-star-eis`, `mit-star-sc`, `rrt-connect`, `bit-star`, `abit-star`, `ait-star` and
+/// `informed-rrt-star`.
 ///
 /// ```
 /// use mit_star::Configuration;
@@ -48,11 +49,14 @@ pub enum Configuration {
     /// AIT* (Strub & Gammell 2020/2022): an unchecked lazy reverse search guides the forward
     /// search.
     AitStar,
+    /// Informed RRT* (Gammell et al. 2014): RRT* with k-nearest rewiring, goal bias, direct
+    /// informed sampling and pruning.
+    InformedRrtStar,
 }
 
 impl Configuration {
     /// Every configuration, MIT* first.
-    pub const ALL: [Self; 9] = [
+    pub const ALL: [Self; 10] = [
         Self::MitStar,
         Self::EitStar,
         Self::MitStarAs,
@@ -62,6 +66,7 @@ impl Configuration {
         Self::BitStar,
         Self::AbitStar,
         Self::AitStar,
+        Self::InformedRrtStar,
     ];
 
     /// The command-line name (`mit-star`, …).
@@ -76,6 +81,7 @@ impl Configuration {
             Self::BitStar => "bit-star",
             Self::AbitStar => "abit-star",
             Self::AitStar => "ait-star",
+            Self::InformedRrtStar => "informed-rrt-star",
         }
     }
 
@@ -97,6 +103,7 @@ impl Configuration {
             Self::BitStar => "BIT*",
             Self::AbitStar => "ABIT*",
             Self::AitStar => "AIT*",
+            Self::InformedRrtStar => "Informed RRT*",
         }
     }
 }
@@ -117,7 +124,7 @@ impl FromStr for Configuration {
             .ok_or_else(|| BuildError::UnknownConfiguration {
                 name: s.to_string(),
                 expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, rrt-connect, \
-                           bit-star, abit-star, ait-star",
+                           bit-star, abit-star, ait-star, informed-rrt-star",
             })
     }
 }
@@ -233,6 +240,11 @@ where
         ),
         Configuration::RrtConnect => {
             let mut planner = RrtConnect::new(space, validity, (start, goals), parameters)?;
+            planner.set_name(label);
+            Box::new(planner)
+        }
+        Configuration::InformedRrtStar => {
+            let mut planner = InformedRrtStar::new(space, validity, (start, goals), parameters)?;
             planner.set_name(label);
             Box::new(planner)
         }

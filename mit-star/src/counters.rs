@@ -46,3 +46,23 @@ pub struct Counters {
     /// Most stored edges the graph held at once.
     pub peak_edges: u64,
 }
+
+impl Counters {
+    /// These counters with the work the parts counted themselves: the edge checker's checks
+    /// and certifications, the validity checker's state checks and the sampler's draws.
+    pub(crate) fn with_parts(
+        mut self,
+        edges: validity::EdgeCounters,
+        validity_checks: u64,
+        samples_drawn: u64,
+    ) -> Self {
+        self.sparse_checks = edges.sparse_checks;
+        self.full_checks = edges.full_checks;
+        self.points_tested = edges.points_tested;
+        self.certifications = edges.certifications;
+        self.certification_failures = edges.certification_failures;
+        self.validity_checks = validity_checks;
+        self.samples_drawn = samples_drawn;
+        self
+    }
+}

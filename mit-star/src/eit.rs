@@ -521,15 +521,11 @@ where
     }
 
     fn counters(&self) -> Counters {
-        let mut c = self.counters;
-        let edges = <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker);
-        c.sparse_checks = edges.sparse_checks;
-        c.full_checks = edges.full_checks;
-        c.points_tested = edges.points_tested;
-        c.certifications = edges.certifications;
-        c.certification_failures = edges.certification_failures;
-        c.validity_checks = self.validity.count();
-        c.samples_drawn = self.sampler.counters().drawn;
+        let mut c = self.counters.with_parts(
+            <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker),
+            self.validity.count(),
+            self.sampler.counters().drawn,
+        );
         c.neighbour_queries = self.graph.neighbour_queries();
         c.vertices = self.graph.vertex_count() as u64;
         c.edges = self.graph.edge_count() as u64;

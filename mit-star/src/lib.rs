@@ -31,10 +31,13 @@
 //! |---|---|
 //! | [`Eit`] | the planner, generic over space, validity, sampler, edge checker and heuristic |
 //! | [`MitStar`], [`EitStar`], [`MitStarAs`], [`MitStarEis`], [`MitStarSc`] | the paper's configurations (spec §8) as type aliases |
+//! | [`AitStar`], [`BitStar`] (and ABIT* as `BitStar` with [`Builder::abit_star`]), [`AitStarEis`] | the paper's comparison planners of the same skeleton, and a composition not in the paper |
+//! | [`Guidance`]: [`EffortInformed`], [`CostInformed`], [`APriori`]; [`ReverseSearch`] | how the skeleton's forward search is guided (EIT*, AIT*, BIT*) |
 //! | [`Builder`], [`Parameters`], [`Connection`], [`EisExpansionForm`], [`EisExpansionRule`] | validated construction and every parameter with its default |
 //! | [`SamplerPart`], [`CheckerPart`] | how the builder makes parts from parameters |
 //! | [`Configuration`], [`build_planner`], [`build_planner_with`] | choose a configuration at run time (`Box<dyn Planner + Send>`), optionally with your own validity checker |
 //! | [`Planner`], [`Outcome`], [`Solution`] | the trait every planner implements and what `solve` returns |
+//! | [`RrtConnect`], [`InformedRrtStar`] | comparison planners from the same parts: RRT-Connect, and Informed RRT* (k-nearest RRT* with direct informed sampling and pruning) |
 //! | [`Termination`], [`TimeLimit`], [`IterationLimit`], [`CostThreshold`], [`FirstSolution`], [`TerminationExt`] | termination conditions and their `or` / `and` combinators |
 //! | [`Trace`], [`Counters`] | the anytime `(time, cost)` record and work counters |
 //! | [`Snapshot`] | a read-only copy of samples, trees and cost bounds, for pictures of runs |
@@ -63,6 +66,7 @@ mod forward_search;
 mod forward_tree;
 mod graph;
 mod guidance;
+mod informed_rrt_star;
 mod kd_tree;
 mod kd_tree_build;
 mod nearest_neighbors;
@@ -74,6 +78,9 @@ mod planner;
 mod reverse_queue;
 mod reverse_search;
 mod rrt_connect;
+mod rrt_core;
+mod rrt_star_tree;
+mod rrt_tree;
 mod snapshot;
 mod state_chunks;
 mod termination;
@@ -91,6 +98,7 @@ pub use eit::Eit;
 pub use error::{BuildError, Endpoint, PlannerError};
 pub use graph::RandomGeometricGraph;
 pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch};
+pub use informed_rrt_star::InformedRrtStar;
 pub use kd_tree::KdTree;
 pub use nearest_neighbors::NearestNeighbors;
 pub use neighbours::Neighbours;

@@ -1,17 +1,15 @@
 //! [`RrtConnect`]: Kuffner and LaValle's bidirectional RRT (2000), from the framework's parts.
 
-use std::time::Duration;
-
 use samplers::{CostBound, Sampler, UniformSampler};
 use spaces::{StateSpace, States, Stop};
 use validity::{Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
-use crate::eit::validate_query;
-use crate::kd_tree::Alive;
+use crate::rrt_core::{RrtCore, problem_parts};
+use crate::rrt_tree::{ROOT, Tree, steer};
 use crate::termination::SolveStop;
 use crate::{
-    BuildError, Counters, NearestNeighbors, Neighbours, Outcome, Parameters, Planner, PlannerError,
-    Snapshot, Solution, Termination, Trace, VertexKind,
+    BuildError, Counters, Outcome, Parameters, Planner, PlannerError, Snapshot, Termination, Trace,
+    VertexKind,
 };
 
 /// RRT-Connect (Kuffner & LaValle, ICRA 2000): a tree from the start and a tree from the goals
@@ -22,7 +20,7 @@ use crate::{
 ///
 /// Built from the framework's parts: the space's uniform sampling through [`UniformSampler`],
 /// full edge checks through an [`EdgeChecker`] (batched for arms, certified when the problem
-/// asks), [`NearestNeighbors`] per tree (a scan with the space's metric when it is not
+/// asks), [`NearestNeighbors`](crate::NearestNeighbors) per tree (a scan with the space's metric when it is not
 /// Euclidean), the shared termination conditions, trace and counters.
 ///
 /// # Arguments
@@ -48,16 +46,8 @@ use crate::{
 /// ```
 #[derive(Debug, Clone)]
 pub struct RrtConnect<S, V, E = DenseChecker> {
-    space: S,
-    validity: Counted<V>,
-    sampler: UniformSampler,
-    checker: E,
-    initial: (UniformSampler, E),
-    parameters: Parameters,
-    range: f64,
-    name: String,
-    start: Vec<f64>,
-    goals: Vec<Vec<f64>>,
+    /// The query, parts, parameters, solution and records.
+    core: RrtCore<S, V, UniformSampler, E>,
     /// The start tree (0) and the goal tree (1).
     trees: [Tree; 2],
     /// The tree that grows towards the next sample.
@@ -65,56 +55,6 @@ pub struct RrtConnect<S, V, E = DenseChecker> {
     phase: Phase,
     /// A motion check the stop interrupted, resumed by the next iteration.
     pending: Option<Motion>,
-    solution: Option<Solution>,
-    trace: Trace,
-    counters: Counters,
-    elapsed: Duration,
-    neighbours: Neighbours,
-    target: Vec<f64>,
-    candidate: Vec<f64>,
-}
-
-/// One tree: states in contiguous storage, parent indices (`u32::MAX` for roots), and the
-/// nearest-neighbour index over its states.
-#[derive(Debug, Clone)]
-struct Tree {
-    states: States,
-    parents: Vec<u32>,
-    nn: NearestNeighbors,
-}
-
-const ROOT: u32 = u32::MAX;
-
-impl Tree {
-    fn new(dimension: usize) -> Self {
-        Self {
-            states: States::new(dimension),
-            parents: Vec::new(),
-            nn: NearestNeighbors::new(dimension),
-        }
-    }
-
-    fn add(&mut self, state: &[f64], parent: u32) -> u32 {
-        let id = self.parents.len() as u32;
-        self.states.push(state);
-        self.parents.push(parent);
-        self.nn.insert([(id, state)]);
-        id
-    }
-
-    fn state(&self, id: u32) -> &[f64] {
-        &self.states[id as usize]
-    }
-
-    /// The path from `id` up to its root, `id` first.
-    fn branch(&self, mut id: u32) -> Vec<u32> {
-        let mut ids = vec![id];
-        while self.parents[id as usize] != ROOT {
-            id = self.parents[id as usize];
-            ids.push(id);
-        }
-        ids
-    }
 }
 
 /// What one step towards a state did.
@@ -176,57 +116,38 @@ where
     pub fn with_checker(
         space: S,
         validity: V,
-        (start, goals): (Vec<f64>, Vec<Vec<f64>>),
+        query: (Vec<f64>, Vec<Vec<f64>>),
         checker: E,
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
-        parameters.validate()?;
-        validate_query(&space, &validity, &start, &goals)?;
         let n = space.dimension();
-        let range = parameters
-            .range
-            .unwrap_or_else(|| default_range(n, space.maximum_extent()));
         let sampler = UniformSampler::new(parameters.seed);
+        let parts = (sampler, checker);
+        let core = RrtCore::new(space, validity, query, parts, parameters, "RRT-Connect")?;
         Ok(Self {
-            initial: (sampler.clone(), checker.clone()),
-            sampler,
-            checker,
-            validity: Counted::new(validity),
-            range,
-            name: "RRT-Connect".into(),
+            core,
             trees: [Tree::new(n), Tree::new(n)],
             growing: 0,
             phase: Phase::Grow,
             pending: None,
-            solution: None,
-            trace: Trace::default(),
-            counters: Counters::default(),
-            elapsed: Duration::ZERO,
-            neighbours: Neighbours::new(),
-            target: vec![0.0; n],
-            candidate: vec![0.0; n],
-            space,
-            parameters,
-            start,
-            goals,
         })
     }
 
     /// The maximum length of one extension.
     pub fn range(&self) -> f64 {
-        self.range
+        self.core.range
     }
 
     /// Sets the name reports print (default `RRT-Connect`).
     pub fn set_name(&mut self, name: impl Into<String>) {
-        self.name = name.into();
+        self.core.name = name.into();
     }
 
     /// Plants the roots once.
     fn setup(&mut self) {
         if self.trees[0].parents.is_empty() {
-            self.trees[0].add(&self.start, ROOT);
-            for goal in &self.goals {
+            self.trees[0].add(&self.core.start, ROOT);
+            for goal in &self.core.goals {
                 self.trees[1].add(goal, ROOT);
             }
         }
@@ -234,49 +155,30 @@ where
 
     /// The state of tree `t` nearest to `target`, or `None` if the stop fired mid-query.
     fn nearest(&mut self, t: usize, target: &[f64], stop: &dyn Stop) -> Option<u32> {
-        self.counters.neighbour_queries += 1;
-        let tree = &mut self.trees[t];
-        if self.space.is_euclidean() {
-            let complete = tree
-                .nn
-                .nearest_alive(target, 1, &mut self.neighbours, Alive::All, stop);
-            return if complete {
-                self.neighbours.iter().next().map(|&(_, id)| id)
-            } else {
-                None
-            };
-        }
-        let mut best = (f64::INFINITY, 0);
-        for (id, state) in tree.states.iter().enumerate() {
-            if id % 4096 == 4095 && stop.should_stop() {
-                return None;
-            }
-            let d = self.space.distance(state, target);
-            if d < best.0 {
-                best = (d, id as u32);
-            }
-        }
-        Some(best.1)
+        self.core.counters.neighbour_queries += 1;
+        let complete =
+            self.trees[t].nearest(&self.core.space, target, 1, &mut self.core.neighbours, stop);
+        complete
+            .then(|| self.core.neighbours.iter().next().map(|&(_, id)| id))
+            .flatten()
     }
 
-    /// Starts a step of tree `t` from its state nearest to `self.target` towards it: the
-    /// candidate state (at most `range` away) goes to `self.candidate` and, if it is valid,
+    /// Starts a step of tree `t` from its state nearest to `self.core.target` towards it: the
+    /// candidate state (at most `range` away) goes to `self.core.candidate` and, if it is valid,
     /// the motion to it becomes the pending one. `Trapped` if the candidate is invalid,
     /// `Stopped` if the stop fired during the nearest-neighbour query.
     fn start_motion(&mut self, t: usize, stop: &dyn Stop) -> Option<Step> {
-        let target = std::mem::take(&mut self.target);
+        let target = std::mem::take(&mut self.core.target);
         let near = self.nearest(t, &target, stop);
         let step = near.map(|near| {
             let from = self.trees[t].state(near);
-            let distance = self.space.distance(from, &target);
-            let reached = distance <= self.range;
-            if reached {
-                self.candidate.copy_from_slice(&target);
-            } else {
-                self.space
-                    .interpolate(from, &target, self.range / distance, &mut self.candidate);
-            }
-            if self.validity.is_valid(&self.candidate) {
+            let reached = steer(
+                &self.core.space,
+                (from, &target),
+                self.core.range,
+                &mut self.core.candidate,
+            );
+            if self.core.validity.is_valid(&self.core.candidate) {
                 self.pending = Some(Motion {
                     tree: t,
                     near,
@@ -288,7 +190,7 @@ where
                 Some(Step::Trapped)
             }
         });
-        self.target = target;
+        self.core.target = target;
         step.unwrap_or(Some(Step::Stopped))
     }
 
@@ -300,36 +202,20 @@ where
             return Step::Trapped;
         };
         let from = self.trees[motion.tree].state(motion.near);
-        let mut status = self.checker.check_full(
-            &self.space,
-            &self.validity,
-            from,
-            &self.candidate,
-            &mut motion.progress,
-            stop,
-        );
-        let factor = self.parameters.certification.unwrap_or(1);
-        if status == EdgeStatus::Valid && factor > 1 {
-            status = self.checker.certify(
-                &self.space,
-                &self.validity,
-                from,
-                &self.candidate,
-                factor,
-                stop,
-            );
-        }
-        match status {
+        match self
+            .core
+            .check_to_candidate(from, &mut motion.progress, stop)
+        {
             EdgeStatus::Invalid => Step::Trapped,
             EdgeStatus::Unknown => {
                 self.pending = Some(motion);
                 Step::Stopped
             }
             EdgeStatus::Valid => {
-                let candidate = std::mem::take(&mut self.candidate);
+                let candidate = std::mem::take(&mut self.core.candidate);
                 let id = self.trees[motion.tree].add(&candidate, motion.near);
-                self.candidate = candidate;
-                self.counters.samples += 1;
+                self.core.candidate = candidate;
+                self.core.counters.samples += 1;
                 if motion.reached {
                     Step::Reached(id)
                 } else {
@@ -343,19 +229,19 @@ where
     /// step towards the new state until it reaches it (a solution) or is blocked. Work the
     /// stop interrupts (a motion check, the connect phase) resumes at the next call.
     fn iterate(&mut self, stop: &SolveStop<'_>) {
-        self.counters.iterations += 1;
+        self.core.counters.iterations += 1;
         loop {
             let step = match self.phase {
                 Phase::Grow if self.pending.is_none() => {
-                    let mut sample = std::mem::take(&mut self.target);
-                    let drawn = self.sampler.sample(
-                        &self.space,
-                        &self.validity,
+                    let mut sample = std::mem::take(&mut self.core.target);
+                    let drawn = self.core.sampler.sample(
+                        &self.core.space,
+                        &self.core.validity,
                         CostBound::Unbounded,
                         stop,
                         &mut sample,
                     );
-                    self.target = sample;
+                    self.core.target = sample;
                     // A uniform sampler fails only when stopped (the query was validated).
                     if drawn.is_err() {
                         return;
@@ -370,7 +256,7 @@ where
                 }
                 Phase::Connect { from, new } if self.pending.is_none() => {
                     let target = self.trees[from].state(new);
-                    self.target.copy_from_slice(target);
+                    self.core.target.copy_from_slice(target);
                     match self.start_motion(1 - from, stop) {
                         Some(step) => step,
                         None => self.finish_motion(stop),
@@ -408,7 +294,7 @@ where
     }
 
     fn record_solution(&mut self, in_start_tree: u32, in_goal_tree: u32, stop: &SolveStop<'_>) {
-        let mut path = States::new(self.space.dimension());
+        let mut path = States::new(self.core.space.dimension());
         let mut ids = self.trees[0].branch(in_start_tree);
         ids.reverse();
         for id in ids {
@@ -418,14 +304,7 @@ where
         for id in self.trees[1].branch(in_goal_tree).into_iter().skip(1) {
             path.push(self.trees[1].state(id));
         }
-        let cost = path
-            .iter()
-            .zip(path.iter().skip(1))
-            .map(|(x, y)| self.space.distance(x, y))
-            .sum();
-        let time = (self.elapsed + stop.elapsed()).as_secs_f64();
-        self.trace.push(time, cost);
-        self.solution = Some(Solution { path, cost });
+        self.core.record(path, stop);
     }
 }
 
@@ -436,14 +315,14 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
 {
     fn name(&self) -> &str {
-        &self.name
+        &self.core.name
     }
 
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
         let stop = SolveStop::new(termination);
         self.setup();
         let mut iterations = 0;
-        while self.solution.is_none() {
+        while self.core.solution.is_none() {
             stop.update(iterations, self.best_cost());
             if spaces::Stop::should_stop(&stop) {
                 break;
@@ -451,67 +330,41 @@ where
             self.iterate(&stop);
             iterations += 1;
         }
-        self.elapsed += stop.elapsed();
-        Ok(match &self.solution {
-            Some(solution) => Outcome::Solved(solution.clone()),
-            None => Outcome::NoSolution,
-        })
+        Ok(self.core.finish(&stop))
     }
 
     fn clear(&mut self) {
-        self.sampler = self.initial.0.clone();
-        self.checker = self.initial.1.clone();
-        self.validity.reset();
-        let n = self.space.dimension();
+        self.core.clear();
+        let n = self.core.space.dimension();
         self.trees = [Tree::new(n), Tree::new(n)];
         self.growing = 0;
         self.phase = Phase::Grow;
         self.pending = None;
-        self.solution = None;
-        self.trace.clear();
-        self.counters = Counters::default();
-        self.elapsed = Duration::ZERO;
     }
 
     fn best_cost(&self) -> f64 {
-        self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)
+        self.core.best_cost()
     }
 
     fn trace(&self) -> &Trace {
-        &self.trace
+        &self.core.trace
     }
 
     fn counters(&self) -> Counters {
-        let mut c = self.counters;
-        let edges = <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker);
-        c.full_checks = edges.full_checks;
-        c.points_tested = edges.points_tested;
-        c.certifications = edges.certifications;
-        c.certification_failures = edges.certification_failures;
-        c.validity_checks = self.validity.count();
-        c.samples_drawn = <UniformSampler as Sampler<S, Counted<V>>>::counters(&self.sampler).drawn;
+        let mut c = self.core.counters();
         c.vertices = (self.trees[0].parents.len() + self.trees[1].parents.len()) as u64;
-        c.edges = c.vertices.saturating_sub(1 + self.goals.len() as u64);
+        c.edges = c.vertices.saturating_sub(1 + self.core.goals.len() as u64);
         c.peak_vertices = c.vertices;
         c.peak_edges = c.edges;
         c
     }
 
     fn settings(&self) -> Vec<(String, String)> {
-        let p = &self.parameters;
-        vec![
-            ("range".into(), self.range.to_string()),
-            ("resolution".into(), p.resolution.to_string()),
-            ("seed".into(), p.seed.to_string()),
-            (
-                "certification".into(),
-                p.certification.unwrap_or(1).to_string(),
-            ),
-        ]
+        self.core.settings(Vec::new())
     }
 
     fn snapshot(&self) -> Option<Snapshot> {
-        let mut states = States::new(self.space.dimension());
+        let mut states = States::new(self.core.space.dimension());
         let mut kinds = Vec::new();
         let mut edges = [Vec::new(), Vec::new()];
         for (t, tree) in self.trees.iter().enumerate() {
@@ -575,12 +428,8 @@ where
     where
         P: problems::PlanningProblem<Space = S, Validity = V>,
     {
-        Self::new(
-            problem.space().clone(),
-            problem.validity().clone(),
-            (problem.start().to_vec(), problem.goals().to_vec()),
-            parameters.for_problem(problem)?,
-        )
+        let (space, validity, query, parameters) = problem_parts(problem, parameters)?;
+        Self::new(space, validity, query, parameters)
     }
 }
 

@@ -25,7 +25,7 @@ use crate::{
 pub struct BenchArgs {
     /// An experiment file (TOML); see `mit-star experiments --print smoke` for the format.
     pub file: Option<PathBuf>,
-    /// A shipped experiment: paper-table, ablation, smoke, panda-mbm (`mit-star experiments` lists them).
+    /// A shipped experiment: paper-table, ablation, smoke, panda-mbm, paper-planners (`mit-star experiments` lists them).
     #[arg(long, short, conflicts_with = "file")]
     pub experiment: Option<String>,
     /// Planner configurations, comma separated (flags mode; default mit-star,eit-star).

@@ -82,6 +82,9 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
         Configuration::AitStar => {
             "informed sampler, unchecked lazy reverse search as the forward search's heuristic, full forward checks"
         }
+        Configuration::InformedRrtStar => {
+            "RRT* with k-nearest rewiring, goal bias, direct informed sampling, pruning (parameters: range, goal_bias, rrt_rewire_factor, pruning)"
+        }
     };
     for c in Configuration::ALL {
         say!("  {:<14} {:<12} {}", c.name(), c.label(), parts(c));

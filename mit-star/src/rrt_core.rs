@@ -1,0 +1,217 @@
+//! [`RrtCore`]: what every RRT planner of the crate ([`RrtConnect`](crate::RrtConnect),
+//! [`InformedRrtStar`](crate::InformedRrtStar)) holds besides its trees — the query, the parts,
+//! the parameters, the best solution and the records — and how it is built.
+
+use std::time::Duration;
+
+use samplers::Sampler;
+use spaces::{StateSpace, States, Stop};
+use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+
+use crate::eit::validate_query;
+use crate::termination::SolveStop;
+use crate::{
+    BuildError, Counters, Neighbours, Outcome, Parameters, Solution, Trace, default_range,
+};
+
+/// The query, parts, parameters, best solution and records of an RRT planner, with the two
+/// state buffers of an extension: the state drawn (`target`) and the state steered to
+/// (`candidate`).
+#[derive(Debug, Clone)]
+pub(crate) struct RrtCore<S, V, Smp, E> {
+    pub(crate) space: S,
+    pub(crate) validity: Counted<V>,
+    pub(crate) sampler: Smp,
+    pub(crate) checker: E,
+    /// The parts as built, restored by [`clear`](Self::clear).
+    initial: (Smp, E),
+    pub(crate) parameters: Parameters,
+    /// The maximum length of one extension.
+    pub(crate) range: f64,
+    pub(crate) name: String,
+    pub(crate) start: Vec<f64>,
+    pub(crate) goals: Vec<Vec<f64>>,
+    pub(crate) solution: Option<Solution>,
+    pub(crate) trace: Trace,
+    pub(crate) counters: Counters,
+    /// Planning time of the finished `solve` calls.
+    pub(crate) elapsed: Duration,
+    pub(crate) neighbours: Neighbours,
+    pub(crate) target: Vec<f64>,
+    pub(crate) candidate: Vec<f64>,
+}
+
+/// What an RRT planner's `for_problem` builds from: the space, the validity checker, the query
+/// and the parameters for the problem.
+pub(crate) type ProblemParts<S, V> = (S, V, (Vec<f64>, Vec<Vec<f64>>), Parameters);
+
+/// The parts of `problem` with `parameters` for it ([`Parameters::for_problem`]: its resolution,
+/// and its certification unless `parameters` sets one).
+///
+/// # Errors
+/// [`BuildError::Problem`] if the problem refuses its check step.
+pub(crate) fn problem_parts<P>(
+    problem: &P,
+    parameters: &Parameters,
+) -> Result<ProblemParts<P::Space, P::Validity>, BuildError>
+where
+    P: problems::PlanningProblem,
+{
+    Ok((
+        problem.space().clone(),
+        problem.validity().clone(),
+        (problem.start().to_vec(), problem.goals().to_vec()),
+        parameters.for_problem(problem)?,
+    ))
+}
+
+/// Validates `parameters` and the query, and returns the range the planner steps by
+/// (`parameters.range`, else [`default_range`]).
+///
+/// # Errors
+/// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
+/// malformed query.
+pub(crate) fn checked_range<S: StateSpace, V: StateValidity>(
+    space: &S,
+    validity: &V,
+    (start, goals): (&[f64], &[Vec<f64>]),
+    parameters: &Parameters,
+) -> Result<f64, BuildError> {
+    parameters.validate()?;
+    validate_query(space, validity, start, goals)?;
+    let extent = space.maximum_extent();
+    Ok(parameters
+        .range
+        .unwrap_or_else(|| default_range(space.dimension(), extent)))
+}
+
+impl<S, V, Smp, E> RrtCore<S, V, Smp, E>
+where
+    S: StateSpace,
+    V: StateValidity,
+    Smp: Sampler<S, Counted<V>> + Clone,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+{
+    /// The core of a planner called `name` for the query, with its parts and `parameters`
+    /// (validated here, with the query).
+    ///
+    /// # Errors
+    /// As [`checked_range`].
+    pub(crate) fn new(
+        space: S,
+        validity: V,
+        (start, goals): (Vec<f64>, Vec<Vec<f64>>),
+        (sampler, checker): (Smp, E),
+        parameters: Parameters,
+        name: &str,
+    ) -> Result<Self, BuildError> {
+        let range = checked_range(&space, &validity, (&start, &goals), &parameters)?;
+        let n = space.dimension();
+        Ok(Self {
+            initial: (sampler.clone(), checker.clone()),
+            sampler,
+            checker,
+            validity: Counted::new(validity),
+            range,
+            name: name.into(),
+            solution: None,
+            trace: Trace::default(),
+            counters: Counters::default(),
+            elapsed: Duration::ZERO,
+            neighbours: Neighbours::new(),
+            target: vec![0.0; n],
+            candidate: vec![0.0; n],
+            space,
+            parameters,
+            start,
+            goals,
+        })
+    }
+
+    /// Checks the motion `from → candidate` at full resolution (every grid point not yet
+    /// tested), then on the certification grid when the parameters ask for one. `Unknown` if
+    /// the stop fired first: `progress` keeps what the full check tested, and the next call
+    /// resumes.
+    pub(crate) fn check_to_candidate(
+        &mut self,
+        from: &[f64],
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus {
+        let (space, validity, to) = (&self.space, &self.validity, &self.candidate);
+        let status = self
+            .checker
+            .check_full(space, validity, from, to, progress, stop);
+        let factor = self.parameters.certification.unwrap_or(1);
+        if status == EdgeStatus::Valid && factor > 1 {
+            return self
+                .checker
+                .certify(space, validity, from, to, factor, stop);
+        }
+        status
+    }
+
+    /// Records `path` as the solution if it is cheaper than the best one (its cost the sum of
+    /// its edges), with the planning time in the trace.
+    pub(crate) fn record(&mut self, path: States, stop: &SolveStop<'_>) {
+        let cost = path
+            .iter()
+            .zip(path.iter().skip(1))
+            .map(|(x, y)| self.space.distance(x, y))
+            .sum();
+        if cost < self.best_cost() {
+            let time = (self.elapsed + stop.elapsed()).as_secs_f64();
+            self.trace.push(time, cost);
+            self.solution = Some(Solution { path, cost });
+        }
+    }
+
+    /// Cost of the best solution (`∞` if none).
+    pub(crate) fn best_cost(&self) -> f64 {
+        self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)
+    }
+
+    /// Ends a `solve` call: adds its time and returns the best solution.
+    pub(crate) fn finish(&mut self, stop: &SolveStop<'_>) -> Outcome {
+        self.elapsed += stop.elapsed();
+        match &self.solution {
+            Some(solution) => Outcome::Solved(solution.clone()),
+            None => Outcome::NoSolution,
+        }
+    }
+
+    /// Restores the parts as built and forgets the solution and the records.
+    pub(crate) fn clear(&mut self) {
+        self.sampler = self.initial.0.clone();
+        self.checker = self.initial.1.clone();
+        self.validity.reset();
+        self.solution = None;
+        self.trace.clear();
+        self.counters = Counters::default();
+        self.elapsed = Duration::ZERO;
+    }
+
+    /// The counters with the parts' work filled in (the planner fills the graph sizes).
+    pub(crate) fn counters(&self) -> Counters {
+        self.counters.with_parts(
+            <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker),
+            self.validity.count(),
+            self.sampler.counters().drawn,
+        )
+    }
+
+    /// The settings: the range, then `extra`, then the resolution, seed and certification.
+    pub(crate) fn settings(&self, extra: Vec<(&str, String)>) -> Vec<(String, String)> {
+        let p = &self.parameters;
+        let certification = p.certification.unwrap_or(1);
+        std::iter::once(("range", self.range.to_string()))
+            .chain(extra)
+            .chain([
+                ("resolution", p.resolution.to_string()),
+                ("seed", p.seed.to_string()),
+                ("certification", certification.to_string()),
+            ])
+            .map(|(k, v)| (k.to_owned(), v))
+            .collect()
+    }
+}
