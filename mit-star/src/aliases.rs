@@ -59,5 +59,15 @@ pub type BitStar<S = RealVectorSpace, V = World> =
 /// **AIT*-EIS** — *not in the paper*: AIT* sampling inside MIT*'s estimated informed set
 /// before its first solution (the [`Estimated`] wrapper reacts to AIT*'s invalid lazy-path
 /// edges as it does to EIT*'s). Remove the wrapper and it is [`AitStar`].
+///
+/// ```
+/// use mit_star::{AitStarEis, FirstSolution, Planner};
+/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let mut planner = AitStarEis::for_problem(&problem).seed(3).build()?;
+/// assert_eq!(planner.name(), "AIT*[estimated(informed) sampler, dense checks]");
+/// let outcome = planner.solve(&FirstSolution)?;
+/// assert!(outcome.cost() >= problem.optimum().unwrap());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub type AitStarEis<S = RealVectorSpace, V = World> =
     Eit<S, V, Estimated<InformedSampler>, DenseChecker, Euclidean, CostInformed>;
