@@ -9,7 +9,8 @@ use crate::rrt_tree::{ROOT, Tree};
 const POLL: usize = 1024;
 
 /// An RRT* tree rooted at the start (vertex 0): every vertex's cost-to-come `g`, the cost of the
-/// edge from its parent, and its children.
+/// edge from its parent, and its children as intrusive sibling lists (three flat arrays, no
+/// allocation per vertex; O(1) to relink a rewired vertex).
 #[derive(Debug, Clone)]
 pub(crate) struct CostTree {
     tree: Tree,
@@ -17,7 +18,11 @@ pub(crate) struct CostTree {
     costs: Vec<f64>,
     /// Cost of the edge from the parent (0 for the root).
     incoming: Vec<f64>,
-    children: Vec<Vec<u32>>,
+    /// First child of each vertex (`ROOT`: none).
+    first_child: Vec<u32>,
+    /// Next and previous sibling of each vertex (`ROOT`: none).
+    next_sibling: Vec<u32>,
+    prev_sibling: Vec<u32>,
     /// Vertices whose children's costs still have to follow theirs (a propagation the stop
     /// interrupted).
     stale: Vec<u32>,
@@ -30,7 +35,9 @@ impl CostTree {
             tree: Tree::new(root.len()),
             costs: Vec::new(),
             incoming: Vec::new(),
-            children: Vec::new(),
+            first_child: Vec::new(),
+            next_sibling: Vec::new(),
+            prev_sibling: Vec::new(),
             stale: Vec::new(),
         };
         tree.add(root, ROOT, 0.0);
@@ -45,16 +52,53 @@ impl CostTree {
     /// Adds `state` as a child of `parent` through an edge of cost `edge`.
     pub(crate) fn add(&mut self, state: &[f64], parent: u32, edge: f64) -> u32 {
         let id = self.tree.add(state, parent);
+        self.first_child.push(ROOT);
+        self.next_sibling.push(ROOT);
+        self.prev_sibling.push(ROOT);
         let cost = if parent == ROOT {
             0.0
         } else {
-            self.children[parent as usize].push(id);
+            self.link(id, parent);
             self.costs[parent as usize] + edge
         };
         self.costs.push(cost);
         self.incoming.push(edge);
-        self.children.push(Vec::new());
         id
+    }
+
+    /// Makes `child` the first child of `parent`.
+    fn link(&mut self, child: u32, parent: u32) {
+        let head = self.first_child[parent as usize];
+        self.next_sibling[child as usize] = head;
+        self.prev_sibling[child as usize] = ROOT;
+        if head != ROOT {
+            self.prev_sibling[head as usize] = child;
+        }
+        self.first_child[parent as usize] = child;
+    }
+
+    /// Takes `child` out of the child list of `parent`.
+    fn unlink(&mut self, child: u32, parent: u32) {
+        let (prev, next) = (
+            self.prev_sibling[child as usize],
+            self.next_sibling[child as usize],
+        );
+        if prev == ROOT {
+            self.first_child[parent as usize] = next;
+        } else {
+            self.next_sibling[prev as usize] = next;
+        }
+        if next != ROOT {
+            self.prev_sibling[next as usize] = prev;
+        }
+    }
+
+    /// The children of `id`.
+    fn children(&self, id: u32) -> impl Iterator<Item = u32> + '_ {
+        let some = |c: u32| (c != ROOT).then_some(c);
+        std::iter::successors(some(self.first_child[id as usize]), move |&c| {
+            some(self.next_sibling[c as usize])
+        })
     }
 
     pub(crate) fn state(&self, id: u32) -> &[f64] {
@@ -97,13 +141,10 @@ impl CostTree {
     pub(crate) fn rewire(&mut self, child: u32, parent: u32, edge: f64) {
         let old = self.tree.parents[child as usize];
         if old != ROOT {
-            let siblings = &mut self.children[old as usize];
-            if let Some(at) = siblings.iter().position(|&c| c == child) {
-                siblings.swap_remove(at);
-            }
+            self.unlink(child, old);
         }
         self.tree.parents[child as usize] = parent;
-        self.children[parent as usize].push(child);
+        self.link(child, parent);
         self.incoming[child as usize] = edge;
         self.costs[child as usize] = self.costs[parent as usize] + edge;
         self.stale.push(child);
@@ -115,9 +156,11 @@ impl CostTree {
         let mut visited = 0;
         while let Some(id) = self.stale.pop() {
             let cost = self.costs[id as usize];
-            for &child in &self.children[id as usize] {
+            let mut child = self.first_child[id as usize];
+            while child != ROOT {
                 self.costs[child as usize] = cost + self.incoming[child as usize];
                 self.stale.push(child);
+                child = self.next_sibling[child as usize];
             }
             visited += 1;
             if visited % POLL == 0 && stop.should_stop() {
@@ -142,7 +185,7 @@ impl CostTree {
         let mut at = 0;
         while at < order.len() {
             let id = order[at];
-            order.extend_from_slice(&self.children[id as usize]);
+            order.extend(self.children(id));
             at += 1;
         }
         let mut kept = vec![false; self.len()];
@@ -152,7 +195,7 @@ impl CostTree {
             }
             let keep_subtree = id == 0
                 || keep(id, self.tree.state(id))
-                || self.children[id as usize].iter().any(|&c| kept[c as usize]);
+                || self.children(id).any(|c| kept[c as usize]);
             kept[id as usize] = keep_subtree;
         }
         if kept.iter().all(|&k| k) {
