@@ -1,0 +1,85 @@
+//! `first_solution_work`: the work a planner does before its first solution — grid points
+//! tested and wall time, per seed — for comparing with another implementation's validity-call
+//! counts (`docs/scripts/ompl-peer`).
+//!
+//! ```text
+//! cargo run --release -p mit-star --example first_solution_work -- goal-enclosure 4 bit-star 30
+//! ```
+//!
+//! Arguments: problem family, dimension, configuration, number of seeds (1..=N). Each run stops
+//! at its first solution or after 3 s. Prints the first five runs, then the medians over the
+//! solved runs: points tested, time, and time per point.
+
+use std::time::Instant;
+
+use mit_star::{
+    Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
+};
+
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let family = args.first().map_or("goal-enclosure", String::as_str);
+    let dimension: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(4);
+    let configuration: Configuration = match args.get(2).map_or("bit-star", String::as_str).parse()
+    {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("{e}");
+            std::process::exit(2);
+        }
+    };
+    let seeds: u64 = args.get(3).and_then(|a| a.parse().ok()).unwrap_or(30);
+    let problem = match problems::builtin(family, dimension, 1) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("{family} in {dimension} dimensions: {e}");
+            std::process::exit(2);
+        }
+    };
+    let (mut points, mut times, mut per_point) = (Vec::new(), Vec::new(), Vec::new());
+    for seed in 1..=seeds {
+        let parameters = Parameters {
+            seed,
+            ..Parameters::default()
+        };
+        let mut planner = build_planner(configuration, &problem, &parameters).expect("a planner");
+        let started = Instant::now();
+        let outcome = planner
+            .solve(&FirstSolution.or(TimeLimit::seconds(3.0)))
+            .expect("a query the problem family guarantees");
+        let seconds = started.elapsed().as_secs_f64();
+        let c = planner.counters();
+        if seed <= 5 {
+            println!(
+                "seed {seed}: {} in {:.1} ms, {} points, {} full checks, {} batches",
+                if outcome.is_solved() {
+                    "solved"
+                } else {
+                    "unsolved"
+                },
+                seconds * 1e3,
+                c.points_tested,
+                c.full_checks,
+                c.batches
+            );
+        }
+        if outcome.is_solved() {
+            points.push(c.points_tested as f64);
+            times.push(seconds);
+            per_point.push(seconds * 1e9 / c.points_tested.max(1) as f64);
+        }
+    }
+    println!(
+        "{} on {family} R^{dimension}: {} of {seeds} solved; median {:.0} points, {:.1} ms, {:.1} ns per point",
+        configuration.label(),
+        points.len(),
+        median(&mut points),
+        median(&mut times) * 1e3,
+        median(&mut per_point)
+    );
+}
