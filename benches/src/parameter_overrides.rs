@@ -197,6 +197,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
     // Optional parameters (absent from the default table) are named with a sample value.
     let defaults = defaults_table(&Parameters {
         certification: Some(1),
+        suspend_reverse_when_forward_empty: Some(true),
         range: Some(1.0),
         initial_inflation: Some(1.0),
         inflation_scaling: Some(0.0),

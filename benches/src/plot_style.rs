@@ -63,6 +63,7 @@ fn configuration_colour(c: Configuration) -> RGBColor {
         Configuration::MitStarAs => RGBColor(44, 160, 44),
         Configuration::MitStarEis => RGBColor(148, 103, 189),
         Configuration::MitStarSc => RGBColor(255, 127, 14),
+        Configuration::MitStarSr => RGBColor(23, 100, 60),
         Configuration::RrtConnect => RGBColor(23, 190, 207),
         Configuration::BitStar => RGBColor(140, 86, 75),
         Configuration::AbitStar => RGBColor(227, 119, 194),
@@ -82,7 +83,7 @@ const EXTRA: [RGBColor; 5] = [
 
 /// One colour per planner, in experiment order: the first planner of each configuration gets
 /// that configuration's fixed colour (MIT* red, EIT* blue, MIT*-AS green, MIT*-EIS purple,
-/// MIT*-SC orange, RRT-Connect cyan, BIT* brown, ABIT* pink, AIT* olive, Informed RRT* grey); further planners of the same configuration get distinct extra colours.
+/// MIT*-SC orange, MIT*-SR dark green, RRT-Connect cyan, BIT* brown, ABIT* pink, AIT* olive, Informed RRT* grey); further planners of the same configuration get distinct extra colours.
 ///
 /// ```
 /// use mit_star_benches::{planner_colours, ParameterOverrides, PlannerSpec};

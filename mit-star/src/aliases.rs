@@ -6,15 +6,17 @@ use samplers::{AdaptiveSampler, Estimated, InformedSampler};
 use spaces::RealVectorSpace;
 use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, World};
 
-use crate::{APriori, CostInformed, Eit};
+use crate::{APriori, CostInformed, Eit, Suspending};
 
 /// **MIT*** (Zhang et al. 2025): adaptive sampler inside the estimated informed set
-/// ([`Estimated`] wrapper), length-related sparse collision checks.
+/// ([`Estimated`] wrapper), length-related sparse collision checks, and the MIT* authors'
+/// rule that the reverse search yields while the forward queue is empty ([`Suspending`]).
 pub type MitStar<S = RealVectorSpace, V = World> =
-    Eit<S, V, Estimated<AdaptiveSampler>, LengthAdaptiveChecker>;
+    Eit<S, V, Estimated<AdaptiveSampler>, LengthAdaptiveChecker, Euclidean, Suspending>;
 
-/// **EIT*** (Strub and Gammell 2022): direct informed sampling (uniform until a solution
-/// exists), fixed sparse levels of 1, 3, 7, 15, … checks per edge.
+/// **EIT*** (Strub and Gammell 2022) as upstream builds it: direct informed sampling (uniform
+/// until a solution exists), fixed sparse levels of 1, 3, 7, 15, … checks per edge, and a
+/// reverse search that keeps going while the forward queue is empty.
 pub type EitStar<S = RealVectorSpace, V = World> = Eit<S, V, InformedSampler, FixedSparseChecker>;
 
 /// **MIT*-AS**: EIT* with MIT*'s adaptive sampler only.
@@ -28,6 +30,11 @@ pub type MitStarEis<S = RealVectorSpace, V = World> =
 /// **MIT*-SC**: EIT* with MIT*'s length-related sparse collision checks only.
 pub type MitStarSc<S = RealVectorSpace, V = World> =
     Eit<S, V, InformedSampler, LengthAdaptiveChecker>;
+
+/// **MIT*-SR** — an ablation the paper does not run: EIT* with only the MIT* authors'
+/// suspension rule ([`Suspending`]), the fourth way MIT*'s code differs from EIT*'s.
+pub type MitStarSr<S = RealVectorSpace, V = World> =
+    Eit<S, V, InformedSampler, FixedSparseChecker, Euclidean, Suspending>;
 
 /// **AIT*** (Strub and Gammell, ICRA 2020 / IJRR 2022): direct informed sampling, an unchecked
 /// lazy reverse search ([`CostInformed`]) supplying the forward search's heuristic, full

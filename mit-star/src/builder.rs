@@ -158,10 +158,11 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
-    /// Whether the reverse search suspends when the forward queue is empty (default `true`,
-    /// the MIT* authors' rule).
+    /// Whether the reverse search suspends when the forward queue is empty (default: the
+    /// guidance's rule — yes for MIT*'s [`Suspending`](crate::Suspending) guidance and AIT*,
+    /// no for EIT*).
     pub fn suspend_reverse_when_forward_empty(mut self, suspend: bool) -> Self {
-        self.parameters.suspend_reverse_when_forward_empty = suspend;
+        self.parameters.suspend_reverse_when_forward_empty = Some(suspend);
         self
     }
 
@@ -281,7 +282,7 @@ where
         };
         let name = self
             .name
-            .unwrap_or_else(|| configuration_name(G::NAME, &Smp::part_name(), E::NAME));
+            .unwrap_or_else(|| configuration_name(&G::name(), &Smp::part_name(), E::NAME));
         let mut planner = Eit::with_parts(
             self.space,
             self.validity,

@@ -157,7 +157,8 @@ impl<S: StateSpace> CheckerPart<S> for DenseChecker {
 /// The paper's name of the configuration made of these parts, or a descriptive one.
 pub(crate) fn configuration_name(guidance: &str, sampler: &str, checker: &str) -> String {
     match (guidance, sampler, checker) {
-        ("effort-informed", "estimated(adaptive)", "length-adaptive") => "MIT*".into(),
+        ("effort-informed+suspending", "estimated(adaptive)", "length-adaptive") => "MIT*".into(),
+        ("effort-informed+suspending", "informed", "fixed-sparse") => "MIT*-SR".into(),
         ("effort-informed", "informed", "fixed-sparse") => "EIT*".into(),
         ("effort-informed", "adaptive", "fixed-sparse") => "MIT*-AS".into(),
         ("effort-informed", "estimated(informed)", "fixed-sparse") => "MIT*-EIS".into(),
@@ -167,6 +168,7 @@ pub(crate) fn configuration_name(guidance: &str, sampler: &str, checker: &str) -
         ("cost-informed", s, c) => format!("AIT*[{s} sampler, {c} checks]"),
         ("a-priori", "informed", "dense") => "BIT*".into(),
         ("a-priori", s, c) => format!("BIT*[{s} sampler, {c} checks]"),
+        ("effort-informed+suspending", s, c) => format!("EIT*[suspending, {s} sampler, {c} checks]"),
         (g, s, c) => format!("Eit[{g} guidance, {s} sampler, {c} checks]"),
     }
 }
@@ -212,11 +214,23 @@ mod tests {
         type Mit = Estimated<AdaptiveSampler>;
         assert_eq!(
             configuration_name(
-                "effort-informed",
+                "effort-informed+suspending",
                 &<Mit as SamplerPart<RealVectorSpace>>::part_name(),
                 "length-adaptive"
             ),
             "MIT*"
+        );
+        assert_eq!(
+            configuration_name(
+                "effort-informed",
+                &<Mit as SamplerPart<RealVectorSpace>>::part_name(),
+                "length-adaptive"
+            ),
+            "EIT*[estimated(adaptive) sampler, length-adaptive checks]"
+        );
+        assert_eq!(
+            configuration_name("effort-informed+suspending", "informed", "fixed-sparse"),
+            "MIT*-SR"
         );
         assert_eq!(
             configuration_name("effort-informed", "gaussian", "dense"),

@@ -10,12 +10,12 @@ use validity::StateValidity;
 
 use crate::{
     AitStar, BitStar, BuildError, EitStar, InformedRrtStar, MitStar, MitStarAs, MitStarEis,
-    MitStarSc, Parameters, Planner, RrtConnect,
+    MitStarSc, MitStarSr, Parameters, Planner, RrtConnect,
 };
 
 /// A configuration of the MIT*/EIT* family, or a comparison planner, for choosing one at run
 /// time (command lines, benchmark files). The names are `mit-star`, `eit-star`, `mit-star-as`,
-/// `mit-star-eis`, `mit-star-sc`, `rrt-connect`, `bit-star`, `abit-star`, `ait-star` and
+/// `mit-star-eis`, `mit-star-sc`, `mit-star-sr`, `rrt-connect`, `bit-star`, `abit-star`, `ait-star` and
 /// `informed-rrt-star`.
 ///
 /// ```
@@ -40,6 +40,8 @@ pub enum Configuration {
     MitStarEis,
     /// EIT* with length-related sparse checks.
     MitStarSc,
+    /// EIT* with the MIT* authors' suspension rule (an ablation the paper does not run).
+    MitStarSr,
     /// RRT-Connect (Kuffner & LaValle 2000): bidirectional trees, first solution.
     RrtConnect,
     /// BIT* (Gammell et al. 2020): the forward search alone, ordered by the a-priori heuristic.
@@ -56,12 +58,13 @@ pub enum Configuration {
 
 impl Configuration {
     /// Every configuration, MIT* first.
-    pub const ALL: [Self; 10] = [
+    pub const ALL: [Self; 11] = [
         Self::MitStar,
         Self::EitStar,
         Self::MitStarAs,
         Self::MitStarEis,
         Self::MitStarSc,
+        Self::MitStarSr,
         Self::RrtConnect,
         Self::BitStar,
         Self::AbitStar,
@@ -77,6 +80,7 @@ impl Configuration {
             Self::MitStarAs => "mit-star-as",
             Self::MitStarEis => "mit-star-eis",
             Self::MitStarSc => "mit-star-sc",
+            Self::MitStarSr => "mit-star-sr",
             Self::RrtConnect => "rrt-connect",
             Self::BitStar => "bit-star",
             Self::AbitStar => "abit-star",
@@ -99,6 +103,7 @@ impl Configuration {
             Self::MitStarAs => "MIT*-AS",
             Self::MitStarEis => "MIT*-EIS",
             Self::MitStarSc => "MIT*-SC",
+            Self::MitStarSr => "MIT*-SR",
             Self::RrtConnect => "RRT-Connect",
             Self::BitStar => "BIT*",
             Self::AbitStar => "ABIT*",
@@ -123,7 +128,8 @@ impl FromStr for Configuration {
             .find(|c| c.name() == s)
             .ok_or_else(|| BuildError::UnknownConfiguration {
                 name: s.to_string(),
-                expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, rrt-connect, \
+                expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, mit-star-sr, \
+                           rrt-connect, \
                            bit-star, abit-star, ait-star, informed-rrt-star",
             })
     }
@@ -216,6 +222,12 @@ where
         ),
         Configuration::MitStarSc => Box::new(
             MitStarSc::<P::Space, V>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ),
+        Configuration::MitStarSr => Box::new(
+            MitStarSr::<P::Space, V>::builder(space, validity, start, goals)
                 .parameters(parameters)
                 .name(label)
                 .build()?,

@@ -1,6 +1,8 @@
 //! [`Guidance`]: how the forward search of the [`Eit`](crate::Eit) skeleton is led to the
 //! goals — the part that tells EIT*, AIT* and BIT* apart.
 
+use std::marker::PhantomData;
+
 /// What the reverse search from the goals does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ReverseSearch {
@@ -20,7 +22,8 @@ pub enum ReverseSearch {
 ///
 /// | type | reverse search | forward order before the first solution | paper |
 /// |---|---|---|---|
-/// | [`EffortInformed`] | [`SparseChecked`](ReverseSearch::SparseChecked) | least effort | EIT* (and MIT*) |
+/// | [`EffortInformed`] | [`SparseChecked`](ReverseSearch::SparseChecked) | least effort | EIT* |
+/// | [`Suspending`]`<EffortInformed>` | as EIT*, yielding while the forward queue is empty | least effort | MIT* |
 /// | [`CostInformed`] | [`Unchecked`](ReverseSearch::Unchecked) | least cost estimate | AIT* |
 /// | [`APriori`] | [`None`](ReverseSearch::None) | least (inflated) cost estimate | BIT*, ABIT* |
 ///
@@ -29,13 +32,18 @@ pub enum ReverseSearch {
 /// ([`Parameters::initial_inflation`](crate::Parameters), `inflation_scaling`,
 /// `truncation_scaling`: ABIT*).
 pub trait Guidance: 'static {
-    /// Short name used in planner names (`"effort-informed"`, …).
-    const NAME: &'static str;
     /// What the reverse search does.
     const REVERSE: ReverseSearch;
     /// Before the first solution, expand the edge with the least estimated effort (EIT*'s
     /// `ε = ∞` front) rather than the least cost estimate.
     const EFFORT_FIRST: bool;
+    /// The reverse search yields to the forward search while the forward queue is empty,
+    /// instead of exhausting its own queue (spec §3.2). The parameter
+    /// [`suspend_reverse_when_forward_empty`](crate::Parameters) overrides it.
+    const SUSPEND_WHEN_FORWARD_EMPTY: bool;
+
+    /// Short name used in planner names (`"effort-informed"`, …).
+    fn name() -> String;
 }
 
 /// EIT*'s guidance (Strub and Gammell, IJRR 2022), kept by MIT*: a sparse-checked reverse
@@ -44,9 +52,13 @@ pub trait Guidance: 'static {
 pub struct EffortInformed;
 
 impl Guidance for EffortInformed {
-    const NAME: &'static str = "effort-informed";
     const REVERSE: ReverseSearch = ReverseSearch::SparseChecked;
     const EFFORT_FIRST: bool = true;
+    const SUSPEND_WHEN_FORWARD_EMPTY: bool = false;
+
+    fn name() -> String {
+        "effort-informed".into()
+    }
 }
 
 /// AIT*'s guidance (Strub and Gammell, ICRA 2020 / IJRR 2022): an unchecked lazy reverse search
@@ -58,9 +70,13 @@ impl Guidance for EffortInformed {
 pub struct CostInformed;
 
 impl Guidance for CostInformed {
-    const NAME: &'static str = "cost-informed";
     const REVERSE: ReverseSearch = ReverseSearch::Unchecked;
     const EFFORT_FIRST: bool = false;
+    const SUSPEND_WHEN_FORWARD_EMPTY: bool = true;
+
+    fn name() -> String {
+        "cost-informed".into()
+    }
 }
 
 /// BIT*'s guidance (Gammell, Barfoot and Srinivasa, IJRR 2020): no reverse search; edges are
@@ -71,7 +87,36 @@ impl Guidance for CostInformed {
 pub struct APriori;
 
 impl Guidance for APriori {
-    const NAME: &'static str = "a-priori";
     const REVERSE: ReverseSearch = ReverseSearch::None;
     const EFFORT_FIRST: bool = false;
+    const SUSPEND_WHEN_FORWARD_EMPTY: bool = false;
+
+    fn name() -> String {
+        "a-priori".into()
+    }
+}
+
+/// The MIT* authors' suspension rule around another guidance: the reverse search also yields
+/// while the forward queue is empty (spec §3.2). Upstream EIT* exhausts the reverse queue
+/// instead; MIT* keeps the rule, so `Suspending<EffortInformed>` is MIT*'s guidance and
+/// removing the wrapper is the ablation ([`MitStarSr`](crate::MitStarSr) is EIT* with only
+/// this part).
+///
+/// ```
+/// use mit_star::{EffortInformed, Guidance, Suspending};
+/// assert!(!EffortInformed::SUSPEND_WHEN_FORWARD_EMPTY);
+/// assert!(Suspending::<EffortInformed>::SUSPEND_WHEN_FORWARD_EMPTY);
+/// assert_eq!(Suspending::<EffortInformed>::name(), "effort-informed+suspending");
+/// ```
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Suspending<G = EffortInformed>(PhantomData<G>);
+
+impl<G: Guidance> Guidance for Suspending<G> {
+    const REVERSE: ReverseSearch = G::REVERSE;
+    const EFFORT_FIRST: bool = G::EFFORT_FIRST;
+    const SUSPEND_WHEN_FORWARD_EMPTY: bool = true;
+
+    fn name() -> String {
+        format!("{}+suspending", G::name())
+    }
 }

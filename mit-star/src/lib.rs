@@ -30,9 +30,9 @@
 //! | item | what it is |
 //! |---|---|
 //! | [`Eit`] | the planner, generic over space, validity, sampler, edge checker and heuristic |
-//! | [`MitStar`], [`EitStar`], [`MitStarAs`], [`MitStarEis`], [`MitStarSc`] | the paper's configurations (spec §8) as type aliases |
+//! | [`MitStar`], [`EitStar`], [`MitStarAs`], [`MitStarEis`], [`MitStarSc`], [`MitStarSr`] | the paper's configurations (spec §8) as type aliases, and EIT* with only MIT*'s suspension rule |
 //! | [`AitStar`], [`BitStar`] (and ABIT* as `BitStar` with [`Builder::abit_star`]), [`AitStarEis`] | the paper's comparison planners of the same skeleton, and a composition not in the paper |
-//! | [`Guidance`]: [`EffortInformed`], [`CostInformed`], [`APriori`]; [`ReverseSearch`] | how the skeleton's forward search is guided (EIT*, AIT*, BIT*) |
+//! | [`Guidance`]: [`EffortInformed`], [`Suspending`], [`CostInformed`], [`APriori`]; [`ReverseSearch`] | how the skeleton's forward search is guided (EIT*, MIT*, AIT*, BIT*) |
 //! | [`Builder`], [`Parameters`], [`Connection`], [`EisExpansionForm`], [`EisExpansionRule`] | validated construction and every parameter with its default |
 //! | [`SamplerPart`], [`CheckerPart`] | how the builder makes parts from parameters |
 //! | [`Configuration`], [`build_planner`], [`build_planner_with`] | choose a configuration at run time (`Box<dyn Planner + Send>`), optionally with your own validity checker |
@@ -88,7 +88,7 @@ mod trace;
 mod vertex;
 
 pub use aliases::{
-    AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc,
+    AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr,
 };
 pub use builder::Builder;
 pub use components::{CheckerPart, SamplerPart};
@@ -97,7 +97,7 @@ pub use counters::Counters;
 pub use eit::Eit;
 pub use error::{BuildError, Endpoint, PlannerError};
 pub use graph::RandomGeometricGraph;
-pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch};
+pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch, Suspending};
 pub use informed_rrt_star::InformedRrtStar;
 pub use kd_tree::KdTree;
 pub use nearest_neighbors::NearestNeighbors;

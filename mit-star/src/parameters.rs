@@ -51,9 +51,10 @@ pub struct Parameters {
     pub resolution: f64,
     /// Seed of the sampler's random generator.
     pub seed: u64,
-    /// Suspend the reverse search when the forward queue is empty (the MIT* authors' rule);
-    /// `false` keeps exhausting the reverse queue as upstream EIT* does.
-    pub suspend_reverse_when_forward_empty: bool,
+    /// Suspend the reverse search when the forward queue is empty (`true`: the MIT* authors'
+    /// rule; `false`: keep exhausting the reverse queue, as upstream EIT* does; `None`: the
+    /// planner's [`Guidance`](crate::Guidance) decides — MIT* suspends, EIT* does not).
+    pub suspend_reverse_when_forward_empty: Option<bool>,
     /// Standard deviation `δ` of the adaptive sampler, as a fraction of the maximum extent.
     pub gaussian_std_fraction: f64,
     /// Segment points the adaptive sampler tests per repair.
@@ -102,7 +103,7 @@ impl Default for Parameters {
             pruning: true,
             resolution: 5e-6,
             seed: 0,
-            suspend_reverse_when_forward_empty: true,
+            suspend_reverse_when_forward_empty: None,
             gaussian_std_fraction: 0.1,
             bridge_checks: 8,
             sparse_initial_steps: 2000.0,
@@ -275,7 +276,8 @@ impl Parameters {
             ("seed", self.seed.to_string()),
             (
                 "suspend_reverse_when_forward_empty",
-                self.suspend_reverse_when_forward_empty.to_string(),
+                self.suspend_reverse_when_forward_empty
+                    .map_or_else(|| "planner's".to_owned(), |v| v.to_string()),
             ),
             (
                 "gaussian_std_fraction",

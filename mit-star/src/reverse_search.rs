@@ -206,7 +206,11 @@ where
             return false;
         };
         if self.forward.is_empty() {
-            return !self.parameters.suspend_reverse_when_forward_empty;
+            let suspend = self
+                .parameters
+                .suspend_reverse_when_forward_empty
+                .unwrap_or(G::SUSPEND_WHEN_FORWARD_EMPTY);
+            return !suspend;
         }
         let front = self.front();
         let Some((edge, _)) = self.forward.peek(front) else {

@@ -64,12 +64,17 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
     say!("Planner configurations (spec mit-star.md §8):\n");
     let parts = |c: Configuration| match c {
         Configuration::MitStar => {
-            "adaptive sampler, estimated informed set, length-related sparse checks"
+            "adaptive sampler, estimated informed set, length-related sparse checks, reverse search yields while the forward queue is empty"
         }
-        Configuration::EitStar => "informed sampler, fixed sparse levels (1, 3, 7, … checks)",
+        Configuration::EitStar => {
+            "informed sampler, fixed sparse levels (1, 3, 7, … checks), reverse search keeps going while the forward queue is empty (upstream)"
+        }
         Configuration::MitStarAs => "EIT* with the adaptive sampler",
         Configuration::MitStarEis => "EIT* with the estimated informed set",
         Configuration::MitStarSc => "EIT* with length-related sparse checks",
+        Configuration::MitStarSr => {
+            "EIT* with MIT*'s suspension rule (reverse search yields while the forward queue is empty); not in the paper"
+        }
         Configuration::RrtConnect => {
             "bidirectional trees, extensions of at most `range`, first solution (parameters: range, resolution, seed, certification)"
         }
