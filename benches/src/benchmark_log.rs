@@ -284,6 +284,8 @@ fn run_properties() -> Vec<Property> {
     ];
     let names = RunRecord::counter_names();
     p.extend(names.iter().map(|n| Property::new(n, Integer)));
+    let reals = RunRecord::real_counter_names();
+    p.extend(reals.iter().map(|n| Property::new(n, Real)));
     p
 }
 
@@ -331,6 +333,11 @@ fn run_values(r: &RunRecord) -> Vec<LogValue> {
             .map_or(LogValue::Null, |v| LogValue::count(v.states_checked)),
     ];
     v.extend(r.counter_values().iter().map(|(_, c)| LogValue::count(*c)));
+    v.extend(
+        r.real_counter_values()
+            .iter()
+            .map(|(_, c)| LogValue::real_or_null(*c)),
+    );
     v
 }
 

@@ -44,6 +44,7 @@ pub(crate) fn csv_header() -> Vec<String> {
     header.extend(
         RunRecord::counter_names()
             .iter()
+            .chain(&RunRecord::real_counter_names())
             .map(|n| n.replace(' ', "_")),
     );
     header.push("trace".into());
@@ -114,6 +115,7 @@ pub(crate) fn csv_row(
         r.error.as_deref().map_or_else(String::new, one_line),
     ];
     row.extend(r.counter_values().iter().map(|(_, c)| c.to_string()));
+    row.extend(r.real_counter_values().iter().map(|(_, c)| optional(*c)));
     row.push(
         r.trace
             .iter()

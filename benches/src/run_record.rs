@@ -122,19 +122,81 @@ impl RunRecord {
 
     /// The work counters as `(property name, value)`, in a fixed order: the one list every
     /// output (CSV, OMPL log, database) takes them from.
-    pub fn counter_values(&self) -> [(&'static str, u64); 19] {
+    pub fn counter_values(&self) -> [(&'static str, u64); COUNTERS] {
         counter_list(&self.counters)
     }
 
     /// The names of [`counter_values`](Self::counter_values), in order.
-    pub fn counter_names() -> [&'static str; 19] {
+    pub fn counter_names() -> [&'static str; COUNTERS] {
         counter_list(&Counters::default()).map(|(name, _)| name)
+    }
+
+    /// The real-valued counters (the estimated informed set's first and last cost, `None`
+    /// when the planner never created one) as `(property name, value)`, in a fixed order.
+    pub fn real_counter_values(&self) -> [(&'static str, Option<f64>); 2] {
+        real_counter_list(&self.counters)
+    }
+
+    /// The names of [`real_counter_values`](Self::real_counter_values), in order.
+    pub fn real_counter_names() -> [&'static str; 2] {
+        real_counter_list(&Counters::default()).map(|(name, _)| name)
     }
 }
 
-/// The counters of a planner, named.
-fn counter_list(c: &Counters) -> [(&'static str, u64); 19] {
+/// How many integer counters a run records.
+pub(crate) const COUNTERS: usize = 46;
+
+/// Names of the per-length counters: checks and points of sparse and full checks, per bucket
+/// of [`validity::LENGTH_BUCKET_BOUNDS`] (labels [`validity::LENGTH_BUCKET_LABELS`]).
+const BY_LENGTH: [[&str; 5]; 4] = [
     [
+        "sparse checks of edges under 2e3 points",
+        "sparse checks of edges of 2e3 to 1e4 points",
+        "sparse checks of edges of 1e4 to 5e4 points",
+        "sparse checks of edges of 5e4 to 2.5e5 points",
+        "sparse checks of edges of 2.5e5 points and more",
+    ],
+    [
+        "sparse points of edges under 2e3 points",
+        "sparse points of edges of 2e3 to 1e4 points",
+        "sparse points of edges of 1e4 to 5e4 points",
+        "sparse points of edges of 5e4 to 2.5e5 points",
+        "sparse points of edges of 2.5e5 points and more",
+    ],
+    [
+        "full checks of edges under 2e3 points",
+        "full checks of edges of 2e3 to 1e4 points",
+        "full checks of edges of 1e4 to 5e4 points",
+        "full checks of edges of 5e4 to 2.5e5 points",
+        "full checks of edges of 2.5e5 points and more",
+    ],
+    [
+        "full points of edges under 2e3 points",
+        "full points of edges of 2e3 to 1e4 points",
+        "full points of edges of 1e4 to 5e4 points",
+        "full points of edges of 5e4 to 2.5e5 points",
+        "full points of edges of 2.5e5 points and more",
+    ],
+];
+
+/// The real-valued counters of a planner, named.
+fn real_counter_list(c: &Counters) -> [(&'static str, Option<f64>); 2] {
+    [
+        ("estimated informed set initial cost", c.estimate_initial),
+        ("estimated informed set final cost", c.estimate_final),
+    ]
+}
+
+/// The counters of a planner, named.
+fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
+    let by_length = [
+        c.sparse_checks_by_length,
+        c.sparse_points_by_length,
+        c.full_checks_by_length,
+        c.full_points_by_length,
+    ];
+    let mut list = [("", 0); COUNTERS];
+    let named = [
         ("iterations", c.iterations),
         ("batches", c.batches),
         ("samples", c.samples),
@@ -154,7 +216,23 @@ fn counter_list(c: &Counters) -> [(&'static str, u64); 19] {
         ("graph motions", c.edges),
         ("peak graph states", c.peak_vertices),
         ("peak graph motions", c.peak_edges),
-    ]
+        ("sampler validity checks", c.sampler_checks),
+        ("sampler valid draws", c.sampler_pre_valid),
+        ("sampler gaussian repairs", c.sampler_gaussian),
+        ("sampler bridge repairs", c.sampler_bridge),
+        ("sampler failed repairs", c.sampler_restarts),
+        ("estimated informed set expansions", c.estimate_expansions),
+        ("estimated informed set batches", c.estimate_batches),
+    ];
+    list[..named.len()].copy_from_slice(&named);
+    let mut i = named.len();
+    for (names, values) in BY_LENGTH.iter().zip(by_length) {
+        for (name, value) in names.iter().zip(values) {
+            list[i] = (name, value);
+            i += 1;
+        }
+    }
+    list
 }
 
 #[cfg(test)]

@@ -524,7 +524,7 @@ where
         let mut c = self.counters.with_parts(
             <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker),
             self.validity.count(),
-            self.sampler.counters().drawn,
+            &self.sampler.counters(),
         );
         c.neighbour_queries = self.graph.neighbour_queries();
         c.vertices = self.graph.vertex_count() as u64;

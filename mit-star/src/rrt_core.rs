@@ -196,7 +196,7 @@ where
         self.counters.with_parts(
             <E as EdgeChecker<S, Counted<V>>>::counters(&self.checker),
             self.validity.count(),
-            self.sampler.counters().drawn,
+            &self.sampler.counters(),
         )
     }
 

@@ -128,7 +128,8 @@ where
         // `draw` polls `stop` before every candidate, the segment search before every point.
         loop {
             self.draws.draw(space, cost, stop, out)?;
-            if validity.is_valid(out) {
+            if self.draws.check(validity, out) {
+                self.draws.own_counters().pre_valid += 1;
                 return self.draws.returned();
             }
             self.pre.copy_from_slice(out);
@@ -136,8 +137,9 @@ where
                 .perturb(&self.step, space, &self.pre, &mut self.temp);
             if !self.draws.set.contains(space, cost, &self.temp) {
                 self.draws.reject();
-            } else if validity.is_valid(&self.temp) {
+            } else if self.draws.check(validity, &self.temp) {
                 out.copy_from_slice(&self.temp);
+                self.draws.own_counters().gaussian_valid += 1;
                 return self.draws.returned();
             }
             let segment = (self.pre.as_slice(), self.temp.as_slice());
@@ -145,8 +147,10 @@ where
                 .draws
                 .search_segment(&self.search, space, validity, segment, cost, stop, out)?
             {
+                self.draws.own_counters().bridge_found += 1;
                 return Ok(());
             }
+            self.draws.own_counters().repairs_failed += 1;
         }
     }
 

@@ -105,12 +105,12 @@ where
         // `draw` polls `stop` before every candidate.
         loop {
             self.draws.draw(space, cost, stop, &mut self.first)?;
-            if validity.is_valid(&self.first) {
+            if self.draws.check(validity, &self.first) {
                 continue;
             }
             self.draws
                 .perturb(&self.step, space, &self.first, &mut self.second);
-            if validity.is_valid(&self.second) {
+            if self.draws.check(validity, &self.second) {
                 continue;
             }
             let bridge = (self.first.as_slice(), self.second.as_slice());

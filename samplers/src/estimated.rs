@@ -57,6 +57,12 @@ pub struct Estimated<T> {
     wants_batch: bool,
     /// A sample has been drawn inside the current estimate since it last changed.
     sampled_inside: bool,
+    /// A sample has been drawn inside the estimate since the last batch ended.
+    drawn_this_batch: bool,
+    /// The estimate's first cost, its expansions and the batches drawn under it.
+    initial: Option<f64>,
+    expansions: u64,
+    batches: u64,
     /// The last feedback that could not be turned into an estimate.
     last_error: Option<SamplerError>,
 }
@@ -69,6 +75,10 @@ impl<T> Estimated<T> {
             estimate: EstimatedInformedSet::new(),
             wants_batch: false,
             sampled_inside: false,
+            drawn_this_batch: false,
+            initial: None,
+            expansions: 0,
+            batches: 0,
             last_error: None,
         }
     }
@@ -107,6 +117,10 @@ impl<T> Estimated<T> {
         self.estimate.clear();
         self.wants_batch = false;
         self.sampled_inside = false;
+        self.drawn_this_batch = false;
+        self.initial = None;
+        self.expansions = 0;
+        self.batches = 0;
         self.last_error = None;
     }
 
@@ -148,6 +162,7 @@ where
         {
             self.wants_batch = false;
             self.sampled_inside = true;
+            self.drawn_this_batch = true;
         }
         result
     }
@@ -162,14 +177,22 @@ where
     }
 
     fn counters(&self) -> SamplerCounters {
-        self.inner.counters()
+        SamplerCounters {
+            estimate_initial: self.initial,
+            estimate_current: self.estimate.cost(),
+            estimate_expansions: self.expansions,
+            estimate_batches: self.batches,
+            ..self.inner.counters()
+        }
     }
 
     fn observe_invalid_lazy_edge(&mut self, failure: LazyPathFailure) {
         self.inner.observe_invalid_lazy_edge(failure);
         if self.estimate.is_active() {
-            if self.estimate.rule() == ExpansionRule::PerInvalidEdge {
-                self.estimate.expand();
+            if self.estimate.rule() == ExpansionRule::PerInvalidEdge
+                && self.estimate.expand().is_some()
+            {
+                self.expansions += 1;
                 self.sampled_inside = false;
             }
             return;
@@ -179,7 +202,8 @@ where
             failure.edge_estimate,
             failure.cost_to_go,
         ) {
-            Ok(_) => {
+            Ok(cost) => {
+                self.initial = Some(cost);
                 self.wants_batch = true;
                 self.sampled_inside = false;
             }
@@ -189,11 +213,15 @@ where
 
     fn observe_batch_end(&mut self, solved: bool) {
         self.inner.observe_batch_end(solved);
+        if std::mem::take(&mut self.drawn_this_batch) {
+            self.batches += 1;
+        }
         if !solved
             && self.sampled_inside
             && self.estimate.rule() == ExpansionRule::PerBatch
             && self.estimate.expand().is_some()
         {
+            self.expansions += 1;
             self.sampled_inside = false;
         }
     }

@@ -99,7 +99,9 @@ where
             self.draws.draw(space, cost, stop, out)?;
             self.draws
                 .perturb(&self.step, space, out, &mut self.neighbour);
-            match (validity.is_valid(out), validity.is_valid(&self.neighbour)) {
+            let here = self.draws.check(validity, out);
+            let there = self.draws.check(validity, &self.neighbour);
+            match (here, there) {
                 (true, false) => return self.draws.returned(),
                 (false, true) => {
                     if self.draws.set.contains(space, cost, &self.neighbour) {

@@ -67,6 +67,17 @@ impl InformedDraws {
         self.counters.drawn += 1;
     }
 
+    /// Tests `x` with `validity`, counting the check.
+    pub(crate) fn check<V: StateValidity + ?Sized>(&mut self, validity: &V, x: &[f64]) -> bool {
+        self.counters.validity_checks += 1;
+        validity.is_valid(x)
+    }
+
+    /// Mutable access to the sampler's own counters (branch counts).
+    pub(crate) fn own_counters(&mut self) -> &mut SamplerCounters {
+        &mut self.counters
+    }
+
     /// Counts a candidate turned down for lying outside the informed set.
     pub(crate) fn reject(&mut self) {
         self.counters.rejected += 1;

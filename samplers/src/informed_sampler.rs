@@ -70,7 +70,7 @@ where
         // `draw` polls `stop` before every candidate, so this loop needs no poll of its own.
         loop {
             self.draws.draw(space, bound.cost(), stop, out)?;
-            if validity.is_valid(out) {
+            if self.draws.check(validity, out) {
                 return self.draws.returned();
             }
         }

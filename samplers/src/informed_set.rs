@@ -202,9 +202,9 @@ impl InformedSet {
     /// `own` counters with this set's `drawn` and `rejected` added: a sampler's total work.
     pub(crate) fn with_own(&self, own: SamplerCounters) -> SamplerCounters {
         SamplerCounters {
-            returned: own.returned,
             drawn: own.drawn + self.counters.drawn,
             rejected: own.rejected + self.counters.rejected,
+            ..own
         }
     }
 

@@ -54,8 +54,11 @@ pub enum SampleError {
     },
 }
 
-/// Counters of sampling work, for benchmarks.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// Counters of sampling work, for benchmarks and for seeing inside the parts: every sampler
+/// counts its draws and validity checks; the [`AdaptiveSampler`](crate::AdaptiveSampler) counts
+/// which branch of the paper's Alg. 2 produced each state; the [`Estimated`](crate::Estimated)
+/// wrapper reports its estimated informed set.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SamplerCounters {
     /// Valid states returned.
     pub returned: u64,
@@ -63,6 +66,25 @@ pub struct SamplerCounters {
     pub drawn: u64,
     /// Candidates rejected because they fell outside the bounds or the informed set.
     pub rejected: u64,
+    /// State validity checks the sampler made.
+    pub validity_checks: u64,
+    /// Adaptive sampler: states returned because the uniform draw `x_pre` was valid.
+    pub pre_valid: u64,
+    /// Adaptive sampler: states returned because the Gaussian neighbour `x_temp` was valid.
+    pub gaussian_valid: u64,
+    /// Adaptive sampler: states returned from the segment `x_pre → x_temp` (`x_crit`).
+    pub bridge_found: u64,
+    /// Adaptive sampler: repairs that failed (`x_temp` and every segment point invalid or
+    /// outside the set), after which it starts over from a new `x_pre`.
+    pub repairs_failed: u64,
+    /// Estimated informed set: its first cost `s̃_est = ŝ_adm · e_γ` (`None`: never created).
+    pub estimate_initial: Option<f64>,
+    /// Estimated informed set: its cost now, after every expansion.
+    pub estimate_current: Option<f64>,
+    /// Estimated informed set: expansions `s̃_est ← s̃_est · e_γ`.
+    pub estimate_expansions: u64,
+    /// Estimated informed set: batches with at least one state drawn under the estimate.
+    pub estimate_batches: u64,
 }
 
 /// Draws valid states for a planner (OMPL's `ValidStateSampler`, made informed).

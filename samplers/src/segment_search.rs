@@ -104,6 +104,7 @@ impl SegmentSearch {
                 counters.rejected += 1;
                 continue;
             }
+            counters.validity_checks += 1;
             if validity.is_valid(out) {
                 return Ok(true);
             }

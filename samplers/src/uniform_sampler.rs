@@ -66,6 +66,7 @@ where
             }
             space.sample_uniform(&mut self.rng, out);
             self.counters.drawn += 1;
+            self.counters.validity_checks += 1;
             if validity.is_valid(out) {
                 self.counters.returned += 1;
                 return Ok(());

@@ -76,7 +76,12 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         let walker = self.walker_mut();
         walker.counters_mut().sparse_checks += 1;
         let grid = EdgeGrid::new(length, walker.step());
-        walker.advance(space, validity, (a, b, grid), budget, progress, stop)
+        let before = walker.counters().points_tested;
+        let status = walker.advance(space, validity, (a, b, grid), budget, progress, stop);
+        let counters = walker.counters_mut();
+        let tested = counters.points_tested - before;
+        counters.by_length.count_sparse(grid.points(), tested);
+        status
     }
 
     /// Full check of `a → b`: tests every grid point not yet tested. Returns
@@ -94,7 +99,12 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         let walker = self.walker_mut();
         walker.counters_mut().full_checks += 1;
         let grid = walker.grid(space, a, b);
-        walker.advance(space, validity, (a, b, grid), u64::MAX, progress, stop)
+        let before = walker.counters().points_tested;
+        let status = walker.advance(space, validity, (a, b, grid), u64::MAX, progress, stop);
+        let counters = walker.counters_mut();
+        let tested = counters.points_tested - before;
+        counters.by_length.count_full(grid.points(), tested);
+        status
     }
 
     /// Certifies a whitelisted edge on a grid `factor` times finer than its own

@@ -3,7 +3,7 @@
 
 use spaces::{StateSpace, Stop};
 
-use crate::{EdgeGrid, EdgeProgress, EdgeStatus, StateValidity, ValidityError};
+use crate::{EdgeGrid, EdgeProgress, EdgeStatus, LengthBuckets, StateValidity, ValidityError};
 
 /// Counters of edge-checking work, for benchmarks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -18,6 +18,8 @@ pub struct EdgeCounters {
     pub certifications: u64,
     /// Certifications that found an invalid point the edge's own grid had missed.
     pub certification_failures: u64,
+    /// Sparse and full checks and their points, by edge length.
+    pub by_length: LengthBuckets,
 }
 
 /// Walks an edge's canonical grid in bisection order, testing states; shared by every checker.

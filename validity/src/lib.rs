@@ -42,6 +42,7 @@
 //! | [`LengthAdaptiveChecker`] | MIT*'s length-related adaptive sparse checks |
 //! | [`EdgeGrid`], [`BisectionOrder`] | the canonical grid of an edge and its bisection order |
 //! | [`EdgeProgress`], [`EdgeStatus`], [`EdgeCounters`], [`GridWalker`], [`canonical_ends`] | per-edge memory, outcomes, counters, the shared walker, the end every walk starts from |
+//! | [`LengthBuckets`], [`LENGTH_BUCKET_BOUNDS`], [`LENGTH_BUCKET_LABELS`] | checks and points by edge length |
 //! | [`ValidityError`] | malformed parameters or worlds |
 
 #![forbid(unsafe_code)]
@@ -55,6 +56,7 @@ mod error;
 mod fixed_sparse_checker;
 mod grid_walker;
 mod length_adaptive_checker;
+mod length_buckets;
 mod segment_validation;
 mod state_validity;
 mod world;
@@ -67,6 +69,7 @@ pub use error::ValidityError;
 pub use fixed_sparse_checker::FixedSparseChecker;
 pub use grid_walker::{EdgeCounters, GridWalker, STOP_POLL, canonical_ends};
 pub use length_adaptive_checker::LengthAdaptiveChecker;
+pub use length_buckets::{LENGTH_BUCKET_BOUNDS, LENGTH_BUCKET_LABELS, LengthBuckets};
 pub use segment_validation::{SegmentCause, SegmentVerdict};
 pub use state_validity::{AllValid, Counted, StateValidity};
 pub use world::{AxisBox, Lattice, TREE_THRESHOLD, World};

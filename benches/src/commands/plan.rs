@@ -268,9 +268,16 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
         r.run_time,
         r.setup_time
     );
-    say!("  counters:");
+    say!("  counters (zeros left out; `--json` has them all):");
     for (name, value) in r.counter_values() {
-        say!("    {name:<28} {value}");
+        if value != 0 {
+            say!("    {name:<48} {value}");
+        }
+    }
+    for (name, value) in r.real_counter_values() {
+        if let Some(value) = value {
+            say!("    {name:<48} {}", number(value));
+        }
     }
     if !r.path.is_empty() {
         say!("  path ({} states):", r.path.len());
