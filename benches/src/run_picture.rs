@@ -7,6 +7,7 @@ use mit_star::Snapshot;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use problems::Problem;
+use samplers::SampleOrigin;
 use validity::AxisBox;
 
 use crate::HarnessError;
@@ -15,6 +16,8 @@ use crate::plot_style::{Figure, clip_segment, save_svg_and_png};
 const OBSTACLE: RGBColor = RGBColor(110, 110, 120);
 const ANTI_OBSTACLE: RGBColor = RGBColor(200, 235, 200);
 const SAMPLE: RGBColor = RGBColor(150, 150, 150);
+const GAUSSIAN_SAMPLE: RGBColor = RGBColor(0, 160, 160);
+const BRIDGE_SAMPLE: RGBColor = RGBColor(220, 0, 170);
 const FORWARD: RGBColor = RGBColor(20, 90, 200);
 const REVERSE: RGBColor = RGBColor(255, 150, 40);
 const INFORMED: RGBColor = RGBColor(20, 140, 60);
@@ -24,7 +27,8 @@ const PATH: RGBColor = RGBColor(214, 39, 40);
 /// A picture of a planner's state after a run on a 2-D problem.
 ///
 /// Drawn: the bounds; obstacles (grey) with the gaps anti-obstacles carve out of them (light
-/// green); every sample (grey dots); the forward tree (blue); the current reverse tree (orange); the
+/// green); every sample (grey dots, or cyan for the adaptive sampler's Gaussian repairs and
+/// magenta for its bridge repairs); the forward tree (blue); the current reverse tree (orange); the
 /// informed set of the best cost (green ellipse) and MIT*'s estimated informed set (purple
 /// ellipse), clipped to the bounds; the solution path (red); start and goals.
 #[derive(Debug, Clone)]
@@ -88,15 +92,28 @@ impl RunPicture<'_> {
             (20, 10),
             ("sans-serif", 22).into_font().color(&BLACK),
         ))?;
+        let has = |o: SampleOrigin| self.snapshot.origins.contains(&o);
+        let repaired = has(SampleOrigin::Gaussian) || has(SampleOrigin::Bridge);
         let legend = [
             (ANTI_OBSTACLE, "gap (anti-obstacle)"),
-            (SAMPLE, "samples"),
+            (
+                SAMPLE,
+                if repaired {
+                    "samples as drawn"
+                } else {
+                    "samples"
+                },
+            ),
+            (GAUSSIAN_SAMPLE, "Gaussian repairs"),
+            (BRIDGE_SAMPLE, "bridge repairs"),
             (FORWARD, "forward tree"),
             (REVERSE, "reverse tree"),
             (INFORMED, "informed set"),
             (ESTIMATED, "estimated informed set"),
             (PATH, "path"),
-        ];
+        ]
+        .into_iter()
+        .filter(|(colour, _)| repaired || (*colour != GAUSSIAN_SAMPLE && *colour != BRIDGE_SAMPLE));
         let (mut x, mut y) = (20, 50);
         for (colour, label) in legend {
             let width = 40 + 7 * label.len() as i32;
@@ -179,8 +196,15 @@ impl RunPicture<'_> {
         }
         let s = self.snapshot;
         let point = |i: usize| (s.states[i][0], s.states[i][1]);
-        chart
-            .draw_series((0..s.states.len()).map(|i| Circle::new(point(i), 1, SAMPLE.filled())))?;
+        let colour = |i: usize| match s.origins.get(i) {
+            Some(SampleOrigin::Gaussian) => GAUSSIAN_SAMPLE,
+            Some(SampleOrigin::Bridge) => BRIDGE_SAMPLE,
+            _ => SAMPLE,
+        };
+        chart.draw_series((0..s.states.len()).map(|i| {
+            let size = if colour(i) == SAMPLE { 1 } else { 2 };
+            Circle::new(point(i), size, colour(i).filled())
+        }))?;
         for &(a, b) in &s.reverse_edges {
             chart.draw_series(std::iter::once(PathElement::new(
                 vec![point(a), point(b)],

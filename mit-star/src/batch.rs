@@ -136,7 +136,8 @@ where
                 .sample(&self.space, &self.validity, bound, stop, &mut sample)
             {
                 Ok(()) => {
-                    let vertex = self.new_vertex(VertexKind::Sample, &sample);
+                    let mut vertex = self.new_vertex(VertexKind::Sample, &sample);
+                    vertex.origin = self.sampler.last_origin();
                     ids.push(self.graph.add_vertex(&sample, vertex));
                     // Large batches are indexed as they grow (nearest-neighbour trees built
                     // in polled steps), not in one unpolled piece at the end.
@@ -146,7 +147,9 @@ where
                         committed = ids.len();
                     }
                 }
-                Err(SampleError::EmptySet { .. }) => {
+                // Only a solution's informed set can be empty for good (its cost is the
+                // straight-line cost); an estimate is no bound.
+                Err(SampleError::EmptySet { .. }) if matches!(bound, CostBound::Solution(_)) => {
                     self.exhausted = true;
                     break;
                 }

@@ -168,7 +168,9 @@ pub(crate) fn configuration_name(guidance: &str, sampler: &str, checker: &str) -
         ("cost-informed", s, c) => format!("AIT*[{s} sampler, {c} checks]"),
         ("a-priori", "informed", "dense") => "BIT*".into(),
         ("a-priori", s, c) => format!("BIT*[{s} sampler, {c} checks]"),
-        ("effort-informed+suspending", s, c) => format!("EIT*[suspending, {s} sampler, {c} checks]"),
+        ("effort-informed+suspending", s, c) => {
+            format!("EIT*[suspending, {s} sampler, {c} checks]")
+        }
         (g, s, c) => format!("Eit[{g} guidance, {s} sampler, {c} checks]"),
     }
 }

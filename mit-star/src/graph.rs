@@ -292,6 +292,14 @@ impl RandomGeometricGraph {
             .map(|x| x.kind)
     }
 
+    /// Which step of the sampler produced a vertex's state ([`SampleOrigin::Drawn`](samplers::SampleOrigin) for
+    /// the start, the goals and ids not in use).
+    pub fn origin(&self, v: VertexId) -> samplers::SampleOrigin {
+        self.graph
+            .node_weight(NodeIndex::new(v.index()))
+            .map_or(samplers::SampleOrigin::Drawn, |x| x.origin)
+    }
+
     /// The cost-to-come of a vertex in the forward tree (∞ if not in it).
     pub fn cost_to_come(&self, v: VertexId) -> f64 {
         self.graph

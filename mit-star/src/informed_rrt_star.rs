@@ -251,6 +251,7 @@ where
         solution.reverse();
         Some(Snapshot {
             states: self.tree.states().clone(),
+            origins: vec![samplers::SampleOrigin::Drawn; kinds.len()],
             kinds,
             forward_edges,
             reverse_edges: Vec::new(),

@@ -385,6 +385,7 @@ where
         let [forward_edges, reverse_edges] = edges;
         Some(Snapshot {
             states,
+            origins: vec![samplers::SampleOrigin::Drawn; kinds.len()],
             kinds,
             forward_edges,
             reverse_edges,

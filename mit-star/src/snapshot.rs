@@ -37,6 +37,8 @@ pub struct Snapshot {
     pub states: States,
     /// What each vertex stands for.
     pub kinds: Vec<VertexKind>,
+    /// Which step of the sampler produced each vertex (the adaptive sampler's branches).
+    pub origins: Vec<samplers::SampleOrigin>,
     /// Forward-tree edges as `(parent, child)` indices into `states`.
     pub forward_edges: Vec<(usize, usize)>,
     /// Edges of the current reverse tree as `(parent, child)` indices into `states`; the parent
@@ -67,10 +69,12 @@ where
         let mut position = vec![NONE as usize; graph.graph.node_bound()];
         let mut states = States::with_capacity(dimension, graph.vertex_count());
         let mut kinds = Vec::with_capacity(graph.vertex_count());
+        let mut origins = Vec::with_capacity(graph.vertex_count());
         for (i, (id, state)) in graph.vertices().enumerate() {
             position[id.index()] = i;
             states.push(state);
             kinds.push(graph.kind(id).unwrap_or(VertexKind::Sample));
+            origins.push(graph.origin(id));
         }
         let at = |id: u32| {
             position
@@ -99,6 +103,7 @@ where
         Snapshot {
             states,
             kinds,
+            origins,
             forward_edges,
             reverse_edges,
             solution,

@@ -37,6 +37,8 @@ pub enum VertexKind {
 #[derive(Debug, Clone)]
 pub(crate) struct Vertex {
     pub(crate) kind: VertexKind,
+    /// Which step of the sampler produced the state (pictures).
+    pub(crate) origin: samplers::SampleOrigin,
     /// `ĝ(x) = ĉ(start, x)`, the admissible cost-to-come bound.
     pub(crate) cost_to_come_bound: f64,
     /// `ĉ(x, goals)`, the admissible cost-to-go bound.
@@ -85,6 +87,7 @@ impl Vertex {
     ) -> Self {
         Self {
             kind,
+            origin: samplers::SampleOrigin::Drawn,
             cost_to_come_bound,
             cost_to_go_bound,
             effort_from_start,

@@ -5,8 +5,8 @@ use validity::StateValidity;
 
 use crate::informed_draws::InformedDraws;
 use crate::{
-    CostBound, GaussianStep, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError,
-    SegmentSearch,
+    CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, Sampler, SamplerCounters,
+    SamplerError, SegmentSearch,
 };
 
 /// MIT*'s adaptive sampler: uniform informed samples, repaired near obstacles.
@@ -130,6 +130,7 @@ where
             self.draws.draw(space, cost, stop, out)?;
             if self.draws.check(validity, out) {
                 self.draws.own_counters().pre_valid += 1;
+                self.draws.origin = SampleOrigin::Drawn;
                 return self.draws.returned();
             }
             self.pre.copy_from_slice(out);
@@ -140,6 +141,7 @@ where
             } else if self.draws.check(validity, &self.temp) {
                 out.copy_from_slice(&self.temp);
                 self.draws.own_counters().gaussian_valid += 1;
+                self.draws.origin = SampleOrigin::Gaussian;
                 return self.draws.returned();
             }
             let segment = (self.pre.as_slice(), self.temp.as_slice());
@@ -148,6 +150,7 @@ where
                 .search_segment(&self.search, space, validity, segment, cost, stop, out)?
             {
                 self.draws.own_counters().bridge_found += 1;
+                self.draws.origin = SampleOrigin::Bridge;
                 return Ok(());
             }
             self.draws.own_counters().repairs_failed += 1;
@@ -164,6 +167,10 @@ where
 
     fn counters(&self) -> SamplerCounters {
         self.draws.counters()
+    }
+
+    fn last_origin(&self) -> SampleOrigin {
+        self.draws.origin
     }
 }
 

@@ -5,8 +5,8 @@ use validity::StateValidity;
 
 use crate::informed_draws::InformedDraws;
 use crate::{
-    CostBound, GaussianStep, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError,
-    SegmentSearch,
+    CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, Sampler, SamplerCounters,
+    SamplerError, SegmentSearch,
 };
 
 /// The bridge test (Hsu, Jiang, Reif & Sun 2003; OMPL's `BridgeTestValidStateSampler`):
@@ -133,5 +133,9 @@ where
 
     fn counters(&self) -> SamplerCounters {
         self.draws.counters()
+    }
+
+    fn last_origin(&self) -> SampleOrigin {
+        SampleOrigin::Bridge
     }
 }

@@ -5,7 +5,7 @@ use validity::StateValidity;
 
 use crate::{
     CostBound, EstimatedInformedSet, ExpansionForm, ExpansionRule, LazyPathFailure, SampleError,
-    Sampler, SamplerCounters, SamplerError,
+    SampleOrigin, Sampler, SamplerCounters, SamplerError,
 };
 
 /// Wraps a sampler and steers it with MIT*'s estimated informed set (spec §6, paper Alg. 3).
@@ -155,7 +155,14 @@ where
         out: &mut [f64],
     ) -> Result<(), SampleError> {
         let effective = self.effective(bound);
-        let result = self.inner.sample(space, validity, effective, stop, out);
+        let mut result = self.inner.sample(space, validity, effective, stop, out);
+        if matches!(result, Err(SampleError::EmptySet { .. }))
+            && matches!(effective, CostBound::Estimated(_))
+        {
+            // An estimate at or below the straight-line cost holds no state: it is a guess, not
+            // a bound, so sample as if there were none rather than stop the planner.
+            result = self.inner.sample(space, validity, bound, stop, out);
+        }
         if result.is_ok()
             && matches!(effective, CostBound::Estimated(_))
             && self.estimate.is_active()
@@ -232,6 +239,10 @@ where
 
     fn estimated_cost(&self) -> Option<f64> {
         self.estimate.cost().or_else(|| self.inner.estimated_cost())
+    }
+
+    fn last_origin(&self) -> SampleOrigin {
+        self.inner.last_origin()
     }
 }
 

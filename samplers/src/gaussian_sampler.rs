@@ -5,7 +5,8 @@ use validity::StateValidity;
 
 use crate::informed_draws::InformedDraws;
 use crate::{
-    CostBound, GaussianStep, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError,
+    CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, Sampler, SamplerCounters,
+    SamplerError,
 };
 
 /// Gaussian sampling (Boor, Overmars & van der Stappen 1999; OMPL's
@@ -102,10 +103,14 @@ where
             let here = self.draws.check(validity, out);
             let there = self.draws.check(validity, &self.neighbour);
             match (here, there) {
-                (true, false) => return self.draws.returned(),
+                (true, false) => {
+                    self.draws.origin = SampleOrigin::Drawn;
+                    return self.draws.returned();
+                }
                 (false, true) => {
                     if self.draws.set.contains(space, cost, &self.neighbour) {
                         out.copy_from_slice(&self.neighbour);
+                        self.draws.origin = SampleOrigin::Gaussian;
                         return self.draws.returned();
                     }
                     self.draws.reject();
@@ -125,5 +130,9 @@ where
 
     fn counters(&self) -> SamplerCounters {
         self.draws.counters()
+    }
+
+    fn last_origin(&self) -> SampleOrigin {
+        self.draws.origin
     }
 }

@@ -6,7 +6,8 @@ use spaces::{SeededRng, StateSpace, Stop};
 use validity::StateValidity;
 
 use crate::{
-    CostBound, GaussianStep, InformedSet, SampleError, SamplerCounters, SamplerError, SegmentSearch,
+    CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, SamplerCounters, SamplerError,
+    SegmentSearch,
 };
 
 /// The informed set a sampler draws from, its seeded generator and its own counters (the set
@@ -17,6 +18,8 @@ pub(crate) struct InformedDraws {
     pub(crate) set: InformedSet,
     rng: SeededRng,
     counters: SamplerCounters,
+    /// Which step produced the last state returned (kept by samplers with several steps).
+    pub(crate) origin: SampleOrigin,
 }
 
 impl InformedDraws {
@@ -38,6 +41,7 @@ impl InformedDraws {
             set: InformedSet::new(space, start, goals)?,
             rng: SeededRng::seed_from_u64(seed),
             counters: SamplerCounters::default(),
+            origin: SampleOrigin::Drawn,
         })
     }
 

@@ -37,7 +37,7 @@
 //! # Catalogue
 //! | item | what it is |
 //! |---|---|
-//! | [`Sampler`], [`CostBound`], [`SampleError`], [`SamplerCounters`] | the trait, the bound a planner passes, why no state came back, work counters |
+//! | [`Sampler`], [`CostBound`], [`SampleError`], [`SamplerCounters`], [`SampleOrigin`] | the trait, the bound a planner passes, why no state came back, work counters, which step made a state |
 //! | [`UniformSampler`] | uniform over the whole space, bound ignored (the uninformed baseline) |
 //! | [`InformedSampler`] | uniform over the informed set of the bound: direct informed sampling, and MIT*'s estimated-informed-set sampler under [`CostBound::Estimated`] |
 //! | [`GaussianSampler`] | Boor et al.'s Gaussian sampling near obstacle boundaries, within the informed set |
@@ -76,6 +76,8 @@ pub use gaussian_step::GaussianStep;
 pub use hyperspheroid::prolate_hyperspheroid_measure;
 pub use informed_sampler::InformedSampler;
 pub use informed_set::InformedSet;
-pub use sampler::{CostBound, LazyPathFailure, SampleError, Sampler, SamplerCounters};
+pub use sampler::{
+    CostBound, LazyPathFailure, SampleError, SampleOrigin, Sampler, SamplerCounters,
+};
 pub use segment_search::SegmentSearch;
 pub use uniform_sampler::UniformSampler;

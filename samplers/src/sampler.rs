@@ -87,6 +87,22 @@ pub struct SamplerCounters {
     pub estimate_batches: u64,
 }
 
+/// Which step of a sampler produced a state: for pictures and counters of what the obstacle-
+/// based samplers do.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+pub enum SampleOrigin {
+    /// Drawn (uniformly, or from an informed set) and valid as drawn: the adaptive sampler's
+    /// `x_pre`, and every state of the uniform and informed samplers.
+    #[default]
+    Drawn,
+    /// A Gaussian neighbour of an invalid draw: the adaptive sampler's `x_temp`, the Gaussian
+    /// sampler's valid partner.
+    Gaussian,
+    /// A point between two states found on a segment: the adaptive sampler's `x_crit`, the
+    /// bridge sampler's midpoint.
+    Bridge,
+}
+
 /// Draws valid states for a planner (OMPL's `ValidStateSampler`, made informed).
 ///
 /// A sampler is seeded and owns its random generator: the same seed gives the same sequence of
@@ -145,6 +161,11 @@ pub trait Sampler<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     fn estimated_cost(&self) -> Option<f64> {
         None
     }
+
+    /// Which step produced the state the last successful [`sample`](Self::sample) returned.
+    fn last_origin(&self) -> SampleOrigin {
+        SampleOrigin::Drawn
+    }
 }
 
 /// Where a lazy path failed: the forward edge `x_s → x_t` found invalid by a full check.
@@ -194,5 +215,8 @@ where
     }
     fn estimated_cost(&self) -> Option<f64> {
         (**self).estimated_cost()
+    }
+    fn last_origin(&self) -> SampleOrigin {
+        (**self).last_origin()
     }
 }

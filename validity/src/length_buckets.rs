@@ -9,8 +9,13 @@
 pub const LENGTH_BUCKET_BOUNDS: [u64; 4] = [2_000, 10_000, 50_000, 250_000];
 
 /// Short labels of the five buckets, for output columns.
-pub const LENGTH_BUCKET_LABELS: [&str; 5] =
-    ["under 2e3", "2e3 to 1e4", "1e4 to 5e4", "5e4 to 2.5e5", "2.5e5 and more"];
+pub const LENGTH_BUCKET_LABELS: [&str; 5] = [
+    "under 2e3",
+    "2e3 to 1e4",
+    "1e4 to 5e4",
+    "5e4 to 2.5e5",
+    "2.5e5 and more",
+];
 
 /// Sparse and full edge checks and the grid points they tested, by the edge's length in grid
 /// points ([`LENGTH_BUCKET_BOUNDS`]): where a checker spends its work.
