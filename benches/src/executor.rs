@@ -108,6 +108,10 @@ impl Executor {
             experiment.seed,
         )
         .into_iter()
+        .map(|job| RunJob {
+            first_solution: experiment.first_solution,
+            ..job
+        })
         .filter(|job| {
             let key = (
                 instances[job.instance].id.clone(),

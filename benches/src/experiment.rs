@@ -18,7 +18,7 @@ use crate::{
 /// ```
 /// use mit_star_benches::Experiment;
 /// let e = Experiment::shipped("ablation")?;
-/// assert_eq!(e.planners.len(), 5);
+/// assert_eq!(e.planners.len(), 6);
 /// let ids: Vec<String> = e.instances()?.into_iter().map(|i| i.id).collect();
 /// assert_eq!(ids, ["goal-enclosure-n2", "dividing-walls-n4"]);
 /// # Ok::<(), mit_star_benches::HarnessError>(())
@@ -39,6 +39,10 @@ pub struct Experiment {
     pub seed: u64,
     /// Confidence of the medians' and success rates' intervals, in `(0, 1)`.
     pub confidence: f64,
+    /// Each run stops at its first solution (or its budget, whichever comes first): for
+    /// studies of the time and work to a first solution, where the anytime phase would only
+    /// cost machine time. The counters then measure the work to the first solution.
+    pub first_solution: bool,
 }
 
 impl Experiment {
@@ -220,6 +224,9 @@ impl Experiment {
         t.insert("runs".into(), (self.runs as i64).into());
         t.insert("seed".into(), (self.seed as i64).into());
         t.insert("confidence".into(), self.confidence.into());
+        if self.first_solution {
+            t.insert("first_solution".into(), true.into());
+        }
         let planners: Vec<toml::Value> = self
             .planners
             .iter()

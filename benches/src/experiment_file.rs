@@ -7,6 +7,7 @@
 //! runs = 100                          # runs per planner and problem instance (default 100)
 //! seed = 0                            # run i uses seed + i (default 0)
 //! confidence = 0.99                   # of medians' and success rates' intervals (default 0.99)
+//! first_solution = false              # stop each run at its first solution (default false)
 //! planners = ["eit-star", "mit-star"] # configuration names, or tables:
 //!
 //! [parameters]                        # overrides for every planner (optional)
@@ -51,6 +52,8 @@ pub struct ExperimentFile {
     pub seed: Option<u64>,
     /// Confidence of the intervals.
     pub confidence: Option<f64>,
+    /// Stop each run at its first solution.
+    pub first_solution: Option<bool>,
     /// Overrides for every planner.
     #[serde(default)]
     pub parameters: toml::Table,
@@ -224,6 +227,7 @@ impl ExperimentFile {
             runs: self.runs.unwrap_or(100),
             seed: self.seed.unwrap_or(0),
             confidence: self.confidence.unwrap_or(0.99),
+            first_solution: self.first_solution.unwrap_or(false),
         };
         experiment.validate(origin)?;
         Ok(experiment)

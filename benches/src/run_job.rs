@@ -4,7 +4,10 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-use mit_star::{Counters, Planner, Progress, Termination, TerminationExt, TimeLimit, TracePoint};
+use mit_star::{
+    Counters, FirstSolution, Planner, Progress, Termination, TerminationExt, TimeLimit,
+    TracePoint,
+};
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use spaces::SeededRng;
@@ -30,6 +33,8 @@ pub struct RunJob {
     pub run: usize,
     /// The planner's seed, `base_seed + i`.
     pub seed: u64,
+    /// Stop at the first solution ([`Experiment::first_solution`](crate::Experiment)).
+    pub first_solution: bool,
 }
 
 /// Stops a run when the experiment is interrupted (Ctrl-C).
@@ -69,6 +74,7 @@ impl RunJob {
                     planner,
                     run,
                     seed,
+                    first_solution: false,
                 }));
             }
         }
@@ -194,7 +200,11 @@ impl RunJob {
         let setup = started.elapsed();
         record.setup_time = setup.as_secs_f64();
         let stop = TimeLimit::until(deadline).or(Interrupted(interrupt));
-        let outcome = built.solve(&stop);
+        let outcome = if self.first_solution {
+            built.solve(&stop.or(FirstSolution))
+        } else {
+            built.solve(&stop)
+        };
         record.run_time = started.elapsed().as_secs_f64();
         if interrupt.load(Ordering::Relaxed) {
             return None;

@@ -201,6 +201,13 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
+    /// Whether a new estimated informed set asks for a batch at once (default `true`; see
+    /// [`Parameters::eis_immediate_batch`]).
+    pub fn eis_immediate_batch(mut self, immediate: bool) -> Self {
+        self.parameters.eis_immediate_batch = immediate;
+        self
+    }
+
     /// The BIT*-family inflation and truncation (ABIT*; see [`Parameters::initial_inflation`],
     /// [`inflation_scaling`](Parameters::inflation_scaling) and
     /// [`truncation_scaling`](Parameters::truncation_scaling)). Only the a-priori guidance

@@ -123,7 +123,8 @@ impl<S: StateSpace, T: SamplerPart<S>> SamplerPart<S> for Estimated<T> {
     ) -> Result<Self, BuildError> {
         Ok(Estimated::new(T::build_part(space, start, goals, p)?)
             .with_form(p.eis_expansion_form)
-            .with_rule(p.eis_expansion_rule))
+            .with_rule(p.eis_expansion_rule)
+            .with_immediate_batch(p.eis_immediate_batch))
     }
 }
 

@@ -175,9 +175,15 @@ where
         let tag = self.reverse_tag;
         let x = self.graph.vertex(u);
         let y = self.graph.vertex(v);
-        let lazy = x.reverse_parent(tag) == v || y.reverse_parent(tag) == u;
-        if lazy {
+        if x.reverse_parent(tag) == v {
+            // The lazy path u → v → … → goal: ŝ_adm = g(u) + ĉ(u, v) + ĥ(v).
             self.repair_lazy_path(g_u, cost, h_v, stop);
+        } else if y.reverse_parent(tag) == u {
+            // The edge hangs below u in the reverse tree, so u's own lazy path does not use
+            // it: ŝ_adm = g(u) + ĥ(u) (the authors' form), not g(u) + ĉ + ĥ(v) = g(u) + 2ĉ +
+            // ĥ(u).
+            let h_u = x.h(tag);
+            self.repair_lazy_path(g_u, 0.0, h_u, stop);
         }
     }
 

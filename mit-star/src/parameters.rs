@@ -69,6 +69,10 @@ pub struct Parameters {
     pub eis_expansion_form: EisExpansionForm,
     /// When the estimated informed set expands.
     pub eis_expansion_rule: EisExpansionRule,
+    /// A new estimated informed set asks for a batch drawn in it at once (`true`: the MIT*
+    /// authors' code, spec §3.1 step 1), or bounds the next batch the search asks for
+    /// (`false`: the paper's Alg. 1).
+    pub eis_immediate_batch: bool,
     /// Certify every edge on a grid this many times finer than the check step before it joins
     /// the forward tree (1: no certification; `None`: the problem's
     /// [`certification`](problems::PlanningProblem::certification), 4 for arms). Not in the
@@ -111,6 +115,7 @@ impl Default for Parameters {
             sparse_min_steps: 10.0,
             eis_expansion_form: EisExpansionForm::Paper,
             eis_expansion_rule: EisExpansionRule::PerBatch,
+            eis_immediate_batch: true,
             certification: None,
             range: None,
             goal_bias: 0.05,
@@ -292,6 +297,7 @@ impl Parameters {
             ("sparse_min_steps", self.sparse_min_steps.to_string()),
             ("eis_expansion_form", form.to_string()),
             ("eis_expansion_rule", rule.to_string()),
+            ("eis_immediate_batch", self.eis_immediate_batch.to_string()),
             (
                 "range",
                 self.range

@@ -57,6 +57,8 @@ pub struct Estimated<T> {
     wants_batch: bool,
     /// A sample has been drawn inside the current estimate since it last changed.
     sampled_inside: bool,
+    /// Ask for a batch as soon as an estimate is created (spec §3.1, step 1).
+    immediate_batch: bool,
     /// A sample has been drawn inside the estimate since the last batch ended.
     drawn_this_batch: bool,
     /// The estimate's first cost, its expansions and the batches drawn under it.
@@ -75,6 +77,7 @@ impl<T> Estimated<T> {
             estimate: EstimatedInformedSet::new(),
             wants_batch: false,
             sampled_inside: false,
+            immediate_batch: true,
             drawn_this_batch: false,
             initial: None,
             expansions: 0,
@@ -94,6 +97,16 @@ impl<T> Estimated<T> {
     #[must_use]
     pub fn with_rule(mut self, rule: ExpansionRule) -> Self {
         self.estimate = self.estimate.with_rule(rule);
+        self
+    }
+
+    /// Whether a new estimate asks the planner for a batch at once
+    /// ([`wants_batch`](Sampler::wants_batch); default `true`, the MIT* authors' code and
+    /// spec §3.1 step 1). With `false` the estimate first bounds the batch the planner adds
+    /// when its search of the current one is exhausted, as the paper's Alg. 1 reads.
+    #[must_use]
+    pub fn with_immediate_batch(mut self, immediate: bool) -> Self {
+        self.immediate_batch = immediate;
         self
     }
 
@@ -211,7 +224,7 @@ where
         ) {
             Ok(cost) => {
                 self.initial = Some(cost);
-                self.wants_batch = true;
+                self.wants_batch = self.immediate_batch;
                 self.sampled_inside = false;
             }
             Err(error) => self.last_error = Some(error),

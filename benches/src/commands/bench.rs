@@ -63,6 +63,10 @@ pub struct BenchArgs {
     /// Confidence of the medians' and success rates' intervals (default 0.99).
     #[arg(long)]
     pub confidence: Option<f64>,
+    /// Stop each run at its first solution (or its budget): a study of the time and work to
+    /// a first solution.
+    #[arg(long)]
+    pub first_solution: bool,
     /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
@@ -127,6 +131,7 @@ impl BenchArgs {
         if let Some(confidence) = self.confidence {
             experiment.confidence = confidence;
         }
+        experiment.first_solution |= self.first_solution;
         experiment.validate("command line")?;
         Ok(experiment)
     }
@@ -222,6 +227,7 @@ impl BenchArgs {
             runs: 100,
             seed: 0,
             confidence: 0.99,
+            first_solution: false,
         })
     }
 

@@ -143,6 +143,7 @@ impl PlanArgs {
             planner: 0,
             run: 0,
             seed: self.seed,
+            first_solution: false,
         };
         // Build once, on the run's clock: construction counts against the budget.
         let started = Instant::now();
