@@ -8,7 +8,10 @@ use crate::HarnessError;
 /// ```
 /// use mit_star_benches::ShippedExperiment;
 /// let names: Vec<&str> = ShippedExperiment::all().iter().map(|e| e.name).collect();
-/// assert_eq!(names, ["paper-table", "ablation", "smoke", "panda-mbm", "paper-planners"]);
+/// assert_eq!(
+///     names,
+///     ["paper-table", "ablation", "ablation-study", "smoke", "panda-mbm", "paper-planners"]
+/// );
 /// assert!(ShippedExperiment::find("smoke")?.text.contains("[[problems]]"));
 /// # Ok::<(), mit_star_benches::HarnessError>(())
 /// ```
@@ -24,7 +27,7 @@ pub struct ShippedExperiment {
     pub data: Option<&'static str>,
 }
 
-static SHIPPED: [ShippedExperiment; 5] = [
+static SHIPPED: [ShippedExperiment; 6] = [
     ShippedExperiment {
         name: "paper-table",
         summary: "the paper's Table I: MIT* vs EIT* on FG, RR (10 layouts), DW and GE, the paper's budgets, 100 runs",
@@ -33,8 +36,14 @@ static SHIPPED: [ShippedExperiment; 5] = [
     },
     ShippedExperiment {
         name: "ablation",
-        summary: "the paper's ablation: all five configurations on GE R^2 (0.01 s) and DW R^4 (0.07 s), 100 runs",
+        summary: "the paper's ablation: MIT*, EIT*, MIT*-AS, MIT*-EIS, MIT*-SC and MIT*-SR on GE R^2 (0.01 s) and DW R^4 (0.07 s), 100 runs",
         text: include_str!("../experiments/ablation.toml"),
+        data: None,
+    },
+    ShippedExperiment {
+        name: "ablation-study",
+        summary: "the ablation study of docs/ablation.md: the six configurations to their first solution on GE R^2/R^4, DW R^4/R^8, FG R^4, 200 runs (about 3 minutes on 2 cores)",
+        text: include_str!("../experiments/ablation-study.toml"),
         data: None,
     },
     ShippedExperiment {

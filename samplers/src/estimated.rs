@@ -182,7 +182,10 @@ where
         {
             self.wants_batch = false;
             self.sampled_inside = true;
-            self.drawn_this_batch = true;
+            if !self.drawn_this_batch {
+                self.drawn_this_batch = true;
+                self.batches += 1;
+            }
         }
         result
     }
@@ -233,9 +236,7 @@ where
 
     fn observe_batch_end(&mut self, solved: bool) {
         self.inner.observe_batch_end(solved);
-        if std::mem::take(&mut self.drawn_this_batch) {
-            self.batches += 1;
-        }
+        self.drawn_this_batch = false;
         if !solved
             && self.sampled_inside
             && self.estimate.rule() == ExpansionRule::PerBatch

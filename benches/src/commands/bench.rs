@@ -25,7 +25,7 @@ use crate::{
 pub struct BenchArgs {
     /// An experiment file (TOML); see `mit-star experiments --print smoke` for the format.
     pub file: Option<PathBuf>,
-    /// A shipped experiment: paper-table, ablation, smoke, panda-mbm, paper-planners (`mit-star experiments` lists them).
+    /// A shipped experiment: paper-table, ablation, ablation-study, smoke, panda-mbm, paper-planners (`mit-star experiments` lists them).
     #[arg(long, short, conflicts_with = "file")]
     pub experiment: Option<String>,
     /// Planner configurations, comma separated (flags mode; default mit-star,eit-star).
@@ -63,6 +63,10 @@ pub struct BenchArgs {
     /// Confidence of the medians' and success rates' intervals (default 0.99).
     #[arg(long)]
     pub confidence: Option<f64>,
+    /// Run only these planners of the experiment: configuration names (`mit-star`) or planner
+    /// names (`MIT*`), comma separated.
+    #[arg(long, value_delimiter = ',', value_name = "PLANNERS")]
+    pub only: Vec<String>,
     /// Stop each run at its first solution (or its budget): a study of the time and work to
     /// a first solution.
     #[arg(long)]
@@ -132,6 +136,30 @@ impl BenchArgs {
             experiment.confidence = confidence;
         }
         experiment.first_solution |= self.first_solution;
+        if !self.only.is_empty() {
+            let known: Vec<String> = experiment
+                .planners
+                .iter()
+                .map(|p| format!("{} ({})", p.configuration().name(), p.name()))
+                .collect();
+            for wanted in &self.only {
+                if !experiment
+                    .planners
+                    .iter()
+                    .any(|p| p.name() == wanted || p.configuration().name() == wanted)
+                {
+                    return Err(HarnessError::Usage(format!(
+                        "--only {wanted}: the experiment has no such planner; it has {}",
+                        known.join(", ")
+                    )));
+                }
+            }
+            experiment.planners.retain(|p| {
+                self.only
+                    .iter()
+                    .any(|w| p.name() == w || p.configuration().name() == w)
+            });
+        }
         experiment.validate("command line")?;
         Ok(experiment)
     }
