@@ -5,8 +5,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use mit_star::{
-    Counters, FirstSolution, Planner, Progress, Termination, TerminationExt, TimeLimit,
-    TracePoint,
+    Counters, FirstSolution, Planner, Progress, Termination, TerminationExt, TimeLimit, TracePoint,
 };
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
@@ -295,6 +294,7 @@ mod tests {
             planner: 0,
             run: 3,
             seed: 3,
+            first_solution: false,
         };
         let r = job
             .execute(&instance, &planner, &AtomicBool::new(false))
@@ -313,5 +313,39 @@ mod tests {
             job.execute(&instance, &planner, &AtomicBool::new(true))
                 .is_none()
         );
+    }
+
+    #[test]
+    fn a_first_solution_run_stops_at_its_first_solution() {
+        let instance = ProblemSpec {
+            source: ProblemSource::parse("dividing-walls", None).unwrap(),
+            dimensions: vec![2],
+            budgets: vec![5.0],
+            instances: vec![0],
+            resolution: Some(1e-4),
+        }
+        .instances()
+        .unwrap()
+        .remove(0);
+        let planner = PlannerSpec::new(
+            mit_star::Configuration::MitStar,
+            None,
+            &ParameterOverrides::default(),
+        )
+        .unwrap();
+        let job = RunJob {
+            instance: 0,
+            planner: 0,
+            run: 0,
+            seed: 1,
+            first_solution: true,
+        };
+        let r = job
+            .execute(&instance, &planner, &AtomicBool::new(false))
+            .unwrap();
+        assert_eq!(r.status, RunStatus::Solved, "{r:?}");
+        // One solution and no anytime phase (5 s of it would improve the first path).
+        assert_eq!(r.trace.len(), 1);
+        assert_eq!(r.initial_cost, r.final_cost);
     }
 }

@@ -304,6 +304,7 @@ mod tests {
         let snapshot = Snapshot {
             states: spaces::States::new(3),
             kinds: Vec::new(),
+            origins: Vec::new(),
             forward_edges: Vec::new(),
             reverse_edges: Vec::new(),
             solution: Vec::new(),

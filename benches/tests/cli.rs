@@ -356,3 +356,44 @@ fn bench_with_flags_writes_a_results_folder() {
         assert!(dir.join(f).exists(), "{f}");
     }
 }
+
+#[test]
+fn only_runs_some_planners_of_an_experiment_to_their_first_solution() {
+    refused(
+        &["bench", "--experiment", "ablation", "--only", "rrt-star"],
+        &["--only rrt-star", "mit-star-sc (MIT*-SC)"],
+    );
+    let dir = scratch("only");
+    succeeded(&[
+        "bench",
+        "--experiment",
+        "ablation",
+        "--only",
+        "mit-star,EIT*",
+        "--first-solution",
+        "--runs",
+        "2",
+        "--no-plots",
+        "-q",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    let recorded = std::fs::read_to_string(dir.join("experiment.toml")).unwrap();
+    assert!(recorded.contains("first_solution = true"), "{recorded}");
+    let csv = std::fs::read_to_string(dir.join("runs.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    // Two planners × two problems × two runs, none of them another planner.
+    assert_eq!(rows.len(), 8, "{csv}");
+    assert!(
+        rows.iter()
+            .all(|r| r.contains(",MIT*,") || r.contains(",EIT*,"))
+    );
+    let header = csv.lines().next().unwrap();
+    for column in [
+        "sampler_gaussian_repairs",
+        "estimated_informed_set_initial_cost",
+        "full_points_of_edges_of_1e4_to_5e4_points",
+    ] {
+        assert!(header.contains(column), "{column} not in {header}");
+    }
+}

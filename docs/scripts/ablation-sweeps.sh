@@ -3,7 +3,9 @@
 # GE R^2/R^4, DW R^4/R^8, FG R^4) with one parameter changed at a time, for the
 # configurations it affects. Results go to results/ablation-sweeps/<sweep>; summarise with
 #   python3 docs/scripts/ablation-summary.py results/ablation-sweeps/*
-# Runs one at a time (--threads 1), so that times compare; about 25 minutes on 2 cores.
+# Runs one at a time (--threads 1). Times drift between sweeps on a shared machine by 10 % or
+# more, so every sweep runs EIT* as its own reference; compare times within a sweep and work
+# (grid points) across sweeps. About 30 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cargo build --release -p mit-star-benches
@@ -19,15 +21,15 @@ run() { # name planners [--set k=v ...]
 }
 [ -d "$out/base" ] || run base mit-star,eit-star,mit-star-as,mit-star-eis,mit-star-sc,mit-star-sr
 # The estimated informed set: when it asks for a batch, how e_γ is computed, when it expands.
-run eis-no-immediate-batch mit-star,mit-star-eis --set eis_immediate_batch=false
-run eis-authors-form mit-star,mit-star-eis --set eis_expansion_form=authors
-run eis-per-invalid-edge mit-star,mit-star-eis --set eis_expansion_rule=per-invalid-edge
+run eis-no-immediate-batch mit-star,eit-star,mit-star-eis --set eis_immediate_batch=false
+run eis-authors-form mit-star,eit-star,mit-star-eis --set eis_expansion_form=authors
+run eis-per-invalid-edge mit-star,eit-star,mit-star-eis --set eis_expansion_rule=per-invalid-edge
 # The adaptive sampler: the Gaussian standard deviation δ and the bridge-check budget.
 for d in 0.02 0.05 0.2; do
-  run "delta-$d" mit-star,mit-star-as --set gaussian_std_fraction=$d
+  run "delta-$d" mit-star,eit-star,mit-star-as --set gaussian_std_fraction=$d
 done
 for b in 1 16; do
-  run "bridge-$b" mit-star,mit-star-as --set bridge_checks=$b
+  run "bridge-$b" mit-star,eit-star,mit-star-as --set bridge_checks=$b
 done
 # Smaller batches: first solutions after several batches, where sampling parts can act.
 for q in 25 50; do

@@ -217,10 +217,16 @@ mod tests {
         let mut uniform = crate::UniformSampler::new(4);
         let mut x = [0.0; 2];
         let samples = 300;
+        let mut tally = [0u64; 3];
         for _ in 0..samples {
             adaptive
                 .sample(&space, &world, CostBound::Unbounded, &Never, &mut x)
                 .unwrap();
+            match Sampler::<RealVectorSpace, World>::last_origin(&adaptive) {
+                SampleOrigin::Drawn => tally[0] += 1,
+                SampleOrigin::Gaussian => tally[1] += 1,
+                SampleOrigin::Bridge => tally[2] += 1,
+            }
             assert!(
                 world.is_valid(&x) && (x[1] - 0.5).abs() <= 0.01 + 1e-9,
                 "{x:?}"
@@ -229,6 +235,10 @@ mod tests {
                 .sample(&space, &world, CostBound::Unbounded, &Never, &mut x)
                 .unwrap();
         }
+        let c = Sampler::<RealVectorSpace, World>::counters(&adaptive);
+        assert_eq!(tally, [c.pre_valid, c.gaussian_valid, c.bridge_found]);
+        assert!(c.gaussian_valid > 0 && c.bridge_found > 0, "{c:?}");
+        assert!(c.validity_checks >= samples);
         let adaptive_draws = adaptive.informed_set().counters().drawn;
         let uniform_draws = Sampler::<RealVectorSpace, World>::counters(&uniform).drawn;
         assert_eq!(

@@ -364,6 +364,63 @@ mod tests {
     }
 
     #[test]
+    fn counters_report_the_estimate_and_the_batches_drawn_under_it() {
+        let (space, mut sampler) = wrapped(ExpansionRule::PerBatch);
+        assert_eq!(sampler.counters().estimate_initial, None);
+        sampler.observe_invalid_lazy_edge(FAILURE);
+        let created = sampler.estimated_cost().unwrap();
+        let mut x = [0.0; 2];
+        for _ in 0..3 {
+            sampler
+                .sample(&space, &AllValid, CostBound::Unbounded, &Never, &mut x)
+                .unwrap();
+        }
+        // Three samples in one batch: one batch under the estimate, counted at once.
+        let c = sampler.counters();
+        assert_eq!((c.estimate_batches, c.estimate_expansions), (1, 0));
+        sampler.observe_batch_end(false);
+        let c = sampler.counters();
+        assert_eq!(c.estimate_initial, Some(created));
+        assert_eq!(c.estimate_current, sampler.estimated_cost());
+        assert_eq!((c.estimate_batches, c.estimate_expansions), (1, 1));
+        assert_eq!(c.returned, 3);
+    }
+
+    #[test]
+    fn without_an_immediate_batch_a_new_estimate_waits_for_the_next_batch() {
+        let space = RealVectorSpace::cube(2, -1.0, 1.0).unwrap();
+        let inner = InformedSampler::new(&space, &[-0.5, 0.0], &[[0.5, 0.0]], 1).unwrap();
+        let mut sampler: Box<Dyn> = Box::new(Estimated::new(inner).with_immediate_batch(false));
+        sampler.observe_invalid_lazy_edge(FAILURE);
+        assert!(sampler.estimated_cost().is_some());
+        assert!(!sampler.wants_batch());
+    }
+
+    #[test]
+    fn an_estimate_at_the_straight_line_cost_falls_back_to_the_whole_space() {
+        let space = RealVectorSpace::cube(2, -1.0, 1.0).unwrap();
+        let inner = InformedSampler::new(&space, &[-0.5, 0.0], &[[0.5, 0.0]], 1).unwrap();
+        let mut sampler: Box<Dyn> = Box::new(Estimated::new(inner));
+        // The whole lazy path was verified up to the goal: γ = 1, e_γ = 1, and s̃_est is the
+        // straight-line cost, whose informed set is empty.
+        sampler.observe_invalid_lazy_edge(LazyPathFailure {
+            cost_to_come: 1.0,
+            edge_estimate: 0.0,
+            cost_to_go: 0.0,
+        });
+        assert_eq!(sampler.estimated_cost(), Some(1.0));
+        let mut x = [0.0; 2];
+        sampler
+            .sample(&space, &AllValid, CostBound::Unbounded, &Never, &mut x)
+            .expect("an estimate is no bound: sampling goes on");
+        // A solution's empty set is final.
+        assert!(matches!(
+            sampler.sample(&space, &AllValid, CostBound::Solution(1.0), &Never, &mut x),
+            Err(SampleError::EmptySet { .. })
+        ));
+    }
+
+    #[test]
     fn reseed_forgets_the_estimate() {
         let (space, mut sampler) = wrapped(ExpansionRule::PerBatch);
         sampler.observe_invalid_lazy_edge(FAILURE);
