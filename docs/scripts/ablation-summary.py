@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Summarise first-solution runs of `mit-star bench` (runs.csv) for the ablation study.
 
-Usage: ablation-summary.py RESULTS_FOLDER [RESULTS_FOLDER ...] [--confidence 0.99]
+Usage: ablation-summary.py RESULTS_FOLDER [RESULTS_FOLDER ...] [--confidence 0.99] [--compact]
 
 Per (folder, instance, planner): success, the median time to the first solution with its
 nonparametric confidence interval (order statistics of the binomial, failures counted as
 +inf, as in the KPI tables), and the medians of the counters that explain it. Prints one
-markdown table per instance.
+markdown table per instance; with --compact, one table per folder: a row per instance, a
+column per planner, cells "median t_init [interval] ms · median grid points tested".
 """
 import csv
 import math
@@ -66,6 +67,9 @@ def main():
         i = args.index("--confidence")
         confidence = float(args[i + 1])
         del args[i : i + 2]
+    compact = "--compact" in args
+    if compact:
+        args.remove("--compact")
     rows = []
     for folder in args:
         label = Path(folder).name
@@ -74,6 +78,9 @@ def main():
                 r["_folder"] = label
                 rows.append(r)
     instances = sorted({r["instance"] for r in rows}, key=lambda s: (s.split("-n")[0], int(s.split("-n")[1])))
+    if compact:
+        print_compact(rows, instances, confidence)
+        return
     for inst in instances:
         print(f"\n### {inst}\n")
         head = ["run set", "planner", "success", "t_init median [CI] ms"] + [c[1] for c in COUNTERS]
@@ -100,6 +107,39 @@ def main():
                     m = vals[len(vals) // 2] if len(vals) % 2 else 0.5 * (vals[len(vals) // 2 - 1] + vals[len(vals) // 2])
                     cells.append(fmt(m))
             print("| " + " | ".join(cells) + " |")
+
+
+def print_compact(rows, instances, confidence):
+    folders = list(dict.fromkeys(r["_folder"] for r in rows))
+    for folder in folders:
+        mine = [r for r in rows if r["_folder"] == folder]
+        order = ["MIT*", "EIT*", "MIT*-AS", "MIT*-EIS", "MIT*-SC", "MIT*-SR"]
+        planners = sorted(
+            dict.fromkeys(r["planner"] for r in mine),
+            key=lambda p: order.index(p) if p in order else len(order),
+        )
+        print(f"\n{folder}:\n")
+        print("| problem | " + " | ".join(planners) + " |")
+        print("|---|" + "---|" * len(planners))
+        for inst in instances:
+            cells = []
+            for p in planners:
+                rs = [r for r in mine if r["instance"] == inst and r["planner"] == p]
+                if not rs:
+                    cells.append("–")
+                    continue
+                times = [
+                    float(r["initial_time"]) if r["success"] == "true" and r["initial_time"] else math.inf
+                    for r in rs
+                ]
+                med, (lo, hi) = median_interval(times, confidence)
+                pts = sorted(float(r["edge_points_tested"]) for r in rs)
+                ok = sum(r["success"] == "true" for r in rs)
+                miss = "" if ok == len(rs) else f" ({len(rs) - ok} failed)"
+                cells.append(
+                    f"{fmt(1e3 * med)} [{fmt(1e3 * lo)}, {fmt(1e3 * hi)}] · {pts[len(pts) // 2] / 1e3:.0f}k{miss}"
+                )
+            print(f"| {inst} | " + " | ".join(cells) + " |")
 
 
 if __name__ == "__main__":

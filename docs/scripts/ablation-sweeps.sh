@@ -5,7 +5,7 @@
 #   python3 docs/scripts/ablation-summary.py results/ablation-sweeps/*
 # Runs one at a time (--threads 1). Times drift between sweeps on a shared machine by 10 % or
 # more, so every sweep runs EIT* as its own reference; compare times within a sweep and work
-# (grid points) across sweeps. About 30 minutes on 2 cores.
+# (grid points) across sweeps. About 40 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cargo build --release -p mit-star-benches
@@ -19,19 +19,27 @@ run() { # name planners [--set k=v ...]
   "$bin" bench --experiment ablation-study --only "$planners" --threads 1 -q --no-plots \
     --output "$out/$name" "$@" > /dev/null
 }
-[ -d "$out/base" ] || run base mit-star,eit-star,mit-star-as,mit-star-eis,mit-star-sc,mit-star-sr
+all=mit-star,eit-star,mit-star-as,mit-star-eis,mit-star-sc,mit-star-sr
+# The defaults (a new estimated informed set bounds the next batch, as the paper's Alg. 1).
+run base $all
+# The first study ran with the MIT* authors' immediate batch in a new estimated informed set
+# (then the default); every sweep below but the last varies one parameter from there.
+old="--set eis_immediate_batch=true"
+run base-immediate-batch $all $old
 # The estimated informed set: when it asks for a batch, how e_γ is computed, when it expands.
 run eis-no-immediate-batch mit-star,eit-star,mit-star-eis --set eis_immediate_batch=false
-run eis-authors-form mit-star,eit-star,mit-star-eis --set eis_expansion_form=authors
-run eis-per-invalid-edge mit-star,eit-star,mit-star-eis --set eis_expansion_rule=per-invalid-edge
+run eis-authors-form mit-star,eit-star,mit-star-eis $old --set eis_expansion_form=authors
+run eis-per-invalid-edge mit-star,eit-star,mit-star-eis $old --set eis_expansion_rule=per-invalid-edge
 # The adaptive sampler: the Gaussian standard deviation δ and the bridge-check budget.
 for d in 0.02 0.05 0.2; do
-  run "delta-$d" mit-star,eit-star,mit-star-as --set gaussian_std_fraction=$d
+  run "delta-$d" mit-star,eit-star,mit-star-as $old --set gaussian_std_fraction=$d
 done
 for b in 1 16; do
-  run "bridge-$b" mit-star,eit-star,mit-star-as --set bridge_checks=$b
+  run "bridge-$b" mit-star,eit-star,mit-star-as $old --set bridge_checks=$b
 done
 # Smaller batches: first solutions after several batches, where sampling parts can act.
 for q in 25 50; do
-  run "batch-$q" mit-star,eit-star,mit-star-as,mit-star-eis,mit-star-sc --set batch_size=$q
+  run "batch-$q" mit-star,eit-star,mit-star-as,mit-star-eis,mit-star-sc $old --set batch_size=$q
 done
+# Smaller batches with the defaults.
+run batch-25-paper-eis mit-star,eit-star,mit-star-as,mit-star-eis,mit-star-sc --set batch_size=25

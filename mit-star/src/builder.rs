@@ -201,7 +201,7 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
-    /// Whether a new estimated informed set asks for a batch at once (default `true`; see
+    /// Whether a new estimated informed set asks for a batch at once (default `false`; see
     /// [`Parameters::eis_immediate_batch`]).
     pub fn eis_immediate_batch(mut self, immediate: bool) -> Self {
         self.parameters.eis_immediate_batch = immediate;

@@ -101,8 +101,9 @@ impl<T> Estimated<T> {
     }
 
     /// Whether a new estimate asks the planner for a batch at once
-    /// ([`wants_batch`](Sampler::wants_batch); default `true`, the MIT* authors' code and
-    /// spec §3.1 step 1). With `false` the estimate first bounds the batch the planner adds
+    /// ([`wants_batch`](Sampler::wants_batch); the wrapper's default is `true`, the MIT*
+    /// authors' code and spec §3.1 step 1; the planners' `Parameters::eis_immediate_batch`
+    /// defaults to `false`). With `false` the estimate first bounds the batch the planner adds
     /// when its search of the current one is exhausted, as the paper's Alg. 1 reads.
     #[must_use]
     pub fn with_immediate_batch(mut self, immediate: bool) -> Self {

@@ -289,7 +289,7 @@ impl BenchArgs {
         let concurrency = threads.min(jobs.saturating_sub(recorded.len()).max(1));
         eprintln!(
             "experiment `{}`: {} planners × {} problem instances × {} runs = {jobs} runs{}; \
-             {:.1} s of budget on {concurrency} threads ≈ {:.1} s",
+             {:.1} s of budget on {concurrency} threads ≈ {}{:.1} s",
             experiment.name,
             experiment.planners.len(),
             instances.len(),
@@ -303,6 +303,11 @@ impl BenchArgs {
                 )
             },
             budget,
+            if experiment.first_solution {
+                "at most "
+            } else {
+                ""
+            },
             budget / concurrency as f64
         );
         let template = ExperimentResults {
