@@ -198,6 +198,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
     let defaults = defaults_table(&Parameters {
         certification: Some(1),
         suspend_reverse_when_forward_empty: Some(true),
+        eis_batch_size: Some(100),
         range: Some(1.0),
         initial_inflation: Some(1.0),
         inflation_scaling: Some(0.0),

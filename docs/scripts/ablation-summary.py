@@ -77,7 +77,13 @@ def main():
             for r in csv.DictReader(f):
                 r["_folder"] = label
                 rows.append(r)
-    instances = sorted({r["instance"] for r in rows}, key=lambda s: (s.split("-n")[0], int(s.split("-n")[1])))
+    def order(instance):
+        # `dividing-walls-n4`, `random-rectangles-n8-i1`: family, dimension, layout.
+        family, _, rest = instance.rpartition("-n")
+        parts = rest.split("-i")
+        return (family, int(parts[0]), parts[1] if len(parts) > 1 else "")
+
+    instances = sorted({r["instance"] for r in rows}, key=order)
     if compact:
         print_compact(rows, instances, confidence)
         return

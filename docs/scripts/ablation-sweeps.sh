@@ -43,3 +43,6 @@ for q in 25 50; do
 done
 # Smaller batches with the defaults.
 run batch-25-paper-eis mit-star,eit-star,mit-star-as,mit-star-eis,mit-star-sc --set batch_size=25
+# The batch size under the estimated informed set alone: batches of 25 until an estimate
+# exists, then 100 in it.
+run batch-25-eis-100 mit-star,eit-star,mit-star-eis --set batch_size=25 --set eis_batch_size=100

@@ -123,14 +123,22 @@ where
             (CostBound::Unbounded, Some(estimate)) => CostBound::Estimated(estimate),
             _ => bound,
         };
+        // MIT*'s batches under an estimated informed set may have a size of their own.
+        let size = match effective {
+            CostBound::Estimated(_) => self
+                .parameters
+                .eis_batch_size
+                .unwrap_or(self.parameters.batch_size),
+            _ => self.parameters.batch_size,
+        };
         let mut ids = std::mem::take(&mut self.batch_ids);
         ids.clear();
         // Grow every per-vertex array once, here, rather than by copies mid-batch.
-        ids.reserve(self.parameters.batch_size);
-        self.graph.reserve(self.parameters.batch_size);
+        ids.reserve(size);
+        self.graph.reserve(size);
         let mut sample = std::mem::take(&mut self.sample);
         let mut committed = 0;
-        for _ in 0..self.parameters.batch_size {
+        for _ in 0..size {
             match self
                 .sampler
                 .sample(&self.space, &self.validity, bound, stop, &mut sample)

@@ -277,7 +277,11 @@ where
             return Err(BuildError::Problem(error));
         }
         self.parameters.validate()?;
-        check_batch_memory(self.parameters.batch_size, self.space.dimension())?;
+        let largest_batch = self
+            .parameters
+            .batch_size
+            .max(self.parameters.eis_batch_size.unwrap_or(0));
+        check_batch_memory(largest_batch, self.space.dimension())?;
         validate_query(&self.space, &self.validity, &self.start, &self.goals)?;
         let sampler = match self.sampler {
             Some(sampler) => sampler,

@@ -69,6 +69,8 @@ pub struct Parameters {
     pub eis_expansion_form: EisExpansionForm,
     /// When the estimated informed set expands.
     pub eis_expansion_rule: EisExpansionRule,
+    /// Samples per batch drawn under MIT*'s estimated informed set (`None`: `batch_size`).
+    pub eis_batch_size: Option<usize>,
     /// A new estimated informed set asks for a batch drawn in it at once (`true`: the MIT*
     /// authors' code, spec §3.1 step 1), or bounds the next batch the search asks for
     /// (`false`, the default: the paper's Alg. 1; `docs/ablation.md` has the evidence).
@@ -115,6 +117,7 @@ impl Default for Parameters {
             sparse_min_steps: 10.0,
             eis_expansion_form: EisExpansionForm::Paper,
             eis_expansion_rule: EisExpansionRule::PerBatch,
+            eis_batch_size: None,
             eis_immediate_batch: false,
             certification: None,
             range: None,
@@ -184,6 +187,13 @@ impl Parameters {
         if self.batch_size == 0 {
             return Err(BuildError::Parameter {
                 name: "batch_size",
+                value: 0.0,
+                requirement: "it must be at least 1",
+            });
+        }
+        if self.eis_batch_size == Some(0) {
+            return Err(BuildError::Parameter {
+                name: "eis_batch_size",
                 value: 0.0,
                 requirement: "it must be at least 1",
             });
@@ -297,6 +307,11 @@ impl Parameters {
             ("sparse_min_steps", self.sparse_min_steps.to_string()),
             ("eis_expansion_form", form.to_string()),
             ("eis_expansion_rule", rule.to_string()),
+            (
+                "eis_batch_size",
+                self.eis_batch_size
+                    .map_or_else(|| "batch_size".to_owned(), |b| b.to_string()),
+            ),
             ("eis_immediate_batch", self.eis_immediate_batch.to_string()),
             (
                 "range",
