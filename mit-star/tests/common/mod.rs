@@ -47,8 +47,8 @@ pub fn path_length(path: &spaces::States) -> f64 {
 /// Everything a test asserts about a reported solution: it starts at the start and ends at a
 /// goal, its cost is its length and at least the straight-line bound, it is valid by the
 /// independent check, and the planner full-checked (whitelisted) every edge of it.
-pub fn assert_solution_sound<Smp, E, H>(
-    planner: &Eit<spaces::RealVectorSpace, World, Smp, E, H>,
+pub fn assert_solution_sound<Smp, E, H, G>(
+    planner: &Eit<spaces::RealVectorSpace, World, Smp, E, H, G>,
     solution: &Solution,
     start: &[f64],
     goals: &[Vec<f64>],
@@ -56,6 +56,7 @@ pub fn assert_solution_sound<Smp, E, H>(
     Smp: samplers::Sampler<spaces::RealVectorSpace, validity::Counted<World>> + Clone,
     E: validity::EdgeChecker<spaces::RealVectorSpace, validity::Counted<World>> + Clone,
     H: heuristics::Heuristic<spaces::RealVectorSpace>,
+    G: mit_star::Guidance,
 {
     let path = &solution.path;
     assert!(path.len() >= 2, "a path has at least two states");
