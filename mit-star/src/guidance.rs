@@ -46,8 +46,9 @@ pub trait Guidance: 'static {
     fn name() -> String;
 }
 
-/// EIT*'s guidance (Strub and Gammell, IJRR 2022), kept by MIT*: a sparse-checked reverse
-/// search supplies cost and effort heuristics; effort-greedy until the first solution.
+/// EIT*'s guidance (Strub and Gammell, IJRR 2022): a sparse-checked reverse search supplies
+/// cost and effort heuristics; effort-greedy until the first solution. MIT* wraps it in
+/// [`Suspending`].
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct EffortInformed;
 

@@ -14,8 +14,10 @@ use crate::{
 /// [`EstimatedInformedSet`] and swaps the bound it passes on:
 ///
 /// - [`observe_invalid_lazy_edge`](Sampler::observe_invalid_lazy_edge): the first invalid lazy
-///   edge creates the estimate `s̃_est` and raises [`wants_batch`](Sampler::wants_batch) (spec
-///   §3.1, step 1); under [`ExpansionRule::PerInvalidEdge`] later ones expand it.
+///   edge creates the estimate `s̃_est` — which bounds the planner's next batch, as the paper's
+///   Alg. 1 has it, or with [`with_immediate_batch`](Self::with_immediate_batch)`(true)` (the
+///   MIT* authors' code) also raises [`wants_batch`](Sampler::wants_batch) to ask for a batch
+///   at once; under [`ExpansionRule::PerInvalidEdge`] later failures expand it.
 /// - [`sample`](Sampler::sample): a [`CostBound::Unbounded`] request becomes
 ///   [`CostBound::Estimated`]`(s̃_est)` while an estimate exists; a solution bound passes through
 ///   unchanged (the informed set of `c_best` replaces the estimate).
@@ -77,7 +79,7 @@ impl<T> Estimated<T> {
             estimate: EstimatedInformedSet::new(),
             wants_batch: false,
             sampled_inside: false,
-            immediate_batch: true,
+            immediate_batch: false,
             drawn_this_batch: false,
             initial: None,
             expansions: 0,
@@ -101,10 +103,10 @@ impl<T> Estimated<T> {
     }
 
     /// Whether a new estimate asks the planner for a batch at once
-    /// ([`wants_batch`](Sampler::wants_batch); the wrapper's default is `true`, the MIT*
-    /// authors' code and spec §3.1 step 1; the planners' `Parameters::eis_immediate_batch`
-    /// defaults to `false`). With `false` the estimate first bounds the batch the planner adds
-    /// when its search of the current one is exhausted, as the paper's Alg. 1 reads.
+    /// ([`wants_batch`](Sampler::wants_batch); `true` is the MIT* authors' code and spec §3.1
+    /// step 1). The default, `false`, lets the estimate bound the batch the planner adds when
+    /// its search of the current one is exhausted, as the paper's Alg. 1 reads (and as
+    /// `Parameters::eis_immediate_batch` defaults; `docs/ablation.md` has the evidence).
     #[must_use]
     pub fn with_immediate_batch(mut self, immediate: bool) -> Self {
         self.immediate_batch = immediate;
@@ -279,7 +281,10 @@ mod tests {
     fn wrapped(rule: ExpansionRule) -> (RealVectorSpace, Box<Dyn>) {
         let space = RealVectorSpace::cube(2, -1.0, 1.0).unwrap();
         let inner = InformedSampler::new(&space, &[-0.5, 0.0], &[[0.5, 0.0]], 1).unwrap();
-        (space, Box::new(Estimated::new(inner).with_rule(rule)))
+        let wrapper = Estimated::new(inner)
+            .with_rule(rule)
+            .with_immediate_batch(true);
+        (space, Box::new(wrapper))
     }
 
     #[test]
@@ -391,7 +396,8 @@ mod tests {
     fn without_an_immediate_batch_a_new_estimate_waits_for_the_next_batch() {
         let space = RealVectorSpace::cube(2, -1.0, 1.0).unwrap();
         let inner = InformedSampler::new(&space, &[-0.5, 0.0], &[[0.5, 0.0]], 1).unwrap();
-        let mut sampler: Box<Dyn> = Box::new(Estimated::new(inner).with_immediate_batch(false));
+        // The default: the paper's Alg. 1.
+        let mut sampler: Box<Dyn> = Box::new(Estimated::new(inner));
         sampler.observe_invalid_lazy_edge(FAILURE);
         assert!(sampler.estimated_cost().is_some());
         assert!(!sampler.wants_batch());

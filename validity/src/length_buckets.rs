@@ -13,8 +13,8 @@ pub const LENGTH_BUCKET_LABELS: [&str; 5] = [
     "under 2e3",
     "2e3 to 1e4",
     "1e4 to 5e4",
-    "5e4 to 2.5e5",
-    "2.5e5 and more",
+    "5e4 to 25e4",
+    "25e4 and more",
 ];
 
 /// Sparse and full edge checks and the grid points they tested, by the edge's length in grid
