@@ -271,24 +271,35 @@ mod tests {
         assert_eq!(jobs[199].seed, 19);
     }
 
-    #[test]
-    fn a_run_records_a_validated_solution() {
+    /// The R^2 instance of built-in problem `name` with one budget and resolution, and a
+    /// planner of `configuration` with the default parameters.
+    fn instance_and_planner(
+        name: &str,
+        (budget, resolution): (f64, f64),
+        configuration: mit_star::Configuration,
+    ) -> (ProblemInstance, PlannerSpec) {
         let instance = ProblemSpec {
-            source: ProblemSource::parse("obstacle-free", None).unwrap(),
+            source: ProblemSource::parse(name, None).unwrap(),
             dimensions: vec![2],
-            budgets: vec![0.02],
+            budgets: vec![budget],
             instances: vec![0],
-            resolution: Some(1e-3),
+            resolution: Some(resolution),
         }
         .instances()
         .unwrap()
         .remove(0);
-        let planner = PlannerSpec::new(
+        let planner =
+            PlannerSpec::new(configuration, None, &ParameterOverrides::default()).unwrap();
+        (instance, planner)
+    }
+
+    #[test]
+    fn a_run_records_a_validated_solution() {
+        let (instance, planner) = instance_and_planner(
+            "obstacle-free",
+            (0.02, 1e-3),
             mit_star::Configuration::EitStar,
-            None,
-            &ParameterOverrides::default(),
-        )
-        .unwrap();
+        );
         let job = RunJob {
             instance: 0,
             planner: 0,
@@ -317,22 +328,11 @@ mod tests {
 
     #[test]
     fn a_first_solution_run_stops_at_its_first_solution() {
-        let instance = ProblemSpec {
-            source: ProblemSource::parse("dividing-walls", None).unwrap(),
-            dimensions: vec![2],
-            budgets: vec![5.0],
-            instances: vec![0],
-            resolution: Some(1e-4),
-        }
-        .instances()
-        .unwrap()
-        .remove(0);
-        let planner = PlannerSpec::new(
+        let (instance, planner) = instance_and_planner(
+            "dividing-walls",
+            (5.0, 1e-4),
             mit_star::Configuration::MitStar,
-            None,
-            &ParameterOverrides::default(),
-        )
-        .unwrap();
+        );
         let job = RunJob {
             instance: 0,
             planner: 0,

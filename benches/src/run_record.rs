@@ -1,7 +1,10 @@
 //! [`RunRecord`] and [`RunStatus`]: everything measured in one run of one planner.
 
+use std::sync::LazyLock;
+
 use mit_star::{Configuration, Counters, TracePoint};
 use serde::{Deserialize, Serialize};
+use validity::LENGTH_BUCKET_LABELS;
 
 use crate::PathValidation;
 
@@ -146,38 +149,18 @@ impl RunRecord {
 /// How many integer counters a run records.
 pub(crate) const COUNTERS: usize = 46;
 
-/// Names of the per-length counters: checks and points of sparse and full checks, per bucket
-/// of [`validity::LENGTH_BUCKET_BOUNDS`] (labels [`validity::LENGTH_BUCKET_LABELS`]).
-const BY_LENGTH: [[&str; 5]; 4] = [
+/// Names of the per-length counters: checks and points of sparse and full checks for each bucket
+/// of [`validity::LENGTH_BUCKET_BOUNDS`], named after [`validity::LENGTH_BUCKET_LABELS`]
+/// (`sparse checks of edges under 2e3 points`, …).
+static BY_LENGTH: LazyLock<[[String; 5]; 4]> = LazyLock::new(|| {
     [
-        "sparse checks of edges under 2e3 points",
-        "sparse checks of edges of 2e3 to 1e4 points",
-        "sparse checks of edges of 1e4 to 5e4 points",
-        "sparse checks of edges of 5e4 to 25e4 points",
-        "sparse checks of edges of 25e4 points and more",
-    ],
-    [
-        "sparse points of edges under 2e3 points",
-        "sparse points of edges of 2e3 to 1e4 points",
-        "sparse points of edges of 1e4 to 5e4 points",
-        "sparse points of edges of 5e4 to 25e4 points",
-        "sparse points of edges of 25e4 points and more",
-    ],
-    [
-        "full checks of edges under 2e3 points",
-        "full checks of edges of 2e3 to 1e4 points",
-        "full checks of edges of 1e4 to 5e4 points",
-        "full checks of edges of 5e4 to 25e4 points",
-        "full checks of edges of 25e4 points and more",
-    ],
-    [
-        "full points of edges under 2e3 points",
-        "full points of edges of 2e3 to 1e4 points",
-        "full points of edges of 1e4 to 5e4 points",
-        "full points of edges of 5e4 to 25e4 points",
-        "full points of edges of 25e4 points and more",
-    ],
-];
+        "sparse checks",
+        "sparse points",
+        "full checks",
+        "full points",
+    ]
+    .map(|kind| LENGTH_BUCKET_LABELS.map(|label| format!("{kind} of edges {label}")))
+});
 
 /// The real-valued counters of a planner, named.
 fn real_counter_list(c: &Counters) -> [(&'static str, Option<f64>); 2] {
@@ -228,7 +211,7 @@ fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
     let mut i = named.len();
     for (names, values) in BY_LENGTH.iter().zip(by_length) {
         for (name, value) in names.iter().zip(values) {
-            list[i] = (name, value);
+            list[i] = (name.as_str(), value);
             i += 1;
         }
     }

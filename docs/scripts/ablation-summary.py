@@ -4,8 +4,11 @@
 Usage: ablation-summary.py RESULTS_FOLDER [RESULTS_FOLDER ...] [--confidence 0.99] [--compact]
 
 Per (folder, instance, planner): success, the median time to the first solution with its
-nonparametric confidence interval (order statistics of the binomial, failures counted as
-+inf, as in the KPI tables), and the medians of the counters that explain it. Prints one
+nonparametric confidence interval, and the medians of the counters that explain it. Medians
+and intervals are those of the KPI tables (`MedianEstimate` in
+benches/src/statistics/median.rs, PDT's convention): the median is the value at index n/2 of
+the sorted runs, failures count as +inf, and the interval grows from the median index one
+order statistic each side until its binomial coverage reaches the confidence. Prints one
 markdown table per instance; with --compact, one table per folder: a row per instance, a
 column per planner, cells "median t_init [interval] ms · median grid points tested".
 """
@@ -20,21 +23,23 @@ def binom_cdf(k, n, p=0.5):
 
 
 def median_interval(values, confidence):
-    """Median and the (lo, hi) order statistics covering it with `confidence`."""
+    """Median and its confidence bounds, as `MedianEstimate::of` computes them."""
     v = sorted(values)
     n = len(v)
-    med = v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
-    # The widest symmetric pair of order statistics whose coverage still reaches `confidence`
-    # is tightened until one step more would fall short: with 0-based indices lo and hi,
-    # P(v[lo] <= median <= v[hi]) = P(lo + 1 <= B <= hi) for B ~ Bin(n, 1/2).
-    best = (v[0], v[-1])
-    for lo in range(0, n // 2):
-        hi = n - 1 - lo
-        if binom_cdf(hi, n) - binom_cdf(lo, n) >= confidence:
-            best = (v[lo], v[hi])
-        else:
-            break
-    return med, best
+    m = n // 2
+    j = 0
+    while True:
+        lower, upper = max(m - j, 0), min(m + j, n - 1)
+        coverage = binom_cdf(upper, n) - binom_cdf(lower, n)
+        if coverage >= confidence - 1e-12 or (lower == 0 and upper == n - 1):
+            return v[m], (v[lower], v[upper])
+        j += 1
+
+
+def median(values):
+    """The value at index n/2 of the sorted values (the KPI tables' median)."""
+    v = sorted(values)
+    return v[len(v) // 2]
 
 
 COUNTERS = [
@@ -107,11 +112,7 @@ def main():
                      f"{fmt(1e3 * med)} [{fmt(1e3 * lo)}, {fmt(1e3 * hi)}]"]
             for col, _ in COUNTERS:
                 vals = sorted(float(r[col]) for r in rs if r.get(col) not in ("", None))
-                if not vals:
-                    cells.append("–")
-                else:
-                    m = vals[len(vals) // 2] if len(vals) % 2 else 0.5 * (vals[len(vals) // 2 - 1] + vals[len(vals) // 2])
-                    cells.append(fmt(m))
+                cells.append(fmt(median(vals)) if vals else "–")
             print("| " + " | ".join(cells) + " |")
 
 
@@ -139,11 +140,11 @@ def print_compact(rows, instances, confidence):
                     for r in rs
                 ]
                 med, (lo, hi) = median_interval(times, confidence)
-                pts = sorted(float(r["edge_points_tested"]) for r in rs)
+                pts = median(float(r["edge_points_tested"]) for r in rs)
                 ok = sum(r["success"] == "true" for r in rs)
                 miss = "" if ok == len(rs) else f" ({len(rs) - ok} failed)"
                 cells.append(
-                    f"{fmt(1e3 * med)} [{fmt(1e3 * lo)}, {fmt(1e3 * hi)}] · {pts[len(pts) // 2] / 1e3:.0f}k{miss}"
+                    f"{fmt(1e3 * med)} [{fmt(1e3 * lo)}, {fmt(1e3 * hi)}] · {pts / 1e3:.0f}k{miss}"
                 )
             print(f"| {inst} | " + " | ".join(cells) + " |")
 

@@ -1,26 +1,25 @@
 //! The parts the ablation study switches (issue 12): the suspension rule as a guidance wrapper,
 //! and the counters that show what the sampler, the estimated informed set and the checkers did.
 
+mod common;
+
+use common::fingerprint;
+use heuristics::Euclidean;
 use mit_star::{
-    Configuration, Counters, EitStar, FirstSolution, IterationLimit, MitStarSr, Parameters,
-    Planner, build_planner,
+    Configuration, Counters, EffortInformed, Eit, FirstSolution, Guidance, IterationLimit,
+    Parameters, Planner, Suspending, build_planner,
 };
 use problems::{DividingWalls, GoalEnclosure};
-use samplers::SampleOrigin;
+use samplers::{InformedSampler, SampleOrigin};
 use spaces::RealVectorSpace;
-use validity::{AxisBox, World};
+use validity::{AxisBox, FixedSparseChecker, World};
 
-fn run(planner: &mut dyn Planner, iterations: u64) -> (Vec<u64>, Counters) {
-    planner
+/// Trace costs, path and counters after `iterations` more iterations.
+fn run(planner: &mut dyn Planner, iterations: u64) -> (Vec<u64>, Vec<u64>, Counters) {
+    let outcome = planner
         .solve(&IterationLimit::new(iterations))
         .expect("the planner runs");
-    let costs = planner
-        .trace()
-        .points()
-        .iter()
-        .map(|p| p.cost.to_bits())
-        .collect();
-    (costs, planner.counters())
+    fingerprint(planner, &outcome)
 }
 
 /// A start walled in (a hollow box around it) and a goal outside: the forward search runs dry
@@ -36,31 +35,27 @@ fn walled_in_start() -> (RealVectorSpace, World, Vec<f64>, Vec<Vec<f64>>) {
     (space, world, vec![0.25, 0.5], vec![vec![0.9, 0.5]])
 }
 
+/// EIT*'s parts with guidance `G` on [`walled_in_start`], the rule overridden by `suspend`:
+/// `EffortInformed` is `EitStar`, `Suspending` is `MitStarSr`.
+fn walled_in<G: Guidance>(
+    suspend: Option<bool>,
+) -> Eit<RealVectorSpace, World, InformedSampler, FixedSparseChecker, Euclidean, G> {
+    let (space, world, start, goals) = walled_in_start();
+    let builder = Eit::builder(space, world, start, goals)
+        .resolution(1e-3)
+        .seed(7);
+    match suspend {
+        Some(s) => builder.suspend_reverse_when_forward_empty(s),
+        None => builder,
+    }
+    .build()
+    .unwrap()
+}
+
 #[test]
 fn the_suspension_rule_is_the_wrapper_and_the_parameter_alike() {
-    let (space, world, start, goals) = walled_in_start();
-    let build_sr = |suspend: Option<bool>| {
-        let b = MitStarSr::builder(space.clone(), world.clone(), start.clone(), goals.clone())
-            .resolution(1e-3)
-            .seed(7);
-        match suspend {
-            Some(s) => b.suspend_reverse_when_forward_empty(s),
-            None => b,
-        }
-        .build()
-        .unwrap()
-    };
-    let build_eit = |suspend: Option<bool>| {
-        let b = EitStar::builder(space.clone(), world.clone(), start.clone(), goals.clone())
-            .resolution(1e-3)
-            .seed(7);
-        match suspend {
-            Some(s) => b.suspend_reverse_when_forward_empty(s),
-            None => b,
-        }
-        .build()
-        .unwrap()
-    };
+    let build_sr = walled_in::<Suspending>;
+    let build_eit = walled_in::<EffortInformed>;
     let iterations = 3_000;
     let suspending = run(&mut build_sr(None), iterations);
     let upstream = run(&mut build_eit(None), iterations);
@@ -70,7 +65,7 @@ fn the_suspension_rule_is_the_wrapper_and_the_parameter_alike() {
     // No solution exists; upstream EIT* exhausts the reverse search of every batch, MIT*-SR
     // yields and adds the next batch instead.
     assert!(suspending.0.is_empty() && upstream.0.is_empty());
-    let (s, u) = (suspending.1, upstream.1);
+    let (s, u) = (suspending.2, upstream.2);
     assert!(
         u.reverse_iterations > s.reverse_iterations && s.batches > u.batches,
         "suspending {s:?}\nupstream {u:?}"
@@ -96,7 +91,7 @@ fn counters_account_for_every_sample_and_every_check() {
             ..Parameters::default()
         };
         let mut planner = build_planner(configuration, &problem, &parameters).unwrap();
-        let (_, c) = run(planner.as_mut(), 5_000);
+        let (_, _, c) = run(planner.as_mut(), 5_000);
         assert!(c.samples > 0, "{configuration}");
         if configuration == Configuration::EitStar {
             assert_eq!(

@@ -6,11 +6,11 @@ mod common;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-use common::{assert_solution_sound, assert_trace_monotone};
+use common::{assert_solution_sound, assert_trace_monotone, fingerprint};
 use mit_star::{
     BuildError, Configuration, CostThreshold, Counters, EitStar, Endpoint, FirstSolution,
-    IterationLimit, MitStar, MitStarSc, Observer, Outcome, Parameters, Planner, PlannerError,
-    SolutionEvent, TerminationExt, TimeLimit, build_planner,
+    IterationLimit, MitStar, MitStarSc, Observer, Parameters, Planner, PlannerError, SolutionEvent,
+    TerminationExt, TimeLimit, build_planner,
 };
 use problems::{DividingWalls, GoalEnclosure, Problem};
 use spaces::{RealVectorSpace, SpaceError};
@@ -19,21 +19,6 @@ use validity::{AxisBox, World};
 /// PDT's dividing walls in R^4 at the paper's resolution.
 fn dividing_walls_4() -> Problem {
     DividingWalls::new(4).build().expect("a valid problem")
-}
-
-/// Everything a run reports that must be bit-identical for equal seeds.
-fn fingerprint(planner: &dyn Planner, outcome: &Outcome) -> (Vec<u64>, Vec<u64>, Counters) {
-    let costs = planner
-        .trace()
-        .points()
-        .iter()
-        .map(|p| p.cost.to_bits())
-        .collect();
-    let path = outcome
-        .solution()
-        .map(|s| s.path.as_flat().iter().map(|x| x.to_bits()).collect())
-        .unwrap_or_default();
-    (costs, path, planner.counters())
 }
 
 #[test]

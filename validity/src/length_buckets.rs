@@ -8,13 +8,14 @@
 /// first bucket holds the edges it checks once at level 0.
 pub const LENGTH_BUCKET_BOUNDS: [u64; 4] = [2_000, 10_000, 50_000, 250_000];
 
-/// Short labels of the five buckets, for output columns.
+/// Labels of the five buckets, for output columns ("sparse checks of edges {label}"); numbers
+/// without decimal points, since OMPL's log reader makes SQL column names of them.
 pub const LENGTH_BUCKET_LABELS: [&str; 5] = [
-    "under 2e3",
-    "2e3 to 1e4",
-    "1e4 to 5e4",
-    "5e4 to 25e4",
-    "25e4 and more",
+    "under 2e3 points",
+    "of 2e3 to 1e4 points",
+    "of 1e4 to 5e4 points",
+    "of 5e4 to 25e4 points",
+    "of 25e4 points and more",
 ];
 
 /// Sparse and full edge checks and the grid points they tested, by the edge's length in grid

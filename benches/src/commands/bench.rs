@@ -137,28 +137,25 @@ impl BenchArgs {
         }
         experiment.first_solution |= self.first_solution;
         if !self.only.is_empty() {
-            let known: Vec<String> = experiment
-                .planners
+            let named = |p: &PlannerSpec, w: &str| p.name() == w || p.configuration().name() == w;
+            if let Some(wanted) = self
+                .only
                 .iter()
-                .map(|p| format!("{} ({})", p.configuration().name(), p.name()))
-                .collect();
-            for wanted in &self.only {
-                if !experiment
+                .find(|w| !experiment.planners.iter().any(|p| named(p, w)))
+            {
+                let known: Vec<String> = experiment
                     .planners
                     .iter()
-                    .any(|p| p.name() == wanted || p.configuration().name() == wanted)
-                {
-                    return Err(HarnessError::Usage(format!(
-                        "--only {wanted}: the experiment has no such planner; it has {}",
-                        known.join(", ")
-                    )));
-                }
+                    .map(|p| format!("{} ({})", p.configuration().name(), p.name()))
+                    .collect();
+                return Err(HarnessError::Usage(format!(
+                    "--only {wanted}: the experiment has no such planner; it has {}",
+                    known.join(", ")
+                )));
             }
-            experiment.planners.retain(|p| {
-                self.only
-                    .iter()
-                    .any(|w| p.name() == w || p.configuration().name() == w)
-            });
+            experiment
+                .planners
+                .retain(|p| self.only.iter().any(|w| named(p, w)));
         }
         experiment.validate("command line")?;
         Ok(experiment)

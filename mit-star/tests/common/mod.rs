@@ -2,7 +2,7 @@
 
 #![allow(dead_code, unreachable_pub)]
 
-use mit_star::{Eit, Planner, Solution};
+use mit_star::{Counters, Eit, Outcome, Planner, Solution};
 use spaces::{StateSpace, euclidean_distance};
 use validity::{StateValidity, World};
 
@@ -109,4 +109,19 @@ pub fn assert_trace_monotone<P: Planner + ?Sized>(planner: &P) {
     if let Some(last) = points.last() {
         assert_eq!(last.cost, planner.best_cost());
     }
+}
+
+/// Everything a run reports that must be bit-identical for equal seeds.
+pub fn fingerprint(planner: &dyn Planner, outcome: &Outcome) -> (Vec<u64>, Vec<u64>, Counters) {
+    let costs = planner
+        .trace()
+        .points()
+        .iter()
+        .map(|p| p.cost.to_bits())
+        .collect();
+    let path = outcome
+        .solution()
+        .map(|s| s.path.as_flat().iter().map(|x| x.to_bits()).collect())
+        .unwrap_or_default();
+    (costs, path, planner.counters())
 }
