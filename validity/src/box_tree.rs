@@ -165,6 +165,52 @@ impl BoxTree {
     }
 }
 
+impl BoxTree {
+    /// Appends to `kept` the rows of every box that meets `reach` (`[lo, hi]` per coordinate,
+    /// closed) and returns `true` — or returns `false`, with `kept` holding a partial list, as
+    /// soon as more than `cap` boxes meet it (a per-edge broad phase that keeps that many boxes
+    /// would gain nothing over the hierarchy per point).
+    pub(crate) fn collect_meeting(&self, reach: &[f64], kept: &mut Vec<f64>, cap: usize) -> bool {
+        if self.nodes.is_empty() {
+            return true;
+        }
+        let width = 2 * self.dimension;
+        let meets = |bounds: &[f64]| {
+            bounds
+                .chunks_exact(2)
+                .zip(reach.chunks_exact(2))
+                .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0])
+        };
+        let (mut stack, mut top, mut count) = ([0_u32; STACK], 1, 0);
+        while top > 0 {
+            top -= 1;
+            let index = stack[top] as usize;
+            if !meets(&self.bounds[index * width..(index + 1) * width]) {
+                continue;
+            }
+            let node = self.nodes[index];
+            if node.count > 0 {
+                let first = node.first as usize;
+                let leaf = &self.rows[first * width..(first + node.count as usize) * width];
+                for row in leaf.chunks_exact(width).filter(|row| meets(row)) {
+                    count += 1;
+                    if count > cap {
+                        return false;
+                    }
+                    kept.extend_from_slice(row);
+                }
+            } else if top + 2 <= STACK {
+                stack[top] = node.right;
+                stack[top + 1] = node.first;
+                top += 2;
+            } else {
+                return false;
+            }
+        }
+        true
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -46,6 +46,14 @@ impl DenseChecker {
     ) -> Result<Self, ValidityError> {
         Self::new(crate::step_from_resolution(space, resolution)?)
     }
+
+    /// The checker with [acceleration](crate::GridWalker#acceleration) on (the default) or
+    /// off (one state at a time, as OMPL checks).
+    #[must_use]
+    pub fn with_acceleration(mut self, accelerated: bool) -> Self {
+        self.walker.set_accelerated(accelerated);
+        self
+    }
 }
 
 impl<S: StateSpace + ?Sized, V: StateValidity + ?Sized> EdgeChecker<S, V> for DenseChecker {

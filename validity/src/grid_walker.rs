@@ -3,7 +3,10 @@
 
 use spaces::{StateSpace, Stop};
 
-use crate::{EdgeGrid, EdgeProgress, EdgeStatus, LengthBuckets, StateValidity, ValidityError};
+use crate::{
+    EdgeGrid, EdgeProgress, EdgeStatus, LengthBuckets, Preparation, Segment, StateValidity,
+    ValidityError,
+};
 
 /// Counters of edge-checking work, for benchmarks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -12,8 +15,14 @@ pub struct EdgeCounters {
     pub sparse_checks: u64,
     /// Full checks requested.
     pub full_checks: u64,
-    /// Grid points tested (state validity calls made by edge checks, certification included).
+    /// Grid points tested (state validity calls made by edge checks, certification included),
+    /// counted up to and including the first invalid one, and counting the points the broad
+    /// phase decided without a test ([`points_culled`](Self::points_culled)): the same number
+    /// with acceleration on or off.
     pub points_tested: u64,
+    /// Of those, the points decided valid without a test, because the validity checker's
+    /// per-edge broad phase found nothing near the edge ([`Preparation::AllValid`]).
+    pub points_culled: u64,
     /// Edges certified on a finer grid ([`GridWalker::certify`]), passed or not.
     pub certifications: u64,
     /// Certifications that found an invalid point the edge's own grid had missed.
@@ -24,13 +33,24 @@ pub struct EdgeCounters {
 
 /// Walks an edge's canonical grid in bisection order, testing states; shared by every checker.
 ///
-/// Owns the one scratch state the walk needs (allocated once, on first use), so checking an edge
-/// never allocates. Polls the stop condition every [`STOP_POLL`] points, and before the first
-/// point of a walk longer than that (see [`advance`](Self::advance)).
+/// Owns the scratch the walk needs (allocated once, on first use), so checking an edge never
+/// allocates. Polls the stop condition every [`STOP_POLL`] points, and before the first point
+/// of a walk longer than that (see [`advance`](Self::advance)).
+///
+/// # Acceleration
+/// Unless [turned off](Self::set_accelerated), a walk in a space whose edges are straight
+/// lines first lets the validity checker [prepare](StateValidity::prepare_segment) the edge (a
+/// box world keeps only the boxes near it), then hands it the fractions of up to
+/// [`STOP_POLL`] points at a time ([`StateValidity::first_invalid_on`]); an edge the checker
+/// proves free is decided without testing a point. The answers, the progress and the points
+/// counted are those of the one-by-one walk; off, every point is interpolated and tested on
+/// its own, as OMPL's discrete motion validator does.
 #[derive(Debug, Clone)]
 pub struct GridWalker {
     step: f64,
     scratch: Vec<f64>,
+    segment: Segment,
+    accelerated: bool,
     counters: EdgeCounters,
 }
 
@@ -85,8 +105,20 @@ impl GridWalker {
         Ok(Self {
             step,
             scratch: Vec::new(),
+            segment: Segment::default(),
+            accelerated: true,
             counters: EdgeCounters::default(),
         })
+    }
+
+    /// Turns [acceleration](Self#acceleration) on (the default) or off.
+    pub fn set_accelerated(&mut self, accelerated: bool) {
+        self.accelerated = accelerated;
+    }
+
+    /// `true` if walks are [accelerated](Self#acceleration).
+    pub fn is_accelerated(&self) -> bool {
+        self.accelerated
     }
 
     /// The full-resolution step `L`.
@@ -147,13 +179,28 @@ impl GridWalker {
         // after the deadline tests nothing); a shorter walk never polls: it ends within
         // `STOP_POLL` points anyway, and one clock read would cost as much as a few of them.
         let polls_first = target - start > STOP_POLL;
-        let width = validity.batch_width().clamp(1, STOP_POLL as usize);
+        let mut width = validity.batch_width().clamp(1, STOP_POLL as usize);
+        let mut prepared = false;
+        if self.accelerated && space.is_euclidean() {
+            self.segment.set(a, b);
+            match validity.prepare_segment(&mut self.segment) {
+                Preparation::AllValid => {
+                    let decided = target - start;
+                    self.counters.points_tested += decided;
+                    self.counters.points_culled += decided;
+                    *progress = EdgeProgress(target);
+                    return progress.status(&grid);
+                }
+                Preparation::Prepared => (prepared, width) = (true, STOP_POLL as usize),
+                Preparation::Unprepared => {}
+            }
+        }
         if width > 1 {
             return self.advance_batched(
                 space,
                 validity,
                 (a, b, grid),
-                (target, width, polls_first),
+                (target, width, polls_first, prepared),
                 progress,
                 stop,
             );
@@ -188,7 +235,7 @@ impl GridWalker {
         space: &S,
         validity: &V,
         (a, b, grid): (&[f64], &[f64], EdgeGrid),
-        (target, width, polls_first): (u64, usize, bool),
+        (target, width, polls_first, prepared): (u64, usize, bool, bool),
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus
@@ -198,14 +245,12 @@ impl GridWalker {
     {
         let start = progress.0;
         let fractions = grid.order(start, target).map(|index| grid.fraction(index));
-        match self.walk_batches(
-            space,
-            validity,
-            (a, b),
-            fractions,
-            (width, polls_first),
-            stop,
-        ) {
+        let batches = Batches {
+            width,
+            polls_first,
+            prepared,
+        };
+        match self.walk_batches(space, validity, (a, b), fractions, batches, stop) {
             Walked::Invalid => {
                 *progress = EdgeProgress(EdgeProgress::INVALID);
                 EdgeStatus::Invalid
@@ -217,16 +262,19 @@ impl GridWalker {
         }
     }
 
-    /// Tests the states at `fractions` of the edge `a → b` in order, `width` to a
-    /// [`StateValidity::first_invalid`] call, polling `stop` every [`STOP_POLL`] points (and
-    /// before the first if `polls_first`) so that no batch straddles a poll.
+    /// Tests the states at `fractions` of the edge `a → b` in order, `batches.width` to a call
+    /// — [`StateValidity::first_invalid_on`] with the fractions if the walker's segment is
+    /// prepared, [`StateValidity::first_invalid`] with interpolated states otherwise — polling
+    /// `stop` every [`STOP_POLL`] points (and before the first if `batches.polls_first`) so that
+    /// no batch straddles a poll. Counts the points tested up to and including the first
+    /// invalid one.
     fn walk_batches<S, V>(
         &mut self,
         space: &S,
         validity: &V,
         (a, b): (&[f64], &[f64]),
         fractions: impl Iterator<Item = f64>,
-        (width, polls_first): (usize, bool),
+        batches: Batches,
         stop: &dyn Stop,
     ) -> Walked
     where
@@ -234,31 +282,37 @@ impl GridWalker {
         V: StateValidity + ?Sized,
     {
         let dimension = space.dimension();
-        self.scratch.resize(dimension * width, 0.0);
+        let width = batches.width.clamp(1, STOP_POLL as usize);
+        if !batches.prepared {
+            self.scratch.resize(dimension * width, 0.0);
+        }
+        let mut ts = [0.0; STOP_POLL as usize];
         let mut fractions = fractions.peekable();
         let mut walked = 0_u64;
         while fractions.peek().is_some() {
-            if walked % STOP_POLL == 0 && (walked > 0 || polls_first) && stop.should_stop() {
+            if walked % STOP_POLL == 0 && (walked > 0 || batches.polls_first) && stop.should_stop()
+            {
                 return Walked::Stopped(walked);
             }
             let n = (width as u64).min(STOP_POLL - walked % STOP_POLL) as usize;
             let mut filled = 0;
-            for (slot, t) in self
-                .scratch
-                .chunks_exact_mut(dimension)
-                .zip(&mut fractions)
-                .take(n)
-            {
-                space.interpolate(a, b, t, slot);
+            for (slot, t) in ts.iter_mut().zip(&mut fractions).take(n) {
+                *slot = t;
                 filled += 1;
             }
-            self.counters.points_tested += filled as u64;
-            if validity
-                .first_invalid(&self.scratch[..filled * dimension], dimension)
-                .is_some()
-            {
+            let found = if batches.prepared {
+                validity.first_invalid_on(&mut self.segment, &ts[..filled])
+            } else {
+                for (slot, &t) in self.scratch.chunks_exact_mut(dimension).zip(&ts[..filled]) {
+                    space.interpolate(a, b, t, slot);
+                }
+                validity.first_invalid(&self.scratch[..filled * dimension], dimension)
+            };
+            if let Some(index) = found {
+                self.counters.points_tested += index.min(filled - 1) as u64 + 1;
                 return Walked::Invalid;
             }
+            self.counters.points_tested += filled as u64;
             walked += filled as u64;
         }
         Walked::Done(walked)
@@ -320,15 +374,12 @@ impl GridWalker {
         let fractions = (1..=points)
             .filter(|&i| !on_coarse(i))
             .map(|i| fine.fraction(i));
-        let polls_first = new_points > STOP_POLL;
-        match self.walk_batches(
-            space,
-            validity,
-            (a, b),
-            fractions,
-            (width, polls_first),
-            stop,
-        ) {
+        let batches = Batches {
+            width,
+            polls_first: new_points > STOP_POLL,
+            prepared: false,
+        };
+        match self.walk_batches(space, validity, (a, b), fractions, batches, stop) {
             Walked::Done(_) => EdgeStatus::Valid,
             Walked::Stopped(_) => EdgeStatus::Unknown,
             Walked::Invalid => {
@@ -337,6 +388,15 @@ impl GridWalker {
             }
         }
     }
+}
+
+/// How [`GridWalker::walk_batches`] groups its points: up to `width` per call, on a prepared
+/// segment or as interpolated states, polling before the first point if `polls_first`.
+#[derive(Debug, Clone, Copy)]
+struct Batches {
+    width: usize,
+    polls_first: bool,
+    prepared: bool,
 }
 
 /// How a [`GridWalker::walk_batches`] walk ended, with the points it tested valid.

@@ -34,6 +34,7 @@
 //! | [`StateValidity`] | the trait: is one state valid |
 //! | [`World`], [`AxisBox`], [`Lattice`] | axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics) |
 //! | [`World::segment_verdict`], [`SegmentVerdict`], [`SegmentCause`] | exact validation of a straight segment against a world (slab tests, no grid) |
+//! | [`Segment`], [`Preparation`] | a straight edge prepared for batched point checks (per-edge broad phase, SIMD lanes) |
 //! | [`AllValid`] | the empty world |
 //! | [`Counted`] | wrapper counting validity calls |
 //! | [`EdgeChecker`] | the trait: sparse and full edge checks with per-edge memory |
@@ -57,9 +58,11 @@ mod fixed_sparse_checker;
 mod grid_walker;
 mod length_adaptive_checker;
 mod length_buckets;
+mod segment;
 mod segment_validation;
 mod state_validity;
 mod world;
+mod world_segment;
 
 pub use bisection_order::{BisectionOrder, EdgeGrid};
 pub use dense_checker::DenseChecker;
@@ -70,6 +73,7 @@ pub use fixed_sparse_checker::FixedSparseChecker;
 pub use grid_walker::{EdgeCounters, GridWalker, STOP_POLL, canonical_ends};
 pub use length_adaptive_checker::LengthAdaptiveChecker;
 pub use length_buckets::{LENGTH_BUCKET_BOUNDS, LENGTH_BUCKET_LABELS, LengthBuckets};
+pub use segment::{Preparation, Segment};
 pub use segment_validation::{SegmentCause, SegmentVerdict};
 pub use state_validity::{AllValid, Counted, StateValidity};
 pub use world::{AxisBox, Lattice, TREE_THRESHOLD, World};

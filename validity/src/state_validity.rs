@@ -2,6 +2,8 @@
 
 use std::cell::Cell;
 
+use crate::{Preparation, Segment};
+
 /// Decides whether a single state is valid (collision-free and within any constraints).
 ///
 /// OMPL's `StateValidityChecker`. Kept separate from edge checking ([`EdgeChecker`](crate::EdgeChecker)),
@@ -53,6 +55,29 @@ pub trait StateValidity {
     fn segment_is_valid(&self, _a: &[f64], _b: &[f64]) -> Option<bool> {
         None
     }
+
+    /// Prepares the straight segment in `segment` (set by the caller to `a → b`) for testing
+    /// its points with [`first_invalid_on`](Self::first_invalid_on): a checker may keep in
+    /// `segment` only what can meet the segment (a per-edge broad phase), or find that no
+    /// point of it can be invalid ([`Preparation::AllValid`]).
+    ///
+    /// The [`GridWalker`](crate::GridWalker) prepares each edge it walks in a space with
+    /// straight edges, unless acceleration is off. The default prepares nothing
+    /// ([`Preparation::Unprepared`]). A checker that prepares must answer, through
+    /// `first_invalid_on`, exactly what [`is_valid`](Self::is_valid) says of each point.
+    #[inline]
+    fn prepare_segment(&self, _segment: &mut Segment) -> Preparation {
+        Preparation::Unprepared
+    }
+
+    /// The index of the first invalid point among the points at `fractions` of a segment
+    /// prepared by [`prepare_segment`](Self::prepare_segment) (`a + (b − a)·t` for each `t`),
+    /// or `None` if all are valid — exactly what testing them in order with
+    /// [`is_valid`](Self::is_valid) would answer. The default does just that.
+    #[inline]
+    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        segment.first_invalid_by(fractions, |state| self.is_valid(state))
+    }
 }
 
 impl<V: StateValidity + ?Sized> StateValidity for &V {
@@ -75,6 +100,16 @@ impl<V: StateValidity + ?Sized> StateValidity for &V {
     fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
         (**self).segment_is_valid(a, b)
     }
+
+    #[inline]
+    fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
+        (**self).prepare_segment(segment)
+    }
+
+    #[inline]
+    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        (**self).first_invalid_on(segment, fractions)
+    }
 }
 
 impl<V: StateValidity + ?Sized> StateValidity for Box<V> {
@@ -96,6 +131,16 @@ impl<V: StateValidity + ?Sized> StateValidity for Box<V> {
     #[inline]
     fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
         (**self).segment_is_valid(a, b)
+    }
+
+    #[inline]
+    fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
+        (**self).prepare_segment(segment)
+    }
+
+    #[inline]
+    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        (**self).first_invalid_on(segment, fractions)
     }
 }
 
@@ -188,5 +233,18 @@ impl<V: StateValidity> StateValidity for Counted<V> {
     #[inline]
     fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
         self.inner.segment_is_valid(a, b)
+    }
+
+    /// Prepared like the wrapped checker.
+    #[inline]
+    fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
+        self.inner.prepare_segment(segment)
+    }
+
+    /// Counts every point of the call, as the batched `first_invalid` does.
+    #[inline]
+    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        self.count.set(self.count.get() + fractions.len() as u64);
+        self.inner.first_invalid_on(segment, fractions)
     }
 }

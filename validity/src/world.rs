@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 use spaces::StateSpace;
 
 use crate::box_tree::BoxTree;
-use crate::{StateValidity, ValidityError};
+use crate::{Preparation, Segment, StateValidity, ValidityError};
 
 /// Above this many boxes a world checks states through a bounding-volume hierarchy; at or
 /// below it a linear scan of the contiguous rows is as fast. Measured with
@@ -75,18 +75,18 @@ pub struct Lattice {
 /// ```
 #[derive(Debug, Clone)]
 pub struct World {
-    lower: Vec<f64>,
-    upper: Vec<f64>,
+    pub(crate) lower: Vec<f64>,
+    pub(crate) upper: Vec<f64>,
     obstacles: Vec<AxisBox>,
     anti_obstacles: Vec<AxisBox>,
-    lattices: Vec<Lattice>,
+    pub(crate) lattices: Vec<Lattice>,
     /// Obstacles as `[lo, hi]` pairs per dimension, box after box.
-    obstacle_rows: Vec<f64>,
+    pub(crate) obstacle_rows: Vec<f64>,
     /// Anti-obstacles likewise.
-    anti_rows: Vec<f64>,
+    pub(crate) anti_rows: Vec<f64>,
     /// Hierarchies over the rows of large worlds, built on first use after the last change.
-    obstacle_tree: OnceLock<BoxTree>,
-    anti_tree: OnceLock<BoxTree>,
+    pub(crate) obstacle_tree: OnceLock<BoxTree>,
+    pub(crate) anti_tree: OnceLock<BoxTree>,
 }
 
 /// Worlds are equal when they define the same valid set the same way (the hierarchies are
@@ -338,6 +338,20 @@ impl StateValidity for World {
         // Most states are in no obstacle: test obstacles first, anti-obstacles only on a hit.
         self.in_bounds(state)
             && (!self.in_obstacle(state) || self.in_boxes(&self.anti_rows, &self.anti_tree, state))
+    }
+
+    /// Keeps the boxes whose bounds meet the segment's reach and the bounds it may leave
+    /// (see [`World::prepare`]).
+    #[inline]
+    fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
+        self.prepare(segment)
+    }
+
+    /// Four points per SIMD step against the boxes the segment kept (see
+    /// [`World::first_invalid_on_segment`]).
+    #[inline]
+    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        self.first_invalid_on_segment(segment, fractions)
     }
 
     /// The exact slab tests of [`segment_verdict`](World::segment_verdict).

@@ -178,7 +178,8 @@ fn reset_returns_to_level_zero() {
 fn full_check_stops_when_told_and_resumes() {
     let space = RealVectorSpace::cube(2, -0.5, 0.5).unwrap();
     let world = World::in_space(&space);
-    let mut checker = DenseChecker::new(1e-5).unwrap();
+    // One state at a time: the walk itself is stopped.
+    let mut checker = DenseChecker::new(1e-5).unwrap().with_acceleration(false);
     let (a, b) = ([-0.4, 0.0], [0.4, 0.0]);
     let mut progress = EdgeProgress::default();
     let stopped = checker.check_full(&space, &world, &a, &b, &mut progress, &|| true);
@@ -191,4 +192,15 @@ fn full_check_stops_when_told_and_resumes() {
     let done = checker.check_full(&space, &world, &a, &b, &mut progress, &Never);
     assert_eq!(done, EdgeStatus::Valid);
     assert_eq!(progress.tested(), 79_999);
+    // Accelerated, the empty world's broad phase decides the edge without a test: at once,
+    // stop or not.
+    let mut checker = DenseChecker::new(1e-5).unwrap();
+    let mut progress = EdgeProgress::default();
+    let done = checker.check_full(&space, &world, &a, &b, &mut progress, &|| true);
+    assert_eq!((done, progress.tested()), (EdgeStatus::Valid, 79_999));
+    let counters = <DenseChecker as EdgeChecker<RealVectorSpace, World>>::counters(&checker);
+    assert_eq!(
+        (counters.points_tested, counters.points_culled),
+        (79_999, 79_999)
+    );
 }

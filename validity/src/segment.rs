@@ -1,0 +1,191 @@
+//! [`Segment`]: a straight edge prepared for batched point checks, and what a validity checker
+//! says about it once prepared ([`Preparation`]).
+
+use wide::f64x4;
+
+/// What a validity checker made of a straight segment it was asked to prepare
+/// ([`StateValidity::prepare_segment`](crate::StateValidity::prepare_segment)).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Preparation {
+    /// The checker prepares nothing (the default): test interpolated states one by one or in
+    /// batches of [`StateValidity::batch_width`](crate::StateValidity::batch_width).
+    Unprepared,
+    /// The segment is prepared: test its points with
+    /// [`StateValidity::first_invalid_on`](crate::StateValidity::first_invalid_on).
+    Prepared,
+    /// Every point of the segment is valid, proven without testing any (nothing the checker
+    /// knows of comes near the segment): there is nothing to test.
+    AllValid,
+}
+
+/// A straight edge `a → b` whose points `a + (b − a)·t` are to be tested, with room for what
+/// the validity checker keeps of its world for this edge (the per-edge broad phase).
+///
+/// The [`GridWalker`](crate::GridWalker) owns one and reuses it for every edge, so preparing an
+/// edge allocates nothing once the buffers have grown to the world's size. It is prepared only
+/// in spaces whose edges are straight lines
+/// ([`StateSpace::is_euclidean`](spaces::StateSpace::is_euclidean)); the points are computed
+/// with exactly the floating-point operations of their `interpolate`,
+/// `x + (y − x)·t` per coordinate, so a prepared check answers bit for bit what interpolating
+/// and testing state by state would.
+///
+/// ```
+/// use validity::Segment;
+/// let mut segment = Segment::default();
+/// segment.set(&[0.0, 1.0], &[1.0, 3.0]);
+/// let mut point = [0.0; 2];
+/// segment.point(0.25, &mut point);
+/// assert_eq!(point, [0.25, 1.5]);
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct Segment {
+    /// The start `a`.
+    pub(crate) start: Vec<f64>,
+    /// `b − a`, per coordinate.
+    pub(crate) delta: Vec<f64>,
+    /// Smallest and largest value each coordinate can take at any `t ∈ [0, 1]`, rounding
+    /// included: `[lo₀, hi₀, lo₁, hi₁, …]`.
+    pub(crate) reach: Vec<f64>,
+    /// For a box world: the obstacles that meet `reach`, as `[lo, hi]` rows.
+    pub(crate) obstacles: Vec<f64>,
+    /// For a box world: the anti-obstacles that meet `reach`, likewise.
+    pub(crate) anti_obstacles: Vec<f64>,
+    /// For a box world: the coordinates along which a point may leave the bounds.
+    pub(crate) bound_coordinates: Vec<usize>,
+    /// For a box world: `true` if lattices must be tested point by point.
+    pub(crate) lattices: bool,
+    /// One state, for checkers that test points one by one.
+    pub(crate) state: Vec<f64>,
+}
+
+/// A relative bound on the rounding error of `x + (y − x)·t` for `t ∈ [0, 1]`: at most about
+/// `5u · max(|x|, |y|)` with `u = 2⁻⁵³`; this is `16u`, with room to spare.
+const ROUNDING: f64 = 8.0 * f64::EPSILON;
+
+impl Segment {
+    /// Sets the segment to `a → b` (equal lengths), keeping the buffers.
+    ///
+    /// Also records the coordinates' reach: an interval per coordinate that contains every
+    /// computed point `x + (y − x)·t`, `t ∈ [0, 1]`, widened for rounding — what a broad phase
+    /// may compare against.
+    pub fn set(&mut self, a: &[f64], b: &[f64]) {
+        self.start.clear();
+        self.start.extend_from_slice(a);
+        self.delta.clear();
+        self.delta.extend(a.iter().zip(b).map(|(x, y)| y - x));
+        self.reach.clear();
+        for (&x, &y) in a.iter().zip(b) {
+            let slack = ROUNDING * x.abs().max(y.abs()) + f64::MIN_POSITIVE;
+            self.reach.push(x.min(y) - slack);
+            self.reach.push(x.max(y) + slack);
+        }
+        self.obstacles.clear();
+        self.anti_obstacles.clear();
+        self.bound_coordinates.clear();
+        self.lattices = false;
+    }
+
+    /// Number of coordinates.
+    #[inline]
+    pub fn dimension(&self) -> usize {
+        self.start.len()
+    }
+
+    /// The start `a`.
+    #[inline]
+    pub fn start(&self) -> &[f64] {
+        &self.start
+    }
+
+    /// `true` if every coordinate of `a` and `b − a` is finite (so is every point).
+    pub fn is_finite(&self) -> bool {
+        self.start
+            .iter()
+            .chain(&self.delta)
+            .all(|value| value.is_finite())
+    }
+
+    /// The point at fraction `t`, as the space's `interpolate` computes it: `a + (b − a)·t`.
+    #[inline]
+    pub fn point(&self, t: f64, out: &mut [f64]) {
+        for ((o, &x), &d) in out.iter_mut().zip(&self.start).zip(&self.delta) {
+            *o = x + d * t;
+        }
+    }
+
+    /// Coordinate `d` of the four points at fractions `t` (one per lane).
+    #[inline]
+    pub(crate) fn lanes(&self, d: usize, t: f64x4) -> f64x4 {
+        f64x4::splat(self.start[d]) + f64x4::splat(self.delta[d]) * t
+    }
+
+    /// Coordinate `d`'s reach `(lo, hi)`.
+    #[inline]
+    pub(crate) fn reach(&self, d: usize) -> (f64, f64) {
+        (self.reach[2 * d], self.reach[2 * d + 1])
+    }
+
+    /// The index of the first state among the points at `fractions` that `is_valid` rejects,
+    /// testing them one by one in order (the fallback of checkers without lanes).
+    pub fn first_invalid_by(
+        &mut self,
+        fractions: &[f64],
+        mut is_valid: impl FnMut(&[f64]) -> bool,
+    ) -> Option<usize> {
+        let mut state = std::mem::take(&mut self.state);
+        state.resize(self.dimension(), 0.0);
+        let found = fractions.iter().position(|&t| {
+            self.point(t, &mut state);
+            !is_valid(&state)
+        });
+        self.state = state;
+        found
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reach_contains_every_computed_point() {
+        let cases = [
+            ([0.1, -0.7], [0.3, 0.9]),
+            ([1e-300, 5.0e8], [-3e-310, 5.0e8 + 1e-7]),
+            (
+                [0.333_333_333_333_333_3, 1.0],
+                [0.333_333_333_333_333_4, 1.0],
+            ),
+        ];
+        for (a, b) in cases {
+            let mut segment = Segment::default();
+            segment.set(&a, &b);
+            let mut p = [0.0; 2];
+            for i in 0..=10_000 {
+                segment.point(f64::from(i) / 10_000.0, &mut p);
+                for (d, &x) in p.iter().enumerate() {
+                    let (lo, hi) = segment.reach(d);
+                    assert!(
+                        lo <= x && x <= hi,
+                        "{a:?} → {b:?}: {x} outside [{lo}, {hi}]"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn lanes_compute_the_same_points() {
+        let mut segment = Segment::default();
+        segment.set(&[0.1, 0.2, 0.3], &[0.7, -0.4, 0.31]);
+        let ts = [0.0, 1.0 / 3.0, 0.7, 1.0];
+        let mut p = [0.0; 3];
+        for d in 0..3 {
+            let lanes = segment.lanes(d, f64x4::from(ts)).to_array();
+            for (lane, &t) in ts.iter().enumerate() {
+                segment.point(t, &mut p);
+                assert_eq!(lanes[lane].to_bits(), p[d].to_bits());
+            }
+        }
+    }
+}

@@ -1,0 +1,156 @@
+//! Batched point checks of a box [`World`] along one prepared [`Segment`]: the per-edge broad
+//! phase (keep only the boxes whose bounds meet the edge's reach) and four points per SIMD
+//! step against what is kept (`wide`'s `f64x4`, safe code).
+//!
+//! # Why the answers are unchanged
+//! A point of the segment is computed as `a + (b − a)·t`, exactly as the space interpolates,
+//! and every coordinate of every such point lies within the segment's reach (the interval
+//! between the ends, widened by a bound on the rounding error; see [`Segment::set`]). A box
+//! whose bounds do not meet the reach along some coordinate therefore contains no point of the
+//! segment, grid point or not; dropping it changes no answer. Likewise a coordinate whose
+//! reach lies inside the world's bounds cannot leave them. The lanes then apply the scalar
+//! test's comparisons (`x ≥ lo`, `x ≤ hi`, NaN failing both) to the same numbers.
+//! `validity/tests/world_segments.rs` checks this point by point for random worlds and edges.
+
+use wide::f64x4;
+
+use std::sync::OnceLock;
+
+use crate::box_tree::BoxTree;
+use crate::world::TREE_THRESHOLD;
+use crate::{Preparation, Segment, StateValidity, World};
+
+/// Points per SIMD step.
+const LANES: usize = 4;
+
+/// Most boxes of each kind a prepared segment keeps: an edge that meets more (a long edge
+/// through a dense world of thousands of boxes) is tested point by point through the
+/// hierarchy instead.
+const MOST_KEPT: usize = 64;
+
+impl World {
+    /// The per-edge broad phase: keeps in `segment` the obstacles and anti-obstacles whose
+    /// bounds meet the segment's reach and the coordinates along which it may leave the bounds.
+    /// [`Preparation::AllValid`] if nothing is left that could make a point invalid.
+    ///
+    /// Costs one pass over the boxes, or a query of the hierarchy in worlds of more than
+    /// [`TREE_THRESHOLD`](crate::TREE_THRESHOLD) boxes. Segments with non-finite coordinates,
+    /// and segments that meet more than 64 boxes of a kind, are not prepared: their points are
+    /// tested one by one.
+    pub(crate) fn prepare(&self, segment: &mut Segment) -> Preparation {
+        let n = self.dimension();
+        if n == 0 || segment.dimension() != n || !segment.is_finite() {
+            return Preparation::Unprepared;
+        }
+        for d in 0..n {
+            let (lo, hi) = segment.reach(d);
+            if lo < self.lower[d] || hi > self.upper[d] {
+                segment.bound_coordinates.push(d);
+            }
+        }
+        segment.lattices = self.lattices.iter().any(|l| l.count > 0);
+        let Segment {
+            reach,
+            obstacles,
+            anti_obstacles,
+            ..
+        } = segment;
+        if !self.keep_meeting(&self.obstacle_rows, &self.obstacle_tree, reach, obstacles) {
+            return Preparation::Unprepared;
+        }
+        if obstacles.is_empty() && !segment.lattices {
+            if segment.bound_coordinates.is_empty() {
+                return Preparation::AllValid;
+            }
+            // No obstacle to carve from: anti-obstacles cannot change an answer.
+            return Preparation::Prepared;
+        }
+        if !self.keep_meeting(&self.anti_rows, &self.anti_tree, reach, anti_obstacles) {
+            return Preparation::Unprepared;
+        }
+        Preparation::Prepared
+    }
+
+    /// Appends to `kept` the rows of `rows` (`[lo, hi]` per coordinate) that meet `reach`
+    /// (same layout) along every coordinate: a scan for small worlds, the hierarchy above
+    /// [`TREE_THRESHOLD`] boxes. `false` if more than [`MOST_KEPT`] boxes meet it.
+    fn keep_meeting(
+        &self,
+        rows: &[f64],
+        tree: &OnceLock<BoxTree>,
+        reach: &[f64],
+        kept: &mut Vec<f64>,
+    ) -> bool {
+        let width = reach.len();
+        if rows.len() > TREE_THRESHOLD * width {
+            return tree
+                .get_or_init(|| BoxTree::build(rows, width / 2))
+                .collect_meeting(reach, kept, MOST_KEPT);
+        }
+        for row in rows.chunks_exact(width) {
+            let meets = row
+                .chunks_exact(2)
+                .zip(reach.chunks_exact(2))
+                .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0]);
+            if meets {
+                kept.extend_from_slice(row);
+            }
+        }
+        true
+    }
+
+    /// The first invalid point among the points at `fractions` of a segment this world
+    /// prepared, four points per step: bounds along the coordinates the segment may leave, then
+    /// the kept obstacles (each box's coordinates in turn, stopping when no lane is inside),
+    /// then — only for lanes inside an obstacle — the kept anti-obstacles.
+    pub(crate) fn first_invalid_on_segment(
+        &self,
+        segment: &mut Segment,
+        fractions: &[f64],
+    ) -> Option<usize> {
+        if segment.lattices {
+            return segment.first_invalid_by(fractions, |state| self.is_valid(state));
+        }
+        let segment = &*segment;
+        for (step, chunk) in fractions.chunks(LANES).enumerate() {
+            let mut ts = [chunk[chunk.len() - 1]; LANES];
+            ts[..chunk.len()].copy_from_slice(chunk);
+            let t = f64x4::from(ts);
+            let mut invalid = f64x4::ZERO;
+            for &d in &segment.bound_coordinates {
+                let x = segment.lanes(d, t);
+                let inside =
+                    x.simd_ge(f64x4::splat(self.lower[d])) & x.simd_le(f64x4::splat(self.upper[d]));
+                invalid |= !inside;
+            }
+            let hit = in_rows(&segment.obstacles, segment, t);
+            if hit.any() {
+                invalid |= hit & !in_rows(&segment.anti_obstacles, segment, t);
+            }
+            let lanes = invalid.to_bitmask() & ((1 << chunk.len()) - 1);
+            if lanes != 0 {
+                return Some(step * LANES + lanes.trailing_zeros() as usize);
+            }
+        }
+        None
+    }
+}
+
+/// Lanes whose point lies in some box of `rows`: all ones where inside, zero elsewhere.
+#[inline]
+fn in_rows(rows: &[f64], segment: &Segment, t: f64x4) -> f64x4 {
+    let width = 2 * segment.dimension();
+    let mut inside_any = f64x4::ZERO;
+    for row in rows.chunks_exact(width) {
+        let mut inside = !f64x4::ZERO;
+        for (d, bounds) in row.chunks_exact(2).enumerate() {
+            let x = segment.lanes(d, t);
+            inside &= x.simd_ge(f64x4::splat(bounds[0])) & x.simd_le(f64x4::splat(bounds[1]));
+            if !inside.any() {
+                break;
+            }
+        }
+        inside_any |= inside;
+    }
+    inside_any
+}

@@ -1,0 +1,257 @@
+//! The per-edge broad phase and the batched SIMD point checks of a box world change no answer.
+//!
+//! For random worlds (small ones scanned, large ones through their hierarchy; boxes that cross
+//! the bounds, thin boxes, boxes whose faces lie exactly on an edge's ends) and random edges
+//! (ends on the bounds, on box faces, inside obstacles), every grid point gets the same answer
+//! from a prepared segment as from interpolating it and testing it on its own; a box the
+//! broad phase drops contains no grid point; and whole walks — sparse checks, then a full check
+//! — give the same statuses, progress and point counts with acceleration on and off.
+
+use proptest::prelude::*;
+use spaces::{Never, RealVectorSpace, StateSpace};
+use validity::{
+    AxisBox, DenseChecker, EdgeChecker, EdgeGrid, EdgeProgress, LengthAdaptiveChecker, Preparation,
+    Segment, StateValidity, World, canonical_ends,
+};
+
+/// A coordinate: on a coarse lattice (so that box faces and edge ends coincide exactly) or
+/// anywhere in `[-0.6, 0.6]` (beyond the bounds of `[-0.5, 0.5]` too).
+fn coordinate() -> impl Strategy<Value = f64> {
+    prop_oneof![(-4_i32..=4).prop_map(|k| f64::from(k) / 8.0), -0.6..0.6_f64,]
+}
+
+/// A width: thin, lattice-aligned, or anything up to the whole space.
+fn width() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        Just(1e-9),
+        (1_i32..=8).prop_map(|k| f64::from(k) / 8.0),
+        0.0..1.2_f64,
+    ]
+}
+
+fn boxes(n: usize, most: usize) -> impl Strategy<Value = Vec<AxisBox>> {
+    prop::collection::vec(
+        (
+            prop::collection::vec(coordinate(), n),
+            prop::collection::vec(width(), n),
+        )
+            .prop_map(|(center, widths)| AxisBox::new(center, widths)),
+        0..most,
+    )
+}
+
+/// A world of up to `most` obstacles and anti-obstacles, and an edge with ends in the bounds
+/// or on them.
+fn world_and_edge(most: usize) -> impl Strategy<Value = (World, Vec<f64>, Vec<f64>)> {
+    (1_usize..=5).prop_flat_map(move |n| {
+        let end = prop::collection::vec(
+            prop_oneof![coordinate().prop_map(|x| x.clamp(-0.5, 0.5)), Just(0.5)],
+            n,
+        );
+        (boxes(n, most), boxes(n, most / 2 + 1), end.clone(), end).prop_map(
+            move |(obstacles, antis, a, b)| {
+                let mut world = World::new(vec![-0.5; n], vec![0.5; n]);
+                for o in obstacles {
+                    world.add_obstacle(o).unwrap();
+                }
+                for anti in antis {
+                    world.add_anti_obstacle(anti).unwrap();
+                }
+                (world, a, b)
+            },
+        )
+    })
+}
+
+/// Every grid point of `a — b` with `intervals` intervals: the answer of a prepared segment,
+/// point by point and in one batch, against interpolating and testing each point alone.
+fn compare_points(
+    world: &World,
+    a: &[f64],
+    b: &[f64],
+    intervals: u64,
+) -> Result<(), TestCaseError> {
+    let space = RealVectorSpace::cube(a.len(), -0.5, 0.5).unwrap();
+    let (a, b) = canonical_ends(a, b);
+    let grid = EdgeGrid::with_intervals(intervals);
+    let fractions: Vec<f64> = (1..intervals).map(|i| grid.fraction(i)).collect();
+    let mut state = vec![0.0; a.len()];
+    let alone: Vec<bool> = fractions
+        .iter()
+        .map(|&t| {
+            space.interpolate(a, b, t, &mut state);
+            world.is_valid(&state)
+        })
+        .collect();
+    let mut segment = Segment::default();
+    segment.set(a, b);
+    match world.prepare_segment(&mut segment) {
+        Preparation::Unprepared => {}
+        Preparation::AllValid => {
+            prop_assert!(alone.iter().all(|&v| v), "a free edge has an invalid point");
+        }
+        Preparation::Prepared => {
+            for (i, (&t, &valid)) in fractions.iter().zip(&alone).enumerate() {
+                let prepared = world.first_invalid_on(&mut segment, &[t]).is_none();
+                prop_assert_eq!(prepared, valid, "grid point {} of {}", i + 1, intervals);
+            }
+            for chunk in [1, 3, 4, 5, 32] {
+                for (k, (ts, valid)) in fractions.chunks(chunk).zip(alone.chunks(chunk)).enumerate()
+                {
+                    let expected = valid.iter().position(|&v| !v);
+                    prop_assert_eq!(
+                        world.first_invalid_on(&mut segment, ts),
+                        expected,
+                        "batch {} of width {}",
+                        k,
+                        chunk
+                    );
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A box `width` wide along `d` whose lower (or upper) face, as the world stores it, passes
+/// exactly through `x`, and that spans everything along the other coordinates; `None` if no
+/// centre within a few ulps gives exactly that face.
+fn face_through(n: usize, d: usize, x: f64, width: f64, upper: bool) -> Option<AxisBox> {
+    let half = 0.5 * width + f64::EPSILON;
+    let mut center = if upper { x - half } else { x + half };
+    for _ in 0..8 {
+        let face = if upper { center + half } else { center - half };
+        if face == x {
+            let mut c = vec![0.0; n];
+            let mut w = vec![2.0; n];
+            c[d] = center;
+            w[d] = width;
+            return Some(AxisBox::new(c, w));
+        }
+        center = if face < x {
+            center.next_up()
+        } else {
+            center.next_down()
+        };
+    }
+    None
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(600))]
+
+    /// Boxes whose faces pass exactly through a grid point: closed membership (`≥`, `≤`) is
+    /// kept to the last bit, for obstacles and for anti-obstacles cut into them.
+    #[test]
+    fn faces_exactly_through_grid_points(
+        (world, a, b) in world_and_edge(3),
+        intervals in 2_u64..200,
+        pick in any::<prop::sample::Index>(),
+        coordinate in any::<prop::sample::Index>(),
+        width in 1e-6..0.5_f64,
+        upper in any::<bool>(),
+        anti in any::<bool>(),
+    ) {
+        let n = a.len();
+        let space = RealVectorSpace::cube(n, -0.5, 0.5).unwrap();
+        let (u, v) = canonical_ends(&a, &b);
+        let grid = EdgeGrid::with_intervals(intervals);
+        let i = 1 + pick.index(intervals as usize - 1) as u64;
+        let mut p = vec![0.0; n];
+        space.interpolate(u, v, grid.fraction(i), &mut p);
+        let d = coordinate.index(n);
+        let Some(face) = face_through(n, d, p[d], width, upper) else {
+            return Ok(());
+        };
+        let world = if anti {
+            world
+                .with_obstacle(AxisBox::new(vec![0.0; n], vec![2.0; n]))
+                .unwrap()
+                .with_anti_obstacle(face)
+                .unwrap()
+        } else {
+            world.with_obstacle(face).unwrap()
+        };
+        compare_points(&world, &a, &b, intervals)?;
+    }
+
+    #[test]
+    fn every_grid_point_gets_the_same_answer(
+        (world, a, b) in world_and_edge(10),
+        intervals in prop_oneof![1_u64..40, 40_u64..600],
+    ) {
+        compare_points(&world, &a, &b, intervals)?;
+    }
+
+    #[test]
+    fn every_grid_point_gets_the_same_answer_in_large_worlds(
+        (world, a, b) in world_and_edge(90),
+        intervals in 1_u64..300,
+    ) {
+        compare_points(&world, &a, &b, intervals)?;
+    }
+
+    /// A box the broad phase drops contains no point of the edge: a world made of the dropped
+    /// boxes alone has every grid point valid.
+    #[test]
+    fn dropped_boxes_contain_no_grid_point(
+        (world, a, b) in world_and_edge(10),
+        intervals in 2_u64..400,
+    ) {
+        let n = a.len();
+        let space = RealVectorSpace::cube(n, -0.5, 0.5).unwrap();
+        let (a, b) = canonical_ends(&a, &b);
+        let mut segment = Segment::default();
+        segment.set(a, b);
+        let mut single = Segment::default();
+        let grid = EdgeGrid::with_intervals(intervals);
+        let mut state = vec![0.0; n];
+        for obstacle in world.obstacles() {
+            let alone = World::new(vec![-1.0; n], vec![1.0; n])
+                .with_obstacle(obstacle.clone())
+                .unwrap();
+            single.set(a, b);
+            if alone.prepare_segment(&mut single) != Preparation::AllValid {
+                continue;
+            }
+            for i in 1..intervals {
+                space.interpolate(a, b, grid.fraction(i), &mut state);
+                prop_assert!(!obstacle.contains(&state), "dropped box holds grid point {}", i);
+            }
+        }
+    }
+
+    /// Sparse checks at rising levels and a final full check, from either end: accelerated and
+    /// one state at a time agree on every status, the progress and the points counted.
+    #[test]
+    fn walks_agree_with_acceleration_on_and_off(
+        (world, a, b) in world_and_edge(12),
+        step in 1e-3..0.05_f64,
+        flips in prop::collection::vec(any::<bool>(), 4),
+    ) {
+        let space = RealVectorSpace::cube(a.len(), -0.5, 0.5).unwrap();
+        let fast = LengthAdaptiveChecker::new(step).unwrap();
+        let slow = fast.clone().with_acceleration(false);
+        let mut results = Vec::new();
+        for mut checker in [fast, slow] {
+            let c: &mut dyn EdgeChecker<RealVectorSpace, World> = &mut checker;
+            let mut progress = EdgeProgress::default();
+            let mut statuses = Vec::new();
+            for &flip in &flips[..3] {
+                let (u, v) = if flip { (&b, &a) } else { (&a, &b) };
+                statuses.push(c.check_sparse(&space, &world, u, v, &mut progress, &Never));
+                c.refine();
+            }
+            let (u, v) = if flips[3] { (&b, &a) } else { (&a, &b) };
+            statuses.push(c.check_full(&space, &world, u, v, &mut progress, &Never));
+            results.push((statuses, progress, c.counters().points_tested));
+        }
+        prop_assert_eq!(&results[0], &results[1]);
+        let mut dense = DenseChecker::new(step).unwrap();
+        let mut slow = DenseChecker::new(step).unwrap().with_acceleration(false);
+        let (mut p, mut q) = (EdgeProgress::default(), EdgeProgress::default());
+        let fast_status = dense.check_full(&space, &world, &a, &b, &mut p, &Never);
+        let slow_status = slow.check_full(&space, &world, &a, &b, &mut q, &Never);
+        prop_assert_eq!((fast_status, p), (slow_status, q));
+    }
+}
