@@ -147,7 +147,7 @@ impl RunRecord {
 }
 
 /// How many integer counters a run records.
-pub(crate) const COUNTERS: usize = 46;
+pub(crate) const COUNTERS: usize = 47;
 
 /// Names of the per-length counters: checks and points of sparse and full checks for each bucket
 /// of [`validity::LENGTH_BUCKET_BOUNDS`], named after [`validity::LENGTH_BUCKET_LABELS`]
@@ -188,6 +188,7 @@ fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
         ("sparse edge checks", c.sparse_checks),
         ("full edge checks", c.full_checks),
         ("edge points tested", c.points_tested),
+        ("edge points culled", c.points_culled),
         ("certified edges", c.certifications),
         ("certification failures", c.certification_failures),
         ("nearest neighbour queries", c.neighbour_queries),

@@ -256,7 +256,10 @@ fn the_database_has_planner_arenas_schema_and_appends() {
             |r| r.get(0),
         )
         .unwrap();
-    assert!(settings.starts_with("batch_size = 50\n;"), "{settings:?}");
+    assert!(
+        settings.starts_with("accelerated_checks = true\n;batch_size = 50\n;"),
+        "{settings:?}"
+    );
     drop(db);
 
     // A results folder refuses to rebuild (and so lose) a database holding runs its raw

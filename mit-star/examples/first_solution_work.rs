@@ -6,9 +6,11 @@
 //! cargo run --release -p mit-star --example first_solution_work -- goal-enclosure 4 bit-star 30
 //! ```
 //!
-//! Arguments: problem family, dimension, configuration, number of seeds (1..=N). Each run stops
-//! at its first solution or after 3 s. Prints the first five runs, then the medians over the
-//! solved runs: points tested, time, and time per point.
+//! Arguments: problem family, dimension, configuration, number of seeds (1..=N), and
+//! optionally `one-at-a-time` to turn accelerated point checks off (the layout number of
+//! `random-rectangles` goes after the family: `random-rectangles:2`). Each run stops at its
+//! first solution or after 3 s. Prints the first five runs, then the medians over the solved
+//! runs: points tested (and culled), time, and time per point.
 
 use std::time::Instant;
 
@@ -34,7 +36,12 @@ fn main() {
         }
     };
     let seeds: u64 = args.get(3).and_then(|a| a.parse().ok()).unwrap_or(30);
-    let problem = match problems::builtin(family, dimension, 1) {
+    let accelerated = args.get(4).is_none_or(|a| a != "one-at-a-time");
+    let (family, layout) = match family.split_once(':') {
+        Some((f, l)) => (f, l.parse().unwrap_or(1)),
+        None => (family, 1),
+    };
+    let problem = match problems::builtin(family, dimension, layout) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("{family} in {dimension} dimensions: {e}");
@@ -42,9 +49,11 @@ fn main() {
         }
     };
     let (mut points, mut times, mut per_point) = (Vec::new(), Vec::new(), Vec::new());
+    let mut culled = Vec::new();
     for seed in 1..=seeds {
         let parameters = Parameters {
             seed,
+            accelerated_checks: accelerated,
             ..Parameters::default()
         };
         let mut planner = build_planner(configuration, &problem, &parameters).expect("a planner");
@@ -70,15 +79,18 @@ fn main() {
         }
         if outcome.is_solved() {
             points.push(c.points_tested as f64);
+            culled.push(c.points_culled as f64);
             times.push(seconds);
             per_point.push(seconds * 1e9 / c.points_tested.max(1) as f64);
         }
     }
     println!(
-        "{} on {family} R^{dimension}: {} of {seeds} solved; median {:.0} points, {:.1} ms, {:.1} ns per point",
+        "{} on {family} R^{dimension}{}: {} of {seeds} solved; median {:.0} points ({:.0} culled), {:.2} ms, {:.2} ns per point",
         configuration.label(),
+        if accelerated { "" } else { " (one at a time)" },
         points.len(),
         median(&mut points),
+        median(&mut culled),
         median(&mut times) * 1e3,
         median(&mut per_point)
     );

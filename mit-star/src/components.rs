@@ -131,7 +131,8 @@ impl<S: StateSpace, T: SamplerPart<S>> SamplerPart<S> for Estimated<T> {
 impl<S: StateSpace> CheckerPart<S> for FixedSparseChecker {
     const NAME: &'static str = "fixed-sparse";
     fn build_part(space: &S, p: &Parameters) -> Result<Self, BuildError> {
-        Ok(FixedSparseChecker::from_resolution(space, p.resolution)?)
+        Ok(FixedSparseChecker::from_resolution(space, p.resolution)?
+            .with_acceleration(p.accelerated_checks))
     }
 }
 
@@ -144,14 +145,16 @@ impl<S: StateSpace> CheckerPart<S> for LengthAdaptiveChecker {
             p.sparse_initial_steps * step,
             p.sparse_factor,
             p.sparse_min_steps * step,
-        )?)
+        )?
+        .with_acceleration(p.accelerated_checks))
     }
 }
 
 impl<S: StateSpace> CheckerPart<S> for DenseChecker {
     const NAME: &'static str = "dense";
     fn build_part(space: &S, p: &Parameters) -> Result<Self, BuildError> {
-        Ok(DenseChecker::from_resolution(space, p.resolution)?)
+        Ok(DenseChecker::from_resolution(space, p.resolution)?
+            .with_acceleration(p.accelerated_checks))
     }
 }
 

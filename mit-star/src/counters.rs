@@ -22,8 +22,11 @@ pub struct Counters {
     pub sparse_checks: u64,
     /// Full edge checks requested.
     pub full_checks: u64,
-    /// Grid points tested by edge checks (certification included).
+    /// Grid points tested by edge checks (certification included), the points the validity
+    /// checker's per-edge broad phase decided without a test included.
     pub points_tested: u64,
+    /// Of those, the points decided without a test ([`validity::Preparation::AllValid`]).
+    pub points_culled: u64,
     /// Edges certified on the finer grid before joining the forward tree.
     pub certifications: u64,
     /// Certifications that found the edge invalid between its grid points.
@@ -87,6 +90,7 @@ impl Counters {
         self.sparse_checks = edges.sparse_checks;
         self.full_checks = edges.full_checks;
         self.points_tested = edges.points_tested;
+        self.points_culled = edges.points_culled;
         self.certifications = edges.certifications;
         self.certification_failures = edges.certification_failures;
         self.sparse_checks_by_length = edges.by_length.sparse_checks;

@@ -277,7 +277,8 @@ impl<S: StateSpace, V: StateValidity> InformedRrtStar<S, V, InformedSampler, Den
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
         checked_range(&space, &validity, (&start, &goals), &parameters)?;
-        let checker = DenseChecker::from_resolution(&space, parameters.resolution)?;
+        let checker = DenseChecker::from_resolution(&space, parameters.resolution)?
+            .with_acceleration(parameters.accelerated_checks);
         let sampler = InformedSampler::new(&space, &start, &goals, parameters.seed)?;
         Self::with_parts(
             space,

@@ -409,7 +409,8 @@ impl<S: StateSpace, V: StateValidity> RrtConnect<S, V, DenseChecker> {
         query: (Vec<f64>, Vec<Vec<f64>>),
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
-        let checker = DenseChecker::from_resolution(&space, parameters.resolution)?;
+        let checker = DenseChecker::from_resolution(&space, parameters.resolution)?
+            .with_acceleration(parameters.accelerated_checks);
         Self::with_checker(space, validity, query, checker, parameters)
     }
 }

@@ -128,13 +128,19 @@ fn face_through(n: usize, d: usize, x: f64, width: f64, upper: bool) -> Option<A
             w[d] = width;
             return Some(AxisBox::new(c, w));
         }
-        center = if face < x {
-            center.next_up()
-        } else {
-            center.next_down()
-        };
+        center = next_toward(center, face < x);
     }
     None
+}
+
+/// The neighbouring float of a finite `x`, above (`up`) or below.
+fn next_toward(x: f64, up: bool) -> f64 {
+    if x == 0.0 {
+        let tiny = f64::from_bits(1);
+        return if up { tiny } else { -tiny };
+    }
+    let bits = x.to_bits();
+    f64::from_bits(if (x > 0.0) == up { bits + 1 } else { bits - 1 })
 }
 
 proptest! {
