@@ -65,6 +65,18 @@ pub struct GridWalker {
 /// has fired: a walk the stop lets run always tests at least one point.
 pub const STOP_POLL: u64 = 32;
 
+/// Full checks of prepared edges with at least this many points left scan the grid in
+/// ascending order after a head of bisection positions (see `GridWalker::advance_scanning`).
+const SCAN_MIN: u64 = 512;
+
+/// Bisection positions a scanning full check walks first: levels 1–8, which find any obstacle
+/// wider than 1/256 of the edge.
+const SCAN_HEAD: u64 = 255;
+
+/// Points a scan tests between two polls of the stop condition: a prepared point costs a
+/// nanosecond or two, so this keeps the clock reads rare and the polls microseconds apart.
+const SCAN_POLL: u64 = 1024;
+
 /// The edge `a — b` with its ends in canonical order: the lexicographically smaller state first
 /// (coordinates compared with `f64::total_cmp`).
 ///
@@ -191,6 +203,9 @@ impl GridWalker {
                     *progress = EdgeProgress(target);
                     return progress.status(&grid);
                 }
+                Preparation::Prepared if target == grid.points() && target - start >= SCAN_MIN => {
+                    return self.advance_scanning(space, validity, (a, b, grid), progress, stop);
+                }
                 Preparation::Prepared => (prepared, width) = (true, STOP_POLL as usize),
                 Preparation::Unprepared => {}
             }
@@ -222,6 +237,64 @@ impl GridWalker {
         }
         *progress = EdgeProgress(position);
         progress.status(&grid)
+    }
+
+    /// A full check of a long prepared edge: the first [`SCAN_HEAD`] positions of the
+    /// bisection order (where a wide obstacle shows at once), then every grid point in
+    /// ascending order, [`STOP_POLL`] fractions per call — cheap to generate, and the order
+    /// does not matter when every point turns out valid. If one is invalid, the walk goes on
+    /// in bisection order from where the head stopped and finds the first invalid position
+    /// (an invalid point exists among the untested ones: the tested ones were valid), so the
+    /// status, the progress and the points counted are exactly the walk's. Polls before the
+    /// scan and every [`SCAN_POLL`] points of it; a stopped scan keeps the head's progress.
+    fn advance_scanning<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b, grid): (&[f64], &[f64], EdgeGrid),
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let target = grid.points();
+        let walk = |walker: &mut Self, to: u64, progress: &mut EdgeProgress| {
+            let polls_first = to - progress.0 > STOP_POLL;
+            let batches = (to, STOP_POLL as usize, polls_first, true);
+            walker.advance_batched(space, validity, (a, b, grid), batches, progress, stop)
+        };
+        if progress.0 < SCAN_HEAD {
+            let status = walk(self, SCAN_HEAD.min(target), progress);
+            if status != EdgeStatus::Unknown || progress.0 < SCAN_HEAD.min(target) {
+                return status;
+            }
+        }
+        let mut fractions = [0.0; STOP_POLL as usize];
+        let mut index = 1;
+        let mut since_poll = SCAN_POLL;
+        while index <= target {
+            if since_poll >= SCAN_POLL {
+                if stop.should_stop() {
+                    return progress.status(&grid);
+                }
+                since_poll = 0;
+            }
+            let n = STOP_POLL.min(target + 1 - index);
+            for (k, t) in (0..n).zip(&mut fractions) {
+                *t = grid.fraction(index + k);
+            }
+            let found = validity.first_invalid_on(&mut self.segment, &fractions[..n as usize]);
+            if found.is_some() {
+                return walk(self, target, progress);
+            }
+            index += n;
+            since_poll += n;
+        }
+        self.counters.points_tested += target - progress.0;
+        *progress = EdgeProgress(target);
+        EdgeStatus::Valid
     }
 
     /// [`advance`](Self::advance) for a checker with batches: the next `width` points of the

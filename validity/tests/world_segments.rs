@@ -232,7 +232,7 @@ proptest! {
     #[test]
     fn walks_agree_with_acceleration_on_and_off(
         (world, a, b) in world_and_edge(12),
-        step in 1e-3..0.05_f64,
+        step in prop_oneof![1e-3..0.05_f64, 2e-4..1e-3_f64],
         flips in prop::collection::vec(any::<bool>(), 4),
     ) {
         let space = RealVectorSpace::cube(a.len(), -0.5, 0.5).unwrap();
@@ -259,5 +259,36 @@ proptest! {
         let fast_status = dense.check_full(&space, &world, &a, &b, &mut p, &Never);
         let slow_status = slow.check_full(&space, &world, &a, &b, &mut q, &Never);
         prop_assert_eq!((fast_status, p), (slow_status, q));
+    }
+}
+
+/// A wall ten grid steps thin, off the edge's middle: the bisection head of a scanning full
+/// check misses it, the ascending scan finds it, and the walk that follows reports what the
+/// one-by-one walk does — the same status, progress and points, whatever was tested before.
+#[test]
+fn a_thin_wall_missed_by_the_head_is_found_exactly() {
+    let space = RealVectorSpace::cube(2, -0.5, 0.5).unwrap();
+    let world = World::in_space(&space)
+        .with_obstacle(AxisBox::new(vec![0.123, 0.0], vec![1e-4, 1.0]))
+        .unwrap();
+    let (a, b) = ([-0.4, 0.01], [0.4, -0.02]);
+    for sparse_first in [0_u32, 1, 3] {
+        let mut results = Vec::new();
+        for accelerated in [true, false] {
+            let mut checker = LengthAdaptiveChecker::new(1e-5)
+                .unwrap()
+                .with_acceleration(accelerated);
+            let c: &mut dyn EdgeChecker<RealVectorSpace, World> = &mut checker;
+            let mut progress = EdgeProgress::default();
+            for _ in 0..sparse_first {
+                c.check_sparse(&space, &world, &b, &a, &mut progress, &Never);
+                c.refine();
+            }
+            let status = c.check_full(&space, &world, &a, &b, &mut progress, &Never);
+            results.push((status, progress, c.counters().points_tested));
+        }
+        assert_eq!(results[0], results[1], "after {sparse_first} sparse checks");
+        assert_eq!(results[0].0, validity::EdgeStatus::Invalid);
+        assert!(results[0].2 > 255, "the head alone found the wall");
     }
 }
