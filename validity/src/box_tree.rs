@@ -2,6 +2,8 @@
 //! world of 100 000 boxes answers "is this point in some box" in about a microsecond instead of
 //! a linear scan.
 
+use std::ops::ControlFlow;
+
 /// Boxes per leaf: scanned linearly, like a small world.
 const LEAF: usize = 8;
 
@@ -127,88 +129,100 @@ impl BoxTree {
     /// `true` if `point` lies in some box (closed, as the rows say).
     #[inline]
     pub(crate) fn contains(&self, point: &[f64]) -> bool {
-        if self.nodes.is_empty() {
-            return false;
-        }
-        let width = 2 * self.dimension;
         let inside = |bounds: &[f64]| {
             bounds
                 .chunks_exact(2)
                 .zip(point)
                 .all(|(b, &x)| x >= b[0] && x <= b[1])
         };
-        let mut stack = [0_u32; STACK];
-        let mut top = 1;
-        while top > 0 {
-            top -= 1;
-            let index = stack[top] as usize;
-            if !inside(&self.bounds[index * width..(index + 1) * width]) {
-                continue;
-            }
-            let node = self.nodes[index];
-            if node.count > 0 {
-                let first = node.first as usize;
-                let leaf = &self.rows[first * width..(first + node.count as usize) * width];
-                if leaf.chunks_exact(width).any(inside) {
-                    return true;
-                }
-            } else if top + 2 <= STACK {
-                stack[top] = node.right;
-                stack[top + 1] = node.first;
-                top += 2;
+        let width = 2 * self.dimension;
+        match self.traverse(inside, |rows| {
+            if rows.chunks_exact(width).any(inside) {
+                ControlFlow::Break(())
             } else {
-                // Unreachable for a balanced tree; answer correctly anyway.
-                return self.rows.chunks_exact(width).any(inside);
+                ControlFlow::Continue(())
             }
+        }) {
+            Traversal::Stopped(()) => true,
+            Traversal::Complete => false,
+            // Unreachable for a balanced tree; answer correctly anyway.
+            Traversal::TooDeep => self.rows.chunks_exact(width).any(inside),
         }
-        false
     }
-}
 
-impl BoxTree {
     /// Appends to `kept` the rows of every box that meets `reach` (`[lo, hi]` per coordinate,
     /// closed) and returns `true` — or returns `false`, with `kept` holding a partial list, as
     /// soon as more than `cap` boxes meet it (a per-edge broad phase that keeps that many boxes
     /// would gain nothing over the hierarchy per point).
     pub(crate) fn collect_meeting(&self, reach: &[f64], kept: &mut Vec<f64>, cap: usize) -> bool {
-        if self.nodes.is_empty() {
-            return true;
-        }
-        let width = 2 * self.dimension;
         let meets = |bounds: &[f64]| {
             bounds
                 .chunks_exact(2)
                 .zip(reach.chunks_exact(2))
                 .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0])
         };
-        let (mut stack, mut top, mut count) = ([0_u32; STACK], 1, 0);
+        let width = 2 * self.dimension;
+        let mut count = 0;
+        let traversal = self.traverse(meets, |rows| {
+            for row in rows.chunks_exact(width).filter(|row| meets(row)) {
+                count += 1;
+                if count > cap {
+                    return ControlFlow::Break(());
+                }
+                kept.extend_from_slice(row);
+            }
+            ControlFlow::Continue(())
+        });
+        matches!(traversal, Traversal::Complete)
+    }
+
+    /// Visits, depth first with a fixed-size stack, every leaf whose bounds and whose
+    /// ancestors' bounds pass `enters`, handing its rows to `visit` until that breaks.
+    #[inline]
+    fn traverse<B>(
+        &self,
+        enters: impl Fn(&[f64]) -> bool,
+        mut visit: impl FnMut(&[f64]) -> ControlFlow<B>,
+    ) -> Traversal<B> {
+        if self.nodes.is_empty() {
+            return Traversal::Complete;
+        }
+        let width = 2 * self.dimension;
+        let mut stack = [0_u32; STACK];
+        let mut top = 1;
         while top > 0 {
             top -= 1;
             let index = stack[top] as usize;
-            if !meets(&self.bounds[index * width..(index + 1) * width]) {
+            if !enters(&self.bounds[index * width..(index + 1) * width]) {
                 continue;
             }
             let node = self.nodes[index];
             if node.count > 0 {
                 let first = node.first as usize;
                 let leaf = &self.rows[first * width..(first + node.count as usize) * width];
-                for row in leaf.chunks_exact(width).filter(|row| meets(row)) {
-                    count += 1;
-                    if count > cap {
-                        return false;
-                    }
-                    kept.extend_from_slice(row);
+                if let ControlFlow::Break(value) = visit(leaf) {
+                    return Traversal::Stopped(value);
                 }
             } else if top + 2 <= STACK {
                 stack[top] = node.right;
                 stack[top + 1] = node.first;
                 top += 2;
             } else {
-                return false;
+                return Traversal::TooDeep;
             }
         }
-        true
+        Traversal::Complete
     }
+}
+
+/// How a [`BoxTree::traverse`] ended.
+enum Traversal<B> {
+    /// Every leaf it entered was visited.
+    Complete,
+    /// A visit broke with this value.
+    Stopped(B),
+    /// The stack was too small (not for a balanced tree).
+    TooDeep,
 }
 
 #[cfg(test)]
