@@ -46,10 +46,18 @@ pub struct Segment {
     /// Smallest and largest value each coordinate can take at any `t ∈ [0, 1]`, rounding
     /// included: `[lo₀, hi₀, lo₁, hi₁, …]`.
     pub(crate) reach: Vec<f64>,
-    /// For a box world: the obstacles that meet `reach`, as `[lo, hi]` rows.
+    /// Per coordinate, the bound on the rounding error of a computed point (the reach's
+    /// widening).
+    pub(crate) slack: Vec<f64>,
+    /// For a box world: the obstacles the segment may cross, as `[lo, hi]` rows.
     pub(crate) obstacles: Vec<f64>,
-    /// For a box world: the anti-obstacles that meet `reach`, likewise.
+    /// For each kept obstacle, the fractions `[t₀, t₁]` outside which no computed point of
+    /// the segment lies in it ([`Segment::span`]).
+    pub(crate) obstacle_spans: Vec<[f64; 2]>,
+    /// For a box world: the anti-obstacles the segment may cross, likewise.
     pub(crate) anti_obstacles: Vec<f64>,
+    /// For each kept anti-obstacle, its span.
+    pub(crate) anti_spans: Vec<[f64; 2]>,
     /// For a box world: the coordinates along which a point may leave the bounds.
     pub(crate) bound_coordinates: Vec<usize>,
     /// For a box world: `true` if lattices must be tested point by point.
@@ -74,13 +82,17 @@ impl Segment {
         self.delta.clear();
         self.delta.extend(a.iter().zip(b).map(|(x, y)| y - x));
         self.reach.clear();
+        self.slack.clear();
         for (&x, &y) in a.iter().zip(b) {
             let slack = ROUNDING * x.abs().max(y.abs()) + f64::MIN_POSITIVE;
+            self.slack.push(slack);
             self.reach.push(x.min(y) - slack);
             self.reach.push(x.max(y) + slack);
         }
         self.obstacles.clear();
+        self.obstacle_spans.clear();
         self.anti_obstacles.clear();
+        self.anti_spans.clear();
         self.bound_coordinates.clear();
         self.lattices = false;
     }
@@ -123,6 +135,72 @@ impl Segment {
     #[inline]
     pub(crate) fn reach(&self, d: usize) -> (f64, f64) {
         (self.reach[2 * d], self.reach[2 * d + 1])
+    }
+
+    /// The fractions `[t₀, t₁]` outside which no computed point `a + (b − a)·t`, `t ∈ [0, 1]`,
+    /// lies in the closed box `row` (`[lo, hi]` per coordinate), or `None` if none does.
+    ///
+    /// The slab test of the exact line against the box widened by the points' rounding bound
+    /// (a computed point in the box puts the exact point in the widened box), each end moved
+    /// outwards by a bound on its own rounding error — so the span may be loose, never short.
+    pub(crate) fn span(&self, row: &[f64]) -> Option<[f64; 2]> {
+        let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+        for (d, bounds) in row.chunks_exact(2).enumerate() {
+            let (a, delta, slack) = (self.start[d], self.delta[d], self.slack[d]);
+            let (lo, hi) = (bounds[0] - slack, bounds[1] + slack);
+            if delta == 0.0 {
+                if a < lo || a > hi {
+                    return None;
+                }
+                continue;
+            }
+            let (enter, exit) = ((lo - a) / delta, (hi - a) / delta);
+            let (enter, exit) = if delta > 0.0 {
+                (enter, exit)
+            } else {
+                (exit, enter)
+            };
+            // |computed − exact| ≤ 3u(|bound| + slack + |a|)/|δ| + u|t| per end, with room;
+            // a non-finite end (NaN included) leaves that side open: `max`/`min` skip NaN.
+            let scale = (lo.abs().max(hi.abs()) + slack + a.abs()) / delta.abs();
+            let error = ROUNDING * (scale + enter.abs().max(exit.abs()));
+            t0 = t0.max(enter - error);
+            t1 = t1.min(exit + error);
+        }
+        (t0 <= t1).then_some([t0, t1])
+    }
+
+    /// Keeps, of the obstacles and anti-obstacles a broad phase put in the segment, those it
+    /// may cross ([`span`](Self::span) not `None`), and records their spans.
+    pub(crate) fn keep_crossed(&mut self) {
+        let width = 2 * self.dimension();
+        for anti in [false, true] {
+            let mut rows = std::mem::take(if anti {
+                &mut self.anti_obstacles
+            } else {
+                &mut self.obstacles
+            });
+            let mut spans = std::mem::take(if anti {
+                &mut self.anti_spans
+            } else {
+                &mut self.obstacle_spans
+            });
+            spans.clear();
+            let mut kept = 0;
+            for i in 0..rows.len() / width.max(1) {
+                if let Some(span) = self.span(&rows[i * width..(i + 1) * width]) {
+                    rows.copy_within(i * width..(i + 1) * width, kept * width);
+                    spans.push(span);
+                    kept += 1;
+                }
+            }
+            rows.truncate(kept * width);
+            if anti {
+                (self.anti_obstacles, self.anti_spans) = (rows, spans);
+            } else {
+                (self.obstacles, self.obstacle_spans) = (rows, spans);
+            }
+        }
     }
 
     /// The index of the first state among the points at `fractions` that `is_valid` rejects,

@@ -68,6 +68,11 @@ impl World {
         if !self.keep_meeting(&self.anti_rows, &self.anti_tree, reach, anti_obstacles) {
             return Preparation::Unprepared;
         }
+        segment.keep_crossed();
+        if segment.obstacles.is_empty() && !segment.lattices && segment.bound_coordinates.is_empty()
+        {
+            return Preparation::AllValid;
+        }
         Preparation::Prepared
     }
 
@@ -116,6 +121,10 @@ impl World {
             let mut ts = [chunk[chunk.len() - 1]; LANES];
             ts[..chunk.len()].copy_from_slice(chunk);
             let t = f64x4::from(ts);
+            let lanes = [
+                ts.iter().copied().fold(f64::INFINITY, f64::min),
+                ts.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            ];
             let mut invalid = f64x4::ZERO;
             for &d in &segment.bound_coordinates {
                 let x = segment.lanes(d, t);
@@ -123,9 +132,15 @@ impl World {
                     x.simd_ge(f64x4::splat(self.lower[d])) & x.simd_le(f64x4::splat(self.upper[d]));
                 invalid |= !inside;
             }
-            let hit = in_rows(&segment.obstacles, segment, t);
+            let hit = in_rows(
+                (&segment.obstacles, &segment.obstacle_spans),
+                segment,
+                t,
+                lanes,
+            );
             if hit.any() {
-                invalid |= hit & !in_rows(&segment.anti_obstacles, segment, t);
+                let anti = (&segment.anti_obstacles[..], &segment.anti_spans[..]);
+                invalid |= hit & !in_rows(anti, segment, t, lanes);
             }
             let lanes = invalid.to_bitmask() & ((1 << chunk.len()) - 1);
             if lanes != 0 {
@@ -136,12 +151,21 @@ impl World {
     }
 }
 
-/// Lanes whose point lies in some box of `rows`: all ones where inside, zero elsewhere.
+/// Lanes whose point lies in some box of `rows`: all ones where inside, zero elsewhere. Boxes
+/// whose span misses the lanes' fractions (`[min, max]` in `lanes`) are skipped.
 #[inline]
-fn in_rows(rows: &[f64], segment: &Segment, t: f64x4) -> f64x4 {
+fn in_rows(
+    (rows, spans): (&[f64], &[[f64; 2]]),
+    segment: &Segment,
+    t: f64x4,
+    lanes: [f64; 2],
+) -> f64x4 {
     let width = 2 * segment.dimension();
     let mut inside_any = f64x4::ZERO;
-    for row in rows.chunks_exact(width) {
+    for (row, span) in rows.chunks_exact(width).zip(spans) {
+        if span[0] > lanes[1] || span[1] < lanes[0] {
+            continue;
+        }
         let mut inside = !f64x4::ZERO;
         for (d, bounds) in row.chunks_exact(2).enumerate() {
             let x = segment.lanes(d, t);

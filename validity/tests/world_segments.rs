@@ -48,8 +48,22 @@ fn world_and_edge(most: usize) -> impl Strategy<Value = (World, Vec<f64>, Vec<f6
             prop_oneof![coordinate().prop_map(|x| x.clamp(-0.5, 0.5)), Just(0.5)],
             n,
         );
-        (boxes(n, most), boxes(n, most / 2 + 1), end.clone(), end).prop_map(
-            move |(obstacles, antis, a, b)| {
+        // Some edges are nearly parallel to axes: `b` is `a` moved by a few nanometres along
+        // some coordinates and freely along others.
+        let nudges = prop::collection::vec(prop_oneof![Just(None), (-3_i32..=3).prop_map(Some)], n);
+        (
+            boxes(n, most),
+            boxes(n, most / 2 + 1),
+            end.clone(),
+            end,
+            nudges,
+        )
+            .prop_map(move |(obstacles, antis, a, mut b, nudges)| {
+                for ((y, &x), nudge) in b.iter_mut().zip(&a).zip(nudges) {
+                    if let Some(k) = nudge {
+                        *y = (x + f64::from(k) * 1e-9).clamp(-0.5, 0.5);
+                    }
+                }
                 let mut world = World::new(vec![-0.5; n], vec![0.5; n]);
                 for o in obstacles {
                     world.add_obstacle(o).unwrap();
@@ -58,8 +72,7 @@ fn world_and_edge(most: usize) -> impl Strategy<Value = (World, Vec<f64>, Vec<f6
                     world.add_anti_obstacle(anti).unwrap();
                 }
                 (world, a, b)
-            },
-        )
+            })
     })
 }
 
