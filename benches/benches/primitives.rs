@@ -105,14 +105,20 @@ fn full_edge_check(c: &mut Criterion) {
             let mut checker = DenseChecker::from_resolution(p.space(), RESOLUTION).unwrap();
             let (a, b) = free_edge(&p, &mut checker);
             let (space, world) = (p.space(), p.world());
-            group.bench_function(BenchmarkId::new(name, n), |bench| {
-                bench.iter(|| {
-                    let mut progress = EdgeProgress::default();
-                    let status = checker.check_full(space, world, &a, &b, &mut progress, &Never);
-                    assert_eq!(status, EdgeStatus::Valid);
-                    black_box(progress)
+            // One state at a time (OMPL's way), then accelerated (broad phase, SIMD lanes).
+            for (mode, accelerated) in [("one-at-a-time", false), ("accelerated", true)] {
+                let mut checker = checker.clone().with_acceleration(accelerated);
+                let id = BenchmarkId::new(format!("{name}/{mode}"), n);
+                group.bench_function(id, |bench| {
+                    bench.iter(|| {
+                        let mut progress = EdgeProgress::default();
+                        let status =
+                            checker.check_full(space, world, &a, &b, &mut progress, &Never);
+                        assert_eq!(status, EdgeStatus::Valid);
+                        black_box(progress)
+                    });
                 });
-            });
+            }
         }
     }
     group.finish();
