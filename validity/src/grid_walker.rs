@@ -51,6 +51,12 @@ pub struct GridWalker {
     scratch: Vec<f64>,
     segment: Segment,
     accelerated: bool,
+    /// An interrupted scan: the edge's ends (`a` then `b`, canonical order) and the first grid
+    /// index not yet scanned (0: none). Every index below it was valid, so a later full check
+    /// of the same edge resumes there instead of starting over (a scan longer than the time
+    /// slices a planner is given would otherwise never finish).
+    scan_edge: Vec<f64>,
+    scan_next: u64,
     counters: EdgeCounters,
 }
 
@@ -119,6 +125,8 @@ impl GridWalker {
             scratch: Vec::new(),
             segment: Segment::default(),
             accelerated: true,
+            scan_edge: Vec::new(),
+            scan_next: 0,
             counters: EdgeCounters::default(),
         })
     }
@@ -246,7 +254,9 @@ impl GridWalker {
     /// in bisection order from where the head stopped and finds the first invalid position
     /// (an invalid point exists among the untested ones: the tested ones were valid), so the
     /// status, the progress and the points counted are exactly the walk's. Polls before the
-    /// scan and every [`SCAN_POLL`] points of it; a stopped scan keeps the head's progress.
+    /// scan and every [`SCAN_POLL`] points of it; a stopped scan keeps the head's progress, and
+    /// the walker remembers where the scan of this edge stopped, so that the next full check of
+    /// the same edge goes on from there.
     fn advance_scanning<S, V>(
         &mut self,
         space: &S,
@@ -272,11 +282,22 @@ impl GridWalker {
             }
         }
         let mut fractions = [0.0; STOP_POLL as usize];
-        let mut index = 1;
+        let resumes = self.scan_next > 0
+            && self.scan_edge.len() == a.len() + b.len()
+            && self
+                .scan_edge
+                .iter()
+                .zip(a.iter().chain(b))
+                .all(|(x, y)| x.to_bits() == y.to_bits());
+        let mut index = if resumes { self.scan_next } else { 1 };
+        self.scan_next = 0;
         let mut since_poll = SCAN_POLL;
         while index <= target {
             if since_poll >= SCAN_POLL {
                 if stop.should_stop() {
+                    self.scan_edge.clear();
+                    self.scan_edge.extend(a.iter().chain(b));
+                    self.scan_next = index;
                     return progress.status(&grid);
                 }
                 since_poll = 0;

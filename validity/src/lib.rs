@@ -50,6 +50,7 @@
 
 mod bisection_order;
 mod box_tree;
+mod crossing;
 mod dense_checker;
 mod edge_checker;
 mod edge_progress;

@@ -51,12 +51,12 @@ pub struct Segment {
     pub(crate) slack: Vec<f64>,
     /// For a box world: the obstacles the segment may cross, as `[lo, hi]` rows.
     pub(crate) obstacles: Vec<f64>,
-    /// For each kept obstacle, the fractions `[t₀, t₁]` outside which no computed point of
-    /// the segment lies in it ([`Segment::span`]).
+    /// For each kept obstacle, exactly the fractions `[τ₀, τ₁]` whose computed point lies in it
+    /// ([`Segment::crossing`]).
     pub(crate) obstacle_spans: Vec<[f64; 2]>,
     /// For a box world: the anti-obstacles the segment may cross, likewise.
     pub(crate) anti_obstacles: Vec<f64>,
-    /// For each kept anti-obstacle, its span.
+    /// For each kept anti-obstacle, its crossing.
     pub(crate) anti_spans: Vec<[f64; 2]>,
     /// For a box world: the coordinates along which a point may leave the bounds.
     pub(crate) bound_coordinates: Vec<usize>,
@@ -171,7 +171,8 @@ impl Segment {
     }
 
     /// Keeps, of the obstacles and anti-obstacles a broad phase put in the segment, those it
-    /// may cross ([`span`](Self::span) not `None`), and records their spans.
+    /// crosses, and records their crossings: the [`span`](Self::span), then the exact
+    /// [`crossing`](Self::crossing) within it.
     pub(crate) fn keep_crossed(&mut self) {
         let width = 2 * self.dimension();
         for anti in [false, true] {
@@ -188,7 +189,8 @@ impl Segment {
             spans.clear();
             let mut kept = 0;
             for i in 0..rows.len() / width.max(1) {
-                if let Some(span) = self.span(&rows[i * width..(i + 1) * width]) {
+                let row = &rows[i * width..(i + 1) * width];
+                if let Some(span) = self.span(row).and_then(|span| self.crossing(row, span)) {
                     rows.copy_within(i * width..(i + 1) * width, kept * width);
                     spans.push(span);
                     kept += 1;

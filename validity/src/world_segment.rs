@@ -1,16 +1,21 @@
 //! Batched point checks of a box [`World`] along one prepared [`Segment`]: the per-edge broad
-//! phase (keep only the boxes whose bounds meet the edge's reach) and four points per SIMD
-//! step against what is kept (`wide`'s `f64x4`, safe code).
+//! phase (keep only the boxes the edge crosses, each with the exact interval of fractions whose
+//! points lie in it) and four points per SIMD step against those intervals (`wide`'s `f64x4`,
+//! safe code).
 //!
 //! # Why the answers are unchanged
 //! A point of the segment is computed as `a + (b − a)·t`, exactly as the space interpolates,
 //! and every coordinate of every such point lies within the segment's reach (the interval
 //! between the ends, widened by a bound on the rounding error; see [`Segment::set`]). A box
 //! whose bounds do not meet the reach along some coordinate therefore contains no point of the
-//! segment, grid point or not; dropping it changes no answer. Likewise a coordinate whose
-//! reach lies inside the world's bounds cannot leave them. The lanes then apply the scalar
-//! test's comparisons (`x ≥ lo`, `x ≤ hi`, NaN failing both) to the same numbers.
-//! `validity/tests/world_segments.rs` checks this point by point for random worlds and edges.
+//! segment; dropping it changes no answer. A kept box's span (a slab test against the box
+//! widened by that bound) contains every fraction whose point is in it, and within the span
+//! the exact interval is found by searching the floats: each computed coordinate is monotone
+//! in `t`, so the fractions inside the box are exactly `[τ₀, τ₁]`, and a lane's point is in
+//! the box iff `τ₀ ≤ t ≤ τ₁`. A coordinate whose reach lies inside the world's bounds cannot
+//! leave them; the others are tested with the scalar test's comparisons.
+//! `validity/tests/world_segments.rs` checks this point by point for random worlds and edges,
+//! at grid fractions and at the very floats where the answer changes.
 
 use wide::f64x4;
 
@@ -106,8 +111,8 @@ impl World {
 
     /// The first invalid point among the points at `fractions` of a segment this world
     /// prepared, four points per step: bounds along the coordinates the segment may leave, then
-    /// the kept obstacles (each box's coordinates in turn, stopping when no lane is inside),
-    /// then — only for lanes inside an obstacle — the kept anti-obstacles.
+    /// the crossings of the kept obstacles, then — only for lanes inside an obstacle — those
+    /// of the kept anti-obstacles.
     pub(crate) fn first_invalid_on_segment(
         &self,
         segment: &mut Segment,
@@ -132,15 +137,9 @@ impl World {
                     x.simd_ge(f64x4::splat(self.lower[d])) & x.simd_le(f64x4::splat(self.upper[d]));
                 invalid |= !inside;
             }
-            let hit = in_rows(
-                (&segment.obstacles, &segment.obstacle_spans),
-                segment,
-                t,
-                lanes,
-            );
+            let hit = in_rows(&segment.obstacle_spans, t, lanes);
             if hit.any() {
-                let anti = (&segment.anti_obstacles[..], &segment.anti_spans[..]);
-                invalid |= hit & !in_rows(anti, segment, t, lanes);
+                invalid |= hit & !in_rows(&segment.anti_spans, t, lanes);
             }
             let lanes = invalid.to_bitmask() & ((1 << chunk.len()) - 1);
             if lanes != 0 {
@@ -154,27 +153,12 @@ impl World {
 /// Lanes whose point lies in some box of `rows`: all ones where inside, zero elsewhere. Boxes
 /// whose span misses the lanes' fractions (`[min, max]` in `lanes`) are skipped.
 #[inline]
-fn in_rows(
-    (rows, spans): (&[f64], &[[f64; 2]]),
-    segment: &Segment,
-    t: f64x4,
-    lanes: [f64; 2],
-) -> f64x4 {
-    let width = 2 * segment.dimension();
+fn in_rows(crossings: &[[f64; 2]], t: f64x4, lanes: [f64; 2]) -> f64x4 {
     let mut inside_any = f64x4::ZERO;
-    for (row, span) in rows.chunks_exact(width).zip(spans) {
-        if span[0] > lanes[1] || span[1] < lanes[0] {
-            continue;
+    for &[t0, t1] in crossings {
+        if t0 <= lanes[1] && t1 >= lanes[0] {
+            inside_any |= t.simd_ge(f64x4::splat(t0)) & t.simd_le(f64x4::splat(t1));
         }
-        let mut inside = !f64x4::ZERO;
-        for (d, bounds) in row.chunks_exact(2).enumerate() {
-            let x = segment.lanes(d, t);
-            inside &= x.simd_ge(f64x4::splat(bounds[0])) & x.simd_le(f64x4::splat(bounds[1]));
-            if !inside.any() {
-                break;
-            }
-        }
-        inside_any |= inside;
     }
     inside_any
 }

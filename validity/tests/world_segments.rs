@@ -305,3 +305,84 @@ fn a_thin_wall_missed_by_the_head_is_found_exactly() {
         assert!(results[0].2 > 255, "the head alone found the wall");
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Not only grid fractions: at the exact floats where the one-by-one answer changes along
+    /// the edge (found by bisecting on the floats' bits) and at their neighbours, a prepared
+    /// segment answers as testing the point does — membership is decided to the last ulp of `t`.
+    #[test]
+    fn answers_agree_at_the_floats_where_they_change((world, a, b) in world_and_edge(6)) {
+        let n = a.len();
+        let space = RealVectorSpace::cube(n, -0.5, 0.5).unwrap();
+        let (a, b) = canonical_ends(&a, &b);
+        let mut state = vec![0.0; n];
+        let mut alone = |t: f64| {
+            space.interpolate(a, b, t, &mut state);
+            world.is_valid(&state)
+        };
+        let mut segment = Segment::default();
+        segment.set(a, b);
+        if world.prepare_segment(&mut segment) != Preparation::Prepared {
+            return Ok(());
+        }
+        let coarse: Vec<f64> = (0..=256).map(|i| f64::from(i) / 256.0).collect();
+        for pair in coarse.windows(2) {
+            let (mut lo, mut hi) = (pair[0].to_bits(), pair[1].to_bits());
+            let at_lo = alone(pair[0]);
+            if at_lo == alone(pair[1]) {
+                continue;
+            }
+            while hi - lo > 1 {
+                let mid = lo + (hi - lo) / 2;
+                if alone(f64::from_bits(mid)) == at_lo { lo = mid } else { hi = mid }
+            }
+            for bits in lo.saturating_sub(2)..=hi + 2 {
+                let t = f64::from_bits(bits);
+                if !(0.0..=1.0).contains(&t) {
+                    continue;
+                }
+                let prepared = world.first_invalid_on(&mut segment, &[t]).is_none();
+                prop_assert_eq!(prepared, alone(t), "t = {} ({:#x})", t, bits);
+            }
+        }
+    }
+}
+
+/// A full check whose scan is interrupted again and again (a planner given many short time
+/// slices) resumes its scan where it stopped, so it finishes — with the one-by-one answer.
+#[test]
+fn an_interrupted_scan_resumes_where_it_stopped() {
+    let space = RealVectorSpace::cube(2, -0.5, 0.5).unwrap();
+    let world = World::in_space(&space)
+        .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.1, 1.0]))
+        .unwrap()
+        .with_anti_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.2, 0.1]))
+        .unwrap();
+    let (a, b) = ([-0.4, 0.001], [0.4, -0.002]); // through the gap: valid, crosses the wall
+    let mut slow = DenseChecker::new(2e-5).unwrap().with_acceleration(false);
+    let mut p = EdgeProgress::default();
+    let expected = slow.check_full(&space, &world, &a, &b, &mut p, &Never);
+    assert_eq!(expected, validity::EdgeStatus::Valid);
+    let mut checker = DenseChecker::new(2e-5).unwrap();
+    let mut progress = EdgeProgress::default();
+    let polls = std::cell::Cell::new(0);
+    let mut calls = 0;
+    loop {
+        calls += 1;
+        assert!(calls < 200, "no end after {calls} interrupted checks");
+        polls.set(0);
+        // Each call may pass one poll: 32 points of a walk, or 1024 of a scan.
+        let stop = || {
+            polls.set(polls.get() + 1);
+            polls.get() >= 2
+        };
+        let status = checker.check_full(&space, &world, &a, &b, &mut progress, &stop);
+        if status != validity::EdgeStatus::Unknown {
+            assert_eq!((status, progress), (expected, p));
+            break;
+        }
+    }
+    assert!(calls > 10, "the check was not interrupted ({calls} calls)");
+}

@@ -1,0 +1,154 @@
+//! The exact fractions at which a segment's computed points lie in a box
+//! ([`Segment::crossing`]).
+//!
+//! Along one coordinate the computed value `x + (y − x)·t` is monotone in `t` (both roundings
+//! are monotone), so the fractions whose point lies within a box's `[lo, hi]` along it form an
+//! interval of floats, and the box's fractions are the intersection over the coordinates: one
+//! interval `[τ₀, τ₁]`. It is found exactly by searching the floats themselves (non-negative
+//! floats are ordered like their bits), starting from the span's loose ends, so testing a
+//! point against the box becomes `τ₀ ≤ t ≤ τ₁`, with the answer of testing the point.
+
+use crate::Segment;
+
+impl Segment {
+    /// The exact interval `[τ₀, τ₁]` of fractions `t ∈ [0, 1]` whose computed point lies in the
+    /// closed box `row` (`[lo, hi]` per coordinate), given a `span` that contains it
+    /// ([`Segment::span`]); `None` if no fraction's point does.
+    pub(crate) fn crossing(&self, row: &[f64], span: [f64; 2]) -> Option<[f64; 2]> {
+        // Non-negative, so that bits order like values (no −0.0).
+        let mut t0 = if span[0] > 0.0 { span[0] } else { 0.0 };
+        let mut t1 = span[1].min(1.0);
+        if t0 > t1 {
+            return None;
+        }
+        for (d, bounds) in row.chunks_exact(2).enumerate() {
+            let (lo, hi) = (bounds[0], bounds[1]);
+            let delta = self.delta[d];
+            let x = |t: f64| self.start[d] + delta * t;
+            if delta == 0.0 {
+                let value = x(0.0);
+                if !(value >= lo && value <= hi) {
+                    return None;
+                }
+                continue;
+            }
+            // Rising values enter the box at `lo` and leave it at `hi`; falling ones the other
+            // way round.
+            let (enters, stays): (&dyn Fn(f64) -> bool, &dyn Fn(f64) -> bool) = if delta > 0.0 {
+                (&|v| v >= lo, &|v| v <= hi)
+            } else {
+                (&|v| v <= hi, &|v| v >= lo)
+            };
+            t0 = first_where(t0, t1, |t| enters(x(t)))?;
+            t1 = last_where(t0, t1, |t| stays(x(t)))?;
+        }
+        Some([t0, t1])
+    }
+}
+
+/// The smallest float `t ∈ [t0, t1]` (both ≥ 0) where `holds` does, for a `holds` that is
+/// false then true as `t` grows; `None` if it does not hold at `t1`. Gallops up from `t0` in
+/// float steps, then bisects, so a transition `k` floats away costs `O(log k)` tests.
+fn first_where(t0: f64, t1: f64, holds: impl Fn(f64) -> bool) -> Option<f64> {
+    if holds(t0) {
+        return Some(t0);
+    }
+    if !holds(t1) {
+        return None;
+    }
+    let (mut no, end) = (t0.to_bits(), t1.to_bits());
+    let mut step = 1;
+    let mut yes = loop {
+        let probe = no.saturating_add(step).min(end);
+        if holds(f64::from_bits(probe)) {
+            break probe;
+        }
+        no = probe;
+        step = step.saturating_mul(2);
+    };
+    while yes - no > 1 {
+        let mid = no + (yes - no) / 2;
+        if holds(f64::from_bits(mid)) {
+            yes = mid;
+        } else {
+            no = mid;
+        }
+    }
+    Some(f64::from_bits(yes))
+}
+
+/// The largest float `t ∈ [t0, t1]` (both ≥ 0) where `holds` does, for a `holds` that is true
+/// then false as `t` grows; `None` if it does not hold at `t0`. Gallops down from `t1`.
+fn last_where(t0: f64, t1: f64, holds: impl Fn(f64) -> bool) -> Option<f64> {
+    if holds(t1) {
+        return Some(t1);
+    }
+    if !holds(t0) {
+        return None;
+    }
+    let (begin, mut no) = (t0.to_bits(), t1.to_bits());
+    let mut step = 1;
+    let mut yes = loop {
+        let probe = no.saturating_sub(step).max(begin);
+        if holds(f64::from_bits(probe)) {
+            break probe;
+        }
+        no = probe;
+        step = step.saturating_mul(2);
+    };
+    while no - yes > 1 {
+        let mid = yes + (no - yes) / 2;
+        if holds(f64::from_bits(mid)) {
+            yes = mid;
+        } else {
+            no = mid;
+        }
+    }
+    Some(f64::from_bits(yes))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The neighbouring float of a positive `x` (MSRV 1.85 has no `next_up`).
+    fn up(x: f64) -> f64 {
+        f64::from_bits(x.to_bits() + 1)
+    }
+
+    fn down(x: f64) -> f64 {
+        f64::from_bits(x.to_bits() - 1)
+    }
+
+    #[test]
+    fn searches_find_the_exact_float() {
+        let edge = 0.3_f64;
+        assert_eq!(first_where(0.0, 1.0, |t| t >= edge), Some(edge));
+        assert_eq!(last_where(0.0, 1.0, |t| t <= edge), Some(edge));
+        assert_eq!(first_where(0.0, 1.0, |t| t > edge), Some(up(edge)));
+        assert_eq!(last_where(0.0, 1.0, |t| t < edge), Some(down(edge)));
+        assert_eq!(first_where(0.0, 0.2, |t| t >= edge), None);
+        assert_eq!(last_where(0.4, 1.0, |t| t <= edge), None);
+        assert_eq!(first_where(0.0, 1.0, |_| true), Some(0.0));
+    }
+
+    #[test]
+    fn a_crossing_holds_exactly_the_fractions_whose_points_are_inside() {
+        let mut segment = Segment::default();
+        segment.set(&[0.1, -0.3], &[0.7, 0.45]);
+        let row = [0.2, 0.4, -0.1, 0.3];
+        let span = segment.span(&row).unwrap();
+        let [t0, t1] = segment.crossing(&row, span).unwrap();
+        let mut p = [0.0; 2];
+        let inside =
+            |p: &[f64; 2]| p[0] >= row[0] && p[0] <= row[1] && p[1] >= row[2] && p[1] <= row[3];
+        for t in [t0, t1] {
+            segment.point(t, &mut p);
+            assert!(inside(&p));
+        }
+        for t in [down(t0), up(t1)] {
+            segment.point(t, &mut p);
+            assert!(!inside(&p));
+        }
+    }
+}
