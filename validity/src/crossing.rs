@@ -47,64 +47,54 @@ impl Segment {
 }
 
 /// The smallest float `t ∈ [t0, t1]` (both ≥ 0) where `holds` does, for a `holds` that is
-/// false then true as `t` grows; `None` if it does not hold at `t1`. Gallops up from `t0` in
-/// float steps, then bisects, so a transition `k` floats away costs `O(log k)` tests.
+/// false then true as `t` grows; `None` if it does not hold at `t1`.
 fn first_where(t0: f64, t1: f64, holds: impl Fn(f64) -> bool) -> Option<f64> {
     if holds(t0) {
         return Some(t0);
     }
-    if !holds(t1) {
-        return None;
-    }
-    let (mut no, end) = (t0.to_bits(), t1.to_bits());
-    let mut step = 1;
-    let mut yes = loop {
-        let probe = no.saturating_add(step).min(end);
-        if holds(f64::from_bits(probe)) {
-            break probe;
-        }
-        no = probe;
-        step = step.saturating_mul(2);
-    };
-    while yes - no > 1 {
-        let mid = no + (yes - no) / 2;
-        if holds(f64::from_bits(mid)) {
-            yes = mid;
-        } else {
-            no = mid;
-        }
-    }
-    Some(f64::from_bits(yes))
+    holds(t1).then(|| boundary(t0, t1, holds))
 }
 
 /// The largest float `t ∈ [t0, t1]` (both ≥ 0) where `holds` does, for a `holds` that is true
-/// then false as `t` grows; `None` if it does not hold at `t0`. Gallops down from `t1`.
+/// then false as `t` grows; `None` if it does not hold at `t0`.
 fn last_where(t0: f64, t1: f64, holds: impl Fn(f64) -> bool) -> Option<f64> {
     if holds(t1) {
         return Some(t1);
     }
-    if !holds(t0) {
-        return None;
-    }
-    let (begin, mut no) = (t0.to_bits(), t1.to_bits());
+    holds(t0).then(|| boundary(t1, t0, holds))
+}
+
+/// Between a non-negative float `no` where `holds` fails and one, `yes`, where it holds (in
+/// either order), the float nearest `no` where it holds, for a `holds` that changes once
+/// between them. Gallops from `no` in float steps of 1, 2, 4, … towards `yes`, then bisects:
+/// a change `k` floats from `no` costs `O(log k)` tests.
+fn boundary(no: f64, yes: f64, holds: impl Fn(f64) -> bool) -> f64 {
+    let (mut no, end) = (no.to_bits(), yes.to_bits());
+    let towards = |from: u64, by: u64| {
+        if end > from {
+            from.saturating_add(by).min(end)
+        } else {
+            from.saturating_sub(by).max(end)
+        }
+    };
     let mut step = 1;
     let mut yes = loop {
-        let probe = no.saturating_sub(step).max(begin);
+        let probe = towards(no, step);
         if holds(f64::from_bits(probe)) {
             break probe;
         }
         no = probe;
         step = step.saturating_mul(2);
     };
-    while no - yes > 1 {
-        let mid = yes + (no - yes) / 2;
+    while no.abs_diff(yes) > 1 {
+        let mid = no.min(yes) + no.abs_diff(yes) / 2;
         if holds(f64::from_bits(mid)) {
             yes = mid;
         } else {
             no = mid;
         }
     }
-    Some(f64::from_bits(yes))
+    f64::from_bits(yes)
 }
 
 #[cfg(test)]
