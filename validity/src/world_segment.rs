@@ -150,8 +150,9 @@ impl World {
     }
 }
 
-/// Lanes whose point lies in some box of `rows`: all ones where inside, zero elsewhere. Boxes
-/// whose span misses the lanes' fractions (`[min, max]` in `lanes`) are skipped.
+/// Lanes whose point lies in some box, given the boxes' crossings (exact fraction intervals):
+/// all ones where inside, zero elsewhere. Crossings that miss the lanes' fractions (`[min,
+/// max]` in `lanes`) are skipped.
 #[inline]
 fn in_rows(crossings: &[[f64; 2]], t: f64x4, lanes: [f64; 2]) -> f64x4 {
     let mut inside_any = f64x4::ZERO;
