@@ -49,15 +49,14 @@ pub struct Segment {
     /// Per coordinate, the bound on the rounding error of a computed point (the reach's
     /// widening).
     pub(crate) slack: Vec<f64>,
-    /// For a box world: the obstacles the segment may cross, as `[lo, hi]` rows.
-    pub(crate) obstacles: Vec<f64>,
-    /// For each kept obstacle, exactly the fractions `[τ₀, τ₁]` whose computed point lies in it
-    /// ([`Segment::crossing`]).
-    pub(crate) obstacle_spans: Vec<[f64; 2]>,
-    /// For a box world: the anti-obstacles the segment may cross, likewise.
-    pub(crate) anti_obstacles: Vec<f64>,
-    /// For each kept anti-obstacle, its crossing.
-    pub(crate) anti_spans: Vec<[f64; 2]>,
+    /// For a box world: the `[lo, hi]` rows of the boxes of one kind that meet `reach` (the
+    /// broad phase's candidates, turned into crossings by [`cross`](Self::cross)).
+    pub(crate) candidates: Vec<f64>,
+    /// For a box world: per obstacle the segment crosses, exactly the fractions `[τ₀, τ₁]`
+    /// whose computed point lies in it ([`Segment::crossing`]).
+    pub(crate) obstacle_crossings: Vec<[f64; 2]>,
+    /// For a box world: the crossings of the anti-obstacles, likewise.
+    pub(crate) anti_crossings: Vec<[f64; 2]>,
     /// For a box world: the coordinates along which a point may leave the bounds.
     pub(crate) bound_coordinates: Vec<usize>,
     /// For a box world: `true` if lattices must be tested point by point.
@@ -89,10 +88,9 @@ impl Segment {
             self.reach.push(x.min(y) - slack);
             self.reach.push(x.max(y) + slack);
         }
-        self.obstacles.clear();
-        self.obstacle_spans.clear();
-        self.anti_obstacles.clear();
-        self.anti_spans.clear();
+        self.candidates.clear();
+        self.obstacle_crossings.clear();
+        self.anti_crossings.clear();
         self.bound_coordinates.clear();
         self.lattices = false;
     }
@@ -170,39 +168,30 @@ impl Segment {
         (t0 <= t1).then_some([t0, t1])
     }
 
-    /// Keeps, of the obstacles and anti-obstacles a broad phase put in the segment, those it
-    /// crosses, and records their crossings: the [`span`](Self::span), then the exact
-    /// [`crossing`](Self::crossing) within it.
-    pub(crate) fn keep_crossed(&mut self) {
+    /// Turns the [`candidates`](Self::candidates) into the crossings of the boxes the segment
+    /// crosses — the [`span`](Self::span), then the exact [`crossing`](Self::crossing) within
+    /// it — appended to the anti-obstacles' list if `anti`, the obstacles' otherwise; the
+    /// candidates are used up.
+    pub(crate) fn cross(&mut self, anti: bool) {
         let width = 2 * self.dimension();
-        for anti in [false, true] {
-            let mut rows = std::mem::take(if anti {
-                &mut self.anti_obstacles
-            } else {
-                &mut self.obstacles
-            });
-            let mut spans = std::mem::take(if anti {
-                &mut self.anti_spans
-            } else {
-                &mut self.obstacle_spans
-            });
-            spans.clear();
-            let mut kept = 0;
-            for i in 0..rows.len() / width.max(1) {
-                let row = &rows[i * width..(i + 1) * width];
-                if let Some(span) = self.span(row).and_then(|span| self.crossing(row, span)) {
-                    rows.copy_within(i * width..(i + 1) * width, kept * width);
-                    spans.push(span);
-                    kept += 1;
-                }
-            }
-            rows.truncate(kept * width);
-            if anti {
-                (self.anti_obstacles, self.anti_spans) = (rows, spans);
-            } else {
-                (self.obstacles, self.obstacle_spans) = (rows, spans);
-            }
-        }
+        let candidates = std::mem::take(&mut self.candidates);
+        let mut crossings = std::mem::take(if anti {
+            &mut self.anti_crossings
+        } else {
+            &mut self.obstacle_crossings
+        });
+        crossings.extend(
+            candidates
+                .chunks_exact(width)
+                .filter_map(|row| self.span(row).and_then(|span| self.crossing(row, span))),
+        );
+        *(if anti {
+            &mut self.anti_crossings
+        } else {
+            &mut self.obstacle_crossings
+        }) = crossings;
+        self.candidates = candidates;
+        self.candidates.clear();
     }
 
     /// The index of the first state among the points at `fractions` that `is_valid` rejects,

@@ -80,69 +80,45 @@ pub trait StateValidity {
     }
 }
 
-impl<V: StateValidity + ?Sized> StateValidity for &V {
-    #[inline]
-    fn is_valid(&self, state: &[f64]) -> bool {
-        (**self).is_valid(state)
-    }
+/// Implements [`StateValidity`] for a pointer type by forwarding every method to the pointee,
+/// so that a wrapper's overrides (batches, prepared segments, segment decisions) are kept.
+macro_rules! forward_state_validity {
+    ($($pointer:ty),*) => {$(
+        impl<V: StateValidity + ?Sized> StateValidity for $pointer {
+            #[inline]
+            fn is_valid(&self, state: &[f64]) -> bool {
+                (**self).is_valid(state)
+            }
 
-    #[inline]
-    fn batch_width(&self) -> usize {
-        (**self).batch_width()
-    }
+            #[inline]
+            fn batch_width(&self) -> usize {
+                (**self).batch_width()
+            }
 
-    #[inline]
-    fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
-        (**self).first_invalid(states, dimension)
-    }
+            #[inline]
+            fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+                (**self).first_invalid(states, dimension)
+            }
 
-    #[inline]
-    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
-        (**self).segment_is_valid(a, b)
-    }
+            #[inline]
+            fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
+                (**self).segment_is_valid(a, b)
+            }
 
-    #[inline]
-    fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
-        (**self).prepare_segment(segment)
-    }
+            #[inline]
+            fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
+                (**self).prepare_segment(segment)
+            }
 
-    #[inline]
-    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
-        (**self).first_invalid_on(segment, fractions)
-    }
+            #[inline]
+            fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+                (**self).first_invalid_on(segment, fractions)
+            }
+        }
+    )*};
 }
 
-impl<V: StateValidity + ?Sized> StateValidity for Box<V> {
-    #[inline]
-    fn is_valid(&self, state: &[f64]) -> bool {
-        (**self).is_valid(state)
-    }
-
-    #[inline]
-    fn batch_width(&self) -> usize {
-        (**self).batch_width()
-    }
-
-    #[inline]
-    fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
-        (**self).first_invalid(states, dimension)
-    }
-
-    #[inline]
-    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
-        (**self).segment_is_valid(a, b)
-    }
-
-    #[inline]
-    fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
-        (**self).prepare_segment(segment)
-    }
-
-    #[inline]
-    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
-        (**self).first_invalid_on(segment, fractions)
-    }
-}
+forward_state_validity!(&V, Box<V>);
 
 /// Every state is valid (an empty world).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -34,9 +34,10 @@ const LANES: usize = 4;
 const MOST_KEPT: usize = 64;
 
 impl World {
-    /// The per-edge broad phase: keeps in `segment` the obstacles and anti-obstacles whose
-    /// bounds meet the segment's reach and the coordinates along which it may leave the bounds.
-    /// [`Preparation::AllValid`] if nothing is left that could make a point invalid.
+    /// The per-edge broad phase: records in `segment` the coordinates along which it may leave
+    /// the bounds and the crossings of the obstacles and anti-obstacles it crosses (candidates:
+    /// the boxes whose bounds meet its reach). [`Preparation::AllValid`] if nothing is left
+    /// that could make a point invalid.
     ///
     /// Costs one pass over the boxes, or a query of the hierarchy in worlds of more than
     /// [`TREE_THRESHOLD`](crate::TREE_THRESHOLD) boxes. Segments with non-finite coordinates,
@@ -54,29 +55,27 @@ impl World {
             }
         }
         segment.lattices = self.lattices.iter().any(|l| l.count > 0);
-        let Segment {
-            reach,
-            obstacles,
-            anti_obstacles,
-            ..
-        } = segment;
-        if !self.keep_meeting(&self.obstacle_rows, &self.obstacle_tree, reach, obstacles) {
-            return Preparation::Unprepared;
-        }
-        if obstacles.is_empty() && !segment.lattices {
-            if segment.bound_coordinates.is_empty() {
-                return Preparation::AllValid;
+        for anti in [false, true] {
+            let (rows, tree) = if anti {
+                (&self.anti_rows, &self.anti_tree)
+            } else {
+                (&self.obstacle_rows, &self.obstacle_tree)
+            };
+            let Segment {
+                reach, candidates, ..
+            } = segment;
+            if !self.keep_meeting(rows, tree, reach, candidates) {
+                return Preparation::Unprepared;
             }
-            // No obstacle to carve from: anti-obstacles cannot change an answer.
-            return Preparation::Prepared;
-        }
-        if !self.keep_meeting(&self.anti_rows, &self.anti_tree, reach, anti_obstacles) {
-            return Preparation::Unprepared;
-        }
-        segment.keep_crossed();
-        if segment.obstacles.is_empty() && !segment.lattices && segment.bound_coordinates.is_empty()
-        {
-            return Preparation::AllValid;
+            segment.cross(anti);
+            if !anti && segment.obstacle_crossings.is_empty() && !segment.lattices {
+                // No obstacle to carve from: anti-obstacles cannot change an answer.
+                return if segment.bound_coordinates.is_empty() {
+                    Preparation::AllValid
+                } else {
+                    Preparation::Prepared
+                };
+            }
         }
         Preparation::Prepared
     }
@@ -137,9 +136,9 @@ impl World {
                     x.simd_ge(f64x4::splat(self.lower[d])) & x.simd_le(f64x4::splat(self.upper[d]));
                 invalid |= !inside;
             }
-            let hit = in_rows(&segment.obstacle_spans, t, lanes);
+            let hit = in_crossings(&segment.obstacle_crossings, t, lanes);
             if hit.any() {
-                invalid |= hit & !in_rows(&segment.anti_spans, t, lanes);
+                invalid |= hit & !in_crossings(&segment.anti_crossings, t, lanes);
             }
             let lanes = invalid.to_bitmask() & ((1 << chunk.len()) - 1);
             if lanes != 0 {
@@ -154,7 +153,7 @@ impl World {
 /// all ones where inside, zero elsewhere. Crossings that miss the lanes' fractions (`[min,
 /// max]` in `lanes`) are skipped.
 #[inline]
-fn in_rows(crossings: &[[f64; 2]], t: f64x4, lanes: [f64; 2]) -> f64x4 {
+fn in_crossings(crossings: &[[f64; 2]], t: f64x4, lanes: [f64; 2]) -> f64x4 {
     let mut inside_any = f64x4::ZERO;
     for &[t0, t1] in crossings {
         if t0 <= lanes[1] && t1 >= lanes[0] {
