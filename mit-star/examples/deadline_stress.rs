@@ -10,12 +10,19 @@
 //! budget (1 ms, 10 ms, 100 ms, 1 s) it takes the clock, builds the planner (construction counts
 //! against the budget, as in the harness), solves until the deadline and measures how late
 //! `solve` returned. A run is on time if it returned within `max(1 ms, 1 % of the budget)` of
-//! its deadline. Prints the worst overshoot per configuration and budget, every late run, and
-//! exits with code 1 if any run was late.
+//! its deadline. Prints the worst overshoot per configuration and budget, every late run with the
+//! planner frames of the polls that ended its longest gaps after the deadline, and exits with
+//! code 1 if any run was late. With `--trace`, the polls of each run's last 30 % also record
+//! where they were made, so a late run's gaps name where they began (slower: a diagnostic),
+//! and every run more than 1 ms late is reported, within its allowance or not.
 
 use std::time::{Duration, Instant};
 
-use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
+use mit_star::{Configuration, Parameters, build_planner};
+
+#[path = "support/gaps.rs"]
+mod gaps;
+use gaps::Gaps;
 
 /// One measured run.
 struct Run {
@@ -26,6 +33,8 @@ struct Run {
     seed: u64,
     late: f64,
     solved: bool,
+    /// Where the polls after the deadline came from (late runs only).
+    stalls: String,
 }
 
 fn main() {
@@ -35,8 +44,13 @@ fn main() {
     let mut batches = vec![1_usize, 100, 10_000, 1_000_000];
     let mut budgets = vec![0.001, 0.01, 0.1, 1.0];
     let mut configurations = Configuration::ALL.to_vec();
+    let mut trace = false;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
+        if arg == "--trace" {
+            trace = true;
+            continue;
+        }
         let value = args.next().unwrap_or_default();
         match arg.as_str() {
             "--problem" => problem = value,
@@ -53,7 +67,7 @@ fn main() {
             other => {
                 eprintln!(
                     "unknown option {other}; options: --problem NAME --seeds N --dims 2,4,8 \
-                     --batches 1,100 --budgets 0.01,0.1 --planners mit-star,eit-star"
+                     --batches 1,100 --budgets 0.01,0.1 --planners mit-star,eit-star --trace"
                 );
                 std::process::exit(2);
             }
@@ -79,29 +93,27 @@ fn main() {
                             ..Parameters::default()
                         };
                         let started = Instant::now();
-                        let deadline = started + Duration::from_secs_f64(budget);
+                        let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
                         // Lateness is taken when `solve` returns, before the planner is
                         // dropped (freeing a large graph is the caller's time, not the
                         // planner's).
                         let (solved, late) = match build_planner(configuration, &base, &parameters)
                         {
                             Ok(mut planner) => {
-                                let outcome = planner.solve(&TimeLimit::until(deadline));
+                                let outcome = planner.solve(&gaps);
                                 let late = started.elapsed().as_secs_f64() - budget;
-                                if std::env::var_os("DEADLINE_STRESS_DEBUG").is_some()
-                                    && late > (0.01 * budget).max(0.001)
-                                {
-                                    eprintln!(
-                                        "late run: deadline {deadline:?}, returned {:?}",
-                                        Instant::now()
-                                    );
-                                }
                                 (outcome.is_ok_and(|o| o.is_solved()), late)
                             }
                             Err(e) => {
                                 eprintln!("{}: {e}", configuration.name());
                                 std::process::exit(1);
                             }
+                        };
+                        // Traced runs report every stall over 1 ms, late or not.
+                        let stalls = if late > allowed(budget) || (trace && late > 0.001) {
+                            gaps.report(2)
+                        } else {
+                            String::new()
                         };
                         runs.push(Run {
                             configuration,
@@ -111,13 +123,13 @@ fn main() {
                             seed,
                             late,
                             solved,
+                            stalls,
                         });
                     }
                 }
             }
         }
     }
-    let allowed = |budget: f64| (0.01 * budget).max(0.001);
     println!(
         "## deadline stress on {problem}: {} runs in {:.1} s (dimensions {dimensions:?}, batch sizes {batches:?})\n",
         runs.len(),
@@ -153,9 +165,14 @@ fn main() {
         runs.len() - late.len(),
         runs.len()
     );
-    for r in &late {
+    for r in runs.iter().filter(|r| !r.stalls.is_empty()) {
         println!(
-            "LATE: {} R^{} batch {} budget {} s seed {}: {:.3} ms late",
+            "{}: {} R^{} batch {} budget {} s seed {}: {:.3} ms late",
+            if r.late > allowed(r.budget) {
+                "LATE"
+            } else {
+                "over 1 ms"
+            },
             r.configuration.label(),
             r.dimension,
             r.batch,
@@ -163,10 +180,16 @@ fn main() {
             r.seed,
             1e3 * r.late
         );
+        print!("{}", r.stalls);
     }
     if !late.is_empty() {
         std::process::exit(1);
     }
+}
+
+/// How late a run with `budget` seconds may return: `max(1 ms, 1 % of the budget)`.
+fn allowed(budget: f64) -> f64 {
+    (0.01 * budget).max(0.001)
 }
 
 /// A comma-separated list of numbers (unparsable entries are skipped).

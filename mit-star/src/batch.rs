@@ -7,6 +7,7 @@ use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::eit::Eit;
+use crate::forward_tree::Pruning;
 use crate::graph::Neighbourhood;
 use crate::guidance::{Guidance, ReverseSearch};
 use crate::vertex::NONE;
@@ -14,6 +15,9 @@ use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
 
 /// Samples of a batch made visible to neighbour queries (and indexed) at a time.
 const INDEX_CHUNK: usize = 4096;
+
+/// The most vertices a batch reserves room for before it samples (see `add_batch`).
+const RESERVE_AHEAD: usize = 1 << 16;
 
 impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
@@ -99,23 +103,42 @@ where
         self.sampler.observe_batch_end(solved);
         // 2. Prune with the true solution cost only.
         let mut pruned = 0;
-        // Pruning's scan polls the termination condition: when it fires (before or during
-        // the scan), pruning waits for the next batch (the bound it would prune with is kept).
+        // Pruning polls the termination condition. If it fires before or during the scan,
+        // pruning waits for the next batch (the bound it would prune with is kept); if it
+        // fires during the removal, the next iteration finishes it and samples the batch.
         if self.parameters.pruning
             && solved
             && self.best_cost < self.last_prune_cost
             && !stop.should_stop()
         {
             let protected: Vec<u32> = self.solution_vertices().iter().map(|v| v.0).collect();
-            if let Some(removed) =
-                self.graph
-                    .prune(self.best_cost, &protected, &mut self.scratch, stop)
-            {
-                pruned = removed;
-                self.last_prune_cost = self.best_cost;
-                self.counters.pruned += pruned as u64;
+            match self.graph.prune(self.best_cost, &protected, stop) {
+                Pruning::Done(removed) => pruned = self.record_pruning(removed),
+                Pruning::Abandoned => {}
+                Pruning::Interrupted => return,
             }
         }
+        self.sample_batch(pruned, stop);
+    }
+
+    /// Finishes a pruning interrupted during its removal, then samples the batch it began.
+    pub(crate) fn continue_batch(&mut self, stop: &crate::termination::SolveStop<'_>) {
+        if let Pruning::Done(removed) = self.graph.continue_pruning(stop) {
+            let pruned = self.record_pruning(removed);
+            self.sample_batch(pruned, stop);
+        }
+    }
+
+    /// Books a completed pruning that removed `removed` vertices; returns that number.
+    fn record_pruning(&mut self, removed: usize) -> usize {
+        self.last_prune_cost = self.best_cost;
+        self.counters.pruned += removed as u64;
+        removed
+    }
+
+    /// Steps 3 and 4 of a batch: samples it and makes it visible to the searches (`pruned`
+    /// vertices were removed before it, for the observer).
+    fn sample_batch(&mut self, pruned: usize, stop: &crate::termination::SolveStop<'_>) {
         // 3. Sample under the current bound (reported as the sampler applies it: an
         //    estimated-informed-set sampler replaces "unbounded" by its estimate).
         let bound = self.sampling_bound();
@@ -133,9 +156,13 @@ where
         };
         let mut ids = std::mem::take(&mut self.batch_ids);
         ids.clear();
-        // Grow every per-vertex array once, here, rather than by copies mid-batch.
-        ids.reserve(size);
-        self.graph.reserve(size);
+        // Grow the per-vertex arrays once, here, rather than by copies mid-batch — but by at
+        // most `RESERVE_AHEAD` vertices: reserving for a batch of a million costs milliseconds
+        // on its own, and an array that grows beyond by doubling copies no more than the
+        // vertices added so far (time already spent, within the budget's 1 %).
+        let ahead = size.min(RESERVE_AHEAD);
+        ids.reserve(ahead);
+        self.graph.reserve(ahead);
         let mut sample = std::mem::take(&mut self.sample);
         let mut committed = 0;
         for _ in 0..size {

@@ -315,7 +315,13 @@ where
     /// One iteration (spec §3.1).
     pub(crate) fn iterate(&mut self, stop: &SolveStop<'_>) {
         self.counters.iterations += 1;
-        if self.reverse_restart_pending {
+        if self.graph.is_pruning() {
+            // A pruning interrupted by the termination condition, then its batch, come first.
+            self.continue_batch(stop);
+        } else if self.forward.is_rekeying() {
+            // A reverse restart interrupted by the termination condition comes first.
+            self.continue_reverse_restart(stop);
+        } else if self.reverse_restart_pending {
             // First: the restart discards the reverse expansions deferred before it.
             self.reverse_restart_pending = false;
             self.restart_reverse(stop);

@@ -61,6 +61,29 @@ struct Item {
     version: u32,
 }
 
+impl Item {
+    /// The entries of `slot` (number `id`) in the three heaps: by lower, effort, estimate.
+    #[inline]
+    fn of(s: &Slot, id: usize) -> [Reverse<Self>; 3] {
+        let (k, e) = (s.keys, s.edge);
+        let (l, est, eff) = (bits(k.lower), bits(k.estimated), k.effort);
+        let item = |key| {
+            Reverse(Self {
+                key,
+                source: e.source,
+                target: e.target,
+                slot: id as u32,
+                version: s.version,
+            })
+        };
+        [
+            item([l, est, eff]),
+            item([eff, l, est]),
+            item([est, eff, l]),
+        ]
+    }
+}
+
 /// Order-preserving bits of a non-negative cost (`+∞` included).
 #[inline]
 fn bits(cost: f64) -> u64 {
@@ -84,7 +107,21 @@ pub(crate) struct ForwardQueue {
     open: usize,
     incoming: Vec<Vec<u32>>,
     touched: Vec<u32>,
+    /// A re-key in progress: the next slot to re-key and the heaps' items gathered so far.
+    rekeying: Option<Rekey>,
 }
+
+/// The state of a re-key interrupted by the termination condition.
+#[derive(Debug, Clone, Default)]
+struct Rekey {
+    next: usize,
+    lower: Vec<Reverse<Item>>,
+    effort: Vec<Reverse<Item>>,
+    estimate: Vec<Reverse<Item>>,
+}
+
+/// Slots re-keyed between two polls of the termination condition.
+const REKEY_POLL: usize = 1024;
 
 impl ForwardQueue {
     /// Removes every edge, keeping allocations.
@@ -97,6 +134,7 @@ impl ForwardQueue {
         self.by_estimate.clear();
         self.live = 0;
         self.open = 0;
+        self.rekeying = None;
         for &t in &self.touched {
             if let Some(list) = self.incoming.get_mut(t as usize) {
                 list.clear();
@@ -204,22 +242,62 @@ impl ForwardQueue {
         }
     }
 
-    /// Recomputes every key with `keys_of` and marks every target open (after the reverse
-    /// search restarts).
-    pub(crate) fn rebuild(&mut self, mut keys_of: impl FnMut(&ForwardEdge) -> ForwardKeys) {
-        self.by_lower.clear();
-        self.by_effort.clear();
-        self.by_estimate.clear();
+    /// Starts recomputing every key and marking every target open (after the reverse search
+    /// restarts); [`rekey_all`](Self::rekey_all) does the work. Until it completes, the queue
+    /// must not be used otherwise.
+    pub(crate) fn begin_rekey_all(&mut self) {
+        let take = |heap: &mut BinaryHeap<Reverse<Item>>| {
+            let mut items = std::mem::take(heap).into_vec();
+            items.clear();
+            items
+        };
+        self.rekeying = Some(Rekey {
+            next: 0,
+            lower: take(&mut self.by_lower),
+            effort: take(&mut self.by_effort),
+            estimate: take(&mut self.by_estimate),
+        });
         self.open = 0;
-        for id in 0..self.slots.len() {
+    }
+
+    /// `true` while a re-key begun by [`begin_rekey_all`](Self::begin_rekey_all) is unfinished.
+    pub(crate) fn is_rekeying(&self) -> bool {
+        self.rekeying.is_some()
+    }
+
+    /// Continues the re-key with `keys_of`, polling `stop` every [`REKEY_POLL`] slots; `true`
+    /// once it is complete (at once if none is in progress), `false` if `stop` fired first (the
+    /// next call resumes where this one stopped; keys do not change while the planner is idle).
+    pub(crate) fn rekey_all(
+        &mut self,
+        mut keys_of: impl FnMut(&ForwardEdge) -> ForwardKeys,
+        stop: &dyn spaces::Stop,
+    ) -> bool {
+        let Some(mut r) = self.rekeying.take() else {
+            return true;
+        };
+        while r.next < self.slots.len() {
+            let id = r.next;
+            r.next += 1;
             let s = &mut self.slots[id];
             if s.live {
                 s.keys = keys_of(&s.edge);
                 s.open = true;
                 self.open += 1;
+                let [lower, effort, estimate] = Item::of(s, id);
+                r.lower.push(lower);
+                r.effort.push(effort);
+                r.estimate.push(estimate);
+            }
+            if r.next % REKEY_POLL == 0 && r.next < self.slots.len() && stop.should_stop() {
+                self.rekeying = Some(r);
+                return false;
             }
         }
-        self.reheap();
+        self.by_lower = BinaryHeap::from(r.lower);
+        self.by_effort = BinaryHeap::from(r.effort);
+        self.by_estimate = BinaryHeap::from(r.estimate);
+        true
     }
 
     /// The edge the front selection would pop, with its keys.
@@ -311,21 +389,10 @@ impl ForwardQueue {
     }
 
     fn push(&mut self, slot: u32) {
-        let s = &self.slots[slot as usize];
-        let (k, e) = (s.keys, s.edge);
-        let (lower, estimated, effort) = (bits(k.lower), bits(k.estimated), k.effort);
-        let item = |key| {
-            Reverse(Item {
-                key,
-                source: e.source,
-                target: e.target,
-                slot,
-                version: s.version,
-            })
-        };
-        self.by_lower.push(item([lower, estimated, effort]));
-        self.by_effort.push(item([effort, lower, estimated]));
-        self.by_estimate.push(item([estimated, effort, lower]));
+        let [lower, effort, estimate] = Item::of(&self.slots[slot as usize], slot as usize);
+        self.by_lower.push(lower);
+        self.by_effort.push(effort);
+        self.by_estimate.push(estimate);
         // Keep stale entries from piling up.
         if self.by_lower.len() > 4 * self.live + 4096 {
             self.reheap();
@@ -341,23 +408,12 @@ impl ForwardQueue {
         effort.clear();
         estimate.clear();
         for (id, s) in self.slots.iter().enumerate() {
-            if !s.live {
-                continue;
+            if s.live {
+                let [l, f, e] = Item::of(s, id);
+                lower.push(l);
+                effort.push(f);
+                estimate.push(e);
             }
-            let (k, e) = (s.keys, s.edge);
-            let (l, est, eff) = (bits(k.lower), bits(k.estimated), k.effort);
-            let item = |key| {
-                Reverse(Item {
-                    key,
-                    source: e.source,
-                    target: e.target,
-                    slot: id as u32,
-                    version: s.version,
-                })
-            };
-            lower.push(item([l, est, eff]));
-            effort.push(item([eff, l, est]));
-            estimate.push(item([est, eff, l]));
         }
         self.by_lower = BinaryHeap::from(lower);
         self.by_effort = BinaryHeap::from(effort);
@@ -437,10 +493,65 @@ mod tests {
         assert!(q.update(1, 6, keys(0.1, 0.1, 0)));
         assert!(!q.update(2, 6, keys(0.1, 0.1, 0)));
         assert_eq!(q.pop(Front::Optimal).unwrap().0.target, 6);
-        q.rebuild(|_| keys(1.0, 1.0, 1));
+        q.begin_rekey_all();
+        assert!(q.is_rekeying());
+        assert!(q.rekey_all(|_| keys(1.0, 1.0, 1), &spaces::Never));
+        assert!(!q.is_rekeying());
         assert!(q.has_open_targets());
         assert_eq!(q.len(), 2);
         q.clear();
         assert!(q.is_empty() && !q.has_open_targets());
+    }
+
+    /// Fires on every poll.
+    struct Fired;
+    impl spaces::Stop for Fired {
+        fn should_stop(&self) -> bool {
+            true
+        }
+    }
+
+    #[test]
+    fn an_interrupted_rekey_resumes_to_the_same_queue() {
+        let fill = |q: &mut ForwardQueue| {
+            for i in 0..5000_u32 {
+                let k = f64::from((i * 7919) % 1000);
+                q.insert_or_update(
+                    edge(i, i + 1),
+                    keys(k, k + 1.0, u64::from(i % 13)),
+                    i % 3 == 0,
+                );
+            }
+            // Some removed slots and a closed target on the way.
+            for _ in 0..100 {
+                q.pop(Front::Optimal);
+            }
+            q.close_target(4001);
+        };
+        let new_keys = |e: &ForwardEdge| {
+            let k = f64::from((e.source * 104_729) % 997);
+            keys(k, k + 0.5, u64::from(e.target % 5))
+        };
+        let mut whole = ForwardQueue::default();
+        fill(&mut whole);
+        whole.begin_rekey_all();
+        assert!(whole.rekey_all(new_keys, &spaces::Never));
+        let mut pieces = ForwardQueue::default();
+        fill(&mut pieces);
+        pieces.begin_rekey_all();
+        let mut calls = 1;
+        while !pieces.rekey_all(new_keys, &Fired) {
+            calls += 1;
+            assert!(pieces.is_rekeying());
+        }
+        assert!(calls >= 4, "the re-key was interrupted ({calls} calls)");
+        assert!(pieces.has_open_targets() && whole.has_open_targets());
+        for front in [Front::Greedy, Front::Optimal, Front::Estimated] {
+            let (mut a, mut b) = (whole.clone(), pieces.clone());
+            while let Some(x) = a.pop(front) {
+                assert_eq!(Some(x), b.pop(front));
+            }
+            assert!(b.pop(front).is_none());
+        }
     }
 }

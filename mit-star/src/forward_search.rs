@@ -320,8 +320,8 @@ where
         }
         self.checker.refine();
         self.counters.reverse_restarts += 1;
-        // The restart re-keys the whole forward queue without polling: after the deadline it
-        // waits for the next iteration.
+        // The restart re-keys the whole forward queue (polled, resumed by the next iteration if
+        // interrupted); after the deadline it waits for the next iteration altogether.
         if stop.should_stop() {
             self.reverse_restart_pending = true;
         } else {

@@ -9,6 +9,7 @@ use petgraph::stable_graph::StableGraph;
 use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 
 use crate::Neighbours;
+use crate::chunked::Chunked;
 use crate::edge_hasher::{BuildEdgeHasher, edge_key};
 use crate::kd_tree::Alive;
 use crate::state_chunks::StateChunks;
@@ -58,9 +59,10 @@ pub(crate) const DEAD: u32 = u32::MAX;
 
 /// The random geometric graph (RGG) over every sample the planner keeps.
 ///
-/// Vertices are the samples, the start and the goals; their states live in contiguous chunks
-/// indexed by vertex id (chunks, so that growing never copies them), and their search data is the node weight of a petgraph
-/// [`StableGraph`] (so ids stay valid when pruning removes vertices). The graph is implicit: a
+/// Vertices are the samples, the start and the goals: nodes of a petgraph [`StableGraph`] (so
+/// ids stay valid when pruning removes vertices), whose states and search data live beside it
+/// in arrays indexed by vertex id, in fixed-size chunks so that growing the graph never copies
+/// them (an unbounded copy is a deadline missed). The graph is implicit: a
 /// vertex's neighbours — its `k` nearest vertices or those within a radius, found with
 /// [`NearestNeighbors`] — are computed when it is first expanded and cached with their `ĉ` and
 /// distance; in later batches the cached list is brought up to date by dropping pruned vertices
@@ -72,27 +74,33 @@ pub(crate) const DEAD: u32 = u32::MAX;
 /// (tests, plots).
 #[derive(Debug, Clone)]
 pub struct RandomGeometricGraph {
-    pub(crate) graph: StableGraph<Vertex, EdgeRecord, Undirected, u32>,
+    pub(crate) graph: StableGraph<(), EdgeRecord, Undirected, u32>,
     pub(crate) states: StateChunks,
+    /// Search data per id (stale for ids not in use).
+    vertices: Chunked<Vertex>,
     /// Birth stamp per id (`DEAD` once removed); a new vertex gets a fresh stamp.
-    pub(crate) births: Vec<u32>,
+    pub(crate) births: Chunked<u32>,
     next_birth: u32,
     /// Stored edges by their (smaller, larger) vertex pair.
     edges: HashMap<u64, u32, BuildEdgeHasher>,
     pub(crate) nn: NearestNeighbors,
     pub(crate) euclidean: bool,
     /// Cached neighbour list per id, nearest first (`neighbours_len` entries used this batch).
-    pub(crate) lists: Vec<Vec<Neighbour>>,
+    pub(crate) lists: Chunked<Vec<Neighbour>>,
     /// Batch tag: lists validated with another tag must be brought up to date.
     pub(crate) tag: u32,
     /// Every vertex ever committed, in order: a list covering `log[..p]` misses `log[p..]`.
-    pub(crate) log: Vec<(u32, u32)>,
+    pub(crate) log: Chunked<(u32, u32)>,
     pub(crate) neighbourhood: Neighbourhood,
     pub(crate) found: Neighbours,
     /// Scratch for a fresh neighbour list (kept apart from the cached one until the query
     /// completes).
     pub(crate) scratch_list: Vec<Neighbour>,
     pub(crate) linear_queries: u64,
+    /// The vertices the current or last pruning removes, ascending.
+    pub(crate) prune_ids: Vec<u32>,
+    /// The next of `prune_ids` to remove, while a pruning is interrupted.
+    pub(crate) prune_next: Option<usize>,
 }
 
 impl RandomGeometricGraph {
@@ -102,31 +110,36 @@ impl RandomGeometricGraph {
         Self {
             graph: StableGraph::default(),
             states: StateChunks::new(dimension),
-            births: Vec::new(),
+            vertices: Chunked::new(),
+            births: Chunked::new(),
             next_birth: 0,
             edges: HashMap::default(),
             nn: NearestNeighbors::new(dimension),
             euclidean,
-            lists: Vec::new(),
+            lists: Chunked::new(),
             tag: 1,
-            log: Vec::new(),
+            log: Chunked::new(),
             neighbourhood: Neighbourhood::Nearest(1),
             found: Neighbours::new(),
             scratch_list: Vec::new(),
             linear_queries: 0,
+            prune_ids: Vec::new(),
+            prune_next: None,
         }
     }
 
     /// Adds a vertex at `state` (not yet visible to neighbour queries until
     /// [`commit`](Self::commit)).
     pub(crate) fn add_vertex(&mut self, state: &[f64], vertex: Vertex) -> u32 {
-        let id = self.graph.add_node(vertex).index();
+        let id = self.graph.add_node(()).index();
         if id == self.states.len() {
             self.states.push(state);
+            self.vertices.push(vertex);
             self.births.push(DEAD);
             self.lists.push(Vec::new());
         } else {
             self.states[id].copy_from_slice(state);
+            self.vertices[id] = vertex;
             self.lists[id].clear();
         }
         self.births[id] = self.next_birth;
@@ -134,11 +147,12 @@ impl RandomGeometricGraph {
         id as u32
     }
 
-    /// Makes room for `additional` more vertices in every per-vertex array, so that adding a
-    /// batch does not copy them while it samples (a growing array copies everything it holds,
-    /// tens of milliseconds for a large graph, with no chance to poll the stop condition).
+    /// Makes room for `additional` more vertices, so that adding a batch does not grow arrays
+    /// while it samples. Only petgraph's node array (12 bytes per vertex) still grows by
+    /// copying; the per-vertex data are chunked and never move.
     pub(crate) fn reserve(&mut self, additional: usize) {
         self.graph.reserve_nodes(additional);
+        self.vertices.reserve(additional);
         self.births.reserve(additional);
         self.lists.reserve(additional);
         self.log.reserve(additional);
@@ -188,13 +202,13 @@ impl RandomGeometricGraph {
     /// The search data of vertex `v`.
     #[inline]
     pub(crate) fn vertex(&self, v: u32) -> &Vertex {
-        &self.graph[NodeIndex::new(v as usize)]
+        &self.vertices[v as usize]
     }
 
     /// The search data of vertex `v`, mutably.
     #[inline]
     pub(crate) fn vertex_mut(&mut self, v: u32) -> &mut Vertex {
-        &mut self.graph[NodeIndex::new(v as usize)]
+        &mut self.vertices[v as usize]
     }
 
     /// Neighbour queries answered so far (full queries; incremental updates not counted).
@@ -278,6 +292,13 @@ impl RandomGeometricGraph {
             .map(|n| (VertexId(n.index() as u32), &self.states[n.index()]))
     }
 
+    /// The search data of a vertex (`None` if the id is not in use).
+    fn live_vertex(&self, v: VertexId) -> Option<&Vertex> {
+        self.graph
+            .contains_node(NodeIndex::new(v.index()))
+            .then(|| &self.vertices[v.index()])
+    }
+
     /// The state of a vertex (`None` if the id is not in use).
     pub fn state_of(&self, v: VertexId) -> Option<&[f64]> {
         self.graph
@@ -287,36 +308,31 @@ impl RandomGeometricGraph {
 
     /// What a vertex stands for (`None` if the id is not in use).
     pub fn kind(&self, v: VertexId) -> Option<VertexKind> {
-        self.graph
-            .node_weight(NodeIndex::new(v.index()))
-            .map(|x| x.kind)
+        self.live_vertex(v).map(|x| x.kind)
     }
 
     /// Which step of the sampler produced a vertex's state ([`SampleOrigin::Drawn`](samplers::SampleOrigin) for
     /// the start, the goals and ids not in use).
     pub fn origin(&self, v: VertexId) -> samplers::SampleOrigin {
-        self.graph
-            .node_weight(NodeIndex::new(v.index()))
+        self.live_vertex(v)
             .map_or(samplers::SampleOrigin::Drawn, |x| x.origin)
     }
 
     /// The cost-to-come of a vertex in the forward tree (∞ if not in it).
     pub fn cost_to_come(&self, v: VertexId) -> f64 {
-        self.graph
-            .node_weight(NodeIndex::new(v.index()))
-            .map_or(f64::INFINITY, |x| x.g)
+        self.live_vertex(v).map_or(f64::INFINITY, |x| x.g)
     }
 
     /// The forward-tree parent of a vertex.
     pub fn forward_parent(&self, v: VertexId) -> Option<VertexId> {
-        let x = self.graph.node_weight(NodeIndex::new(v.index()))?;
+        let x = self.live_vertex(v)?;
         (x.parent != NONE).then_some(VertexId(x.parent))
     }
 
     /// Every forward-tree edge as `(parent, child)`.
     pub fn forward_edges(&self) -> impl Iterator<Item = (VertexId, VertexId)> + '_ {
         self.graph.node_indices().filter_map(|n| {
-            let p = self.graph[n].parent;
+            let p = self.vertices[n.index()].parent;
             (p != NONE).then_some((VertexId(p), VertexId(n.index() as u32)))
         })
     }

@@ -10,6 +10,8 @@ pub(crate) const BUCKET: usize = 12;
 /// Marks a leaf in [`Node::dim`].
 pub(crate) const LEAF: u32 = u32::MAX;
 
+use crate::chunked::Chunked;
+
 /// Which points a query may return: all, or those whose birth stamp is still current
 /// (`births[id] == birth`), so removed points can stay in a tree until it is rebuilt.
 #[derive(Clone, Copy)]
@@ -17,7 +19,7 @@ pub(crate) enum Alive<'a> {
     /// Every point.
     All,
     /// Points whose stamp equals the current stamp of their id.
-    Current(&'a [u32]),
+    Current(&'a Chunked<u32>),
 }
 
 impl Alive<'_> {
@@ -101,7 +103,7 @@ impl KdTree {
         let mut spare = crate::kd_tree_build::Spare::default();
         Self::from_parts(
             dimension,
-            (&ids, &births, &coordinates),
+            &[(&ids, &births, &coordinates)],
             &spaces::Never,
             &mut spare,
         )

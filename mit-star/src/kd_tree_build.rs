@@ -71,26 +71,24 @@ struct Scratch {
 }
 
 impl KdTree {
-    /// Builds a tree from ids, birth stamps and coordinates (row after row); `None` if `stop`
-    /// fired first (it is polled every few thousand points of work, copying included). The
-    /// copies are made in `spare`'s arrays, and an abandoned build leaves them there.
+    /// Builds a tree from `parts` of ids, birth stamps and coordinates (row after row); `None`
+    /// if `stop` fired first (it is polled every few thousand points of work, copying
+    /// included). The copies are made in `spare`'s arrays, and an abandoned build leaves them
+    /// there.
     pub(crate) fn from_parts(
         dimension: usize,
-        (ids, births, coordinates): (&[u32], &[u32], &[f64]),
+        parts: &[Parts<'_>],
         stop: &dyn Stop,
         spare: &mut Spare,
     ) -> Option<Self> {
-        let (mut own_ids, mut own_births, buffer) = spare.take();
-        let coordinates = match polled_concat(&[coordinates], stop, buffer) {
-            Ok(coordinates) => coordinates,
-            Err(buffer) => {
-                spare.keep(own_ids, own_births, buffer);
-                return None;
+        let (own_ids, own_births, buffer) = spare.take();
+        match polled_concat(parts, stop, (own_ids, own_births, buffer)) {
+            Ok(owned) => Self::from_owned(dimension, owned, stop, spare),
+            Err((ids, births, buffer)) => {
+                spare.keep(ids, births, buffer);
+                None
             }
-        };
-        own_ids.extend_from_slice(ids);
-        own_births.extend_from_slice(births);
-        Self::from_owned(dimension, (own_ids, own_births, coordinates), stop, spare)
+        }
     }
 
     /// [`from_parts`](Self::from_parts) taking the arrays it partitions in place; an
@@ -278,25 +276,45 @@ impl KdTree {
     }
 }
 
-/// The concatenation of `parts` in `out` (emptied first; its capacity reused), copied a slice
-/// of [`POLL_WORK`] values at a time with `stop` polled in between: copying millions of
-/// coordinates takes tens of milliseconds, page faults included. `Err(out)` if it fired, so
-/// that the caller keeps the buffer rather than free it on the deadline path.
+/// Ids, birth stamps and coordinates (row after row) of some points.
+pub(crate) type Parts<'a> = (&'a [u32], &'a [u32], &'a [f64]);
+
+/// Ids, birth stamps and coordinates, owned.
+pub(crate) type Owned = (Vec<u32>, Vec<u32>, Vec<f64>);
+
+/// The concatenation of `parts` in `out`'s arrays (emptied first; their capacity reused),
+/// copied [`POLL_WORK`] coordinates at a time with `stop` polled in between: copying millions
+/// of coordinates takes tens of milliseconds, page faults included. `Err(out)` if it fired, so
+/// that the caller keeps the arrays rather than free them on the deadline path.
 pub(crate) fn polled_concat(
-    parts: &[&[f64]],
+    parts: &[Parts<'_>],
     stop: &dyn Stop,
-    mut out: Vec<f64>,
-) -> Result<Vec<f64>, Vec<f64>> {
-    let total = parts.iter().map(|p| p.len()).sum();
-    out.clear();
-    out.reserve(total);
-    for part in parts {
-        for chunk in part.chunks(POLL_WORK) {
+    (mut ids, mut births, mut out): Owned,
+) -> Result<Owned, Owned> {
+    let count = parts.iter().map(|p| p.0.len()).sum();
+    let total = parts.iter().map(|p| p.2.len()).sum();
+    // An array too small is replaced, not grown: growing copies its whole old buffer (the
+    // allocator does not know it is empty).
+    fresh(&mut ids, count);
+    fresh(&mut births, count);
+    fresh(&mut out, total);
+    for &(i, b, x) in parts {
+        ids.extend_from_slice(i);
+        births.extend_from_slice(b);
+        for chunk in x.chunks(POLL_WORK) {
             out.extend_from_slice(chunk);
             if stop.should_stop() {
-                return Err(out);
+                return Err((ids, births, out));
             }
         }
     }
-    Ok(out)
+    Ok((ids, births, out))
+}
+
+/// Empties `v` and makes room for `capacity` items without copying its old contents.
+pub(crate) fn fresh<T>(v: &mut Vec<T>, capacity: usize) {
+    v.clear();
+    if v.capacity() < capacity {
+        *v = Vec::with_capacity(capacity);
+    }
 }

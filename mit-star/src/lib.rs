@@ -55,6 +55,7 @@
 mod aliases;
 mod batch;
 mod builder;
+mod chunked;
 mod components;
 mod configuration;
 mod counters;
@@ -74,6 +75,7 @@ mod neighbour_cache;
 mod neighbours;
 mod observer;
 mod parameters;
+mod pending_points;
 mod planner;
 mod reverse_queue;
 mod reverse_search;

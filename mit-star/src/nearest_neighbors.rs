@@ -5,14 +5,12 @@ use spaces::{Never, Stop};
 
 use crate::Neighbours;
 use crate::kd_tree::{Alive, KdTree, Poll, squared_distance};
-use crate::kd_tree_build::{Spare, polled_concat};
+use crate::kd_tree_build::{Parts, Spare, fresh};
+use crate::pending_points::PendingPoints;
 
 /// Points that may wait in the linear buffer before a query builds them into a tree (the
 /// buffer may also hold up to a quarter of the points already in trees).
 const PENDING_LIMIT: usize = 256;
-
-/// Buffered points scanned between two polls of a query's stop condition.
-const PENDING_POLL: usize = 4096;
 
 /// Points gathered between two polls of the stop condition when rebuilding.
 const POLL_POINTS: usize = 4096;
@@ -48,9 +46,8 @@ const POLL_POINTS: usize = 4096;
 pub struct NearestNeighbors {
     dimension: usize,
     trees: Vec<KdTree>,
-    pending_ids: Vec<u32>,
-    pending_births: Vec<u32>,
-    pending: Vec<f64>,
+    /// Points not yet in a tree (a query scans them a block at a time, polling in between).
+    pending: PendingPoints,
     /// Points stored (live or dead).
     stored: usize,
     /// Stored points known to be dead.
@@ -66,9 +63,7 @@ impl NearestNeighbors {
         Self {
             dimension,
             trees: Vec::new(),
-            pending_ids: Vec::new(),
-            pending_births: Vec::new(),
-            pending: Vec::new(),
+            pending: PendingPoints::new(dimension),
             stored: 0,
             dead: 0,
             queries: 0,
@@ -111,19 +106,14 @@ impl NearestNeighbors {
     ) {
         for (id, birth, point) in points {
             assert_eq!(point.len(), self.dimension, "point of wrong dimension");
-            self.pending_ids.push(id);
-            self.pending_births.push(birth);
-            self.pending.extend_from_slice(point);
+            self.pending.push(id, birth, point);
             self.stored += 1;
         }
     }
 
     /// Makes room for `additional` more pending points.
     pub(crate) fn reserve_pending(&mut self, additional: usize) {
-        self.pending_ids.reserve(additional);
-        self.pending_births.reserve(additional);
-        self.pending
-            .reserve(additional.saturating_mul(self.dimension));
+        self.pending.reserve(additional);
     }
 
     /// Records that `count` stored points died (their stamps are no longer current).
@@ -140,16 +130,16 @@ impl NearestNeighbors {
     /// abandon the build at its first poll.
     pub(crate) fn maintain(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
         let rebuild = self.dead > 0 && 2 * self.dead > self.stored;
-        let in_trees = self.stored - self.pending_ids.len();
-        let flush = self.pending_ids.len() > PENDING_LIMIT.max(in_trees / 4);
+        let in_trees = self.stored - self.pending.len();
+        let flush = self.pending.len() > PENDING_LIMIT.max(in_trees / 4);
         if !(rebuild || flush) || stop.should_stop() {
             return;
         }
         if rebuild {
             self.rebuild_alive(alive, stop);
         }
-        let in_trees = self.stored - self.pending_ids.len();
-        if self.pending_ids.len() > PENDING_LIMIT.max(in_trees / 4) {
+        let in_trees = self.stored - self.pending.len();
+        if self.pending.len() > PENDING_LIMIT.max(in_trees / 4) {
             self.flush(stop);
         }
     }
@@ -158,31 +148,19 @@ impl NearestNeighbors {
     fn rebuild_alive(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
         let n = self.dimension;
         let (mut ids, mut births, mut xs) = self.spare.take();
+        // Sized once: growing would copy what was gathered in one unpolled step.
+        fresh(&mut ids, self.stored);
+        fresh(&mut births, self.stored);
+        fresh(&mut xs, self.stored * n);
         let mut stopped = false;
-        'gather: {
-            let mut keep = |id: u32, birth: u32, x: &[f64]| {
-                if alive.contains(id, birth) {
-                    ids.push(id);
-                    births.push(birth);
-                    xs.extend_from_slice(x);
+        let parts = self.trees.iter().map(KdTree::parts);
+        'gather: for (i, b, x) in parts.chain(self.pending.blocks()) {
+            for j in 0..i.len() {
+                if alive.contains(i[j], b[j]) {
+                    ids.push(i[j]);
+                    births.push(b[j]);
+                    xs.extend_from_slice(&x[j * n..(j + 1) * n]);
                 }
-            };
-            for tree in &self.trees {
-                let (i, b, x) = tree.parts();
-                for j in 0..i.len() {
-                    keep(i[j], b[j], &x[j * n..(j + 1) * n]);
-                    if j % POLL_POINTS == POLL_POINTS - 1 && stop.should_stop() {
-                        stopped = true;
-                        break 'gather;
-                    }
-                }
-            }
-            for j in 0..self.pending_ids.len() {
-                keep(
-                    self.pending_ids[j],
-                    self.pending_births[j],
-                    &self.pending[j * n..(j + 1) * n],
-                );
                 if j % POLL_POINTS == POLL_POINTS - 1 && stop.should_stop() {
                     stopped = true;
                     break 'gather;
@@ -196,8 +174,6 @@ impl NearestNeighbors {
         let live = ids.len();
         if let Some(tree) = KdTree::from_owned(n, (ids, births, xs), stop, &mut self.spare) {
             self.trees = vec![tree];
-            self.pending_ids.clear();
-            self.pending_births.clear();
             self.pending.clear();
             self.stored = live;
             self.dead = 0;
@@ -206,20 +182,14 @@ impl NearestNeighbors {
 
     /// Builds the waiting points into a tree and merges trees of similar size.
     fn flush(&mut self, stop: &dyn Stop) {
-        if self.pending_ids.is_empty() {
+        if self.pending.is_empty() {
             return;
         }
-        let built = KdTree::from_parts(
-            self.dimension,
-            (&self.pending_ids, &self.pending_births, &self.pending),
-            stop,
-            &mut self.spare,
-        );
+        let parts: Vec<Parts<'_>> = self.pending.blocks().collect();
+        let built = KdTree::from_parts(self.dimension, &parts, stop, &mut self.spare);
         match built {
             Some(tree) => {
                 self.trees.push(tree);
-                self.pending_ids.clear();
-                self.pending_births.clear();
                 self.pending.clear();
             }
             None => return,
@@ -273,20 +243,14 @@ impl NearestNeighbors {
             tree.nearest_into(query, found, alive, &mut poll);
         }
         let n = self.dimension;
-        for (c, (chunk, ids)) in self
-            .pending
-            .chunks(PENDING_POLL * n)
-            .zip(self.pending_ids.chunks(PENDING_POLL))
-            .enumerate()
-        {
+        // A block at a time, polling in between.
+        for (ids, births, xs) in self.pending.blocks() {
             if poll.tick(ids.len() as u32) {
                 return false;
             }
-            for (i, (&id, x)) in ids.iter().zip(chunk.chunks_exact(n)).enumerate() {
+            for ((&id, &birth), x) in ids.iter().zip(births).zip(xs.chunks_exact(n)) {
                 let d = squared_distance(query, x);
-                if d <= found.worst()
-                    && alive.contains(id, self.pending_births[c * PENDING_POLL + i])
-                {
+                if d <= found.worst() && alive.contains(id, birth) {
                     found.offer(d, id);
                 }
             }
@@ -312,18 +276,14 @@ impl NearestNeighbors {
             tree.within_into(query, radius2, found, alive, &mut poll);
         }
         let n = self.dimension;
-        for (c, (chunk, ids)) in self
-            .pending
-            .chunks(PENDING_POLL * n)
-            .zip(self.pending_ids.chunks(PENDING_POLL))
-            .enumerate()
-        {
+        // A block at a time, polling in between.
+        for (ids, births, xs) in self.pending.blocks() {
             if poll.tick(ids.len() as u32) {
                 return false;
             }
-            for (i, (&id, x)) in ids.iter().zip(chunk.chunks_exact(n)).enumerate() {
+            for ((&id, &birth), x) in ids.iter().zip(births).zip(xs.chunks_exact(n)) {
                 let d = squared_distance(query, x);
-                if d <= radius2 && alive.contains(id, self.pending_births[c * PENDING_POLL + i]) {
+                if d <= radius2 && alive.contains(id, birth) {
                     found.push_unordered(d, id);
                 }
             }
@@ -340,21 +300,7 @@ fn merge(
     stop: &dyn Stop,
     spare: &mut Spare,
 ) -> Option<KdTree> {
-    let (ids_a, births_a, xs_a) = a.parts();
-    let (ids_b, births_b, xs_b) = b.parts();
-    let (mut ids, mut births, buffer) = spare.take();
-    let coordinates = match polled_concat(&[xs_a, xs_b], stop, buffer) {
-        Ok(coordinates) => coordinates,
-        Err(buffer) => {
-            spare.keep(ids, births, buffer);
-            return None;
-        }
-    };
-    ids.extend_from_slice(ids_a);
-    ids.extend_from_slice(ids_b);
-    births.extend_from_slice(births_a);
-    births.extend_from_slice(births_b);
-    KdTree::from_owned(dimension, (ids, births, coordinates), stop, spare)
+    KdTree::from_parts(dimension, &[a.parts(), b.parts()], stop, spare)
 }
 
 #[cfg(test)]
@@ -467,7 +413,8 @@ mod tests {
                 nn.tree_count()
             );
             let query: Vec<f64> = (0..n).map(|_| rng.random_range(-0.5..0.5)).collect();
-            let alive = Alive::Current(&births);
+            let stamps: crate::chunked::Chunked<u32> = births.iter().copied().collect();
+            let alive = Alive::Current(&stamps);
             nn.nearest_alive(&query, 10, &mut found, alive, &Never);
             let expected = brute(&points, n, &query, live);
             assert_eq!(

@@ -171,8 +171,7 @@ impl RandomGeometricGraph {
         let x = &self.states[v as usize];
         let order =
             |a: &Neighbour, b: &Neighbour| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id));
-        for i in from..self.log.len() {
-            let (w, birth) = self.log[i];
+        for &(w, birth) in self.log.iter_from(from) {
             if w == v || self.births[w as usize] != birth {
                 continue;
             }
@@ -259,6 +258,7 @@ impl RandomGeometricGraph {
 mod tests {
     use super::*;
     use crate::VertexKind;
+    use crate::forward_tree::Pruning;
     use crate::vertex::Vertex;
     use heuristics::Euclidean;
     use spaces::rand::{RngExt, SeedableRng};
@@ -289,7 +289,6 @@ mod tests {
             let mut g = RandomGeometricGraph::new(n, euclidean);
             let mut rng = SeededRng::seed_from_u64(n as u64);
             let mut x = vec![0.0; n];
-            let mut removed = Vec::new();
             for batch in 0..30 {
                 let ids: Vec<u32> = (0..60)
                     .map(|_| {
@@ -318,7 +317,8 @@ mod tests {
                 // Prune a slice of the space now and then (ids get reused afterwards).
                 if batch % 8 == 5 {
                     let bound = 1.6 - 0.1 * (batch / 8) as f64;
-                    assert!(g.prune(bound, &[], &mut removed, &spaces::Never).unwrap() > 0);
+                    let outcome = g.prune(bound, &[], &spaces::Never);
+                    assert!(matches!(outcome, Pruning::Done(n) if n > 0));
                 }
             }
         }

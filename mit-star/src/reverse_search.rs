@@ -93,7 +93,9 @@ where
 
     /// Restarts the reverse search from the goals: every vertex's `ĥ`, `h̃` and `e` are reset
     /// (by a new tag), the reverse tree and queue cleared, and the forward queue re-keyed.
-    /// Without a reverse search (BIT*) only the forward queue is re-keyed.
+    /// Without a reverse search (BIT*) only the forward queue is re-keyed. The re-key polls
+    /// `stop`; if it fires, [`continue_reverse_restart`](Self::continue_reverse_restart)
+    /// finishes the restart in the next iteration.
     pub(crate) fn restart_reverse(&mut self, stop: &dyn Stop) {
         self.reverse_tag = self.reverse_tag.wrapping_add(1).max(1);
         self.reverse.clear();
@@ -108,8 +110,20 @@ where
             goal.h_estimate = 0.0;
             goal.effort = 0;
         }
+        self.forward.begin_rekey_all();
+        self.continue_reverse_restart(stop);
+    }
+
+    /// The rest of a reverse restart: re-keys the forward queue (polling `stop`; if it fires,
+    /// the next iteration resumes here), then seeds the reverse search from the goals.
+    pub(crate) fn continue_reverse_restart(&mut self, stop: &dyn Stop) {
         let (graph, rule) = (&self.graph, self.key_rule());
-        self.forward.rebuild(|e| forward_keys(graph, rule, e));
+        if !self
+            .forward
+            .rekey_all(|e| forward_keys(graph, rule, e), stop)
+        {
+            return;
+        }
         if G::REVERSE == ReverseSearch::None {
             return;
         }
