@@ -10,7 +10,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::{
     Experiment, ExperimentResults, HarnessError, MachineInfo, ProblemInstance, RunJob, RunRecord,
-    RunStatus, iso_timestamp,
+    RunStatus, Shard, iso_timestamp,
 };
 
 /// A run's identity in a results folder: instance id, planner name, run index.
@@ -35,6 +35,8 @@ pub struct ExecutionOptions {
     pub recorded: HashSet<RunKey>,
     /// Where each finished run goes the moment it finishes (e.g. a [`RunJournal`](crate::RunJournal)).
     pub on_record: Option<Arc<RecordSink>>,
+    /// Run only this part of the experiment (`None`: all of it).
+    pub shard: Option<Shard>,
 }
 
 impl std::fmt::Debug for ExecutionOptions {
@@ -45,6 +47,7 @@ impl std::fmt::Debug for ExecutionOptions {
             .field("interrupt", &self.interrupt)
             .field("recorded", &self.recorded.len())
             .field("on_record", &self.on_record.is_some())
+            .field("shard", &self.shard)
             .finish()
     }
 }
@@ -58,6 +61,7 @@ impl Default for ExecutionOptions {
             interrupt: Arc::new(AtomicBool::new(false)),
             recorded: HashSet::new(),
             on_record: None,
+            shard: None,
         }
     }
 }
@@ -108,7 +112,9 @@ impl Executor {
             experiment.seed,
         )
         .into_iter()
-        .map(|job| RunJob {
+        .enumerate()
+        .filter(|&(position, _)| self.options.shard.is_none_or(|s| s.owns(position)))
+        .map(|(_, job)| RunJob {
             first_solution: experiment.first_solution,
             ..job
         })

@@ -51,7 +51,8 @@
 //! | [`write_runs_csv`], [`write_runs_jsonl`] | raw runs |
 //! | [`ExperimentFigure`], [`RunPicture`], [`ArmPicture`], [`planner_colours`] | figures of experiments; pictures of 2-D runs and of arm plans |
 //! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
-//! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `problems`, `planners`, `experiments`) |
+//! | [`Shard`], [`SHARD_FILE`], [`merge_parts`], [`MergeReport`] | one of N disjoint parts of an experiment (`bench --shard K/N`); the parts' folders combined into one |
+//! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `merge`, `problems`, `planners`, `experiments`) |
 //! | [`budget_duration`], [`deadline_after`], [`BudgetError`], [`short_number`] | time budgets checked into durations; numbers for messages |
 //! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
 //!
@@ -75,6 +76,7 @@ mod kpi_table;
 mod log_parser;
 mod log_value;
 mod machine_info;
+mod merge_parts;
 mod parameter_overrides;
 mod path_validation;
 mod planner_arena_database;
@@ -90,6 +92,7 @@ mod run_journal;
 mod run_picture;
 mod run_record;
 mod setup_text;
+mod shard;
 mod shipped_experiment;
 pub mod statistics;
 
@@ -106,6 +109,7 @@ pub use interrupt::Interrupt;
 pub use kpi_table::{KpiRow, KpiTable, t_init_gain};
 pub use log_value::{EnumType, ExperimentProperty, LogValue, Property, PropertyType};
 pub use machine_info::{MachineInfo, iso_timestamp};
+pub use merge_parts::{MergeReport, merge_parts};
 pub use parameter_overrides::ParameterOverrides;
 pub use path_validation::{PathValidation, ValidationMethod};
 pub use planner_arena_database::PlannerArenaDatabase;
@@ -121,4 +125,5 @@ pub use run_journal::{RunJournal, results_from_records};
 pub use run_picture::RunPicture;
 pub use run_record::{RunRecord, RunStatus};
 pub(crate) use setup_text::setup_description;
+pub use shard::{SHARD_FILE, Shard};
 pub use shipped_experiment::ShippedExperiment;

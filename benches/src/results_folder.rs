@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use crate::{
     BenchmarkLog, Experiment, ExperimentFigure, ExperimentResults, HarnessError, KpiTable,
-    PlannerArenaDatabase, RunJournal, results_from_records,
+    PlannerArenaDatabase, RunJournal, Shard, results_from_records,
 };
 
 /// The name of the Planner Arena database in a results folder.
@@ -22,6 +22,7 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 /// | `benchmark.db` | the Planner Arena database: each run committed as it finishes, then rebuilt from every recorded run |
 /// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
 /// | `kpi.md` | the KPI tables |
+/// | `shard.toml` | which part of the experiment's runs the folder holds (`bench --shard K/N` only) |
 ///
 /// [`prepare`](Self::prepare) creates the folder, checks it is writable and opens the
 /// database before any planning, so that a bad folder fails fast. Nothing is ever written outside the folder: its
@@ -137,6 +138,39 @@ impl ResultsFolder {
                 Ok(path)
             }
             Err(source) => Err(HarnessError::Io { path, source }),
+        }
+    }
+
+    /// Claims the folder for `shard` of its experiment (after [`claim`](Self::claim)): a shard's
+    /// folder records which one in [`SHARD_FILE`](crate::SHARD_FILE). Refuses a folder holding
+    /// another shard, a shard's folder for the whole experiment, and a folder holding runs of
+    /// the whole experiment for a shard.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] naming both; [`HarnessError::Io`] if the file cannot be read
+    /// or written.
+    pub fn claim_shard(&self, shard: Option<Shard>) -> Result<(), HarnessError> {
+        let existing = Shard::read(&self.path)?;
+        let folder = self.path.display();
+        match (existing, shard) {
+            (Some(e), Some(s)) if e == s => Ok(()),
+            (Some(e), Some(s)) => Err(HarnessError::Usage(format!(
+                "`{folder}` holds shard {e} of the experiment, not {s}; write to another --output folder"
+            ))),
+            (Some(e), None) => Err(HarnessError::Usage(format!(
+                "`{folder}` holds shard {e} of the experiment; resume it with --shard {e}, or                  write the whole experiment to another --output folder"
+            ))),
+            (None, Some(s)) => {
+                let has_runs =
+                    std::fs::metadata(self.path.join("runs.jsonl")).is_ok_and(|m| m.len() > 0);
+                if has_runs {
+                    return Err(HarnessError::Usage(format!(
+                        "`{folder}` holds runs of the whole experiment; write shard {s} to                          another --output folder"
+                    )));
+                }
+                write_replacing(&self.path.join(crate::SHARD_FILE), s.to_toml().as_bytes())
+            }
+            (None, None) => Ok(()),
         }
     }
 

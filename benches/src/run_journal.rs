@@ -130,18 +130,32 @@ impl RunJournal {
         index: usize,
         record: &RunRecord,
     ) -> Result<(), HarnessError> {
-        let instance = &results.instances[index];
-        let mut line =
-            raw_runs::json_line(&self.jsonl_path, instance, results.concurrency, record)?;
+        self.append_raw(&results.instances[index], results.concurrency, record)?;
+        self.commit(results, index, record)
+    }
+
+    /// Appends `record`, a run on `instance` made with `concurrency` runs at a time, to the raw
+    /// files only, not to the database (for [`merge_parts`](crate::merge_parts), which rebuilds
+    /// the database from the raw files once every run is in).
+    ///
+    /// # Errors
+    /// [`HarnessError::Io`] or [`HarnessError::Serialise`].
+    pub fn append_raw(
+        &mut self,
+        instance: &ProblemInstance,
+        concurrency: usize,
+        record: &RunRecord,
+    ) -> Result<(), HarnessError> {
+        let mut line = raw_runs::json_line(&self.jsonl_path, instance, concurrency, record)?;
         line.push('\n');
-        let row = raw_runs::csv_row(instance, results.concurrency, record);
+        let row = raw_runs::csv_row(instance, concurrency, record);
         let row = raw_runs::csv_bytes(&self.csv_path, &row)?;
         self.jsonl
             .write_all(line.as_bytes())
             .map_err(io(&self.jsonl_path))?;
         self.csv.write_all(&row).map_err(io(&self.csv_path))?;
         self.recorded.insert(key(record));
-        self.commit(results, index, record)
+        Ok(())
     }
 
     /// Commits `record` to the database under its instance's experiment row.
@@ -188,10 +202,19 @@ impl RunJournal {
     /// [`HarnessError::Io`] if the file cannot be read, [`HarnessError::Serialise`] for a
     /// malformed line other than a cut-short last one.
     pub fn read_records(folder: &Path) -> Result<Vec<RunRecord>, HarnessError> {
-        Ok(read_entries(&folder.join("runs.jsonl"), true)?
+        Ok(Self::read_entries(folder)?
             .into_iter()
             .map(|(record, _)| record)
             .collect())
+    }
+
+    /// As [`read_records`](Self::read_records), with the number of runs that executed at the
+    /// same time as each.
+    ///
+    /// # Errors
+    /// As [`read_records`](Self::read_records).
+    pub fn read_entries(folder: &Path) -> Result<Vec<(RunRecord, usize)>, HarnessError> {
+        read_entries(&folder.join("runs.jsonl"), true)
     }
 }
 

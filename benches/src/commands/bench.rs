@@ -11,7 +11,7 @@ use crate::commands::CommandOutcome;
 use crate::{
     ExecutionOptions, Executor, Experiment, ExperimentResults, HarnessError, KpiTable, MachineInfo,
     ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec, ResultsFolder,
-    RunJournal, RunRecord, ShippedExperiment, iso_timestamp, parse_configuration,
+    RunJob, RunJournal, RunRecord, Shard, ShippedExperiment, iso_timestamp, parse_configuration,
     results_from_records,
 };
 
@@ -80,6 +80,11 @@ pub struct BenchArgs {
     /// Results folder (default results/NAME, NAME the experiment's); an existing database is appended to.
     #[arg(long, short)]
     pub output: Option<PathBuf>,
+    /// Run only the K-th of N disjoint parts of the experiment's runs (e.g. `--shard 2/8`),
+    /// each with the seed it has in the whole experiment; `mit-star merge` combines the parts'
+    /// folders. Default folder: results/NAME-shard-K-of-N.
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<Shard>,
     /// Do not draw the figures.
     #[arg(long)]
     pub no_plots: bool,
@@ -269,28 +274,33 @@ impl BenchArgs {
             Some(t) => t,
             None => std::thread::available_parallelism().map_or(1, |n| n.get()),
         };
-        let output = self
-            .output
-            .clone()
-            .unwrap_or_else(|| Path::new("results").join(&experiment.name));
+        let output = self.output.clone().unwrap_or_else(|| {
+            let name = match self.shard {
+                Some(s) => format!("{}-shard-{}-of-{}", experiment.name, s.index(), s.count()),
+                None => experiment.name.clone(),
+            };
+            Path::new("results").join(name)
+        });
         let mut folder = ResultsFolder::prepare(&output)?;
         folder.claim(&experiment)?;
+        folder.claim_shard(self.shard)?;
         // Every finished run goes to disk (raw files and database) before its worker starts
         // the next one: SIGTERM, SIGKILL or a crash lose at most the runs in flight. Runs
         // recorded by an earlier bench of this experiment are not rerun.
         let journal = RunJournal::open(folder.path(), &instances)?;
         let recorded = journal.recorded().clone();
-        let jobs = instances.len() * experiment.planners.len() * experiment.runs;
-        let budget: f64 = instances.iter().map(|i| i.budget).sum::<f64>()
-            * (experiment.planners.len() * experiment.runs) as f64;
+        let (jobs, budget) = shard_work(&experiment, &instances, self.shard);
         let concurrency = threads.min(jobs.saturating_sub(recorded.len()).max(1));
         eprintln!(
-            "experiment `{}`: {} planners × {} problem instances × {} runs = {jobs} runs{}; \
+            "experiment `{}`{}: {} planners × {} problem instances × {} runs{} = {jobs} runs{}; \
              {:.1} s of budget on {concurrency} threads ≈ {}{:.1} s",
             experiment.name,
+            self.shard.map_or(String::new(), |s| format!(", shard {s}")),
             experiment.planners.len(),
             instances.len(),
             experiment.runs,
+            self.shard
+                .map_or(String::new(), |s| format!(" ÷ {}", s.count())),
             if recorded.is_empty() {
                 String::new()
             } else {
@@ -345,6 +355,7 @@ impl BenchArgs {
             interrupt,
             recorded,
             on_record: Some(Arc::new(sink)),
+            shard: self.shard,
         });
         let results = executor.run(&experiment, instances)?;
         // Close the raw files and the journal's database connection before rebuilding.
@@ -413,6 +424,26 @@ fn outcome(interrupted: bool, errors: usize, invalid: usize) -> CommandOutcome {
     } else {
         CommandOutcome::Success
     }
+}
+
+/// The runs of `shard` of `experiment` (all of them without one) and their total budget.
+fn shard_work(
+    experiment: &Experiment,
+    instances: &[ProblemInstance],
+    shard: Option<Shard>,
+) -> (usize, f64) {
+    RunJob::schedule(
+        instances.len(),
+        experiment.planners.len(),
+        experiment.runs,
+        experiment.seed,
+    )
+    .iter()
+    .enumerate()
+    .filter(|&(position, _)| shard.is_none_or(|s| s.owns(position)))
+    .fold((0, 0.0), |(jobs, budget), (_, job)| {
+        (jobs + 1, budget + instances[job.instance].budget)
+    })
 }
 
 /// Builds every planner once on every instance, so that a planner refusing a problem or its

@@ -14,6 +14,7 @@ macro_rules! say {
 
 mod bench;
 mod listings;
+mod merge;
 mod plan;
 
 use std::process::ExitCode;
@@ -24,6 +25,7 @@ use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
 pub use listings::{ExperimentsArgs, ProblemsArgs};
+pub use merge::MergeArgs;
 pub use plan::PlanArgs;
 
 use crate::HarnessError;
@@ -50,6 +52,8 @@ pub enum Command {
     Plan(PlanArgs),
     /// Run an experiment (file, shipped name, or flags) and write its results folder.
     Bench(BenchArgs),
+    /// Combine the results folders of an experiment's shards (`bench --shard K/N`) into one.
+    Merge(MergeArgs),
     /// List the built-in problems with their parameters and defaults.
     Problems(ProblemsArgs),
     /// List the planner configurations and their parameters' defaults.
@@ -93,6 +97,7 @@ impl Cli {
         match &self.command {
             Command::Plan(args) => args.run(&interrupt),
             Command::Bench(args) => args.run(interrupt),
+            Command::Merge(args) => args.run(),
             Command::Problems(args) => args.run(),
             Command::Planners => listings::print_planners(),
             Command::Experiments(args) => args.run(),

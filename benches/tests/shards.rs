@@ -1,0 +1,285 @@
+//! Campaigns across machines: an experiment run as shards (`bench --shard K/N`) and merged
+//! (`merge`) is the experiment run whole — the same runs, seeds and outcomes — and `merge`
+//! refuses parts that do not make up one whole experiment.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn mit_star(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mit-star"))
+        .args(args)
+        .current_dir(env!("CARGO_TARGET_TMPDIR"))
+        .output()
+        .unwrap()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("shards-{name}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn succeeded(args: &[&str]) -> String {
+    let out = mit_star(args);
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(
+        out.status.success(),
+        "{args:?}: {stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    stdout
+}
+
+fn refused(args: &[&str], needles: &[&str]) {
+    let out = mit_star(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    for needle in needles {
+        assert!(
+            stderr.contains(needle),
+            "{args:?}: `{needle}` not in: {stderr}"
+        );
+    }
+}
+
+/// The experiment: runs that stop at their first solution, which on these problems comes
+/// long before the budget — so each run's outcome depends on its seed only.
+const EXPERIMENT: &[&str] = &[
+    "bench",
+    "--planners",
+    "rrt-connect,mit-star,eit-star",
+    "--problem",
+    "dividing-walls,goal-enclosure",
+    "--dim",
+    "2",
+    "--time",
+    "5",
+    "--runs",
+    "5",
+    "--seed",
+    "40",
+    "--first-solution",
+    "--name",
+    "sharded",
+    "--no-plots",
+    "--quiet",
+];
+
+/// One run as recorded: seed, status, first-solution cost bits, path length.
+type Outcome = (u64, String, Option<u64>, usize);
+
+/// Runs by (instance, planner, run index).
+type Runs = BTreeMap<(String, String, u64), Outcome>;
+
+/// Every run of a folder's `runs.jsonl`, by (instance, planner, run), and the order of the file.
+fn runs(folder: &Path) -> (Runs, Vec<String>) {
+    let text = std::fs::read_to_string(folder.join("runs.jsonl")).unwrap();
+    let mut map = BTreeMap::new();
+    let mut order = Vec::new();
+    for line in text.lines() {
+        let r: serde_json::Value = serde_json::from_str(line).unwrap();
+        let key = (
+            r["instance"].as_str().unwrap().to_owned(),
+            r["planner"].as_str().unwrap().to_owned(),
+            r["run"].as_u64().unwrap(),
+        );
+        let outcome = (
+            r["seed"].as_u64().unwrap(),
+            r["status"].as_str().unwrap().to_owned(),
+            r["initial_cost"].as_f64().map(f64::to_bits),
+            r["path"].as_array().map_or(0, Vec::len),
+        );
+        order.push(format!("{key:?}"));
+        assert!(map.insert(key, outcome).is_none(), "a run recorded twice");
+    }
+    (map, order)
+}
+
+fn bench(output: &Path, shard: Option<&str>) {
+    let mut args = EXPERIMENT.to_vec();
+    let output = output.to_str().unwrap();
+    args.extend(["--output", output]);
+    if let Some(shard) = shard {
+        args.extend(["--shard", shard]);
+    }
+    succeeded(&args);
+}
+
+#[test]
+fn three_shards_merged_are_the_whole_experiment() {
+    let whole = scratch("whole");
+    bench(&whole, None);
+    let parts: Vec<PathBuf> = (1..=3).map(|k| scratch(&format!("part-{k}"))).collect();
+    for (k, part) in parts.iter().enumerate() {
+        bench(part, Some(&format!("{}/3", k + 1)));
+    }
+    let (whole_runs, _) = runs(&whole);
+    assert_eq!(whole_runs.len(), 3 * 2 * 5);
+    // The parts are disjoint, and none is empty.
+    let mut union = BTreeMap::new();
+    for part in &parts {
+        let (mine, _) = runs(part);
+        assert!(mine.len() >= 9, "{} runs in a part", mine.len());
+        for (key, outcome) in mine {
+            assert!(union.insert(key, outcome).is_none(), "a run in two parts");
+        }
+    }
+    assert_eq!(
+        union, whole_runs,
+        "the parts' runs are the whole experiment's"
+    );
+    // Merged in any order, the folder holds the same runs, in schedule order.
+    let merged = scratch("merged");
+    let out = succeeded(&[
+        "merge",
+        parts[2].to_str().unwrap(),
+        parts[0].to_str().unwrap(),
+        parts[1].to_str().unwrap(),
+        "--output",
+        merged.to_str().unwrap(),
+        "--no-plots",
+    ]);
+    assert!(out.contains("Merged 3 shards (30 runs"), "{out}");
+    let (merged_runs, order) = runs(&merged);
+    assert_eq!(merged_runs, whole_runs);
+    let again = scratch("merged-again");
+    succeeded(&[
+        "merge",
+        parts[0].to_str().unwrap(),
+        parts[1].to_str().unwrap(),
+        parts[2].to_str().unwrap(),
+        "--output",
+        again.to_str().unwrap(),
+        "--no-plots",
+    ]);
+    assert_eq!(
+        runs(&again).1,
+        order,
+        "the merged order does not depend on the parts' order"
+    );
+    // One OMPL log per instance, the database and the KPI table, as a whole run writes them.
+    for file in [
+        "experiment.toml",
+        "runs.csv",
+        "benchmark.db",
+        "kpi.md",
+        "logs/dividing-walls-n2.log",
+        "logs/goal-enclosure-n2.log",
+    ] {
+        assert!(merged.join(file).is_file(), "{file}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(merged.join("experiment.toml")).unwrap(),
+        std::fs::read_to_string(whole.join("experiment.toml")).unwrap()
+    );
+    let csv_rows = |f: &Path| {
+        std::fs::read_to_string(f.join("runs.csv"))
+            .unwrap()
+            .lines()
+            .count()
+    };
+    assert_eq!(csv_rows(&merged), csv_rows(&whole));
+    let log = std::fs::read_to_string(merged.join("logs/goal-enclosure-n2.log")).unwrap();
+    // Per planner, 5 runs and their 5 progress series.
+    assert_eq!(log.matches("\n5 runs\n").count(), 6, "{log}");
+    // Merging into a finished merge adds nothing.
+    succeeded(&[
+        "merge",
+        parts[0].to_str().unwrap(),
+        parts[1].to_str().unwrap(),
+        parts[2].to_str().unwrap(),
+        "--output",
+        merged.to_str().unwrap(),
+        "--no-plots",
+    ]);
+    assert_eq!(runs(&merged).1, order);
+
+    // Refusals, each naming what is wrong.
+    let p = |i: usize| parts[i].to_str().unwrap().to_owned();
+    let target = scratch("refused");
+    let target = target.to_str().unwrap();
+    refused(
+        &["merge", &p(0), &p(1), "--output", target],
+        &["shard 3/3 is missing"],
+    );
+    refused(
+        &["merge", &p(0), &p(0), &p(1), "--output", target],
+        &["are both shard 1/3"],
+    );
+    refused(
+        &["merge", whole.to_str().unwrap(), &p(1), "--output", target],
+        &["not a shard's folder"],
+    );
+    refused(
+        &["merge", &p(0), &p(1), &p(2), "--output", &p(0)],
+        &["is a shard's folder"],
+    );
+    // A shard of another experiment (other runs per planner).
+    let other = scratch("other");
+    let mut args = EXPERIMENT.to_vec();
+    args[10] = "4";
+    args.extend(["--output", other.to_str().unwrap(), "--shard", "3/3"]);
+    succeeded(&args);
+    refused(
+        &[
+            "merge",
+            &p(0),
+            &p(1),
+            other.to_str().unwrap(),
+            "--output",
+            target,
+        ],
+        &["hold different experiments"],
+    );
+    // A part with a run missing (an interrupted shard) and one with a duplicate.
+    let cut = scratch("cut");
+    std::fs::create_dir_all(&cut).unwrap();
+    for file in ["experiment.toml", "shard.toml"] {
+        std::fs::copy(parts[1].join(file), cut.join(file)).unwrap();
+    }
+    let lines = std::fs::read_to_string(parts[1].join("runs.jsonl")).unwrap();
+    let lines: Vec<&str> = lines.lines().collect();
+    let kept = lines[..lines.len() - 1].join("\n") + "\n";
+    std::fs::write(cut.join("runs.jsonl"), &kept).unwrap();
+    refused(
+        &[
+            "merge",
+            &p(0),
+            cut.to_str().unwrap(),
+            &p(2),
+            "--output",
+            target,
+        ],
+        &["1 of the experiment's 30 runs is missing", "--shard 2/3"],
+    );
+    std::fs::write(
+        cut.join("runs.jsonl"),
+        kept + lines[0] + "\n" + lines[0] + "\n",
+    )
+    .unwrap();
+    refused(
+        &[
+            "merge",
+            &p(0),
+            cut.to_str().unwrap(),
+            &p(2),
+            "--output",
+            target,
+        ],
+        &["twice"],
+    );
+    // A shard's folder is resumed only by the same shard, and bad shards are refused.
+    let first = p(0);
+    let mut args = EXPERIMENT.to_vec();
+    args.extend(["--output", &first, "--shard", "2/3"]);
+    refused(&args, &["holds shard 1/3", "not 2/3"]);
+    let mut args = EXPERIMENT.to_vec();
+    args.extend(["--output", &first]);
+    refused(&args, &["holds shard 1/3"]);
+    for bad in ["0/3", "4/3", "3", "x/y"] {
+        let mut args = EXPERIMENT.to_vec();
+        args.extend(["--output", target, "--shard", bad]);
+        refused(&args, &["--shard"]);
+    }
+}
