@@ -52,7 +52,8 @@
 //! | [`ExperimentFigure`], [`RunPicture`], [`ArmPicture`], [`planner_colours`] | figures of experiments; pictures of 2-D runs and of arm plans |
 //! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
 //! | [`Shard`], [`SHARD_FILE`], [`merge_parts`], [`MergeReport`] | one of N disjoint parts of an experiment (`bench --shard K/N`); the parts' folders combined into one |
-//! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `merge`, `problems`, `planners`, `experiments`) |
+//! | [`CampaignComparison`], [`ComparedRow`], [`Change`] | two results folders side by side (`mit-star compare A B`) |
+//! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `merge`, `compare`, `problems`, `planners`, `experiments`) |
 //! | [`budget_duration`], [`deadline_after`], [`BudgetError`], [`short_number`] | time budgets checked into durations; numbers for messages |
 //! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
 //!
@@ -63,6 +64,7 @@
 mod arm_picture;
 mod benchmark_log;
 mod budget;
+mod campaign_comparison;
 pub mod commands;
 mod error;
 mod executor;
@@ -99,6 +101,7 @@ pub mod statistics;
 pub use arm_picture::ArmPicture;
 pub use benchmark_log::{BenchmarkLog, OMPL_STATUS, PlannerLog};
 pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};
+pub use campaign_comparison::{CampaignComparison, Change, ComparedRow};
 pub use error::HarnessError;
 pub use executor::{ExecutionOptions, Executor, RecordSink, RunKey};
 pub use experiment::Experiment;

@@ -94,6 +94,39 @@ impl ResultsFolder {
         self.finish(&all, plots)
     }
 
+    /// Every run recorded in the results folder `path`, as results of the experiment in its
+    /// `experiment.toml` (for reading a finished campaign back, e.g. `mit-star compare`).
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] if `path` is not a results folder; the errors of reading the
+    /// experiment (its problems included) and the raw runs.
+    pub fn read_results(path: &Path) -> Result<ExperimentResults, HarnessError> {
+        let file = path.join("experiment.toml");
+        if !file.is_file() {
+            return Err(HarnessError::Usage(format!(
+                "`{}` is not a results folder (it has no experiment.toml)",
+                path.display()
+            )));
+        }
+        let experiment = Experiment::from_file(&file)?;
+        let instances = experiment.instances()?;
+        let template = ExperimentResults {
+            experiment,
+            instances: instances.clone(),
+            runs: Vec::new(),
+            started_at: String::new(),
+            total_time: 0.0,
+            concurrency: 1,
+            interrupted: false,
+            machine: crate::MachineInfo::detect(),
+        };
+        Ok(results_from_records(
+            &template,
+            RunJournal::read_records(path)?,
+            &instances,
+        ))
+    }
+
     /// Claims the folder for `experiment`: writes `experiment.toml` if the folder holds none,
     /// and refuses a folder that holds another experiment (its runs would be mixed with this
     /// one's) or runs without an `experiment.toml`. The same experiment again resumes: runs

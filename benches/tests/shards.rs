@@ -1,6 +1,6 @@
 //! Campaigns across machines: an experiment run as shards (`bench --shard K/N`) and merged
 //! (`merge`) is the experiment run whole — the same runs, seeds and outcomes — and `merge`
-//! refuses parts that do not make up one whole experiment.
+//! refuses parts that do not make up one whole experiment; `compare` reads two folders back.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -183,6 +183,26 @@ fn three_shards_merged_are_the_whole_experiment() {
     let log = std::fs::read_to_string(merged.join("logs/goal-enclosure-n2.log")).unwrap();
     // Per planner, 5 runs and their 5 progress series.
     assert_eq!(log.matches("\n5 runs\n").count(), 6, "{log}");
+    // `compare` reads both folders back: the same experiment, rows matched one to one, the
+    // same success rates and first-solution costs.
+    let out = succeeded(&["compare", whole.to_str().unwrap(), merged.to_str().unwrap()]);
+    assert!(out.contains("(30 runs) →"), "{out}");
+    for problem in ["dividing-walls R^2", "goal-enclosure R^2"] {
+        for planner in ["RRT-Connect", "MIT*", "EIT*"] {
+            let row = out
+                .lines()
+                .find(|l| l.starts_with(&format!("| {problem} | {planner} |")))
+                .unwrap_or_else(|| panic!("no row for {planner} on {problem}: {out}"));
+            let cells: Vec<&str> = row.split(" | ").collect();
+            assert_eq!(cells[6], cells[7], "success rates: {row}");
+            assert_eq!(cells[8], "≈", "{row}");
+        }
+    }
+    assert!(!out.contains("Only in"), "{out}");
+    refused(
+        &["compare", whole.to_str().unwrap(), "/nonexistent-folder"],
+        &["not a results folder"],
+    );
     // Merging into a finished merge adds nothing.
     succeeded(&[
         "merge",

@@ -13,6 +13,7 @@ macro_rules! say {
 }
 
 mod bench;
+mod compare;
 mod listings;
 mod merge;
 mod plan;
@@ -24,6 +25,7 @@ use std::sync::atomic::AtomicBool;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use compare::CompareArgs;
 pub use listings::{ExperimentsArgs, ProblemsArgs};
 pub use merge::MergeArgs;
 pub use plan::PlanArgs;
@@ -54,6 +56,9 @@ pub enum Command {
     Bench(BenchArgs),
     /// Combine the results folders of an experiment's shards (`bench --shard K/N`) into one.
     Merge(MergeArgs),
+    /// Compare two results folders of an experiment: per planner and problem, the change in
+    /// median time to first solution, success rate and final cost, with confidence intervals.
+    Compare(CompareArgs),
     /// List the built-in problems with their parameters and defaults.
     Problems(ProblemsArgs),
     /// List the planner configurations and their parameters' defaults.
@@ -98,6 +103,7 @@ impl Cli {
             Command::Plan(args) => args.run(&interrupt),
             Command::Bench(args) => args.run(interrupt),
             Command::Merge(args) => args.run(),
+            Command::Compare(args) => args.run(),
             Command::Problems(args) => args.run(),
             Command::Planners => listings::print_planners(),
             Command::Experiments(args) => args.run(),
