@@ -413,7 +413,7 @@ mod tests {
         assert_eq!(instances.len(), 9 + 30);
         let budget = |id: &str| instances.iter().find(|i| i.id == id).unwrap().budget;
         assert_eq!(budget("flanking-gap-n16"), 0.20);
-        assert_eq!(budget("random-rectangles-n8-i9"), 2.00);
+        assert_eq!(budget("cluttered-rectangles-n8-i9"), 2.00);
         assert_eq!(budget("dividing-walls-n4"), 0.30);
         assert_eq!(budget("goal-enclosure-n8"), 2.00);
     }

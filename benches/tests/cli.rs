@@ -1,46 +1,14 @@
 //! The `mit-star` binary: input errors are reported with a clear message and a non-zero exit
 //! code before any work; the listings and `plan` work.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::PathBuf;
 
-fn mit_star(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_mit-star"))
-        .args(args)
-        .current_dir(env!("CARGO_TARGET_TMPDIR"))
-        .output()
-        .unwrap()
-}
+mod common;
+use common::{refused, succeeded};
 
+/// An empty scratch path for this test file.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
-
-/// Runs a command that must succeed; returns its standard output.
-fn succeeded(args: &[&str]) -> String {
-    let out = mit_star(args);
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert!(
-        out.status.success(),
-        "{args:?}: {stdout}{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    stdout
-}
-
-/// Runs a command that must fail with exit code 2 and a message containing every `needle`.
-fn refused(args: &[&str], needles: &[&str]) {
-    let out = mit_star(args);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-    for needle in needles {
-        assert!(
-            stderr.contains(needle),
-            "{args:?}: `{needle}` not in: {stderr}"
-        );
-    }
+    common::scratch("cli", name)
 }
 
 #[test]

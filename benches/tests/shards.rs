@@ -4,43 +4,13 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
-fn mit_star(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_mit-star"))
-        .args(args)
-        .current_dir(env!("CARGO_TARGET_TMPDIR"))
-        .output()
-        .unwrap()
-}
+mod common;
+use common::{refused, succeeded};
 
+/// An empty scratch path for this test file.
 fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("shards-{name}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
-
-fn succeeded(args: &[&str]) -> String {
-    let out = mit_star(args);
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert!(
-        out.status.success(),
-        "{args:?}: {stdout}{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    stdout
-}
-
-fn refused(args: &[&str], needles: &[&str]) {
-    let out = mit_star(args);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-    for needle in needles {
-        assert!(
-            stderr.contains(needle),
-            "{args:?}: `{needle}` not in: {stderr}"
-        );
-    }
+    common::scratch("shards", name)
 }
 
 /// The experiment: runs that stop at their first solution, which on these problems comes
@@ -96,6 +66,14 @@ fn runs(folder: &Path) -> (Runs, Vec<String>) {
     (map, order)
 }
 
+/// `mit-star merge PARTS… --output OUTPUT --no-plots`, which must succeed; its output.
+fn merge(parts: &[&PathBuf], output: &Path) -> String {
+    let mut args = vec!["merge"];
+    args.extend(parts.iter().map(|p| p.to_str().unwrap()));
+    args.extend(["--output", output.to_str().unwrap(), "--no-plots"]);
+    succeeded(&args)
+}
+
 fn bench(output: &Path, shard: Option<&str>) {
     let mut args = EXPERIMENT.to_vec();
     let output = output.to_str().unwrap();
@@ -131,28 +109,12 @@ fn three_shards_merged_are_the_whole_experiment() {
     );
     // Merged in any order, the folder holds the same runs, in schedule order.
     let merged = scratch("merged");
-    let out = succeeded(&[
-        "merge",
-        parts[2].to_str().unwrap(),
-        parts[0].to_str().unwrap(),
-        parts[1].to_str().unwrap(),
-        "--output",
-        merged.to_str().unwrap(),
-        "--no-plots",
-    ]);
+    let out = merge(&[&parts[2], &parts[0], &parts[1]], &merged);
     assert!(out.contains("Merged 3 shards (30 runs"), "{out}");
     let (merged_runs, order) = runs(&merged);
     assert_eq!(merged_runs, whole_runs);
     let again = scratch("merged-again");
-    succeeded(&[
-        "merge",
-        parts[0].to_str().unwrap(),
-        parts[1].to_str().unwrap(),
-        parts[2].to_str().unwrap(),
-        "--output",
-        again.to_str().unwrap(),
-        "--no-plots",
-    ]);
+    merge(&[&parts[0], &parts[1], &parts[2]], &again);
     assert_eq!(
         runs(&again).1,
         order,
@@ -204,15 +166,7 @@ fn three_shards_merged_are_the_whole_experiment() {
         &["not a results folder"],
     );
     // Merging into a finished merge adds nothing.
-    succeeded(&[
-        "merge",
-        parts[0].to_str().unwrap(),
-        parts[1].to_str().unwrap(),
-        parts[2].to_str().unwrap(),
-        "--output",
-        merged.to_str().unwrap(),
-        "--no-plots",
-    ]);
+    merge(&[&parts[0], &parts[1], &parts[2]], &merged);
     assert_eq!(runs(&merged).1, order);
 
     // Refusals, each naming what is wrong.

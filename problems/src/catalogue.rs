@@ -95,7 +95,7 @@ impl Family {
     /// As the family's `build`: [`ProblemError::Dimension`] if `n < 2`;
     /// [`ProblemError::TooLarge`] if the problem could not fit in this machine's memory (no
     /// family holds more than `4n` boxes of `n` dimensions, so `n²` sets the size: `R^100000`
-    /// would need over a terabyte).
+    /// would need over a terabyte; the bound allows `4·max(n, 64)` boxes).
     pub fn build(&self, n: usize, seed: u64) -> Result<Problem, ProblemError> {
         let budget = MemoryBudget::of_machine();
         let bytes = Self::estimated_bytes(n);
@@ -125,7 +125,7 @@ impl Family {
 }
 
 /// The built-in families, in a fixed order.
-static FAMILIES: [Family; 11] = [
+static FAMILIES: [Family; 12] = [
     Family {
         name: FlankingGap::NAME,
         description: "a wall short of the bounds with a small square hole; through the hole \
@@ -154,6 +154,14 @@ static FAMILIES: [Family; 11] = [
         seeded: true,
         build: |n, seed| RandomRectangles::new(n).seed(seed).build(),
         parameters: |n| RandomRectangles::new(n).parameters(),
+    },
+    Family {
+        name: RandomRectangles::CLUTTERED,
+        description: "random rectangles with teeth: more and larger boxes, calibrated per \
+                      dimension so that the straight line is blocked",
+        seeded: true,
+        build: |n, seed| RandomRectangles::cluttered(n).seed(seed).build(),
+        parameters: |n| RandomRectangles::cluttered(n).parameters(),
     },
     Family {
         name: ObstacleFree::NAME,
@@ -273,6 +281,7 @@ mod tests {
                 "dividing-walls",
                 "goal-enclosure",
                 "random-rectangles",
+                "cluttered-rectangles",
                 "obstacle-free",
                 "center-square",
                 "wall-gap",
@@ -287,7 +296,7 @@ mod tests {
             .filter(|f| f.is_seeded())
             .map(Family::name)
             .collect();
-        assert_eq!(only_seeded, ["random-rectangles"]);
+        assert_eq!(only_seeded, ["random-rectangles", "cluttered-rectangles"]);
     }
 
     #[test]

@@ -35,7 +35,7 @@
 //! | [`FlankingGap`] | `flanking-gap`: a wall short of the bounds with a small square hole |
 //! | [`DividingWalls`] | `dividing-walls`: three full walls crossed through six slots |
 //! | [`GoalEnclosure`] | `goal-enclosure`: the goal in a hollow cube opening away from the start |
-//! | [`RandomRectangles`] | `random-rectangles`: 35 seeded random boxes |
+//! | [`RandomRectangles`] | `random-rectangles`: 35 seeded random boxes; `cluttered-rectangles`: the variant calibrated to block the straight line |
 //! | [`ObstacleFree`] | `obstacle-free`: the empty cube |
 //! | [`CenterSquare`] | `center-square`: one cube between start and goal |
 //! | [`WallGap`] | `wall-gap`: a wall with a slot and a corridor past its end |

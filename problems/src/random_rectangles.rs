@@ -39,6 +39,8 @@ use crate::{Parameter, Problem, ProblemError};
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct RandomRectangles {
+    /// The family name: [`NAME`](Self::NAME) or [`CLUTTERED`](Self::CLUTTERED).
+    family: &'static str,
     n: usize,
     start: Vec<f64>,
     goal: Vec<f64>,
@@ -53,10 +55,26 @@ impl RandomRectangles {
     /// The family's name in the [catalogue](crate::catalogue).
     pub const NAME: &'static str = "random-rectangles";
 
+    /// The name of the cluttered variant ([`cluttered`](Self::cluttered)).
+    pub const CLUTTERED: &'static str = "cluttered-rectangles";
+
+    /// The cluttered variant's box count and side range at its calibrated dimensions
+    /// `(n, count, min_side, max_side)`: chosen so that the straight line from start to goal is
+    /// blocked in at least 9 of the layouts 0–9, every layout is solvable, and EIT*'s final
+    /// cost over the straight line comes near the paper's random-rectangles figures (the
+    /// measurements are in `docs/experiments.md`). `n = 2` is PDT's own layout (uncalibrated).
+    pub const CLUTTERED_CALIBRATION: [(usize, usize, f64, f64); 4] = [
+        (2, 35, 0.1, 0.2),
+        (4, 60, 0.2, 0.35),
+        (8, 110, 0.5, 0.8),
+        (16, 60, 0.7, 0.95),
+    ];
+
     /// PDT's defaults in `n` dimensions with seed 0 (checked by [`build`](Self::build):
     /// `n ≥ 2`).
     pub fn new(n: usize) -> Self {
         Self {
+            family: Self::NAME,
             n,
             start: vec![-0.1; n],
             goal: vec![0.4; n],
@@ -66,6 +84,48 @@ impl RandomRectangles {
             seed: 0,
             max_attempts: 100_000,
         }
+    }
+
+    /// The cluttered variant in `n` dimensions with seed 0: PDT's start, goal and bounds, with
+    /// the box count and side range of [`CLUTTERED_CALIBRATION`](Self::CLUTTERED_CALIBRATION)
+    /// — linear in `log2 n` between its dimensions, and those of `n = 16` above. PDT's own
+    /// layout leaves the straight line free in most layouts (its boxes are far smaller than
+    /// the space in `R^8` and above), so planners differ only in how fast they find it.
+    ///
+    /// ```
+    /// use problems::RandomRectangles;
+    /// let p = RandomRectangles::cluttered(8).seed(1).build()?;
+    /// assert_eq!(p.name(), "cluttered-rectangles-seed-1");
+    /// assert_eq!(p.world().obstacles().len(), 110);
+    /// # Ok::<(), problems::ProblemError>(())
+    /// ```
+    pub fn cluttered(n: usize) -> Self {
+        let (count, min_side, max_side) = Self::cluttered_parameters(n);
+        Self {
+            family: Self::CLUTTERED,
+            count,
+            min_side,
+            max_side,
+            ..Self::new(n)
+        }
+    }
+
+    /// The cluttered variant's `(count, min_side, max_side)` in `n` dimensions.
+    fn cluttered_parameters(n: usize) -> (usize, f64, f64) {
+        let table = Self::CLUTTERED_CALIBRATION;
+        let x = (n.max(2) as f64).log2();
+        let last = table[table.len() - 1];
+        let Some(i) = table.windows(2).position(|w| n <= w[1].0) else {
+            return (last.1, last.2, last.3);
+        };
+        let (a, b) = (table[i], table[i + 1]);
+        let f = (x - (a.0 as f64).log2()) / ((b.0 as f64).log2() - (a.0 as f64).log2());
+        let lerp = |p: f64, q: f64| p + f.clamp(0.0, 1.0) * (q - p);
+        (
+            lerp(a.1 as f64, b.1 as f64).round() as usize,
+            lerp(a.2, b.2),
+            lerp(a.3, b.3),
+        )
     }
 
     /// Sets the seed of the layout.
@@ -127,7 +187,8 @@ impl RandomRectangles {
         ]
     }
 
-    /// Builds the problem; its name is `random-rectangles-seed-<seed>`.
+    /// Builds the problem; its name is `random-rectangles-seed-<seed>` (or
+    /// `cluttered-rectangles-seed-<seed>`).
     ///
     /// # Errors
     /// [`ProblemError::Dimension`] if `n < 2`; [`ProblemError::Parameter`] for side lengths
@@ -135,7 +196,7 @@ impl RandomRectangles {
     /// length; [`ProblemError::RedrawLimit`] if `max_attempts` draws do not give `count`
     /// boxes; [`ProblemError::State`] for a start or goal out of bounds.
     pub fn build(&self) -> Result<Problem, ProblemError> {
-        let (name, n) = (Self::NAME, self.n);
+        let (name, n) = (self.family, self.n);
         check_endpoints(name, n, &self.start, &self.goal)?;
         check_positive(name, "min_side", self.min_side)?;
         check_positive(name, "max_side", self.max_side)?;
@@ -183,6 +244,51 @@ impl RandomRectangles {
 mod tests {
     use super::*;
     use validity::StateValidity;
+
+    #[test]
+    fn the_cluttered_variant_follows_its_calibration() {
+        for &(n, count, min_side, max_side) in &RandomRectangles::CLUTTERED_CALIBRATION {
+            let p = RandomRectangles::cluttered(n).seed(2).build().unwrap();
+            assert_eq!(p.name(), "cluttered-rectangles-seed-2");
+            let boxes = p.world().obstacles();
+            assert_eq!(boxes.len(), count);
+            assert!(
+                boxes
+                    .iter()
+                    .flat_map(|b| &b.widths)
+                    .all(|w| (min_side..=max_side).contains(w))
+            );
+        }
+        // Between calibrated dimensions: in between; above the last: the last.
+        let (count, lo, hi) = RandomRectangles::cluttered_parameters(6);
+        assert!(
+            (60..=110).contains(&count) && (0.2..0.5).contains(&lo) && (0.35..0.8).contains(&hi)
+        );
+        assert_eq!(
+            RandomRectangles::cluttered_parameters(32),
+            RandomRectangles::cluttered_parameters(16)
+        );
+        assert_eq!(RandomRectangles::cluttered_parameters(4), (60, 0.2, 0.35));
+    }
+
+    #[test]
+    fn the_cluttered_variant_blocks_the_straight_line_where_pdts_does_not() {
+        let blocked = |make: fn(usize) -> RandomRectangles, n: usize| {
+            (0..10)
+                .filter(|&seed| {
+                    let p = make(n).seed(seed).build().unwrap();
+                    !matches!(
+                        p.world().segment_verdict(p.start(), &p.goals()[0]),
+                        validity::SegmentVerdict::Valid
+                    )
+                })
+                .count()
+        };
+        for n in [4, 8, 16] {
+            assert!(blocked(RandomRectangles::cluttered, n) >= 9, "R^{n}");
+            assert!(blocked(RandomRectangles::new, n) <= 2, "R^{n}");
+        }
+    }
 
     #[test]
     fn boxes_follow_the_distribution() {
