@@ -216,15 +216,17 @@ fn three_shards_merged_are_the_whole_experiment() {
     let lines: Vec<&str> = lines.lines().collect();
     let kept = lines[..lines.len() - 1].join("\n") + "\n";
     std::fs::write(cut.join("runs.jsonl"), &kept).unwrap();
+    let (first, last) = (p(0), p(2));
+    let with_cut = [
+        "merge",
+        &first,
+        cut.to_str().unwrap(),
+        &last,
+        "--output",
+        target,
+    ];
     refused(
-        &[
-            "merge",
-            &p(0),
-            cut.to_str().unwrap(),
-            &p(2),
-            "--output",
-            target,
-        ],
+        &with_cut,
         &["1 of the experiment's 30 runs is missing", "--shard 2/3"],
     );
     std::fs::write(
@@ -232,19 +234,8 @@ fn three_shards_merged_are_the_whole_experiment() {
         kept + lines[0] + "\n" + lines[0] + "\n",
     )
     .unwrap();
-    refused(
-        &[
-            "merge",
-            &p(0),
-            cut.to_str().unwrap(),
-            &p(2),
-            "--output",
-            target,
-        ],
-        &["twice"],
-    );
+    refused(&with_cut, &["twice"]);
     // A shard's folder is resumed only by the same shard, and bad shards are refused.
-    let first = p(0);
     let mut args = EXPERIMENT.to_vec();
     args.extend(["--output", &first, "--shard", "2/3"]);
     refused(&args, &["holds shard 1/3", "not 2/3"]);
