@@ -118,14 +118,7 @@ impl Executor {
             first_solution: experiment.first_solution,
             ..job
         })
-        .filter(|job| {
-            let key = (
-                instances[job.instance].id.clone(),
-                experiment.planners[job.planner].name().to_owned(),
-                job.run,
-            );
-            !recorded.contains(&key)
-        })
+        .filter(|job| !recorded.contains(&job.key(experiment, &instances)))
         .collect();
         let concurrency = self.options.threads.min(jobs.len().max(1));
         let pool = rayon::ThreadPoolBuilder::new()

@@ -39,62 +39,9 @@ pub fn merge_parts(
     output: &Path,
     plots: bool,
 ) -> Result<MergeReport, HarnessError> {
-    let first = parts
-        .first()
-        .ok_or_else(|| HarnessError::Usage("merge: give the shard folders to combine".into()))?;
-    let text = experiment_text(first)?;
-    let mut shards: Vec<Shard> = Vec::with_capacity(parts.len());
-    for part in parts {
-        if experiment_text(part)? != text {
-            return Err(HarnessError::Usage(format!(
-                "`{}` and `{}` hold different experiments (their experiment.toml differ); \
-                 only the shards of one experiment can be merged",
-                first.display(),
-                part.display()
-            )));
-        }
-        let shard = Shard::read(part)?.ok_or_else(|| {
-            HarnessError::Usage(format!(
-                "`{}` is not a shard's folder (it has no {}): merge combines the folders of \
-                 `mit-star bench --shard K/N`",
-                part.display(),
-                crate::SHARD_FILE
-            ))
-        })?;
-        if let Some(other) = shards.iter().position(|s| *s == shard) {
-            return Err(HarnessError::Usage(format!(
-                "`{}` and `{}` are both shard {shard}",
-                parts[other].display(),
-                part.display()
-            )));
-        }
-        if shard.count() != shards.first().map_or(shard.count(), |s| s.count()) {
-            return Err(HarnessError::Usage(format!(
-                "`{}` is shard {shard} but `{}` is shard {}: all parts must split the \
-                 experiment into the same number of shards",
-                part.display(),
-                first.display(),
-                shards[0]
-            )));
-        }
-        shards.push(shard);
-    }
+    let shards = shards_of(parts)?;
+    let first = &parts[0];
     let count = shards[0].count();
-    if shards.len() != count {
-        let missing: Vec<String> = (1..=count)
-            .filter(|k| !shards.iter().any(|s| s.index() == *k))
-            .map(|k| format!("{k}/{count}"))
-            .collect();
-        let (plural, verb) = if missing.len() == 1 {
-            ("", "is")
-        } else {
-            ("s", "are")
-        };
-        return Err(HarnessError::Usage(format!(
-            "shard{plural} {} {verb} missing: give all {count} shard folders",
-            missing.join(", ")
-        )));
-    }
     let experiment = Experiment::from_file(&first.join("experiment.toml"))?;
     let instances = experiment.instances()?;
     // Every run of the experiment, by identity: its position in the schedule.
@@ -107,14 +54,7 @@ pub fn merge_parts(
     let positions: HashMap<RunKey, usize> = schedule
         .iter()
         .enumerate()
-        .map(|(position, job)| {
-            let key = (
-                instances[job.instance].id.clone(),
-                experiment.planners[job.planner].name().to_owned(),
-                job.run,
-            );
-            (key, position)
-        })
+        .map(|(position, job)| (job.key(&experiment, &instances), position))
         .collect();
     let mut slots: Vec<Option<(RunRecord, usize, usize)>> = vec![None; schedule.len()];
     let mut runs_per_part = Vec::with_capacity(parts.len());
@@ -122,7 +62,7 @@ pub fn merge_parts(
         let entries = RunJournal::read_entries(part)?;
         runs_per_part.push(entries.len());
         for (record, concurrency) in entries {
-            let key = (record.instance.clone(), record.planner.clone(), record.run);
+            let key = record.key();
             let Some(&position) = positions.get(&key) else {
                 return Err(HarnessError::Usage(format!(
                     "`{}` records run {} of {} on `{}`, which the experiment does not have",
@@ -196,8 +136,7 @@ pub fn merge_parts(
     let mut total_time = 0.0;
     for (record, concurrency, _) in slots.iter().flatten() {
         total_time += record.run_time;
-        let key = (record.instance.clone(), record.planner.clone(), record.run);
-        if !journal.recorded().contains(&key) {
+        if !journal.recorded().contains(&record.key()) {
             journal.append_raw(
                 &instances[index_of[record.instance.as_str()]],
                 *concurrency,
@@ -223,6 +162,67 @@ pub fn merge_parts(
         runs_per_part,
         files,
     })
+}
+
+/// The shard of each of `parts`, checked to be all N shards of one experiment, each once.
+fn shards_of(parts: &[PathBuf]) -> Result<Vec<Shard>, HarnessError> {
+    let first = parts
+        .first()
+        .ok_or_else(|| HarnessError::Usage("merge: give the shard folders to combine".into()))?;
+    let text = experiment_text(first)?;
+    let mut shards: Vec<Shard> = Vec::with_capacity(parts.len());
+    for part in parts {
+        if experiment_text(part)? != text {
+            return Err(HarnessError::Usage(format!(
+                "`{}` and `{}` hold different experiments (their experiment.toml differ); \
+                 only the shards of one experiment can be merged",
+                first.display(),
+                part.display()
+            )));
+        }
+        let shard = Shard::read(part)?.ok_or_else(|| {
+            HarnessError::Usage(format!(
+                "`{}` is not a shard's folder (it has no {}): merge combines the folders of \
+                 `mit-star bench --shard K/N`",
+                part.display(),
+                crate::SHARD_FILE
+            ))
+        })?;
+        if let Some(other) = shards.iter().position(|s| *s == shard) {
+            return Err(HarnessError::Usage(format!(
+                "`{}` and `{}` are both shard {shard}",
+                parts[other].display(),
+                part.display()
+            )));
+        }
+        if shard.count() != shards.first().map_or(shard.count(), |s| s.count()) {
+            return Err(HarnessError::Usage(format!(
+                "`{}` is shard {shard} but `{}` is shard {}: all parts must split the \
+                 experiment into the same number of shards",
+                part.display(),
+                first.display(),
+                shards[0]
+            )));
+        }
+        shards.push(shard);
+    }
+    let count = shards[0].count();
+    if shards.len() != count {
+        let missing: Vec<String> = (1..=count)
+            .filter(|k| !shards.iter().any(|s| s.index() == *k))
+            .map(|k| format!("{k}/{count}"))
+            .collect();
+        let (plural, verb) = if missing.len() == 1 {
+            ("", "is")
+        } else {
+            ("s", "are")
+        };
+        return Err(HarnessError::Usage(format!(
+            "shard{plural} {} {verb} missing: give all {count} shard folders",
+            missing.join(", ")
+        )));
+    }
+    Ok(shards)
 }
 
 /// The `experiment.toml` of a results folder.

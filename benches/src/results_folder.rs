@@ -79,8 +79,7 @@ impl ResultsFolder {
         let mut journal = RunJournal::open(&self.path, &results.instances)?;
         for (index, runs) in results.runs.iter().enumerate() {
             for record in runs {
-                let key = (record.instance.clone(), record.planner.clone(), record.run);
-                if !journal.recorded().contains(&key) {
+                if !journal.recorded().contains(&record.key()) {
                     journal.append(results, index, record)?;
                 }
             }

@@ -46,6 +46,19 @@ impl Termination for Interrupted<'_> {
 }
 
 impl RunJob {
+    /// The identity of this job's run in a results folder of `experiment` on `instances`.
+    pub fn key(
+        &self,
+        experiment: &crate::Experiment,
+        instances: &[ProblemInstance],
+    ) -> crate::RunKey {
+        (
+            instances[self.instance].id.clone(),
+            experiment.planners[self.planner].name().to_owned(),
+            self.run,
+        )
+    }
+
     /// The schedule of an experiment: instance after instance; within an instance run index
     /// after run index; within a run index every planner once, in an order shuffled with a
     /// generator seeded by the run index (PDT's protocol, spreading machine drift evenly over

@@ -101,7 +101,7 @@ impl RunJournal {
                 entries.len()
             )));
         }
-        let recorded = entries.iter().map(|(r, _)| key(r)).collect();
+        let recorded = entries.iter().map(|(r, _)| r.key()).collect();
         Ok(Self {
             jsonl_path,
             jsonl,
@@ -154,7 +154,7 @@ impl RunJournal {
             .write_all(line.as_bytes())
             .map_err(io(&self.jsonl_path))?;
         self.csv.write_all(&row).map_err(io(&self.csv_path))?;
-        self.recorded.insert(key(record));
+        self.recorded.insert(record.key());
         Ok(())
     }
 
@@ -216,11 +216,6 @@ impl RunJournal {
     pub fn read_entries(folder: &Path) -> Result<Vec<(RunRecord, usize)>, HarnessError> {
         read_entries(&folder.join("runs.jsonl"), true)
     }
-}
-
-/// A run's identity.
-fn key(record: &RunRecord) -> RunKey {
-    (record.instance.clone(), record.planner.clone(), record.run)
 }
 
 /// The `HarnessError::Io` of `path`.

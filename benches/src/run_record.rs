@@ -90,6 +90,11 @@ pub struct RunRecord {
 }
 
 impl RunRecord {
+    /// The run's identity in a results folder: instance id, planner name, run index.
+    pub fn key(&self) -> crate::RunKey {
+        (self.instance.clone(), self.planner.clone(), self.run)
+    }
+
     /// `true` if the run found a solution that passed validation.
     pub fn is_success(&self) -> bool {
         self.status == RunStatus::Solved

@@ -130,18 +130,22 @@ impl NearestNeighbors {
     /// abandon the build at its first poll.
     pub(crate) fn maintain(&mut self, alive: Alive<'_>, stop: &dyn Stop) {
         let rebuild = self.dead > 0 && 2 * self.dead > self.stored;
-        let in_trees = self.stored - self.pending.len();
-        let flush = self.pending.len() > PENDING_LIMIT.max(in_trees / 4);
-        if !(rebuild || flush) || stop.should_stop() {
+        if !(rebuild || self.buffer_is_large()) || stop.should_stop() {
             return;
         }
         if rebuild {
             self.rebuild_alive(alive, stop);
         }
-        let in_trees = self.stored - self.pending.len();
-        if self.pending.len() > PENDING_LIMIT.max(in_trees / 4) {
+        if self.buffer_is_large() {
             self.flush(stop);
         }
+    }
+
+    /// `true` if the buffer holds more than [`PENDING_LIMIT`] points and a quarter of the
+    /// points in trees.
+    fn buffer_is_large(&self) -> bool {
+        let in_trees = self.stored - self.pending.len();
+        self.pending.len() > PENDING_LIMIT.max(in_trees / 4)
     }
 
     /// One tree over the live points (trees and buffer); nothing changes if `stop` fires.

@@ -16,8 +16,8 @@ struct Block {
 ///
 /// The buffer holds up to a quarter of the indexed points, megabytes in high dimensions. As one
 /// `Vec` it doubled as it grew, copying itself in one step no termination condition can
-/// interrupt (up to 7 ms past a 0.1 s deadline in `R^32`, measured by the deadline stress
-/// matrix). Blocks never move; emptied, they are kept for the points that follow.
+/// interrupt (milliseconds past a deadline in `R^32`; `docs/benchmarks.md`). Blocks never
+/// move; emptied, they are kept for the points that follow.
 #[derive(Debug, Clone)]
 pub(crate) struct PendingPoints {
     dimension: usize,

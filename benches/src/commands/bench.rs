@@ -395,7 +395,7 @@ impl BenchArgs {
             );
         }
         let errors = all.failed_runs().len();
-        let outcome = outcome(results.interrupted, errors, invalid.len());
+        let outcome = CommandOutcome::of_runs(results.interrupted, errors, invalid.len());
         if errors > 0 {
             eprintln!(
                 "ERROR: {errors} of {} recorded runs ended in an error (see the `error` column of \
@@ -409,20 +409,6 @@ impl BenchArgs {
             );
         }
         Ok(outcome)
-    }
-}
-
-/// How `bench` ends: interrupted (the signal's exit code) before runs that ended in an error
-/// (exit code 1, whenever any recorded run did) before invalid paths (3) before success.
-fn outcome(interrupted: bool, errors: usize, invalid: usize) -> CommandOutcome {
-    if interrupted {
-        CommandOutcome::Interrupted
-    } else if errors > 0 {
-        CommandOutcome::RunErrors
-    } else if invalid > 0 {
-        CommandOutcome::InvalidPaths
-    } else {
-        CommandOutcome::Success
     }
 }
 
@@ -518,10 +504,22 @@ mod tests {
 
     #[test]
     fn errors_exit_1_unless_interrupted_and_before_invalid_paths() {
-        assert_eq!(outcome(false, 0, 0), CommandOutcome::Success);
-        assert_eq!(outcome(false, 0, 2), CommandOutcome::InvalidPaths);
-        assert_eq!(outcome(false, 1, 2), CommandOutcome::RunErrors);
-        assert_eq!(outcome(true, 1, 2), CommandOutcome::Interrupted);
+        assert_eq!(
+            CommandOutcome::of_runs(false, 0, 0),
+            CommandOutcome::Success
+        );
+        assert_eq!(
+            CommandOutcome::of_runs(false, 0, 2),
+            CommandOutcome::InvalidPaths
+        );
+        assert_eq!(
+            CommandOutcome::of_runs(false, 1, 2),
+            CommandOutcome::RunErrors
+        );
+        assert_eq!(
+            CommandOutcome::of_runs(true, 1, 2),
+            CommandOutcome::Interrupted
+        );
         assert_eq!(
             CommandOutcome::RunErrors.exit_code(),
             std::process::ExitCode::from(1)

@@ -49,14 +49,10 @@ impl MergeArgs {
         for f in &report.files {
             say!("  {}", f.display());
         }
-        let invalid = results.invalid_runs().len();
-        let errors = results.failed_runs().len();
-        Ok(if errors > 0 {
-            CommandOutcome::RunErrors
-        } else if invalid > 0 {
-            CommandOutcome::InvalidPaths
-        } else {
-            CommandOutcome::Success
-        })
+        Ok(CommandOutcome::of_runs(
+            false,
+            results.failed_runs().len(),
+            results.invalid_runs().len(),
+        ))
     }
 }

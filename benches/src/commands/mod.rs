@@ -82,6 +82,21 @@ pub enum CommandOutcome {
 }
 
 impl CommandOutcome {
+    /// How a command that records runs ends: interrupted (the signal's exit code) before runs
+    /// that ended in an error (exit code 1, whenever any recorded run did) before invalid paths
+    /// (3) before success.
+    pub fn of_runs(interrupted: bool, errors: usize, invalid: usize) -> Self {
+        if interrupted {
+            Self::Interrupted
+        } else if errors > 0 {
+            Self::RunErrors
+        } else if invalid > 0 {
+            Self::InvalidPaths
+        } else {
+            Self::Success
+        }
+    }
+
     /// The process exit code.
     pub fn exit_code(self) -> ExitCode {
         match self {
