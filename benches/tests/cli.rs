@@ -243,6 +243,41 @@ fn listings() {
 }
 
 #[test]
+fn problems_write_prints_the_exact_problem_as_a_file_plan_reads() {
+    let text = succeeded(&[
+        "problems",
+        "--write",
+        "random-rectangles",
+        "--dim",
+        "4",
+        "--instance",
+        "2",
+    ]);
+    let built = problems::builtin("random-rectangles", 4, 2).unwrap();
+    assert_eq!(problems::Problem::from_toml_str(&text).unwrap(), built);
+    let dir = scratch("problems-write");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("rr4-2.toml");
+    std::fs::write(&file, &text).unwrap();
+    let stdout = succeeded(&[
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        file.to_str().unwrap(),
+        "--time",
+        "1",
+        "--output",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(stdout.contains("solved; path validated"), "{stdout}");
+    refused(
+        &["problems", "--write", "dividing-wall", "--dim", "4"],
+        &["dividing-wall", "unknown problem"],
+    );
+}
+
+#[test]
 fn plan_prints_the_result_and_draws_2d_runs() {
     let dir = scratch("plan");
     let stdout = succeeded(&[

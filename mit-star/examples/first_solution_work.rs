@@ -10,7 +10,9 @@
 //! optionally `one-at-a-time` to turn accelerated point checks off (the layout number of
 //! `random-rectangles` goes after the family: `random-rectangles:2`). Each run stops at its
 //! first solution or after 3 s. Prints the first five runs, then the medians over the solved
-//! runs: points tested (and culled), time, and time per point.
+//! runs: points tested (and culled), time, and time per point. With `--csv` anywhere among
+//! the arguments it prints one line per run instead, in the columns of the OMPL peer driver
+//! (`docs/scripts/ompl-peer`), so both sides go through one summary.
 
 use std::time::Instant;
 
@@ -24,7 +26,9 @@ fn median(values: &mut [f64]) -> f64 {
 }
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let csv = args.iter().any(|a| a == "--csv");
+    args.retain(|a| a != "--csv");
     let family = args.first().map_or("goal-enclosure", String::as_str);
     let dimension: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(4);
     let configuration: Configuration = match args.get(2).map_or("bit-star", String::as_str).parse()
@@ -63,7 +67,20 @@ fn main() {
             .expect("a query the problem family guarantees");
         let seconds = started.elapsed().as_secs_f64();
         let c = planner.counters();
-        if seed <= 5 {
+        if csv {
+            // problem,n,planner,seed,exact,callback,t_first_ms,calls_first,t_total_ms,calls_total,cost,setup_ms
+            let cost = outcome.cost();
+            println!(
+                "{},{dimension},{},{seed},{},1,{:.4},{},{:.4},{},{cost:.6},0",
+                problem.name(),
+                configuration.label(),
+                u8::from(outcome.is_solved()),
+                seconds * 1e3,
+                c.points_tested,
+                seconds * 1e3,
+                c.points_tested,
+            );
+        } else if seed <= 5 {
             println!(
                 "seed {seed}: {} in {:.1} ms, {} points, {} full checks, {} batches",
                 if outcome.is_solved() {
@@ -83,6 +100,9 @@ fn main() {
             times.push(seconds);
             per_point.push(seconds * 1e9 / c.points_tested.max(1) as f64);
         }
+    }
+    if csv {
+        return;
     }
     println!(
         "{} on {family} R^{dimension}{}: {} of {seeds} solved; median {:.0} points ({:.0} culled), {:.2} ms, {:.2} ns per point",

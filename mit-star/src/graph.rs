@@ -12,6 +12,8 @@ use crate::Neighbours;
 use crate::chunked::Chunked;
 use crate::edge_hasher::{BuildEdgeHasher, edge_key};
 use crate::kd_tree::Alive;
+use crate::neighbour_cache::MERGE_LIMIT;
+use crate::recent_states::RecentStates;
 use crate::state_chunks::StateChunks;
 use crate::vertex::{NONE, Vertex};
 
@@ -91,6 +93,10 @@ pub struct RandomGeometricGraph {
     pub(crate) tag: u32,
     /// Every vertex ever committed, in order: a list covering `log[..p]` misses `log[p..]`.
     pub(crate) log: Chunked<(u32, u32)>,
+    /// The states of the last [`MERGE_LIMIT`] log entries, contiguous in log order.
+    pub(crate) recent: RecentStates,
+    /// Scratch for [`RecentStates::squared_distances`] (at most [`MERGE_LIMIT`] values).
+    pub(crate) merge_distances: Vec<f64>,
     pub(crate) neighbourhood: Neighbourhood,
     pub(crate) found: Neighbours,
     /// Scratch for a fresh neighbour list (kept apart from the cached one until the query
@@ -119,6 +125,8 @@ impl RandomGeometricGraph {
             lists: Chunked::new(),
             tag: 1,
             log: Chunked::new(),
+            recent: RecentStates::new(dimension, MERGE_LIMIT),
+            merge_distances: Vec::with_capacity(MERGE_LIMIT),
             neighbourhood: Neighbourhood::Nearest(1),
             found: Neighbours::new(),
             scratch_list: Vec::new(),
@@ -172,6 +180,12 @@ impl RandomGeometricGraph {
         }
         self.log
             .extend(ids.iter().map(|&id| (id, births[id as usize])));
+        // Only the tail can be read: a list missing more than MERGE_LIMIT entries is requeried.
+        let tail = ids.len().saturating_sub(MERGE_LIMIT);
+        self.recent.skip(tail);
+        for &id in &ids[tail..] {
+            self.recent.push(&states[id as usize]);
+        }
         self.new_batch();
     }
 

@@ -77,6 +77,7 @@ mod observer;
 mod parameters;
 mod pending_points;
 mod planner;
+mod recent_states;
 mod reverse_queue;
 mod reverse_search;
 mod rrt_connect;

@@ -14,7 +14,7 @@ const SLACK: usize = 4;
 
 /// Above this many samples added since a list was made, a fresh tree query beats scanning
 /// them (a query costs about as much as a few hundred distance computations).
-const MERGE_LIMIT: usize = 400;
+pub(crate) const MERGE_LIMIT: usize = 400;
 
 impl RandomGeometricGraph {
     /// The number of neighbours of `v` in this batch — entries `0..len` of its list, nearest
@@ -168,12 +168,13 @@ impl RandomGeometricGraph {
             }
             Neighbourhood::Nearest(_) => f64::INFINITY,
         };
-        let x = &self.states[v as usize];
         let order =
             |a: &Neighbour, b: &Neighbour| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id));
-        for &(w, birth) in self.log.iter_from(from) {
+        let mut squared = std::mem::take(&mut self.merge_distances);
+        let x = &self.states[v as usize];
+        let mut offer = |w: u32, birth: u32| {
             if w == v || self.births[w as usize] != birth {
-                continue;
+                return;
             }
             if space.distance(x, &self.states[w as usize]) <= bound {
                 // Few candidates pass the bound: insert each in order.
@@ -181,7 +182,25 @@ impl RandomGeometricGraph {
                 let at = list.partition_point(|m| order(m, &n).is_lt());
                 list.insert(at, n);
             }
+        };
+        // In a Euclidean space squared distances to the recent states, column by column, rule
+        // out most samples before their log entries are even read; the margin covers the
+        // rounding of the space's own distance, which decides every sample that passes, so the
+        // list is exactly the one it would give.
+        if self.euclidean && self.recent.squared_distances(from, x, &mut squared) {
+            let squared_bound = bound * bound * (1.0 + 1e-9);
+            for (p, &d) in (from..).zip(&squared) {
+                if d <= squared_bound {
+                    let (w, birth) = self.log[p];
+                    offer(w, birth);
+                }
+            }
+        } else {
+            for &(w, birth) in self.log.iter_from(from) {
+                offer(w, birth);
+            }
         }
+        self.merge_distances = squared;
         match self.neighbourhood {
             Neighbourhood::Nearest(_) => {
                 // The survivors held the `wanted` nearest old points, so the merge is exact up

@@ -12,6 +12,14 @@ pub struct ProblemsArgs {
     /// Show the defaults in this dimension (some depend on it).
     #[arg(long, default_value_t = 2)]
     pub dim: usize,
+    /// Instead of listing, print this built-in problem in `--dim` dimensions as a TOML problem
+    /// file (the exact boxes, ends and resolution the planners see; for feeding another
+    /// planner, or for editing and `--problem path.toml`).
+    #[arg(long, value_name = "NAME")]
+    pub write: Option<String>,
+    /// The layout of a seeded family to print with `--write` (as `plan --instance`).
+    #[arg(long, default_value_t = 0, requires = "write")]
+    pub instance: u64,
 }
 
 impl ProblemsArgs {
@@ -20,6 +28,18 @@ impl ProblemsArgs {
     /// # Errors
     /// [`HarnessError::Problem`] if a family cannot be built in `--dim` dimensions.
     pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+        if let Some(name) = &self.write {
+            let problem = problems::builtin(name, self.dim, self.instance).map_err(|source| {
+                HarnessError::Problem {
+                    name: name.clone(),
+                    dimension: self.dim,
+                    source,
+                }
+            })?;
+            let text = problem.to_toml_string();
+            say!("{}", text.trim_end());
+            return Ok(CommandOutcome::Success);
+        }
         say!(
             "Built-in problems (space [-0.5, 0.5]^n; defaults shown for n = {}):\n",
             self.dim

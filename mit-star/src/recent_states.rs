@@ -1,0 +1,152 @@
+//! [`RecentStates`]: the coordinates of the last committed samples, column by column in commit
+//! order, so that bringing a cached neighbour list up to date is a vectorised pass.
+
+/// A ring of the states of the last `capacity` entries of the graph's commit log, stored by
+/// coordinate (all first coordinates, then all second ones, …).
+///
+/// Every reverse-search restart brings the neighbour list of each vertex it expands up to date
+/// by measuring its distance to each sample committed since the list was made (at most
+/// `capacity` of them; beyond that a fresh tree query is made instead). That is most of the
+/// planner's own work in the anytime phase: in `R^8` a vertex meets about 250 new samples per
+/// update, and tree pruning cannot cut that down in high dimensions. Read through vertex ids
+/// those states are scattered over the graph's storage; here one coordinate of every recent
+/// sample is a contiguous column, so the squared distances of a query to all of them are
+/// accumulated column by column in loops the compiler vectorises. The ring is allocated once
+/// at its full size: committing never grows it, whatever the batch size.
+#[derive(Debug, Clone)]
+pub(crate) struct RecentStates {
+    dimension: usize,
+    capacity: usize,
+    /// Log positions `end - held .. end` are held; position `p` is in slot `p % capacity`.
+    end: usize,
+    held: usize,
+    /// Column `d` is `columns[d * capacity..(d + 1) * capacity]`.
+    columns: Vec<f64>,
+}
+
+impl RecentStates {
+    /// An empty ring for the last `capacity` states of `dimension` coordinates.
+    pub(crate) fn new(dimension: usize, capacity: usize) -> Self {
+        Self {
+            dimension,
+            capacity,
+            end: 0,
+            held: 0,
+            columns: Vec::new(),
+        }
+    }
+
+    /// Appends the state of the next log entry (the oldest held one falls out when full).
+    pub(crate) fn push(&mut self, state: &[f64]) {
+        debug_assert_eq!(state.len(), self.dimension);
+        if self.capacity == 0 {
+            self.end += 1;
+            return;
+        }
+        if self.columns.is_empty() {
+            self.columns = vec![0.0; self.capacity * self.dimension];
+        }
+        let slot = self.end % self.capacity;
+        for (d, &x) in state.iter().enumerate() {
+            self.columns[d * self.capacity + slot] = x;
+        }
+        self.end += 1;
+        self.held = (self.held + 1).min(self.capacity);
+    }
+
+    /// Skips `count` log entries without their states (the head of a batch larger than the
+    /// ring, which the batch's own tail pushes out anyway). A run of held states must reach the
+    /// end of the log, so nothing before the skipped entries can be read any more.
+    pub(crate) fn skip(&mut self, count: usize) {
+        if count > 0 {
+            self.end += count;
+            self.held = 0;
+        }
+    }
+
+    /// Writes to `out` the squared Euclidean distances from `query` to the states of log
+    /// positions `from..` (the newest entries), in log order; `false` (and `out` untouched) if
+    /// `from` is older than the ring holds. The sums run over the coordinates in order, as
+    /// [`squared_distance`](crate::kd_tree::squared_distance) does.
+    pub(crate) fn squared_distances(&self, from: usize, query: &[f64], out: &mut Vec<f64>) -> bool {
+        if from > self.end || from < self.end - self.held {
+            return false;
+        }
+        let count = self.end - from;
+        out.clear();
+        out.resize(count, 0.0);
+        if count == 0 {
+            return true;
+        }
+        // At most two runs of slots: up to the end of the ring, then from its start.
+        let first = from % self.capacity;
+        let head = count.min(self.capacity - first);
+        let runs = [(first, 0, head), (0, head, count - head)];
+        for (d, &q) in query.iter().enumerate() {
+            let column = &self.columns[d * self.capacity..(d + 1) * self.capacity];
+            for &(slot, at, len) in &runs {
+                for (sum, &y) in out[at..at + len].iter_mut().zip(&column[slot..slot + len]) {
+                    let t = q - y;
+                    *sum += t * t;
+                }
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kd_tree::squared_distance;
+
+    fn distances(r: &RecentStates, from: usize, query: &[f64]) -> Option<Vec<f64>> {
+        let mut out = vec![-1.0];
+        r.squared_distances(from, query, &mut out).then_some(out)
+    }
+
+    #[test]
+    fn measures_the_newest_entries_in_log_order_across_the_wrap() {
+        let mut r = RecentStates::new(2, 3);
+        assert_eq!(distances(&r, 0, &[0.0, 0.0]), Some(vec![]));
+        let states: Vec<[f64; 2]> = (0..5_u8)
+            .map(|p| [f64::from(p), 0.5 - f64::from(p)])
+            .collect();
+        for s in &states {
+            r.push(s);
+        }
+        let q = [0.25, -1.0];
+        // Positions 2, 3, 4 are held; 0 and 1 fell out.
+        assert_eq!(distances(&r, 1, &q), None);
+        for from in 2..=5 {
+            let want: Vec<f64> = states[from..]
+                .iter()
+                .map(|s| squared_distance(&q, s))
+                .collect();
+            assert_eq!(distances(&r, from, &q), Some(want), "from {from}");
+        }
+        assert_eq!(distances(&r, 6, &q), None);
+    }
+
+    #[test]
+    fn skipped_entries_hide_everything_before_them() {
+        let mut r = RecentStates::new(1, 4);
+        for p in 0..3_u8 {
+            r.push(&[f64::from(p)]);
+        }
+        r.skip(2);
+        // Log positions 0..5 exist; 3 and 4 have no states, so nothing before 5 can be read.
+        assert_eq!(distances(&r, 2, &[0.0]), None);
+        assert_eq!(distances(&r, 5, &[0.0]), Some(vec![]));
+        r.push(&[5.0]);
+        assert_eq!(distances(&r, 5, &[1.0]), Some(vec![16.0]));
+    }
+
+    #[test]
+    fn a_ring_without_room_holds_nothing() {
+        let mut r = RecentStates::new(2, 0);
+        r.push(&[1.0, 2.0]);
+        assert_eq!(distances(&r, 0, &[0.0, 0.0]), None);
+        assert_eq!(distances(&r, 1, &[0.0, 0.0]), Some(vec![]));
+    }
+}
