@@ -103,6 +103,8 @@ pub struct RandomGeometricGraph {
     /// completes).
     pub(crate) scratch_list: Vec<Neighbour>,
     pub(crate) linear_queries: u64,
+    /// Vertices removed so far (a list made since the last removal needs no filtering).
+    pub(crate) removals: u64,
     /// The vertices the current or last pruning removes, ascending.
     pub(crate) prune_ids: Vec<u32>,
     /// The next of `prune_ids` to remove, while a pruning is interrupted.
@@ -131,6 +133,7 @@ impl RandomGeometricGraph {
             found: Neighbours::new(),
             scratch_list: Vec::new(),
             linear_queries: 0,
+            removals: 0,
             prune_ids: Vec::new(),
             prune_next: None,
         }
@@ -285,6 +288,7 @@ impl RandomGeometricGraph {
         self.graph.remove_node(node);
         self.births[v as usize] = DEAD;
         self.lists[v as usize].clear();
+        self.removals += 1;
     }
 
     // ----- read-only view -----

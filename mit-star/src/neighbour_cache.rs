@@ -36,17 +36,21 @@ impl RandomGeometricGraph {
         if x.neighbours_tag == self.tag {
             return Some(x.neighbours_len as usize);
         }
-        let (had_list, from, wanted, radius) = (
+        let (had_list, from, wanted, radius, removals) = (
             x.neighbours_tag != 0,
             x.neighbours_log as usize,
             x.neighbours_wanted as usize,
             x.neighbours_radius,
+            x.neighbours_removals,
         );
         let mut list = std::mem::take(&mut self.lists[v as usize]);
-        // Pruned (or reused) neighbours leave; the rest are still the nearest survivors.
+        // Pruned (or reused) neighbours leave; the rest are still the nearest survivors. Without
+        // a removal since the list was made, every entry is alive.
         let before = list.len();
-        let births = &self.births;
-        list.retain(|n| births[n.id as usize] == n.birth);
+        if removals != self.removals {
+            let births = &self.births;
+            list.retain(|n| births[n.id as usize] == n.birth);
+        }
         let wanted = wanted.saturating_sub(before - list.len());
         let added = self.log.len() - from;
         let reusable = had_list
@@ -80,7 +84,7 @@ impl RandomGeometricGraph {
             Neighbourhood::Radius(_) => list.len(),
         };
         self.lists[v as usize] = list;
-        let (tag, log) = (self.tag, self.log.len() as u32);
+        let (tag, log, removals) = (self.tag, self.log.len() as u32, self.removals);
         let radius = match self.neighbourhood {
             Neighbourhood::Nearest(_) => 0.0,
             Neighbourhood::Radius(r) => r,
@@ -91,6 +95,7 @@ impl RandomGeometricGraph {
         x.neighbours_wanted = wanted as u32;
         x.neighbours_radius = radius;
         x.neighbours_log = log;
+        x.neighbours_removals = removals;
         Some(used)
     }
 

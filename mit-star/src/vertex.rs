@@ -55,6 +55,9 @@ pub(crate) struct Vertex {
     pub(crate) neighbours_wanted: u32,
     pub(crate) neighbours_radius: f64,
     pub(crate) neighbours_log: u32,
+    /// The graph's removal count when the list was last brought up to date: while it is
+    /// unchanged, no neighbour can have died.
+    pub(crate) neighbours_removals: u64,
 
     /// Forward tree: cost-to-come `g`, parent, cost of the parent edge, intrusive child list.
     pub(crate) g: f64,
@@ -96,6 +99,7 @@ impl Vertex {
             neighbours_wanted: 0,
             neighbours_radius: 0.0,
             neighbours_log: 0,
+            neighbours_removals: 0,
             g: f64::INFINITY,
             parent: NONE,
             parent_cost: f64::INFINITY,
