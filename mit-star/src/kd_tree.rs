@@ -80,10 +80,26 @@ pub struct KdTree {
     pub(crate) upper: Vec<f64>,
 }
 
-/// Squared Euclidean distance of two coordinate slices.
+/// Squared Euclidean distance of two coordinate slices, summed in four independent lanes
+/// (coordinates `i`, `i + 4`, … in lane `i mod 4`), which in high dimensions cuts the chain of
+/// dependent additions that bounds a leaf scan to a quarter. Every structure that ranks points
+/// by distance (trees, the pending buffer) uses this one function, so their rankings agree.
 #[inline]
 pub(crate) fn squared_distance(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum()
+    let mut sums = [0.0_f64; 4];
+    let (a4, b4) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ra, rb) = (a4.remainder(), b4.remainder());
+    for (x, y) in a4.zip(b4) {
+        for i in 0..4 {
+            let t = x[i] - y[i];
+            sums[i] += t * t;
+        }
+    }
+    for (i, (x, y)) in ra.iter().zip(rb).enumerate() {
+        let t = x - y;
+        sums[i] += t * t;
+    }
+    (sums[0] + sums[1]) + (sums[2] + sums[3])
 }
 
 impl KdTree {

@@ -66,8 +66,9 @@ impl RecentStates {
 
     /// Writes to `out` the squared Euclidean distances from `query` to the states of log
     /// positions `from..` (the newest entries), in log order; `false` (and `out` untouched) if
-    /// `from` is older than the ring holds. The sums run over the coordinates in order, as
-    /// [`squared_distance`](crate::kd_tree::squared_distance) does.
+    /// `from` is older than the ring holds. (The sums run over the coordinates in order, so
+    /// they may differ from [`squared_distance`](crate::kd_tree::squared_distance)'s in the
+    /// last bits: callers filter with a margin.)
     pub(crate) fn squared_distances(&self, from: usize, query: &[f64], out: &mut Vec<f64>) -> bool {
         if from > self.end || from < self.end - self.held {
             return false;
@@ -98,7 +99,6 @@ impl RecentStates {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kd_tree::squared_distance;
 
     fn distances(r: &RecentStates, from: usize, query: &[f64]) -> Option<Vec<f64>> {
         let mut out = vec![-1.0];
@@ -121,7 +121,7 @@ mod tests {
         for from in 2..=5 {
             let want: Vec<f64> = states[from..]
                 .iter()
-                .map(|s| squared_distance(&q, s))
+                .map(|s| s.iter().zip(&q).map(|(x, y)| (x - y) * (x - y)).sum())
                 .collect();
             assert_eq!(distances(&r, from, &q), Some(want), "from {from}");
         }
