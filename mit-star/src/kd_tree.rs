@@ -10,6 +10,16 @@ pub(crate) const BUCKET: usize = 12;
 /// Marks a leaf in [`Node::dim`].
 pub(crate) const LEAF: u32 = u32::MAX;
 
+/// From this dimension on, a k-nearest query scans the tree's points instead of descending it.
+/// Uniform samples in 12 or more dimensions leave the cells' bounds too loose to prune: the
+/// descent visits nearly every leaf and pays for the bookkeeping on top. Measured with
+/// `anytime_rate` (MIT*, same runs both ways): the scan costs 4–8 % more time in R^8, the same
+/// in R^10, and saves 10–12 % in R^12 and 10–20 % in R^16.
+const SCAN_DIMENSION: usize = 12;
+
+/// Points between two polls of a scanning query.
+const SCAN_BLOCK: usize = 1024;
+
 use crate::chunked::Chunked;
 
 /// Which points a query may return: all, or those whose birth stamp is still current
@@ -191,12 +201,47 @@ impl KdTree {
         if self.is_empty() || found.k == 0 {
             return;
         }
+        if self.dimension >= SCAN_DIMENSION {
+            self.scan_nearest(query, found, alive, poll);
+            return;
+        }
         let mut offsets = std::mem::take(&mut found.offsets);
         let bound = self.box_distance(query, &mut offsets);
         if bound <= found.worst() {
             self.search_nearest(0, query, bound, &mut offsets, found, (alive, poll));
         }
         found.offsets = offsets;
+    }
+
+    /// [`nearest_into`](Self::nearest_into) by one pass over the points in storage order,
+    /// polling every [`SCAN_BLOCK`] points: the same result (the `k` nearest live points, ties
+    /// by id), without the descent.
+    fn scan_nearest(
+        &self,
+        query: &[f64],
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+        poll: &mut Poll<'_>,
+    ) {
+        let n = self.dimension;
+        let mut worst = found.worst();
+        for start in (0..self.ids.len()).step_by(SCAN_BLOCK) {
+            let end = (start + SCAN_BLOCK).min(self.ids.len());
+            if poll.tick((end - start) as u32) {
+                return;
+            }
+            let rows = self.coordinates[start * n..end * n].chunks_exact(n);
+            for ((point, &id), &birth) in rows
+                .zip(&self.ids[start..end])
+                .zip(&self.births[start..end])
+            {
+                let d = squared_distance(query, point);
+                if d <= worst && alive.contains(id, birth) {
+                    found.offer(d, id);
+                    worst = found.worst();
+                }
+            }
+        }
     }
 
     /// The `k` points nearest to `query` (Euclidean), written to `found` nearest first.
@@ -421,7 +466,8 @@ mod tests {
     #[test]
     fn nearest_matches_brute_force_in_2_to_32_dimensions() {
         let mut found = Neighbours::new();
-        for n in [2, 3, 4, 8, 16, 32] {
+        // Below SCAN_DIMENSION the tree is descended, from it on scanned.
+        for n in [2, 3, 4, 8, 11, SCAN_DIMENSION, 16, 32] {
             let points = random_points(n, 700, n as u64);
             let tree = KdTree::build(
                 n,
@@ -468,19 +514,21 @@ mod tests {
 
     #[test]
     fn duplicate_points_and_ties_break_by_id() {
-        let points = [[0.5, 0.5]; 40];
-        let tree = KdTree::build(
-            2,
-            points
-                .iter()
-                .enumerate()
-                .rev()
-                .map(|(i, p)| (i as u32, &p[..])),
-        );
         let mut found = Neighbours::new();
-        tree.nearest(&[0.0, 0.0], 3, &mut found);
-        let ids: Vec<u32> = found.iter().map(|&(_, id)| id).collect();
-        assert_eq!(ids, [0, 1, 2]);
+        for n in [2, SCAN_DIMENSION + 4] {
+            let points = vec![vec![0.5; n]; 40];
+            let tree = KdTree::build(
+                n,
+                points
+                    .iter()
+                    .enumerate()
+                    .rev()
+                    .map(|(i, p)| (i as u32, &p[..])),
+            );
+            tree.nearest(&vec![0.0; n], 3, &mut found);
+            let ids: Vec<u32> = found.iter().map(|&(_, id)| id).collect();
+            assert_eq!(ids, [0, 1, 2], "n={n}");
+        }
         let empty = KdTree::build(2, std::iter::empty());
         empty.nearest(&[0.0, 0.0], 3, &mut found);
         assert!(found.is_empty());
