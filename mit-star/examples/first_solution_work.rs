@@ -71,9 +71,10 @@ fn main() {
             // problem,n,planner,seed,exact,callback,t_first_ms,calls_first,t_total_ms,calls_total,cost,setup_ms
             let cost = outcome.cost();
             println!(
-                "{},{dimension},{},{seed},{},1,{:.4},{},{:.4},{},{cost:.6},0",
+                "{},{dimension},{}{},{seed},{},1,{:.4},{},{:.4},{},{cost:.6},0",
                 problem.name(),
                 configuration.label(),
+                if accelerated { "" } else { " one at a time" },
                 u8::from(outcome.is_solved()),
                 seconds * 1e3,
                 c.points_tested,

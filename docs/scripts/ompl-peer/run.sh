@@ -6,7 +6,8 @@
 #   OUT=runs SEEDS=50 ./run.sh            then   python3 summary.py runs
 #
 # Environment (defaults reproduce issue 9's table): PROBLEMS (family:dim[:layout] ...),
-# OMPL_PLANNERS, OUR_PLANNERS, SEEDS, BUDGET, OUT, ROOT (the mit-star checkout, built with
+# OMPL_PLANNERS, OUR_PLANNERS (a configuration, or `NAME:one-at-a-time` for checks one state at
+# a time as OMPL makes them), SEEDS, BUDGET, OUT, ROOT (the mit-star checkout, built with
 # `cargo build --release -p mit-star-benches -p mit-star --examples --bin mit-star`).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -35,10 +36,12 @@ for spec in $PROBLEMS; do
     done
   done
   for planner in $OUR_PLANNERS; do
-    # first_solution_work takes `random-rectangles:K` for a layout and stops at 3 s.
+    # first_solution_work takes `random-rectangles:K` for a layout and stops at 3 s;
+    # `mit-star:one-at-a-time` turns the batched checks and the broad phase off.
     name=$family
     [ "$layout" != 0 ] && name="$family:$layout"
-    "$WORK" "$name" "$dim" "$planner" "$SEEDS" --csv >> "$OUT/ours.csv"
+    IFS=: read -r configuration mode <<< "$planner"
+    "$WORK" "$name" "$dim" "$configuration" "$SEEDS" $mode --csv >> "$OUT/ours.csv"
   done
   echo "$spec done" >&2
 done
