@@ -223,23 +223,32 @@ impl KdTree {
         alive: Alive<'_>,
         poll: &mut Poll<'_>,
     ) {
-        let n = self.dimension;
-        let mut worst = found.worst();
         for start in (0..self.ids.len()).step_by(SCAN_BLOCK) {
             let end = (start + SCAN_BLOCK).min(self.ids.len());
             if poll.tick((end - start) as u32) {
                 return;
             }
-            let rows = self.coordinates[start * n..end * n].chunks_exact(n);
-            for ((point, &id), &birth) in rows
-                .zip(&self.ids[start..end])
-                .zip(&self.births[start..end])
-            {
-                let d = squared_distance(query, point);
-                if d <= worst && alive.contains(id, birth) {
-                    found.offer(d, id);
-                    worst = found.worst();
-                }
+            self.offer_points(start..end, query, found, alive);
+        }
+    }
+
+    /// Offers the live points at storage positions `range` to a k-nearest query.
+    #[inline]
+    fn offer_points(
+        &self,
+        range: std::ops::Range<usize>,
+        query: &[f64],
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+    ) {
+        let n = self.dimension;
+        let mut worst = found.worst();
+        let rows = self.coordinates[range.start * n..range.end * n].chunks_exact(n);
+        for ((point, &id), &birth) in rows.zip(&self.ids[range.clone()]).zip(&self.births[range]) {
+            let d = squared_distance(query, point);
+            if d <= worst && alive.contains(id, birth) {
+                found.offer(d, id);
+                worst = found.worst();
             }
         }
     }
@@ -269,20 +278,7 @@ impl KdTree {
             if poll.tick(node.end - node.start) {
                 return;
             }
-            let n = self.dimension;
-            let mut worst = found.worst();
-            let (start, end) = (node.start as usize, node.end as usize);
-            for ((point, &id), &birth) in self.coordinates[start * n..end * n]
-                .chunks_exact(n)
-                .zip(&self.ids[start..end])
-                .zip(&self.births[start..end])
-            {
-                let d = squared_distance(query, point);
-                if d <= worst && alive.contains(id, birth) {
-                    found.offer(d, id);
-                    worst = found.worst();
-                }
-            }
+            self.offer_points(node.start as usize..node.end as usize, query, found, alive);
             return;
         }
         let dim = node.dim as usize;

@@ -193,8 +193,21 @@ Setup makeSetup(const World &w) {
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
 
-// The paper's settings where a planner has them: 100 samples per batch, rewire/radius factor
-// 1.001, k-nearest; RRT-Connect with range 0.5 (mit-star's default for box worlds).
+// The paper's range for the RRT family (mit-star's `default_range`): 0.3, 0.5, 1.25 and 3.0
+// in R^2, R^4, R^8 and R^16, else a fifth of the maximum extent.
+double paperRange(const ob::SpaceInformationPtr &si) {
+    switch (si->getStateDimension()) {
+        case 2: return 0.3;
+        case 4: return 0.5;
+        case 8: return 1.25;
+        case 16: return 3.0;
+        default: return 0.2 * si->getMaximumExtent();
+    }
+}
+
+// mit-star's defaults where a planner has them: 100 samples per batch, rewire/radius factor
+// 1.001 and k-nearest for the informed trees; the paper's range for RRT-Connect and Informed
+// RRT*, which also gets rewire factor 1.2, k-nearest and 5 % goal bias.
 ob::PlannerPtr makePlanner(const std::string &name, const ob::SpaceInformationPtr &si) {
 #ifdef PEER_HAS_EIT
     if (name == "EITstar") {
@@ -220,10 +233,17 @@ ob::PlannerPtr makePlanner(const std::string &name, const ob::SpaceInformationPt
         p->setStopOnSolnImprovement(true);
         return p;
     }
-    if (name == "InformedRRTstar") return std::make_shared<og::InformedRRTstar>(si);
+    if (name == "InformedRRTstar") {
+        auto p = std::make_shared<og::InformedRRTstar>(si);
+        p->setRange(paperRange(si));
+        p->setRewireFactor(1.2);
+        p->setKNearest(true);
+        p->setGoalBias(0.05);
+        return p;
+    }
     if (name == "RRTConnect") {
         auto p = std::make_shared<og::RRTConnect>(si);
-        p->setRange(0.5);
+        p->setRange(paperRange(si));
         return p;
     }
     fail("unknown planner " + name);

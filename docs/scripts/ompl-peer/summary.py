@@ -1,6 +1,7 @@
 """Medians of the peer runs (docs/scripts/ompl-peer/run.sh): per problem and planner, success,
-median time to the first solution, median validity calls (OMPL) or grid points (ours) to it, and
-each of our planners' speed-up over every OMPL planner (OMPL's median / ours).
+median time to the first solution, and median validity calls (OMPL) or grid points decided
+(ours) up to it; for each of our planners, OMPL's median for the same planner (EIT* for MIT*
+and its ablations) over ours.
 
     python3 summary.py OUT
 """
@@ -15,29 +16,41 @@ for side in ["ompl", "ours"]:
         r["side"] = side
         rows.append(r)
 
-problems = list(dict.fromkeys((r["problem"], r["n"]) for r in rows))
-planners = {s: list(dict.fromkeys(r["planner"] for r in rows if r["side"] == s)) for s in ["ompl", "ours"]}
+# OMPL's class for each of our labels (a label may carry " one at a time").
+COUNTERPART = {"EIT*": "EITstar", "AIT*": "AITstar", "BIT*": "BITstar",
+               "RRT-Connect": "RRTConnect", "Informed RRT*": "InformedRRTstar"}
+
+
+def counterpart(label):
+    base = label.replace(" one at a time", "")
+    return COUNTERPART.get(base, "EITstar" if base.startswith("MIT*") else None)
 
 
 def stats(problem, n, side, planner):
     r = [x for x in rows if (x["problem"], x["n"], x["side"], x["planner"]) == (problem, n, side, planner)]
     ok = [x for x in r if x["exact"] == "1"]
-    if not ok:
-        return len(r), 0, float("nan"), float("nan")
-    return len(r), len(ok), st.median(float(x["t_first_ms"]) for x in ok), st.median(int(x["calls_first"]) for x in ok)
+    t = st.median(float(x["t_first_ms"]) for x in ok) if ok else float("inf")
+    calls = st.median(int(x["calls_first"]) for x in ok) if ok else float("nan")
+    return len(r), len(ok), t, calls
 
 
-head = ["problem", "planner", "solved", "median t_first (ms)", "median checks to it"]
-ratios = [f"{o} ÷ {p}" for p in planners["ours"] for o in planners["ompl"]]
-print("| " + " | ".join(head + ratios) + " |")
-print("|" + "---|" * (len(head) + len(ratios)))
+problems = list(dict.fromkeys((r["problem"], r["n"]) for r in rows))
+print("| problem | planner | solved | median t_first (ms) | median checks to it | OMPL ÷ ours |")
+print("|---|---|---|---|---|---|")
 for problem, n in problems:
-    median = {}
+    medians = {}
     for side in ["ompl", "ours"]:
-        for p in planners[side]:
+        for p in dict.fromkeys(r["planner"] for r in rows if r["side"] == side):
             runs, solved, t, calls = stats(problem, n, side, p)
-            median[p] = t
-            label = f"OMPL {p}" if side == "ompl" else p
-            print(f"| {problem} R^{n} | {label} | {solved}/{runs} | {t:.3f} | {calls:,.0f} |" + " |" * len(ratios))
-    cells = [f"{median[o] / median[p]:.1f}×" for p in planners["ours"] for o in planners["ompl"]]
-    print(f"| {problem} R^{n} | speed-up | | | | " + " | ".join(cells) + " |")
+            if runs == 0:
+                continue
+            ratio = ""
+            if side == "ompl":
+                medians[p] = t
+                label = f"OMPL {p}"
+            else:
+                label = p
+                other = medians.get(counterpart(p))
+                if other is not None:
+                    ratio = f"{other / t:.2f}×" if t != float("inf") else "—"
+            print(f"| {problem} R^{n} | {label} | {solved}/{runs} | {t:.3f} | {calls:,.0f} | {ratio} |")
