@@ -6,7 +6,8 @@
 //! cargo run --release -p mit-star --example anytime_rate -- dividing-walls 8 mit-star 200000 5
 //! ```
 //!
-//! Arguments: problem family, dimension, configuration, iterations per run, number of seeds
+//! Arguments: problem family (a seeded family's layout after a colon, `random-rectangles:2`),
+//! dimension, configuration, iterations per run, number of seeds
 //! (1..=N), and optionally the number of rounds (default 3; each round runs every seed once,
 //! and each seed keeps its fastest round, which filters out a shared machine's hiccups). Prints
 //! per seed the batches, the reverse and forward iterations, the final cost and the best time;
@@ -14,30 +15,20 @@
 
 use std::time::Instant;
 
-use mit_star::{Configuration, IterationLimit, Parameters, build_planner};
+use mit_star::{IterationLimit, Parameters, build_planner};
+
+#[path = "support/arguments.rs"]
+mod arguments;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let family = args.first().map_or("dividing-walls", String::as_str);
     let dimension: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(8);
-    let configuration: Configuration = match args.get(2).map_or("mit-star", String::as_str).parse()
-    {
-        Ok(c) => c,
-        Err(e) => {
-            eprintln!("{e}");
-            std::process::exit(2);
-        }
-    };
+    let configuration = arguments::configuration(args.get(2).map_or("mit-star", String::as_str));
     let iterations: u64 = args.get(3).and_then(|a| a.parse().ok()).unwrap_or(200_000);
     let seeds: u64 = args.get(4).and_then(|a| a.parse().ok()).unwrap_or(5);
     let rounds: usize = args.get(5).and_then(|a| a.parse().ok()).unwrap_or(3);
-    let problem = match problems::builtin(family, dimension, 0) {
-        Ok(p) => p,
-        Err(e) => {
-            eprintln!("{family} in {dimension} dimensions: {e}");
-            std::process::exit(2);
-        }
-    };
+    let problem = arguments::problem(family, dimension);
     let mut best = vec![f64::INFINITY; seeds as usize];
     let mut work = vec![(0u64, 0u64, 0u64, 0u64, f64::NAN); seeds as usize];
     for _ in 0..rounds {

@@ -16,9 +16,10 @@
 
 use std::time::Instant;
 
-use mit_star::{
-    Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
-};
+use mit_star::{FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner};
+
+#[path = "support/arguments.rs"]
+mod arguments;
 
 fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
@@ -31,27 +32,10 @@ fn main() {
     args.retain(|a| a != "--csv");
     let family = args.first().map_or("goal-enclosure", String::as_str);
     let dimension: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(4);
-    let configuration: Configuration = match args.get(2).map_or("bit-star", String::as_str).parse()
-    {
-        Ok(c) => c,
-        Err(e) => {
-            eprintln!("{e}");
-            std::process::exit(2);
-        }
-    };
+    let configuration = arguments::configuration(args.get(2).map_or("bit-star", String::as_str));
     let seeds: u64 = args.get(3).and_then(|a| a.parse().ok()).unwrap_or(30);
     let accelerated = args.get(4).is_none_or(|a| a != "one-at-a-time");
-    let (family, layout) = match family.split_once(':') {
-        Some((f, l)) => (f, l.parse().unwrap_or(1)),
-        None => (family, 1),
-    };
-    let problem = match problems::builtin(family, dimension, layout) {
-        Ok(p) => p,
-        Err(e) => {
-            eprintln!("{family} in {dimension} dimensions: {e}");
-            std::process::exit(2);
-        }
-    };
+    let problem = arguments::problem(family, dimension);
     let (mut points, mut times, mut per_point) = (Vec::new(), Vec::new(), Vec::new());
     let mut culled = Vec::new();
     for seed in 1..=seeds {

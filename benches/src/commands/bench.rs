@@ -497,32 +497,3 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
     };
     Ok(instances)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn errors_exit_1_unless_interrupted_and_before_invalid_paths() {
-        assert_eq!(
-            CommandOutcome::of_runs(false, 0, 0),
-            CommandOutcome::Success
-        );
-        assert_eq!(
-            CommandOutcome::of_runs(false, 0, 2),
-            CommandOutcome::InvalidPaths
-        );
-        assert_eq!(
-            CommandOutcome::of_runs(false, 1, 2),
-            CommandOutcome::RunErrors
-        );
-        assert_eq!(
-            CommandOutcome::of_runs(true, 1, 2),
-            CommandOutcome::Interrupted
-        );
-        assert_eq!(
-            CommandOutcome::RunErrors.exit_code(),
-            std::process::ExitCode::from(1)
-        );
-    }
-}

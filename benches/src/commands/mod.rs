@@ -125,3 +125,25 @@ impl Cli {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_exit_1_unless_interrupted_and_before_invalid_paths() {
+        // (interrupted, runs in error, invalid paths) → outcome.
+        for (interrupted, errors, invalid, outcome) in [
+            (false, 0, 0, CommandOutcome::Success),
+            (false, 0, 2, CommandOutcome::InvalidPaths),
+            (false, 1, 2, CommandOutcome::RunErrors),
+            (true, 1, 2, CommandOutcome::Interrupted),
+        ] {
+            assert_eq!(
+                CommandOutcome::of_runs(interrupted, errors, invalid),
+                outcome
+            );
+        }
+        assert_eq!(CommandOutcome::RunErrors.exit_code(), ExitCode::from(1));
+    }
+}
