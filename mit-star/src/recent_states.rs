@@ -7,8 +7,8 @@
 /// Every reverse-search restart brings the neighbour list of each vertex it expands up to date
 /// by measuring its distance to each sample committed since the list was made (at most
 /// `capacity` of them; beyond that a fresh tree query is made instead). That is most of the
-/// planner's own work in the anytime phase: in `R^8` a vertex meets about 250 new samples per
-/// update, and tree pruning cannot cut that down in high dimensions. Read through vertex ids
+/// planner's own work in the anytime phase: a vertex meets the samples of the batches since
+/// its last expansion at each update, and tree pruning cannot cut that down in high dimensions. Read through vertex ids
 /// those states are scattered over the graph's storage; here one coordinate of every recent
 /// sample is a contiguous column, so the squared distances of a query to all of them are
 /// accumulated column by column in loops the compiler vectorises. The ring is allocated once
