@@ -203,6 +203,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         initial_inflation: Some(1.0),
         inflation_scaling: Some(0.0),
         truncation_scaling: Some(0.0),
+        cascading_rewirings: Some(false),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {

@@ -152,7 +152,7 @@ impl RunRecord {
 }
 
 /// How many integer counters a run records.
-pub(crate) const COUNTERS: usize = 47;
+pub(crate) const COUNTERS: usize = 48;
 
 /// Names of the per-length counters: checks and points of sparse and full checks for each bucket
 /// of [`validity::LENGTH_BUCKET_BOUNDS`], named after [`validity::LENGTH_BUCKET_LABELS`]
@@ -198,6 +198,7 @@ fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
         ("certification failures", c.certification_failures),
         ("nearest neighbour queries", c.neighbour_queries),
         ("reverse search restarts", c.reverse_restarts),
+        ("reverse search repairs", c.reverse_repairs),
         ("reverse search iterations", c.reverse_iterations),
         ("forward search iterations", c.forward_iterations),
         ("pruned vertices", c.pruned),

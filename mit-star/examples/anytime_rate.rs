@@ -11,7 +11,8 @@
 //! (1..=N), and optionally the number of rounds (default 3; each round runs every seed once,
 //! and each seed keeps its fastest round, which filters out a shared machine's hiccups). Prints
 //! per seed the batches, the reverse and forward iterations, the final cost and the best time;
-//! then the totals as iterations and batches per second of the summed best times.
+//! then the totals as iterations and batches per second of the summed best times. Switches
+//! such as `repair_reverse_search=true` anywhere among the arguments set those parameters.
 
 use std::time::Instant;
 
@@ -21,7 +22,9 @@ use mit_star::{IterationLimit, Parameters, build_planner};
 mod arguments;
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mut switches = Parameters::default();
+    arguments::take_switches(&mut args, &mut switches);
     let family = args.first().map_or("dividing-walls", String::as_str);
     let dimension: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(8);
     let configuration = arguments::configuration(args.get(2).map_or("mit-star", String::as_str));
@@ -35,7 +38,7 @@ fn main() {
         for seed in 1..=seeds {
             let parameters = Parameters {
                 seed,
-                ..Parameters::default()
+                ..switches.clone()
             };
             let mut planner =
                 build_planner(configuration, &problem, &parameters).expect("a planner");

@@ -12,7 +12,9 @@
 //! first solution or after 3 s. Prints the first five runs, then the medians over the solved
 //! runs: points tested (and culled), time, and time per point. With `--csv` anywhere among
 //! the arguments it prints one line per run instead, in the columns of the OMPL peer driver
-//! (`docs/scripts/ompl-peer`), so both sides go through one summary.
+//! (`docs/scripts/ompl-peer`), so both sides go through one summary. Switches such as
+//! `repair_reverse_search=true` or `cascading_rewirings=true` anywhere among the arguments
+//! set those parameters.
 
 use std::time::Instant;
 
@@ -30,6 +32,8 @@ fn main() {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
     let csv = args.iter().any(|a| a == "--csv");
     args.retain(|a| a != "--csv");
+    let mut switches = Parameters::default();
+    arguments::take_switches(&mut args, &mut switches);
     let family = args.first().map_or("goal-enclosure", String::as_str);
     let dimension: usize = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(4);
     let configuration = arguments::configuration(args.get(2).map_or("bit-star", String::as_str));
@@ -41,8 +45,8 @@ fn main() {
     for seed in 1..=seeds {
         let parameters = Parameters {
             seed,
-            accelerated_checks: accelerated,
-            ..Parameters::default()
+            accelerated_checks: accelerated && switches.accelerated_checks,
+            ..switches.clone()
         };
         let mut planner = build_planner(configuration, &problem, &parameters).expect("a planner");
         let started = Instant::now();

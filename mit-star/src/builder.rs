@@ -166,6 +166,13 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
+    /// Whether an invalid edge of the reverse tree is repaired in place (LPA*-style, OMPL's AIT*
+    /// default) or restarts the reverse search (default; [`Parameters::repair_reverse_search`]).
+    pub fn repair_reverse_search(mut self, repair: bool) -> Self {
+        self.parameters.repair_reverse_search = repair;
+        self
+    }
+
     /// The adaptive sampler's `δ` as a fraction of the maximum extent (default 0.1).
     pub fn gaussian_std_fraction(mut self, fraction: f64) -> Self {
         self.parameters.gaussian_std_fraction = fraction;
@@ -216,6 +223,14 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self.parameters.initial_inflation = Some(initial);
         self.parameters.inflation_scaling = Some(scaling);
         self.parameters.truncation_scaling = Some(truncation_scaling);
+        self
+    }
+
+    /// Whether a BIT*-family forward expansion queues rewirings (edges to vertices already in
+    /// the tree) every time (ABIT*'s default), or only on a vertex's first such expansion
+    /// (BIT*'s; [`Parameters::cascading_rewirings`]).
+    pub fn cascading_rewirings(mut self, cascading: bool) -> Self {
+        self.parameters.cascading_rewirings = Some(cascading);
         self
     }
 

@@ -35,6 +35,9 @@ pub struct Counters {
     pub neighbour_queries: u64,
     /// Restarts of the reverse search after an invalid lazy edge.
     pub reverse_restarts: u64,
+    /// In-place repairs of the reverse search after an invalid lazy edge (AIT*), instead of
+    /// restarts.
+    pub reverse_repairs: u64,
     /// Reverse-search iterations.
     pub reverse_iterations: u64,
     /// Forward-search iterations.

@@ -123,6 +123,8 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) observer: Option<Box<dyn Observer>>,
     pub(crate) scratch: Vec<u32>,
     pub(crate) extras: Vec<u32>,
+    /// Scratch: the reverse-tree branch a repair invalidates.
+    pub(crate) branch: Vec<u32>,
     pub(crate) batch_ids: Vec<u32>,
     pub(crate) sample: Vec<f64>,
 }
@@ -202,6 +204,7 @@ where
             observer: None,
             scratch: Vec::new(),
             extras: Vec::new(),
+            branch: Vec::new(),
             batch_ids: Vec::new(),
             sample: vec![0.0; n],
         }
@@ -272,7 +275,7 @@ where
     }
 
     /// Builds the initial graph (start and goals) and both searches, once.
-    fn setup(&mut self, stop: &SolveStop<'_>) -> Result<(), PlannerError> {
+    pub(crate) fn setup(&mut self, stop: &SolveStop<'_>) -> Result<(), PlannerError> {
         if self.ready {
             return Ok(());
         }

@@ -242,6 +242,21 @@ impl ForwardQueue {
         }
     }
 
+    /// Marks `target` open again (the inverse of [`close_target`](Self::close_target)): a
+    /// repair of the reverse search made it unexpanded.
+    pub(crate) fn reopen_target(&mut self, target: u32) {
+        let Some(list) = self.incoming.get(target as usize) else {
+            return;
+        };
+        for &slot in list {
+            let s = &mut self.slots[slot as usize];
+            if s.live && !s.open && s.edge.target == target {
+                s.open = true;
+                self.open += 1;
+            }
+        }
+    }
+
     /// Starts recomputing every key and marking every target open (after the reverse search
     /// restarts); [`rekey_all`](Self::rekey_all) does the work. Until it completes, the queue
     /// must not be used otherwise.
@@ -485,6 +500,13 @@ mod tests {
         q.insert_or_update(edge(1, 5), keys(4.0, 4.0, 9), true);
         q.insert_or_update(edge(1, 6), keys(5.0, 5.0, 9), false);
         assert!(q.has_open_targets());
+        q.close_target(5);
+        assert!(!q.has_open_targets());
+        // Reopening counts each live edge into the target once, however often it is called.
+        q.reopen_target(5);
+        q.reopen_target(5);
+        q.close_target(6);
+        assert_eq!(q.open, 2);
         q.close_target(5);
         assert!(!q.has_open_targets());
         q.update_incoming(5, |e| keys(0.5 + f64::from(e.source), 0.5, 1));

@@ -50,7 +50,9 @@ where
     }
 
     /// Queues the forward edges out of `v` (except back to `exclude` and known-invalid ones):
-    /// its cached neighbours plus its tree neighbours.
+    /// its cached neighbours plus its tree neighbours. Without cascading rewirings (BIT*'s
+    /// default, [`Parameters::cascading_rewirings`](crate::Parameters)), edges to other tree
+    /// vertices are queued only by `v`'s first expansion that meets any.
     pub(crate) fn expand_forward(&mut self, v: u32, exclude: u32, stop: &dyn Stop) {
         let Some(len) = self.graph.neighbours(v, &self.space, &self.heuristic, stop) else {
             // The termination condition fired during the neighbour query: the expansion waits
@@ -60,10 +62,20 @@ where
         };
         let tag = self.graph.tag;
         self.graph.vertex_mut(v).forward_expanded = tag;
+        let rewirings = G::REVERSE != ReverseSearch::None
+            || self.parameters.cascading_rewirings.unwrap_or(false)
+            || !self.graph.vertex(v).rewiring_expanded;
+        let mut rewired = false;
         for i in 0..len {
             let n = self.graph.neighbour(v, i);
             if n.id == exclude || self.is_blacklisted(v, n.id) {
                 continue;
+            }
+            if self.is_rewiring(v, n.id) {
+                if !rewirings {
+                    continue;
+                }
+                rewired = true;
             }
             self.queue_forward(ForwardEdge {
                 source: v,
@@ -79,6 +91,12 @@ where
             if w == exclude || self.is_blacklisted(v, w) {
                 continue;
             }
+            if self.is_rewiring(v, w) {
+                if !rewirings {
+                    continue;
+                }
+                rewired = true;
+            }
             let (cost, distance) = self.edge_geometry(v, w, NONE);
             self.queue_forward(ForwardEdge {
                 source: v,
@@ -88,6 +106,16 @@ where
                 distance,
             });
         }
+        if rewired {
+            self.graph.vertex_mut(v).rewiring_expanded = true;
+        }
+    }
+
+    /// `true` if the edge `v → w` would rewire the forward tree: `w` is in it, and not as a
+    /// child of `v`.
+    fn is_rewiring(&self, v: u32, w: u32) -> bool {
+        let x = self.graph.vertex(w);
+        x.g.is_finite() && x.parent != v
     }
 
     /// `true` if the edge `v — w` is known invalid.
@@ -176,14 +204,15 @@ where
         let x = self.graph.vertex(u);
         let y = self.graph.vertex(v);
         if x.reverse_parent(tag) == v {
-            // The lazy path u → v → … → goal: ŝ_adm = g(u) + ĉ(u, v) + ĥ(v).
-            self.repair_lazy_path(g_u, cost, h_v, stop);
+            // The lazy path u → v → … → goal: ŝ_adm = g(u) + ĉ(u, v) + ĥ(v); the reverse
+            // branch from u down is wrong.
+            self.repair_lazy_path((g_u, cost, h_v), u, stop);
         } else if y.reverse_parent(tag) == u {
             // The edge hangs below u in the reverse tree, so u's own lazy path does not use
             // it: ŝ_adm = g(u) + ĥ(u) (the authors' form), not g(u) + ĉ + ĥ(v) = g(u) + 2ĉ +
-            // ĥ(u).
+            // ĥ(u); the reverse branch from v down is wrong.
             let h_u = x.h(tag);
-            self.repair_lazy_path(g_u, 0.0, h_u, stop);
+            self.repair_lazy_path((g_u, 0.0, h_u), v, stop);
         }
     }
 
@@ -301,14 +330,14 @@ where
         }
     }
 
-    /// The lazy path had an invalid edge `x_s → x_t` (spec §3.3): tell the sampler (MIT*'s
-    /// estimated informed set) while no solution exists, refine the sparse checks, restart the
-    /// reverse search and re-key the forward queue.
+    /// The lazy path had an invalid edge `x_s → x_t` (spec §3.3), the reverse-tree edge above
+    /// `branch`: tell the sampler (MIT*'s estimated informed set) while no solution exists,
+    /// refine the sparse checks, and restart the reverse search and re-key the forward queue —
+    /// or, where the reverse search is repaired in place (AIT*), search the branch again.
     fn repair_lazy_path(
         &mut self,
-        g_source: f64,
-        edge_estimate: f64,
-        h_target: f64,
+        (g_source, edge_estimate, h_target): (f64, f64, f64),
+        branch: u32,
         stop: &dyn Stop,
     ) {
         if !self.best_cost.is_finite() {
@@ -319,6 +348,11 @@ where
             });
         }
         self.checker.refine();
+        if self.repairs_reverse() {
+            self.counters.reverse_repairs += 1;
+            self.repair_reverse_branch(branch, stop);
+            return;
+        }
         self.counters.reverse_restarts += 1;
         // The restart re-keys the whole forward queue (polled, resumed by the next iteration if
         // interrupted); after the deadline it waits for the next iteration altogether.

@@ -65,8 +65,10 @@ impl Guidance for EffortInformed {
 /// AIT*'s guidance (Strub and Gammell, ICRA 2020 / IJRR 2022): an unchecked lazy reverse search
 /// supplies an adaptive cost-to-go heuristic; the forward search is A* on it throughout. When
 /// the forward search finds an edge of the reverse tree invalid, the reverse search restarts
-/// (OMPL's AIT* with `repair_reverse_search = false`; OMPL's default repairs it in place, which
-/// yields the same heuristic for less work).
+/// from the goals (OMPL's AIT* with `repair_reverse_search = false`). OMPL's default repairs
+/// only the branch below that edge, LPA*-style; here that is the parameter
+/// [`repair_reverse_search`](crate::Parameters), off by default because it led our AIT* to
+/// check more edges (`docs/faithfulness.md` §6).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct CostInformed;
 

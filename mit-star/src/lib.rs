@@ -79,6 +79,7 @@ mod pending_points;
 mod planner;
 mod recent_states;
 mod reverse_queue;
+mod reverse_repair;
 mod reverse_search;
 mod rrt_connect;
 mod rrt_core;

@@ -55,6 +55,12 @@ pub struct Parameters {
     /// rule; `false`: keep exhausting the reverse queue, as upstream EIT* does; `None`: the
     /// planner's [`Guidance`](crate::Guidance) decides — MIT* suspends, EIT* does not).
     pub suspend_reverse_when_forward_empty: Option<bool>,
+    /// When the forward search finds an edge of the reverse tree invalid, repair the reverse
+    /// search in place (`true`: LPA*-style, only the branch below the edge is searched again,
+    /// OMPL's AIT* default) or restart it from the goals (`false`, the default: EIT*'s rule, and
+    /// the faster one for our AIT*, `docs/faithfulness.md` §6). Without a reverse search (BIT*)
+    /// there is nothing to repair. Not in the paper.
+    pub repair_reverse_search: bool,
     /// Standard deviation `δ` of the adaptive sampler, as a fraction of the maximum extent.
     pub gaussian_std_fraction: f64,
     /// Segment points the adaptive sampler tests per repair.
@@ -105,6 +111,12 @@ pub struct Parameters {
     /// `(1 + t/q)·(g + ĉ + ĥ)` of every queued edge reaches the solution cost (`None`: 0 for
     /// BIT*, 5 for ABIT*).
     pub truncation_scaling: Option<f64>,
+    /// BIT*-family rewirings: a forward expansion queues edges to vertices already in the tree
+    /// on every expansion (`true`), or only on a vertex's first expansion that meets any
+    /// (`false`). Edges to new samples and to the vertex's own children are queued either way.
+    /// `None`: as OMPL 2.0 — off for BIT*, on for ABIT* ([`abit_star`](Self::abit_star)). The
+    /// EIT* family (EIT*, MIT*, AIT*) always queues them, as upstream EIT* does.
+    pub cascading_rewirings: Option<bool>,
 }
 
 impl Default for Parameters {
@@ -117,6 +129,7 @@ impl Default for Parameters {
             resolution: 5e-6,
             seed: 0,
             suspend_reverse_when_forward_empty: None,
+            repair_reverse_search: false,
             gaussian_std_fraction: 0.1,
             bridge_checks: 8,
             sparse_initial_steps: 2000.0,
@@ -134,6 +147,7 @@ impl Default for Parameters {
             initial_inflation: None,
             inflation_scaling: None,
             truncation_scaling: None,
+            cascading_rewirings: None,
         }
     }
 }
@@ -174,14 +188,15 @@ impl Parameters {
         Ok(parameters)
     }
 
-    /// These parameters with ABIT*'s inflation and truncation (Strub and Gammell, ICRA 2020, as
-    /// OMPL 2.0 sets them: initial inflation 10⁶, inflation scaling 10, truncation scaling 5)
-    /// wherever they are not set: [`BitStar`](crate::BitStar) with them is ABIT*.
+    /// These parameters with ABIT*'s inflation, truncation and rewirings (Strub and Gammell,
+    /// ICRA 2020, as OMPL 2.0 sets them: initial inflation 10⁶, inflation scaling 10, truncation
+    /// scaling 5, cascading rewirings) wherever they are not set: [`BitStar`](crate::BitStar) with them is ABIT*.
     pub fn abit_star(mut self) -> Self {
         self.initial_inflation.get_or_insert(ABIT_INITIAL_INFLATION);
         self.inflation_scaling.get_or_insert(ABIT_INFLATION_SCALING);
         self.truncation_scaling
             .get_or_insert(ABIT_TRUNCATION_SCALING);
+        self.cascading_rewirings.get_or_insert(true);
         self
     }
 
@@ -303,6 +318,10 @@ impl Parameters {
                     .map_or_else(|| "planner's".to_owned(), |v| v.to_string()),
             ),
             (
+                "repair_reverse_search",
+                self.repair_reverse_search.to_string(),
+            ),
+            (
                 "gaussian_std_fraction",
                 self.gaussian_std_fraction.to_string(),
             ),
@@ -347,6 +366,11 @@ impl Parameters {
             (
                 "truncation_scaling",
                 self.truncation_scaling
+                    .map_or_else(|| "planner's".to_owned(), |v| v.to_string()),
+            ),
+            (
+                "cascading_rewirings",
+                self.cascading_rewirings
                     .map_or_else(|| "planner's".to_owned(), |v| v.to_string()),
             ),
         ]

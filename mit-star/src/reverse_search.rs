@@ -179,7 +179,7 @@ where
 
     /// Queues the reverse edge `(v, w, hint, ĉ, distance)` out of `v` (with `ĥ(v) = h`,
     /// `e(v) = effort`) if it could improve `w` and, once a solution exists, a solution.
-    fn queue_reverse(
+    pub(crate) fn queue_reverse(
         &mut self,
         (v, w, hint, cost, distance): (u32, u32, u32, f64, f64),
         h: f64,
@@ -245,7 +245,7 @@ where
         true
     }
 
-    fn peek_reverse(&mut self) -> Option<ReverseEdge> {
+    pub(crate) fn peek_reverse(&mut self) -> Option<ReverseEdge> {
         let mut reverse = std::mem::take(&mut self.reverse);
         let top = reverse.peek(|e| self.reverse_current(e));
         self.reverse = reverse;
@@ -315,7 +315,6 @@ where
         };
         let target = self.graph.vertex_mut(v);
         target.touch_reverse(tag);
-        target.reverse_parent = u;
         target.h = h_u + cost;
         target.h_estimate = target.h_estimate.min(h_est_u + cost);
         let through = if effort_u == NO_EFFORT {
@@ -324,6 +323,7 @@ where
             effort_u.saturating_add(remaining)
         };
         target.effort = target.effort.min(through);
+        self.link_reverse(v, u);
         let (graph, rule) = (&self.graph, self.key_rule());
         self.forward
             .update_incoming(v, |e| forward_keys(graph, rule, e));

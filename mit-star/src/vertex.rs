@@ -68,6 +68,9 @@ pub(crate) struct Vertex {
     pub(crate) prev_sibling: u32,
     /// Batch tag of the vertex's last forward expansion.
     pub(crate) forward_expanded: u32,
+    /// A forward expansion of the vertex has queued rewirings (edges to other tree vertices);
+    /// without cascading rewirings (BIT*) no later expansion does.
+    pub(crate) rewiring_expanded: bool,
 
     /// Reverse search: tag of validity, `ĥ`, `h̃`, `e`, reverse parent, closed tag, expansion
     /// version (stamps reverse-queue entries; older entries are stale).
@@ -78,6 +81,11 @@ pub(crate) struct Vertex {
     pub(crate) reverse_parent: u32,
     pub(crate) closed_tag: u32,
     pub(crate) reverse_version: u32,
+    /// Reverse tree: intrusive child list (first child; previous and next sibling under the
+    /// same reverse parent), so a repair finds a branch in the branch's size.
+    pub(crate) reverse_first_child: u32,
+    pub(crate) reverse_next_sibling: u32,
+    pub(crate) reverse_prev_sibling: u32,
 }
 
 impl Vertex {
@@ -107,6 +115,7 @@ impl Vertex {
             next_sibling: NONE,
             prev_sibling: NONE,
             forward_expanded: 0,
+            rewiring_expanded: false,
             reverse_tag: 0,
             h: f64::INFINITY,
             h_estimate: f64::INFINITY,
@@ -114,6 +123,9 @@ impl Vertex {
             reverse_parent: NONE,
             closed_tag: 0,
             reverse_version: 0,
+            reverse_first_child: NONE,
+            reverse_next_sibling: NONE,
+            reverse_prev_sibling: NONE,
         }
     }
 
@@ -169,7 +181,8 @@ impl Vertex {
         self.closed_tag == tag
     }
 
-    /// Makes the reverse data current for search `tag`, reset to "not reached".
+    /// Makes the reverse data current for search `tag`, reset to "not reached" (child list
+    /// included).
     #[inline]
     pub(crate) fn touch_reverse(&mut self, tag: u32) {
         if self.reverse_tag != tag {
@@ -178,6 +191,9 @@ impl Vertex {
             self.h_estimate = f64::INFINITY;
             self.effort = NO_EFFORT;
             self.reverse_parent = NONE;
+            self.reverse_first_child = NONE;
+            self.reverse_next_sibling = NONE;
+            self.reverse_prev_sibling = NONE;
         }
     }
 
