@@ -13,7 +13,7 @@ use validity::{Counted, EdgeChecker, StateValidity};
 use crate::eit::Eit;
 use crate::guidance::{Guidance, ReverseSearch};
 use crate::reverse_search::forward_keys;
-use crate::vertex::{NO_EFFORT, NONE};
+use crate::vertex::NONE;
 
 /// Branch vertices invalidated or re-seeded between two polls of the termination condition.
 const REPAIR_POLL: usize = 32;
@@ -124,13 +124,7 @@ where
             }
             let was_closed = {
                 let v = self.graph.vertex_mut(x);
-                v.h = f64::INFINITY;
-                v.h_estimate = f64::INFINITY;
-                v.effort = NO_EFFORT;
-                v.reverse_parent = NONE;
-                v.reverse_first_child = NONE;
-                v.reverse_next_sibling = NONE;
-                v.reverse_prev_sibling = NONE;
+                v.forget_reverse();
                 // Its queued reverse edges carried the old ĥ: stale now.
                 v.reverse_version = v.reverse_version.wrapping_add(1);
                 let was_closed = v.closed_tag == tag;

@@ -187,14 +187,21 @@ impl Vertex {
     pub(crate) fn touch_reverse(&mut self, tag: u32) {
         if self.reverse_tag != tag {
             self.reverse_tag = tag;
-            self.h = f64::INFINITY;
-            self.h_estimate = f64::INFINITY;
-            self.effort = NO_EFFORT;
-            self.reverse_parent = NONE;
-            self.reverse_first_child = NONE;
-            self.reverse_next_sibling = NONE;
-            self.reverse_prev_sibling = NONE;
+            self.forget_reverse();
         }
+    }
+
+    /// Resets the reverse data to "not reached" (`ĥ`, `h̃`, `e`, reverse parent and child
+    /// links), keeping the search tag.
+    #[inline]
+    pub(crate) fn forget_reverse(&mut self) {
+        self.h = f64::INFINITY;
+        self.h_estimate = f64::INFINITY;
+        self.effort = NO_EFFORT;
+        self.reverse_parent = NONE;
+        self.reverse_first_child = NONE;
+        self.reverse_next_sibling = NONE;
+        self.reverse_prev_sibling = NONE;
     }
 
     /// `true` for the start and goal vertices (never pruned).
