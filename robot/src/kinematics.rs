@@ -142,11 +142,17 @@ impl Kinematics {
         let mut local = step.origin;
         if let Some((axis, _, c)) = step.axis {
             let value = q[c] as f32;
-            local = if step.prismatic {
-                local * Affine3A::from_translation((axis * value).into())
+            if step.prismatic {
+                local.translation += local.matrix3 * (axis * value);
+            } else if axis == Vec3A::Z {
+                // origin · Rz(value): only the first two rotation columns turn.
+                let (s, cos) = value.sin_cos();
+                let (x, y) = (local.matrix3.x_axis, local.matrix3.y_axis);
+                local.matrix3.x_axis = x * cos + y * s;
+                local.matrix3.y_axis = y * cos - x * s;
             } else {
-                local * Affine3A::from_axis_angle(axis.into(), value)
-            };
+                local *= Affine3A::from_axis_angle(axis.into(), value);
+            }
         }
         out[link] = if step.parent == usize::MAX {
             local
