@@ -192,3 +192,115 @@ fn rate(r: &KpiRow) -> String {
         100.0 * r.success.upper
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use mit_star::Configuration;
+
+    /// A row of 100 runs: the first `solved` solve, at times `scale · (1 + i/100)` and costs
+    /// `cost + i/1000`; the rest fail (∞).
+    fn row(instance: &str, planner: &str, solved: usize, scale: f64, cost: f64) -> KpiRow {
+        let times: Vec<f64> = (0..100)
+            .map(|i| {
+                if i < solved {
+                    scale * (1.0 + i as f64 / 100.0)
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .collect();
+        let costs: Vec<f64> = (0..100)
+            .map(|i| {
+                if i < solved {
+                    cost + i as f64 / 1000.0
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .collect();
+        let median = |v: &[f64]| MedianEstimate::of(v, 0.99).unwrap();
+        KpiRow {
+            instance: instance.to_owned(),
+            planner: planner.to_owned(),
+            configuration: Configuration::MitStar,
+            runs: 100,
+            successes: solved,
+            invalid: 0,
+            initial_time: median(&times),
+            initial_time_p95: times[94],
+            initial_cost: median(&costs),
+            final_cost: median(&costs),
+            success: ClopperPearson::new(solved, 100, 0.99),
+        }
+    }
+
+    fn table(rows: Vec<KpiRow>) -> KpiTable {
+        KpiTable {
+            confidence: 0.99,
+            planners: Vec::new(),
+            instances: Vec::new(),
+            rows,
+            families: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn real_changes_are_called_and_noise_is_not() {
+        let a = table(vec![
+            row("dividing-walls R^4", "MIT*", 100, 0.010, 2.0),
+            row("dividing-walls R^4", "EIT*", 100, 0.010, 2.0),
+            row("goal-enclosure R^8", "MIT*", 60, 0.100, 3.0),
+            row("flanking-gap R^2", "MIT*", 100, 0.010, 1.0),
+        ]);
+        let b = table(vec![
+            // Twice as fast, a slightly higher final cost within the interval.
+            row("dividing-walls R^4", "MIT*", 100, 0.005, 2.001),
+            // The same.
+            row("dividing-walls R^4", "EIT*", 100, 0.010, 2.0),
+            // Solves far more often, and sooner.
+            row("goal-enclosure R^8", "MIT*", 99, 0.050, 2.0),
+            row("random-rectangles R^4", "MIT*", 100, 0.010, 1.0),
+        ]);
+        let comparison = CampaignComparison::new(&a, &b);
+        assert_eq!(comparison.rows.len(), 3);
+        let faster = &comparison.rows[0];
+        assert_eq!(faster.t_init_change(), Change::Lower);
+        assert!((faster.t_init_ratio().unwrap() - 0.5).abs() < 1e-9);
+        assert_eq!(faster.success_change(), Change::Unclear);
+        assert_eq!(faster.final_cost_change(), Change::Unclear);
+        let same = &comparison.rows[1];
+        assert_eq!(same.t_init_change(), Change::Unclear);
+        assert_eq!(same.t_init_ratio(), Some(1.0));
+        let better = &comparison.rows[2];
+        assert_eq!(better.success_change(), Change::Higher);
+        assert_eq!(better.t_init_change(), Change::Lower);
+        assert_eq!(better.final_cost_change(), Change::Lower);
+        assert_eq!(
+            comparison.only_a,
+            vec![("flanking-gap R^2".to_owned(), "MIT*".to_owned())]
+        );
+        assert_eq!(
+            comparison.only_b,
+            vec![("random-rectangles R^4".to_owned(), "MIT*".to_owned())]
+        );
+        let text = comparison.markdown();
+        let line = |p: &str| text.lines().find(|l| l.starts_with(p)).unwrap().to_owned();
+        assert!(
+            line("| dividing-walls R^4 | MIT* |").contains("| 0.500 | lower |"),
+            "{text}"
+        );
+        assert!(
+            line("| goal-enclosure R^8 | MIT* |").contains("| higher |"),
+            "{text}"
+        );
+        assert!(
+            text.contains("Only in A: MIT* on flanking-gap R^2."),
+            "{text}"
+        );
+        assert!(
+            text.contains("Only in B: MIT* on random-rectangles R^4."),
+            "{text}"
+        );
+    }
+}
