@@ -1,6 +1,6 @@
 //! [`World`]: axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics).
 
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use spaces::StateSpace;
 
@@ -77,16 +77,16 @@ pub struct Lattice {
 pub struct World {
     pub(crate) lower: Vec<f64>,
     pub(crate) upper: Vec<f64>,
-    obstacles: Vec<AxisBox>,
-    anti_obstacles: Vec<AxisBox>,
+    obstacles: Arc<Vec<AxisBox>>,
+    anti_obstacles: Arc<Vec<AxisBox>>,
     pub(crate) lattices: Vec<Lattice>,
     /// Obstacles as `[lo, hi]` pairs per dimension, box after box.
-    pub(crate) obstacle_rows: Vec<f64>,
+    pub(crate) obstacle_rows: Arc<Vec<f64>>,
     /// Anti-obstacles likewise.
-    pub(crate) anti_rows: Vec<f64>,
+    pub(crate) anti_rows: Arc<Vec<f64>>,
     /// Hierarchies over the rows of large worlds, built on first use after the last change.
-    pub(crate) obstacle_tree: OnceLock<BoxTree>,
-    pub(crate) anti_tree: OnceLock<BoxTree>,
+    pub(crate) obstacle_tree: OnceLock<Arc<BoxTree>>,
+    pub(crate) anti_tree: OnceLock<Arc<BoxTree>>,
 }
 
 /// Worlds are equal when they define the same valid set the same way (the hierarchies are
@@ -108,11 +108,11 @@ impl World {
         Self {
             lower,
             upper,
-            obstacles: Vec::new(),
-            anti_obstacles: Vec::new(),
+            obstacles: Arc::default(),
+            anti_obstacles: Arc::default(),
             lattices: Vec::new(),
-            obstacle_rows: Vec::new(),
-            anti_rows: Vec::new(),
+            obstacle_rows: Arc::default(),
+            anti_rows: Arc::default(),
             obstacle_tree: OnceLock::new(),
             anti_tree: OnceLock::new(),
         }
@@ -195,8 +195,8 @@ impl World {
     pub fn add_obstacle(&mut self, obstacle: AxisBox) -> Result<(), ValidityError> {
         let index = self.obstacles.len();
         self.validate(&obstacle, "obstacle", index)?;
-        push_rows(&mut self.obstacle_rows, &obstacle);
-        self.obstacles.push(obstacle);
+        push_rows(Arc::make_mut(&mut self.obstacle_rows), &obstacle);
+        Arc::make_mut(&mut self.obstacles).push(obstacle);
         self.obstacle_tree = OnceLock::new();
         Ok(())
     }
@@ -208,8 +208,8 @@ impl World {
     pub fn add_anti_obstacle(&mut self, anti: AxisBox) -> Result<(), ValidityError> {
         let index = self.anti_obstacles.len();
         self.validate(&anti, "anti-obstacle", index)?;
-        push_rows(&mut self.anti_rows, &anti);
-        self.anti_obstacles.push(anti);
+        push_rows(Arc::make_mut(&mut self.anti_rows), &anti);
+        Arc::make_mut(&mut self.anti_obstacles).push(anti);
         self.anti_tree = OnceLock::new();
         Ok(())
     }
@@ -281,12 +281,12 @@ impl World {
     /// `true` if `state` lies in a box of `rows`: a scan for small worlds, the hierarchy
     /// (built once, on first use) above [`TREE_THRESHOLD`] boxes.
     #[inline]
-    fn in_boxes(&self, rows: &[f64], tree: &OnceLock<BoxTree>, state: &[f64]) -> bool {
+    fn in_boxes(&self, rows: &[f64], tree: &OnceLock<Arc<BoxTree>>, state: &[f64]) -> bool {
         let width = 2 * state.len();
         if width == 0 || rows.len() <= TREE_THRESHOLD * width {
             return in_any(rows, state);
         }
-        tree.get_or_init(|| BoxTree::build(rows, state.len()))
+        tree.get_or_init(|| Arc::new(BoxTree::build(rows, state.len())))
             .contains(state)
     }
 
@@ -432,5 +432,42 @@ mod tests {
             err.to_string(),
             "anti-obstacle 0: `widths[1]` is -0.1; widths must not be negative"
         );
+    }
+
+    #[test]
+    fn clones_share_the_boxes_and_the_hierarchy_until_one_changes() {
+        // A planner clones its problem's world; with 10⁵ boxes a deep copy took 13 ms of the
+        // planning budget. Clones share the boxes, their rows and the built hierarchy.
+        let mut world = unit(2);
+        let count = 2 * TREE_THRESHOLD;
+        for i in 0..count {
+            let x = -0.45 + 0.9 * i as f64 / count as f64;
+            world
+                .add_obstacle(AxisBox::new(vec![x, 0.0], vec![0.001, 0.5]))
+                .unwrap();
+        }
+        assert!(
+            !world.is_valid(&[-0.45, 0.0]),
+            "the hierarchy is built here"
+        );
+        let copy = world.clone();
+        assert!(Arc::ptr_eq(&world.obstacles, &copy.obstacles));
+        assert!(Arc::ptr_eq(&world.obstacle_rows, &copy.obstacle_rows));
+        assert!(Arc::ptr_eq(
+            world.obstacle_tree.get().unwrap(),
+            copy.obstacle_tree.get().unwrap()
+        ));
+        // Changing the copy leaves the original as it was.
+        let mut copy = copy;
+        copy.add_obstacle(AxisBox::new(vec![0.0, 0.4], vec![0.9, 0.01]))
+            .unwrap();
+        assert!(copy.obstacle_tree.get().is_none());
+        assert!(!copy.is_valid(&[0.001, 0.4]));
+        assert!(world.is_valid(&[0.001, 0.4]));
+        assert_eq!(
+            (world.obstacles().len(), copy.obstacles().len()),
+            (count, count + 1)
+        );
+        assert_eq!(world.obstacle_rows.len(), 4 * count);
     }
 }

@@ -19,7 +19,7 @@
 
 use wide::f64x4;
 
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use crate::box_tree::BoxTree;
 use crate::world::TREE_THRESHOLD;
@@ -86,14 +86,14 @@ impl World {
     fn keep_meeting(
         &self,
         rows: &[f64],
-        tree: &OnceLock<BoxTree>,
+        tree: &OnceLock<Arc<BoxTree>>,
         reach: &[f64],
         kept: &mut Vec<f64>,
     ) -> bool {
         let width = reach.len();
         if rows.len() > TREE_THRESHOLD * width {
             return tree
-                .get_or_init(|| BoxTree::build(rows, width / 2))
+                .get_or_init(|| Arc::new(BoxTree::build(rows, width / 2)))
                 .collect_meeting(reach, kept, MOST_KEPT);
         }
         for row in rows.chunks_exact(width) {
