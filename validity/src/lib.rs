@@ -49,6 +49,7 @@
 #![forbid(unsafe_code)]
 
 mod bisection_order;
+mod box_set;
 mod box_tree;
 mod crossing;
 mod dense_checker;

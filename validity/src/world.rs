@@ -1,10 +1,8 @@
 //! [`World`]: axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics).
 
-use std::sync::{Arc, OnceLock};
-
 use spaces::StateSpace;
 
-use crate::box_tree::BoxTree;
+use crate::box_set::BoxSet;
 use crate::{Preparation, Segment, StateValidity, ValidityError};
 
 /// Above this many boxes a world checks states through a bounding-volume hierarchy; at or
@@ -77,16 +75,9 @@ pub struct Lattice {
 pub struct World {
     pub(crate) lower: Vec<f64>,
     pub(crate) upper: Vec<f64>,
-    obstacles: Arc<Vec<AxisBox>>,
-    anti_obstacles: Arc<Vec<AxisBox>>,
+    pub(crate) obstacles: BoxSet,
+    pub(crate) anti_obstacles: BoxSet,
     pub(crate) lattices: Vec<Lattice>,
-    /// Obstacles as `[lo, hi]` pairs per dimension, box after box.
-    pub(crate) obstacle_rows: Arc<Vec<f64>>,
-    /// Anti-obstacles likewise.
-    pub(crate) anti_rows: Arc<Vec<f64>>,
-    /// Hierarchies over the rows of large worlds, built on first use after the last change.
-    pub(crate) obstacle_tree: OnceLock<Arc<BoxTree>>,
-    pub(crate) anti_tree: OnceLock<Arc<BoxTree>>,
 }
 
 /// Worlds are equal when they define the same valid set the same way (the hierarchies are
@@ -108,13 +99,9 @@ impl World {
         Self {
             lower,
             upper,
-            obstacles: Arc::default(),
-            anti_obstacles: Arc::default(),
+            obstacles: BoxSet::default(),
+            anti_obstacles: BoxSet::default(),
             lattices: Vec::new(),
-            obstacle_rows: Arc::default(),
-            anti_rows: Arc::default(),
-            obstacle_tree: OnceLock::new(),
-            anti_tree: OnceLock::new(),
         }
     }
 
@@ -140,12 +127,12 @@ impl World {
 
     /// The obstacles, in insertion order.
     pub fn obstacles(&self) -> &[AxisBox] {
-        &self.obstacles
+        self.obstacles.boxes()
     }
 
     /// The anti-obstacles, in insertion order.
     pub fn anti_obstacles(&self) -> &[AxisBox] {
-        &self.anti_obstacles
+        self.anti_obstacles.boxes()
     }
 
     /// The lattices of cubes.
@@ -193,11 +180,9 @@ impl World {
     /// # Errors
     /// See [`with_obstacle`](Self::with_obstacle).
     pub fn add_obstacle(&mut self, obstacle: AxisBox) -> Result<(), ValidityError> {
-        let index = self.obstacles.len();
+        let index = self.obstacles().len();
         self.validate(&obstacle, "obstacle", index)?;
-        push_rows(Arc::make_mut(&mut self.obstacle_rows), &obstacle);
-        Arc::make_mut(&mut self.obstacles).push(obstacle);
-        self.obstacle_tree = OnceLock::new();
+        self.obstacles.push(obstacle);
         Ok(())
     }
 
@@ -206,11 +191,9 @@ impl World {
     /// # Errors
     /// See [`with_obstacle`](Self::with_obstacle).
     pub fn add_anti_obstacle(&mut self, anti: AxisBox) -> Result<(), ValidityError> {
-        let index = self.anti_obstacles.len();
+        let index = self.anti_obstacles().len();
         self.validate(&anti, "anti-obstacle", index)?;
-        push_rows(Arc::make_mut(&mut self.anti_rows), &anti);
-        Arc::make_mut(&mut self.anti_obstacles).push(anti);
-        self.anti_tree = OnceLock::new();
+        self.anti_obstacles.push(anti);
         Ok(())
     }
 
@@ -269,7 +252,7 @@ impl World {
     /// `true` if the state is inside some obstacle (ignoring anti-obstacles and bounds).
     #[inline]
     pub fn in_obstacle(&self, state: &[f64]) -> bool {
-        self.in_boxes(&self.obstacle_rows, &self.obstacle_tree, state)
+        in_boxes(&self.obstacles, state)
             || self
                 .lattices
                 .iter()
@@ -278,22 +261,10 @@ impl World {
 }
 
 impl World {
-    /// `true` if `state` lies in a box of `rows`: a scan for small worlds, the hierarchy
-    /// (built once, on first use) above [`TREE_THRESHOLD`] boxes.
-    #[inline]
-    fn in_boxes(&self, rows: &[f64], tree: &OnceLock<Arc<BoxTree>>, state: &[f64]) -> bool {
-        let width = 2 * state.len();
-        if width == 0 || rows.len() <= TREE_THRESHOLD * width {
-            return in_any(rows, state);
-        }
-        tree.get_or_init(|| Arc::new(BoxTree::build(rows, state.len())))
-            .contains(state)
-    }
-
     /// The smallest full side of any obstacle or lattice cube (`None` without obstacles).
     pub fn thinnest_obstacle(&self) -> Option<f64> {
         let cubes = self.lattices.iter().filter(|l| l.count > 0).map(|l| l.side);
-        self.obstacles
+        self.obstacles()
             .iter()
             .flat_map(|b| b.widths.iter().copied())
             .chain(cubes)
@@ -302,19 +273,20 @@ impl World {
 
     /// The smallest full side of any anti-obstacle (`None` without anti-obstacles).
     pub fn thinnest_anti_obstacle(&self) -> Option<f64> {
-        self.anti_obstacles
+        self.anti_obstacles()
             .iter()
             .flat_map(|b| b.widths.iter().copied())
             .reduce(f64::min)
     }
 }
 
-/// Appends a box as `[lo, hi]` pairs, widened by PDT's epsilon.
-fn push_rows(rows: &mut Vec<f64>, b: &AxisBox) {
-    for (&c, &w) in b.center.iter().zip(&b.widths) {
-        let half = 0.5 * w + f64::EPSILON;
-        rows.push(c - half);
-        rows.push(c + half);
+/// `true` if `state` lies in a box of `set`: the hierarchy above [`TREE_THRESHOLD`] boxes, a
+/// scan of the rows below.
+#[inline]
+fn in_boxes(set: &BoxSet, state: &[f64]) -> bool {
+    match set.hierarchy(state.len()) {
+        Some(tree) => tree.contains(state),
+        None => in_any(set.rows(), state),
     }
 }
 
@@ -336,8 +308,7 @@ impl StateValidity for World {
     #[inline]
     fn is_valid(&self, state: &[f64]) -> bool {
         // Most states are in no obstacle: test obstacles first, anti-obstacles only on a hit.
-        self.in_bounds(state)
-            && (!self.in_obstacle(state) || self.in_boxes(&self.anti_rows, &self.anti_tree, state))
+        self.in_bounds(state) && (!self.in_obstacle(state) || in_boxes(&self.anti_obstacles, state))
     }
 
     /// Keeps the boxes whose bounds meet the segment's reach and the bounds it may leave
@@ -432,42 +403,5 @@ mod tests {
             err.to_string(),
             "anti-obstacle 0: `widths[1]` is -0.1; widths must not be negative"
         );
-    }
-
-    #[test]
-    fn clones_share_the_boxes_and_the_hierarchy_until_one_changes() {
-        // A planner clones its problem's world; with 10⁵ boxes a deep copy took 13 ms of the
-        // planning budget. Clones share the boxes, their rows and the built hierarchy.
-        let mut world = unit(2);
-        let count = 2 * TREE_THRESHOLD;
-        for i in 0..count {
-            let x = -0.45 + 0.9 * i as f64 / count as f64;
-            world
-                .add_obstacle(AxisBox::new(vec![x, 0.0], vec![0.001, 0.5]))
-                .unwrap();
-        }
-        assert!(
-            !world.is_valid(&[-0.45, 0.0]),
-            "the hierarchy is built here"
-        );
-        let copy = world.clone();
-        assert!(Arc::ptr_eq(&world.obstacles, &copy.obstacles));
-        assert!(Arc::ptr_eq(&world.obstacle_rows, &copy.obstacle_rows));
-        assert!(Arc::ptr_eq(
-            world.obstacle_tree.get().unwrap(),
-            copy.obstacle_tree.get().unwrap()
-        ));
-        // Changing the copy leaves the original as it was.
-        let mut copy = copy;
-        copy.add_obstacle(AxisBox::new(vec![0.0, 0.4], vec![0.9, 0.01]))
-            .unwrap();
-        assert!(copy.obstacle_tree.get().is_none());
-        assert!(!copy.is_valid(&[0.001, 0.4]));
-        assert!(world.is_valid(&[0.001, 0.4]));
-        assert_eq!(
-            (world.obstacles().len(), copy.obstacles().len()),
-            (count, count + 1)
-        );
-        assert_eq!(world.obstacle_rows.len(), 4 * count);
     }
 }

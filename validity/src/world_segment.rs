@@ -19,10 +19,7 @@
 
 use wide::f64x4;
 
-use std::sync::{Arc, OnceLock};
-
-use crate::box_tree::BoxTree;
-use crate::world::TREE_THRESHOLD;
+use crate::box_set::BoxSet;
 use crate::{Preparation, Segment, StateValidity, World};
 
 /// Points per SIMD step.
@@ -56,15 +53,15 @@ impl World {
         }
         segment.lattices = self.lattices.iter().any(|l| l.count > 0);
         for anti in [false, true] {
-            let (rows, tree) = if anti {
-                (&self.anti_rows, &self.anti_tree)
+            let set = if anti {
+                &self.anti_obstacles
             } else {
-                (&self.obstacle_rows, &self.obstacle_tree)
+                &self.obstacles
             };
             let Segment {
                 reach, candidates, ..
             } = segment;
-            if !self.keep_meeting(rows, tree, reach, candidates) {
+            if !keep_meeting(set, reach, candidates) {
                 return Preparation::Unprepared;
             }
             segment.cross(anti);
@@ -78,34 +75,6 @@ impl World {
             }
         }
         Preparation::Prepared
-    }
-
-    /// Appends to `kept` the rows of `rows` (`[lo, hi]` per coordinate) that meet `reach`
-    /// (same layout) along every coordinate: a scan for small worlds, the hierarchy above
-    /// [`TREE_THRESHOLD`] boxes. `false` if more than [`MOST_KEPT`] boxes meet it.
-    fn keep_meeting(
-        &self,
-        rows: &[f64],
-        tree: &OnceLock<Arc<BoxTree>>,
-        reach: &[f64],
-        kept: &mut Vec<f64>,
-    ) -> bool {
-        let width = reach.len();
-        if rows.len() > TREE_THRESHOLD * width {
-            return tree
-                .get_or_init(|| Arc::new(BoxTree::build(rows, width / 2)))
-                .collect_meeting(reach, kept, MOST_KEPT);
-        }
-        for row in rows.chunks_exact(width) {
-            let meets = row
-                .chunks_exact(2)
-                .zip(reach.chunks_exact(2))
-                .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0]);
-            if meets {
-                kept.extend_from_slice(row);
-            }
-        }
-        true
     }
 
     /// The first invalid point among the points at `fractions` of a segment this world
@@ -161,4 +130,24 @@ fn in_crossings(crossings: &[[f64; 2]], t: f64x4, lanes: [f64; 2]) -> f64x4 {
         }
     }
     inside_any
+}
+
+/// Appends to `kept` the rows of `set` (`[lo, hi]` per coordinate) that meet `reach` (same
+/// layout) along every coordinate: the hierarchy above [`TREE_THRESHOLD`](crate::TREE_THRESHOLD) boxes, a scan
+/// below. `false` if more than [`MOST_KEPT`] boxes meet it.
+fn keep_meeting(set: &BoxSet, reach: &[f64], kept: &mut Vec<f64>) -> bool {
+    let width = reach.len();
+    if let Some(tree) = set.hierarchy(width / 2) {
+        return tree.collect_meeting(reach, kept, MOST_KEPT);
+    }
+    for row in set.rows().chunks_exact(width) {
+        let meets = row
+            .chunks_exact(2)
+            .zip(reach.chunks_exact(2))
+            .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0]);
+        if meets {
+            kept.extend_from_slice(row);
+        }
+    }
+    true
 }
