@@ -12,9 +12,21 @@ struct Step {
     parent: usize,
     origin: Affine3A,
     origin64: DAffine3,
-    /// The joint axis (unit) and its coordinate, or `None` for a fixed joint.
-    axis: Option<(Vec3A, DVec3, usize)>,
-    prismatic: bool,
+    /// How the joint moves the link, in `f32`.
+    motion: JointMotion,
+    /// The joint's unit axis in `f64` (zero for a fixed joint).
+    axis64: DVec3,
+}
+
+/// How a link's joint moves it, classified once for the `f32` walks (the scalar one here and
+/// the eight-lane one in `lanes.rs`): the unit axis and the joint coordinate.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum JointMotion {
+    Fixed,
+    /// About the joint frame's z axis (the usual URDF convention): two rotation columns turn.
+    RevoluteZ(usize),
+    Revolute(Vec3A, usize),
+    Prismatic(Vec3A, usize),
 }
 
 /// Forward kinematics of a robot: places every link and every collision sphere for a
@@ -53,21 +65,24 @@ impl Kinematics {
             .links()
             .iter()
             .map(|link| {
-                let (axis, prismatic) = match link.motion {
-                    Motion::Fixed => (None, false),
+                let (motion, axis64) = match link.motion {
+                    Motion::Fixed => (JointMotion::Fixed, DVec3::ZERO),
+                    Motion::Revolute { axis, coordinate } if axis.as_vec3a() == Vec3A::Z => {
+                        (JointMotion::RevoluteZ(coordinate), axis)
+                    }
                     Motion::Revolute { axis, coordinate } => {
-                        (Some((axis.as_vec3a(), axis, coordinate)), false)
+                        (JointMotion::Revolute(axis.as_vec3a(), coordinate), axis)
                     }
                     Motion::Prismatic { axis, coordinate } => {
-                        (Some((axis.as_vec3a(), axis, coordinate)), true)
+                        (JointMotion::Prismatic(axis.as_vec3a(), coordinate), axis)
                     }
                 };
                 Step {
                     parent: link.parent.unwrap_or(usize::MAX),
                     origin: to_f32(&link.origin),
                     origin64: link.origin,
-                    axis,
-                    prismatic,
+                    motion,
+                    axis64,
                 }
             })
             .collect();
@@ -103,16 +118,11 @@ impl Kinematics {
     }
 
     /// Link `i`'s step of the walk in `f32`: its parent (`usize::MAX` for the root), the
-    /// joint origin, the joint's unit axis and coordinate (`None` if fixed), and whether the
-    /// joint is prismatic. For the SIMD walk, which mirrors [`link_poses`](Self::link_poses).
-    pub(crate) fn step(&self, i: usize) -> (usize, Affine3A, Option<(Vec3A, usize)>, bool) {
+    /// joint origin and the joint's motion. For the SIMD walk, which mirrors
+    /// [`link_poses`](Self::link_poses).
+    pub(crate) fn step(&self, i: usize) -> (usize, Affine3A, JointMotion) {
         let s = &self.steps[i];
-        (
-            s.parent,
-            s.origin,
-            s.axis.map(|(a, _, c)| (a, c)),
-            s.prismatic,
-        )
+        (s.parent, s.origin, s.motion)
     }
 
     /// The radius of sphere `i` in `f32`.
@@ -140,18 +150,20 @@ impl Kinematics {
     pub fn link_pose(&self, q: &[f64], link: usize, out: &mut [Affine3A]) {
         let step = &self.steps[link];
         let mut local = step.origin;
-        if let Some((axis, _, c)) = step.axis {
-            let value = q[c] as f32;
-            if step.prismatic {
-                local.translation += local.matrix3 * (axis * value);
-            } else if axis == Vec3A::Z {
-                // origin · Rz(value): only the first two rotation columns turn.
-                let (s, cos) = value.sin_cos();
+        match step.motion {
+            JointMotion::Fixed => {}
+            JointMotion::Prismatic(axis, c) => {
+                local.translation += local.matrix3 * (axis * q[c] as f32);
+            }
+            JointMotion::RevoluteZ(c) => {
+                // origin · Rz(q): only the first two rotation columns turn.
+                let (s, cos) = (q[c] as f32).sin_cos();
                 let (x, y) = (local.matrix3.x_axis, local.matrix3.y_axis);
                 local.matrix3.x_axis = x * cos + y * s;
                 local.matrix3.y_axis = y * cos - x * s;
-            } else {
-                local *= Affine3A::from_axis_angle(axis.into(), value);
+            }
+            JointMotion::Revolute(axis, c) => {
+                local *= Affine3A::from_axis_angle(axis.into(), q[c] as f32);
             }
         }
         out[link] = if step.parent == usize::MAX {
@@ -175,12 +187,14 @@ impl Kinematics {
         debug_assert!(q.len() >= self.dimension && out.len() >= self.steps.len());
         for (i, step) in self.steps.iter().enumerate() {
             let mut local = step.origin64;
-            if let Some((_, axis, c)) = step.axis {
-                local = if step.prismatic {
-                    local * DAffine3::from_translation(axis * q[c])
-                } else {
-                    local * DAffine3::from_axis_angle(axis, q[c])
-                };
+            match step.motion {
+                JointMotion::Fixed => {}
+                JointMotion::Prismatic(_, c) => {
+                    local *= DAffine3::from_translation(step.axis64 * q[c]);
+                }
+                JointMotion::RevoluteZ(c) | JointMotion::Revolute(_, c) => {
+                    local *= DAffine3::from_axis_angle(step.axis64, q[c]);
+                }
             }
             out[i] = if step.parent == usize::MAX {
                 local

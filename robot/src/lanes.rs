@@ -10,6 +10,7 @@ use glam::{Affine3A, Vec3A};
 use wide::f32x8;
 
 use crate::Kinematics;
+use crate::kinematics::JointMotion;
 
 /// Lanes per batch.
 pub(crate) const LANES: usize = 8;
@@ -62,36 +63,15 @@ impl Pose8 {
     }
 }
 
-/// How a link's joint moves it, for the lane walk.
-#[derive(Debug, Clone, Copy)]
-enum LaneJoint {
-    Fixed,
-    /// About the joint frame's z axis (the usual URDF convention): a cheaper product.
-    RevoluteZ(usize),
-    Revolute(Vec3A, usize),
-    Prismatic(Vec3A, usize),
-}
-
 /// The tree walk of a [`Kinematics`], eight configurations at a time.
 #[derive(Debug, Clone)]
 pub(crate) struct LaneKinematics {
-    steps: Vec<(usize, Affine3A, LaneJoint)>,
+    steps: Vec<(usize, Affine3A, JointMotion)>,
 }
 
 impl LaneKinematics {
     pub(crate) fn new(fk: &Kinematics) -> Self {
-        let steps = (0..fk.link_count())
-            .map(|i| {
-                let (parent, origin, axis, prismatic) = fk.step(i);
-                let joint = match axis {
-                    None => LaneJoint::Fixed,
-                    Some((a, c)) if prismatic => LaneJoint::Prismatic(a, c),
-                    Some((a, c)) if a == Vec3A::Z => LaneJoint::RevoluteZ(c),
-                    Some((a, c)) => LaneJoint::Revolute(a, c),
-                };
-                (parent, origin, joint)
-            })
-            .collect();
+        let steps = (0..fk.link_count()).map(|i| fk.step(i)).collect();
         Self { steps }
     }
 
@@ -108,14 +88,14 @@ impl LaneKinematics {
             // parent · origin, then the joint's own motion.
             let mut pose = base.then_constant(origin);
             match joint {
-                LaneJoint::Fixed => {}
-                LaneJoint::RevoluteZ(c) => {
+                JointMotion::Fixed => {}
+                JointMotion::RevoluteZ(c) => {
                     let (s, cos) = q[c].sin_cos();
                     let [x, y, _] = pose.r;
                     pose.r[0] = std::array::from_fn(|k| x[k] * cos + y[k] * s);
                     pose.r[1] = std::array::from_fn(|k| y[k] * cos - x[k] * s);
                 }
-                LaneJoint::Revolute(u, c) => {
+                JointMotion::Revolute(u, c) => {
                     let (s, cos) = q[c].sin_cos();
                     let one_minus = f32x8::ONE - cos;
                     let u = [u.x, u.y, u.z];
@@ -136,7 +116,7 @@ impl LaneKinematics {
                         })
                     });
                 }
-                LaneJoint::Prismatic(u, c) => {
+                JointMotion::Prismatic(u, c) => {
                     let d = pose.rotate(u);
                     for (t, d) in pose.t.iter_mut().zip(d) {
                         *t += d * q[c];
