@@ -201,24 +201,20 @@ mod tests {
     /// A row of 100 runs: the first `solved` solve, at times `scale · (1 + i/100)` and costs
     /// `cost + i/1000`; the rest fail (∞).
     fn row(instance: &str, planner: &str, solved: usize, scale: f64, cost: f64) -> KpiRow {
-        let times: Vec<f64> = (0..100)
-            .map(|i| {
-                if i < solved {
-                    scale * (1.0 + i as f64 / 100.0)
-                } else {
-                    f64::INFINITY
-                }
-            })
-            .collect();
-        let costs: Vec<f64> = (0..100)
-            .map(|i| {
-                if i < solved {
-                    cost + i as f64 / 1000.0
-                } else {
-                    f64::INFINITY
-                }
-            })
-            .collect();
+        // Run i's value, or ∞ if it failed.
+        let series = |value: &dyn Fn(f64) -> f64| -> Vec<f64> {
+            (0..100)
+                .map(|i| {
+                    if i < solved {
+                        value(i as f64)
+                    } else {
+                        f64::INFINITY
+                    }
+                })
+                .collect()
+        };
+        let times = series(&|i| scale * (1.0 + i / 100.0));
+        let costs = series(&|i| cost + i / 1000.0);
         let median = |v: &[f64]| MedianEstimate::of(v, 0.99).unwrap();
         KpiRow {
             instance: instance.to_owned(),
