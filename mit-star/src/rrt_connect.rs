@@ -19,8 +19,9 @@ use crate::{
 /// return the same path).
 ///
 /// Built from the framework's parts: the space's uniform sampling through [`UniformSampler`],
-/// full edge checks through an [`EdgeChecker`] (batched for arms, certified when the problem
-/// asks), [`NearestNeighbors`](crate::NearestNeighbors) per tree (a scan with the space's metric when it is not
+/// full edge checks through an [`EdgeChecker`] (batched for arms; when the problem asks for
+/// certification, the edges of a connection are certified before it is returned, and an edge
+/// that fails is cut from its tree with its subtree), [`NearestNeighbors`](crate::NearestNeighbors) per tree (a scan with the space's metric when it is not
 /// Euclidean), the shared termination conditions, trace and counters.
 ///
 /// # Arguments
@@ -55,6 +56,9 @@ pub struct RrtConnect<S, V, E = DenseChecker> {
     phase: Phase,
     /// A motion check the stop interrupted, resumed by the next iteration.
     pending: Option<Motion>,
+    /// A connection found (its state in the start tree, its state in the goal tree) whose
+    /// edges are being certified; the stop interrupted the certification.
+    connection: Option<(u32, u32)>,
 }
 
 /// What one step towards a state did.
@@ -130,6 +134,7 @@ where
             growing: 0,
             phase: Phase::Grow,
             pending: None,
+            connection: None,
         })
     }
 
@@ -194,9 +199,10 @@ where
         step.unwrap_or(Some(Step::Stopped))
     }
 
-    /// Checks the pending motion (every grid point, then the certification grid when the
-    /// problem asks for one) and adds its end to its tree if it is valid. A check the stop
-    /// interrupts stays pending with its progress, and the next call resumes it.
+    /// Checks the pending motion at every grid point and adds its end to its tree if it is
+    /// valid (certification, when the problem asks for it, waits for a connection: see
+    /// [`certify_connection`](Self::certify_connection)). A check the stop interrupts stays
+    /// pending with its progress, and the next call resumes it.
     fn finish_motion(&mut self, stop: &dyn Stop) -> Step {
         let Some(mut motion) = self.pending.take() else {
             return Step::Trapped;
@@ -204,7 +210,7 @@ where
         let from = self.trees[motion.tree].state(motion.near);
         match self
             .core
-            .check_to_candidate(from, &mut motion.progress, stop)
+            .check_full_to_candidate(from, &mut motion.progress, stop)
         {
             EdgeStatus::Invalid => Step::Trapped,
             EdgeStatus::Unknown => {
@@ -230,6 +236,10 @@ where
     /// stop interrupts (a motion check, the connect phase) resumes at the next call.
     fn iterate(&mut self, stop: &SolveStop<'_>) {
         self.core.counters.iterations += 1;
+        if self.connection.is_some() {
+            self.certify_connection(stop);
+            return;
+        }
         loop {
             let step = match self.phase {
                 Phase::Grow if self.pending.is_none() => {
@@ -283,7 +293,8 @@ where
                         (joined, new)
                     };
                     self.phase = Phase::Grow;
-                    self.record_solution(in_start, in_goal, stop);
+                    self.connection = Some((in_start, in_goal));
+                    self.certify_connection(stop);
                     return;
                 }
             }
@@ -291,6 +302,38 @@ where
                 return;
             }
         }
+    }
+
+    /// Certifies the edges of the pending connection not yet certified (on the grid
+    /// `certification` times finer than the check step), then records its path as the
+    /// solution. An edge that fails is cut from its tree with everything below it, and the
+    /// search goes on; a certification the stop interrupts resumes at the next call. Only the
+    /// edges of a connection are certified, not every extension: most never join a path.
+    fn certify_connection(&mut self, stop: &SolveStop<'_>) {
+        let Some((in_start, in_goal)) = self.connection else {
+            return;
+        };
+        for (t, end) in [(0, in_start), (1, in_goal)] {
+            let mut id = end;
+            while self.trees[t].parents[id as usize] != ROOT {
+                let tree = &self.trees[t];
+                let parent = tree.parents[id as usize];
+                if !tree.certified[id as usize] {
+                    match self.core.certify(tree.state(parent), tree.state(id), stop) {
+                        EdgeStatus::Valid => self.trees[t].certified[id as usize] = true,
+                        EdgeStatus::Unknown => return,
+                        EdgeStatus::Invalid => {
+                            self.connection = None;
+                            self.trees[t].prune(id);
+                            return;
+                        }
+                    }
+                }
+                id = parent;
+            }
+        }
+        self.connection = None;
+        self.record_solution(in_start, in_goal, stop);
     }
 
     fn record_solution(&mut self, in_start_tree: u32, in_goal_tree: u32, stop: &SolveStop<'_>) {
@@ -340,6 +383,7 @@ where
         self.growing = 0;
         self.phase = Phase::Grow;
         self.pending = None;
+        self.connection = None;
     }
 
     fn best_cost(&self) -> f64 {

@@ -138,17 +138,45 @@ where
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus {
-        let (space, validity, to) = (&self.space, &self.validity, &self.candidate);
-        let status = self
-            .checker
-            .check_full(space, validity, from, to, progress, stop);
-        let factor = self.parameters.certification.unwrap_or(1);
-        if status == EdgeStatus::Valid && factor > 1 {
-            return self
-                .checker
-                .certify(space, validity, from, to, factor, stop);
+        let status = self.check_full_to_candidate(from, progress, stop);
+        if status != EdgeStatus::Valid {
+            return status;
         }
+        let to = std::mem::take(&mut self.candidate);
+        let status = self.certify(from, &to, stop);
+        self.candidate = to;
         status
+    }
+
+    /// Checks the motion `from → candidate` at full resolution only (every grid point not yet
+    /// tested), as [`check_to_candidate`](Self::check_to_candidate) without certification.
+    pub(crate) fn check_full_to_candidate(
+        &mut self,
+        from: &[f64],
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus {
+        let (space, validity, to) = (&self.space, &self.validity, &self.candidate);
+        self.checker
+            .check_full(space, validity, from, to, progress, stop)
+    }
+
+    /// How many times finer than the check step edges are certified (1: not at all).
+    pub(crate) fn certification(&self) -> u32 {
+        self.parameters.certification.unwrap_or(1)
+    }
+
+    /// Certifies the motion `from → to`, already checked at full resolution, on the grid
+    /// [`certification`](Self::certification) times finer (`Valid` at once when that is 1).
+    pub(crate) fn certify(&mut self, from: &[f64], to: &[f64], stop: &dyn Stop) -> EdgeStatus {
+        let factor = self.certification();
+        if factor > 1 {
+            let (space, validity) = (&self.space, &self.validity);
+            self.checker
+                .certify(space, validity, from, to, factor, stop)
+        } else {
+            EdgeStatus::Valid
+        }
     }
 
     /// Records `path` as the solution if it is cheaper than the best one (its cost the sum of

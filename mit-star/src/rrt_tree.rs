@@ -10,12 +10,16 @@ use crate::{NearestNeighbors, Neighbours};
 /// The parent of a root.
 pub(crate) const ROOT: u32 = u32::MAX;
 
-/// One tree: states in contiguous storage, parent indices ([`ROOT`] for roots), and the
-/// nearest-neighbour index over its states.
+/// One tree: states in contiguous storage, parent indices ([`ROOT`] for roots), whether each
+/// state's edge from its parent is certified, and the nearest-neighbour index over its states.
+/// A parent's index is always below its children's.
 #[derive(Debug, Clone)]
 pub(crate) struct Tree {
     pub(crate) states: States,
     pub(crate) parents: Vec<u32>,
+    /// The edge from the parent passed certification (roots: `true`). Planners that certify
+    /// lazily (only a solution's edges) read and set it.
+    pub(crate) certified: Vec<bool>,
     nn: NearestNeighbors,
 }
 
@@ -24,6 +28,7 @@ impl Tree {
         Self {
             states: States::new(dimension),
             parents: Vec::new(),
+            certified: Vec::new(),
             nn: NearestNeighbors::new(dimension),
         }
     }
@@ -32,8 +37,35 @@ impl Tree {
         let id = self.parents.len() as u32;
         self.states.push(state);
         self.parents.push(parent);
+        self.certified.push(parent == ROOT);
         self.nn.insert([(id, state)]);
         id
+    }
+
+    /// Removes state `id` (not a root) and every state below it, and renumbers the rest in
+    /// their order: the tree an edge that failed certification leaves. Linear in the tree's
+    /// size; it runs once per failed certification, which is rare.
+    pub(crate) fn prune(&mut self, id: u32) {
+        debug_assert_ne!(self.parents[id as usize], ROOT, "a root is never pruned");
+        let n = self.parents.len();
+        // Children come after their parents, so one pass in order marks every descendant.
+        let mut renumbered = vec![ROOT; n];
+        let mut kept = Tree::new(self.states.dimension());
+        for old in 0..n {
+            let parent = self.parents[old];
+            let orphaned = parent != ROOT && renumbered[parent as usize] == ROOT;
+            if old == id as usize || orphaned {
+                continue;
+            }
+            let new_parent = if parent == ROOT {
+                ROOT
+            } else {
+                renumbered[parent as usize]
+            };
+            renumbered[old] = kept.add(&self.states[old], new_parent);
+            kept.certified[renumbered[old] as usize] = self.certified[old];
+        }
+        *self = kept;
     }
 
     pub(crate) fn state(&self, id: u32) -> &[f64] {
@@ -92,4 +124,37 @@ pub(crate) fn steer<S: StateSpace>(
         space.interpolate(from, target, range / distance, out);
     }
     reached
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pruning_removes_the_subtree_and_keeps_the_rest_in_order() {
+        // 0 ─ 1 ─ 2 ─ 4
+        //  └─ 3    └─ 5
+        let mut tree = Tree::new(1);
+        for (x, parent) in [
+            (0.0, ROOT),
+            (1.0, 0),
+            (2.0, 1),
+            (3.0, 0),
+            (4.0, 2),
+            (5.0, 2),
+        ] {
+            tree.add(&[x], parent);
+        }
+        tree.certified[3] = true;
+        tree.prune(2);
+        let states: Vec<f64> = tree.states.iter().map(|s| s[0]).collect();
+        assert_eq!(states, [0.0, 1.0, 3.0]);
+        assert_eq!(tree.parents, [ROOT, 0, 0]);
+        assert_eq!(tree.certified, [true, false, true]);
+        // The index knows only the states kept, under their new numbers.
+        let space = spaces::RealVectorSpace::cube(1, 0.0, 10.0).unwrap();
+        let mut found = Neighbours::new();
+        assert!(tree.nearest(&space, &[4.6], 1, &mut found, &spaces::Never));
+        assert_eq!(found.iter().next().map(|&(_, id)| id), Some(2));
+    }
 }

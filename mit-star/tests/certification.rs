@@ -102,3 +102,51 @@ fn certified_planners_never_cross_the_thin_wall() {
     // Most runs find the way around within the budget (see `thin_wall` for why not all must).
     assert!(solved_runs.len() >= 9, "solved: {solved_runs:?}");
 }
+
+/// RRT-Connect on the thin wall with `certification`: solved, the path, certification
+/// failures.
+fn solve_rrt_connect(certification: u32, seed: u64) -> (bool, Vec<Vec<f64>>, u64) {
+    let (space, world) = thin_wall();
+    let parameters = mit_star::Parameters {
+        resolution: STEP / space_extent(),
+        certification: Some(certification),
+        seed,
+        ..mit_star::Parameters::default()
+    };
+    let query = (vec![0.1, 0.5], vec![vec![0.9, 0.5]]);
+    let mut planner = mit_star::RrtConnect::new(space, world, query, parameters).unwrap();
+    let outcome = planner
+        .solve(&FirstSolution.or(TimeLimit::seconds(2.0)))
+        .unwrap();
+    let path = outcome
+        .solution()
+        .map(|s| s.path.iter().map(<[f64]>::to_vec).collect())
+        .unwrap_or_default();
+    (
+        outcome.is_solved(),
+        path,
+        planner.counters().certification_failures,
+    )
+}
+
+#[test]
+fn rrt_connect_certifies_its_connection_and_cuts_the_edge_that_fails() {
+    let (_, world) = thin_wall();
+    // The premise: without certification, some connections go through the window.
+    let crossing = (0..20)
+        .filter(|&seed| crosses_the_wall(&world, &solve_rrt_connect(1, seed).1))
+        .count();
+    assert!(crossing >= 1, "no uncertified path crossed the wall");
+    let mut refused = 0;
+    for seed in 0..20 {
+        let (solved, path, failures) = solve_rrt_connect(4, seed);
+        // A refused connection is cut from its tree and the search goes on to a path around.
+        assert!(solved, "seed {seed}");
+        assert!(!crosses_the_wall(&world, &path), "seed {seed}: {path:?}");
+        refused += failures;
+    }
+    assert!(
+        refused >= 1,
+        "no connection was refused: the test proves nothing"
+    );
+}
