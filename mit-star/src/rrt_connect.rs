@@ -21,8 +21,9 @@ use crate::{
 /// Built from the framework's parts: the space's uniform sampling through [`UniformSampler`],
 /// full edge checks through an [`EdgeChecker`] (batched for arms; when the problem asks for
 /// certification, the edges of a connection are certified before it is returned, and an edge
-/// that fails is cut from its tree with its subtree), [`NearestNeighbors`](crate::NearestNeighbors) per tree (a scan with the space's metric when it is not
-/// Euclidean), the shared termination conditions, trace and counters.
+/// that fails is cut from its tree with its subtree),
+/// [`NearestNeighbors`](crate::NearestNeighbors) per tree (a scan with the space's metric when
+/// it is not Euclidean), the shared termination conditions, trace and counters.
 ///
 /// # Arguments
 /// A query (space, validity checker, start, goals) and [`Parameters`]: `resolution` (the
