@@ -197,6 +197,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
     // Optional parameters (absent from the default table) are named with a sample value.
     let defaults = defaults_table(&Parameters {
         certification: Some(1),
+        near_terminals: Some(0.0),
         suspend_reverse_when_forward_empty: Some(true),
         eis_batch_size: Some(100),
         range: Some(1.0),

@@ -2,7 +2,8 @@
 //! [`Parameters`].
 
 use samplers::{
-    AdaptiveSampler, BridgeSampler, Estimated, GaussianSampler, InformedSampler, UniformSampler,
+    AdaptiveSampler, BridgeSampler, Estimated, GaussianSampler, InformedSampler, NearTerminals,
+    UniformSampler,
 };
 use spaces::StateSpace;
 use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, step_from_resolution};
@@ -125,6 +126,27 @@ impl<S: StateSpace, T: SamplerPart<S>> SamplerPart<S> for Estimated<T> {
             .with_form(p.eis_expansion_form)
             .with_rule(p.eis_expansion_rule)
             .with_immediate_batch(p.eis_immediate_batch))
+    }
+}
+
+/// States near the start and the goals around any sampler the builder can make, at the
+/// fraction `parameters.near_terminals` (`None`: the default,
+/// [`NearTerminals::DEFAULT_FRACTION`]).
+impl<S: StateSpace, T: SamplerPart<S>> SamplerPart<S> for NearTerminals<T> {
+    fn part_name() -> String {
+        format!("near-terminals({})", T::part_name())
+    }
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        p: &Parameters,
+    ) -> Result<Self, BuildError> {
+        let inner = T::build_part(space, start, goals, p)?;
+        let fraction = p
+            .near_terminals
+            .unwrap_or(NearTerminals::<T>::DEFAULT_FRACTION);
+        Ok(NearTerminals::new(inner, space, start, goals, p.seed)?.with_fraction(fraction)?)
     }
 }
 

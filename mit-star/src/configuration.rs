@@ -8,9 +8,14 @@ use problems::PlanningProblem;
 use serde::{Deserialize, Serialize};
 use validity::StateValidity;
 
+use heuristics::Heuristic;
+use samplers::{NearTerminals, Sampler};
+use spaces::StateSpace;
+use validity::{Counted, EdgeChecker};
+
 use crate::{
-    AitStar, BitStar, BuildError, EitStar, InformedRrtStar, MitStar, MitStarAs, MitStarEis,
-    MitStarSc, MitStarSr, Parameters, Planner, RrtConnect,
+    AitStar, BitStar, BuildError, CheckerPart, Eit, EitStar, Guidance, InformedRrtStar, MitStar,
+    MitStarAs, MitStarEis, MitStarSc, MitStarSr, Parameters, Planner, RrtConnect, SamplerPart,
 };
 
 /// A configuration of the MIT*/EIT* family, or a comparison planner, for choosing one at run
@@ -195,70 +200,117 @@ where
     let space = problem.space().clone();
     let (start, goals) = (problem.start().to_vec(), problem.goals().to_vec());
     let label = configuration.label();
+    let query = (space, validity, start, goals);
     Ok(match configuration {
-        Configuration::MitStar => Box::new(
-            MitStar::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
-        Configuration::EitStar => Box::new(
-            EitStar::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
-        Configuration::MitStarAs => Box::new(
-            MitStarAs::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
-        Configuration::MitStarEis => Box::new(
-            MitStarEis::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
-        Configuration::MitStarSc => Box::new(
-            MitStarSc::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
-        Configuration::MitStarSr => Box::new(
-            MitStarSr::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
-        Configuration::BitStar => Box::new(
-            BitStar::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
-        Configuration::AbitStar => Box::new(
-            BitStar::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters.abit_star())
-                .name(label)
-                .build()?,
-        ),
-        Configuration::AitStar => Box::new(
-            AitStar::<P::Space, V>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ),
+        Configuration::MitStar => family::<MitStar<P::Space, V>, _, _>(query, parameters, label)?,
+        Configuration::EitStar => family::<EitStar<P::Space, V>, _, _>(query, parameters, label)?,
+        Configuration::MitStarAs => {
+            family::<MitStarAs<P::Space, V>, _, _>(query, parameters, label)?
+        }
+        Configuration::MitStarEis => {
+            family::<MitStarEis<P::Space, V>, _, _>(query, parameters, label)?
+        }
+        Configuration::MitStarSc => {
+            family::<MitStarSc<P::Space, V>, _, _>(query, parameters, label)?
+        }
+        Configuration::MitStarSr => {
+            family::<MitStarSr<P::Space, V>, _, _>(query, parameters, label)?
+        }
+        Configuration::BitStar => family::<BitStar<P::Space, V>, _, _>(query, parameters, label)?,
+        Configuration::AbitStar => {
+            family::<BitStar<P::Space, V>, _, _>(query, parameters.abit_star(), label)?
+        }
+        Configuration::AitStar => family::<AitStar<P::Space, V>, _, _>(query, parameters, label)?,
         Configuration::RrtConnect => {
+            let (space, validity, start, goals) = query;
             let mut planner = RrtConnect::new(space, validity, (start, goals), parameters)?;
             planner.set_name(label);
             Box::new(planner)
         }
         Configuration::InformedRrtStar => {
+            let (space, validity, start, goals) = query;
             let mut planner = InformedRrtStar::new(space, validity, (start, goals), parameters)?;
             planner.set_name(label);
             Box::new(planner)
         }
     })
+}
+
+/// A configuration of the EIT* family for a query: the planner type `P` as the alias names it,
+/// or — when `parameters.near_terminals` is above 0 — the same planner with its sampler in the
+/// [`NearTerminals`] wrapper.
+fn family<P, S, V>(
+    (space, validity, start, goals): (S, V, Vec<f64>, Vec<Vec<f64>>),
+    parameters: Parameters,
+    label: &str,
+) -> Result<Box<dyn Planner + Send>, BuildError>
+where
+    P: FamilyMember<S, V>,
+{
+    if parameters.near_terminals.unwrap_or(0.0) > 0.0 {
+        P::near_terminals(space, validity, (start, goals), parameters, label)
+    } else {
+        P::plain(space, validity, (start, goals), parameters, label)
+    }
+}
+
+/// The query a planner is built for: start and goals.
+type Query = (Vec<f64>, Vec<Vec<f64>>);
+
+/// A planner type of the EIT* family, built as it is or with its sampler wrapped.
+trait FamilyMember<S, V> {
+    fn plain(
+        space: S,
+        validity: V,
+        query: Query,
+        parameters: Parameters,
+        label: &str,
+    ) -> Result<Box<dyn Planner + Send>, BuildError>;
+    fn near_terminals(
+        space: S,
+        validity: V,
+        query: Query,
+        parameters: Parameters,
+        label: &str,
+    ) -> Result<Box<dyn Planner + Send>, BuildError>;
+}
+
+impl<S, V, Smp, E, H, G> FamilyMember<S, V> for Eit<S, V, Smp, E, H, G>
+where
+    S: StateSpace + Send + 'static,
+    V: StateValidity + Send + 'static,
+    Smp: Sampler<S, Counted<V>> + SamplerPart<S> + Clone + Send + 'static,
+    E: EdgeChecker<S, Counted<V>> + CheckerPart<S> + Clone + Send + 'static,
+    H: Heuristic<S> + Default + Send + 'static,
+    G: Guidance + Send + 'static,
+{
+    fn plain(
+        space: S,
+        validity: V,
+        (start, goals): Query,
+        parameters: Parameters,
+        label: &str,
+    ) -> Result<Box<dyn Planner + Send>, BuildError> {
+        Ok(Box::new(
+            Self::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ))
+    }
+
+    fn near_terminals(
+        space: S,
+        validity: V,
+        (start, goals): Query,
+        parameters: Parameters,
+        label: &str,
+    ) -> Result<Box<dyn Planner + Send>, BuildError> {
+        Ok(Box::new(
+            Eit::<S, V, NearTerminals<Smp>, E, H, G>::builder(space, validity, start, goals)
+                .parameters(parameters)
+                .name(label)
+                .build()?,
+        ))
+    }
 }

@@ -60,6 +60,9 @@ pub struct Counters {
     pub sampler_gaussian: u64,
     /// Adaptive sampler: samples repaired on the segment `x_pre → x_temp` (`x_crit`).
     pub sampler_bridge: u64,
+    /// States the [`NearTerminals`](samplers::NearTerminals) wrapper drew near the start or a
+    /// goal.
+    pub sampler_near_terminals: u64,
     /// Adaptive sampler: failed repairs, after which it drew a new `x_pre`.
     pub sampler_restarts: u64,
     /// Estimated informed set: the cost `s̃_est` it was created with (`None`: never created).
@@ -106,6 +109,7 @@ impl Counters {
         self.sampler_pre_valid = sampler.pre_valid;
         self.sampler_gaussian = sampler.gaussian_valid;
         self.sampler_bridge = sampler.bridge_found;
+        self.sampler_near_terminals = sampler.near_terminals;
         self.sampler_restarts = sampler.repairs_failed;
         self.estimate_initial = sampler.estimate_initial;
         self.estimate_final = sampler.estimate_current;

@@ -86,6 +86,13 @@ pub struct Parameters {
     /// [`certification`](problems::PlanningProblem::certification), 4 for arms). Not in the
     /// paper: it makes returned paths hold at the finer grid too, for a few edges' work.
     pub certification: Option<u32>,
+    /// Fraction of the samples the EIT* family (MIT*, EIT*, AIT*, BIT*, ABIT*) draws near the
+    /// start and the goals, at every scale, through the [`NearTerminals`](samplers::NearTerminals)
+    /// wrapper (0: no wrapper; `None`: the problem's
+    /// [`near_terminals`](problems::PlanningProblem::near_terminals), 0 for the paper's
+    /// problems, 0.1 for arms). Not in the paper: it joins starts and goals that sit deep in
+    /// pockets (grasps in shelf slots), which uniform samples in 7 dimensions seldom reach.
+    pub near_terminals: Option<f64>,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge
     /// without a test — and its points go to the checker in batches (SIMD lanes). The answers
@@ -140,6 +147,7 @@ impl Default for Parameters {
             eis_batch_size: None,
             eis_immediate_batch: false,
             certification: None,
+            near_terminals: None,
             accelerated_checks: true,
             range: None,
             goal_bias: 0.05,
@@ -185,6 +193,7 @@ impl Parameters {
         let mut parameters = self.clone();
         parameters.resolution = problem.resolution();
         parameters.certification = self.certification.or(Some(problem.certification()));
+        parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
         Ok(parameters)
     }
 
@@ -229,6 +238,15 @@ impl Parameters {
                 name: "certification",
                 value: 0.0,
                 requirement: "it must be at least 1 (1: no certification)",
+            });
+        }
+        if let Some(fraction) = self.near_terminals
+            && !(0.0..1.0).contains(&fraction)
+        {
+            return Err(BuildError::Parameter {
+                name: "near_terminals",
+                value: fraction,
+                requirement: "it must lie in [0, 1)",
             });
         }
         if self.bridge_checks == 0 {
@@ -349,6 +367,11 @@ impl Parameters {
                 "certification",
                 self.certification
                     .map_or_else(|| "problem's".to_owned(), |k| k.to_string()),
+            ),
+            (
+                "near_terminals",
+                self.near_terminals
+                    .map_or_else(|| "problem's".to_owned(), |f| f.to_string()),
             ),
             ("accelerated_checks", self.accelerated_checks.to_string()),
             ("goal_bias", self.goal_bias.to_string()),

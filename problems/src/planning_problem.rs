@@ -67,6 +67,13 @@ pub trait PlanningProblem {
     fn certification(&self) -> u32 {
         1
     }
+
+    /// The fraction of samples a planner of the EIT* family should draw near the start and the
+    /// goals (0: none, the paper's sampling). A problem whose terminals sit deep in pockets (an
+    /// arm's grasp in a shelf slot) asks for some.
+    fn near_terminals(&self) -> f64 {
+        0.0
+    }
 }
 
 impl PlanningProblem for Problem {
@@ -137,5 +144,8 @@ impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
     }
     fn certification(&self) -> u32 {
         (**self).certification()
+    }
+    fn near_terminals(&self) -> f64 {
+        (**self).near_terminals()
     }
 }

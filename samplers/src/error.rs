@@ -70,6 +70,14 @@ pub enum SamplerError {
     /// `γ = g / ŝ_adm` is undefined.
     #[error("the admissible solution cost is zero; the reliability γ = g / ŝ_adm is undefined")]
     ZeroAdmissibleCost,
+    /// A fraction is outside `[0, 1)`.
+    #[error("{name} must lie in [0, 1), got {}", spaces::short_number(*.value))]
+    Fraction {
+        /// Which parameter.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
     /// The bridge-check budget is outside `1 ..= MAX_BRIDGE_CHECKS`.
     #[error("the number of bridge checks must lie in 1..={max}, got {got}")]
     BridgeChecks {

@@ -77,6 +77,16 @@ impl InformedDraws {
         validity.is_valid(x)
     }
 
+    /// The seeded generator, for samplers that draw more than the set's states.
+    pub(crate) fn rng(&mut self) -> &mut SeededRng {
+        &mut self.rng
+    }
+
+    /// The sampler's own counters, without the set's draws.
+    pub(crate) fn own(&self) -> SamplerCounters {
+        self.counters
+    }
+
     /// Mutable access to the sampler's own counters (branch counts).
     pub(crate) fn own_counters(&mut self) -> &mut SamplerCounters {
         &mut self.counters

@@ -45,6 +45,7 @@
 //! | [`AdaptiveSampler`] | MIT*'s adaptive sampler: informed draw, Gaussian repair, bisection along the bridge |
 //! | [`InformedSet`], [`prolate_hyperspheroid_measure`] | hyperspheroid geometry for one or several goals: membership, measure, uniform draws with rejection fallback |
 //! | [`Estimated`] | wrapper giving any sampler MIT*'s estimated informed set, driven by the planner's feedback hooks ([`LazyPathFailure`]) |
+//! | [`NearTerminals`] | wrapper drawing a fraction of the states near the start and the goals at every scale (goals deep in pockets, such as grasps in shelf slots) |
 //! | [`EstimatedInformedSet`], [`ExpansionForm`], [`ExpansionRule`] | MIT*'s estimate `s̃_est`, its reliability and expansion |
 //! | [`GaussianStep`], [`SegmentSearch`] | shared pieces: the Gaussian perturbation and the bisection-order segment search |
 //! | [`SamplerError`] | malformed problems or parameters |
@@ -62,6 +63,7 @@ mod hyperspheroid;
 mod informed_draws;
 mod informed_sampler;
 mod informed_set;
+mod near_terminals;
 mod sampler;
 mod segment_search;
 mod uniform_sampler;
@@ -76,6 +78,7 @@ pub use gaussian_step::GaussianStep;
 pub use hyperspheroid::prolate_hyperspheroid_measure;
 pub use informed_sampler::InformedSampler;
 pub use informed_set::InformedSet;
+pub use near_terminals::NearTerminals;
 pub use sampler::{
     CostBound, LazyPathFailure, SampleError, SampleOrigin, Sampler, SamplerCounters,
 };

@@ -77,6 +77,8 @@ pub struct SamplerCounters {
     /// Adaptive sampler: repairs that failed (`x_temp` and every segment point invalid or
     /// outside the set), after which it starts over from a new `x_pre`.
     pub repairs_failed: u64,
+    /// [`NearTerminals`](crate::NearTerminals): states returned from near the start or a goal.
+    pub near_terminals: u64,
     /// Estimated informed set: its first cost `s̃_est = ŝ_adm · e_γ` (`None`: never created).
     pub estimate_initial: Option<f64>,
     /// Estimated informed set: its cost now, after every expansion.
@@ -101,6 +103,8 @@ pub enum SampleOrigin {
     /// A point between two states found on a segment: the adaptive sampler's `x_crit`, the
     /// bridge sampler's midpoint.
     Bridge,
+    /// Drawn near the start or a goal by the [`NearTerminals`](crate::NearTerminals) wrapper.
+    NearTerminal,
 }
 
 /// Draws valid states for a planner (OMPL's `ValidStateSampler`, made informed).

@@ -6,7 +6,8 @@ use std::cell::Cell;
 use proptest::prelude::*;
 use samplers::{
     AdaptiveSampler, BridgeSampler, CostBound, Estimated, GaussianSampler, InformedSampler,
-    LazyPathFailure, SampleError, Sampler, UniformSampler, prolate_hyperspheroid_measure,
+    LazyPathFailure, NearTerminals, SampleError, Sampler, UniformSampler,
+    prolate_hyperspheroid_measure,
 };
 use spaces::{Joint, JointSpace, Never, RealVectorSpace, StateSpace, Stop, euclidean_distance};
 use validity::{AxisBox, Counted, StateValidity, World};
@@ -76,6 +77,23 @@ fn all_samplers<V: StateValidity>(
         (
             "estimated adaptive",
             Box::new(estimated_adaptive(space, start, goal, seed)),
+        ),
+        (
+            "near terminals (adaptive)",
+            Box::new(
+                NearTerminals::new(
+                    AdaptiveSampler::new(space, start, &goals, seed).unwrap(),
+                    space,
+                    start,
+                    &goals,
+                    seed,
+                )
+                .unwrap()
+                .with_fraction(0.5)
+                .unwrap()
+                .with_scales(0.02, 0.5)
+                .unwrap(),
+            ),
         ),
     ]
 }

@@ -1,0 +1,357 @@
+//! [`NearTerminals`]: a wrapper that draws a fraction of the states close to the start and the
+//! goals, at every scale.
+
+use rand::RngExt;
+use spaces::{StateSpace, Stop};
+use validity::StateValidity;
+
+use crate::informed_draws::InformedDraws;
+use crate::{
+    CostBound, GaussianStep, LazyPathFailure, SampleError, SampleOrigin, Sampler, SamplerCounters,
+    SamplerError,
+};
+
+/// Wraps any sampler and draws a fraction of the states from Gaussians around the start and the
+/// goals, with a standard deviation drawn log-uniformly between two scales.
+///
+/// Uniform and informed samples cover the space evenly, so a start or goal at the bottom of a
+/// narrow pocket (a grasp deep in a shelf slot) is seldom joined: in 7 dimensions the nearest
+/// of a million uniform samples is still far away, and every edge that long collides with the
+/// pocket's walls. States near the terminals at every scale, from a few check steps to a tenth
+/// of the space, give the graph a way out of the pocket, one short edge at a time.
+///
+/// Per request: with probability `fraction`, pick the start or a goal (half the time the start,
+/// else a goal uniformly), draw `σ` log-uniformly from `[smallest, largest]` and a state from
+/// `N(terminal, σ² I)` moved into the bounds. If it is valid and inside the informed set of the
+/// bound, return it; otherwise — and with probability `1 − fraction` — the wrapped sampler
+/// answers. Each request therefore costs at most one extra draw and one validity check before
+/// the wrapped sampler's own work, and the wrapped sampler still covers the whole set, so an
+/// asymptotically optimal planner stays so. The r-disc measure is the wrapped sampler's.
+///
+/// Removing the wrapper is the ablation; a fraction of 0 draws nothing and leaves the wrapped
+/// sampler's random sequence untouched.
+///
+/// ```
+/// use samplers::{CostBound, NearTerminals, SampleOrigin, Sampler, UniformSampler};
+/// use spaces::{Never, RealVectorSpace, StateSpace, euclidean_distance};
+/// use validity::World;
+///
+/// let space = RealVectorSpace::cube(7, 0.0, 10.0)?;
+/// let world = World::in_space(&space);
+/// let (start, goal) = ([1.0; 7], [9.0; 7]);
+/// let mut sampler = NearTerminals::new(UniformSampler::new(3), &space, &start, &[goal], 5)?
+///     .with_fraction(0.5)?
+///     .with_scales(0.05, 0.5)?;
+/// let mut x = [0.0; 7];
+/// let mut near = 0;
+/// for _ in 0..1000 {
+///     Sampler::<_, World>::sample(&mut sampler, &space, &world, CostBound::Unbounded, &Never, &mut x)?;
+///     assert!(space.contains(&x));
+///     if Sampler::<RealVectorSpace, World>::last_origin(&sampler) == SampleOrigin::NearTerminal {
+///         near += 1;
+///         // σ ≤ 0.5 in each of 7 coordinates: within 4 of its terminal, bar a 10⁻⁵ chance.
+///         assert!(euclidean_distance(&x, &start).min(euclidean_distance(&x, &goal)) < 4.0);
+///     }
+/// }
+/// // Half of the requests, in a world without obstacles.
+/// assert!((430..570).contains(&near), "{near}");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct NearTerminals<T> {
+    inner: T,
+    /// The informed set (for the bound), this wrapper's generator and counters.
+    draws: InformedDraws,
+    /// The start, then the goals, one after the other.
+    terminals: Vec<f64>,
+    fraction: f64,
+    /// `ln σ` of the smallest and the largest scale.
+    log_scales: (f64, f64),
+    /// Whether the last state returned came from here.
+    drew_last: bool,
+}
+
+impl<T> NearTerminals<T> {
+    /// Default fraction of requests answered near a terminal.
+    pub const DEFAULT_FRACTION: f64 = 0.15;
+    /// Default smallest and largest `σ`, as fractions of the space's maximum extent (0.13 and
+    /// 1.3 rad for the Panda). Chosen on the Panda problems MIT* failed without the wrapper
+    /// (`docs/benchmarks.md`): a smallest `σ` of 0.001–0.002 wasted draws at the terminals.
+    pub const DEFAULT_SCALES: (f64, f64) = (0.01, 0.1);
+
+    /// `inner` with states near `start` and `goals` in `space`, seeded with `seed` (its own
+    /// generator; `inner` keeps its own), at the default fraction and scales.
+    ///
+    /// # Errors
+    /// As [`InformedSet::new`](crate::InformedSet::new), and [`SamplerError::NotPositive`] if the
+    /// space's extent is not finite and positive.
+    pub fn new<S, G>(
+        inner: T,
+        space: &S,
+        start: &[f64],
+        goals: &[G],
+        seed: u64,
+    ) -> Result<Self, SamplerError>
+    where
+        S: StateSpace + ?Sized,
+        G: AsRef<[f64]>,
+    {
+        let draws = InformedDraws::new(space, start, goals, mixed(seed))?;
+        let terminals = std::iter::once(start)
+            .chain(goals.iter().map(AsRef::as_ref))
+            .flatten()
+            .copied()
+            .collect();
+        let extent = space.maximum_extent();
+        let (small, large) = Self::DEFAULT_SCALES;
+        Self {
+            inner,
+            draws,
+            terminals,
+            fraction: Self::DEFAULT_FRACTION,
+            log_scales: (0.0, 0.0),
+            drew_last: false,
+        }
+        .with_scales(small * extent, large * extent)
+    }
+
+    /// Sets the fraction of requests answered near a terminal.
+    ///
+    /// # Errors
+    /// [`SamplerError::Fraction`] unless `0 ≤ fraction < 1`.
+    pub fn with_fraction(mut self, fraction: f64) -> Result<Self, SamplerError> {
+        if !(0.0..1.0).contains(&fraction) {
+            return Err(SamplerError::Fraction {
+                name: "fraction of states near the terminals",
+                value: fraction,
+            });
+        }
+        self.fraction = fraction;
+        Ok(self)
+    }
+
+    /// Sets the smallest and the largest standard deviation `σ`.
+    ///
+    /// # Errors
+    /// [`SamplerError::NotPositive`] if either is not finite and positive, or the largest is
+    /// below the smallest.
+    pub fn with_scales(mut self, smallest: f64, largest: f64) -> Result<Self, SamplerError> {
+        GaussianStep::new(smallest)?;
+        GaussianStep::new(largest - smallest + f64::MIN_POSITIVE).map_err(|_| {
+            SamplerError::NotPositive {
+                name: "largest σ minus the smallest",
+                value: largest - smallest,
+            }
+        })?;
+        self.log_scales = (smallest.ln(), largest.ln());
+        Ok(self)
+    }
+
+    /// The fraction of requests answered near a terminal.
+    pub fn fraction(&self) -> f64 {
+        self.fraction
+    }
+
+    /// The wrapped sampler.
+    pub fn inner(&self) -> &T {
+        &self.inner
+    }
+
+    /// Draws one candidate near a terminal into `out`.
+    fn draw_near<S: StateSpace + ?Sized>(&mut self, space: &S, out: &mut [f64]) {
+        let n = out.len();
+        let count = self.terminals.len() / n;
+        let rng = self.draws.rng();
+        let index = if count == 1 || rng.random_bool(0.5) {
+            0
+        } else {
+            rng.random_range(1..count)
+        };
+        let (low, high) = self.log_scales;
+        let sigma = if high > low {
+            rng.random_range(low..high).exp()
+        } else {
+            low.exp()
+        };
+        let terminal = &self.terminals[index * n..(index + 1) * n];
+        // σ was validated when it was set, so the step is well formed.
+        let step = GaussianStep::new(sigma).unwrap_or_else(|_| unreachable!("σ validated"));
+        self.draws.perturb(&step, space, terminal, out);
+    }
+}
+
+/// The wrapper's seed, decorrelated from the wrapped sampler's (which gets `seed` itself).
+fn mixed(seed: u64) -> u64 {
+    seed ^ 0xd1b5_4a32_d192_ed03
+}
+
+impl<S, V, T> Sampler<S, V> for NearTerminals<T>
+where
+    S: StateSpace + ?Sized,
+    V: StateValidity + ?Sized,
+    T: Sampler<S, V>,
+{
+    fn sample(
+        &mut self,
+        space: &S,
+        validity: &V,
+        bound: CostBound,
+        stop: &dyn Stop,
+        out: &mut [f64],
+    ) -> Result<(), SampleError> {
+        self.drew_last = false;
+        if self.fraction > 0.0 && self.draws.rng().random_bool(self.fraction) {
+            if stop.should_stop() {
+                return Err(SampleError::Stopped);
+            }
+            let expected = self.draws.set.dimension();
+            if out.len() != expected || space.dimension() != expected {
+                let got = if out.len() == expected {
+                    space.dimension()
+                } else {
+                    out.len()
+                };
+                return Err(SampleError::DimensionMismatch { expected, got });
+            }
+            self.draw_near(space, out);
+            if !self.draws.set.contains(space, bound.cost(), out) {
+                self.draws.reject();
+            } else if self.draws.check(validity, out) {
+                self.drew_last = true;
+                return self.draws.returned();
+            }
+        }
+        self.inner.sample(space, validity, bound, stop, out)
+    }
+
+    fn sampled_measure(&self, space: &S, bound: CostBound) -> f64 {
+        self.inner.sampled_measure(space, bound)
+    }
+
+    fn reseed(&mut self, seed: u64) {
+        self.inner.reseed(seed);
+        self.draws.reseed(mixed(seed));
+        self.drew_last = false;
+    }
+
+    fn counters(&self) -> SamplerCounters {
+        let inner = self.inner.counters();
+        let own = self.draws.own();
+        SamplerCounters {
+            returned: inner.returned + own.returned,
+            drawn: inner.drawn + own.drawn,
+            rejected: inner.rejected + own.rejected,
+            validity_checks: inner.validity_checks + own.validity_checks,
+            near_terminals: own.returned,
+            ..inner
+        }
+    }
+
+    fn observe_invalid_lazy_edge(&mut self, failure: LazyPathFailure) {
+        self.inner.observe_invalid_lazy_edge(failure);
+    }
+
+    fn observe_batch_end(&mut self, solved: bool) {
+        self.inner.observe_batch_end(solved);
+    }
+
+    fn wants_batch(&self) -> bool {
+        self.inner.wants_batch()
+    }
+
+    fn estimated_cost(&self) -> Option<f64> {
+        self.inner.estimated_cost()
+    }
+
+    fn last_origin(&self) -> SampleOrigin {
+        if self.drew_last {
+            SampleOrigin::NearTerminal
+        } else {
+            self.inner.last_origin()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use spaces::{Never, RealVectorSpace};
+    use validity::{AxisBox, Counted, World};
+
+    use super::*;
+    use crate::{InformedSampler, UniformSampler};
+
+    fn square() -> (RealVectorSpace, [f64; 2], [f64; 2]) {
+        let space = RealVectorSpace::cube(2, 0.0, 1.0).unwrap();
+        (space, [0.1, 0.5], [0.9, 0.5])
+    }
+
+    #[test]
+    fn a_fraction_of_zero_leaves_the_wrapped_sequence_untouched() {
+        let (space, start, goal) = square();
+        let world = World::in_space(&space);
+        let mut bare = UniformSampler::new(4);
+        let mut wrapped = NearTerminals::new(UniformSampler::new(4), &space, &start, &[goal], 4)
+            .unwrap()
+            .with_fraction(0.0)
+            .unwrap();
+        let (mut a, mut b) = ([0.0; 2], [0.0; 2]);
+        for _ in 0..50 {
+            bare.sample(&space, &world, CostBound::Unbounded, &Never, &mut a)
+                .unwrap();
+            wrapped
+                .sample(&space, &world, CostBound::Unbounded, &Never, &mut b)
+                .unwrap();
+            assert_eq!(a, b);
+        }
+        let c = Sampler::<RealVectorSpace, World>::counters(&wrapped);
+        assert_eq!((c.near_terminals, c.returned), (0, 50));
+    }
+
+    #[test]
+    fn invalid_or_uninformed_draws_fall_back_to_the_wrapped_sampler() {
+        let (space, start, goal) = square();
+        // A box over the goal: every draw near it is invalid, and only the start's count.
+        let world = Counted::new(
+            World::in_space(&space)
+                .with_obstacle(AxisBox::new(vec![0.9, 0.5], vec![0.6, 1.0]))
+                .unwrap(),
+        );
+        let informed = InformedSampler::new(&space, &start, &[goal], 1).unwrap();
+        let goal_in_box = [0.9, 0.5];
+        let mut sampler = NearTerminals::new(informed, &space, &start, &[goal_in_box], 1)
+            .unwrap()
+            .with_fraction(0.9)
+            .unwrap()
+            .with_scales(0.01, 0.05)
+            .unwrap();
+        let mut x = [0.0; 2];
+        let bound = CostBound::Solution(0.85);
+        for _ in 0..400 {
+            sampler
+                .sample(&space, &world, bound, &Never, &mut x)
+                .unwrap();
+            assert!(world.is_valid(&x), "{x:?}");
+            assert!(sampler.draws.set.contains(&space, Some(0.85), &x), "{x:?}");
+        }
+        let c = Sampler::<RealVectorSpace, Counted<World>>::counters(&sampler);
+        // About half of the 360 near draws are at the start, and most of those lie in the
+        // informed set; the ones at the goal are all invalid or outside it.
+        assert!((60..250).contains(&c.near_terminals), "{c:?}");
+        assert_eq!(c.returned, 400);
+        assert!(c.rejected + c.validity_checks > c.returned, "{c:?}");
+    }
+
+    #[test]
+    fn out_of_range_settings_are_refused() {
+        let (space, start, goal) = square();
+        let make = || NearTerminals::new(UniformSampler::new(0), &space, &start, &[goal], 0);
+        for fraction in [1.0, -0.1, f64::NAN] {
+            let error = make().unwrap().with_fraction(fraction).unwrap_err();
+            assert!(matches!(error, SamplerError::Fraction { .. }), "{error}");
+        }
+        for (small, large) in [(0.0, 1.0), (0.5, 0.1), (0.1, f64::INFINITY)] {
+            assert!(make().unwrap().with_scales(small, large).is_err());
+        }
+        assert!(make().unwrap().with_scales(0.1, 0.1).is_ok());
+    }
+}
