@@ -1,7 +1,8 @@
 //! The shipped `panda-mbm` experiment end to end, on the two sample problems per scene shipped
 //! in `robot/tests/data/mbm` (the full 500 live in a tarball extracted into `target/`): every
 //! scene loads, every run ends solved or unsolved with no invalid path, the pooled per-scene
-//! table is written, and arm problems ask planners for certification.
+//! table is written, and arm problems ask planners for certification and the EIT* family for
+//! samples near the terminals.
 
 use std::path::Path;
 
@@ -42,6 +43,7 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
     let results = Executor::new(options).run(&experiment, instances).unwrap();
     assert_eq!(results.run_count(), 4 * 10);
     let mut solved = 0;
+    let mut drew_near_terminals = 0;
     for run in results.all_runs() {
         assert!(
             matches!(run.status, RunStatus::Solved | RunStatus::Unsolved),
@@ -52,11 +54,24 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
             let counters: Vec<(&str, u64)> = run.counter_values().to_vec();
             let certified = counters.iter().find(|(n, _)| *n == "certified edges");
             assert!(certified.is_some_and(|&(_, c)| c > 0), "{counters:?}");
+            // Arm problems ask the EIT* family for samples near the start and the goal.
+            let near = counters
+                .iter()
+                .find(|(n, _)| *n == "sampler near terminal draws")
+                .map(|&(_, c)| c);
+            if run.planner == "RRT-Connect" {
+                assert!(near.is_none_or(|c| c == 0), "{run:?}");
+            } else if near.is_some_and(|c| c > 0) {
+                drew_near_terminals += 1;
+            }
         }
     }
     // Most runs solve their problem in 1 s, even in an unoptimised test build (this checks that
     // planning happens; success rates are the benchmark's business).
     assert!(solved >= 20, "{solved} of 40 solved");
+    // Every informed-trees run that samples at all draws some near the terminals (a problem
+    // whose straight line is free is solved before the first batch).
+    assert!(drew_near_terminals >= 15, "{drew_near_terminals} of 30");
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("arm-experiment");
     let _ = std::fs::remove_dir_all(&dir);
     let mut folder = ResultsFolder::prepare(&dir).unwrap();

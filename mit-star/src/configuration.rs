@@ -314,3 +314,45 @@ where
         ))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{FirstSolution, IterationLimit, TerminationExt};
+
+    fn near_terminal_draws(configuration: Configuration, parameters: &Parameters) -> u64 {
+        let problem = problems::DividingWalls::new(4).build().unwrap();
+        let mut planner = build_planner(configuration, &problem, parameters).unwrap();
+        assert_eq!(planner.name(), configuration.label());
+        planner
+            .solve(&FirstSolution.or(IterationLimit::new(2000)))
+            .unwrap();
+        planner.counters().sampler_near_terminals
+    }
+
+    #[test]
+    fn samples_near_the_terminals_only_where_asked() {
+        // Box worlds ask for none: the paper's sampling, no wrapper.
+        let none = Parameters::default();
+        let some = Parameters {
+            near_terminals: Some(0.3),
+            ..Parameters::default()
+        };
+        for configuration in [Configuration::MitStar, Configuration::BitStar] {
+            assert_eq!(near_terminal_draws(configuration, &none), 0);
+            assert!(near_terminal_draws(configuration, &some) > 0);
+        }
+        // RRT-Connect has no such sampler.
+        assert_eq!(near_terminal_draws(Configuration::RrtConnect, &some), 0);
+        // Out of range is a typed error naming the parameter.
+        let bad = Parameters {
+            near_terminals: Some(1.0),
+            ..Parameters::default()
+        };
+        let problem = problems::DividingWalls::new(2).build().unwrap();
+        let error = build_planner(Configuration::MitStar, &problem, &bad)
+            .err()
+            .unwrap();
+        assert!(error.to_string().contains("near_terminals"), "{error}");
+    }
+}
