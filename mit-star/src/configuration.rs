@@ -202,25 +202,17 @@ where
     let label = configuration.label();
     let query = (space, validity, start, goals);
     Ok(match configuration {
-        Configuration::MitStar => family::<MitStar<P::Space, V>, _, _>(query, parameters, label)?,
-        Configuration::EitStar => family::<EitStar<P::Space, V>, _, _>(query, parameters, label)?,
-        Configuration::MitStarAs => {
-            family::<MitStarAs<P::Space, V>, _, _>(query, parameters, label)?
-        }
-        Configuration::MitStarEis => {
-            family::<MitStarEis<P::Space, V>, _, _>(query, parameters, label)?
-        }
-        Configuration::MitStarSc => {
-            family::<MitStarSc<P::Space, V>, _, _>(query, parameters, label)?
-        }
-        Configuration::MitStarSr => {
-            family::<MitStarSr<P::Space, V>, _, _>(query, parameters, label)?
-        }
-        Configuration::BitStar => family::<BitStar<P::Space, V>, _, _>(query, parameters, label)?,
+        Configuration::MitStar => MitStar::<P::Space, V>::boxed(query, parameters, label)?,
+        Configuration::EitStar => EitStar::<P::Space, V>::boxed(query, parameters, label)?,
+        Configuration::MitStarAs => MitStarAs::<P::Space, V>::boxed(query, parameters, label)?,
+        Configuration::MitStarEis => MitStarEis::<P::Space, V>::boxed(query, parameters, label)?,
+        Configuration::MitStarSc => MitStarSc::<P::Space, V>::boxed(query, parameters, label)?,
+        Configuration::MitStarSr => MitStarSr::<P::Space, V>::boxed(query, parameters, label)?,
+        Configuration::BitStar => BitStar::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::AbitStar => {
-            family::<BitStar<P::Space, V>, _, _>(query, parameters.abit_star(), label)?
+            BitStar::<P::Space, V>::boxed(query, parameters.abit_star(), label)?
         }
-        Configuration::AitStar => family::<AitStar<P::Space, V>, _, _>(query, parameters, label)?,
+        Configuration::AitStar => AitStar::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::RrtConnect => {
             let (space, validity, start, goals) = query;
             let mut planner = RrtConnect::new(space, validity, (start, goals), parameters)?;
@@ -236,40 +228,15 @@ where
     })
 }
 
-/// A configuration of the EIT* family for a query: the planner type `P` as the alias names it,
-/// or — when `parameters.near_terminals` is above 0 — the same planner with its sampler in the
-/// [`NearTerminals`] wrapper.
-fn family<P, S, V>(
-    (space, validity, start, goals): (S, V, Vec<f64>, Vec<Vec<f64>>),
-    parameters: Parameters,
-    label: &str,
-) -> Result<Box<dyn Planner + Send>, BuildError>
-where
-    P: FamilyMember<S, V>,
-{
-    if parameters.near_terminals.unwrap_or(0.0) > 0.0 {
-        P::near_terminals(space, validity, (start, goals), parameters, label)
-    } else {
-        P::plain(space, validity, (start, goals), parameters, label)
-    }
-}
+/// What a planner of the EIT* family is built from: space, validity checker, start, goals.
+type Parts<S, V> = (S, V, Vec<f64>, Vec<Vec<f64>>);
 
-/// The query a planner is built for: start and goals.
-type Query = (Vec<f64>, Vec<Vec<f64>>);
-
-/// A planner type of the EIT* family, built as it is or with its sampler wrapped.
+/// A planner type of the EIT* family (as its alias names it), built for `build_planner`.
 trait FamilyMember<S, V> {
-    fn plain(
-        space: S,
-        validity: V,
-        query: Query,
-        parameters: Parameters,
-        label: &str,
-    ) -> Result<Box<dyn Planner + Send>, BuildError>;
-    fn near_terminals(
-        space: S,
-        validity: V,
-        query: Query,
+    /// The planner for `parts`, with its sampler in the [`NearTerminals`] wrapper when
+    /// `parameters.near_terminals` is above 0.
+    fn boxed(
+        parts: Parts<S, V>,
         parameters: Parameters,
         label: &str,
     ) -> Result<Box<dyn Planner + Send>, BuildError>;
@@ -284,35 +251,39 @@ where
     H: Heuristic<S> + Default + Send + 'static,
     G: Guidance + Send + 'static,
 {
-    fn plain(
-        space: S,
-        validity: V,
-        (start, goals): Query,
+    fn boxed(
+        parts: Parts<S, V>,
         parameters: Parameters,
         label: &str,
     ) -> Result<Box<dyn Planner + Send>, BuildError> {
-        Ok(Box::new(
-            Self::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ))
+        if parameters.near_terminals.unwrap_or(0.0) > 0.0 {
+            built::<S, V, NearTerminals<Smp>, E, H, G>(parts, parameters, label)
+        } else {
+            built::<S, V, Smp, E, H, G>(parts, parameters, label)
+        }
     }
+}
 
-    fn near_terminals(
-        space: S,
-        validity: V,
-        (start, goals): Query,
-        parameters: Parameters,
-        label: &str,
-    ) -> Result<Box<dyn Planner + Send>, BuildError> {
-        Ok(Box::new(
-            Eit::<S, V, NearTerminals<Smp>, E, H, G>::builder(space, validity, start, goals)
-                .parameters(parameters)
-                .name(label)
-                .build()?,
-        ))
-    }
+/// `Eit` with exactly these parts, named `label`.
+fn built<S, V, Smp, E, H, G>(
+    (space, validity, start, goals): Parts<S, V>,
+    parameters: Parameters,
+    label: &str,
+) -> Result<Box<dyn Planner + Send>, BuildError>
+where
+    S: StateSpace + Send + 'static,
+    V: StateValidity + Send + 'static,
+    Smp: Sampler<S, Counted<V>> + SamplerPart<S> + Clone + Send + 'static,
+    E: EdgeChecker<S, Counted<V>> + CheckerPart<S> + Clone + Send + 'static,
+    H: Heuristic<S> + Default + Send + 'static,
+    G: Guidance + Send + 'static,
+{
+    Ok(Box::new(
+        Eit::<S, V, Smp, E, H, G>::builder(space, validity, start, goals)
+            .parameters(parameters)
+            .name(label)
+            .build()?,
+    ))
 }
 
 #[cfg(test)]
