@@ -56,7 +56,12 @@ fn solve(certification: u32, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64)
                 .unwrap(),
         )
     };
-    let outcome = planner.solve(&stop).unwrap();
+    run(planner.as_mut(), &stop)
+}
+
+/// Solves with `planner` until `stop`: solved, the path, certification failures.
+fn run(planner: &mut dyn Planner, stop: &dyn mit_star::Termination) -> (bool, Vec<Vec<f64>>, u64) {
+    let outcome = planner.solve(stop).unwrap();
     let path = outcome
         .solution()
         .map(|s| s.path.iter().map(<[f64]>::to_vec).collect())
@@ -115,18 +120,7 @@ fn solve_rrt_connect(certification: u32, seed: u64) -> (bool, Vec<Vec<f64>>, u64
     };
     let query = (vec![0.1, 0.5], vec![vec![0.9, 0.5]]);
     let mut planner = mit_star::RrtConnect::new(space, world, query, parameters).unwrap();
-    let outcome = planner
-        .solve(&FirstSolution.or(TimeLimit::seconds(2.0)))
-        .unwrap();
-    let path = outcome
-        .solution()
-        .map(|s| s.path.iter().map(<[f64]>::to_vec).collect())
-        .unwrap_or_default();
-    (
-        outcome.is_solved(),
-        path,
-        planner.counters().certification_failures,
-    )
+    run(&mut planner, &FirstSolution.or(TimeLimit::seconds(2.0)))
 }
 
 #[test]
