@@ -320,6 +320,10 @@ where
                 let tree = &self.trees[t];
                 let parent = tree.parents[id as usize];
                 if !tree.certified[id as usize] {
+                    // An exact certification (a box world's segment test) does not poll.
+                    if spaces::Stop::should_stop(stop) {
+                        return;
+                    }
                     match self.core.certify(tree.state(parent), tree.state(id), stop) {
                         EdgeStatus::Valid => self.trees[t].certified[id as usize] = true,
                         EdgeStatus::Unknown => return,
