@@ -157,8 +157,9 @@ impl<T> NearTerminals<T> {
         &self.inner
     }
 
-    /// Draws one candidate near a terminal into `out`.
-    fn draw_near<S: StateSpace + ?Sized>(&mut self, space: &S, out: &mut [f64]) {
+    /// Draws one candidate near a terminal into `out`; `false` if it could not (a scale that
+    /// rounds to no valid `σ`, which the checks in [`with_scales`](Self::with_scales) rule out).
+    fn draw_near<S: StateSpace + ?Sized>(&mut self, space: &S, out: &mut [f64]) -> bool {
         let n = out.len();
         let count = self.terminals.len() / n;
         let rng = self.draws.rng();
@@ -174,9 +175,11 @@ impl<T> NearTerminals<T> {
             low.exp()
         };
         let terminal = &self.terminals[index * n..(index + 1) * n];
-        // σ was validated when it was set, so the step is well formed.
-        let step = GaussianStep::new(sigma).unwrap_or_else(|_| unreachable!("σ validated"));
+        let Ok(step) = GaussianStep::new(sigma) else {
+            return false;
+        };
         self.draws.perturb(&step, space, terminal, out);
+        true
     }
 }
 
@@ -213,8 +216,7 @@ where
                 };
                 return Err(SampleError::DimensionMismatch { expected, got });
             }
-            self.draw_near(space, out);
-            if !self.draws.set.contains(space, bound.cost(), out) {
+            if !self.draw_near(space, out) || !self.draws.set.contains(space, bound.cost(), out) {
                 self.draws.reject();
             } else if self.draws.check(validity, out) {
                 self.drew_last = true;
