@@ -3,23 +3,26 @@
 use std::ops::Range;
 use std::sync::Arc;
 
-use glam::{Affine3A, Vec3A};
-use spaces::StateSpace;
-use validity::StateValidity;
+use glam::Vec3A;
+use spaces::{StateSpace, Stop};
+use validity::{EdgeStatus, MotionProgress, StateValidity};
 
 use wide::f32x8;
 
 use crate::lanes::{LANES, LaneKinematics, Point8, Pose8};
 use crate::scratch_cell::ScratchCell;
-use crate::{Kinematics, Obstacle, RobotModel, Scene};
+use crate::{Kinematics, LeverArms, Obstacle, RobotModel, Scene};
 
-/// What the checks share between clones: the kinematics, the scene and the pair lists.
+/// What the checks share between clones: the kinematics, the scene, the pair lists and the
+/// bounds certification uses.
 #[derive(Debug)]
-struct Shared {
-    fk: Kinematics,
+pub(crate) struct Shared {
+    pub(crate) fk: Kinematics,
     lanes: LaneKinematics,
-    lower: Vec<f64>,
-    upper: Vec<f64>,
+    pub(crate) lower: Vec<f64>,
+    pub(crate) upper: Vec<f64>,
+    /// Per coordinate: the joint wraps around (continuous), so motions go the short way.
+    pub(crate) wraps: Vec<bool>,
     obstacles: Vec<Obstacle>,
     /// Links with spheres, in tree order: link, its sphere range, local bounding sphere.
     links: Vec<(usize, Range<usize>, Vec3A, f32)>,
@@ -27,40 +30,65 @@ struct Shared {
     spheres: Vec<(Vec3A, f32)>,
     /// Self-collision pairs as indices into `links`.
     pairs: Vec<(usize, usize)>,
+    /// How much every sphere is grown in every test, covering the `f32` rounding of the
+    /// kinematics and of the contact tests (see [`ArmChecker::margin`]).
+    pub(crate) margin: f64,
+    /// The margin per entry of `links`, in every lane: the growth of a plain check.
+    plain: Vec<f32x8>,
+    /// Per entry of `links`, per coordinate: the link's lever arm ([`LeverArms`]).
+    pub(crate) levers: Vec<f64>,
 }
 
-/// Per-clone scratch: link poses and sphere centres, reused by every check.
+/// Per-clone scratch, reused by every check.
 #[derive(Debug, Clone)]
-struct Scratch {
-    poses: Vec<Affine3A>,
-    centers: Vec<Vec3A>,
-    /// Per entry of `Shared::links`: its world bounding-sphere centre, and whether its sphere
-    /// centres are placed for the current configuration.
-    bounds: Vec<Vec3A>,
-    placed: Vec<bool>,
-    /// The same, eight configurations at a time, and the joint values by coordinate.
+pub(crate) struct Scratch {
+    pub(crate) lanes: LaneScratch,
+    pub(crate) certify: crate::arm_certification::CertifyScratch,
+}
+
+/// The eight-lane checks' buffers: link poses, sphere centres, link bounding-sphere centres
+/// (and whether a link's sphere centres are placed for the current batch), joint values by
+/// coordinate.
+#[derive(Debug, Clone)]
+pub(crate) struct LaneScratch {
     poses8: Vec<Pose8>,
     centers8: Vec<Point8>,
     bounds8: Vec<Point8>,
+    placed: Vec<bool>,
     q8: Vec<f32x8>,
 }
 
+/// Smallest growth of the spheres in every test, in metres: covers the `f32` rounding of the
+/// kinematics and the contact tests near the origin (measured: under 2e-6 m for the Panda,
+/// `tests/one_sided.rs`).
+const MARGIN_FLOOR: f64 = 2e-5;
+
+/// Further growth per metre of the scene's extent (obstacles' distance from the base plus the
+/// robot's reach): `f32` rounding grows with the magnitude of the coordinates.
+const MARGIN_PER_METRE: f64 = 2e-6;
+
 /// The collision checker of an arm in a scene: a configuration is valid if it is within the
 /// joint limits, no sphere of the robot meets an obstacle, and no two spheres of a
-/// self-collision pair of links meet.
+/// self-collision pair of links meet — every sphere grown by a small [margin](Self::margin)
+/// that covers the rounding of the `f32` arithmetic, so that a configuration this checker
+/// calls valid is valid in exact arithmetic too (one-sided).
 ///
-/// Forward kinematics places the links ([`Kinematics`], `f32`); each link with spheres is
-/// first tested as one bounding sphere against each obstacle's bounding sphere and the
-/// obstacle itself (broad phase), and its small spheres only if that hits; self-collision
-/// pairs likewise test the two links' bounding spheres first. The first contact ends the
-/// check. Sphere centres are placed only for links that reach the narrow phase.
+/// Forward kinematics places the links in `f32x8` lanes, eight configurations at once (as
+/// VAMP lays out its checks; one configuration uses one lane of the same code, so a single
+/// check and a batch share one arithmetic); each link with spheres is first tested as one
+/// bounding sphere against each obstacle's bounding sphere and the obstacle itself (broad
+/// phase), and its small spheres only if that hits; self-collision pairs likewise test the two
+/// links' bounding spheres first. Sphere centres are placed only for links that reach the
+/// narrow phase.
 ///
 /// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width)
-/// 8): eight configurations are checked at once in `f32x8` lanes — forward kinematics,
-/// broad and narrow phases, self-collision — with the same arithmetic as the scalar check.
-/// A lane drops out of the work once a lane before it is known invalid, and the batch ends
+/// 8): a lane drops out of the work once a lane before it is known invalid, and the batch ends
 /// when no lane before the first invalid one is left to decide, so the answer is exactly the
-/// first invalid configuration.
+/// first invalid configuration — the one testing them one by one finds.
+///
+/// **Certified motion** ([`StateValidity::certify_motion`]): every configuration of an edge
+/// is proven collision-free, not only its grid points (see [`LeverArms`] for the bound and
+/// `arm_certification.rs` for the walk).
 ///
 /// Clones share the model and scene (an [`Arc`]) and own their scratch buffers, so a check
 /// never allocates. The scratch sits behind a mutex so that problems holding a checker
@@ -69,8 +97,8 @@ struct Scratch {
 /// microsecond).
 #[derive(Debug, Clone)]
 pub struct ArmChecker {
-    shared: Arc<Shared>,
-    scratch: ScratchCell<Scratch>,
+    pub(crate) shared: Arc<Shared>,
+    pub(crate) scratch: ScratchCell<Scratch>,
 }
 
 impl ArmChecker {
@@ -98,27 +126,56 @@ impl ArmChecker {
             .iter()
             .map(|s| (s.center.as_vec3a(), s.radius as f32))
             .collect();
-        let scratch = Scratch {
-            poses: vec![Affine3A::IDENTITY; fk.link_count()],
-            centers: vec![Vec3A::ZERO; fk.sphere_count()],
-            bounds: vec![Vec3A::ZERO; links.len()],
-            placed: vec![false; links.len()],
-            poses8: vec![Pose8::IDENTITY; fk.link_count()],
-            centers8: vec![[f32x8::ZERO; 3]; fk.sphere_count()],
-            bounds8: vec![[f32x8::ZERO; 3]; links.len()],
-            q8: vec![f32x8::ZERO; fk.dimension()],
-        };
         let space = robot.joint_space();
+        let dimension = fk.dimension();
+        let arms = LeverArms::new(robot);
+        let levers: Vec<f64> = links
+            .iter()
+            .flat_map(|&(link, ..)| (0..dimension).map(move |j| (link, j)))
+            .map(|(link, j)| arms.lever(link, j))
+            .collect();
+        let reach = (0..robot.links().len())
+            .flat_map(|l| (0..dimension).map(move |j| (l, j)))
+            .map(|(l, j)| arms.lever(l, j))
+            .fold(0.0, f64::max);
+        let far = scene
+            .obstacles()
+            .iter()
+            .map(|o| {
+                let (c, r) = o.bounding_sphere();
+                f64::from(c.length() + r)
+            })
+            .fold(0.0, f64::max);
+        let margin = MARGIN_FLOOR + MARGIN_PER_METRE * (reach + far);
+        let scratch = Scratch {
+            lanes: LaneScratch {
+                poses8: vec![Pose8::IDENTITY; fk.link_count()],
+                centers8: vec![[f32x8::ZERO; 3]; fk.sphere_count()],
+                bounds8: vec![[f32x8::ZERO; 3]; links.len()],
+                placed: vec![false; links.len()],
+                q8: vec![f32x8::ZERO; dimension],
+            },
+            certify: crate::arm_certification::CertifyScratch::new(dimension, links.len()),
+        };
+        let wraps = space
+            .joints()
+            .iter()
+            .map(|j| matches!(j.kind, spaces::JointKind::Continuous))
+            .collect();
         Self {
             shared: Arc::new(Shared {
                 lanes: LaneKinematics::new(&fk),
                 fk,
                 lower: space.lower().to_vec(),
                 upper: space.upper().to_vec(),
+                wraps,
                 obstacles: scene.obstacles().to_vec(),
+                plain: vec![f32x8::splat(margin as f32); links.len()],
                 links,
                 spheres,
                 pairs,
+                margin,
+                levers,
             }),
             scratch: ScratchCell::new(scratch),
         }
@@ -128,81 +185,22 @@ impl ArmChecker {
     pub fn kinematics(&self) -> &Kinematics {
         &self.shared.fk
     }
+
+    /// How much every sphere is grown in every test, in metres: enough to cover the rounding
+    /// of the `f32` kinematics and contact tests, so that a configuration this checker calls
+    /// valid has every sphere clear of the scene and of the other links in exact arithmetic.
+    /// `2e-5 m` plus `2e-6` per metre of the scene's extent (about 25 µm for the Panda in a
+    /// MotionBenchMaker scene).
+    pub fn margin(&self) -> f64 {
+        self.shared.margin
+    }
 }
 
 impl StateValidity for ArmChecker {
     fn is_valid(&self, q: &[f64]) -> bool {
         let s = &*self.shared;
-        if q.len() != s.lower.len()
-            || q.iter()
-                .zip(s.lower.iter().zip(&s.upper))
-                .any(|(x, (lo, hi))| !(lo <= x && x <= hi))
-        {
-            return false;
-        }
         let mut guard = self.scratch.lock();
-        let Scratch {
-            poses,
-            centers,
-            bounds,
-            placed,
-            ..
-        } = &mut *guard;
-        s.fk.link_poses(q, poses);
-        placed.fill(false);
-        // Scene: each link's bounding sphere, then its spheres.
-        for (k, (link, range, center, radius)) in s.links.iter().enumerate() {
-            let pose = &poses[*link];
-            bounds[k] = pose.transform_point3a(*center);
-            for obstacle in &s.obstacles {
-                if !obstacle.collides_sphere(bounds[k], *radius) {
-                    continue;
-                }
-                if !placed[k] {
-                    place(pose, &s.spheres[range.clone()], &mut centers[range.clone()]);
-                    placed[k] = true;
-                }
-                let hit = range
-                    .clone()
-                    .any(|i| obstacle.collides_sphere(centers[i], s.spheres[i].1));
-                if hit {
-                    return false;
-                }
-            }
-        }
-        // Self: bounding spheres of the two links, then sphere pairs.
-        for &(a, b) in &s.pairs {
-            let (la, lb) = (&s.links[a], &s.links[b]);
-            let reach = la.3 + lb.3;
-            if bounds[a].distance_squared(bounds[b]) > reach * reach {
-                continue;
-            }
-            for (k, l) in [(a, la), (b, lb)] {
-                if !placed[k] {
-                    place(
-                        &poses[l.0],
-                        &s.spheres[l.1.clone()],
-                        &mut centers[l.1.clone()],
-                    );
-                    placed[k] = true;
-                }
-            }
-            // Each sphere of the first link against the second's bounding sphere, then its
-            // spheres.
-            for i in la.1.clone() {
-                let near = s.spheres[i].1 + lb.3;
-                if centers[i].distance_squared(bounds[b]) > near * near {
-                    continue;
-                }
-                for j in lb.1.clone() {
-                    let r = s.spheres[i].1 + s.spheres[j].1;
-                    if centers[i].distance_squared(centers[j]) <= r * r {
-                        return false;
-                    }
-                }
-            }
-        }
-        true
+        invalid_lanes(s, &mut guard.lanes, q, q.len().max(1), &s.plain) == 0
     }
 
     #[inline]
@@ -210,10 +208,26 @@ impl StateValidity for ArmChecker {
         LANES
     }
 
+    /// Certified motion along the robot's joint space (straight in joint coordinates, the
+    /// short way round for wrapping joints): see `arm_certification.rs` for the guarantee.
+    /// `None` for a space of another dimension.
+    fn certify_motion(
+        &self,
+        space: &dyn StateSpace,
+        a: &[f64],
+        b: &[f64],
+        progress: &mut MotionProgress,
+        stop: &dyn Stop,
+    ) -> Option<EdgeStatus> {
+        self.certify(space, (a, b), progress, stop)
+    }
+
     fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
         let dimension = dimension.max(1);
+        let s = &*self.shared;
+        let mut guard = self.scratch.lock();
         for (c, chunk) in states.chunks(LANES * dimension).enumerate() {
-            let invalid = self.invalid_lanes(chunk, dimension);
+            let invalid = invalid_lanes(s, &mut guard.lanes, chunk, dimension, &s.plain);
             if invalid != 0 {
                 return Some(c * LANES + invalid.trailing_zeros() as usize);
             }
@@ -222,138 +236,137 @@ impl StateValidity for ArmChecker {
     }
 }
 
-impl ArmChecker {
-    /// Bit `l` set if configuration `l` of `chunk` (at most [`LANES`] configurations of
-    /// `dimension` values) is invalid, exact for every lane up to the first invalid one.
-    fn invalid_lanes(&self, chunk: &[f64], dimension: usize) -> u32 {
-        let s = &*self.shared;
-        let count = chunk.len() / dimension;
-        let live: u32 = (1 << count) - 1;
-        if dimension != s.lower.len() {
-            return live;
+/// Bit `l` set if configuration `l` of `chunk` (at most [`LANES`] configurations of
+/// `dimension` values) is invalid with every sphere of the link in entry `k` of
+/// `Shared::links` grown by lane `l` of `grow[k]`; exact for every lane up to the first invalid
+/// one. A chunk of the wrong dimension is invalid in every lane.
+pub(crate) fn invalid_lanes(
+    s: &Shared,
+    scratch: &mut LaneScratch,
+    chunk: &[f64],
+    dimension: usize,
+    grow: &[f32x8],
+) -> u32 {
+    let count = (chunk.len() / dimension).min(LANES);
+    let live: u32 = (1 << count) - 1;
+    if dimension != s.lower.len() || chunk.len() != count * dimension || count == 0 {
+        return live.max(1);
+    }
+    let LaneScratch {
+        poses8,
+        centers8,
+        bounds8,
+        placed,
+        q8,
+    } = scratch;
+    let mut invalid = 0u32;
+    for (l, q) in chunk.chunks_exact(dimension).enumerate() {
+        let out = q
+            .iter()
+            .zip(s.lower.iter().zip(&s.upper))
+            .any(|(x, (lo, hi))| !(lo <= x && x <= hi));
+        invalid |= u32::from(out) << l;
+    }
+    // Lanes still to decide: those before the first invalid one.
+    let undecided = |invalid: u32| {
+        if invalid == 0 {
+            live
+        } else {
+            live & ((1 << invalid.trailing_zeros()) - 1)
         }
-        let mut guard = self.scratch.lock();
-        let Scratch {
-            poses8,
-            centers8,
-            bounds8,
-            placed,
-            q8,
-            ..
-        } = &mut *guard;
-        let mut invalid = 0u32;
-        for (l, q) in chunk.chunks_exact(dimension).enumerate() {
-            let out = q
-                .iter()
-                .zip(s.lower.iter().zip(&s.upper))
-                .any(|(x, (lo, hi))| !(lo <= x && x <= hi));
-            invalid |= u32::from(out) << l;
+    };
+    let mut active = undecided(invalid);
+    if active == 0 {
+        return invalid;
+    }
+    // Joint values by coordinate; padding lanes repeat configuration 0.
+    for (c, v) in q8.iter_mut().enumerate() {
+        *v = f32x8::new(std::array::from_fn(|l| {
+            chunk[if l < count { l } else { 0 } * dimension + c] as f32
+        }));
+    }
+    s.lanes.link_poses(q8, poses8);
+    placed.fill(false);
+    let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
+        for i in range.clone() {
+            centers[i] = pose.point(s.spheres[i].0);
         }
-        // Lanes still to decide: those before the first invalid one.
-        let undecided = |invalid: u32| {
-            if invalid == 0 {
-                live
-            } else {
-                live & ((1 << invalid.trailing_zeros()) - 1)
+    };
+    for (k, (link, range, center, radius)) in s.links.iter().enumerate() {
+        let pose = &poses8[*link];
+        bounds8[k] = pose.point(*center);
+        let bound = f32x8::splat(*radius) + grow[k];
+        for obstacle in &s.obstacles {
+            if obstacle.collides_spheres8(&bounds8[k], bound) & active == 0 {
+                continue;
             }
-        };
-        let mut active = undecided(invalid);
-        if active == 0 {
-            return invalid;
-        }
-        // Joint values by coordinate; padding lanes repeat configuration 0.
-        for (c, v) in q8.iter_mut().enumerate() {
-            *v = f32x8::new(std::array::from_fn(|l| {
-                chunk[if l < count { l } else { 0 } * dimension + c] as f32
-            }));
-        }
-        s.lanes.link_poses(q8, poses8);
-        placed.fill(false);
-        let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
+            if !placed[k] {
+                place8(pose, range, centers8);
+                placed[k] = true;
+            }
             for i in range.clone() {
-                centers[i] = pose.point(s.spheres[i].0);
-            }
-        };
-        for (k, (link, range, center, radius)) in s.links.iter().enumerate() {
-            let pose = &poses8[*link];
-            bounds8[k] = pose.point(*center);
-            for obstacle in &s.obstacles {
-                if obstacle.collides_spheres8(&bounds8[k], f32x8::splat(*radius)) & active == 0 {
-                    continue;
-                }
-                if !placed[k] {
-                    place8(pose, range, centers8);
-                    placed[k] = true;
-                }
-                for i in range.clone() {
-                    let hit =
-                        obstacle.collides_spheres8(&centers8[i], f32x8::splat(s.spheres[i].1));
-                    if hit & active != 0 {
-                        invalid |= hit & active;
-                        active = undecided(invalid);
-                        if active == 0 {
-                            return invalid;
-                        }
+                let radius = f32x8::splat(s.spheres[i].1) + grow[k];
+                let hit = obstacle.collides_spheres8(&centers8[i], radius);
+                if hit & active != 0 {
+                    invalid |= hit & active;
+                    active = undecided(invalid);
+                    if active == 0 {
+                        return invalid;
                     }
                 }
             }
         }
-        for &(a, b) in &s.pairs {
-            let (la, lb) = (&s.links[a], &s.links[b]);
-            let reach = f32x8::splat(la.3 + lb.3);
-            if distance_squared(&bounds8[a], &bounds8[b])
-                .simd_le(reach * reach)
+    }
+    for &(a, b) in &s.pairs {
+        let (la, lb) = (&s.links[a], &s.links[b]);
+        let grown = grow[a] + grow[b];
+        let reach = f32x8::splat(la.3 + lb.3) + grown;
+        if distance_squared(&bounds8[a], &bounds8[b])
+            .simd_le(reach * reach)
+            .to_bitmask()
+            & active
+            == 0
+        {
+            continue;
+        }
+        for (k, l) in [(a, la), (b, lb)] {
+            if !placed[k] {
+                place8(&poses8[l.0], &l.1, centers8);
+                placed[k] = true;
+            }
+        }
+        // Each sphere of the first link against the second's bounding sphere, then its
+        // spheres.
+        for i in la.1.clone() {
+            let near = f32x8::splat(s.spheres[i].1 + lb.3) + grown;
+            if distance_squared(&centers8[i], &bounds8[b])
+                .simd_le(near * near)
                 .to_bitmask()
                 & active
                 == 0
             {
                 continue;
             }
-            for (k, l) in [(a, la), (b, lb)] {
-                if !placed[k] {
-                    place8(&poses8[l.0], &l.1, centers8);
-                    placed[k] = true;
-                }
-            }
-            for i in la.1.clone() {
-                let near = f32x8::splat(s.spheres[i].1 + lb.3);
-                if distance_squared(&centers8[i], &bounds8[b])
-                    .simd_le(near * near)
-                    .to_bitmask()
-                    & active
-                    == 0
-                {
-                    continue;
-                }
-                for j in lb.1.clone() {
-                    let r = f32x8::splat(s.spheres[i].1 + s.spheres[j].1);
-                    let hit = distance_squared(&centers8[i], &centers8[j])
-                        .simd_le(r * r)
-                        .to_bitmask();
-                    if hit & active != 0 {
-                        invalid |= hit & active;
-                        active = undecided(invalid);
-                        if active == 0 {
-                            return invalid;
-                        }
+            for j in lb.1.clone() {
+                let r = f32x8::splat(s.spheres[i].1 + s.spheres[j].1) + grown;
+                let hit = distance_squared(&centers8[i], &centers8[j])
+                    .simd_le(r * r)
+                    .to_bitmask();
+                if hit & active != 0 {
+                    invalid |= hit & active;
+                    active = undecided(invalid);
+                    if active == 0 {
+                        return invalid;
                     }
                 }
             }
         }
-        invalid
     }
+    invalid
 }
 
 #[inline]
 fn distance_squared(a: &Point8, b: &Point8) -> f32x8 {
     let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
     x * x + y * y + z * z
-}
-
-/// Places local sphere centres by a link pose.
-#[inline]
-fn place(pose: &Affine3A, spheres: &[(Vec3A, f32)], out: &mut [Vec3A]) {
-    for (o, (c, _)) in out.iter_mut().zip(spheres) {
-        *o = pose.transform_point3a(*c);
-    }
 }

@@ -25,18 +25,21 @@
 //! | [`Obstacle`], [`Shape`] | boxes, cylinders and spheres with poses; exact sphere contact tests |
 //! | [`Scene`] | a MoveIt planning scene (MotionBenchMaker YAML): obstacles and allowed collisions |
 //! | [`MbmProblem`] | a MotionBenchMaker scene + request pair |
-//! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases |
+//! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases, one-sided (a margin covers `f32` rounding), and certified motion (every configuration of an edge, not only grid points) |
+//! | [`LeverArms`], [`CERTIFICATION_FLOOR`] | how far each link's spheres can move per unit of each joint, over all configurations: the bound certified motion rests on |
 //! | [`ParryChecker`] | the reference checker: `f64`, parry queries, no culling (tests and path re-checks) |
 //! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with VAMP's default check density and the finer grid its solution edges are certified on |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 
 #![forbid(unsafe_code)]
 
+mod arm_certification;
 mod arm_checker;
 mod arm_error;
 mod arm_problem;
 mod kinematics;
 mod lanes;
+mod lever_arms;
 mod mbm_problem;
 mod model_error;
 mod obstacle;
@@ -47,10 +50,12 @@ mod scene_error;
 mod scratch_cell;
 mod srdf;
 
+pub use arm_certification::FLOOR as CERTIFICATION_FLOOR;
 pub use arm_checker::ArmChecker;
 pub use arm_error::ArmError;
 pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
 pub use kinematics::Kinematics;
+pub use lever_arms::LeverArms;
 pub use mbm_problem::MbmProblem;
 pub use model_error::ModelError;
 pub use obstacle::{Obstacle, Shape};

@@ -4,8 +4,8 @@
 use spaces::{StateSpace, Stop};
 
 use crate::{
-    EdgeGrid, EdgeProgress, EdgeStatus, LengthBuckets, Preparation, Segment, StateValidity,
-    ValidityError,
+    EdgeGrid, EdgeProgress, EdgeStatus, LengthBuckets, MotionProgress, Preparation, Segment,
+    StateValidity, ValidityError,
 };
 
 /// Counters of edge-checking work, for benchmarks.
@@ -27,6 +27,9 @@ pub struct EdgeCounters {
     pub certifications: u64,
     /// Certifications that found an invalid point the edge's own grid had missed.
     pub certification_failures: u64,
+    /// Configurations evaluated by certifications: the finer grid's points, or the grown
+    /// configurations of a motion certification ([`StateValidity::certify_motion`]).
+    pub certification_points: u64,
     /// Sparse and full checks and their points, by edge length.
     pub by_length: LengthBuckets,
 }
@@ -57,6 +60,11 @@ pub struct GridWalker {
     /// slices a planner is given would otherwise never finish).
     scan_edge: Vec<f64>,
     scan_next: u64,
+    /// An interrupted certification: the edge's ends (canonical order; empty: none), how far
+    /// a motion certification came, and how many new points a grid certification walked.
+    certifying: Vec<f64>,
+    certified_motion: MotionProgress,
+    certified_points: u64,
     counters: EdgeCounters,
 }
 
@@ -127,6 +135,9 @@ impl GridWalker {
             accelerated: true,
             scan_edge: Vec::new(),
             scan_next: 0,
+            certifying: Vec::new(),
+            certified_motion: MotionProgress::default(),
+            certified_points: 0,
             counters: EdgeCounters::default(),
         })
     }
@@ -412,23 +423,23 @@ impl GridWalker {
         Walked::Done(walked)
     }
 
-    /// Certifies the edge `a — b` on a grid `factor` times finer than its own: tests, in order
-    /// from the [canonical end](canonical_ends), every point of the grid of step
-    /// `step / factor` that is not a point of the edge's own grid (those were tested by the
-    /// checks that whitelisted it), stopping at the first invalid one.
+    /// Certifies the edge `a — b`: proves every state of it valid, not only the points of its
+    /// grid, stopping at the first state found invalid.
     ///
-    /// For checkers whose grid points can miss a thin contact between them (an arm's spheres
-    /// graze a corner between two configurations `L` apart), a planner certifies the edges it
-    /// is about to add to its solution tree; it costs `factor − 1` times the points of those
-    /// few edges. Returns [`EdgeStatus::Valid`] at once for `factor ≤ 1`, and
-    /// [`EdgeStatus::Unknown`] if `stop` fired first (polled as in [`advance`](Self::advance);
-    /// a later call starts over). Batched checkers get [`StateValidity::batch_width`] points
-    /// per call.
+    /// A checker that certifies motions ([`StateValidity::certify_motion`]: a box
+    /// [`World`](crate::World) exactly, by slab tests; the `robot` crate's arm checker by
+    /// spheres grown by how far they can move) certifies the whole edge, whatever the step.
+    /// Any other checker is certified on a grid `factor` times finer than the edge's own: every
+    /// point of the grid of step `step / factor` that is not a point of the edge's own grid
+    /// (those were tested by the checks that whitelisted it), in order from the
+    /// [canonical end](canonical_ends), [`StateValidity::batch_width`] points per call.
     ///
-    /// A checker that decides whole segments exactly ([`StateValidity::segment_is_valid`], a
-    /// box [`World`](crate::World)) in a space whose edges are straight lines
-    /// ([`StateSpace::is_euclidean`]) certifies the edge at once, exactly, instead of on the
-    /// finer grid.
+    /// A planner certifies the edges it is about to build its solution from. Returns
+    /// [`EdgeStatus::Valid`] at once for `factor ≤ 1` (certification off), and
+    /// [`EdgeStatus::Unknown`] if `stop` fired first (polled as in [`advance`](Self::advance)):
+    /// the walker remembers how far the certification of that edge came, and the next
+    /// certification of the same edge goes on from there, so that a planner driven by short
+    /// time slices still finishes it.
     pub fn certify<S, V>(
         &mut self,
         space: &S,
@@ -445,16 +456,60 @@ impl GridWalker {
             return EdgeStatus::Valid;
         }
         let (a, b) = canonical_ends(a, b);
-        if space.is_euclidean()
-            && let Some(valid) = validity.segment_is_valid(a, b)
-        {
-            self.counters.certifications += 1;
-            if valid {
-                return EdgeStatus::Valid;
+        let resumes = self.certifying.len() == a.len() + b.len()
+            && self
+                .certifying
+                .iter()
+                .zip(a.iter().chain(b))
+                .all(|(x, y)| x.to_bits() == y.to_bits());
+        let (mut motion, walked) = if resumes {
+            (self.certified_motion, self.certified_points)
+        } else {
+            (MotionProgress::default(), 0)
+        };
+        self.certifying.clear();
+        let before = motion.evaluations();
+        let status = match validity.certify_motion(&space, a, b, &mut motion, stop) {
+            Some(status) => {
+                let evaluated = motion.evaluations() - before;
+                self.counters.certification_points += evaluated;
+                if status == EdgeStatus::Unknown {
+                    self.certified_motion = motion;
+                }
+                status
             }
-            self.counters.certification_failures += 1;
-            return EdgeStatus::Invalid;
+            None => {
+                let (status, walked) = self.certify_on_grid(space, validity, (a, b), factor, walked, stop);
+                self.certified_points = walked;
+                status
+            }
+        };
+        match status {
+            EdgeStatus::Unknown => self.certifying.extend(a.iter().chain(b)),
+            EdgeStatus::Valid => self.counters.certifications += 1,
+            EdgeStatus::Invalid => {
+                self.counters.certifications += 1;
+                self.counters.certification_failures += 1;
+            }
         }
+        status
+    }
+
+    /// [`certify`](Self::certify) on a grid `factor` times finer than the edge's own, from
+    /// the `walked`-th new point on; returns the status and the new points walked so far.
+    fn certify_on_grid<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b): (&[f64], &[f64]),
+        factor: u32,
+        walked: u64,
+        stop: &dyn Stop,
+    ) -> (EdgeStatus, u64)
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
         let length = space.distance(a, b);
         let coarse = EdgeGrid::new(length, self.step).intervals();
         let fine = EdgeGrid::new(length, self.step / f64::from(factor));
@@ -463,23 +518,23 @@ impl GridWalker {
         // those are the multiples of `intervals / gcd`, `gcd − 1` of them.
         let on_coarse = |i: u64| u128::from(i) * u128::from(coarse) % u128::from(intervals) == 0;
         let new_points = points - (gcd(coarse, intervals) - 1);
-        self.counters.certifications += 1;
         let width = validity.batch_width().clamp(1, STOP_POLL as usize);
         let fractions = (1..=points)
             .filter(|&i| !on_coarse(i))
+            .skip(walked as usize)
             .map(|i| fine.fraction(i));
         let batches = Batches {
             width,
-            polls_first: new_points > STOP_POLL,
+            polls_first: new_points - walked.min(new_points) > STOP_POLL,
             prepared: false,
         };
-        match self.walk_batches(space, validity, (a, b), fractions, batches, stop) {
-            Walked::Done(_) => EdgeStatus::Valid,
-            Walked::Stopped(_) => EdgeStatus::Unknown,
-            Walked::Invalid => {
-                self.counters.certification_failures += 1;
-                EdgeStatus::Invalid
-            }
+        let before = self.counters.points_tested;
+        let outcome = self.walk_batches(space, validity, (a, b), fractions, batches, stop);
+        self.counters.certification_points += self.counters.points_tested - before;
+        match outcome {
+            Walked::Done(_) => (EdgeStatus::Valid, 0),
+            Walked::Stopped(more) => (EdgeStatus::Unknown, walked + more),
+            Walked::Invalid => (EdgeStatus::Invalid, 0),
         }
     }
 }

@@ -42,6 +42,7 @@
 //! | [`FixedSparseChecker`] | EIT*'s sparse levels: 1, 3, 7, 15, … checks per edge |
 //! | [`LengthAdaptiveChecker`] | MIT*'s length-related adaptive sparse checks |
 //! | [`EdgeGrid`], [`BisectionOrder`] | the canonical grid of an edge and its bisection order |
+//! | [`MotionProgress`] | how far the certification of a motion came (a stopped one resumes) |
 //! | [`EdgeProgress`], [`EdgeStatus`], [`EdgeCounters`], [`GridWalker`], [`canonical_ends`] | per-edge memory, outcomes, counters, the shared walker, the end every walk starts from |
 //! | [`LengthBuckets`], [`LENGTH_BUCKET_BOUNDS`], [`LENGTH_BUCKET_LABELS`] | checks and points by edge length |
 //! | [`ValidityError`] | malformed parameters or worlds |
@@ -60,6 +61,7 @@ mod fixed_sparse_checker;
 mod grid_walker;
 mod length_adaptive_checker;
 mod length_buckets;
+mod motion_progress;
 mod segment;
 mod segment_validation;
 mod state_validity;
@@ -74,6 +76,7 @@ pub use error::ValidityError;
 pub use fixed_sparse_checker::FixedSparseChecker;
 pub use grid_walker::{EdgeCounters, GridWalker, STOP_POLL, canonical_ends};
 pub use length_adaptive_checker::LengthAdaptiveChecker;
+pub use motion_progress::MotionProgress;
 pub use length_buckets::{LENGTH_BUCKET_BOUNDS, LENGTH_BUCKET_LABELS, LengthBuckets};
 pub use segment::{Preparation, Segment};
 pub use segment_validation::{SegmentCause, SegmentVerdict};

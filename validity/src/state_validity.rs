@@ -2,7 +2,9 @@
 
 use std::cell::Cell;
 
-use crate::{Preparation, Segment};
+use spaces::{StateSpace, Stop};
+
+use crate::{EdgeStatus, MotionProgress, Preparation, Segment};
 
 /// Decides whether a single state is valid (collision-free and within any constraints).
 ///
@@ -47,12 +49,32 @@ pub trait StateValidity {
             .position(|s| !self.is_valid(s))
     }
 
-    /// Decides the whole straight segment `a — b` exactly, if this checker can (`None`, the
-    /// default, when it can only test states). A box [`World`](crate::World) answers with its
-    /// slab tests, so certifying an edge ([`GridWalker::certify`](crate::GridWalker::certify))
-    /// catches a corner clipped between two grid points, whatever the step.
+    /// Certifies the motion from `a` to `b` — every state the space's interpolation passes
+    /// through, not only grid points — if this checker can (`None`, the default, when it can
+    /// only test states; the [`GridWalker`](crate::GridWalker) then certifies on a finer grid).
+    ///
+    /// - `Some(EdgeStatus::Valid)`: every state of the motion is valid.
+    /// - `Some(EdgeStatus::Invalid)`: a state of the motion is invalid, or the checker could
+    ///   not prove one valid (a certification may be conservative, never the other way).
+    /// - `Some(EdgeStatus::Unknown)`: `stop` fired first; `progress` holds how far the
+    ///   certification came, and a later call with the same motion and progress goes on from
+    ///   there. A checker polls `stop` often enough that a stopped certification returns within
+    ///   about the time of [`STOP_POLL`](crate::STOP_POLL) state checks.
+    ///
+    /// A box [`World`](crate::World) decides straight segments exactly with its slab tests (in
+    /// spaces whose edges are straight, [`StateSpace::is_euclidean`]); the `robot` crate's arm
+    /// checker bounds how far its spheres can move over an interval of the motion and tests
+    /// them grown by that bound. Both catch a contact between two grid points, whatever the
+    /// step.
     #[inline]
-    fn segment_is_valid(&self, _a: &[f64], _b: &[f64]) -> Option<bool> {
+    fn certify_motion(
+        &self,
+        _space: &dyn StateSpace,
+        _a: &[f64],
+        _b: &[f64],
+        _progress: &mut MotionProgress,
+        _stop: &dyn Stop,
+    ) -> Option<EdgeStatus> {
         None
     }
 
@@ -101,8 +123,15 @@ macro_rules! forward_state_validity {
             }
 
             #[inline]
-            fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
-                (**self).segment_is_valid(a, b)
+            fn certify_motion(
+                &self,
+                space: &dyn StateSpace,
+                a: &[f64],
+                b: &[f64],
+                progress: &mut MotionProgress,
+                stop: &dyn Stop,
+            ) -> Option<EdgeStatus> {
+                (**self).certify_motion(space, a, b, progress, stop)
             }
 
             #[inline]
@@ -205,10 +234,18 @@ impl<V: StateValidity> StateValidity for Counted<V> {
         self.inner.first_invalid(states, dimension)
     }
 
-    /// Not counted: a segment decision is no state check.
+    /// Not counted: a motion certification is no state check (the walker counts the
+    /// configurations it evaluates, `EdgeCounters::certification_points`).
     #[inline]
-    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
-        self.inner.segment_is_valid(a, b)
+    fn certify_motion(
+        &self,
+        space: &dyn StateSpace,
+        a: &[f64],
+        b: &[f64],
+        progress: &mut MotionProgress,
+        stop: &dyn Stop,
+    ) -> Option<EdgeStatus> {
+        self.inner.certify_motion(space, a, b, progress, stop)
     }
 
     /// Prepared like the wrapped checker.

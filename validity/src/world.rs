@@ -1,9 +1,9 @@
 //! [`World`]: axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics).
 
-use spaces::StateSpace;
+use spaces::{StateSpace, Stop};
 
 use crate::box_set::BoxSet;
-use crate::{Preparation, Segment, StateValidity, ValidityError};
+use crate::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity, ValidityError};
 
 /// Above this many boxes a world checks states through a bounding-volume hierarchy; at or
 /// below it a linear scan of the contiguous rows is as fast. Measured with
@@ -325,9 +325,32 @@ impl StateValidity for World {
         self.first_invalid_on_segment(segment, fractions)
     }
 
-    /// The exact slab tests of [`segment_verdict`](World::segment_verdict).
-    fn segment_is_valid(&self, a: &[f64], b: &[f64]) -> Option<bool> {
-        Some(self.segment_verdict(a, b).is_valid())
+    /// The exact slab tests of [`segment_verdict`](World::segment_verdict), in spaces whose
+    /// edges are straight (`None` otherwise). A certification begun after `stop` fired tests
+    /// nothing.
+    fn certify_motion(
+        &self,
+        space: &dyn StateSpace,
+        a: &[f64],
+        b: &[f64],
+        progress: &mut MotionProgress,
+        stop: &dyn Stop,
+    ) -> Option<EdgeStatus> {
+        if !space.is_euclidean() {
+            return None;
+        }
+        if progress.is_complete() {
+            return Some(EdgeStatus::Valid);
+        }
+        if stop.should_stop() {
+            return Some(EdgeStatus::Unknown);
+        }
+        progress.count(1);
+        if !self.segment_verdict(a, b).is_valid() {
+            return Some(EdgeStatus::Invalid);
+        }
+        *progress = progress.advanced(1.0, 0.0);
+        Some(EdgeStatus::Valid)
     }
 }
 
