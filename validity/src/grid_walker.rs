@@ -774,6 +774,34 @@ mod tests {
             walker.certify(&space, &free, (&[0.0], &[1.0]), 1, &stop),
             EdgeStatus::Valid
         );
+        // Neither a stopped certification nor factor 1 is a finished one.
+        assert_eq!(walker.counters().certifications, 0);
+    }
+
+    #[test]
+    fn a_stopped_certification_goes_on_where_it_stopped() {
+        let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
+        let mut walker = GridWalker::new(1e-2).unwrap();
+        let free = Counted::new(gap(2.0, 3.0));
+        // 300 new points; each call's stop fires on its third poll.
+        let mut calls = 0;
+        let status = loop {
+            calls += 1;
+            let fires = Polls::firing_at(3);
+            let status = walker.certify(&space, &free, (&[1.0], &[0.0]), 4, &fires);
+            if status != EdgeStatus::Unknown {
+                break status;
+            }
+        };
+        assert_eq!(status, EdgeStatus::Valid);
+        assert!(calls > 2, "{calls}");
+        // Every new point once: resumed, not started over.
+        assert_eq!(free.count(), 300);
+        assert_eq!(walker.counters().certification_points, 300);
         assert_eq!(walker.counters().certifications, 1);
+        // Another edge starts afresh.
+        let status = walker.certify(&space, &free, (&[0.0], &[0.5]), 4, &Never);
+        assert_eq!(status, EdgeStatus::Valid);
+        assert_eq!(free.count(), 450);
     }
 }
