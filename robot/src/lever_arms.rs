@@ -129,7 +129,8 @@ mod tests {
             let q: Vec<f64> = (0..7)
                 .map(|j| {
                     let u = (f64::from(k * 7 + j) * 0.618_034).fract();
-                    space.lower()[j as usize] + u * (space.upper()[j as usize] - space.lower()[j as usize])
+                    space.lower()[j as usize]
+                        + u * (space.upper()[j as usize] - space.lower()[j as usize])
                 })
                 .collect();
             fk.sphere_centers_f64(&q, &mut links, &mut here);
@@ -140,13 +141,20 @@ mod tests {
                 for (s, sphere) in panda.spheres().iter().enumerate() {
                     let speed = here[s].0.distance(there[s].0) / h;
                     let bound = levers.lever(sphere.link, j);
-                    assert!(speed <= bound + 1e-6, "sphere {s} joint {j}: {speed} > {bound}");
+                    assert!(
+                        speed <= bound + 1e-6,
+                        "sphere {s} joint {j}: {speed} > {bound}"
+                    );
                     worst = worst.max(speed / bound.max(1e-12));
                 }
             }
         }
         // Not absurdly loose either: some sphere reaches at least a third of its bound.
         assert!(worst > 0.33, "{worst}");
-        assert!(levers.fastest() > 1.0 && levers.fastest() < 4.0, "{}", levers.fastest());
+        assert!(
+            levers.fastest() > 1.0 && levers.fastest() < 4.0,
+            "{}",
+            levers.fastest()
+        );
     }
 }

@@ -17,7 +17,13 @@ const HOME: [f64; 7] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
 
 /// The reference verdict on the edge `a → b` at steps of at most `step` rad, with every sphere
 /// grown by `grow` metres: the first fraction found in collision, if any.
-fn reference_hit(reference: &ParryChecker, a: &[f64], b: &[f64], step: f64, grow: f64) -> Option<f64> {
+fn reference_hit(
+    reference: &ParryChecker,
+    a: &[f64],
+    b: &[f64],
+    step: f64,
+    grow: f64,
+) -> Option<f64> {
     let length = spaces::euclidean_distance(a, b);
     let pieces = (length / step).ceil().max(1.0) as u64;
     let mut q = vec![0.0; a.len()];
@@ -30,7 +36,12 @@ fn reference_hit(reference: &ParryChecker, a: &[f64], b: &[f64], step: f64, grow
     })
 }
 
-fn certify(checker: &ArmChecker, a: &[f64], b: &[f64], stop: &dyn Stop) -> (EdgeStatus, MotionProgress) {
+fn certify(
+    checker: &ArmChecker,
+    a: &[f64],
+    b: &[f64],
+    stop: &dyn Stop,
+) -> (EdgeStatus, MotionProgress) {
     let robot = panda();
     let mut progress = MotionProgress::default();
     let status = checker
@@ -110,7 +121,11 @@ impl Stop for Every {
 #[test]
 fn a_stopped_certification_resumes_and_agrees() {
     let robot = panda();
-    let ball = Obstacle::new(Shape::Sphere { radius: 0.1 }, DVec3::new(0.45, 0.3, 0.6), DQuat::IDENTITY);
+    let ball = Obstacle::new(
+        Shape::Sphere { radius: 0.1 },
+        DVec3::new(0.45, 0.3, 0.6),
+        DQuat::IDENTITY,
+    );
     let checker = ArmChecker::new(&robot, &Scene::new(vec![ball]));
     let (mut a, mut b) = (HOME, HOME);
     a[0] = -1.2;
@@ -158,7 +173,11 @@ fn obstacle() -> impl Strategy<Value = Obstacle> {
         (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64, 0.1..1.0f64),
     )
         .prop_map(|(s, (x, y, z), (a, b, c, d))| {
-            Obstacle::new(s, DVec3::new(x, y, z), DQuat::from_xyzw(a, b, c, d).normalize())
+            Obstacle::new(
+                s,
+                DVec3::new(x, y, z),
+                DQuat::from_xyzw(a, b, c, d).normalize(),
+            )
         })
 }
 
@@ -172,7 +191,9 @@ fn edge() -> impl Strategy<Value = (Vec<f64>, Vec<f64>)> {
         0.02..1.2f64,
     )
         .prop_map(move |(u, d, length)| {
-            let a: Vec<f64> = (0..7).map(|j| lower[j] + u[j] * (upper[j] - lower[j])).collect();
+            let a: Vec<f64> = (0..7)
+                .map(|j| lower[j] + u[j] * (upper[j] - lower[j]))
+                .collect();
             let norm = d.iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-9);
             let b = (0..7)
                 .map(|j| (a[j] + d[j] / norm * length).clamp(lower[j], upper[j]))
