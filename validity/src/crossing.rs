@@ -15,34 +15,47 @@ impl Segment {
     /// closed box `row` (`[lo, hi]` per coordinate), given a `span` that contains it
     /// ([`Segment::span`]); `None` if no fraction's point does.
     pub(crate) fn crossing(&self, row: &[f64], span: [f64; 2]) -> Option<[f64; 2]> {
-        // Non-negative, so that bits order like values (no −0.0).
-        let mut t0 = if span[0] > 0.0 { span[0] } else { 0.0 };
-        let mut t1 = span[1].min(1.0);
-        if t0 > t1 {
-            return None;
-        }
+        let mut fractions = [span[0], span[1].min(1.0)];
         for (d, bounds) in row.chunks_exact(2).enumerate() {
             let (lo, hi) = (bounds[0], bounds[1]);
-            let delta = self.delta[d];
-            let x = |t: f64| self.start[d] + delta * t;
-            if delta == 0.0 {
-                let value = x(0.0);
-                if !(value >= lo && value <= hi) {
-                    return None;
-                }
-                continue;
-            }
-            // Rising values enter the box at `lo` and leave it at `hi`; falling ones the other
-            // way round.
-            let (enters, stays): (&dyn Fn(f64) -> bool, &dyn Fn(f64) -> bool) = if delta > 0.0 {
-                (&|v| v >= lo, &|v| v <= hi)
-            } else {
-                (&|v| v <= hi, &|v| v >= lo)
-            };
-            t0 = first_where(t0, t1, |t| enters(x(t)))?;
-            t1 = last_where(t0, t1, |t| stays(x(t)))?;
+            fractions = self.coordinate_crossing(d, fractions, |v| v >= lo, |v| v <= hi)?;
         }
-        Some([t0, t1])
+        Some(fractions)
+    }
+
+    /// Within the fractions `within` (`[t₀, t₁] ⊆ [0, 1]`), the exact interval of floats `t`
+    /// whose computed coordinate `d`, `v = a_d + (b_d − a_d)·t`, passes both `above(v)` (false
+    /// for small values, then true) and `below(v)` (true, then false for large values);
+    /// `None` if no float there does. The computed coordinate is monotone in `t`, so those
+    /// floats form one interval, found by searching the floats themselves.
+    #[inline]
+    pub(crate) fn coordinate_crossing(
+        &self,
+        d: usize,
+        within: [f64; 2],
+        above: impl Fn(f64) -> bool,
+        below: impl Fn(f64) -> bool,
+    ) -> Option<[f64; 2]> {
+        // Non-negative, so that bits order like values (no −0.0).
+        let t0 = if within[0] > 0.0 { within[0] } else { 0.0 };
+        let t1 = within[1];
+        if !(t0 <= t1) {
+            return None;
+        }
+        let (start, delta) = (self.start[d], self.delta[d]);
+        let x = |t: f64| start + delta * t;
+        if delta == 0.0 {
+            let value = x(0.0);
+            return (above(value) && below(value)).then_some([t0, t1]);
+        }
+        // Rising values enter at `above` and leave at `below`; falling ones the other way round.
+        if delta > 0.0 {
+            let t0 = first_where(t0, t1, |t| above(x(t)))?;
+            Some([t0, last_where(t0, t1, |t| below(x(t)))?])
+        } else {
+            let t0 = first_where(t0, t1, |t| below(x(t)))?;
+            Some([t0, last_where(t0, t1, |t| above(x(t)))?])
+        }
     }
 }
 

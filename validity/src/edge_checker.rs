@@ -26,7 +26,10 @@ use crate::{
 /// - a finer check never turns an invalid edge valid;
 /// - no grid point of an edge is tested twice across its sparse and full checks, whichever
 ///   end each check names (every walk starts from the [canonical end](canonical_ends));
-/// - a full check that returns [`EdgeStatus::Valid`] has tested every grid point.
+/// - a full check that returns [`EdgeStatus::Valid`] has tested every grid point;
+/// - an edge with a NaN or infinite coordinate in an end, or whose length is not finite, is
+///   [`EdgeStatus::Invalid`] for every check and certification (and its progress says so):
+///   it has no grid to test (`tests/non_finite_ends.rs`).
 pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     /// Grid points a sparse check at the current level tests on an edge of `length` (before
     /// capping at the grid's size).
@@ -75,6 +78,10 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         let budget = self.sparse_budget(length);
         let walker = self.walker_mut();
         walker.counters_mut().sparse_checks += 1;
+        if !is_checkable(a, b, length) {
+            *progress = EdgeProgress::FOUND_INVALID;
+            return EdgeStatus::Invalid;
+        }
         let grid = EdgeGrid::new(length, walker.step());
         let before = walker.counters().points_tested;
         let status = walker.advance(space, validity, (a, b, grid), budget, progress, stop);
@@ -98,7 +105,14 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     ) -> EdgeStatus {
         let walker = self.walker_mut();
         walker.counters_mut().full_checks += 1;
-        let grid = walker.grid(space, a, b);
+        // The walker's own grid, from the canonical end, with the length kept for the guard.
+        let (u, v) = canonical_ends(a, b);
+        let length = space.distance(u, v);
+        if !is_checkable(u, v, length) {
+            *progress = EdgeProgress::FOUND_INVALID;
+            return EdgeStatus::Invalid;
+        }
+        let grid = EdgeGrid::new(length, walker.step());
         let before = walker.counters().points_tested;
         let status = walker.advance(space, validity, (a, b, grid), u64::MAX, progress, stop);
         let counters = walker.counters_mut();
@@ -119,6 +133,9 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         factor: u32,
         stop: &dyn Stop,
     ) -> EdgeStatus {
+        if factor > 1 && !is_checkable(a, b, space.distance(a, b)) {
+            return EdgeStatus::Invalid;
+        }
         self.walker_mut()
             .certify(space, validity, (a, b), factor, stop)
     }
@@ -127,4 +144,14 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     fn remaining(&self, space: &S, a: &[f64], b: &[f64], progress: EdgeProgress) -> u64 {
         progress.remaining(&self.walker().grid(space, a, b))
     }
+}
+
+/// `true` if the edge `a — b` of length `length` has a grid to check: every coordinate of
+/// both ends finite, and the length too (finite ends so far apart that it overflows have no
+/// grid). Otherwise no check may call it valid — an edge with a NaN end has a one-interval
+/// grid with no point to test, and would pass untested — so every check answers
+/// [`EdgeStatus::Invalid`]. One pass over the ends per check, none per point.
+#[inline]
+fn is_checkable(a: &[f64], b: &[f64], length: f64) -> bool {
+    length.is_finite() && a.iter().chain(b).all(|x| x.is_finite())
 }

@@ -479,7 +479,8 @@ impl GridWalker {
                 status
             }
             None => {
-                let (status, walked) = self.certify_on_grid(space, validity, (a, b), factor, walked, stop);
+                let (status, walked) =
+                    self.certify_on_grid(space, validity, (a, b), factor, walked, stop);
                 self.certified_points = walked;
                 status
             }

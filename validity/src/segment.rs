@@ -67,7 +67,7 @@ pub struct Segment {
 
 /// A relative bound on the rounding error of `x + (y − x)·t` for `t ∈ [0, 1]`: at most about
 /// `5u · max(|x|, |y|)` with `u = 2⁻⁵³`; this is `16u`, with room to spare.
-const ROUNDING: f64 = 8.0 * f64::EPSILON;
+pub(crate) const ROUNDING: f64 = 8.0 * f64::EPSILON;
 
 impl Segment {
     /// Sets the segment to `a → b` (equal lengths), keeping the buffers.
@@ -142,29 +142,37 @@ impl Segment {
     /// (a computed point in the box puts the exact point in the widened box), each end moved
     /// outwards by a bound on its own rounding error — so the span may be loose, never short.
     pub(crate) fn span(&self, row: &[f64]) -> Option<[f64; 2]> {
-        let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+        let mut span = [0.0, 1.0];
         for (d, bounds) in row.chunks_exact(2).enumerate() {
-            let (a, delta, slack) = (self.start[d], self.delta[d], self.slack[d]);
-            let (lo, hi) = (bounds[0] - slack, bounds[1] + slack);
-            if delta == 0.0 {
-                if a < lo || a > hi {
-                    return None;
-                }
-                continue;
-            }
-            let (enter, exit) = ((lo - a) / delta, (hi - a) / delta);
-            let (enter, exit) = if delta > 0.0 {
-                (enter, exit)
-            } else {
-                (exit, enter)
-            };
-            // |computed − exact| ≤ 3u(|bound| + slack + |a|)/|δ| + u|t| per end, with room;
-            // a non-finite end (NaN included) leaves that side open: `max`/`min` skip NaN.
-            let scale = (lo.abs().max(hi.abs()) + slack + a.abs()) / delta.abs();
-            let error = ROUNDING * (scale + enter.abs().max(exit.abs()));
-            t0 = t0.max(enter - error);
-            t1 = t1.min(exit + error);
+            span = self.slab_span(d, [bounds[0], bounds[1]], span)?;
         }
+        Some(span)
+    }
+
+    /// `within` narrowed to the fractions outside which no computed point's coordinate `d`
+    /// lies in `[lo, hi]` (loose, never short; see [`span`](Self::span)), or `None` if empty.
+    pub(crate) fn slab_span(
+        &self,
+        d: usize,
+        [lo, hi]: [f64; 2],
+        within: [f64; 2],
+    ) -> Option<[f64; 2]> {
+        let (a, delta, slack) = (self.start[d], self.delta[d], self.slack[d]);
+        let (lo, hi) = (lo - slack, hi + slack);
+        if delta == 0.0 {
+            return (a >= lo && a <= hi).then_some(within);
+        }
+        let (enter, exit) = ((lo - a) / delta, (hi - a) / delta);
+        let (enter, exit) = if delta > 0.0 {
+            (enter, exit)
+        } else {
+            (exit, enter)
+        };
+        // |computed − exact| ≤ 3u(|bound| + slack + |a|)/|δ| + u|t| per end, with room;
+        // a non-finite end (NaN included) leaves that side open: `max`/`min` skip NaN.
+        let scale = (lo.abs().max(hi.abs()) + slack + a.abs()) / delta.abs();
+        let error = ROUNDING * (scale + enter.abs().max(exit.abs()));
+        let (t0, t1) = (within[0].max(enter - error), within[1].min(exit + error));
         (t0 <= t1).then_some([t0, t1])
     }
 

@@ -10,20 +10,32 @@
 //! iff in bounds and in some anti-obstacle or in no obstacle") applied to every point of the
 //! segment at once.
 //!
-//! # Floating point
-//! Interval ends are computed with the same box bounds (`c ± (w/2 + ε)`) the point test uses,
-//! so an anti-obstacle exactly aligned with its obstacle (a slot as wide as the wall) yields
-//! bit-identical intervals and covers it; a slot shifted by `1e-7` leaves an uncovered sliver,
-//! found. Decisions are exact up to the rounding of the slab parameters (a relative `~1e-16`
-//! of the segment): a contact that deep — a segment grazing a corner by less than that — may be
-//! decided either way, as the point test itself would be at that scale.
+//! # Floating point: the computed points, exactly
+//! A planner never meets the real segment, only its *computed* points: `a + (b − a)·t` in
+//! floating point, at float fractions `t`, from one end or the other — the ends themselves,
+//! every grid point a walk or a certification tests, every state an interpolation returns. Far
+//! from the origin those lie on a lattice of ulps (1e-7 apart at 1e9), so a computed point can
+//! fall into a box the real segment misses by less than that, or out of an anti-obstacle it
+//! stays in. The verdict is therefore taken on exactly those points: for both
+//! parametrizations, `a + (b − a)·t` and `b + (a − b)·t`, and every float `t ∈ [0, 1)`, the
+//! [`World`]'s own comparisons against its own box bounds (`c ± (w/2 + ε)`). Each computed
+//! coordinate is monotone in `t`, so the fractions inside a box (or a lattice slab, or the
+//! bounds) form one interval of floats, found exactly by searching the floats
+//! ([`Segment::crossing`]) within a slab test's loose span. So the verdict is one-sided — a
+//! computed point the point test rejects makes the segment invalid — and exact: an
+//! anti-obstacle exactly aligned with its obstacle (a slot as wide as the wall) yields the
+//! same intervals and covers it, while a slot shifted by `1e-7` leaves an uncovered sliver,
+//! found. What lies *between* two computed points of the real segment (a corner clipped by
+//! less than an ulp of the coordinates) is decided as the nearest computed points are.
 
-use crate::World;
+use crate::segment::ROUNDING;
+use crate::{Segment, World};
 
 /// Why a segment is invalid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SegmentCause {
-    /// A coordinate of an end is NaN or infinite, or the ends differ in dimension.
+    /// A coordinate of an end is NaN or infinite, their difference overflows, or the ends
+    /// differ in dimension.
     Malformed,
     /// The segment leaves the world's bounds.
     OutOfBounds,
@@ -40,8 +52,9 @@ pub enum SegmentCause {
 pub enum SegmentVerdict {
     /// Every point of the segment is valid.
     Valid,
-    /// The point at parameter `t` (`x(t) = a + t (b − a)`) is invalid, for `cause`; `t` is the
-    /// first such parameter the slab tests found.
+    /// A computed point near parameter `t` is invalid, for `cause`: the point `a + (b − a)·t`
+    /// itself, at the first such float `t`, if there is one; otherwise `t` is `1 − s` for the
+    /// first float `s` at which `b + (a − b)·s` is invalid.
     Invalid {
         /// Where along the segment, in `[0, 1]`.
         t: f64,
@@ -81,168 +94,173 @@ impl World {
     /// ```
     pub fn segment_verdict(&self, a: &[f64], b: &[f64]) -> SegmentVerdict {
         let n = self.dimension();
+        let malformed = SegmentVerdict::Invalid {
+            t: 0.0,
+            cause: SegmentCause::Malformed,
+        };
         if a.len() != n || b.len() != n || a.iter().chain(b).any(|x| !x.is_finite()) {
-            return SegmentVerdict::Invalid {
-                t: 0.0,
-                cause: SegmentCause::Malformed,
-            };
+            return malformed;
         }
-        if let Some(t) = self.leaves_bounds(a, b) {
-            return SegmentVerdict::Invalid {
-                t,
-                cause: SegmentCause::OutOfBounds,
-            };
+        let mut segment = Segment::default();
+        segment.set(a, b);
+        if !segment.is_finite() {
+            return malformed;
         }
-        let mut free = Vec::new();
-        for anti in self.anti_obstacles() {
-            if let Some(interval) = box_interval(&anti.center, &anti.widths, a, b) {
-                free.push(interval);
-            }
+        if let Some((t, cause)) = self.first_invalid_computed(&segment) {
+            return SegmentVerdict::Invalid { t, cause };
         }
-        let free = merged(free);
+        segment.set(b, a);
+        match self.first_invalid_computed(&segment) {
+            Some((s, cause)) => SegmentVerdict::Invalid { t: 1.0 - s, cause },
+            None => SegmentVerdict::Valid,
+        }
+    }
+
+    /// The first float fraction `t ∈ [0, 1)` whose computed point `segment.point(t)` the world
+    /// rejects, and why (`None` if every one is valid): the bounds, then the obstacles and
+    /// lattices not covered by anti-obstacles, each as an exact interval of floats.
+    fn first_invalid_computed(&self, segment: &Segment) -> Option<(f64, SegmentCause)> {
         let mut first: Option<(f64, SegmentCause)> = None;
         let mut note = |t: f64, cause: SegmentCause| {
             if first.is_none_or(|(best, _)| t < best) {
                 first = Some((t, cause));
             }
         };
-        for (index, obstacle) in self.obstacles().iter().enumerate() {
-            if let Some(interval) = box_interval(&obstacle.center, &obstacle.widths, a, b)
+        let bounds: Vec<f64> = self
+            .lower
+            .iter()
+            .zip(&self.upper)
+            .flat_map(|(&lo, &hi)| [lo, hi])
+            .collect();
+        match exact_interval(segment, &bounds) {
+            Some((s, _)) if s > 0.0 => note(0.0, SegmentCause::OutOfBounds),
+            Some((_, e)) if e < BELOW_ONE => note(next_float(e), SegmentCause::OutOfBounds),
+            Some(_) => {}
+            None => note(0.0, SegmentCause::OutOfBounds),
+        }
+        let width = 2 * self.dimension();
+        let free = merged(
+            self.anti_obstacles
+                .rows()
+                .chunks_exact(width)
+                .filter_map(|row| exact_interval(segment, row))
+                .collect(),
+        );
+        for (index, row) in self.obstacles.rows().chunks_exact(width).enumerate() {
+            if let Some(interval) = exact_interval(segment, row)
                 && let Some(t) = uncovered(interval, &free)
             {
                 note(t, SegmentCause::Obstacle(index));
             }
         }
-        for index in 0..self.lattices().len() {
-            for interval in lattice_intervals(self, index, a, b) {
+        for index in 0..self.lattices.len() {
+            for interval in lattice_intervals(self, index, segment) {
                 if let Some(t) = uncovered(interval, &free) {
                     note(t, SegmentCause::Lattice(index));
                     break;
                 }
             }
         }
-        match first {
-            Some((t, cause)) => SegmentVerdict::Invalid { t, cause },
-            None => SegmentVerdict::Valid,
-        }
-    }
-
-    /// The first parameter where the segment is outside the bounds, if any (the box is convex:
-    /// the segment stays inside iff both ends do).
-    fn leaves_bounds(&self, a: &[f64], b: &[f64]) -> Option<f64> {
-        let inside = |x: &[f64]| {
-            x.iter()
-                .zip(self.lower().iter().zip(self.upper()))
-                .all(|(&v, (&lo, &hi))| v >= lo && v <= hi)
-        };
-        if !inside(a) {
-            return Some(0.0);
-        }
-        if inside(b) {
-            return None;
-        }
-        // Leaves at the smallest exit parameter over the coordinates.
-        let mut exit = 1.0_f64;
-        for (d, (&lo, &hi)) in self.lower().iter().zip(self.upper()).enumerate() {
-            let delta = b[d] - a[d];
-            if b[d] > hi && delta > 0.0 {
-                exit = exit.min((hi - a[d]) / delta);
-            } else if b[d] < lo && delta < 0.0 {
-                exit = exit.min((lo - a[d]) / delta);
-            }
-        }
-        Some(exit.clamp(0.0, 1.0))
+        first
     }
 }
 
-/// The closed parameter interval where `x(t)` lies in `[lo, hi]` along one coordinate, within
-/// `[0, 1]` (`None` if empty).
-#[inline]
-fn slab(a: f64, b: f64, lo: f64, hi: f64) -> Option<Interval> {
-    let delta = b - a;
-    if delta == 0.0 {
-        return (a >= lo && a <= hi).then_some((0.0, 1.0));
-    }
-    let (mut t0, mut t1) = ((lo - a) / delta, (hi - a) / delta);
-    if t0 > t1 {
-        std::mem::swap(&mut t0, &mut t1);
-    }
-    let (t0, t1) = (t0.max(0.0), t1.min(1.0));
-    (t0 <= t1).then_some((t0, t1))
+/// The largest float below 1: fractions run over `[0, 1)`, so the point at 1 is the other end
+/// itself (the other parametrization's `t = 0`), not `a + (b − a)·1`, which may differ from it
+/// by rounding.
+const BELOW_ONE: f64 = 1.0 - f64::EPSILON / 2.0;
+
+/// The fractions of `[0, 1)`, as a span.
+const FRACTIONS: [f64; 2] = [0.0, BELOW_ONE];
+
+/// The float just above a non-negative `t`.
+fn next_float(t: f64) -> f64 {
+    f64::from_bits(t.to_bits() + 1)
 }
 
-/// The closed parameter interval inside the box `center ± (widths/2 + ε)` (the world's
-/// membership rule), `None` if the segment misses it.
-fn box_interval(center: &[f64], widths: &[f64], a: &[f64], b: &[f64]) -> Option<Interval> {
-    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-    for (d, (&c, &w)) in center.iter().zip(widths).enumerate() {
-        let half = 0.5 * w + f64::EPSILON;
-        let (s0, s1) = slab(a[d], b[d], c - half, c + half)?;
-        t0 = t0.max(s0);
-        t1 = t1.min(s1);
-        if t0 > t1 {
-            return None;
-        }
+/// The exact interval of float fractions `t ∈ [0, 1)` whose computed point lies in the closed
+/// box `row` (`[lo, hi]` per coordinate, as the world stores it), `None` if none does: boxes
+/// away from the segment's reach are dismissed at once, the others by a slab test's loose span,
+/// then searched.
+fn exact_interval(segment: &Segment, row: &[f64]) -> Option<Interval> {
+    let meets = row
+        .chunks_exact(2)
+        .zip(segment.reach.chunks_exact(2))
+        .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0]);
+    if !meets {
+        return None;
     }
+    let [s0, s1] = segment.span(row)?;
+    let [t0, t1] = segment.crossing(row, [s0, s1.min(BELOW_ONE)])?;
     Some((t0, t1))
 }
 
-/// Sorts closed intervals and merges those that overlap or touch.
+/// Sorts closed intervals of non-negative floats and merges those that overlap or are
+/// adjacent (no float between them).
 fn merged(mut intervals: Vec<Interval>) -> Vec<Interval> {
     intervals.sort_by(|x, y| x.0.total_cmp(&y.0));
     let mut out: Vec<Interval> = Vec::with_capacity(intervals.len());
     for (s, e) in intervals {
         match out.last_mut() {
-            Some(last) if s <= last.1 => last.1 = last.1.max(e),
+            Some(last) if s <= next_float(last.1) => last.1 = last.1.max(e),
             _ => out.push((s, e)),
         }
     }
     out
 }
 
-/// The first parameter of `interval` that no interval of `free` (merged, disjoint, sorted)
-/// covers, if any. Closed intervals: `[0.2, 0.5]` covers `[0.2, 0.5]`.
+/// The first float of `interval` that no interval of `free` (merged, sorted, with floats
+/// between them) covers, if any. Closed intervals: `[0.2, 0.5]` covers `[0.2, 0.5]`.
 fn uncovered((s, e): Interval, free: &[Interval]) -> Option<f64> {
     // Merged intervals are disjoint with gaps between them, so one of them must cover it all.
     let covering = free.iter().find(|(u0, u1)| *u0 <= s && s <= *u1);
     match covering {
         Some(&(_, u1)) if u1 >= e => None,
-        // Covered up to u1, then a gap: the sliver just after u1 is in the obstacle.
-        Some(&(_, u1)) => Some(u1),
+        // Covered up to u1, then a gap: the float just after u1 is in the obstacle.
+        Some(&(_, u1)) => Some(next_float(u1)),
         None => Some(s),
     }
 }
 
-/// The parameter intervals where the segment is inside some cube of lattice `index`: the
+/// The float fractions where the computed point lies in some cube of lattice `index`: the
 /// lattice is a product `∏_d S_d` of unions of slabs, so the set is `∩_d T_d` with
-/// `T_d = {t : x_d(t) ∈ S_d}`.
-fn lattice_intervals(world: &World, index: usize, a: &[f64], b: &[f64]) -> Vec<Interval> {
-    let lattice = &world.lattices()[index];
+/// `T_d = {t : x_d(t) ∈ S_d}`, each slab's floats found exactly with the world's own test
+/// `|x − c| ≤ side/2 + ε` (which tests only the nearest centre: the union over every centre
+/// holds all it accepts).
+fn lattice_intervals(world: &World, index: usize, segment: &Segment) -> Vec<Interval> {
+    let lattice = &world.lattices[index];
     if lattice.count == 0 {
         return Vec::new();
     }
     let half = 0.5 * lattice.side + f64::EPSILON;
-    let mut result = vec![(0.0, 1.0)];
-    for (d, &lower) in world.lower().iter().enumerate() {
-        let (lo, hi) = (a[d].min(b[d]), a[d].max(b[d]));
-        // Cubes j whose slab [c_j − h, c_j + h], c_j = lower + (j + 1)·spacing, meets [lo, hi].
-        let first = ((lo - half - lower) / lattice.spacing - 1.0)
+    let last_cube = lattice.count as f64 - 1.0;
+    let mut result = vec![(FRACTIONS[0], FRACTIONS[1])];
+    for (d, &lower) in world.lower.iter().enumerate() {
+        let (lo, hi) = segment.reach(d);
+        // Cubes j whose slab [c_j − h, c_j + h], c_j = lower + (j + 1)·spacing, may meet the
+        // reach, one more each side for the rounding of this estimate.
+        let first = ((lo - half - lower) / lattice.spacing - 2.0)
             .floor()
             .max(0.0);
-        let last = ((hi + half - lower) / lattice.spacing - 1.0)
+        let last = ((hi + half - lower) / lattice.spacing)
             .ceil()
-            .min(lattice.count as f64 - 1.0);
+            .min(last_cube);
         let mut slabs = Vec::new();
         let mut j = first;
         while j <= last {
             let c = lower + (j + 1.0) * lattice.spacing;
-            if let Some(interval) = slab(a[d], b[d], c - half, c + half) {
-                slabs.push(interval);
+            // The span of the slab widened by the rounding of `x − c`.
+            let widen = ROUNDING * (c.abs() + half);
+            let slab = [c - half - widen, c + half + widen];
+            if let Some(span) = segment.slab_span(d, slab, FRACTIONS)
+                && let Some([t0, t1]) =
+                    segment.coordinate_crossing(d, span, |v| v - c >= -half, |v| v - c <= half)
+            {
+                slabs.push((t0, t1));
             }
             j += 1.0;
         }
-        let slabs = merged(slabs);
-        result = intersection(&result, &slabs);
+        result = intersection(&result, &merged(slabs));
         if result.is_empty() {
             break;
         }
@@ -281,7 +299,7 @@ mod tests {
         let free = merged(vec![(0.4, 0.6), (0.1, 0.2), (0.2, 0.3)]);
         assert_eq!(free, vec![(0.1, 0.3), (0.4, 0.6)]);
         assert_eq!(uncovered((0.15, 0.3), &free), None);
-        assert_eq!(uncovered((0.15, 0.35), &free), Some(0.3));
+        assert_eq!(uncovered((0.15, 0.35), &free), Some(next_float(0.3)));
         assert_eq!(uncovered((0.35, 0.5), &free), Some(0.35));
         assert_eq!(uncovered((0.4, 0.6), &free), None);
     }
@@ -317,10 +335,11 @@ mod tests {
     #[test]
     fn bounds_and_malformed_ends() {
         let w = square();
+        // The first computed point beyond the bound is at the float after 0.5.
         assert_eq!(
             w.segment_verdict(&[0.0, 0.0], &[1.0, 0.0]),
             SegmentVerdict::Invalid {
-                t: 0.5,
+                t: next_float(0.5),
                 cause: SegmentCause::OutOfBounds
             }
         );

@@ -314,40 +314,155 @@ proptest! {
     /// segment answers as testing the point does — membership is decided to the last ulp of `t`.
     #[test]
     fn answers_agree_at_the_floats_where_they_change((world, a, b) in world_and_edge(6)) {
-        let n = a.len();
-        let space = RealVectorSpace::cube(n, -0.5, 0.5).unwrap();
-        let (a, b) = canonical_ends(&a, &b);
-        let mut state = vec![0.0; n];
-        let mut alone = |t: f64| {
-            space.interpolate(a, b, t, &mut state);
-            world.is_valid(&state)
-        };
-        let mut segment = Segment::default();
-        segment.set(a, b);
-        if world.prepare_segment(&mut segment) != Preparation::Prepared {
-            return Ok(());
+        compare_at_changes(&world, &a, &b)?;
+    }
+
+    /// Far from the origin (offsets 1e6–1e9, boxes of at most 1e-3, where computed points lie
+    /// on a lattice of ulps up to 1e-7 apart): the same agreement at grid points and at the
+    /// floats where the answer changes.
+    #[test]
+    fn far_from_the_origin_answers_agree(
+        (world, a, b) in far_world_and_edge(),
+        intervals in prop_oneof![2_u64..40, 40_u64..2000],
+    ) {
+        compare_points(&world, &a, &b, intervals)?;
+        compare_at_changes(&world, &a, &b)?;
+    }
+}
+
+/// At the floats where the one-by-one answer changes along `a — b`, and their neighbours, a
+/// prepared segment answers as testing the point does.
+fn compare_at_changes(world: &World, a: &[f64], b: &[f64]) -> Result<(), TestCaseError> {
+    let n = a.len();
+    let space = RealVectorSpace::cube(n, -0.5, 0.5).unwrap();
+    let (a, b) = canonical_ends(a, b);
+    let mut state = vec![0.0; n];
+    let mut alone = |t: f64| {
+        space.interpolate(a, b, t, &mut state);
+        world.is_valid(&state)
+    };
+    let mut segment = Segment::default();
+    segment.set(a, b);
+    if world.prepare_segment(&mut segment) != Preparation::Prepared {
+        return Ok(());
+    }
+    let coarse: Vec<f64> = (0..=256).map(|i| f64::from(i) / 256.0).collect();
+    for pair in coarse.windows(2) {
+        let (mut lo, mut hi) = (pair[0].to_bits(), pair[1].to_bits());
+        let at_lo = alone(pair[0]);
+        if at_lo == alone(pair[1]) {
+            continue;
         }
-        let coarse: Vec<f64> = (0..=256).map(|i| f64::from(i) / 256.0).collect();
-        for pair in coarse.windows(2) {
-            let (mut lo, mut hi) = (pair[0].to_bits(), pair[1].to_bits());
-            let at_lo = alone(pair[0]);
-            if at_lo == alone(pair[1]) {
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if alone(f64::from_bits(mid)) == at_lo {
+                lo = mid
+            } else {
+                hi = mid
+            }
+        }
+        for bits in lo.saturating_sub(2)..=hi + 2 {
+            let t = f64::from_bits(bits);
+            if !(0.0..=1.0).contains(&t) {
                 continue;
             }
-            while hi - lo > 1 {
-                let mid = lo + (hi - lo) / 2;
-                if alone(f64::from_bits(mid)) == at_lo { lo = mid } else { hi = mid }
-            }
-            for bits in lo.saturating_sub(2)..=hi + 2 {
-                let t = f64::from_bits(bits);
-                if !(0.0..=1.0).contains(&t) {
-                    continue;
-                }
-                let prepared = world.first_invalid_on(&mut segment, &[t]).is_none();
-                prop_assert_eq!(prepared, alone(t), "t = {} ({:#x})", t, bits);
-            }
+            let prepared = world.first_invalid_on(&mut segment, &[t]).is_none();
+            prop_assert_eq!(prepared, alone(t), "t = {} ({:#x})", t, bits);
         }
     }
+    Ok(())
+}
+
+/// A world far from the origin — tiny obstacles and anti-obstacles (some cut from an obstacle)
+/// around an offset of 1e6–1e9 per coordinate, bounds a unit away or through an end — and an
+/// edge among them, random or aimed within a few ulps of a box's corner.
+fn far_world_and_edge() -> impl Strategy<Value = (World, Vec<f64>, Vec<f64>)> {
+    (1_usize..=3).prop_flat_map(|n| {
+        let offset = prop::collection::vec(
+            (6.0_f64..9.0, any::<bool>())
+                .prop_map(|(e, neg)| 10_f64.powf(e) * if neg { -1.0 } else { 1.0 }),
+            n,
+        );
+        let local = move || prop::collection::vec(-1e-3_f64..1e-3, n);
+        let width = prop_oneof![Just(0.0), (-9.0_f64..-3.0).prop_map(|e| 10_f64.powf(e))];
+        let boxes = prop::collection::vec((local(), prop::collection::vec(width, n)), 1..6);
+        let slots = prop::collection::vec(
+            (any::<prop::sample::Index>(), 0_usize..3, 0.1_f64..0.9),
+            0..3,
+        );
+        let graze = prop::option::of((
+            any::<prop::sample::Index>(),
+            prop::collection::vec((any::<bool>(), -4_i32..=4), n),
+            (local(), -4.0_f64..0.0),
+            0.0_f64..1.0,
+        ));
+        (
+            offset,
+            boxes,
+            slots,
+            (local(), local()),
+            graze,
+            prop::collection::vec(0_u8..4, n),
+        )
+            .prop_map(move |(offset, boxes, slots, (u, v), graze, tight)| {
+                let place =
+                    |x: &[f64]| -> Vec<f64> { offset.iter().zip(x).map(|(o, x)| o + x).collect() };
+                let obstacles: Vec<AxisBox> = boxes
+                    .iter()
+                    .map(|(c, w)| AxisBox::new(place(c), w.clone()))
+                    .collect();
+                let antis: Vec<AxisBox> = slots
+                    .iter()
+                    .map(|(pick, d, shrink)| {
+                        let mut slot = pick.get(&obstacles).clone();
+                        slot.widths[d % n] *= shrink;
+                        slot
+                    })
+                    .collect();
+                let (mut a, mut b) = (place(&u), place(&v));
+                if let Some((pick, corner, (direction, scale), at)) = graze {
+                    let all: Vec<&AxisBox> = obstacles.iter().chain(&antis).collect();
+                    let target = pick.get(&all);
+                    let scale = 10_f64.powf(scale);
+                    for (d, &(upper, nudge)) in corner.iter().enumerate() {
+                        let half = 0.5 * target.widths[d] + f64::EPSILON;
+                        let face = if upper {
+                            target.center[d] + half
+                        } else {
+                            target.center[d] - half
+                        };
+                        let mut p = face;
+                        for _ in 0..nudge.unsigned_abs() {
+                            p = next_toward(p, nudge > 0);
+                        }
+                        a[d] = p - at * scale * direction[d];
+                        b[d] = p + (1.0 - at) * scale * direction[d];
+                    }
+                }
+                let lower = (0..n).map(|d| {
+                    if tight[d] == 1 {
+                        a[d].min(b[d])
+                    } else {
+                        offset[d] - 1.0
+                    }
+                });
+                let upper = (0..n).map(|d| {
+                    if tight[d] == 2 {
+                        a[d].max(b[d])
+                    } else {
+                        offset[d] + 1.0
+                    }
+                });
+                let mut world = World::new(lower.collect(), upper.collect());
+                for o in obstacles {
+                    world.add_obstacle(o).unwrap();
+                }
+                for anti in antis {
+                    world.add_anti_obstacle(anti).unwrap();
+                }
+                (world, a, b)
+            })
+    })
 }
 
 /// A full check whose scan is interrupted again and again (a planner given many short time
