@@ -49,6 +49,7 @@ mod scene;
 mod scene_error;
 mod scratch_cell;
 mod srdf;
+mod yaml_text;
 
 pub use arm_certification::FLOOR as CERTIFICATION_FLOOR;
 pub use arm_checker::ArmChecker;

@@ -12,7 +12,8 @@ use crate::{Scene, SceneError};
 ///
 /// Joint values are kept by name; [`start_for`](Self::start_for) and
 /// [`goal_for`](Self::goal_for) order them as a robot's joint space wants (values of other
-/// joints, the fingers say, are ignored). The request's `planner_id` and
+/// joints, the fingers say, are ignored); a joint named twice in the start state or in the goal
+/// is an error, never "the first one wins". The request's `planner_id` and
 /// `allowed_planning_time` are ignored.
 ///
 /// ```
@@ -120,8 +121,9 @@ impl MbmProblem {
     /// Reads problem `index` (1-based) of `folder`.
     ///
     /// # Errors
-    /// [`SceneError::Io`] for a missing file, [`SceneError::Yaml`] or [`SceneError::Field`]
-    /// for malformed ones.
+    /// [`SceneError::Io`] for a missing file, [`SceneError::Yaml`], [`SceneError::Field`] or
+    /// [`SceneError::Number`] for malformed ones (the scene's rules are
+    /// [`Scene`]'s), [`SceneError::DuplicateJoint`] for a request giving a joint two values.
     pub fn load(folder: &Path, index: usize) -> Result<Self, SceneError> {
         let scene = Scene::from_yaml_file(&folder.join(format!("scene{index:04}.yaml")))?;
         let request = folder.join(format!("request{index:04}.yaml"));
@@ -130,10 +132,7 @@ impl MbmProblem {
             path: request.clone(),
             source,
         })?;
-        let file: RequestFile = serde_saphyr::from_str(&text).map_err(|e| SceneError::Yaml {
-            origin: origin.clone(),
-            message: e.to_string(),
-        })?;
+        let file: RequestFile = crate::yaml_text::read_yaml(&text, &origin)?;
         let state = file.start_state.joint_state;
         if state.name.len() != state.position.len() {
             return Err(SceneError::Field {
@@ -159,6 +158,18 @@ impl MbmProblem {
             .into_iter()
             .map(|c| (c.joint_name, c.position))
             .collect();
+        for (what, values) in [
+            ("start_state.joint_state.name", &start),
+            ("goal_constraints[0].joint_constraints", &goal),
+        ] {
+            if let Some(joint) = repeated(values) {
+                return Err(SceneError::DuplicateJoint {
+                    origin,
+                    what,
+                    joint: joint.to_owned(),
+                });
+            }
+        }
         for (what, values) in [
             ("start_state.joint_state.position", &start),
             ("goal_constraints[0].joint_constraints", &goal),
@@ -221,4 +232,13 @@ impl MbmProblem {
             })
             .collect()
     }
+}
+
+/// The first joint named twice in `values`.
+fn repeated(values: &[(String, f64)]) -> Option<&str> {
+    let mut seen = std::collections::HashSet::new();
+    values
+        .iter()
+        .map(|(name, _)| name.as_str())
+        .find(|name| !seen.insert(*name))
 }

@@ -56,6 +56,16 @@ pub enum ModelError {
         /// What is wrong (no root, several roots, a link with two parents, a cycle).
         why: String,
     },
+    /// Two joints, or two links, of a URDF share a name: which one is meant is not known.
+    #[error("{origin}: two {what}s are called `{name}`")]
+    DuplicateName {
+        /// The file (or `"URDF text"`).
+        origin: String,
+        /// `"joint"` or `"link"`.
+        what: &'static str,
+        /// The shared name.
+        name: String,
+    },
     /// A joint names a link the URDF does not have.
     #[error("joint `{joint}` names link `{link}`, which the URDF does not define")]
     UnknownJointLink {
@@ -84,7 +94,8 @@ pub enum ModelError {
         /// Upper limit.
         upper: f64,
     },
-    /// A number that must be finite (an origin, a radius) is not, or a radius is not positive.
+    /// A number that must be finite (an origin, a radius) is not, is beyond ±10⁶ m (an
+    /// origin's `xyz`, a radius), or a radius is not positive.
     #[error("{element}: {what} {value} is not usable")]
     BadNumber {
         /// The link or joint.

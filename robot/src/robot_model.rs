@@ -100,9 +100,10 @@ impl RobotModel {
     /// Reads a URDF document.
     ///
     /// # Errors
-    /// [`ModelError::Urdf`] for malformed XML, and the variants naming a link or joint for
-    /// non-sphere collision geometry, unsupported joints, bad axes, limits or numbers, and
-    /// links that do not form one tree.
+    /// [`ModelError::Urdf`] for malformed XML, [`ModelError::DuplicateName`] for two joints
+    /// (or links) of one name, and the variants naming a link or joint for non-sphere
+    /// collision geometry, unsupported joints, bad axes, limits or numbers (origins and radii
+    /// beyond 10⁶ m included), and links that do not form one tree.
     pub fn from_urdf_str(text: &str) -> Result<Self, ModelError> {
         Self::parse(text, "URDF text")
     }
@@ -112,6 +113,21 @@ impl RobotModel {
             origin: origin.to_owned(),
             message: e.to_string(),
         })?;
+        for (what, name) in [
+            ("link", repeated(urdf.links.iter().map(|l| l.name.as_str()))),
+            (
+                "joint",
+                repeated(urdf.joints.iter().map(|j| j.name.as_str())),
+            ),
+        ] {
+            if let Some(name) = name {
+                return Err(ModelError::DuplicateName {
+                    origin: origin.to_owned(),
+                    what,
+                    name: name.to_owned(),
+                });
+            }
+        }
         let names: HashSet<&str> = urdf.links.iter().map(|l| l.name.as_str()).collect();
         let mut children: HashMap<&str, Vec<&urdf_rs::Joint>> = HashMap::new();
         let mut has_parent: HashSet<&str> = HashSet::new();
@@ -199,8 +215,8 @@ impl RobotModel {
                         });
                     }
                 };
-                if !(radius.is_finite() && radius > 0.0) {
-                    return Err(bad(&frame.name, "sphere radius", radius));
+                if !(radius > 0.0 && radius <= MAX_LENGTH) {
+                    return Err(bad(&frame.name, "sphere radius (in (0, 1e6] m)", radius));
                 }
                 let pose = pose(&collision.origin, &frame.name)?;
                 spheres.push(LinkSphere {
@@ -404,10 +420,16 @@ fn joint_frame(
 
 /// A URDF pose: translation `xyz`, rotation `Rz(yaw)·Ry(pitch)·Rx(roll)` from `rpy`.
 fn pose(p: &urdf_rs::Pose, element: &str) -> Result<DAffine3, ModelError> {
-    for &v in p.xyz.0.iter().chain(&p.rpy.0) {
-        if !v.is_finite() {
-            return Err(bad(element, "origin", v));
-        }
+    if let Some(&v) = p
+        .xyz
+        .0
+        .iter()
+        .find(|v| !(-MAX_LENGTH..=MAX_LENGTH).contains(*v))
+    {
+        return Err(bad(element, "origin xyz (finite, within ±1e6 m)", v));
+    }
+    if let Some(&v) = p.rpy.0.iter().find(|v| !v.is_finite()) {
+        return Err(bad(element, "origin rpy", v));
     }
     Ok(DAffine3::from_mat3_translation(
         rpy_matrix(p.rpy.0),
@@ -415,11 +437,21 @@ fn pose(p: &urdf_rs::Pose, element: &str) -> Result<DAffine3, ModelError> {
     ))
 }
 
+/// The largest magnitude of an origin coordinate or a sphere radius, in metres (as for scenes:
+/// [`Scene::MAX_LENGTH`](crate::Scene::MAX_LENGTH)).
+const MAX_LENGTH: f64 = crate::Scene::MAX_LENGTH;
+
 /// The URDF rotation of roll, pitch, yaw: `Rz(yaw)·Ry(pitch)·Rx(roll)`.
 pub fn rpy_matrix([roll, pitch, yaw]: [f64; 3]) -> DMat3 {
     DMat3::from_quat(
         DQuat::from_rotation_z(yaw) * DQuat::from_rotation_y(pitch) * DQuat::from_rotation_x(roll),
     )
+}
+
+/// The first name that occurs twice.
+fn repeated<'a>(names: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let mut seen = HashSet::new();
+    names.into_iter().find(|n| !seen.insert(*n))
 }
 
 fn bad(element: &str, what: &'static str, value: f64) -> ModelError {

@@ -1,9 +1,11 @@
 //! [`Scene`]: the obstacles around a robot, read from MoveIt's planning-scene YAML.
 
+use std::collections::HashMap;
 use std::path::Path;
 
 use glam::{DAffine3, DQuat, DVec3};
 use serde::Deserialize;
+use serde::de::IgnoredAny;
 
 use crate::{Obstacle, SceneError, Shape};
 
@@ -15,6 +17,20 @@ use crate::{Obstacle, SceneError, Shape};
 /// the local z axis, `sphere` with `[radius]`) and `primitive_poses[]` (`position` x, y, z,
 /// `orientation` quaternion x, y, z, w), each relative to the object's optional `pose`.
 ///
+/// What is accepted, and what is refused with an error naming the file, the field and the value:
+/// - The file must have a `world` field: a file without one (an empty file, a request, a typo)
+///   is not a planning scene. A world without objects (`world: {collision_objects: []}`,
+///   `world: {}`) is an empty scene, as in MoveIt, and so is an explicit `world: null`.
+/// - Every coordinate of a position is finite and within ±[`MAX_LENGTH`](Self::MAX_LENGTH)
+///   (10⁶ m); every size (box sides, cylinder height and radius, sphere radius) is in
+///   (0, [`MAX_LENGTH`](Self::MAX_LENGTH)].
+/// - A quaternion has finite components and a norm, computed without overflow, that is finite
+///   and at least [`MIN_QUATERNION_NORM`](Self::MIN_QUATERNION_NORM); it is normalised (so
+///   `[0, 0, 0, 2]` is the identity).
+/// - Object ids are unique (MoveIt would replace the first object by the second), and objects
+///   hold only primitives: `meshes` or `planes` are refused rather than dropped.
+/// - The allowed-collision matrix is square, symmetric, and names each link once.
+///
 /// ```
 /// let scene = robot::Scene::from_yaml_str(
 ///     "world:\n  collision_objects:\n    - id: table\n      primitives:\n        - type: box\n          dimensions: [1, 1, 0.1]\n      primitive_poses:\n        - position: [0.5, 0, -0.05]\n          orientation: [0, 0, 0, 1]\n",
@@ -22,6 +38,8 @@ use crate::{Obstacle, SceneError, Shape};
 /// )?;
 /// assert_eq!(scene.obstacles().len(), 1);
 /// assert_eq!(scene.ids(), ["table"]);
+/// assert!(robot::Scene::from_yaml_str("world: null", "empty.yaml")?.obstacles().is_empty());
+/// assert!(robot::Scene::from_yaml_str("name: not a scene", "request.yaml").is_err());
 /// # Ok::<(), robot::SceneError>(())
 /// ```
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -33,10 +51,21 @@ pub struct Scene {
 
 #[derive(Deserialize)]
 struct SceneFile {
-    #[serde(default)]
-    world: Option<WorldMessage>,
+    /// `None`: no `world` field; `Some(None)`: `world: null`.
+    #[serde(default, deserialize_with = "present")]
+    world: Option<Option<WorldMessage>>,
     #[serde(default)]
     allowed_collision_matrix: Option<AcmMessage>,
+}
+
+/// Deserialises a field that is present (perhaps as `null`), so that `Option<Option<T>>` tells
+/// a missing field from a null one.
+fn present<'de, D, T>(deserializer: D) -> Result<Option<T>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: Deserialize<'de>,
+{
+    T::deserialize(deserializer).map(Some)
 }
 
 #[derive(Deserialize)]
@@ -55,6 +84,10 @@ struct ObjectMessage {
     primitives: Vec<PrimitiveMessage>,
     #[serde(default)]
     primitive_poses: Vec<PoseMessage>,
+    #[serde(default)]
+    meshes: Vec<IgnoredAny>,
+    #[serde(default)]
+    planes: Vec<IgnoredAny>,
 }
 
 #[derive(Deserialize)]
@@ -79,7 +112,47 @@ struct AcmMessage {
     entry_values: Vec<Vec<bool>>,
 }
 
+/// What a coordinate must be (the text of [`SceneError::Number`]).
+const COORDINATE: &str = "a coordinate within ±1e6 m";
+/// What a size must be.
+const SIZE: &str = "a size in (0, 1e6] m";
+/// What a quaternion component must be.
+const COMPONENT: &str = "a finite quaternion component";
+
+/// Builds the errors of one file.
+struct Errors<'a> {
+    origin: &'a str,
+}
+
+impl Errors<'_> {
+    fn field(&self, field: impl Into<String>, message: String) -> SceneError {
+        SceneError::Field {
+            origin: self.origin.to_owned(),
+            field: field.into(),
+            message,
+        }
+    }
+
+    fn number(&self, field: String, value: f64, allowed: &'static str) -> SceneError {
+        SceneError::Number {
+            origin: self.origin.to_owned(),
+            field,
+            value,
+            allowed,
+        }
+    }
+}
+
 impl Scene {
+    /// The largest magnitude, in metres, of a coordinate or a size a scene file may hold
+    /// (10⁶ m). Anything larger is a mistake in a robot's workspace, and would lose all
+    /// precision in the checker's `f32` arithmetic (or overflow to infinity).
+    pub const MAX_LENGTH: f64 = 1e6;
+
+    /// The smallest norm of a quaternion a scene file may hold before normalisation: a smaller
+    /// one is taken for the zero quaternion, which is no rotation.
+    pub const MIN_QUATERNION_NORM: f64 = 1e-9;
+
     /// A scene of these obstacles (ids `obstacle0`, …) allowing nothing.
     pub fn new(obstacles: Vec<Obstacle>) -> Self {
         let ids = (0..obstacles.len())
@@ -107,98 +180,95 @@ impl Scene {
     /// Reads a scene from YAML text; `origin` names it in errors (a file name).
     ///
     /// # Errors
-    /// [`SceneError::Yaml`] for text that is not YAML of a planning scene's shape,
-    /// [`SceneError::Field`] naming the field for unknown primitive types, wrong dimension
-    /// counts, non-positive or non-finite sizes, bad positions or quaternions, mismatched
-    /// primitive and pose counts, and a malformed allowed-collision matrix.
+    /// [`SceneError::Yaml`] for text that is not YAML of a planning scene's shape;
+    /// [`SceneError::Number`] naming the field and the value for a coordinate, size or
+    /// quaternion component out of range (see the type's documentation);
+    /// [`SceneError::Field`] naming the field for a missing `world`, unknown primitive types,
+    /// meshes and planes, wrong value counts, zero quaternions, repeated object ids,
+    /// mismatched primitive and pose counts, and a malformed allowed-collision matrix.
     pub fn from_yaml_str(text: &str, origin: &str) -> Result<Self, SceneError> {
-        let file: SceneFile = serde_saphyr::from_str(text).map_err(|e| SceneError::Yaml {
-            origin: origin.to_owned(),
-            message: e.to_string(),
-        })?;
-        let field = |field: String, message: String| SceneError::Field {
-            origin: origin.to_owned(),
-            field,
-            message,
+        let errors = Errors { origin };
+        let file: SceneFile = crate::yaml_text::read_yaml(text, origin)?;
+        let objects = match file.world {
+            None => {
+                return Err(errors.field(
+                    "world",
+                    "missing: this is not a MoveIt planning scene (a scene without obstacles \
+                     says `world: {collision_objects: []}`)"
+                        .into(),
+                ));
+            }
+            Some(world) => world.map(|w| w.collision_objects).unwrap_or_default(),
         };
         let mut scene = Self::default();
-        let objects = file.world.map(|w| w.collision_objects).unwrap_or_default();
+        let mut ids = HashMap::new();
         for (o, object) in objects.iter().enumerate() {
-            let at = format!("world.collision_objects[{o}]");
-            if object.primitives.len() != object.primitive_poses.len() {
-                return Err(field(
-                    at,
+            if let Some(first) = ids.insert(object.id.as_str(), o)
+                && !object.id.is_empty()
+            {
+                return Err(errors.field(
+                    format!("world.collision_objects[{o}].id"),
                     format!(
-                        "{} primitives but {} primitive_poses",
-                        object.primitives.len(),
-                        object.primitive_poses.len()
+                        "`{}` is also the id of world.collision_objects[{first}] (ids must be \
+                         unique: MoveIt would keep only the last)",
+                        object.id
                     ),
                 ));
             }
-            let base = match &object.pose {
-                None => DAffine3::IDENTITY,
-                Some(p) => {
-                    let (t, r) = pose(p).map_err(|m| field(format!("{at}.pose"), m))?;
-                    DAffine3::from_rotation_translation(r, t)
-                }
-            };
-            for (p, (primitive, placed)) in object
-                .primitives
-                .iter()
-                .zip(&object.primitive_poses)
-                .enumerate()
-            {
-                let shape = shape(primitive)
-                    .map_err(|m| field(format!("{at}.primitives[{p}]{}", m.0), m.1))?;
-                let (t, r) =
-                    pose(placed).map_err(|m| field(format!("{at}.primitive_poses[{p}]"), m))?;
-                let world = base * DAffine3::from_rotation_translation(r, t);
-                let (_, rotation, position) = world.to_scale_rotation_translation();
-                scene
-                    .obstacles
-                    .push(Obstacle::new(shape, position, rotation));
-                scene.ids.push(object.id.clone());
-            }
+            scene.add_object(object, &format!("world.collision_objects[{o}]"), &errors)?;
         }
         if let Some(acm) = file.allowed_collision_matrix {
-            let n = acm.entry_names.len();
-            if acm.entry_values.len() != n {
-                return Err(field(
-                    "allowed_collision_matrix.entry_values".into(),
-                    format!("{} rows for {n} entry_names", acm.entry_values.len()),
-                ));
-            }
-            // Every row's length first, so that reading the mirror entry never goes out of
-            // bounds.
-            if let Some((i, row)) = acm
-                .entry_values
-                .iter()
-                .enumerate()
-                .find(|(_, r)| r.len() != n)
-            {
-                return Err(field(
-                    format!("allowed_collision_matrix.entry_values[{i}]"),
-                    format!("{} values for {n} entry_names", row.len()),
-                ));
-            }
-            for (i, row) in acm.entry_values.iter().enumerate() {
-                for (j, (&value, mirror)) in
-                    row.iter().zip(&acm.entry_values).enumerate().skip(i + 1)
-                {
-                    if value != mirror[i] {
-                        return Err(field(
-                            format!("allowed_collision_matrix.entry_values[{i}][{j}]"),
-                            "the matrix is not symmetric".into(),
-                        ));
-                    }
-                    if value {
-                        let (a, b) = (&acm.entry_names[i], &acm.entry_names[j]);
-                        scene.allowed.push((a.clone(), b.clone()));
-                    }
-                }
-            }
+            scene.allowed = allowed_pairs(acm, &errors)?;
         }
         Ok(scene)
+    }
+
+    /// Appends the obstacles of one collision object (`at` is its field path).
+    fn add_object(
+        &mut self,
+        object: &ObjectMessage,
+        at: &str,
+        errors: &Errors<'_>,
+    ) -> Result<(), SceneError> {
+        for (kind, count) in [
+            ("meshes", object.meshes.len()),
+            ("planes", object.planes.len()),
+        ] {
+            if count > 0 {
+                return Err(errors.field(
+                    format!("{at}.{kind}"),
+                    format!("{kind} are not supported (only primitives: box, cylinder, sphere)"),
+                ));
+            }
+        }
+        if object.primitives.len() != object.primitive_poses.len() {
+            return Err(errors.field(
+                at,
+                format!(
+                    "{} primitives but {} primitive_poses",
+                    object.primitives.len(),
+                    object.primitive_poses.len()
+                ),
+            ));
+        }
+        let base = match &object.pose {
+            None => DAffine3::IDENTITY,
+            Some(p) => pose(p, &format!("{at}.pose"), errors)?,
+        };
+        for (p, (primitive, placed)) in object
+            .primitives
+            .iter()
+            .zip(&object.primitive_poses)
+            .enumerate()
+        {
+            let shape = shape(primitive, &format!("{at}.primitives[{p}]"), errors)?;
+            let local = pose(placed, &format!("{at}.primitive_poses[{p}]"), errors)?;
+            let (_, rotation, position) = (base * local).to_scale_rotation_translation();
+            self.obstacles
+                .push(Obstacle::new(shape, position, rotation));
+            self.ids.push(object.id.clone());
+        }
+        Ok(())
     }
 
     /// The obstacles, one per primitive.
@@ -217,31 +287,83 @@ impl Scene {
     }
 }
 
-/// The shape of a primitive, or the field suffix and message of what is wrong.
-fn shape(p: &PrimitiveMessage) -> Result<Shape, (&'static str, String)> {
+/// The pairs an allowed-collision matrix allows, once a matrix that is square, symmetric and
+/// names each link once.
+fn allowed_pairs(
+    acm: AcmMessage,
+    errors: &Errors<'_>,
+) -> Result<Vec<(String, String)>, SceneError> {
+    let names = &acm.entry_names;
+    for (j, name) in names.iter().enumerate() {
+        if let Some(i) = names[..j].iter().position(|n| n == name) {
+            return Err(errors.field(
+                format!("allowed_collision_matrix.entry_names[{j}]"),
+                format!("`{name}` is also entry_names[{i}]"),
+            ));
+        }
+    }
+    let n = names.len();
+    if acm.entry_values.len() != n {
+        return Err(errors.field(
+            "allowed_collision_matrix.entry_values",
+            format!("{} rows for {n} entry_names", acm.entry_values.len()),
+        ));
+    }
+    // Every row's length first, so that reading the mirror entry never goes out of bounds.
+    if let Some((i, row)) = acm
+        .entry_values
+        .iter()
+        .enumerate()
+        .find(|(_, r)| r.len() != n)
+    {
+        return Err(errors.field(
+            format!("allowed_collision_matrix.entry_values[{i}]"),
+            format!("{} values for {n} entry_names", row.len()),
+        ));
+    }
+    let mut allowed = Vec::new();
+    for (i, row) in acm.entry_values.iter().enumerate() {
+        for (j, (&value, mirror)) in row.iter().zip(&acm.entry_values).enumerate().skip(i + 1) {
+            if value != mirror[i] {
+                return Err(errors.field(
+                    format!("allowed_collision_matrix.entry_values[{i}][{j}]"),
+                    "the matrix is not symmetric".into(),
+                ));
+            }
+            if value {
+                allowed.push((names[i].clone(), names[j].clone()));
+            }
+        }
+    }
+    Ok(allowed)
+}
+
+/// The shape of a primitive (`at` is its field path).
+fn shape(p: &PrimitiveMessage, at: &str, errors: &Errors<'_>) -> Result<Shape, SceneError> {
     let d = &p.dimensions;
     let (count, names) = match p.kind.as_str() {
         "box" => (3, "[x, y, z] side lengths"),
         "cylinder" => (2, "[height, radius]"),
         "sphere" => (1, "[radius]"),
         other => {
-            return Err((
-                ".type",
+            return Err(errors.field(
+                format!("{at}.type"),
                 format!("`{other}` is not a supported primitive (box, cylinder, sphere)"),
             ));
         }
     };
     if d.len() != count {
-        return Err((
-            ".dimensions",
+        return Err(errors.field(
+            format!("{at}.dimensions"),
             format!("a {} needs {count} values {names}, got {}", p.kind, d.len()),
         ));
     }
-    if let Some(v) = d.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
-        return Err((
-            ".dimensions",
-            format!("{v} is not a positive size ({names})"),
-        ));
+    if let Some((i, &v)) = d
+        .iter()
+        .enumerate()
+        .find(|(_, v)| !(**v > 0.0 && **v <= Scene::MAX_LENGTH))
+    {
+        return Err(errors.number(format!("{at}.dimensions[{i}]"), v, SIZE));
     }
     Ok(match count {
         3 => Shape::Cuboid {
@@ -255,30 +377,69 @@ fn shape(p: &PrimitiveMessage) -> Result<Shape, (&'static str, String)> {
     })
 }
 
-/// A pose's translation and (normalised) rotation, or what is wrong with it.
-fn pose(p: &PoseMessage) -> Result<(DVec3, DQuat), String> {
+/// A pose as a rigid transform, its quaternion normalised (`at` is its field path).
+fn pose(p: &PoseMessage, at: &str, errors: &Errors<'_>) -> Result<DAffine3, SceneError> {
     let [x, y, z] = p.position[..] else {
-        return Err(format!(
-            "position needs 3 values [x, y, z], got {}",
-            p.position.len()
+        return Err(errors.field(
+            format!("{at}.position"),
+            format!("needs 3 values [x, y, z], got {}", p.position.len()),
         ));
     };
     let [qx, qy, qz, qw] = p.orientation[..] else {
-        return Err(format!(
-            "orientation needs 4 values [x, y, z, w], got {}",
-            p.orientation.len()
+        return Err(errors.field(
+            format!("{at}.orientation"),
+            format!("needs 4 values [x, y, z, w], got {}", p.orientation.len()),
         ));
     };
-    if let Some(v) = [x, y, z, qx, qy, qz, qw]
-        .into_iter()
-        .find(|v| !v.is_finite())
-    {
-        return Err(format!("{v} is not a finite number"));
+    for (i, v) in [x, y, z].into_iter().enumerate() {
+        if !(-Scene::MAX_LENGTH..=Scene::MAX_LENGTH).contains(&v) {
+            return Err(errors.number(format!("{at}.position[{i}]"), v, COORDINATE));
+        }
     }
-    let q = DQuat::from_xyzw(qx, qy, qz, qw);
-    let norm = q.length();
-    if norm <= 1e-9 {
-        return Err("orientation is the zero quaternion".into());
+    let rotation = unit_quaternion([qx, qy, qz, qw]).map_err(|e| match e {
+        Unusable::Component(i, v) => errors.number(format!("{at}.orientation[{i}]"), v, COMPONENT),
+        Unusable::Norm(norm) => errors.field(
+            format!("{at}.orientation"),
+            if norm.is_finite() {
+                format!(
+                    "not a rotation: its norm {norm:e} is below {:e}",
+                    Scene::MIN_QUATERNION_NORM
+                )
+            } else {
+                "not a rotation: its norm overflows (beyond 1.8e308)".to_owned()
+            },
+        ),
+    })?;
+    Ok(DAffine3::from_rotation_translation(
+        rotation,
+        DVec3::new(x, y, z),
+    ))
+}
+
+/// Why a quaternion is no rotation.
+#[derive(Debug, PartialEq)]
+enum Unusable {
+    /// Component `.0` has the non-finite value `.1`.
+    Component(usize, f64),
+    /// The norm is below [`Scene::MIN_QUATERNION_NORM`], or beyond `f64::MAX` (infinite).
+    Norm(f64),
+}
+
+/// The unit quaternion of `[x, y, z, w]`, its norm computed without overflow or underflow
+/// (the components are first divided by the largest magnitude).
+fn unit_quaternion(q: [f64; 4]) -> Result<DQuat, Unusable> {
+    if let Some((i, &v)) = q.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+        return Err(Unusable::Component(i, v));
     }
-    Ok((DVec3::new(x, y, z), q / norm))
+    let largest = q.iter().fold(0.0, |m: f64, v| m.max(v.abs()));
+    if largest == 0.0 {
+        return Err(Unusable::Norm(0.0));
+    }
+    let scaled = DQuat::from_array(q.map(|v| v / largest));
+    let length = scaled.length(); // in [1, 2]
+    let norm = largest * length;
+    if !(norm >= Scene::MIN_QUATERNION_NORM && norm.is_finite()) {
+        return Err(Unusable::Norm(norm));
+    }
+    Ok(scaled / length)
 }

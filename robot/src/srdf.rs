@@ -2,7 +2,8 @@
 
 use crate::ModelError;
 
-/// The `(link1, link2)` pairs of every `<disable_collisions>` element of an SRDF document.
+/// The `(link1, link2)` pairs of the `<disable_collisions>` elements of an SRDF document: the
+/// children of its root, which must be `<robot>`.
 pub(crate) fn disabled_pairs(
     text: &str,
     origin: &str,
@@ -11,9 +12,20 @@ pub(crate) fn disabled_pairs(
         origin: origin.to_owned(),
         message: e.to_string(),
     })?;
+    let root = document.root_element();
+    if !root.has_tag_name("robot") {
+        return Err(ModelError::Srdf {
+            origin: origin.to_owned(),
+            message: format!(
+                "the root element is <{}>, not <robot>",
+                root.tag_name().name()
+            ),
+        });
+    }
     let mut pairs = Vec::new();
-    for node in document
-        .descendants()
+    // The root's own children, as MoveIt reads them (not elements nested in other elements).
+    for node in root
+        .children()
         .filter(|n| n.has_tag_name("disable_collisions"))
     {
         let attribute = |name: &str| {
@@ -55,5 +67,18 @@ mod tests {
         );
         let e = disabled_pairs("<robot>", "r.srdf").unwrap_err().to_string();
         assert!(e.starts_with("r.srdf: not a readable SRDF"), "{e}");
+    }
+
+    #[test]
+    fn a_root_other_than_robot_is_refused() {
+        let text = r#"<urdf><disable_collisions link1="a" link2="b"/></urdf>"#;
+        let e = disabled_pairs(text, "r.srdf").unwrap_err().to_string();
+        assert!(
+            e.starts_with("r.srdf: not a readable SRDF") && e.contains("<urdf>, not <robot>"),
+            "{e}"
+        );
+        // Only the root's children count: a pair inside another element is not MoveIt's.
+        let text = r#"<robot name="r"><group name="g"><disable_collisions link1="a" link2="b"/></group></robot>"#;
+        assert_eq!(disabled_pairs(text, "r.srdf").unwrap(), []);
     }
 }

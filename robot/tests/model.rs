@@ -186,3 +186,67 @@ fn malformed_urdfs_are_typed_errors_naming_the_culprit() {
         "{error}"
     );
 }
+
+#[test]
+fn names_given_twice_are_refused_naming_them() {
+    // A second joint called `shoulder` (it would otherwise load: one of them would win).
+    let error = edited(
+        "<joint name=\"mount\" type=\"fixed\">",
+        "<joint name=\"shoulder\" type=\"fixed\">",
+    )
+    .unwrap_err();
+    assert!(
+        matches!(&error, ModelError::DuplicateName { what: "joint", name, .. } if name == "shoulder"),
+        "{error}"
+    );
+    assert_eq!(
+        error.to_string(),
+        "URDF text: two joints are called `shoulder`"
+    );
+    let error = edited("<link name=\"tool\">", "<link name=\"arm\">").unwrap_err();
+    assert!(
+        matches!(&error, ModelError::DuplicateName { what: "link", name, .. } if name == "arm"),
+        "{error}"
+    );
+}
+
+#[test]
+fn absurd_origins_and_radii_are_refused() {
+    let error = edited(
+        "<origin xyz=\"0.1 0 0\" rpy=\"0 0 0\"/>",
+        "<origin xyz=\"1e308 0 0\" rpy=\"0 0 0\"/>",
+    )
+    .unwrap_err();
+    assert!(
+        matches!(&error, ModelError::BadNumber { element, value, .. } if element == "mount" && *value == 1e308),
+        "{error}"
+    );
+    assert!(error.to_string().contains("1e6"), "{error}");
+    let error = edited("radius=\"0.02\"", "radius=\"1e30\"").unwrap_err();
+    assert!(
+        matches!(&error, ModelError::BadNumber { element, .. } if element == "tool"),
+        "{error}"
+    );
+}
+
+#[test]
+fn an_srdf_whose_root_is_not_robot_is_refused() {
+    let robot = RobotModel::from_urdf_str(TWO_LINK).unwrap();
+    let error = robot
+        .clone()
+        .with_srdf_str(r#"<launch><disable_collisions link1="base" link2="arm"/></launch>"#)
+        .unwrap_err();
+    assert!(matches!(error, ModelError::Srdf { .. }), "{error}");
+    assert!(
+        error.to_string().contains("<launch>, not <robot>"),
+        "{error}"
+    );
+    // An SRDF file is named in the error.
+    let path = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("not_robot.srdf");
+    std::fs::write(&path, "<?xml version=\"1.0\"?>\n<srdf/>").unwrap();
+    let error = robot.with_srdf_file(&path).unwrap_err().to_string();
+    assert!(
+        error.contains("not_robot.srdf") && error.contains("<srdf>, not <robot>"),
+        "{error}"
+    );
+}
