@@ -1,7 +1,7 @@
 //! [`Interrupt`]: SIGINT and SIGTERM, handled alike.
 
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicI32, AtomicUsize, Ordering};
 
 use signal_hook::consts::{SIGINT, SIGTERM};
 
@@ -13,6 +13,10 @@ use crate::HarnessError;
 /// writes its summaries and the process exits with `128 + signal` (130 or 143). A second signal
 /// leaves at once (exit code `128 +` that signal); the raw files are complete up to the last
 /// finished run then.
+///
+/// While a command reads its inputs ([`ReadingInputs::begin`]), a read may
+/// block (a FIFO, a stalled network file system) where no flag is polled: a signal then leaves
+/// at once, saying so, with the same exit code; nothing was run yet.
 ///
 /// ```no_run
 /// use std::sync::atomic::Ordering;
@@ -45,7 +49,15 @@ impl Interrupt {
             .spawn(move || {
                 for received in signals.forever() {
                     let name = if received == SIGTERM { "SIGTERM" } else { "SIGINT" };
-                    if handler.receive(received) {
+                    // The flag first, then the phase: a command that enters the input phase
+                    // checks the flag after announcing it (`ReadingInputs::begin`), so one of the two
+                    // sees the other.
+                    let first = handler.receive(received);
+                    if ReadingInputs::active() {
+                        eprintln!("\n{name} while reading the inputs: leaving at once (nothing was run)");
+                        std::process::exit(128 + received);
+                    }
+                    if first {
                         eprintln!(
                             "\n{name}: finishing, then writing every finished run (send it again to leave at once)"
                         );
@@ -106,6 +118,44 @@ impl Interrupt {
     }
 }
 
+/// How many [`ReadingInputs`] guards are alive in the process (signals are the process's).
+static READING_INPUTS: AtomicUsize = AtomicUsize::new(0);
+
+/// The input phase of a command: while a guard lives, a SIGINT or SIGTERM makes the process
+/// leave at once (128 + signal) instead of raising the flag, since a read blocked on a FIFO or
+/// a stalled file system polls no flag. Guards nest; the phase ends when the last is dropped.
+#[derive(Debug)]
+#[must_use = "the input phase ends when the guard is dropped"]
+pub(crate) struct ReadingInputs<'a> {
+    flag: &'a AtomicBool,
+}
+
+impl<'a> ReadingInputs<'a> {
+    /// Begins the input phase of a command polling `flag` (the [`Interrupt`]'s). Check
+    /// [`interrupted`](Self::interrupted) at once: a signal may have come just before.
+    pub(crate) fn begin(flag: &'a AtomicBool) -> Self {
+        READING_INPUTS.fetch_add(1, Ordering::SeqCst);
+        Self { flag }
+    }
+
+    /// `true` if the flag is raised: a signal arrived before the input phase began (or the
+    /// caller raised it), and the command should stop before reading anything.
+    pub(crate) fn interrupted(&self) -> bool {
+        self.flag.load(Ordering::SeqCst)
+    }
+
+    /// `true` while some guard of the process is alive.
+    fn active() -> bool {
+        READING_INPUTS.load(Ordering::SeqCst) > 0
+    }
+}
+
+impl Drop for ReadingInputs<'_> {
+    fn drop(&mut self) {
+        READING_INPUTS.fetch_sub(1, Ordering::SeqCst);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -135,5 +185,22 @@ mod tests {
         assert_eq!((interrupt.signal(), interrupt.exit_code()), (None, 130));
         // A signal after the caller raised the flag leaves at once.
         assert!(!interrupt.receive(SIGTERM));
+    }
+
+    #[test]
+    fn the_input_phase_lasts_while_a_guard_lives_and_sees_an_earlier_signal() {
+        let interrupt = Interrupt::detached();
+        let flag = interrupt.flag();
+        let outer = ReadingInputs::begin(&flag);
+        assert!(ReadingInputs::active() && !outer.interrupted());
+        {
+            let _inner = ReadingInputs::begin(&flag);
+            assert!(ReadingInputs::active());
+        }
+        assert!(ReadingInputs::active(), "guards nest");
+        interrupt.receive(SIGTERM);
+        assert!(outer.interrupted());
+        // (Other tests of this binary may hold guards meanwhile: the count is not checked to
+        // fall to zero.)
     }
 }

@@ -7,6 +7,7 @@ use std::time::Instant;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
+use crate::interrupt::ReadingInputs;
 use crate::kpi_table::number;
 use crate::{
     ArmPicture, HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource,
@@ -47,7 +48,8 @@ pub struct PlanArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub resolution: Option<f64>,
     /// Allow a collision-check step larger than the thinnest obstacle or anti-obstacle
-    /// (refused otherwise: edges could cross thin obstacles between checked points).
+    /// (refused otherwise: edges could cross thin obstacles between checked points). Without
+    /// it, a problem file's `allow_coarse_step` stands.
     #[arg(long)]
     pub allow_coarse_step: bool,
     /// Folder for the picture of a 2-D run or an arm plan.
@@ -68,6 +70,12 @@ impl PlanArgs {
     /// Unknown planner or problem, bad parameters, dimension or budget, an unwritable output
     /// folder (all before planning), or a failed picture.
     pub fn run(&self, interrupt: &AtomicBool) -> Result<CommandOutcome, HarnessError> {
+        // Reading the inputs may block (a FIFO, a stalled file system) where nothing polls the
+        // flag: until the planner is built, a signal leaves at once.
+        let reading = ReadingInputs::begin(interrupt);
+        if reading.interrupted() {
+            return Ok(CommandOutcome::Interrupted);
+        }
         let configuration = parse_configuration(&self.planner)?;
         let mut overrides = ParameterOverrides::default();
         for s in &self.set {
@@ -95,9 +103,11 @@ impl PlanArgs {
         let instance_number = self
             .instance
             .unwrap_or_else(|| crate::commands::bench::first_instance(&source));
-        let problem = source
-            .build(dimension, instance_number, self.resolution)?
-            .allowing_coarse_step(self.allow_coarse_step);
+        let mut problem = source.build(dimension, instance_number, self.resolution)?;
+        // The flag only ever allows: without it, the problem file's choice stands.
+        if self.allow_coarse_step {
+            problem = problem.allowing_coarse_step(true);
+        }
         let label = source.label();
         problem
             .check_step()
@@ -137,6 +147,10 @@ impl PlanArgs {
                 obstacle.map_or_else(|| "none".to_owned(), short_number),
                 anti.map_or_else(|| "none".to_owned(), short_number),
             );
+        }
+        drop(reading);
+        if interrupt.load(std::sync::atomic::Ordering::SeqCst) {
+            return Ok(CommandOutcome::Interrupted);
         }
         let job = RunJob {
             instance: 0,
