@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use crate::kpi_table::number;
 use crate::statistics::{ClopperPearson, MedianEstimate};
-use crate::{KpiRow, KpiTable};
+use crate::{ExperimentResults, KpiRow, KpiTable, Shard};
 
 /// How a statistic moved from A to B, judged by its confidence intervals.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -129,6 +129,71 @@ impl CampaignComparison {
             only_a,
             only_b,
         }
+    }
+
+    /// Why the results `a` (of a folder holding `a_shard` of its experiment, `None`: all of
+    /// it) and `b` do not measure the same thing, one sentence per difference; empty if they
+    /// can be compared. Differences: the time budget of a problem instance both hold; runs
+    /// that stop at their first solution against runs to the budget; a shard against the whole
+    /// experiment or another shard; and a folder without every run it schedules (an
+    /// interrupted `bench`). Planners, parameters, seeds and run counts may differ: they are
+    /// what a comparison is for.
+    pub fn mismatches(
+        a: &ExperimentResults,
+        a_shard: Option<Shard>,
+        b: &ExperimentResults,
+        b_shard: Option<Shard>,
+    ) -> Vec<String> {
+        let mut reasons = Vec::new();
+        let budgets: Vec<String> = a
+            .instances
+            .iter()
+            .filter_map(|i| {
+                let other = b.instances.iter().find(|j| j.id == i.id)?;
+                (other.budget != i.budget)
+                    .then(|| format!("{} {} s in A, {} s in B", i.id, i.budget, other.budget))
+            })
+            .collect();
+        if let Some(first) = budgets.first() {
+            let more = match budgets.len() {
+                1 => String::new(),
+                n => format!(" (and {} more instances)", n - 1),
+            };
+            reasons.push(format!("the time budgets per run differ: {first}{more}"));
+        }
+        let stop = |r: &ExperimentResults| {
+            if r.experiment.first_solution {
+                "stop at their first solution"
+            } else {
+                "run to the budget"
+            }
+        };
+        if a.experiment.first_solution != b.experiment.first_solution {
+            reasons.push(format!("A's runs {} and B's {}", stop(a), stop(b)));
+        }
+        let part = |s: Option<Shard>| {
+            s.map_or("the whole experiment".to_owned(), |s| {
+                format!("shard {s} of its experiment")
+            })
+        };
+        if a_shard != b_shard {
+            reasons.push(format!("A holds {} and B {}", part(a_shard), part(b_shard)));
+        }
+        for (name, results, shard) in [("A", a, a_shard), ("B", b, b_shard)] {
+            let (recorded, planned) = (results.run_count(), results.planned_runs(shard));
+            if recorded < planned {
+                reasons.push(format!(
+                    "{name} holds {recorded} of the {planned} runs {} schedules (an unfinished \
+                     `bench`: resume it)",
+                    if shard.is_some() {
+                        "its shard"
+                    } else {
+                        "its experiment"
+                    }
+                ));
+            }
+        }
+        reasons
     }
 
     /// The comparison as Markdown: per problem and planner, median `t_init` in A and B with

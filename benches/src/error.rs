@@ -167,6 +167,49 @@ pub enum HarnessError {
         /// The serialiser's message.
         message: String,
     },
+    /// Another process holds the results folder: one process writes a folder at a time, and
+    /// a folder being written is not read.
+    #[error("results folder `{}` is in use by {holder}; {advice}", path.display())]
+    FolderLocked {
+        /// The folder.
+        path: PathBuf,
+        /// The holder's process id, if it is a writer that recorded it.
+        pid: Option<u32>,
+        /// Who holds it (process id and command line, as the holder recorded them).
+        holder: String,
+        /// What to do.
+        advice: String,
+    },
+    /// The files of a results folder disagree about the runs it holds.
+    #[error(
+        "results folder `{}` disagrees with itself: {counts}; {advice}",
+        path.display()
+    )]
+    FolderInconsistent {
+        /// The folder.
+        path: PathBuf,
+        /// What each file holds, and the first difference.
+        counts: String,
+        /// What to do.
+        advice: String,
+    },
+    /// Two results folders whose numbers cannot be compared (different time budgets, a shard
+    /// or an unfinished folder against a whole one).
+    #[error(
+        "`{}` and `{}` cannot be compared: {}; pass --allow-mismatch to compare them anyway \
+         (with a warning)",
+        a.display(),
+        b.display(),
+        reasons.join("; ")
+    )]
+    IncomparableFolders {
+        /// Folder A.
+        a: PathBuf,
+        /// Folder B.
+        b: PathBuf,
+        /// Every difference found.
+        reasons: Vec<String>,
+    },
     /// An OMPL benchmark log does not follow the grammar.
     #[error("benchmark log line {line}: {message}")]
     LogSyntax {

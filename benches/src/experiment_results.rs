@@ -1,6 +1,6 @@
 //! [`ExperimentResults`]: every finished run of an experiment, with how and where it ran.
 
-use crate::{Experiment, MachineInfo, ProblemInstance, RunRecord, RunStatus};
+use crate::{Experiment, MachineInfo, ProblemInstance, RunRecord, RunStatus, Shard};
 
 /// The outcome of executing an [`Experiment`]: the runs of every problem instance, and what
 /// the outputs must record about the execution (start date, total time, how many runs
@@ -57,5 +57,46 @@ impl ExperimentResults {
     /// Number of finished runs.
     pub fn run_count(&self) -> usize {
         self.runs.iter().map(Vec::len).sum()
+    }
+
+    /// The runs the experiment schedules on these instances — every planner on every instance
+    /// `experiment.runs` times — or the share of them `shard` owns (the schedule's positions
+    /// `p ≡ K − 1 (mod N)`).
+    ///
+    /// ```
+    /// use mit_star_benches::{Experiment, ExperimentResults, MachineInfo, Shard};
+    /// let experiment = Experiment::from_toml_str(
+    ///     "planners = [\"mit-star\", \"eit-star\"]\nruns = 5\n[[problems]]\n\
+    ///      name = \"wall-gap\"\ndimensions = [2]\ntime = 0.05\n",
+    ///     "doc",
+    ///     None,
+    /// )?;
+    /// let instances = experiment.instances()?;
+    /// let results = ExperimentResults {
+    ///     runs: vec![Vec::new(); instances.len()],
+    ///     experiment,
+    ///     instances,
+    ///     started_at: String::new(),
+    ///     total_time: 0.0,
+    ///     concurrency: 1,
+    ///     interrupted: false,
+    ///     machine: MachineInfo::detect(),
+    /// };
+    /// assert_eq!(results.planned_runs(None), 10);
+    /// // Positions 0, 3, 6, 9 and 2, 5, 8 of the schedule.
+    /// assert_eq!(results.planned_runs(Some("1/3".parse::<Shard>()?)), 4);
+    /// assert_eq!(results.planned_runs(Some("3/3".parse::<Shard>()?)), 3);
+    /// # Ok::<(), mit_star_benches::HarnessError>(())
+    /// ```
+    pub fn planned_runs(&self, shard: Option<Shard>) -> usize {
+        let whole = self
+            .instances
+            .len()
+            .saturating_mul(self.experiment.planners.len())
+            .saturating_mul(self.experiment.runs);
+        match shard {
+            None => whole,
+            Some(s) => (whole + s.count() - s.index()) / s.count(),
+        }
     }
 }

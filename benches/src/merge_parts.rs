@@ -4,6 +4,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
+use crate::results_folder::folder_lock::FolderLock;
 use crate::{
     Experiment, ExperimentResults, HarnessError, MachineInfo, ResultsFolder, RunJob, RunJournal,
     RunKey, RunRecord, Shard, iso_timestamp, results_from_records,
@@ -29,17 +30,24 @@ pub struct MergeReport {
 /// differ), a folder that is not a shard, parts of different shard counts, a shard given twice
 /// or missing, a run recorded in a part it does not belong to or in two parts, and missing runs
 /// (an interrupted shard: resume it first). `output` may be a fresh folder or an earlier merge
-/// of the same experiment (runs it holds are kept, not duplicated).
+/// of the same experiment (runs it holds are kept, not duplicated). The parts are read under
+/// their shared locks and `output` written under its write lock: a part still being written,
+/// or an output another process writes, is refused.
 ///
 /// # Errors
-/// [`HarnessError::Usage`] for the refusals above, and the errors of reading the parts and of
-/// writing `output`.
+/// [`HarnessError::Usage`] for the refusals above, [`HarnessError::FolderLocked`] for a
+/// folder in use, and the errors of reading the parts and of writing `output`.
 pub fn merge_parts(
     parts: &[PathBuf],
     output: &Path,
     plots: bool,
 ) -> Result<MergeReport, HarnessError> {
     let shards = shards_of(parts)?;
+    // No part changes while it is read: a shard still being written is refused.
+    let _reading = parts
+        .iter()
+        .map(|part| FolderLock::shared(part))
+        .collect::<Result<Vec<_>, _>>()?;
     let first = &parts[0];
     let count = shards[0].count();
     let experiment = Experiment::from_file(&first.join("experiment.toml"))?;

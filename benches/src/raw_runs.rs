@@ -4,7 +4,7 @@
 use std::io::Write as _;
 use std::path::Path;
 
-use crate::{ExperimentResults, HarnessError, ProblemInstance, RunRecord};
+use crate::{ExperimentResults, HarnessError, ProblemInstance, RunKey, RunRecord};
 
 /// The fixed CSV columns before the counters (the trace column comes last).
 pub const CSV_COLUMNS: [&str; 23] = [
@@ -148,6 +148,79 @@ pub(crate) fn json_line(
         object.insert("concurrent_runs".into(), concurrency.into());
     }
     Ok(value.to_string())
+}
+
+/// The runs a `runs.csv` holds: whether its header is the one this mit-star writes, and the
+/// identity of each whole row (instance, planner, run), in file order. A last row without its
+/// line break (an append cut short) is not counted.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct CsvRuns {
+    /// The first line is [`csv_header`]'s.
+    pub(crate) header_matches: bool,
+    /// The identity of every whole data row.
+    pub(crate) keys: Vec<RunKey>,
+}
+
+/// Reads the runs of the `runs.csv` at `path`; `None` if it does not exist or is empty.
+///
+/// # Errors
+/// [`HarnessError::Io`] if it cannot be read; [`HarnessError::Serialise`] naming the line if a
+/// row of this mit-star's columns is not CSV or has no run index.
+pub(crate) fn csv_runs(path: &Path) -> Result<Option<CsvRuns>, HarnessError> {
+    let bytes = match std::fs::read(path) {
+        Ok(bytes) => bytes,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(source) => {
+            return Err(HarnessError::Io {
+                path: path.to_path_buf(),
+                source,
+            });
+        }
+    };
+    let whole = bytes
+        .iter()
+        .rposition(|&b| b == b'\n')
+        .map_or(&bytes[..0], |end| &bytes[..=end]);
+    if whole.is_empty() {
+        return Ok((!bytes.is_empty()).then(|| CsvRuns {
+            header_matches: false,
+            keys: Vec::new(),
+        }));
+    }
+    let header_end = whole.iter().position(|&b| b == b'\n').unwrap_or(0);
+    let header = csv_bytes(path, &csv_header())?;
+    if whole[..=header_end] != header[..] {
+        return Ok(Some(CsvRuns {
+            header_matches: false,
+            keys: Vec::new(),
+        }));
+    }
+    let bad = |line: u64, message: String| HarnessError::Serialise {
+        path: path.to_path_buf(),
+        message: format!("line {line}: {message}"),
+    };
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(true)
+        .from_reader(whole);
+    let mut keys = Vec::new();
+    let mut row = csv::StringRecord::new();
+    loop {
+        let line = reader.position().line();
+        match reader.read_record(&mut row) {
+            Ok(false) => break,
+            Ok(true) => {}
+            Err(e) => return Err(bad(line, e.to_string())),
+        }
+        let field = |i: usize| row.get(i).unwrap_or_default();
+        let run = field(8)
+            .parse::<usize>()
+            .map_err(|_| bad(line, "no run index in the `run` column".into()))?;
+        keys.push((field(0).to_owned(), field(6).to_owned(), run));
+    }
+    Ok(Some(CsvRuns {
+        header_matches: true,
+        keys,
+    }))
 }
 
 /// Writes every run of `results` to `path` as CSV (a header, then one row per run).

@@ -1,7 +1,12 @@
 //! [`ResultsFolder`]: where an experiment's outputs go, checked before any work starts.
 
+mod agreement;
+pub(crate) mod folder_lock;
+
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+
+use folder_lock::FolderLock;
 
 use crate::{
     BenchmarkLog, Experiment, ExperimentFigure, ExperimentResults, HarnessError, KpiTable,
@@ -23,6 +28,14 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 /// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
 /// | `kpi.md` | the KPI tables |
 /// | `shard.toml` | which part of the experiment's runs the folder holds (`bench --shard K/N` only) |
+/// | `.mit-star.lock` | the lock of the one process writing the folder, with its process id and command line while it runs |
+///
+/// A folder has one writer at a time: [`prepare`](Self::prepare) takes an advisory lock on
+/// `.mit-star.lock` (`flock`), held until the `ResultsFolder` is dropped, and refuses a folder
+/// another process writes, naming it. The operating system releases the lock when the writer
+/// exits however it exits, so a killed writer leaves no stale lock. Readers
+/// ([`read_results`](Self::read_results), `merge` reading its parts) take it shared, and refuse
+/// a folder being written.
 ///
 /// [`prepare`](Self::prepare) creates the folder, checks it is writable and opens the
 /// database before any planning, so that a bad folder fails fast. Nothing is ever written outside the folder: its
@@ -31,16 +44,23 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 pub struct ResultsFolder {
     path: PathBuf,
     database: PlannerArenaDatabase,
+    _lock: FolderLock,
 }
 
 impl ResultsFolder {
-    /// Creates the folder (and `logs/`, `plots/`), checks that files can be written in it,
-    /// and opens (or creates) its database.
+    /// Creates the folder (and `logs/`, `plots/`), takes its write lock, checks that files can
+    /// be written in it, and opens (or creates) its database.
     ///
     /// # Errors
+    /// [`HarnessError::FolderLocked`] if another process writes (or reads) the folder,
     /// [`HarnessError::OutputFolder`] if the folder cannot be created or written,
     /// [`HarnessError::Database`] if an existing `benchmark.db` is not a database.
     pub fn prepare(path: &Path) -> Result<Self, HarnessError> {
+        std::fs::create_dir_all(path).map_err(|source| HarnessError::OutputFolder {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let lock = FolderLock::exclusive(path)?;
         writable_folder(path)?;
         for dir in [path.join("logs"), path.join("plots")] {
             writable_folder(&dir)?;
@@ -49,6 +69,7 @@ impl ResultsFolder {
         Ok(Self {
             path: path.to_path_buf(),
             database,
+            _lock: lock,
         })
     }
 
@@ -95,10 +116,14 @@ impl ResultsFolder {
 
     /// Every run recorded in the results folder `path`, as results of the experiment in its
     /// `experiment.toml` (for reading a finished campaign back, e.g. `mit-star compare`).
+    /// Reads under the folder's shared lock, and only a folder whose files agree: `runs.jsonl`
+    /// and `runs.csv` hold the same runs, each once, and the database as many.
     ///
     /// # Errors
-    /// [`HarnessError::Usage`] if `path` is not a results folder; the errors of reading the
-    /// experiment (its problems included) and the raw runs.
+    /// [`HarnessError::Usage`] if `path` is not a results folder;
+    /// [`HarnessError::FolderLocked`] if another process is writing it;
+    /// [`HarnessError::FolderInconsistent`] naming each file's count if they disagree; the
+    /// errors of reading the experiment (its problems included) and the raw runs.
     pub fn read_results(path: &Path) -> Result<ExperimentResults, HarnessError> {
         let file = path.join("experiment.toml");
         if !file.is_file() {
@@ -107,6 +132,8 @@ impl ResultsFolder {
                 path.display()
             )));
         }
+        let _lock = FolderLock::shared(path)?;
+        agreement::check_agreement(path)?;
         let experiment = Experiment::from_file(&file)?;
         let instances = experiment.instances()?;
         let template = ExperimentResults {
@@ -267,7 +294,7 @@ impl ResultsFolder {
 ///
 /// # Errors
 /// [`HarnessError::Io`] naming the file.
-fn write_replacing(path: &Path, bytes: &[u8]) -> Result<(), HarnessError> {
+pub(crate) fn write_replacing(path: &Path, bytes: &[u8]) -> Result<(), HarnessError> {
     let mut temporary = path.as_os_str().to_owned();
     temporary.push(".new");
     let temporary = PathBuf::from(temporary);

@@ -1,12 +1,18 @@
 //! [`RunJournal`]: every finished run is on disk before the next one starts.
 
+mod repair;
+
 use std::collections::{HashMap, HashSet};
-use std::fs::{File, OpenOptions};
-use std::io::{BufRead as _, BufReader, Read as _, Seek as _, SeekFrom, Write as _};
+use std::fs::File;
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use crate::results_folder::DATABASE_FILE;
+use repair::{JournalLine, cut_partial_line, distinct, io, open_for_append, read_lines};
+pub(crate) use repair::{describe, repeats};
+
+use crate::results_folder::folder_lock::FolderLock;
+use crate::results_folder::{DATABASE_FILE, write_replacing};
 use crate::{
     BenchmarkLog, ExperimentResults, HarnessError, MachineInfo, PlannerArenaDatabase,
     ProblemInstance, RunKey, RunRecord, raw_runs,
@@ -18,11 +24,19 @@ use crate::{
 /// continued if an earlier `bench` created it, and its `runcount` kept to the runs recorded).
 /// A crash, SIGKILL or a job's time limit loses at most the runs in flight.
 ///
-/// The raw files are only ever appended to. [`open`](Self::open) repairs what a crash in the
-/// middle of an append can leave: a line cut short at the end of a file is removed, and rows
-/// `runs.csv` lacks behind `runs.jsonl` (the journal of record) are appended. It refuses files
-/// it cannot continue without mixing data: a `runs.csv` with other columns, or a database
-/// holding more runs than `runs.jsonl`.
+/// A journal holds the folder's write lock (shared with the
+/// [`ResultsFolder`](crate::ResultsFolder) of the same process, if any): a second process
+/// cannot open one on the same folder.
+///
+/// The raw files are only ever appended to, except when [`open`](Self::open) repairs them. It
+/// repairs what a crash in the middle of an append can leave: a line cut short at the end of a
+/// file is removed, and rows `runs.csv` lacks behind `runs.jsonl` (the journal of record) are
+/// appended. It heals a folder in which a run is recorded twice (by two `bench`es writing it
+/// at once, before folders were locked): the first line of each run is kept, `runs.csv` is
+/// rebuilt from `runs.jsonl` and the database emptied, to be rebuilt from the raw runs when
+/// the writer finishes. It refuses files it cannot continue without mixing data: a `runs.csv`
+/// with other columns or with runs `runs.jsonl` lacks, or a database holding more runs than
+/// `runs.jsonl` has lines.
 ///
 /// Hand it to the worker threads behind a `Mutex`: one writer, lines never interleave.
 #[derive(Debug)]
@@ -37,71 +51,119 @@ pub struct RunJournal {
     experiments: HashMap<String, (i64, HashMap<String, usize>)>,
     /// Every run recorded in the folder (earlier `bench`es and this one).
     recorded: HashSet<RunKey>,
+    /// Lines of `runs.jsonl` dropped by [`open`](Self::open) as repeats of a recorded run.
+    healed: usize,
     started: Instant,
+    _lock: FolderLock,
 }
 
 impl RunJournal {
     /// Opens (creating if needed) the raw files and the database of `folder` for appending,
-    /// for an experiment with `instances`, and repairs an append a crash cut short.
+    /// for an experiment with `instances`; takes the folder's write lock; repairs an append a
+    /// crash cut short and heals runs recorded twice (see the type).
     ///
     /// # Errors
-    /// [`HarnessError::Io`] or [`HarnessError::Database`] if they cannot be opened or
+    /// [`HarnessError::FolderLocked`] if another process writes the folder;
+    /// [`HarnessError::Io`] or [`HarnessError::Database`] if the files cannot be opened or
     /// repaired; [`HarnessError::Serialise`] for a malformed line of `runs.jsonl`;
     /// [`HarnessError::Usage`] for files this experiment cannot continue (see the type).
     pub fn open(folder: &Path, instances: &[ProblemInstance]) -> Result<Self, HarnessError> {
+        let lock = FolderLock::exclusive(folder)?;
         let jsonl_path = folder.join("runs.jsonl");
         let csv_path = folder.join("runs.csv");
         let mut jsonl = open_for_append(&jsonl_path)?;
         let mut csv = open_for_append(&csv_path)?;
         cut_partial_line(&mut jsonl).map_err(io(&jsonl_path))?;
         cut_partial_line(&mut csv).map_err(io(&csv_path))?;
-        let entries = read_entries(&jsonl_path, false)?;
-        let header = raw_runs::csv_bytes(&csv_path, &raw_runs::csv_header())?;
-        let rows = match csv_rows(&csv_path, &header)? {
-            None => {
-                csv.write_all(&header).map_err(io(&csv_path))?;
-                0
-            }
-            Some(rows) => rows,
+        let lines = read_lines(&jsonl_path, false)?;
+        let written = lines.len();
+        let entries = distinct(lines);
+        let by_id: HashMap<&str, &ProblemInstance> =
+            instances.iter().map(|i| (i.id.as_str(), i)).collect();
+        let instance_of = |record: &RunRecord| {
+            by_id.get(record.instance.as_str()).copied().ok_or_else(|| {
+                HarnessError::Usage(format!(
+                    "`{}` records a run on `{}`, which this experiment does not have",
+                    jsonl_path.display(),
+                    record.instance
+                ))
+            })
         };
-        if rows > entries.len() {
+        for entry in &entries {
+            instance_of(&entry.record)?;
+        }
+        let recorded: HashSet<RunKey> = entries.iter().map(|e| e.record.key()).collect();
+        let csv_runs = raw_runs::csv_runs(&csv_path)?;
+        if csv_runs.as_ref().is_some_and(|c| !c.header_matches) {
             return Err(HarnessError::Usage(format!(
-                "`{}` has {rows} runs but `{}` only {}: the files were changed by hand; \
-                 restore them or write to another --output folder",
-                csv_path.display(),
-                jsonl_path.display(),
-                entries.len()
+                "`{}` has other columns than this mit-star writes (written by another \
+                 version?); write to another --output folder",
+                csv_path.display()
             )));
         }
-        for (record, concurrency) in &entries[rows..] {
-            let instance = instances
-                .iter()
-                .find(|i| i.id == record.instance)
-                .ok_or_else(|| {
-                    HarnessError::Usage(format!(
-                        "`{}` records a run on `{}`, which this experiment does not have",
-                        jsonl_path.display(),
-                        record.instance
-                    ))
-                })?;
-            let row = raw_runs::csv_row(instance, *concurrency, record);
-            csv.write_all(&raw_runs::csv_bytes(&csv_path, &row)?)
-                .map_err(io(&csv_path))?;
+        let csv_keys = csv_runs.map(|c| c.keys);
+        if let Some(extra) = csv_keys.iter().flatten().find(|k| !recorded.contains(k)) {
+            return Err(HarnessError::Usage(format!(
+                "`{}` has {} but `{}` does not ({} runs against {}): the files were changed \
+                 by hand; restore them or write to another --output folder",
+                csv_path.display(),
+                describe(extra),
+                jsonl_path.display(),
+                csv_keys.as_ref().map_or(0, Vec::len),
+                entries.len()
+            )));
         }
         let database_path = folder.join(DATABASE_FILE);
         let database = PlannerArenaDatabase::open(&database_path)?;
         let in_database = database.count("runs")?;
-        if in_database > entries.len() as i64 {
+        if in_database > written as i64 {
             return Err(HarnessError::Usage(format!(
-                "`{}` holds {in_database} runs but `{}` only {}: the database has runs the raw \
-                 files do not (written by an older mit-star, or merged by hand), and rebuilding \
-                 it would lose them; move it away or write to another --output folder",
+                "`{}` holds {in_database} runs but `{}` only {written}: the database has runs \
+                 the raw files do not (written by an older mit-star, or merged by hand), and \
+                 rebuilding it would lose them; move it away or write to another --output folder",
                 database_path.display(),
                 jsonl_path.display(),
-                entries.len()
             )));
         }
-        let recorded = entries.iter().map(|(r, _)| r.key()).collect();
+        let csv_repeats = csv_keys.as_ref().map_or(0, |k| repeats(k).1);
+        let healed = written - entries.len();
+        if healed > 0 || csv_repeats > 0 {
+            // Runs recorded twice: keep the first of each everywhere. The database is emptied
+            // first and the journal of record rewritten last, so that a crash in between
+            // leaves repeats for the next open to heal, never a database with more runs.
+            clear_database(&database)?;
+            let mut rows = raw_runs::csv_bytes(&csv_path, &raw_runs::csv_header())?;
+            let mut text = String::new();
+            for entry in &entries {
+                let row = raw_runs::csv_row(
+                    instance_of(&entry.record)?,
+                    entry.concurrency,
+                    &entry.record,
+                );
+                rows.extend(raw_runs::csv_bytes(&csv_path, &row)?);
+                text.push_str(&entry.text);
+                text.push('\n');
+            }
+            write_replacing(&csv_path, &rows)?;
+            write_replacing(&jsonl_path, text.as_bytes())?;
+            jsonl = open_for_append(&jsonl_path)?;
+            csv = open_for_append(&csv_path)?;
+        } else {
+            let in_csv: HashSet<&RunKey> = csv_keys.iter().flatten().collect();
+            if csv_keys.is_none() {
+                csv.write_all(&raw_runs::csv_bytes(&csv_path, &raw_runs::csv_header())?)
+                    .map_err(io(&csv_path))?;
+            }
+            for entry in entries.iter().filter(|e| !in_csv.contains(&e.record.key())) {
+                let row = raw_runs::csv_row(
+                    instance_of(&entry.record)?,
+                    entry.concurrency,
+                    &entry.record,
+                );
+                csv.write_all(&raw_runs::csv_bytes(&csv_path, &row)?)
+                    .map_err(io(&csv_path))?;
+            }
+        }
         Ok(Self {
             jsonl_path,
             jsonl,
@@ -110,7 +172,9 @@ impl RunJournal {
             database,
             experiments: HashMap::new(),
             recorded,
+            healed,
             started: Instant::now(),
+            _lock: lock,
         })
     }
 
@@ -119,8 +183,15 @@ impl RunJournal {
         &self.recorded
     }
 
+    /// How many lines of `runs.jsonl` [`open`](Self::open) dropped because they recorded a
+    /// run already recorded (0 in a folder only ever written by one process at a time).
+    pub fn healed(&self) -> usize {
+        self.healed
+    }
+
     /// Records one finished run of `results.experiment` on `instance` (index `index` of
-    /// `results.instances`; `results.runs` may be empty — only `record` is written).
+    /// `results.instances`; `results.runs` may be empty — only `record` is written). A run
+    /// already recorded is not recorded again.
     ///
     /// # Errors
     /// [`HarnessError::Io`], [`HarnessError::Serialise`] or [`HarnessError::Database`].
@@ -130,13 +201,17 @@ impl RunJournal {
         index: usize,
         record: &RunRecord,
     ) -> Result<(), HarnessError> {
+        if self.recorded.contains(&record.key()) {
+            return Ok(());
+        }
         self.append_raw(&results.instances[index], results.concurrency, record)?;
         self.commit(results, index, record)
     }
 
     /// Appends `record`, a run on `instance` made with `concurrency` runs at a time, to the raw
     /// files only, not to the database (for [`merge_parts`](crate::merge_parts), which rebuilds
-    /// the database from the raw files once every run is in).
+    /// the database from the raw files once every run is in). A run already recorded is not
+    /// recorded again.
     ///
     /// # Errors
     /// [`HarnessError::Io`] or [`HarnessError::Serialise`].
@@ -146,6 +221,9 @@ impl RunJournal {
         concurrency: usize,
         record: &RunRecord,
     ) -> Result<(), HarnessError> {
+        if self.recorded.contains(&record.key()) {
+            return Ok(());
+        }
         let mut line = raw_runs::json_line(&self.jsonl_path, instance, concurrency, record)?;
         line.push('\n');
         let row = raw_runs::csv_row(instance, concurrency, record);
@@ -201,6 +279,13 @@ impl RunJournal {
     /// # Errors
     /// [`HarnessError::Io`] if the file cannot be read, [`HarnessError::Serialise`] for a
     /// malformed line other than a cut-short last one.
+    /// Every line of `folder`'s `runs.jsonl` (none if it does not exist), a run recorded twice
+    /// included (readers refuse or drop repeats, see [`results_from_records`]). A last line
+    /// cut short by a crash is skipped.
+    ///
+    /// # Errors
+    /// [`HarnessError::Io`] if the file cannot be read, [`HarnessError::Serialise`] for a
+    /// malformed line other than a cut-short last one.
     pub fn read_records(folder: &Path) -> Result<Vec<RunRecord>, HarnessError> {
         Ok(Self::read_entries(folder)?
             .into_iter()
@@ -214,124 +299,38 @@ impl RunJournal {
     /// # Errors
     /// As [`read_records`](Self::read_records).
     pub fn read_entries(folder: &Path) -> Result<Vec<(RunRecord, usize)>, HarnessError> {
-        read_entries(&folder.join("runs.jsonl"), true)
+        Ok(read_lines(&folder.join("runs.jsonl"), true)?
+            .into_iter()
+            .map(
+                |JournalLine {
+                     record,
+                     concurrency,
+                     ..
+                 }| (record, concurrency),
+            )
+            .collect())
     }
 }
 
-/// The `HarnessError::Io` of `path`.
-fn io(path: &Path) -> impl FnOnce(std::io::Error) -> HarnessError + use<> {
-    let path = path.to_path_buf();
-    move |source| HarnessError::Io { path, source }
-}
-
-/// Opens `path` for reading and appending, creating it if needed.
-fn open_for_append(path: &Path) -> Result<File, HarnessError> {
-    OpenOptions::new()
-        .read(true)
-        .append(true)
-        .create(true)
-        .open(path)
-        .map_err(io(path))
-}
-
-/// Removes a last line without its line break (an append a crash cut short); returns the
-/// bytes removed.
-fn cut_partial_line(file: &mut File) -> std::io::Result<u64> {
-    let length = file.metadata()?.len();
-    let mut end = length;
-    let mut chunk = vec![0u8; 64 * 1024];
-    while end > 0 {
-        let start = end.saturating_sub(chunk.len() as u64);
-        let part = &mut chunk[..(end - start) as usize];
-        file.seek(SeekFrom::Start(start))?;
-        file.read_exact(part)?;
-        if let Some(at) = part.iter().rposition(|&b| b == b'\n') {
-            end = start + at as u64 + 1;
-            break;
-        }
-        end = start;
-    }
-    if end < length {
-        file.set_len(end)?;
-    }
-    Ok(length - end)
-}
-
-/// The data rows of `runs.csv` (`None` if the file is empty).
-///
-/// # Errors
-/// [`HarnessError::Usage`] if its header is not `header` (other columns: another version);
-/// [`HarnessError::Serialise`] if it is not CSV.
-fn csv_rows(path: &Path, header: &[u8]) -> Result<Option<usize>, HarnessError> {
-    let file = File::open(path).map_err(io(path))?;
-    let mut first = Vec::new();
-    let mut reader = BufReader::new(file);
-    reader.read_until(b'\n', &mut first).map_err(io(path))?;
-    if first.is_empty() {
-        return Ok(None);
-    }
-    if first != header {
-        return Err(HarnessError::Usage(format!(
-            "`{}` has other columns than this mit-star writes (written by another version?); \
-             write to another --output folder",
-            path.display()
-        )));
-    }
-    let mut rows = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .from_reader(reader);
-    let mut count = 0;
-    let mut record = csv::ByteRecord::new();
-    while rows
-        .read_byte_record(&mut record)
-        .map_err(|e| HarnessError::Serialise {
-            path: path.to_path_buf(),
-            message: e.to_string(),
-        })?
-    {
-        count += 1;
-    }
-    Ok(Some(count))
-}
-
-/// The runs of a `runs.jsonl` with the concurrency each ran at; none if the file does not
-/// exist. A malformed last line is skipped if `skip_cut_last`.
-fn read_entries(path: &Path, skip_cut_last: bool) -> Result<Vec<(RunRecord, usize)>, HarnessError> {
-    let file = match File::open(path) {
-        Ok(file) => file,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
-        Err(source) => return Err(io(path)(source)),
-    };
-    let lines: Vec<String> = BufReader::new(file)
-        .lines()
-        .collect::<Result<_, _>>()
-        .map_err(io(path))?;
-    let mut entries = Vec::with_capacity(lines.len());
-    for (number, line) in lines.iter().enumerate() {
-        if line.trim().is_empty() {
-            continue;
-        }
-        let parsed = serde_json::from_str::<serde_json::Value>(line).and_then(|value| {
-            let concurrency = value["concurrent_runs"].as_u64().unwrap_or(1) as usize;
-            serde_json::from_value::<RunRecord>(value).map(|r| (r, concurrency))
-        });
-        match parsed {
-            Ok(entry) => entries.push(entry),
-            Err(_) if skip_cut_last && number + 1 == lines.len() => {}
-            Err(e) => {
-                return Err(HarnessError::Serialise {
-                    path: path.to_path_buf(),
-                    message: format!("line {}: {e}", number + 1),
-                });
-            }
-        }
-    }
-    Ok(entries)
+/// Empties the Planner Arena database of its runs and experiments (it is rebuilt from the raw
+/// runs when the writer finishes).
+fn clear_database(database: &PlannerArenaDatabase) -> Result<(), HarnessError> {
+    database
+        .connection()
+        .execute_batch(
+            "BEGIN; DELETE FROM progress; DELETE FROM runs; DELETE FROM experiments; \
+             DELETE FROM plannerConfigs; COMMIT;",
+        )
+        .map_err(|source| HarnessError::Database {
+            path: database.path().to_path_buf(),
+            source,
+        })
 }
 
 /// The results of `experiment` on `instances` made of `records` (every run recorded in the
 /// folder, in file order), grouped per instance and sorted by planner and run; records of
-/// instances the experiment does not have are left out.
+/// instances the experiment does not have are left out, and a run recorded twice counts once
+/// (its first record).
 pub fn results_from_records(
     template: &ExperimentResults,
     records: Vec<RunRecord>,
@@ -347,8 +346,16 @@ pub fn results_from_records(
         .enumerate()
         .map(|(i, p)| (p.name(), i))
         .collect();
+    let index_of: HashMap<&str, usize> = instances
+        .iter()
+        .enumerate()
+        .map(|(i, instance)| (instance.id.as_str(), i))
+        .collect();
+    let mut seen = HashSet::with_capacity(records.len());
     for record in records {
-        if let Some(index) = instances.iter().position(|i| i.id == record.instance) {
+        if let Some(&index) = index_of.get(record.instance.as_str())
+            && seen.insert(record.key())
+        {
             results.runs[index].push(record);
         }
     }
@@ -428,7 +435,11 @@ mod tests {
         let db = PlannerArenaDatabase::open(&folder.join(DATABASE_FILE)).unwrap();
         let runcount = db
             .connection()
-            .query_row("SELECT max(runcount) FROM experiments", [], |r| r.get(0))
+            .query_row(
+                "SELECT coalesce(max(runcount), 0) FROM experiments",
+                [],
+                |r| r.get(0),
+            )
             .unwrap();
         (
             db.count("experiments").unwrap(),
@@ -539,26 +550,86 @@ mod tests {
     }
 
     #[test]
-    fn cut_partial_line_keeps_whole_lines() {
-        let path = std::env::temp_dir().join(format!("mit-star-cut-{}", std::process::id()));
-        for (text, kept) in [
-            ("", ""),
-            ("a\n", "a\n"),
-            ("a\nb", "a\n"),
-            ("partial", ""),
-            ("a\nb\n", "a\nb\n"),
-        ] {
-            std::fs::write(&path, text).unwrap();
-            let mut file = open_for_append(&path).unwrap();
-            let cut = cut_partial_line(&mut file).unwrap();
-            assert_eq!(std::fs::read_to_string(&path).unwrap(), kept, "{text:?}");
-            assert_eq!(cut as usize, text.len() - kept.len());
+    fn runs_recorded_twice_are_healed() {
+        let (folder, results) = setup("heal");
+        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        for run in 0..2 {
+            journal
+                .append(&results, 0, &record(&results, 0, run))
+                .unwrap();
         }
-        // A line longer than the 64 KiB chunk.
-        let long = format!("a\n{}", "x".repeat(200_000));
-        std::fs::write(&path, &long).unwrap();
-        cut_partial_line(&mut open_for_append(&path).unwrap()).unwrap();
-        assert_eq!(std::fs::read_to_string(&path).unwrap(), "a\n");
-        let _ = std::fs::remove_file(&path);
+        drop(journal);
+        let jsonl = folder.join("runs.jsonl");
+        let csv = folder.join("runs.csv");
+        let (text, rows) = (std::fs::read_to_string(&jsonl).unwrap(), lines(&csv));
+        // A second writer recorded run 0 again, in every file (as two unlocked `bench`es did).
+        let first = text.lines().next().unwrap();
+        std::fs::write(&jsonl, format!("{text}{first}\n")).unwrap();
+        std::fs::write(&csv, format!("{}\n{}\n", rows.join("\n"), rows[1])).unwrap();
+        let mut db = PlannerArenaDatabase::open(&folder.join(DATABASE_FILE)).unwrap();
+        let mut one = results.clone();
+        one.runs[0].push(record(&results, 0, 0));
+        db.insert(&BenchmarkLog::from_results(&one, 0)).unwrap();
+        drop(db);
+        assert_eq!(runs_in_database(&folder).1, 3);
+
+        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        assert_eq!((journal.recorded().len(), journal.healed()), (2, 1));
+        assert_eq!(
+            std::fs::read_to_string(&jsonl).unwrap(),
+            text,
+            "first lines kept"
+        );
+        assert_eq!(lines(&csv), rows);
+        assert_eq!(runs_in_database(&folder).1, 0, "emptied, to be rebuilt");
+        // Appending goes on in the rewritten files; a run already recorded is not written again.
+        journal
+            .append(&results, 0, &record(&results, 1, 0))
+            .unwrap();
+        journal
+            .append(&results, 0, &record(&results, 0, 0))
+            .unwrap();
+        drop(journal);
+        assert_eq!(lines(&jsonl).len(), 3);
+        assert_eq!(lines(&csv).len(), 4);
+        let journal = RunJournal::open(&folder, &results.instances).unwrap();
+        assert_eq!((journal.recorded().len(), journal.healed()), (3, 0));
+        drop(journal);
+
+        // Readers count a run once, even in files no journal healed.
+        std::fs::write(
+            &jsonl,
+            format!("{}{first}\n", std::fs::read_to_string(&jsonl).unwrap()),
+        )
+        .unwrap();
+        let records = RunJournal::read_records(&folder).unwrap();
+        assert_eq!(records.len(), 4);
+        let all = results_from_records(&results, records, &results.instances);
+        assert_eq!(all.run_count(), 3);
+        let _ = std::fs::remove_dir_all(&folder);
+    }
+
+    #[test]
+    fn a_csv_with_runs_the_journal_lacks_is_refused() {
+        let (folder, results) = setup("extra");
+        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        for run in 0..2 {
+            journal
+                .append(&results, 0, &record(&results, 0, run))
+                .unwrap();
+        }
+        drop(journal);
+        let jsonl = folder.join("runs.jsonl");
+        let text = std::fs::read_to_string(&jsonl).unwrap();
+        std::fs::write(&jsonl, format!("{}\n", text.lines().next().unwrap())).unwrap();
+        let message = RunJournal::open(&folder, &results.instances)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            message.contains("has run 1 of MIT* on `wall-gap-n2` but")
+                && message.contains("changed by hand"),
+            "{message}"
+        );
+        let _ = std::fs::remove_dir_all(&folder);
     }
 }

@@ -288,6 +288,15 @@ impl BenchArgs {
         // the next one: SIGTERM, SIGKILL or a crash lose at most the runs in flight. Runs
         // recorded by an earlier bench of this experiment are not rerun.
         let journal = RunJournal::open(folder.path(), &instances)?;
+        if journal.healed() > 0 {
+            eprintln!(
+                "note: `{}` recorded {} runs a second time (two processes wrote the folder at \
+                 once); kept the first record of each, rebuilt runs.csv, and the summaries are \
+                 rebuilt from the distinct runs",
+                folder.path().join("runs.jsonl").display(),
+                journal.healed()
+            );
+        }
         let recorded = journal.recorded().clone();
         let (jobs, budget) = shard_work(&experiment, &instances, self.shard);
         let concurrency = threads.min(jobs.saturating_sub(recorded.len()).max(1));

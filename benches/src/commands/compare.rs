@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
-use crate::{CampaignComparison, HarnessError, KpiTable, ResultsFolder};
+use crate::{CampaignComparison, HarnessError, KpiTable, ResultsFolder, Shard};
 
 /// Options of `mit-star compare`.
 #[derive(Debug, Args)]
@@ -14,6 +14,11 @@ pub struct CompareArgs {
     pub a: PathBuf,
     /// The results folder after the change.
     pub b: PathBuf,
+    /// Compare folders that do not measure the same thing (different time budgets, a shard
+    /// or an unfinished folder against a whole one), printing a warning for each difference
+    /// instead of refusing.
+    #[arg(long)]
+    pub allow_mismatch: bool,
 }
 
 impl CompareArgs {
@@ -21,10 +26,27 @@ impl CompareArgs {
     /// first solution, the success rate and the median final cost moved from A to B.
     ///
     /// # Errors
-    /// Folders that cannot be read as results folders.
+    /// Folders that cannot be read as results folders (see
+    /// [`ResultsFolder::read_results`]); [`HarnessError::IncomparableFolders`] for folders
+    /// that do not measure the same thing (see [`CampaignComparison::mismatches`]), unless
+    /// `--allow-mismatch`.
     pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
         let a = ResultsFolder::read_results(&self.a)?;
         let b = ResultsFolder::read_results(&self.b)?;
+        let reasons =
+            CampaignComparison::mismatches(&a, Shard::read(&self.a)?, &b, Shard::read(&self.b)?);
+        if !reasons.is_empty() {
+            if !self.allow_mismatch {
+                return Err(HarnessError::IncomparableFolders {
+                    a: self.a.clone(),
+                    b: self.b.clone(),
+                    reasons,
+                });
+            }
+            for reason in &reasons {
+                eprintln!("warning: comparing anyway (--allow-mismatch), but {reason}");
+            }
+        }
         if a.experiment.name != b.experiment.name {
             eprintln!(
                 "note: A holds experiment `{}` and B `{}`; rows are matched by problem and planner",

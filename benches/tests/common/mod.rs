@@ -1,5 +1,8 @@
 //! Helpers shared by the tests that drive the `mit-star` binary.
 
+// Each test binary compiles its own copy and uses a subset.
+#![allow(dead_code)]
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
