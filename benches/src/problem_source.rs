@@ -165,7 +165,7 @@ impl ProblemSource {
             Some(base) if Path::new(text).is_relative() => base.join(text),
             _ => PathBuf::from(text),
         };
-        if path.is_file() || path.is_dir() {
+        if path.exists() {
             return Self::file(path);
         }
         Err(HarnessError::UnknownProblem {

@@ -405,3 +405,84 @@ fn only_runs_some_planners_of_an_experiment_to_their_first_solution() {
         assert!(header.contains(column), "{column} not in {header}");
     }
 }
+
+#[test]
+fn plan_keeps_a_problem_files_allow_coarse_step() {
+    let dir = scratch("coarse-file");
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = succeeded(&["problems", "--write", "dividing-walls", "--dim", "2"]);
+    // A step of 0.2 (a fifth of the extent) is coarser than the 0.03-wide gaps.
+    let coarse = text.replace("resolution = 5e-6", "resolution = 0.2");
+    let refused_file = dir.join("coarse.toml");
+    std::fs::write(&refused_file, &coarse).unwrap();
+    let args = |file: &std::path::Path| {
+        [
+            "plan",
+            "--planner",
+            "rrt-connect",
+            "--problem",
+            file.to_str().unwrap(),
+            "--time",
+            "0.2",
+            "--output",
+            dir.to_str().unwrap(),
+        ]
+        .map(str::to_owned)
+    };
+    let plan =
+        |file: &std::path::Path| common::mit_star(&args(file).each_ref().map(String::as_str));
+    let out = plan(&refused_file);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("allow_coarse_step"));
+    // The file says yes: the flag's absence does not overwrite it.
+    let allowed_file = dir.join("allowed.toml");
+    std::fs::write(&allowed_file, format!("allow_coarse_step = true\n{coarse}")).unwrap();
+    let out = plan(&allowed_file);
+    assert!(
+        out.status.code().is_some_and(|c| c == 0 || c == 3),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+#[cfg(unix)]
+fn a_signal_while_reading_a_fifo_leaves_at_once() {
+    use std::os::unix::process::ExitStatusExt;
+    use std::process::Command;
+    use std::time::{Duration, Instant};
+    let dir = scratch("fifo");
+    std::fs::create_dir_all(&dir).unwrap();
+    let fifo = dir.join("problem.toml");
+    let made = Command::new("mkfifo").arg(&fifo).status().unwrap();
+    assert!(made.success());
+    let mut child = Command::new(env!("CARGO_BIN_EXE_mit-star"))
+        .args(["plan", "--problem", fifo.to_str().unwrap(), "--time", "1"])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Let it block in the read (nobody writes the FIFO), then send SIGTERM.
+    std::thread::sleep(Duration::from_millis(500));
+    let term = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(term.success());
+    let sent = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if sent.elapsed() > Duration::from_secs(20) {
+            child.kill().unwrap();
+            panic!("still blocked 20 s after SIGTERM");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    assert_eq!(
+        status.code().or(status.signal()),
+        Some(128 + 15),
+        "{status:?}"
+    );
+}
