@@ -4,7 +4,12 @@ use std::sync::Arc;
 
 use mit_star::{BuildError, Configuration, Parameters, Planner};
 use problems::{PlanningProblem, Problem, ProblemError};
-use robot::{ArmProblem, ParryChecker};
+use robot::{ArmProblem, MotionAudit};
+
+/// Configurations the continuous audit of an arm path may compute per segment before it calls
+/// the segment undecided (a failure): far more than a path with a millimetre of clearance
+/// needs.
+const AUDIT_BUDGET: u64 = 2_000_000;
 use spaces::StateSpace;
 
 use crate::PathValidation;
@@ -165,18 +170,17 @@ impl InstanceProblem {
         }
     }
 
-    /// Validates a returned path independently of the planner: exactly for box worlds, with
-    /// parry at a quarter of the planning step for arms.
+    /// Validates a returned path independently of the planner: exactly for box worlds,
+    /// continuously in `f64` for arms ([`PathValidation::check_continuous`]).
     pub fn validate(&self, path: &[Vec<f64>], reported_cost: f64) -> PathValidation {
         match self {
             Self::Boxes(p) => PathValidation::check(p, path, reported_cost),
-            // The independent re-check: parry's queries in f64, 4× finer than planning.
-            Self::Arm(p) => PathValidation::check_resampled(
-                &ParryChecker::new(p.robot(), p.scene()),
+            Self::Arm(p) => PathValidation::check_continuous(
+                &MotionAudit::new(p.robot(), p.scene()),
                 (p.start(), p.goals()),
                 path,
                 reported_cost,
-                self.step(),
+                AUDIT_BUDGET,
             ),
         }
     }

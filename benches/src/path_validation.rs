@@ -1,6 +1,10 @@
-//! [`PathValidation`]: an independent check of a returned path — exact for box worlds.
+//! [`PathValidation`]: an independent check of a returned path — exact for box worlds,
+//! continuous for arms.
+
+use std::cell::Cell;
 
 use problems::Problem;
+use robot::{AuditVerdict, MotionAudit};
 use serde::{Deserialize, Serialize};
 use spaces::euclidean_distance;
 use validity::{SegmentCause, SegmentVerdict, StateValidity, World};
@@ -12,8 +16,20 @@ pub enum ValidationMethod {
     /// Every segment decided exactly against every box of the world (slab tests, no grid:
     /// [`World::segment_verdict`]). What the harness does for every benchmark problem.
     ExactBoxes,
+    /// Every segment of an arm path proven collision-free continuously, in `f64`, by
+    /// conservative advancement from parry distances and the audit's own bound on how fast
+    /// each sphere moves ([`MotionAudit`]): no grid. What the harness does for arm problems.
+    ContinuousArm {
+        /// Configurations whose distances were computed, over the whole path.
+        configurations: u64,
+        /// The smallest distance between the robot and an obstacle or itself along the path
+        /// (metres).
+        clearance: f64,
+    },
     /// Every segment re-checked at grid points `step` apart — at least 4× finer than the
-    /// planner's step — for validity checkers that cannot decide segments exactly.
+    /// planner's step. A grid shares the planner's blind spot between points, so this is a
+    /// cross-check, not a proof; for validity checkers with neither an exact nor a continuous
+    /// check.
     Resampled {
         /// The re-check step.
         step: f64,
@@ -25,6 +41,14 @@ impl ValidationMethod {
     pub fn describe(&self) -> String {
         match self {
             Self::ExactBoxes => "exactly against every box (segment slab tests, no grid)".into(),
+            Self::ContinuousArm {
+                configurations,
+                clearance,
+            } => format!(
+                "continuously in f64 (conservative advancement on parry distances, no grid: \
+                 {configurations} configurations, clearance ≥ {} mm)",
+                spaces::short_number(clearance * 1e3)
+            ),
             Self::Resampled { step } => format!(
                 "at a step of {} (at least 4× finer than planning)",
                 spaces::short_number(*step)
@@ -39,8 +63,10 @@ impl ValidationMethod {
 ///
 /// Box worlds — every benchmark problem — are validated **exactly**
 /// ([`ValidationMethod::ExactBoxes`]): a path the planner's grid let through a wall thinner
-/// than its step fails here. Other validity checkers are re-checked at a step at least 4×
-/// finer than the planner's ([`check_resampled`](Self::check_resampled)). `valid` is `true`
+/// than its step fails here. Arm paths are proven collision-free continuously
+/// ([`check_continuous`](Self::check_continuous)) by an audit that shares neither the
+/// planner's `f32` arithmetic nor its certification. Other validity checkers can only be
+/// re-checked on a finer grid ([`check_resampled`](Self::check_resampled)). `valid` is `true`
 /// only if the chosen check passed; reports name the method.
 ///
 /// ```
@@ -87,8 +113,58 @@ impl PathValidation {
         )
     }
 
+    /// Checks an arm path continuously with `audit` (see [`MotionAudit`]): every state valid
+    /// by the `f64` reference, every segment proven collision-free at every configuration, at
+    /// most `budget` configurations per segment (a segment left undecided fails).
+    pub fn check_continuous(
+        audit: &MotionAudit,
+        (start, goals): (&[f64], &[Vec<f64>]),
+        path: &[Vec<f64>],
+        reported_cost: f64,
+        budget: u64,
+    ) -> Self {
+        let clearance = Cell::new(f64::INFINITY);
+        let mut result = Self::walk(
+            (start, goals),
+            path,
+            reported_cost,
+            ValidationMethod::ContinuousArm {
+                configurations: 0,
+                clearance: f64::INFINITY,
+            },
+            audit,
+            |a, b, _| match audit.audit(a, b, budget) {
+                AuditVerdict::Clear {
+                    configurations,
+                    clearance: c,
+                } => {
+                    clearance.set(clearance.get().min(c));
+                    Ok(configurations)
+                }
+                AuditVerdict::Collides {
+                    t,
+                    configuration,
+                    contact,
+                } => Err(format!(
+                    "collides at t = {t:.9}: {contact} ({configuration:?})"
+                )),
+                AuditVerdict::Undecided { t, configurations } => Err(format!(
+                    "is undecided: {configurations} configurations certified it only up to \
+                     t = {t:.9} (it grazes an obstacle for a long way)"
+                )),
+            },
+        );
+        result.method = ValidationMethod::ContinuousArm {
+            configurations: result.states_checked,
+            clearance: clearance.get(),
+        };
+        result
+    }
+
     /// Checks `path` against any validity checker by re-testing every segment at grid points
-    /// `planning_step / 4` apart (or finer), for checkers that cannot decide segments exactly.
+    /// `planning_step / 4` apart (or finer): a cross-check for checkers that can decide
+    /// segments neither exactly nor continuously. Not independent of a grid-checking planner:
+    /// both test points of the same straight lines and can miss what lies between them.
     pub fn check_resampled<V: StateValidity + ?Sized>(
         validity: &V,
         (start, goals): (&[f64], &[Vec<f64>]),

@@ -28,6 +28,7 @@
 //! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases, one-sided (a margin covers `f32` rounding), and certified motion (every configuration of an edge, not only grid points) |
 //! | [`LeverArms`], [`CERTIFICATION_FLOOR`] | how far each link's spheres can move per unit of each joint, over all configurations: the bound certified motion rests on |
 //! | [`ParryChecker`] | the reference checker: `f64`, parry queries, no culling (tests and path re-checks) |
+//! | [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] | an independent continuous check of a motion: conservative advancement in `f64` from parry distances and its own speed bound (the harness's re-check of returned arm paths) |
 //! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with VAMP's default check density and the finer grid its solution edges are certified on |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 
@@ -42,6 +43,7 @@ mod lanes;
 mod lever_arms;
 mod mbm_problem;
 mod model_error;
+mod motion_audit;
 mod obstacle;
 mod parry_checker;
 mod robot_model;
@@ -59,6 +61,7 @@ pub use kinematics::Kinematics;
 pub use lever_arms::LeverArms;
 pub use mbm_problem::MbmProblem;
 pub use model_error::ModelError;
+pub use motion_audit::{AUDIT_CONTACT, AuditVerdict, MotionAudit};
 pub use obstacle::{Obstacle, Shape};
 pub use parry_checker::ParryChecker;
 pub use robot_model::{LinkFrame, LinkSphere, Motion, RobotModel, rpy_matrix};

@@ -4,7 +4,7 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DQuat, DVec3};
 use parry3d_f64::math::Pose;
-use parry3d_f64::query::intersection_test;
+use parry3d_f64::query::{distance, intersection_test};
 use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape};
 use spaces::StateSpace;
 use validity::StateValidity;
@@ -25,6 +25,8 @@ struct Shared {
     /// Per link: its spheres' indices (empty for a link without spheres).
     link_spheres: Vec<std::ops::Range<usize>>,
     pairs: Vec<(usize, usize)>,
+    /// The self-collision pairs as pairs of sphere indices.
+    sphere_pairs: Vec<(usize, usize)>,
 }
 
 /// The reference checker: the same model and scene as [`ArmChecker`](crate::ArmChecker), but
@@ -84,6 +86,16 @@ impl ParryChecker {
         let link_spheres = (0..robot.links().len())
             .map(|l| robot.link_sphere_range(l))
             .collect();
+        let pairs = robot.self_collision_pairs().to_vec();
+        let sphere_pairs = pairs
+            .iter()
+            .flat_map(|&(a, b)| {
+                let theirs = robot.link_sphere_range(b);
+                robot
+                    .link_sphere_range(a)
+                    .flat_map(move |i| theirs.clone().map(move |j| (i, j)))
+            })
+            .collect();
         let scratch = (
             vec![DAffine3::IDENTITY; fk.link_count()],
             vec![(DVec3::ZERO, 0.0); fk.sphere_count()],
@@ -95,7 +107,8 @@ impl ParryChecker {
                 upper: space.upper().to_vec(),
                 obstacles,
                 link_spheres,
-                pairs: robot.self_collision_pairs().to_vec(),
+                pairs,
+                sphere_pairs,
             }),
             scratch: ScratchCell::new(scratch),
         }
@@ -145,6 +158,47 @@ impl ParryChecker {
             }
         }
         true
+    }
+}
+
+impl ParryChecker {
+    /// The self-collision pairs as pairs of indices into [`RobotModel::spheres`]: every
+    /// sphere of one link of a checked pair with every sphere of the other.
+    pub fn sphere_pairs(&self) -> &[(usize, usize)] {
+        &self.shared.sphere_pairs
+    }
+
+    /// Separation distances at `q`, in `f64` with parry's distance queries:
+    /// `obstacle_gaps[s]` is the distance from robot sphere `s` ([`RobotModel::spheres`]) to
+    /// the nearest obstacle (`f64::INFINITY` in an empty scene, 0 if they touch or overlap),
+    /// and `pair_gaps[k]` the gap between the two spheres of the `k`-th
+    /// [sphere pair](Self::sphere_pairs) (negative if they overlap). Joint limits are not
+    /// looked at.
+    ///
+    /// # Panics
+    /// If `q` is shorter than the robot's dimension or an output is shorter than the sphere
+    /// or pair count (a caller's bug).
+    pub fn gaps(&self, q: &[f64], obstacle_gaps: &mut [f64], pair_gaps: &mut [f64]) {
+        let s = &*self.shared;
+        let mut guard = self.scratch.lock();
+        let (links, centers) = &mut *guard;
+        s.fk.sphere_centers_f64(q, links, centers);
+        for (gap, &(c, r)) in obstacle_gaps.iter_mut().zip(centers.iter()) {
+            let (pose, ball) = (Pose::from_translation(c), Ball::new(r));
+            *gap = s
+                .obstacles
+                .iter()
+                .map(|(op, shape)| {
+                    // Balls, cuboids and cylinders are all supported: an error cannot occur,
+                    // and would read as contact.
+                    distance(&pose, &ball, op, shape.as_ref()).map_or(0.0, |d| d.distance)
+                })
+                .fold(f64::INFINITY, f64::min);
+        }
+        for (gap, &(i, j)) in pair_gaps.iter_mut().zip(&s.sphere_pairs) {
+            let ((ci, ri), (cj, rj)) = (centers[i], centers[j]);
+            *gap = ci.distance(cj) - ri - rj;
+        }
     }
 }
 

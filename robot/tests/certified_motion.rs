@@ -4,37 +4,14 @@
 
 use glam::{DQuat, DVec3};
 use proptest::prelude::*;
-use robot::{ArmChecker, ArmProblem, Obstacle, ParryChecker, RobotModel, Scene, Shape};
-use spaces::{Never, StateSpace, Stop};
+use robot::{ArmChecker, Obstacle, ParryChecker, Scene, Shape};
+use spaces::{Never, Stop};
 use std::cell::Cell;
 use validity::{EdgeStatus, MotionProgress, StateValidity};
 
-fn panda() -> RobotModel {
-    ArmProblem::panda().unwrap()
-}
-
-const HOME: [f64; 7] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
-
-/// The reference verdict on the edge `a → b` at steps of at most `step` rad, with every sphere
-/// grown by `grow` metres: the first fraction found in collision, if any.
-fn reference_hit(
-    reference: &ParryChecker,
-    a: &[f64],
-    b: &[f64],
-    step: f64,
-    grow: f64,
-) -> Option<f64> {
-    let length = spaces::euclidean_distance(a, b);
-    let pieces = (length / step).ceil().max(1.0) as u64;
-    let mut q = vec![0.0; a.len()];
-    (0..=pieces).find_map(|k| {
-        let t = k as f64 / pieces as f64;
-        for (x, (p, r)) in q.iter_mut().zip(a.iter().zip(b)) {
-            *x = p + (r - p) * t;
-        }
-        (!reference.is_valid_with_margin(&q, grow)).then_some(t)
-    })
-}
+#[path = "support/arm_cases.rs"]
+mod arm_cases;
+use arm_cases::{HOME, edge, obstacle, panda, reference_hit, tab_scene};
 
 fn certify(
     checker: &ArmChecker,
@@ -55,35 +32,9 @@ fn certify(
 #[test]
 fn a_one_millimetre_plate_between_two_configurations_is_found() {
     let robot = panda();
-    // The sphere farthest from the first joint's axis, at the home configuration.
-    let fk = robot::Kinematics::new(&robot);
-    let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
-    let mut centers = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
-    fk.sphere_centers_f64(&HOME, &mut links, &mut centers);
-    let (tip, radius) = centers
-        .iter()
-        .copied()
-        .max_by(|x, y| {
-            let reach = |(c, r): (DVec3, f64)| c.truncate().length() + r;
-            reach(*x).total_cmp(&reach(*y))
-        })
-        .unwrap();
-    // A tab 1 mm thick across the path of that sphere's outer rim, 4 mm square: only the
-    // rim's outer 3 mm pass through it.
-    let outward = DVec3::new(tip.x, tip.y, 0.0).normalize();
-    let plate = Obstacle::new(
-        Shape::Cuboid {
-            half_extents: DVec3::new(0.002, 0.0005, 0.002),
-        },
-        tip + outward * (radius - 0.001),
-        DQuat::from_rotation_z(tip.y.atan2(tip.x)),
-    );
-    let scene = Scene::new(vec![plate]);
+    let (scene, a, b) = tab_scene(&robot);
     let checker = ArmChecker::new(&robot, &scene);
     let reference = ParryChecker::new(&robot, &scene);
-    let (mut a, mut b) = (HOME, HOME);
-    a[0] = -0.6;
-    b[0] = 0.55;
     assert!(checker.is_valid(&a) && checker.is_valid(&b));
     assert!(reference.is_valid(&a) && reference.is_valid(&b));
     // The truth: the hand crosses the plate.
@@ -154,52 +105,6 @@ fn a_stopped_certification_resumes_and_agrees() {
         // Resuming repeats no work.
         assert_eq!(progress.evaluations(), done.evaluations(), "every {every}");
     }
-}
-
-fn obstacle() -> impl Strategy<Value = Obstacle> {
-    let shape = prop_oneof![
-        (0.0005..0.3f64, 0.01..0.3f64, 0.01..0.3f64).prop_map(|(x, y, z)| Shape::Cuboid {
-            half_extents: DVec3::new(x, y, z)
-        }),
-        (0.01..0.3f64, 0.005..0.2f64).prop_map(|(h, r)| Shape::Cylinder {
-            half_height: h,
-            radius: r
-        }),
-        (0.005..0.2f64).prop_map(|r| Shape::Sphere { radius: r }),
-    ];
-    (
-        shape,
-        (-0.9..0.9f64, -0.9..0.9f64, -0.2..1.3f64),
-        (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64, 0.1..1.0f64),
-    )
-        .prop_map(|(s, (x, y, z), (a, b, c, d))| {
-            Obstacle::new(
-                s,
-                DVec3::new(x, y, z),
-                DQuat::from_xyzw(a, b, c, d).normalize(),
-            )
-        })
-}
-
-fn edge() -> impl Strategy<Value = (Vec<f64>, Vec<f64>)> {
-    let robot = panda();
-    let space = robot.joint_space();
-    let (lower, upper) = (space.lower().to_vec(), space.upper().to_vec());
-    (
-        prop::collection::vec(0.0..1.0f64, 7),
-        prop::collection::vec(-1.0..1.0f64, 7),
-        0.02..1.2f64,
-    )
-        .prop_map(move |(u, d, length)| {
-            let a: Vec<f64> = (0..7)
-                .map(|j| lower[j] + u[j] * (upper[j] - lower[j]))
-                .collect();
-            let norm = d.iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-9);
-            let b = (0..7)
-                .map(|j| (a[j] + d[j] / norm * length).clamp(lower[j], upper[j]))
-                .collect();
-            (a, b)
-        })
 }
 
 proptest! {
