@@ -282,6 +282,9 @@ impl Experiment {
                 if let Some(r) = p.resolution {
                     e.insert("resolution".into(), r.into());
                 }
+                if p.allow_coarse_step {
+                    e.insert("allow_coarse_step".into(), true.into());
+                }
                 e.into()
             })
             .collect();

@@ -25,6 +25,9 @@
 //! instances = 10                      # seeded families: layout seeds 0..9 (default 1), or
 //! # instance_seeds = [3, 7]
 //! # resolution = 5e-6                 # collision-check resolution (default the problem's)
+//! # allow_coarse_step = true          # allow checks that can miss thin obstacles: a step
+//! #                                   # coarser than the thinnest box, an arm planned with
+//! #                                   # certification off (default false)
 //! ```
 
 use std::fmt;
@@ -125,6 +128,9 @@ pub struct ProblemEntry {
     pub instance_seeds: Option<Vec<u64>>,
     /// Collision-check resolution.
     pub resolution: Option<f64>,
+    /// Allow checks that can miss thin obstacles (a coarse step; an arm without
+    /// certification).
+    pub allow_coarse_step: Option<bool>,
 }
 
 /// One number of seconds or a list of them; integers are accepted.
@@ -354,6 +360,7 @@ fn problem_spec(
         budgets,
         instances,
         resolution: p.resolution,
+        allow_coarse_step: p.allow_coarse_step.unwrap_or(false),
     })
 }
 

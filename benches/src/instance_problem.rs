@@ -64,13 +64,16 @@ impl InstanceProblem {
         }
     }
 
-    /// Allows (or not) a box world's check step to be coarser than its thinnest obstacle
-    /// ([`Problem::allowing_coarse_step`]); other kinds are unchanged.
+    /// Allows (or not) a check that may miss thin obstacles: a box world's step coarser than
+    /// its thinnest obstacle ([`Problem::allowing_coarse_step`]), an arm's motion checked with
+    /// certification off ([`ArmProblem::allowing_uncertified_motion`]).
     #[must_use]
     pub fn allowing_coarse_step(self, allow: bool) -> Self {
         match self {
             Self::Boxes(p) => Self::Boxes(p.allowing_coarse_step(allow)),
-            arm @ Self::Arm(_) => arm,
+            Self::Arm(p) => Self::Arm(Arc::new(
+                Arc::unwrap_or_clone(p).allowing_uncertified_motion(allow),
+            )),
         }
     }
 

@@ -14,6 +14,7 @@ use crate::{HarnessError, ProblemInstance, ProblemSource};
 ///     budgets: vec![0.8, 2.0],
 ///     instances: vec![0, 1, 2],
 ///     resolution: None,
+///     allow_coarse_step: false,
 /// };
 /// let instances = spec.instances()?;
 /// assert_eq!(instances.len(), 6);
@@ -33,6 +34,11 @@ pub struct ProblemSpec {
     pub instances: Vec<u64>,
     /// Collision-check resolution, if not the problem's own.
     pub resolution: Option<f64>,
+    /// Allow checks that can miss thin obstacles: a box world's step coarser than its
+    /// thinnest obstacle, an arm planned with certification off
+    /// ([`ProblemInstance`]'s `allowing_coarse_step`). A problem file's own
+    /// `allow_coarse_step` stands either way.
+    pub allow_coarse_step: bool,
 }
 
 impl ProblemSpec {
@@ -68,7 +74,10 @@ impl ProblemSpec {
         let mut out = Vec::new();
         for (&dimension, &budget) in self.dimensions.iter().zip(&self.budgets) {
             for &instance in &self.instances {
-                let problem = self.source.build(dimension, instance, self.resolution)?;
+                let mut problem = self.source.build(dimension, instance, self.resolution)?;
+                if self.allow_coarse_step {
+                    problem = problem.allowing_coarse_step(true);
+                }
                 if !problem.ends_are_valid() {
                     eprintln!(
                         "note: {} problem {instance}: the start or goal is in collision; skipped",
@@ -110,6 +119,7 @@ mod tests {
             budgets,
             instances,
             resolution: None,
+            allow_coarse_step: false,
         }
     }
 

@@ -297,6 +297,7 @@ mod tests {
             budgets: vec![budget],
             instances: vec![0],
             resolution: Some(resolution),
+            allow_coarse_step: false,
         }
         .instances()
         .unwrap()

@@ -486,3 +486,58 @@ fn a_signal_while_reading_a_fifo_leaves_at_once() {
         "{status:?}"
     );
 }
+
+#[test]
+fn an_arm_without_certification_is_refused_unless_allowed() {
+    let folder = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../robot/tests/data/mbm/box_panda"
+    );
+    let problem = format!("mbm:{folder}");
+    let dir = scratch("uncertified");
+    let plan = [
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        problem.as_str(),
+        "--time",
+        "1",
+        "--set",
+        "certification=1",
+        "--output",
+        dir.to_str().unwrap(),
+    ];
+    let out = common::mit_star(&plan);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{stderr}");
+    for needle in ["certification = 1", "grid points", "--allow-coarse-step"] {
+        assert!(stderr.contains(needle), "`{needle}` not in {stderr}");
+    }
+    let mut allowed = plan.to_vec();
+    allowed.push("--allow-coarse-step");
+    let stdout = succeeded(&allowed);
+    assert!(
+        stdout.contains("validated independently, continuously"),
+        "{stdout}"
+    );
+    // Certification on (the default): any step is certified, however coarse.
+    let coarse = [
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        problem.as_str(),
+        "--time",
+        "1",
+        "--resolution",
+        "0.5",
+        "--output",
+        dir.to_str().unwrap(),
+    ];
+    let stdout = succeeded(&coarse);
+    assert!(
+        stdout.contains("validated independently, continuously"),
+        "{stdout}"
+    );
+}

@@ -193,6 +193,7 @@ impl Parameters {
         let mut parameters = self.clone();
         parameters.resolution = problem.resolution();
         parameters.certification = self.certification.or(Some(problem.certification()));
+        problem.check_certification(parameters.certification.unwrap_or(1).max(1))?;
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
         Ok(parameters)
     }

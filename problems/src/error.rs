@@ -135,6 +135,27 @@ pub enum ProblemError {
         /// The largest resolution whose step is not above either.
         largest_resolution: f64,
     },
+    /// Motion checked only at grid points on a problem whose contacts can fall between them
+    /// (an arm's spheres sweep further than they are thick between two checks): planners
+    /// must certify the edges of their solutions (`certification` above 1) unless uncertified
+    /// motion is explicitly allowed.
+    #[error(
+        "{}: certification = 1 checks edges only at grid points {} apart, and \
+         a sphere can sweep up to {} m between two of them, past obstacles thinner than \
+         that: leave certification on (any value above 1 certifies every configuration of a \
+         solution's edges), or allow uncertified motion explicitly (`--allow-coarse-step`, \
+         `allow_coarse_step = true` in an experiment, `ArmProblem::allowing_uncertified_motion` \
+         in the library)",
+        .problem, short(*.step), short(*.sweep)
+    )]
+    Uncertified {
+        /// The problem's name.
+        problem: String,
+        /// The check step.
+        step: f64,
+        /// How far the fastest sphere can move over one step (metres).
+        sweep: f64,
+    },
     /// A claimed optimal cost is not finite or is below the straight-line distance to the
     /// nearest goal, which no path can beat.
     #[error(

@@ -68,6 +68,17 @@ pub trait PlanningProblem {
         1
     }
 
+    /// Whether planners may check this problem's edges with certification `factor` (the
+    /// value a planner will use, after its parameters): a problem whose grid cannot be trusted
+    /// refuses `1` unless told otherwise. Called once, when a planner is built.
+    ///
+    /// # Errors
+    /// [`ProblemError::Uncertified`] (arms) or the problem's own refusal.
+    fn check_certification(&self, factor: u32) -> Result<(), ProblemError> {
+        let _ = factor;
+        Ok(())
+    }
+
     /// The fraction of samples a planner of the EIT* family should draw near the start and the
     /// goals (0: none, the paper's sampling). A problem whose terminals sit deep in pockets (an
     /// arm's grasp in a shelf slot) asks for some.

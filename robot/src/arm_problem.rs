@@ -8,15 +8,16 @@ use problems::{PlanningProblem, ProblemError};
 use spaces::{JointSpace, StateSpace};
 use validity::StateValidity;
 
-use crate::{ArmChecker, ArmError, MbmProblem, RobotModel, Scene};
+use crate::{ArmChecker, ArmError, LeverArms, MbmProblem, RobotModel, Scene};
 
 /// VAMP's default collision-check density: 32 checks per unit of joint-space distance.
 pub const CHECKS_PER_UNIT: f64 = 32.0;
 
-/// How many times finer than the check step planners certify the edges of their solution
-/// trees on arm problems: the grid of the independent re-check (a quarter of the step), so
-/// that a contact grazed between two configurations of the planning grid is caught before it
-/// reaches a returned path.
+/// The certification factor arm problems ask planners for. Any factor above 1 turns
+/// certification on, and on an arm it is continuous whatever the factor: every configuration
+/// of a solution's edge is proven collision-free ([`ArmChecker`]'s `certify_motion`), so a
+/// contact grazed between two configurations of the planning grid never reaches a returned
+/// path. (The factor's value matters only for checkers that certify on a finer grid.)
 pub const CERTIFICATION: u32 = 4;
 
 /// The Panda sphere model shipped with the crate (VAMP's, 59 spheres).
@@ -51,6 +52,7 @@ pub struct ArmProblem {
     goals: Vec<Vec<f64>>,
     resolution: f64,
     certification: u32,
+    uncertified: bool,
 }
 
 impl ArmProblem {
@@ -95,6 +97,7 @@ impl ArmProblem {
             goals: vec![goal],
             resolution,
             certification: CERTIFICATION,
+            uncertified: false,
         })
     }
 
@@ -108,11 +111,8 @@ impl ArmProblem {
         Self::mbm(Self::panda()?, folder, index)
     }
 
-    /// How many times finer than the check step planners certify the edges of their solution
-    /// trees on arm problems: the grid of the independent re-check (a quarter of the step), so
-    /// that a contact grazed between two configurations of the planning grid is caught before it
-    /// reaches a returned path.
-    pub const CERTIFICATION: u32 = 4;
+    /// The certification factor arm problems ask planners for ([`CERTIFICATION`]).
+    pub const CERTIFICATION: u32 = CERTIFICATION;
 
     /// The fraction of samples planners of the EIT* family draw near the start and the goal on
     /// arm problems (the `samplers` crate's `NearTerminals` wrapper; a planner's
@@ -157,12 +157,23 @@ impl ArmProblem {
         Ok(self)
     }
 
-    /// The same problem asking planners to certify solution-tree edges on a grid `factor`
-    /// times finer than the check step (default [`CERTIFICATION`]; 1 turns it off; 0 is
-    /// taken as 1).
+    /// The same problem asking planners for certification `factor` (default
+    /// [`CERTIFICATION`]; any value above 1 certifies every configuration of a solution's
+    /// edges; 1 turns certification off, which planners refuse unless
+    /// [uncertified motion is allowed](Self::allowing_uncertified_motion); 0 is taken as 1).
     #[must_use]
     pub fn with_certification(mut self, factor: u32) -> Self {
         self.certification = factor.max(1);
+        self
+    }
+
+    /// The same problem letting planners run with certification off (`certification = 1`,
+    /// from the problem or a planner's parameters): edges are then checked only at the grid
+    /// points of the step, and a returned path may cross an obstacle thinner than a sphere's
+    /// sweep over one step. For measurements of what certification costs, never for a robot.
+    #[must_use]
+    pub fn allowing_uncertified_motion(mut self, allow: bool) -> Self {
+        self.uncertified = allow;
         self
     }
 
@@ -217,6 +228,18 @@ impl PlanningProblem for ArmProblem {
 
     fn certification(&self) -> u32 {
         self.certification
+    }
+
+    fn check_certification(&self, factor: u32) -> Result<(), ProblemError> {
+        if factor > 1 || self.uncertified {
+            return Ok(());
+        }
+        let step = self.resolution * self.space().maximum_extent();
+        Err(ProblemError::Uncertified {
+            problem: self.name.clone(),
+            step,
+            sweep: step * LeverArms::new(&self.robot).fastest(),
+        })
     }
 
     fn near_terminals(&self) -> f64 {

@@ -71,6 +71,12 @@ pub struct BenchArgs {
     /// a first solution.
     #[arg(long)]
     pub first_solution: bool,
+    /// Allow checks that can miss thin obstacles, for every problem: a box world's step
+    /// coarser than its thinnest obstacle, an arm planned with certification off
+    /// (`--set certification=1`). For measuring what the safe checks cost, never for results
+    /// a robot relies on.
+    #[arg(long)]
+    pub allow_coarse_step: bool,
     /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
@@ -141,6 +147,11 @@ impl BenchArgs {
             experiment.confidence = confidence;
         }
         experiment.first_solution |= self.first_solution;
+        if self.allow_coarse_step {
+            for problem in &mut experiment.problems {
+                problem.allow_coarse_step = true;
+            }
+        }
         if !self.only.is_empty() {
             let named = |p: &PlannerSpec, w: &str| p.name() == w || p.configuration().name() == w;
             if let Some(wanted) = self
@@ -237,6 +248,7 @@ impl BenchArgs {
                 budgets,
                 instances,
                 resolution: self.resolution,
+                allow_coarse_step: self.allow_coarse_step,
             });
         }
         let name = self.name.clone().unwrap_or_else(|| {

@@ -47,9 +47,10 @@ pub struct PlanArgs {
     /// Collision-check resolution (fraction of the maximum extent) instead of the problem's.
     #[arg(long, allow_negative_numbers = true)]
     pub resolution: Option<f64>,
-    /// Allow a collision-check step larger than the thinnest obstacle or anti-obstacle
-    /// (refused otherwise: edges could cross thin obstacles between checked points). Without
-    /// it, a problem file's `allow_coarse_step` stands.
+    /// Allow a check that can miss thin obstacles: a box world's step larger than its thinnest
+    /// obstacle or anti-obstacle, or an arm planned with certification off
+    /// (`--set certification=1`); refused otherwise, since edges could cross thin obstacles
+    /// between checked points. Without it, a problem file's `allow_coarse_step` stands.
     #[arg(long)]
     pub allow_coarse_step: bool,
     /// Folder for the picture of a 2-D run or an arm plan.
