@@ -4,10 +4,13 @@
 //! ```text
 //! cargo run --release -p mit-star --example deadline_stress
 //! cargo run --release -p mit-star --example deadline_stress -- --problem dividing-walls --seeds 3
+//! cargo run --release -p mit-star --example deadline_stress -- \
+//!     --problem random-rectangles,cluttered-rectangles,repeating-rectangles --resolutions 0.05,0.2
 //! ```
 //!
-//! For every configuration × dimension (2, 4, 8, 16, 32) × batch size (1, 100, 10⁴, 10⁶) ×
-//! budget (1 ms, 10 ms, 100 ms, 1 s) it takes the clock, builds the planner (construction counts
+//! For every problem × resolution × configuration × dimension (2, 4, 8, 16, 32) × batch size
+//! (1, 100, 10⁴, 10⁶) × budget (1 ms, 10 ms, 100 ms, 1 s) it takes the clock, builds the
+//! planner (construction counts
 //! against the budget, as in the harness), solves until the deadline and measures how late
 //! `solve` returned. A run is on time if it returned within `max(1 ms, 1 % of the budget)` of
 //! its deadline. Prints the worst overshoot per configuration and budget, every late run with the
@@ -15,6 +18,14 @@
 //! code 1 if any run was late. With `--trace`, the polls of each run's last 30 % also record
 //! where they were made, so a late run's gaps name where they began (slower: a diagnostic),
 //! and every run more than 1 ms late is reported, within its allowance or not.
+//!
+//! `--problem` takes a comma-separated list of built-in problems (default: goal enclosure);
+//! `many-rectangles:COUNT` is a random-rectangles layout of `COUNT` small boxes.
+//! `--resolutions` plans each problem at these collision-check resolutions (fractions of the
+//! maximum extent, as `plan --resolution`) with a coarse step allowed (`allow_coarse_step`):
+//! a step of 0.05 or 0.2 of the extent is coarser than most obstacles, so edges have few grid
+//! points and the exact box certification decides most of them. Without it, each problem's
+//! own resolution. Arm problems have a sibling matrix, `robot/examples/arm_deadline_stress.rs`.
 
 use std::time::{Duration, Instant};
 
@@ -26,6 +37,8 @@ use gaps::Gaps;
 
 /// One measured run.
 struct Run {
+    problem: String,
+    resolution: Option<f64>,
     configuration: Configuration,
     dimension: usize,
     batch: usize,
@@ -38,7 +51,8 @@ struct Run {
 }
 
 fn main() {
-    let mut problem = "goal-enclosure".to_owned();
+    let mut problem_names = vec!["goal-enclosure".to_owned()];
+    let mut resolutions: Vec<Option<f64>> = vec![None];
     let mut seeds = 1_u64;
     let mut dimensions = vec![2, 4, 8, 16, 32];
     let mut batches = vec![1_usize, 100, 10_000, 1_000_000];
@@ -53,7 +67,8 @@ fn main() {
         }
         let value = args.next().unwrap_or_default();
         match arg.as_str() {
-            "--problem" => problem = value,
+            "--problem" | "--problems" => problem_names = list(&value),
+            "--resolutions" => resolutions = list(&value).into_iter().map(Some).collect(),
             "--seeds" => seeds = value.parse().unwrap_or(1).max(1),
             "--dims" => dimensions = list(&value),
             "--batches" => batches = list(&value),
@@ -66,7 +81,8 @@ fn main() {
             }
             other => {
                 eprintln!(
-                    "unknown option {other}; options: --problem NAME --seeds N --dims 2,4,8 \
+                    "unknown option {other}; options: --problem NAME,NAME --resolutions 0.05,0.2 \
+                     --seeds N --dims 2,4,8 \
                      --batches 1,100 --budgets 0.01,0.1 --planners mit-star,eit-star --trace"
                 );
                 std::process::exit(2);
@@ -75,8 +91,15 @@ fn main() {
     }
     let mut runs = Vec::new();
     let clock = Instant::now();
-    for &dimension in &dimensions {
-        let base = match problems::builtin(&problem, dimension, 0) {
+    for (problem, &resolution, &dimension) in problem_names
+        .iter()
+        .flat_map(|p| resolutions.iter().map(move |r| (p, r)))
+        .flat_map(|(p, r)| dimensions.iter().map(move |d| (p, r, d)))
+    {
+        let base = match built(problem, dimension).and_then(|p| match resolution {
+            Some(r) => Ok(p.with_resolution(r)?.allowing_coarse_step(true)),
+            None => Ok(p),
+        }) {
             Ok(p) => p,
             Err(e) => {
                 eprintln!("{problem} in {dimension} dimensions: {e}");
@@ -116,6 +139,8 @@ fn main() {
                             String::new()
                         };
                         runs.push(Run {
+                            problem: problem.clone(),
+                            resolution,
                             configuration,
                             dimension,
                             batch,
@@ -130,8 +155,16 @@ fn main() {
             }
         }
     }
+    let resolutions_text = match resolutions.as_slice() {
+        [None] => "the problems' own".to_owned(),
+        _ => format!(
+            "{:?}, coarse steps allowed",
+            resolutions.iter().flatten().collect::<Vec<_>>()
+        ),
+    };
     println!(
-        "## deadline stress on {problem}: {} runs in {:.1} s (dimensions {dimensions:?}, batch sizes {batches:?})\n",
+        "## deadline stress on {}: {} runs in {:.1} s (dimensions {dimensions:?}, batch sizes {batches:?}, resolutions {resolutions_text})\n",
+        problem_names.join(", "),
         runs.len(),
         clock.elapsed().as_secs_f64()
     );
@@ -159,6 +192,29 @@ fn main() {
         let solved = mine.iter().filter(|r| r.solved).count();
         println!(" {late} of {} | {solved} |", mine.len());
     }
+    if problem_names.len() > 1 || resolutions.len() > 1 {
+        println!("\n| problem | resolution | runs | late runs | worst overshoot (ms) |");
+        println!("|---|---|---|---|---|");
+        for problem in &problem_names {
+            for &resolution in &resolutions {
+                let mine: Vec<&Run> = runs
+                    .iter()
+                    .filter(|r| &r.problem == problem && r.resolution == resolution)
+                    .collect();
+                let worst = mine
+                    .iter()
+                    .map(|r| r.late)
+                    .fold(f64::NEG_INFINITY, f64::max);
+                let late = mine.iter().filter(|r| r.late > allowed(r.budget)).count();
+                let resolution = resolution.map_or("own".to_owned(), |v| v.to_string());
+                println!(
+                    "| {problem} | {resolution} | {} | {late} | {:.3} |",
+                    mine.len(),
+                    1e3 * worst
+                );
+            }
+        }
+    }
     let late: Vec<&Run> = runs.iter().filter(|r| r.late > allowed(r.budget)).collect();
     println!(
         "\non time (within max(1 ms, 1 % of the budget)): {} of {} runs",
@@ -166,14 +222,18 @@ fn main() {
         runs.len()
     );
     for r in runs.iter().filter(|r| !r.stalls.is_empty()) {
+        let resolution = r
+            .resolution
+            .map_or(String::new(), |v| format!(" resolution {v}"));
         println!(
-            "{}: {} R^{} batch {} budget {} s seed {}: {:.3} ms late",
+            "{}: {} on {}{resolution} R^{} batch {} budget {} s seed {}: {:.3} ms late",
             if r.late > allowed(r.budget) {
                 "LATE"
             } else {
                 "over 1 ms"
             },
             r.configuration.label(),
+            r.problem,
             r.dimension,
             r.batch,
             r.budget,
@@ -185,6 +245,24 @@ fn main() {
     if !late.is_empty() {
         std::process::exit(1);
     }
+}
+
+/// The built-in problem `name` in `dimension` dimensions, or, for `many-rectangles:COUNT`, a
+/// random-rectangles layout of `COUNT` boxes (sides between half and all of
+/// `(0.3 / COUNT)^(1/n)`, so that about as much of the space is covered whatever the count): a
+/// world large enough that one exact certification of a long edge is real work.
+fn built(name: &str, dimension: usize) -> Result<problems::Problem, problems::ProblemError> {
+    let Some(count) = name.strip_prefix("many-rectangles:") else {
+        return problems::builtin(name, dimension, 0);
+    };
+    let count: usize = count.parse().unwrap_or(10_000).max(1);
+    let side = (0.3 / count as f64).powf(1.0 / dimension as f64).min(0.5);
+    problems::RandomRectangles::new(dimension)
+        .count(count)
+        .min_side(0.5 * side)
+        .max_side(side)
+        .max_attempts(100 * count)
+        .build()
 }
 
 /// How late a run with `budget` seconds may return: `max(1 ms, 1 % of the budget)`.

@@ -1,5 +1,6 @@
 //! A termination condition that records where a planner went longest without polling it,
-//! shared by the `poll_gaps` and `deadline_stress` examples.
+//! shared by the `poll_gaps` and `deadline_stress` examples (and the `robot` crate's
+//! `arm_deadline_stress`).
 
 use std::backtrace::Backtrace;
 use std::cell::RefCell;
@@ -73,6 +74,8 @@ fn frames(bt: &Backtrace) -> String {
                 "samplers::",
                 "samplers/src",
                 "validity::",
+                "robot::",
+                "robot/src",
             ]
             .iter()
             .any(|p| l.contains(p))
