@@ -320,7 +320,8 @@ where
                 let tree = &self.trees[t];
                 let parent = tree.parents[id as usize];
                 if !tree.certified[id as usize] {
-                    // An exact certification (a box world's segment test) does not poll.
+                    // Polled between edges too: a certification on a grid of at most
+                    // `STOP_POLL` new points does not poll.
                     if spaces::Stop::should_stop(stop) {
                         return;
                     }

@@ -39,7 +39,8 @@ impl Segment {
         // Non-negative, so that bits order like values (no −0.0).
         let t0 = if within[0] > 0.0 { within[0] } else { 0.0 };
         let t1 = within[1];
-        if !(t0 <= t1) {
+        // Empty, or a NaN end: nothing to search.
+        if t0.partial_cmp(&t1).is_none_or(|order| order.is_gt()) {
             return None;
         }
         let (start, delta) = (self.start[d], self.delta[d]);

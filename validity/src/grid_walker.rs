@@ -65,6 +65,10 @@ pub struct GridWalker {
     certifying: Vec<f64>,
     certified_motion: MotionProgress,
     certified_points: u64,
+    /// The scratch of motion certifications ([`StateValidity::certify_motion_in`]), apart
+    /// from `segment` (which every walk resets): it keeps what an interrupted certification
+    /// found until the same edge is certified again.
+    motion_scratch: Segment,
     counters: EdgeCounters,
 }
 
@@ -138,6 +142,7 @@ impl GridWalker {
             certifying: Vec::new(),
             certified_motion: MotionProgress::default(),
             certified_points: 0,
+            motion_scratch: Segment::default(),
             counters: EdgeCounters::default(),
         })
     }
@@ -426,7 +431,7 @@ impl GridWalker {
     /// Certifies the edge `a — b`: proves every state of it valid, not only the points of its
     /// grid, stopping at the first state found invalid.
     ///
-    /// A checker that certifies motions ([`StateValidity::certify_motion`]: a box
+    /// A checker that certifies motions ([`StateValidity::certify_motion_in`]: a box
     /// [`World`](crate::World) exactly, by slab tests; the `robot` crate's arm checker by
     /// spheres grown by how far they can move) certifies the whole edge, whatever the step.
     /// Any other checker is certified on a grid `factor` times finer than the edge's own: every
@@ -469,7 +474,8 @@ impl GridWalker {
         };
         self.certifying.clear();
         let before = motion.evaluations();
-        let status = match validity.certify_motion(&space, a, b, &mut motion, stop) {
+        let scratch = &mut self.motion_scratch;
+        let status = match validity.certify_motion_in(&space, (a, b), scratch, &mut motion, stop) {
             Some(status) => {
                 let evaluated = motion.evaluations() - before;
                 self.counters.certification_points += evaluated;

@@ -63,6 +63,7 @@ mod length_adaptive_checker;
 mod length_buckets;
 mod motion_progress;
 mod segment;
+mod segment_certification;
 mod segment_validation;
 mod state_validity;
 mod world;

@@ -68,7 +68,8 @@ impl MotionProgress {
     }
 
     /// The checker's own position (its meaning is the checker's: the arm checker keeps the
-    /// length of its next step, a box world the index of the next box to test). 0 when fresh.
+    /// length of its next step, a box world the units of work it has done, its place among
+    /// its boxes kept in the caller's scratch). 0 when fresh.
     #[inline]
     pub fn cursor(&self) -> f64 {
         self.cursor

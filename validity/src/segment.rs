@@ -3,6 +3,8 @@
 
 use wide::f64x4;
 
+use crate::segment_certification::ExactCertification;
+
 /// What a validity checker made of a straight segment it was asked to prepare
 /// ([`StateValidity::prepare_segment`](crate::StateValidity::prepare_segment)).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -63,6 +65,9 @@ pub struct Segment {
     pub(crate) lattices: bool,
     /// One state, for checkers that test points one by one.
     pub(crate) state: Vec<f64>,
+    /// For a box world: where an exact certification of a motion stands, so that a stopped
+    /// one resumes (left alone by [`set`](Self::set)).
+    pub(crate) exact: ExactCertification,
 }
 
 /// A relative bound on the rounding error of `x + (y − x)·t` for `t ∈ [0, 1]`: at most about

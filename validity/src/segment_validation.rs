@@ -29,7 +29,7 @@
 //! less than an ulp of the coordinates) is decided as the nearest computed points are.
 
 use crate::segment::ROUNDING;
-use crate::{Segment, World};
+use crate::{Lattice, Segment, World};
 
 /// Why a segment is invalid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -71,7 +71,7 @@ impl SegmentVerdict {
 }
 
 /// A closed interval of the segment's parameter.
-type Interval = (f64, f64);
+pub(crate) type Interval = (f64, f64);
 
 impl World {
     /// Decides exactly whether every point of the straight segment `a → b` is valid (module
@@ -126,17 +126,10 @@ impl World {
                 first = Some((t, cause));
             }
         };
-        let bounds: Vec<f64> = self
-            .lower
-            .iter()
-            .zip(&self.upper)
-            .flat_map(|(&lo, &hi)| [lo, hi])
-            .collect();
-        match exact_interval(segment, &bounds) {
-            Some((s, _)) if s > 0.0 => note(0.0, SegmentCause::OutOfBounds),
-            Some((_, e)) if e < BELOW_ONE => note(next_float(e), SegmentCause::OutOfBounds),
-            Some(_) => {}
-            None => note(0.0, SegmentCause::OutOfBounds),
+        let mut bounds = Vec::new();
+        self.bounds_row(&mut bounds);
+        if let Some(t) = leaves_bounds(segment, &bounds) {
+            note(t, SegmentCause::OutOfBounds);
         }
         let width = 2 * self.dimension();
         let free = merged(
@@ -163,18 +156,40 @@ impl World {
         }
         first
     }
+
+    /// The world's bounds as one row, `[lo₀, hi₀, lo₁, hi₁, …]`, written into `row`.
+    pub(crate) fn bounds_row(&self, row: &mut Vec<f64>) {
+        row.clear();
+        row.extend(
+            self.lower
+                .iter()
+                .zip(&self.upper)
+                .flat_map(|(&lo, &hi)| [lo, hi]),
+        );
+    }
+}
+
+/// The first float fraction whose computed point lies outside the bounds `row` (as
+/// [`World::bounds_row`] writes them), `None` if every one lies inside.
+pub(crate) fn leaves_bounds(segment: &Segment, row: &[f64]) -> Option<f64> {
+    match exact_interval(segment, row) {
+        Some((s, _)) if s > 0.0 => Some(0.0),
+        Some((_, e)) if e < BELOW_ONE => Some(next_float(e)),
+        Some(_) => None,
+        None => Some(0.0),
+    }
 }
 
 /// The largest float below 1: fractions run over `[0, 1)`, so the point at 1 is the other end
 /// itself (the other parametrization's `t = 0`), not `a + (b − a)·1`, which may differ from it
 /// by rounding.
-const BELOW_ONE: f64 = 1.0 - f64::EPSILON / 2.0;
+pub(crate) const BELOW_ONE: f64 = 1.0 - f64::EPSILON / 2.0;
 
 /// The fractions of `[0, 1)`, as a span.
-const FRACTIONS: [f64; 2] = [0.0, BELOW_ONE];
+pub(crate) const FRACTIONS: [f64; 2] = [0.0, BELOW_ONE];
 
 /// The float just above a non-negative `t`.
-fn next_float(t: f64) -> f64 {
+pub(crate) fn next_float(t: f64) -> f64 {
     f64::from_bits(t.to_bits() + 1)
 }
 
@@ -182,14 +197,25 @@ fn next_float(t: f64) -> f64 {
 /// box `row` (`[lo, hi]` per coordinate, as the world stores it), `None` if none does: boxes
 /// away from the segment's reach are dismissed at once, the others by a slab test's loose span,
 /// then searched.
-fn exact_interval(segment: &Segment, row: &[f64]) -> Option<Interval> {
-    let meets = row
-        .chunks_exact(2)
-        .zip(segment.reach.chunks_exact(2))
-        .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0]);
-    if !meets {
+pub(crate) fn exact_interval(segment: &Segment, row: &[f64]) -> Option<Interval> {
+    if !meets_reach(segment, row) {
         return None;
     }
+    crossed_interval(segment, row)
+}
+
+/// `true` if the box `row` meets the segment's reach along every coordinate (a box that does
+/// not holds no computed point).
+#[inline]
+pub(crate) fn meets_reach(segment: &Segment, row: &[f64]) -> bool {
+    row.chunks_exact(2)
+        .zip(segment.reach.chunks_exact(2))
+        .all(|(b, r)| b[0] <= r[1] && b[1] >= r[0])
+}
+
+/// [`exact_interval`] for a box known to meet the segment's reach: the slab test's span, then
+/// the search of the floats within it.
+pub(crate) fn crossed_interval(segment: &Segment, row: &[f64]) -> Option<Interval> {
     let [s0, s1] = segment.span(row)?;
     let [t0, t1] = segment.crossing(row, [s0, s1.min(BELOW_ONE)])?;
     Some((t0, t1))
@@ -198,22 +224,39 @@ fn exact_interval(segment: &Segment, row: &[f64]) -> Option<Interval> {
 /// Sorts closed intervals of non-negative floats and merges those that overlap or are
 /// adjacent (no float between them).
 fn merged(mut intervals: Vec<Interval>) -> Vec<Interval> {
+    merge_in_place(&mut intervals);
+    intervals
+}
+
+/// [`merged`] in place: sorts `intervals` and merges those that overlap or are adjacent,
+/// keeping the buffer.
+pub(crate) fn merge_in_place(intervals: &mut Vec<Interval>) {
     intervals.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let mut out: Vec<Interval> = Vec::with_capacity(intervals.len());
-    for (s, e) in intervals {
-        match out.last_mut() {
-            Some(last) if s <= next_float(last.1) => last.1 = last.1.max(e),
-            _ => out.push((s, e)),
+    let mut kept = 0;
+    for i in 0..intervals.len() {
+        let (s, e) = intervals[i];
+        if kept > 0 && s <= next_float(intervals[kept - 1].1) {
+            let last = &mut intervals[kept - 1];
+            last.1 = last.1.max(e);
+        } else {
+            intervals[kept] = (s, e);
+            kept += 1;
         }
     }
-    out
+    intervals.truncate(kept);
 }
 
 /// The first float of `interval` that no interval of `free` (merged, sorted, with floats
 /// between them) covers, if any. Closed intervals: `[0.2, 0.5]` covers `[0.2, 0.5]`.
-fn uncovered((s, e): Interval, free: &[Interval]) -> Option<f64> {
-    // Merged intervals are disjoint with gaps between them, so one of them must cover it all.
-    let covering = free.iter().find(|(u0, u1)| *u0 <= s && s <= *u1);
+pub(crate) fn uncovered((s, e): Interval, free: &[Interval]) -> Option<f64> {
+    // Merged intervals are disjoint with gaps between them, so one of them must cover it all:
+    // the last one starting at or before `s`, if it reaches `s` (a binary search, so that a
+    // world of many anti-obstacles costs a logarithm per obstacle crossed).
+    let before = free.partition_point(|(u0, _)| *u0 <= s);
+    let covering = before
+        .checked_sub(1)
+        .map(|i| &free[i])
+        .filter(|(_, u1)| s <= *u1);
     match covering {
         Some(&(_, u1)) if u1 >= e => None,
         // Covered up to u1, then a gap: the float just after u1 is in the obstacle.
@@ -232,35 +275,18 @@ fn lattice_intervals(world: &World, index: usize, segment: &Segment) -> Vec<Inte
     if lattice.count == 0 {
         return Vec::new();
     }
-    let half = 0.5 * lattice.side + f64::EPSILON;
-    let last_cube = lattice.count as f64 - 1.0;
     let mut result = vec![(FRACTIONS[0], FRACTIONS[1])];
-    for (d, &lower) in world.lower.iter().enumerate() {
-        let (lo, hi) = segment.reach(d);
-        // Cubes j whose slab [c_j − h, c_j + h], c_j = lower + (j + 1)·spacing, may meet the
-        // reach, one more each side for the rounding of this estimate.
-        let first = ((lo - half - lower) / lattice.spacing - 2.0)
-            .floor()
-            .max(0.0);
-        let last = ((hi + half - lower) / lattice.spacing)
-            .ceil()
-            .min(last_cube);
+    for d in 0..world.dimension() {
+        let (first, last) = lattice_cubes(world, lattice, segment, d);
         let mut slabs = Vec::new();
         let mut j = first;
         while j <= last {
-            let c = lower + (j + 1.0) * lattice.spacing;
-            // The span of the slab widened by the rounding of `x − c`.
-            let widen = ROUNDING * (c.abs() + half);
-            let slab = [c - half - widen, c + half + widen];
-            if let Some(span) = segment.slab_span(d, slab, FRACTIONS)
-                && let Some([t0, t1]) =
-                    segment.coordinate_crossing(d, span, |v| v - c >= -half, |v| v - c <= half)
-            {
-                slabs.push((t0, t1));
-            }
+            slabs.extend(lattice_slab(world, lattice, segment, d, j));
             j += 1.0;
         }
-        result = intersection(&result, &merged(slabs));
+        let mut next = Vec::new();
+        intersect_into(&result, &merged(slabs), &mut next);
+        result = next;
         if result.is_empty() {
             break;
         }
@@ -268,9 +294,51 @@ fn lattice_intervals(world: &World, index: usize, segment: &Segment) -> Vec<Inte
     result
 }
 
-/// The intersection of two sorted lists of disjoint closed intervals.
-fn intersection(x: &[Interval], y: &[Interval]) -> Vec<Interval> {
-    let (mut i, mut j, mut out) = (0, 0, Vec::new());
+/// The first and last index `j` (as floats) of the cubes of `lattice` along coordinate `d`
+/// whose slab `[c_j − h, c_j + h]`, `c_j = lower + (j + 1)·spacing`, may meet the segment's
+/// reach, one more each side for the rounding of this estimate.
+pub(crate) fn lattice_cubes(
+    world: &World,
+    lattice: &Lattice,
+    segment: &Segment,
+    d: usize,
+) -> (f64, f64) {
+    let half = 0.5 * lattice.side + f64::EPSILON;
+    let last_cube = lattice.count as f64 - 1.0;
+    let (lower, (lo, hi)) = (world.lower[d], segment.reach(d));
+    let first = ((lo - half - lower) / lattice.spacing - 2.0)
+        .floor()
+        .max(0.0);
+    let last = ((hi + half - lower) / lattice.spacing)
+        .ceil()
+        .min(last_cube);
+    (first, last)
+}
+
+/// The exact float fractions whose computed coordinate `d` lies in the slab of cube `j` of
+/// `lattice` (the world's own test `|x − c| ≤ side/2 + ε`), if any.
+#[inline]
+pub(crate) fn lattice_slab(
+    world: &World,
+    lattice: &Lattice,
+    segment: &Segment,
+    d: usize,
+    j: f64,
+) -> Option<Interval> {
+    let half = 0.5 * lattice.side + f64::EPSILON;
+    let c = world.lower[d] + (j + 1.0) * lattice.spacing;
+    // The span of the slab widened by the rounding of `x − c`.
+    let widen = ROUNDING * (c.abs() + half);
+    let slab = [c - half - widen, c + half + widen];
+    let span = segment.slab_span(d, slab, FRACTIONS)?;
+    let [t0, t1] = segment.coordinate_crossing(d, span, |v| v - c >= -half, |v| v - c <= half)?;
+    Some((t0, t1))
+}
+
+/// The intersection of two sorted lists of disjoint closed intervals, written into `out`.
+pub(crate) fn intersect_into(x: &[Interval], y: &[Interval], out: &mut Vec<Interval>) {
+    out.clear();
+    let (mut i, mut j) = (0, 0);
     while i < x.len() && j < y.len() {
         let (s, e) = (x[i].0.max(y[j].0), x[i].1.min(y[j].1));
         if s <= e {
@@ -282,13 +350,12 @@ fn intersection(x: &[Interval], y: &[Interval]) -> Vec<Interval> {
             j += 1;
         }
     }
-    out
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{AxisBox, Lattice};
+    use crate::AxisBox;
 
     fn square() -> World {
         World::new(vec![-0.5; 2], vec![0.5; 2])

@@ -78,6 +78,25 @@ pub trait StateValidity {
         None
     }
 
+    /// [`certify_motion`](Self::certify_motion) of the motion `ends` (`a`, `b`) with a
+    /// `scratch` segment the caller keeps: a checker may leave there what a stopped
+    /// certification found so far, and goes on from it when called again with the same
+    /// motion, scratch and progress. The [`GridWalker`](crate::GridWalker) keeps one for the
+    /// certification it was last stopped on. A box [`World`](crate::World) keeps its place
+    /// among its boxes there, so that it can poll however many boxes it has; the default
+    /// ignores the scratch and calls `certify_motion`.
+    #[inline]
+    fn certify_motion_in(
+        &self,
+        space: &dyn StateSpace,
+        (a, b): (&[f64], &[f64]),
+        _scratch: &mut Segment,
+        progress: &mut MotionProgress,
+        stop: &dyn Stop,
+    ) -> Option<EdgeStatus> {
+        self.certify_motion(space, a, b, progress, stop)
+    }
+
     /// Prepares the straight segment in `segment` (set by the caller to `a → b`) for testing
     /// its points with [`first_invalid_on`](Self::first_invalid_on): a checker may keep in
     /// `segment` only what can meet the segment (a per-edge broad phase), or find that no
@@ -132,6 +151,18 @@ macro_rules! forward_state_validity {
                 stop: &dyn Stop,
             ) -> Option<EdgeStatus> {
                 (**self).certify_motion(space, a, b, progress, stop)
+            }
+
+            #[inline]
+            fn certify_motion_in(
+                &self,
+                space: &dyn StateSpace,
+                ends: (&[f64], &[f64]),
+                scratch: &mut Segment,
+                progress: &mut MotionProgress,
+                stop: &dyn Stop,
+            ) -> Option<EdgeStatus> {
+                (**self).certify_motion_in(space, ends, scratch, progress, stop)
             }
 
             #[inline]
@@ -246,6 +277,20 @@ impl<V: StateValidity> StateValidity for Counted<V> {
         stop: &dyn Stop,
     ) -> Option<EdgeStatus> {
         self.inner.certify_motion(space, a, b, progress, stop)
+    }
+
+    /// Not counted, as [`certify_motion`](Self::certify_motion).
+    #[inline]
+    fn certify_motion_in(
+        &self,
+        space: &dyn StateSpace,
+        ends: (&[f64], &[f64]),
+        scratch: &mut Segment,
+        progress: &mut MotionProgress,
+        stop: &dyn Stop,
+    ) -> Option<EdgeStatus> {
+        self.inner
+            .certify_motion_in(space, ends, scratch, progress, stop)
     }
 
     /// Prepared like the wrapped checker.

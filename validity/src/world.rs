@@ -326,8 +326,9 @@ impl StateValidity for World {
     }
 
     /// The exact slab tests of [`segment_verdict`](World::segment_verdict), in spaces whose
-    /// edges are straight (`None` otherwise). A certification begun after `stop` fired tests
-    /// nothing.
+    /// edges are straight (`None` otherwise), as [`certify_motion_in`](Self::certify_motion_in)
+    /// does them, with a scratch of its own: a stopped certification starts over at the next
+    /// call (use `certify_motion_in`, as the [`GridWalker`](crate::GridWalker) does, to resume).
     fn certify_motion(
         &self,
         space: &dyn StateSpace,
@@ -336,21 +337,28 @@ impl StateValidity for World {
         progress: &mut MotionProgress,
         stop: &dyn Stop,
     ) -> Option<EdgeStatus> {
+        self.certify_motion_in(space, (a, b), &mut Segment::default(), progress, stop)
+    }
+
+    /// The exact slab tests of [`segment_verdict`](World::segment_verdict), in spaces whose
+    /// edges are straight (`None` otherwise), done in steps: the stop is polled before any
+    /// work (a certification begun after it fired tests nothing) and again after every few
+    /// microseconds of work (512 units: a box compared with the edge's reach is one, an exact
+    /// crossing 32), however many boxes the world has. A stopped certification keeps where it
+    /// stands in `scratch` and `progress`, and goes on from there when called again with the
+    /// same motion, scratch and progress. The answer is the verdict's whatever the stops.
+    fn certify_motion_in(
+        &self,
+        space: &dyn StateSpace,
+        ends: (&[f64], &[f64]),
+        scratch: &mut Segment,
+        progress: &mut MotionProgress,
+        stop: &dyn Stop,
+    ) -> Option<EdgeStatus> {
         if !space.is_euclidean() {
             return None;
         }
-        if progress.is_complete() {
-            return Some(EdgeStatus::Valid);
-        }
-        if stop.should_stop() {
-            return Some(EdgeStatus::Unknown);
-        }
-        progress.count(1);
-        if !self.segment_verdict(a, b).is_valid() {
-            return Some(EdgeStatus::Invalid);
-        }
-        *progress = progress.advanced(1.0, 0.0);
-        Some(EdgeStatus::Valid)
+        Some(self.certify_exact(ends, scratch, progress, stop))
     }
 }
 

@@ -356,9 +356,9 @@ fn compare_at_changes(world: &World, a: &[f64], b: &[f64]) -> Result<(), TestCas
         while hi - lo > 1 {
             let mid = lo + (hi - lo) / 2;
             if alone(f64::from_bits(mid)) == at_lo {
-                lo = mid
+                lo = mid;
             } else {
-                hi = mid
+                hi = mid;
             }
         }
         for bits in lo.saturating_sub(2)..=hi + 2 {
