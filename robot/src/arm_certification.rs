@@ -9,10 +9,13 @@
 //!
 //! # The walk
 //! From the edge's first end, eight consecutive pieces of width `w` (a fraction of the edge)
-//! are tested at once, one per `f32x8` lane, each lane with its own growth
-//! `margin + w/2 · Σ_j λ_j |Δq_j|`. If all eight are clear, the certified prefix moves past
-//! them and `w` doubles; if a piece is not, the prefix moves up to it and the next batch
-//! tests that piece cut in eight. A piece whose growth is already below [`FLOOR`] and still
+//! are tested at once, one per `f32x8` lane, each lane's spheres grown by the margin plus how
+//! far they can move within half a piece: the smaller of the lever-arm bound
+//! `w/2 · Σ_j λ_j |Δq_j|` and the local bound measured at the piece's middle configuration
+//! ([`LocalSweep`](crate::local_sweep::LocalSweep)). If all eight are clear, the certified
+//! prefix moves past them and `w` grows (by 1/16 near obstacles; doubling once four times as
+//! wide as the first pieces: free space); if a piece is not, the prefix moves up to it and the next batch tests pieces
+//! half as wide. The first pieces sweep about a centimetre. A piece whose growth is already below [`FLOOR`] and still
 //! touches something is a contact (or within a hair of one): the edge is invalid. So free
 //! space is certified in a few batches whatever the edge's length — the first batch tests
 //! the whole edge as eight pieces — and the walk only refines near obstacles.
@@ -25,13 +28,26 @@ use validity::{EdgeStatus, MotionProgress};
 use wide::f32x8;
 
 use crate::ArmChecker;
-use crate::arm_checker::{Scratch, invalid_lanes};
+use crate::arm_checker::{Growth, Scratch, invalid_lanes};
 use crate::lanes::LANES;
+use crate::local_sweep::EdgeTerms;
 
 /// The smallest growth beyond the margin, in metres, at which a piece that still touches
 /// something makes the edge invalid: 10 µm. An edge that passes closer than about this (plus
 /// the margin) to an obstacle may be refused; none that touches one is accepted.
 pub const FLOOR: f64 = 1e-5;
+
+/// How far (metres) a sphere may sweep over half a piece of an edge's first batch: about the
+/// clearance a solution edge keeps near obstacles, so that most first batches pass
+/// (measured on MotionBenchMaker solution edges, `examples/certification_cost.rs`).
+const FIRST_SWEEP: f64 = 0.01;
+
+/// How much wider the pieces of the next batch are after a clear batch, while they are less
+/// than four times as wide as the first pieces (near obstacles); wider, they double.
+const GROWTH: f64 = 1.0625;
+
+/// How much narrower the pieces become after a batch with a piece that is not clear.
+const SHRINK: f64 = 2.0;
 
 /// Batches between two polls of the stop condition (a batch is eight configurations: about
 /// the [`STOP_POLL`](validity::STOP_POLL) state checks the grid walks poll after).
@@ -48,6 +64,8 @@ pub(crate) struct CertifyScratch {
     sweep: Vec<f64>,
     /// Per link with spheres: the growth in each lane.
     grow: Vec<f32x8>,
+    /// The edge's terms of the local sweep bound.
+    terms: EdgeTerms,
 }
 
 impl CertifyScratch {
@@ -57,6 +75,7 @@ impl CertifyScratch {
             delta: vec![0.0; dimension],
             sweep: vec![0.0; links],
             grow: vec![f32x8::ZERO; links],
+            terms: EdgeTerms::default(),
         }
     }
 }
@@ -90,6 +109,7 @@ impl ArmChecker {
             delta,
             sweep,
             grow,
+            terms,
         } = certify;
         for (j, d) in delta.iter_mut().enumerate() {
             *d = if s.wraps[j] {
@@ -103,9 +123,13 @@ impl ArmChecker {
             *out = levers.iter().zip(&*delta).map(|(l, d)| l * d.abs()).sum();
         }
         let fastest = sweep.iter().copied().fold(0.0, f64::max);
+        s.local.edge_terms(delta, &s.levers, terms);
         let (mut t, mut w) = (progress.certified(), progress.cursor());
+        // First pieces: sweeping at most `FIRST_SWEEP` over a half piece, at most an eighth of
+        // the edge.
+        let first = (2.0 * FIRST_SWEEP / fastest.max(1e-12)).min(1.0 / LANES as f64);
         if !(w > 0.0 && w <= 1.0) {
-            w = 1.0 / LANES as f64;
+            w = first;
         }
         let mut batches = 0_u32;
         loop {
@@ -137,17 +161,16 @@ impl ArmChecker {
                 }
                 count += 1;
             }
-            for (g, &swept) in grow.iter_mut().zip(&*sweep) {
-                // Rounded up, so that the `f32` growth is never below the bound.
-                *g = f32x8::new(std::array::from_fn(|l| {
-                    ((s.margin + swept * halves[l]) * (1.0 + 1e-6)) as f32
-                }));
-            }
             progress.count(count as u64);
-            let invalid = invalid_lanes(s, lanes, &chunk[..count * n], n, grow);
+            let place = |poses: &[_], bounds: &[_], out: &mut [f32x8]| {
+                s.local
+                    .grow(poses, bounds, (delta, terms), &halves, s.margin, sweep, out);
+            };
+            let growth = Growth::Placed(grow, &place);
+            let invalid = invalid_lanes(s, lanes, &chunk[..count * n], n, growth);
             if invalid == 0 {
                 t = (t + count as f64 * w).min(1.0);
-                w = (2.0 * w).min(1.0);
+                w = (if w >= 4.0 * first { 2.0 } else { GROWTH } * w).min(1.0);
                 continue;
             }
             let first = invalid.trailing_zeros();
@@ -157,7 +180,7 @@ impl ArmChecker {
                 *progress = progress.advanced(t, w);
                 return Some(EdgeStatus::Invalid);
             }
-            w /= LANES as f64;
+            w /= SHRINK;
         }
     }
 }

@@ -10,6 +10,7 @@ use validity::{EdgeStatus, MotionProgress, StateValidity};
 use wide::f32x8;
 
 use crate::lanes::{LANES, LaneKinematics, Point8, Pose8};
+use crate::local_sweep::LocalSweep;
 use crate::scratch_cell::ScratchCell;
 use crate::{Kinematics, LeverArms, Obstacle, RobotModel, Scene};
 
@@ -18,14 +19,14 @@ use crate::{Kinematics, LeverArms, Obstacle, RobotModel, Scene};
 #[derive(Debug)]
 pub(crate) struct Shared {
     pub(crate) fk: Kinematics,
-    lanes: LaneKinematics,
+    pub(crate) lanes: LaneKinematics,
     pub(crate) lower: Vec<f64>,
     pub(crate) upper: Vec<f64>,
     /// Per coordinate: the joint wraps around (continuous), so motions go the short way.
     pub(crate) wraps: Vec<bool>,
     obstacles: Vec<Obstacle>,
     /// Links with spheres, in tree order: link, its sphere range, local bounding sphere.
-    links: Vec<(usize, Range<usize>, Vec3A, f32)>,
+    pub(crate) links: Vec<(usize, Range<usize>, Vec3A, f32)>,
     /// Local sphere centres and radii.
     spheres: Vec<(Vec3A, f32)>,
     /// Self-collision pairs as indices into `links`.
@@ -37,6 +38,20 @@ pub(crate) struct Shared {
     plain: Vec<f32x8>,
     /// Per entry of `links`, per coordinate: the link's lever arm ([`LeverArms`]).
     pub(crate) levers: Vec<f64>,
+    /// The configuration-dependent sweep bound certification uses.
+    pub(crate) local: LocalSweep,
+}
+
+/// How much the spheres of each link are grown in a batch: fixed, or computed from the
+/// batch's link poses and bounding centres (certification's local sweep bound).
+pub(crate) enum Growth<'a> {
+    /// The same growth whatever the poses.
+    Fixed(&'a [f32x8]),
+    /// Written into the buffer by the function once the batch's links are placed.
+    Placed(
+        &'a mut [f32x8],
+        &'a dyn Fn(&[Pose8], &[Point8], &mut [f32x8]),
+    ),
 }
 
 /// Per-clone scratch, reused by every check.
@@ -157,6 +172,7 @@ impl ArmChecker {
             },
             certify: crate::arm_certification::CertifyScratch::new(dimension, links.len()),
         };
+        let local = LocalSweep::new(robot, &links);
         let wraps = space
             .joints()
             .iter()
@@ -176,6 +192,7 @@ impl ArmChecker {
                 pairs,
                 margin,
                 levers,
+                local,
             }),
             scratch: ScratchCell::new(scratch),
         }
@@ -200,7 +217,13 @@ impl StateValidity for ArmChecker {
     fn is_valid(&self, q: &[f64]) -> bool {
         let s = &*self.shared;
         let mut guard = self.scratch.lock();
-        invalid_lanes(s, &mut guard.lanes, q, q.len().max(1), &s.plain) == 0
+        invalid_lanes(
+            s,
+            &mut guard.lanes,
+            q,
+            q.len().max(1),
+            Growth::Fixed(&s.plain),
+        ) == 0
     }
 
     #[inline]
@@ -227,7 +250,13 @@ impl StateValidity for ArmChecker {
         let s = &*self.shared;
         let mut guard = self.scratch.lock();
         for (c, chunk) in states.chunks(LANES * dimension).enumerate() {
-            let invalid = invalid_lanes(s, &mut guard.lanes, chunk, dimension, &s.plain);
+            let invalid = invalid_lanes(
+                s,
+                &mut guard.lanes,
+                chunk,
+                dimension,
+                Growth::Fixed(&s.plain),
+            );
             if invalid != 0 {
                 return Some(c * LANES + invalid.trailing_zeros() as usize);
             }
@@ -245,7 +274,7 @@ pub(crate) fn invalid_lanes(
     scratch: &mut LaneScratch,
     chunk: &[f64],
     dimension: usize,
-    grow: &[f32x8],
+    growth: Growth<'_>,
 ) -> u32 {
     let count = (chunk.len() / dimension).min(LANES);
     let live: u32 = (1 << count) - 1;
@@ -287,14 +316,23 @@ pub(crate) fn invalid_lanes(
     }
     s.lanes.link_poses(q8, poses8);
     placed.fill(false);
+    for (bound, (link, _, center, _)) in bounds8.iter_mut().zip(&s.links) {
+        *bound = poses8[*link].point(*center);
+    }
+    let grow: &[f32x8] = match growth {
+        Growth::Fixed(grow) => grow,
+        Growth::Placed(buffer, place) => {
+            place(poses8, bounds8, buffer);
+            buffer
+        }
+    };
     let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
         for i in range.clone() {
             centers[i] = pose.point(s.spheres[i].0);
         }
     };
-    for (k, (link, range, center, radius)) in s.links.iter().enumerate() {
+    for (k, (link, range, _, radius)) in s.links.iter().enumerate() {
         let pose = &poses8[*link];
-        bounds8[k] = pose.point(*center);
         let bound = f32x8::splat(*radius) + grow[k];
         for obstacle in &s.obstacles {
             if obstacle.collides_spheres8(&bounds8[k], bound) & active == 0 {

@@ -36,9 +36,15 @@ impl Pose8 {
 
     /// The rotation applied to a constant vector.
     #[inline]
-    fn rotate(&self, v: Vec3A) -> Point8 {
+    pub(crate) fn rotate(&self, v: Vec3A) -> Point8 {
         let (x, y, z) = (f32x8::splat(v.x), f32x8::splat(v.y), f32x8::splat(v.z));
         std::array::from_fn(|i| self.r[0][i] * x + self.r[1][i] * y + self.r[2][i] * z)
+    }
+
+    /// The translation: where the frame's origin is.
+    #[inline]
+    pub(crate) fn translation(&self) -> Point8 {
+        self.t
     }
 
     /// The transform applied to a constant point (a local sphere centre).

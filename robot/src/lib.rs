@@ -41,6 +41,7 @@ mod arm_problem;
 mod kinematics;
 mod lanes;
 mod lever_arms;
+mod local_sweep;
 mod mbm_problem;
 mod model_error;
 mod motion_audit;

@@ -73,7 +73,7 @@ impl Stop for Every {
 fn a_stopped_certification_resumes_and_agrees() {
     let robot = panda();
     let ball = Obstacle::new(
-        Shape::Sphere { radius: 0.1 },
+        Shape::Sphere { radius: 0.2 },
         DVec3::new(0.45, 0.3, 0.6),
         DQuat::IDENTITY,
     );
@@ -83,6 +83,8 @@ fn a_stopped_certification_resumes_and_agrees() {
     b[0] = 1.0;
     b[3] = -1.9;
     let (whole, done) = certify(&checker, &a, &b, &Never);
+    // Long enough to be stopped by every stop below (a poll every four batches of eight).
+    assert!(done.evaluations() > 5 * 4 * 8, "{done:?}");
     for every in [2, 3, 5] {
         let stop = Every {
             polls: Cell::new(0),
