@@ -19,6 +19,12 @@
 //! where they were made, so a late run's gaps name where they began (slower: a diagnostic),
 //! and every run more than 1 ms late is reported, within its allowance or not.
 //!
+//! `--confirm K` measures a late run again, up to `K` more times (same planner, seed and
+//! budget): it counts as late only if every attempt is. A run's work up to its deadline does
+//! not depend on the clock, so a stall of the planner's own comes back, while a machine's
+//! (another process on the core, a scheduler tick: gaps of about 4 ms) rarely does; both
+//! counts are printed.
+//!
 //! `--problem` takes a comma-separated list of built-in problems (default: goal enclosure);
 //! `many-rectangles:COUNT` is a random-rectangles layout of `COUNT` small boxes.
 //! `--resolutions` plans each problem at these collision-check resolutions (fractions of the
@@ -44,7 +50,12 @@ struct Run {
     batch: usize,
     budget: f64,
     seed: u64,
+    /// How late it returned: the least lateness of its attempts (see `--confirm`).
     late: f64,
+    /// How late its first attempt returned.
+    first: f64,
+    /// Attempts made (more than one if the first was late and `--confirm` allows).
+    attempts: u32,
     solved: bool,
     /// Where the polls after the deadline came from (late runs only).
     stalls: String,
@@ -59,6 +70,7 @@ fn main() {
     let mut budgets = vec![0.001, 0.01, 0.1, 1.0];
     let mut configurations = Configuration::ALL.to_vec();
     let mut trace = false;
+    let mut confirm = 0_u32;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         if arg == "--trace" {
@@ -70,6 +82,7 @@ fn main() {
             "--problem" | "--problems" => problem_names = list(&value),
             "--resolutions" => resolutions = list(&value).into_iter().map(Some).collect(),
             "--seeds" => seeds = value.parse().unwrap_or(1).max(1),
+            "--confirm" => confirm = value.parse().unwrap_or(0),
             "--dims" => dimensions = list(&value),
             "--batches" => batches = list(&value),
             "--budgets" => budgets = list(&value),
@@ -82,7 +95,7 @@ fn main() {
             other => {
                 eprintln!(
                     "unknown option {other}; options: --problem NAME,NAME --resolutions 0.05,0.2 \
-                     --seeds N --dims 2,4,8 \
+                     --seeds N --confirm K --dims 2,4,8 \
                      --batches 1,100 --budgets 0.01,0.1 --planners mit-star,eit-star --trace"
                 );
                 std::process::exit(2);
@@ -115,29 +128,21 @@ fn main() {
                             seed,
                             ..Parameters::default()
                         };
-                        let started = Instant::now();
-                        let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
-                        // Lateness is taken when `solve` returns, before the planner is
-                        // dropped (freeing a large graph is the caller's time, not the
-                        // planner's).
-                        let (solved, late) = match build_planner(configuration, &base, &parameters)
-                        {
-                            Ok(mut planner) => {
-                                let outcome = planner.solve(&gaps);
-                                let late = started.elapsed().as_secs_f64() - budget;
-                                (outcome.is_ok_and(|o| o.is_solved()), late)
-                            }
-                            Err(e) => {
-                                eprintln!("{}: {e}", configuration.name());
-                                std::process::exit(1);
-                            }
-                        };
+                        let (solved, mut late, gaps) =
+                            measure(configuration, &base, &parameters, budget, trace);
                         // Traced runs report every stall over 1 ms, late or not.
                         let stalls = if late > allowed(budget) || (trace && late > 0.001) {
                             gaps.report(2)
                         } else {
                             String::new()
                         };
+                        let first = late;
+                        let mut attempts = 1;
+                        while late > allowed(budget) && attempts <= confirm {
+                            attempts += 1;
+                            late = late
+                                .min(measure(configuration, &base, &parameters, budget, false).1);
+                        }
                         runs.push(Run {
                             problem: problem.clone(),
                             resolution,
@@ -147,6 +152,8 @@ fn main() {
                             budget,
                             seed,
                             late,
+                            first,
+                            attempts,
                             solved,
                             stalls,
                         });
@@ -189,46 +196,76 @@ fn main() {
             print!(" {:.3} |", 1e3 * worst);
         }
         let late = mine.iter().filter(|r| r.late > allowed(r.budget)).count();
+        let first = mine.iter().filter(|r| r.first > allowed(r.budget)).count();
         let solved = mine.iter().filter(|r| r.solved).count();
-        println!(" {late} of {} | {solved} |", mine.len());
+        println!(" {late} of {} ({first} at first) | {solved} |", mine.len());
     }
     if problem_names.len() > 1 || resolutions.len() > 1 {
-        println!("\n| problem | resolution | runs | late runs | worst overshoot (ms) |");
-        println!("|---|---|---|---|---|");
+        println!(
+            "\n| problem | resolution | dimension | runs | late runs | late at first | worst \
+             overshoot (ms) | worst at first (ms) |"
+        );
+        println!("|---|---|---|---|---|---|---|---|");
         for problem in &problem_names {
             for &resolution in &resolutions {
-                let mine: Vec<&Run> = runs
-                    .iter()
-                    .filter(|r| &r.problem == problem && r.resolution == resolution)
-                    .collect();
-                let worst = mine
-                    .iter()
-                    .map(|r| r.late)
-                    .fold(f64::NEG_INFINITY, f64::max);
-                let late = mine.iter().filter(|r| r.late > allowed(r.budget)).count();
-                let resolution = resolution.map_or("own".to_owned(), |v| v.to_string());
-                println!(
-                    "| {problem} | {resolution} | {} | {late} | {:.3} |",
-                    mine.len(),
-                    1e3 * worst
-                );
+                for &dimension in &dimensions {
+                    let mine: Vec<&Run> = runs
+                        .iter()
+                        .filter(|r| {
+                            &r.problem == problem
+                                && r.resolution == resolution
+                                && r.dimension == dimension
+                        })
+                        .collect();
+                    let worst = |f: fn(&Run) -> f64| {
+                        mine.iter().map(|r| f(r)).fold(f64::NEG_INFINITY, f64::max)
+                    };
+                    let count = |f: fn(&Run) -> f64| {
+                        mine.iter().filter(|r| f(r) > allowed(r.budget)).count()
+                    };
+                    let resolution = resolution.map_or("own".to_owned(), |v| v.to_string());
+                    println!(
+                        "| {problem} | {resolution} | {dimension} | {} | {} | {} | {:.3} | {:.3} |",
+                        mine.len(),
+                        count(|r| r.late),
+                        count(|r| r.first),
+                        1e3 * worst(|r| r.late),
+                        1e3 * worst(|r| r.first)
+                    );
+                }
             }
         }
     }
     let late: Vec<&Run> = runs.iter().filter(|r| r.late > allowed(r.budget)).collect();
+    let first = runs.iter().filter(|r| r.first > allowed(r.budget)).count();
     println!(
-        "\non time (within max(1 ms, 1 % of the budget)): {} of {} runs",
+        "\non time (within max(1 ms, 1 % of the budget)): {} of {} runs; {} of {} at the \
+         first attempt (a late run is measured again up to {confirm} times: late only if \
+         every attempt is)",
         runs.len() - late.len(),
+        runs.len(),
+        runs.len() - first,
         runs.len()
     );
     for r in runs.iter().filter(|r| !r.stalls.is_empty()) {
         let resolution = r
             .resolution
             .map_or(String::new(), |v| format!(" resolution {v}"));
+        let again = if r.attempts > 1 {
+            format!(
+                " at first, {:.3} ms at best of {} attempts",
+                1e3 * r.late,
+                r.attempts
+            )
+        } else {
+            String::new()
+        };
         println!(
-            "{}: {} on {}{resolution} R^{} batch {} budget {} s seed {}: {:.3} ms late",
+            "{}: {} on {}{resolution} R^{} batch {} budget {} s seed {}: {:.3} ms late{again}",
             if r.late > allowed(r.budget) {
                 "LATE"
+            } else if r.first > allowed(r.budget) {
+                "late once"
             } else {
                 "over 1 ms"
             },
@@ -238,12 +275,38 @@ fn main() {
             r.batch,
             r.budget,
             r.seed,
-            1e3 * r.late
+            1e3 * r.first
         );
         print!("{}", r.stalls);
     }
     if !late.is_empty() {
         std::process::exit(1);
+    }
+}
+
+/// Builds `configuration` for `problem` and solves until `budget` seconds after the clock was
+/// taken (construction counts against the budget, as in the harness): solved, how late
+/// `solve` returned (taken before the planner is dropped: freeing a large graph is the
+/// caller's time, not the planner's), and the poll gaps.
+fn measure(
+    configuration: Configuration,
+    problem: &problems::Problem,
+    parameters: &Parameters,
+    budget: f64,
+    trace: bool,
+) -> (bool, f64, Gaps) {
+    let started = Instant::now();
+    let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
+    match build_planner(configuration, problem, parameters) {
+        Ok(mut planner) => {
+            let outcome = planner.solve(&gaps);
+            let late = started.elapsed().as_secs_f64() - budget;
+            (outcome.is_ok_and(|o| o.is_solved()), late, gaps)
+        }
+        Err(e) => {
+            eprintln!("{}: {e}", configuration.name());
+            std::process::exit(1);
+        }
     }
 }
 

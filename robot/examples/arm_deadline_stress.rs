@@ -22,7 +22,8 @@
 //! Options: `--scenes box,cage` (folder names without `_panda`), `--problem I` (1-based),
 //! `--steps default,0.25,0.5,1` (radians), `--certification on,off`, `--budgets 0.01,0.1`,
 //! `--seeds N`, `--batches 100,1000` (default: each planner's own), `--planners mit-star,…`,
-//! `--trace`.
+//! `--confirm K` (measure a late run again up to `K` times; it counts as late only if every
+//! attempt is: a stall of the planner's own comes back, a machine's rarely does), `--trace`.
 
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
@@ -54,7 +55,11 @@ struct Run {
     batch: Option<usize>,
     budget: f64,
     seed: u64,
+    /// The least lateness of its attempts (see `--confirm`).
     late: f64,
+    /// The lateness of its first attempt.
+    first: f64,
+    attempts: u32,
     solved: bool,
     stalls: String,
 }
@@ -69,6 +74,7 @@ fn main() {
     let mut batches: Vec<Option<usize>> = vec![None];
     let mut configurations = Configuration::ALL.to_vec();
     let mut trace = false;
+    let mut confirm = 0_u32;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         if arg == "--trace" {
@@ -90,6 +96,7 @@ fn main() {
             }
             "--budgets" => budgets = list(&value),
             "--seeds" => seeds = value.parse().unwrap_or(1).max(1),
+            "--confirm" => confirm = value.parse().unwrap_or(0),
             "--batches" => batches = list(&value).into_iter().map(Some).collect(),
             "--planners" => {
                 configurations = value
@@ -101,7 +108,7 @@ fn main() {
                 eprintln!(
                     "unknown option {other}; options: --scenes box,cage --problem 1 \
                      --steps default,0.25,0.5,1 --certification on,off --budgets 0.01,0.1 \
-                     --seeds N --batches 100 --planners mit-star,rrt-connect --trace"
+                     --seeds N --confirm K --batches 100 --planners mit-star,rrt-connect --trace"
                 );
                 std::process::exit(2);
             }
@@ -148,26 +155,26 @@ fn main() {
                                 if let Some(batch) = batch {
                                     parameters.batch_size = batch;
                                 }
-                                let started = Instant::now();
-                                let gaps =
-                                    Gaps::new(started, Duration::from_secs_f64(budget), trace);
-                                let (solved, late) =
-                                    match build_planner(configuration, &problem, &parameters) {
-                                        Ok(mut planner) => {
-                                            let outcome = planner.solve(&gaps);
-                                            let late = started.elapsed().as_secs_f64() - budget;
-                                            (outcome.is_ok_and(|o| o.is_solved()), late)
-                                        }
-                                        Err(e) => {
-                                            eprintln!("{}: {e}", configuration.name());
-                                            std::process::exit(1);
-                                        }
-                                    };
+                                let (solved, mut late, gaps) =
+                                    measure(configuration, &problem, &parameters, budget, trace);
                                 let stalls = if late > allowed(budget) || (trace && late > 0.001) {
                                     gaps.report(2)
                                 } else {
                                     String::new()
                                 };
+                                let first = late;
+                                let mut attempts = 1;
+                                while late > allowed(budget) && attempts <= confirm {
+                                    attempts += 1;
+                                    let again = measure(
+                                        configuration,
+                                        &problem,
+                                        &parameters,
+                                        budget,
+                                        false,
+                                    );
+                                    late = late.min(again.1);
+                                }
                                 runs.push(Run {
                                     scene: scene.clone(),
                                     step,
@@ -177,6 +184,8 @@ fn main() {
                                     budget,
                                     seed,
                                     late,
+                                    first,
+                                    attempts,
                                     solved,
                                     stalls,
                                 });
@@ -191,7 +200,7 @@ fn main() {
         &runs,
         &configurations,
         &budgets,
-        clock.elapsed().as_secs_f64(),
+        (clock.elapsed().as_secs_f64(), confirm),
     );
     if runs.iter().any(|r| r.late > allowed(r.budget)) {
         std::process::exit(1);
@@ -199,7 +208,12 @@ fn main() {
 }
 
 /// Prints the tables and the late runs.
-fn report(runs: &[Run], configurations: &[Configuration], budgets: &[f64], seconds: f64) {
+fn report(
+    runs: &[Run],
+    configurations: &[Configuration],
+    budgets: &[f64],
+    (seconds, confirm): (f64, u32),
+) {
     println!(
         "## arm deadline stress (Panda, MotionBenchMaker problem scenes): {} runs in {seconds:.1} s\n",
         runs.len()
@@ -223,11 +237,15 @@ fn report(runs: &[Run], configurations: &[Configuration], budgets: &[f64], secon
             );
         }
         let late = mine.iter().filter(|r| r.late > allowed(r.budget)).count();
+        let first = mine.iter().filter(|r| r.first > allowed(r.budget)).count();
         let solved = mine.iter().filter(|r| r.solved).count();
-        println!(" {late} of {} | {solved} |", mine.len());
+        println!(" {late} of {} ({first} at first) | {solved} |", mine.len());
     }
-    println!("\n| scene | step (rad) | certification | runs | late runs | worst overshoot (ms) |");
-    println!("|---|---|---|---|---|---|");
+    println!(
+        "\n| scene | step (rad) | certification | runs | late runs | late at first | worst \
+         overshoot (ms) | worst at first (ms) |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
     let mut groups: Vec<(&str, Option<f64>, bool)> = Vec::new();
     for r in runs {
         let key = (r.scene.as_str(), r.step, r.certified);
@@ -241,25 +259,48 @@ fn report(runs: &[Run], configurations: &[Configuration], budgets: &[f64], secon
             .filter(|r| r.scene == scene && r.step == step && r.certified == certified)
             .collect();
         let late = mine.iter().filter(|r| r.late > allowed(r.budget)).count();
+        let first = mine.iter().filter(|r| r.first > allowed(r.budget)).count();
+        let worst_first = mine
+            .iter()
+            .map(|r| r.first)
+            .fold(f64::NEG_INFINITY, f64::max);
         println!(
-            "| {scene} | {} | {} | {} | {late} | {:.3} |",
+            "| {scene} | {} | {} | {} | {late} | {first} | {:.3} | {:.3} |",
             step.map_or("default".to_owned(), |s| s.to_string()),
             if certified { "on" } else { "off" },
             mine.len(),
-            1e3 * worst(mine.iter().copied())
+            1e3 * worst(mine.iter().copied()),
+            1e3 * worst_first
         );
     }
     let late = runs.iter().filter(|r| r.late > allowed(r.budget)).count();
+    let first = runs.iter().filter(|r| r.first > allowed(r.budget)).count();
     println!(
-        "\non time (within max(1 ms, 1 % of the budget)): {} of {} runs",
+        "\non time (within max(1 ms, 1 % of the budget)): {} of {} runs; {} of {} at the \
+         first attempt (a late run is measured again up to {confirm} times: late only if \
+         every attempt is)",
         runs.len() - late,
+        runs.len(),
+        runs.len() - first,
         runs.len()
     );
     for r in runs.iter().filter(|r| !r.stalls.is_empty()) {
+        let again = if r.attempts > 1 {
+            format!(
+                " at first, {:.3} ms at best of {} attempts",
+                1e3 * r.late,
+                r.attempts
+            )
+        } else {
+            String::new()
+        };
         println!(
-            "{}: {} on {} step {} certification {} batch {} budget {} s seed {}: {:.3} ms late",
+            "{}: {} on {} step {} certification {} batch {} budget {} s seed {}: {:.3} ms \
+             late{again}",
             if r.late > allowed(r.budget) {
                 "LATE"
+            } else if r.first > allowed(r.budget) {
+                "late once"
             } else {
                 "over 1 ms"
             },
@@ -270,9 +311,34 @@ fn report(runs: &[Run], configurations: &[Configuration], budgets: &[f64], secon
             r.batch.map_or("default".to_owned(), |b| b.to_string()),
             r.budget,
             r.seed,
-            1e3 * r.late
+            1e3 * r.first
         );
         print!("{}", r.stalls);
+    }
+}
+
+/// Builds `configuration` for `problem` and solves until `budget` seconds after the clock was
+/// taken (construction counts against the budget): solved, how late `solve` returned (before
+/// the planner is dropped), and the poll gaps.
+fn measure(
+    configuration: Configuration,
+    problem: &ArmProblem,
+    parameters: &Parameters,
+    budget: f64,
+    trace: bool,
+) -> (bool, f64, Gaps) {
+    let started = Instant::now();
+    let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
+    match build_planner(configuration, problem, parameters) {
+        Ok(mut planner) => {
+            let outcome = planner.solve(&gaps);
+            let late = started.elapsed().as_secs_f64() - budget;
+            (outcome.is_ok_and(|o| o.is_solved()), late, gaps)
+        }
+        Err(e) => {
+            eprintln!("{}: {e}", configuration.name());
+            std::process::exit(1);
+        }
     }
 }
 
