@@ -401,7 +401,7 @@ fn a_run_recorded_twice_is_refused_by_readers_and_healed_by_the_next_bench() {
             folder.display()
         ),
         "`runs.jsonl` 9 lines (8 distinct runs), `runs.csv` 9 rows, `benchmark.db` 8 runs".into(),
-        key.clone(),
+        key,
         "runs.csv` has".into(),
         format!(
             "mit-star bench {}/experiment.toml --output",

@@ -38,7 +38,7 @@ fn main() {
     let count: usize = args
         .next()
         .map_or(20, |a| a.parse().expect("a problem count"));
-    let repeats = 5;
+    let repeats: u32 = 5;
     println!(
         "| scene | edges | continuous: configurations | grid/4: points | continuous ns/edge | grid/4 ns/edge | ratio |"
     );
@@ -88,7 +88,7 @@ fn main() {
                 configurations += progress.evaluations();
             }
         }
-        let continuous = started.elapsed().as_secs_f64() / repeats as f64;
+        let continuous = started.elapsed().as_secs_f64() / f64::from(repeats);
         let started = Instant::now();
         let mut batch = Vec::new();
         for _ in 0..repeats {
@@ -117,7 +117,7 @@ fn main() {
                 std::hint::black_box(invalid);
             }
         }
-        let grid = started.elapsed().as_secs_f64() / repeats as f64;
+        let grid = started.elapsed().as_secs_f64() / f64::from(repeats);
         let per = |s: f64| s * 1e9 / edges.len().max(1) as f64;
         all_c += continuous;
         all_g += grid;

@@ -42,16 +42,16 @@ pub(crate) struct Shared {
     pub(crate) local: LocalSweep,
 }
 
+/// Writes each link's growth for a batch from its link poses and bounding centres.
+pub(crate) type PlaceGrowth<'a> = &'a dyn Fn(&[Pose8], &[Point8], &mut [f32x8]);
+
 /// How much the spheres of each link are grown in a batch: fixed, or computed from the
 /// batch's link poses and bounding centres (certification's local sweep bound).
 pub(crate) enum Growth<'a> {
     /// The same growth whatever the poses.
     Fixed(&'a [f32x8]),
     /// Written into the buffer by the function once the batch's links are placed.
-    Placed(
-        &'a mut [f32x8],
-        &'a dyn Fn(&[Pose8], &[Point8], &mut [f32x8]),
-    ),
+    Placed(&'a mut [f32x8], PlaceGrowth<'a>),
 }
 
 /// Per-clone scratch, reused by every check.

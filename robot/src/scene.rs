@@ -218,7 +218,7 @@ impl Scene {
             scene.add_object(object, &format!("world.collision_objects[{o}]"), &errors)?;
         }
         if let Some(acm) = file.allowed_collision_matrix {
-            scene.allowed = allowed_pairs(acm, &errors)?;
+            scene.allowed = allowed_pairs(&acm, &errors)?;
         }
         Ok(scene)
     }
@@ -290,7 +290,7 @@ impl Scene {
 /// The pairs an allowed-collision matrix allows, once a matrix that is square, symmetric and
 /// names each link once.
 fn allowed_pairs(
-    acm: AcmMessage,
+    acm: &AcmMessage,
     errors: &Errors<'_>,
 ) -> Result<Vec<(String, String)>, SceneError> {
     let names = &acm.entry_names;

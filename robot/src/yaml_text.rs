@@ -97,7 +97,7 @@ mod tests {
         let mut bomb = String::from("a: &a [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n");
         for level in 1..12 {
             let alias = format!("*{}", (b'a' + level - 1) as char);
-            let list = vec![alias.as_str(); 10].join(", ");
+            let list = [alias.as_str(); 10].join(", ");
             bomb += &format!("{0}: &{0} [{1}]\n", (b'a' + level) as char, list);
         }
         bomb += "values: [1]\n";

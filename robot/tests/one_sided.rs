@@ -58,7 +58,7 @@ fn near(q: &[f64], sphere: usize, kind: u8, (yaw, pitch): (f64, f64), gap: f64) 
         ),
     };
     let distance = |obstacle: &Obstacle| {
-        let reference = ParryChecker::new(&robot, &Scene::new(vec![obstacle.clone()]));
+        let reference = ParryChecker::new(&robot, &Scene::new(vec![*obstacle]));
         let mut gaps = vec![0.0; centers.len()];
         let mut pairs = vec![0.0; reference.sphere_pairs().len()];
         reference.gaps(q, &mut gaps, &mut pairs);

@@ -40,7 +40,7 @@ pub(crate) fn reference_hit(
 /// (returned): no end touches it, and grids of 7 or more pieces walk past it.
 pub(crate) fn tab_scene(robot: &RobotModel) -> (Scene, [f64; 7], [f64; 7]) {
     // The sphere farthest from the first joint's axis, at the home configuration.
-    let fk = robot::Kinematics::new(&robot);
+    let fk = robot::Kinematics::new(robot);
     let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
     let mut centers = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
     fk.sphere_centers_f64(&HOME, &mut links, &mut centers);
