@@ -181,30 +181,12 @@ fn main() {
             };
             tally.solved += 1;
             let path: Vec<&[f64]> = solution.path.iter().collect();
-            let mut verdict = Ok(());
-            for (i, state) in path.iter().enumerate() {
-                if !audit.is_valid(state) {
-                    verdict = Err(format!("state {i} is invalid"));
-                    break;
-                }
-            }
-            for pair in path.windows(2) {
-                if verdict.is_err() {
-                    break;
-                }
-                match audit.audit(pair[0], pair[1], 2_000_000) {
-                    AuditVerdict::Clear { .. } => {}
-                    AuditVerdict::Collides { contact, .. } => verdict = Err(contact),
-                    AuditVerdict::Undecided { .. } => {
-                        verdict = Err("undecided".into());
+            match first_failure(&audit, &path) {
+                None => tally.clear += 1,
+                Some((undecided, why)) => {
+                    if undecided {
                         tally.undecided += 1;
-                    }
-                }
-            }
-            match verdict {
-                Ok(()) => tally.clear += 1,
-                Err(why) => {
-                    if why != "undecided" {
+                    } else {
                         tally.collides += 1;
                     }
                     if certification > 1 {
@@ -242,4 +224,18 @@ fn main() {
         }
         std::process::exit(1);
     }
+}
+
+/// Why the audit does not clear `path`, if it does not: `(undecided, why)` for its first
+/// invalid state, colliding motion, or motion the budget left undecided.
+fn first_failure(audit: &MotionAudit, path: &[&[f64]]) -> Option<(bool, String)> {
+    if let Some(i) = path.iter().position(|state| !audit.is_valid(state)) {
+        return Some((false, format!("state {i} is invalid")));
+    }
+    path.windows(2)
+        .find_map(|pair| match audit.audit(pair[0], pair[1], 2_000_000) {
+            AuditVerdict::Clear { .. } => None,
+            AuditVerdict::Collides { contact, .. } => Some((false, contact)),
+            AuditVerdict::Undecided { .. } => Some((true, "undecided".into())),
+        })
 }

@@ -5,23 +5,20 @@
 //! parry finds first, whenever no configuration of the run lies within the stated tolerance
 //! of touching (see `parry_agreement.rs`).
 
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 use proptest::prelude::*;
-use robot::{ArmChecker, Obstacle, ParryChecker, RobotModel, Scene, Shape};
+use robot::{ArmChecker, Obstacle, ParryChecker, Scene, Shape};
 use spaces::StateSpace;
 use validity::StateValidity;
 
 const TOLERANCE: f64 = 1e-4;
 
-fn panda() -> RobotModel {
-    RobotModel::from_urdf_str(include_str!("../data/panda/panda_spherized.urdf"))
-        .unwrap()
-        .with_srdf_str(include_str!("../data/panda/panda.srdf"))
-        .unwrap()
-}
+#[path = "support/arm_cases.rs"]
+mod arm_cases;
+use arm_cases::panda;
 
 fn obstacle() -> impl Strategy<Value = Obstacle> {
-    let shape = prop_oneof![
+    arm_cases::posed(prop_oneof![
         (0.01..0.4f64, 0.01..0.4f64, 0.01..0.4f64).prop_map(|(x, y, z)| Shape::Cuboid {
             half_extents: DVec3::new(x, y, z)
         }),
@@ -30,19 +27,7 @@ fn obstacle() -> impl Strategy<Value = Obstacle> {
             radius: r
         }),
         (0.01..0.3f64).prop_map(|r| Shape::Sphere { radius: r }),
-    ];
-    (
-        shape,
-        (-0.9..0.9f64, -0.9..0.9f64, -0.2..1.3f64),
-        (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64, 0.1..1.0f64),
-    )
-        .prop_map(|(s, (x, y, z), (a, b, c, d))| {
-            Obstacle::new(
-                s,
-                DVec3::new(x, y, z),
-                DQuat::from_xyzw(a, b, c, d).normalize(),
-            )
-        })
+    ])
 }
 
 /// Configurations as one flat run; a few stray 5 % beyond the limits.

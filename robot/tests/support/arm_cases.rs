@@ -69,8 +69,9 @@ pub(crate) fn tab_scene(robot: &RobotModel) -> (Scene, [f64; 7], [f64; 7]) {
     (scene, a, b)
 }
 
+/// Obstacles of thin plates, cylinders and balls, anywhere near the Panda.
 pub(crate) fn obstacle() -> impl Strategy<Value = Obstacle> {
-    let shape = prop_oneof![
+    posed(prop_oneof![
         (0.0005..0.3f64, 0.01..0.3f64, 0.01..0.3f64).prop_map(|(x, y, z)| Shape::Cuboid {
             half_extents: DVec3::new(x, y, z)
         }),
@@ -79,7 +80,11 @@ pub(crate) fn obstacle() -> impl Strategy<Value = Obstacle> {
             radius: r
         }),
         (0.005..0.2f64).prop_map(|r| Shape::Sphere { radius: r }),
-    ];
+    ])
+}
+
+/// Obstacles of the shapes `shape` draws, placed and turned at random within the Panda's reach.
+pub(crate) fn posed(shape: impl Strategy<Value = Shape>) -> impl Strategy<Value = Obstacle> {
     (
         shape,
         (-0.9..0.9f64, -0.9..0.9f64, -0.2..1.3f64),
