@@ -33,13 +33,13 @@
 //! points and the exact box certification decides most of them. Without it, each problem's
 //! own resolution. Arm problems have a sibling matrix, `robot/examples/arm_deadline_stress.rs`.
 
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
-use mit_star::{Configuration, Parameters, build_planner};
+use mit_star::{Configuration, Parameters};
 
 #[path = "support/gaps.rs"]
 mod gaps;
-use gaps::Gaps;
+use gaps::measure;
 
 /// One measured run.
 struct Run {
@@ -281,32 +281,6 @@ fn main() {
     }
     if !late.is_empty() {
         std::process::exit(1);
-    }
-}
-
-/// Builds `configuration` for `problem` and solves until `budget` seconds after the clock was
-/// taken (construction counts against the budget, as in the harness): solved, how late
-/// `solve` returned (taken before the planner is dropped: freeing a large graph is the
-/// caller's time, not the planner's), and the poll gaps.
-fn measure(
-    configuration: Configuration,
-    problem: &problems::Problem,
-    parameters: &Parameters,
-    budget: f64,
-    trace: bool,
-) -> (bool, f64, Gaps) {
-    let started = Instant::now();
-    let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
-    match build_planner(configuration, problem, parameters) {
-        Ok(mut planner) => {
-            let outcome = planner.solve(&gaps);
-            let late = started.elapsed().as_secs_f64() - budget;
-            (outcome.is_ok_and(|o| o.is_solved()), late, gaps)
-        }
-        Err(e) => {
-            eprintln!("{}: {e}", configuration.name());
-            std::process::exit(1);
-        }
     }
 }
 

@@ -26,16 +26,16 @@
 //! attempt is: a stall of the planner's own comes back, a machine's rarely does), `--trace`.
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
-use mit_star::{Configuration, Parameters, build_planner};
+use mit_star::{Configuration, Parameters};
 use problems::PlanningProblem;
 use robot::ArmProblem;
 use spaces::StateSpace;
 
 #[path = "../../mit-star/examples/support/gaps.rs"]
 mod gaps;
-use gaps::Gaps;
+use gaps::measure;
 
 /// The scenes shipped with the crate's tests.
 const SCENES: [&str; 5] = [
@@ -314,31 +314,6 @@ fn report(
             1e3 * r.first
         );
         print!("{}", r.stalls);
-    }
-}
-
-/// Builds `configuration` for `problem` and solves until `budget` seconds after the clock was
-/// taken (construction counts against the budget): solved, how late `solve` returned (before
-/// the planner is dropped), and the poll gaps.
-fn measure(
-    configuration: Configuration,
-    problem: &ArmProblem,
-    parameters: &Parameters,
-    budget: f64,
-    trace: bool,
-) -> (bool, f64, Gaps) {
-    let started = Instant::now();
-    let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
-    match build_planner(configuration, problem, parameters) {
-        Ok(mut planner) => {
-            let outcome = planner.solve(&gaps);
-            let late = started.elapsed().as_secs_f64() - budget;
-            (outcome.is_ok_and(|o| o.is_solved()), late, gaps)
-        }
-        Err(e) => {
-            eprintln!("{}: {e}", configuration.name());
-            std::process::exit(1);
-        }
     }
 }
 

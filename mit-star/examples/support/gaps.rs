@@ -6,7 +6,7 @@ use std::backtrace::Backtrace;
 use std::cell::RefCell;
 use std::time::{Duration, Instant};
 
-use mit_star::{Progress, Termination};
+use mit_star::{Configuration, Parameters, Progress, Termination, build_planner};
 
 /// Gaps shorter than this after the deadline are not recorded (except the one that crosses it).
 const LONG_GAP: Duration = Duration::from_micros(300);
@@ -109,5 +109,31 @@ impl Termination for Gaps {
         // Taken after the capture above, so the gap to the next poll excludes it.
         *last = (Instant::now(), traced.then(Backtrace::force_capture));
         now >= self.deadline
+    }
+}
+
+/// Builds `configuration` for `problem` and solves until `budget` seconds after the clock was
+/// taken (construction counts against the budget): solved, how late `solve` returned (before
+/// the planner is dropped), and the poll gaps. Exits on a build error.
+#[allow(dead_code)] // `poll_gaps` includes this file and measures its own way.
+pub(crate) fn measure<P: problems::PlanningProblem>(
+    configuration: Configuration,
+    problem: &P,
+    parameters: &Parameters,
+    budget: f64,
+    trace: bool,
+) -> (bool, f64, Gaps) {
+    let started = Instant::now();
+    let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
+    match build_planner(configuration, problem, parameters) {
+        Ok(mut planner) => {
+            let outcome = planner.solve(&gaps);
+            let late = started.elapsed().as_secs_f64() - budget;
+            (outcome.is_ok_and(|o| o.is_solved()), late, gaps)
+        }
+        Err(e) => {
+            eprintln!("{}: {e}", configuration.name());
+            std::process::exit(1);
+        }
     }
 }
