@@ -29,8 +29,13 @@ pub(crate) fn reference_hit(
     let mut q = vec![0.0; a.len()];
     (0..=pieces).find_map(|k| {
         let t = k as f64 / pieces as f64;
-        for (x, (p, r)) in q.iter_mut().zip(a.iter().zip(b)) {
-            *x = p + (r - p) * t;
+        if k == pieces {
+            // `a + (b - a) · 1` can round past `b`, and past a joint limit `b` sits on.
+            q.copy_from_slice(b);
+        } else {
+            for (x, (p, r)) in q.iter_mut().zip(a.iter().zip(b)) {
+                *x = p + (r - p) * t;
+            }
         }
         (!reference.is_valid_with_margin(&q, grow)).then_some(t)
     })
