@@ -80,6 +80,7 @@ impl Problem {
             coarse_step_allowed: false,
         };
         problem.validate()?;
+        problem.world.build_indices();
         Ok(problem)
     }
 

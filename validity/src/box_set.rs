@@ -5,6 +5,7 @@
 use std::sync::{Arc, OnceLock};
 
 use crate::box_tree::BoxTree;
+use crate::slab_index::SlabIndex;
 use crate::world::{AxisBox, TREE_THRESHOLD};
 
 /// Boxes, their rows (`[lo, hi]` per dimension, box after box, widened by PDT's epsilon) and
@@ -21,7 +22,12 @@ pub(crate) struct BoxSet(Arc<Boxes>);
 struct Boxes {
     boxes: Vec<AxisBox>,
     rows: Vec<f64>,
+    /// The smallest full side of any box, kept as boxes are added: a planner's construction
+    /// asks for it (is the step finer than every obstacle?), and a scan of 10⁵ boxes in 32
+    /// dimensions took 3–6 ms of a 1 ms budget.
+    thinnest: Option<f64>,
     tree: OnceLock<BoxTree>,
+    slabs: OnceLock<Option<SlabIndex>>,
 }
 
 impl BoxSet {
@@ -36,6 +42,11 @@ impl BoxSet {
         &self.0.rows
     }
 
+    /// The smallest full side of any box (`None` for no boxes, or boxes of no dimension).
+    pub(crate) fn thinnest(&self) -> Option<f64> {
+        self.0.thinnest
+    }
+
     /// Appends a box (already validated); the hierarchy is rebuilt on its next use.
     pub(crate) fn push(&mut self, b: AxisBox) {
         if Arc::get_mut(&mut self.0).is_none() {
@@ -43,7 +54,9 @@ impl BoxSet {
             self.0 = Arc::new(Boxes {
                 boxes: self.0.boxes.clone(),
                 rows: self.0.rows.clone(),
+                thinnest: self.0.thinnest,
                 tree: OnceLock::new(),
+                slabs: OnceLock::new(),
             });
         }
         let inner = Arc::make_mut(&mut self.0);
@@ -52,8 +65,14 @@ impl BoxSet {
             inner.rows.push(c - half);
             inner.rows.push(c + half);
         }
+        let side = b.widths.iter().copied().reduce(f64::min);
+        inner.thinnest = match (inner.thinnest, side) {
+            (Some(t), Some(s)) => Some(t.min(s)),
+            (t, s) => t.or(s),
+        };
         inner.boxes.push(b);
         inner.tree = OnceLock::new();
+        inner.slabs = OnceLock::new();
     }
 
     /// The hierarchy over the rows in `dimension` dimensions, built now if not yet; `None` for
@@ -69,6 +88,29 @@ impl BoxSet {
                 .tree
                 .get_or_init(|| BoxTree::build(&self.0.rows, dimension)),
         )
+    }
+}
+
+impl BoxSet {
+    /// Builds now the slab index or the hierarchy that checks in `dimension` dimensions use.
+    pub(crate) fn build_indices(&self, dimension: usize) {
+        if self.slabs(dimension).is_none() {
+            self.hierarchy(dimension);
+        }
+    }
+
+    /// The slab index over the rows in `dimension` dimensions, built now if not yet, for sets
+    /// whose points it checks better than the hierarchy ([`SlabIndex::serves`]); `None` for
+    /// the others.
+    #[inline]
+    pub(crate) fn slabs(&self, dimension: usize) -> Option<&SlabIndex> {
+        if dimension == 0 || !SlabIndex::serves(self.0.boxes.len(), dimension) {
+            return None;
+        }
+        self.0
+            .slabs
+            .get_or_init(|| SlabIndex::build(&self.0.rows, dimension))
+            .as_ref()
     }
 }
 
@@ -105,6 +147,11 @@ mod tests {
         assert!(!set.hierarchy(2).unwrap().contains(&[0.001, 0.4]));
         assert_eq!((set.boxes().len(), copy.boxes().len()), (count, count + 1));
         assert_eq!(set.rows().len(), 4 * count);
+        assert_eq!(
+            (set.thinnest(), copy.thinnest()),
+            (Some(0.001), Some(0.001))
+        );
+        assert_eq!(BoxSet::default().thinnest(), None);
         assert!(std::ptr::eq(set.hierarchy(2).unwrap(), built));
     }
 }

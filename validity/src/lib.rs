@@ -65,6 +65,7 @@ mod motion_progress;
 mod segment;
 mod segment_certification;
 mod segment_validation;
+mod slab_index;
 mod state_validity;
 mod world;
 mod world_segment;

@@ -175,6 +175,17 @@ impl World {
         Ok(self)
     }
 
+    /// Builds now the search structures that large worlds' checks use (a hierarchy over the
+    /// boxes, and a slab index in many dimensions), which are otherwise built at the first
+    /// check after a change: 0.2 s for 10⁵ boxes in R^32, which should not fall in the budget
+    /// of the first planner that checks. Clones made afterwards share them.
+    /// `problems::Problem` calls it when a problem is made.
+    pub fn build_indices(&self) {
+        let n = self.lower.len();
+        self.obstacles.build_indices(n);
+        self.anti_obstacles.build_indices(n);
+    }
+
     /// Adds an obstacle in place. Errors as [`with_obstacle`](Self::with_obstacle).
     ///
     /// # Errors
@@ -264,26 +275,27 @@ impl World {
     /// The smallest full side of any obstacle or lattice cube (`None` without obstacles).
     pub fn thinnest_obstacle(&self) -> Option<f64> {
         let cubes = self.lattices.iter().filter(|l| l.count > 0).map(|l| l.side);
-        self.obstacles()
-            .iter()
-            .flat_map(|b| b.widths.iter().copied())
+        self.obstacles
+            .thinnest()
+            .into_iter()
             .chain(cubes)
             .reduce(f64::min)
     }
 
     /// The smallest full side of any anti-obstacle (`None` without anti-obstacles).
     pub fn thinnest_anti_obstacle(&self) -> Option<f64> {
-        self.anti_obstacles()
-            .iter()
-            .flat_map(|b| b.widths.iter().copied())
-            .reduce(f64::min)
+        self.anti_obstacles.thinnest()
     }
 }
 
-/// `true` if `state` lies in a box of `set`: the hierarchy above [`TREE_THRESHOLD`] boxes, a
-/// scan of the rows below.
+/// `true` if `state` lies in a box of `set`: the slab index where the hierarchy cannot prune
+/// (dimensions at least its depth), else the hierarchy above [`TREE_THRESHOLD`] boxes, else a
+/// scan of the rows.
 #[inline]
 fn in_boxes(set: &BoxSet, state: &[f64]) -> bool {
+    if let Some(slabs) = set.slabs(state.len()) {
+        return slabs.contains(set.rows(), state);
+    }
     match set.hierarchy(state.len()) {
         Some(tree) => tree.contains(state),
         None => in_any(set.rows(), state),

@@ -133,10 +133,13 @@ fn in_crossings(crossings: &[[f64; 2]], t: f64x4, lanes: [f64; 2]) -> f64x4 {
 }
 
 /// Appends to `kept` the rows of `set` (`[lo, hi]` per coordinate) that meet `reach` (same
-/// layout) along every coordinate: the hierarchy above [`TREE_THRESHOLD`](crate::TREE_THRESHOLD) boxes, a scan
-/// below. `false` if more than [`MOST_KEPT`] boxes meet it.
+/// layout) along every coordinate: the slab index where it serves, else the hierarchy above
+/// [`TREE_THRESHOLD`](crate::TREE_THRESHOLD) boxes, else a scan. `false` if more than [`MOST_KEPT`] boxes meet it.
 fn keep_meeting(set: &BoxSet, reach: &[f64], kept: &mut Vec<f64>) -> bool {
     let width = reach.len();
+    if let Some(slabs) = set.slabs(width / 2) {
+        return slabs.collect_meeting(set.rows(), reach, kept, MOST_KEPT);
+    }
     if let Some(tree) = set.hierarchy(width / 2) {
         return tree.collect_meeting(reach, kept, MOST_KEPT);
     }
