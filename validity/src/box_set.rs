@@ -100,16 +100,15 @@ impl BoxSet {
     }
 
     /// The slab index over the rows in `dimension` dimensions, built now if not yet, for sets
-    /// whose points it checks better than the hierarchy ([`SlabIndex::serves`]); `None` for
-    /// the others.
+    /// it checks better than the hierarchy ([`SlabIndex::serves`]); `None` for the others.
     #[inline]
     pub(crate) fn slabs(&self, dimension: usize) -> Option<&SlabIndex> {
-        if dimension == 0 || !SlabIndex::serves(self.0.boxes.len(), dimension) {
+        if dimension == 0 || self.0.rows.len() <= TREE_THRESHOLD * 2 * dimension {
             return None;
         }
         self.0
             .slabs
-            .get_or_init(|| SlabIndex::build(&self.0.rows, dimension))
+            .get_or_init(|| SlabIndex::if_it_serves(&self.0.rows, dimension))
             .as_ref()
     }
 }

@@ -94,20 +94,55 @@ impl SlabIndex {
         Some(index)
     }
 
-    /// `true` if point checks of `count` boxes in `dimension` dimensions should use the slabs:
-    /// when a hierarchy over them (`log₂(count / 8)` levels, 8 boxes per leaf) would cut each
-    /// coordinate fewer than 1.5 times on a path from its root. With 10⁵ boxes the hierarchy's
-    /// worst check is then 0.4 ms in R^12 and 2.2 ms in R^32, the slabs' 15–20 µs; below the
-    /// rule, with 10⁵ boxes in R^4 and R^8 the hierarchy is 3–6× faster on average and no
-    /// slower at its worst (with 10³ boxes in R^4 both take well under a microsecond).
+    /// `true` if checks of `count` boxes in `dimension` dimensions, whose sides span on
+    /// average `side` of the boxes' extent along their coordinate, should use the slabs rather
+    /// than a hierarchy: when the boxes are large (`side` ≥ 0.1) and a hierarchy over them
+    /// (`log₂(count / 8)` levels, 8 boxes per leaf) would cut each coordinate fewer than 1.5
+    /// times on a path from its root. Siblings' bounds then overlap along most coordinates and a
+    /// point near the middle enters most nodes: with 10⁵ such boxes the hierarchy's worst check
+    /// is 0.5 ms in R^12 and 2.2 ms in R^32, the slabs' 15–20 µs. Small boxes the hierarchy
+    /// separates in any dimension (10⁵ boxes of side 0.015 in R^16: 0.5 µs a check, the slabs
+    /// 5 µs), and with 10⁵ large boxes in R^4 or R^8 it is 3–7× faster on average (its worst
+    /// check about 0.1 ms).
     ///
-    /// Measured with `cargo test --release -p validity slab_index -- --ignored --nocapture`
-    /// (worlds of boxes covering about 30 % of the space, as the deadline stress's
-    /// `many-rectangles`; the mean over uniform points, and the worst of a free point among
-    /// many boxes, a start state's place): see the table that test prints.
-    pub(crate) fn serves(count: usize, dimension: usize) -> bool {
+    /// Measured with `cargo test --release -p validity --lib slab_index -- --ignored
+    /// --nocapture` (the mean over uniform points, and the worst of free points among many
+    /// boxes, a start state's place) and `cargo run --release -p validity --example
+    /// large_world`.
+    pub(crate) fn serves(count: usize, dimension: usize, side: f64) -> bool {
         let depth = (count as f64 / 8.0).log2();
-        dimension <= MAX_DIMENSION && count > 8 && 1.5 * dimension as f64 >= depth
+        (1..=MAX_DIMENSION).contains(&dimension)
+            && count > 8
+            && side >= 0.1
+            && 1.5 * dimension as f64 >= depth
+    }
+
+    /// The index over `rows` if it [serves](Self::serves) them better than a hierarchy.
+    pub(crate) fn if_it_serves(rows: &[f64], dimension: usize) -> Option<Self> {
+        let width = 2 * dimension;
+        let count = rows.len().checked_div(width)?;
+        if !Self::serves(count, dimension, 1.0) {
+            return None;
+        }
+        let mut extent = vec![(f64::INFINITY, f64::NEG_INFINITY); dimension];
+        let mut sides = vec![0.0; dimension];
+        for row in rows.chunks_exact(width) {
+            for (d, ((lo, hi), sum)) in extent.iter_mut().zip(&mut sides).enumerate() {
+                *lo = row[2 * d].min(*lo);
+                *hi = row[2 * d + 1].max(*hi);
+                *sum += row[2 * d + 1] - row[2 * d];
+            }
+        }
+        let side = extent
+            .iter()
+            .zip(&sides)
+            .map(|(&(lo, hi), &sum)| (sum / count as f64 / (hi - lo)).min(1.0))
+            .filter(|f| f.is_finite())
+            .sum::<f64>()
+            / dimension as f64;
+        Self::serves(count, dimension, side)
+            .then(|| Self::build(rows, dimension))
+            .flatten()
     }
 
     /// The slab of value `x` on coordinate `d`: monotone in `x`, clamped to the slabs.
@@ -273,7 +308,9 @@ mod tests {
                 .wrapping_add(1442695040888963407);
             (seed >> 11) as f64 / (1u64 << 53) as f64
         };
-        println!("| boxes | n | serves | hierarchy mean / worst (µs) | slabs mean / worst (µs) |");
+        println!(
+            "| boxes | n | slabs serve | hierarchy mean / worst (µs) | slabs mean / worst (µs) |"
+        );
         println!("|---|---|---|---|---|");
         for (count, n) in [(1000, 4), (1000, 8), (1000, 16), (100_000, 4), (100_000, 8)]
             .into_iter()
@@ -318,7 +355,7 @@ mod tests {
             let (sm, sw) = time(&|p| slabs.contains(&rows, p));
             println!(
                 "| {count} | {n} | {} | {tm:.2} / {tw:.1} | {sm:.2} / {sw:.1} |",
-                SlabIndex::serves(count, n)
+                SlabIndex::if_it_serves(&rows, n).is_some()
             );
         }
     }
