@@ -4,7 +4,7 @@
 //! Run: `cargo bench -p mit-star-benches --bench arm`. Reports, per configuration: forward
 //! kinematics plus the full collision check (scene and self) one configuration at a time, and
 //! in batches of eight lanes; and one full edge check of typical length, with and without
-//! batches. Figures are recorded in `docs/benchmarks.md`.
+//! batches. Figures are recorded in `docs/guide/src/reference/arm-planning.md`.
 
 use std::hint::black_box;
 use std::path::Path;

@@ -1,7 +1,7 @@
 //! Criterion benchmarks of the hot primitives, per problem and dimension.
 //!
 //! Run: `cargo bench -p mit-star-benches --bench primitives`. Figures are recorded in
-//! `docs/benchmarks.md`; compare ratios measured in one run, not absolute numbers across machines.
+//! `docs/guide/src/reference/hot-primitives.md`; compare ratios measured in one run, not absolute numbers across machines.
 
 use std::hint::black_box;
 use std::time::Duration;

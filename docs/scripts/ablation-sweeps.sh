@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The sweeps of docs/ablation.md: the ablation-study experiment (first solutions, 200 runs,
+# The sweeps of docs/guide/src/reference/ablation-study.md: the ablation-study experiment (first solutions, 200 runs,
 # GE R^2/R^4, DW R^4/R^8, FG R^4) with one parameter changed at a time, for the
 # configurations it affects. Results go to results/ablation-sweeps/<sweep>; summarise with
 #   python3 docs/scripts/ablation-summary.py results/ablation-sweeps/*

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes a 2-D problem file with many small random boxes, for the large-world figures in
-docs/benchmarks.md ("Construction in a large world"):
+docs/guide/src/reference/reliability.md ("Construction in a large world"):
 
     python3 docs/scripts/many-boxes.py 100000 big.toml
     mit-star plan --problem-file big.toml --time 0.001 --no-picture

@@ -1,7 +1,7 @@
 //! `rr_calibration`: how hard is a random-rectangles layout? For candidate box counts and side
 //! ranges it reports, over layouts 0–9, how often the straight line is blocked, whether each
 //! layout is solvable, and EIT*'s final cost over the straight line — the figures behind the
-//! cluttered variant's parameters (`docs/experiments.md`, "Random rectangles with teeth").
+//! cluttered variant's parameters (`docs/guide/src/reference/experiment-files.md`, "Random rectangles with teeth").
 //!
 //! ```text
 //! cargo run --release -p mit-star --example rr_calibration -- DIMENSION COUNT MIN_SIDE MAX_SIDE [BUDGET] [RUNS]

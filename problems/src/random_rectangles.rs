@@ -62,7 +62,7 @@ impl RandomRectangles {
     /// `(n, count, min_side, max_side)`: chosen so that the straight line from start to goal is
     /// blocked in at least 9 of the layouts 0–9, every layout is solvable, and EIT*'s final
     /// cost over the straight line comes near the paper's random-rectangles figures (the
-    /// measurements are in `docs/experiments.md`). `n = 2` is PDT's own layout (uncalibrated).
+    /// measurements are in `docs/guide/src/reference/experiment-files.md`). `n = 2` is PDT's own layout (uncalibrated).
     pub const CLUTTERED_CALIBRATION: [(usize, usize, f64, f64); 4] = [
         (2, 35, 0.1, 0.2),
         (4, 60, 0.2, 0.35),

@@ -118,7 +118,7 @@ impl ArmProblem {
     /// arm problems (the `samplers` crate's `NearTerminals` wrapper; a planner's
     /// `near_terminals` parameter overrides it). Grasps deep in shelf slots and cages are
     /// joined by few of the uniform samples in 7 dimensions; with this fraction MIT* solves
-    /// most of the MotionBenchMaker problems it missed (`docs/benchmarks.md`).
+    /// most of the MotionBenchMaker problems it missed (`docs/guide/src/reference/arm-planning.md`).
     pub const NEAR_TERMINALS: f64 = 0.15;
 
     /// The Panda sphere model shipped with this crate (VAMP's spherised URDF, 59 spheres),

@@ -106,7 +106,7 @@ impl<T> Estimated<T> {
     /// ([`wants_batch`](Sampler::wants_batch); `true` is the MIT* authors' code and spec §3.1
     /// step 1). The default, `false`, lets the estimate bound the batch the planner adds when
     /// its search of the current one is exhausted, as the paper's Alg. 1 reads (and as
-    /// `Parameters::eis_immediate_batch` defaults; `docs/ablation.md` has the evidence).
+    /// `Parameters::eis_immediate_batch` defaults; `docs/guide/src/reference/ablation-study.md` has the evidence).
     #[must_use]
     pub fn with_immediate_batch(mut self, immediate: bool) -> Self {
         self.immediate_batch = immediate;

@@ -76,7 +76,7 @@ impl<T> NearTerminals<T> {
     pub const DEFAULT_FRACTION: f64 = 0.15;
     /// Default smallest and largest `σ`, as fractions of the space's maximum extent (0.13 and
     /// 1.3 rad for the Panda). Chosen on the Panda problems MIT* failed without the wrapper
-    /// (`docs/benchmarks.md`): a smallest `σ` of 0.001–0.002 wasted draws at the terminals.
+    /// (`docs/guide/src/reference/arm-planning.md`): a smallest `σ` of 0.001–0.002 wasted draws at the terminals.
     pub const DEFAULT_SCALES: (f64, f64) = (0.01, 0.1);
 
     /// `inner` with states near `start` and `goals` in `space`, seeded with `seed` (its own
