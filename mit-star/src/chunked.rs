@@ -13,7 +13,7 @@ const CHUNK: usize = 1 << SHIFT;
 /// A `Vec` doubles its buffer as it grows and copies everything into the new one, page faults
 /// included, in one step no termination condition can interrupt: in a graph of tens of
 /// thousands of vertices that is milliseconds, the late runs of the deadline stress matrix
-/// (`docs/benchmarks.md`, "No unbounded unpolled work left"). Here a push costs at most one
+/// (`docs/guide/src/reference/reliability.md`, "Unpolled work at the start of a batch"). Here a push costs at most one
 /// chunk allocation (of at most 1024 items), and an index one more load than a `Vec`'s.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(crate) struct Chunked<T> {

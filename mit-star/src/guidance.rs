@@ -68,7 +68,7 @@ impl Guidance for EffortInformed {
 /// from the goals (OMPL's AIT* with `repair_reverse_search = false`). OMPL's default repairs
 /// only the branch below that edge, LPA*-style; here that is the parameter
 /// [`repair_reverse_search`](crate::Parameters), off by default because it led our AIT* to
-/// check more edges (`docs/faithfulness.md` §6).
+/// check more edges (`docs/guide/src/reference/faithfulness-map.md` §6).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct CostInformed;
 

@@ -15,7 +15,7 @@ pub(crate) const LEAF: u32 = u32::MAX;
 /// descent visits nearly every leaf and pays for the bookkeeping on top. Measured with
 /// `anytime_rate` (MIT*, same runs both ways, this constant set to 2 and to 100): the scan costs
 /// 4–8 % more time in R^8, the same in R^10, and saves 10–12 % in R^12 and 10–20 % in R^16
-/// (`docs/benchmarks.md`, "The anytime phase").
+/// (`docs/guide/src/reference/hot-primitives.md`, "The anytime phase").
 const SCAN_DIMENSION: usize = 12;
 
 /// Points between two polls of a scanning query.

@@ -48,7 +48,7 @@
 //! | [`PlannerError`], [`BuildError`], [`Endpoint`] | what is wrong with a query or parameters |
 //!
 //! The mapping of every equation and algorithm line of the paper to this code is in
-//! `docs/faithfulness.md`.
+//! `docs/guide/src/reference/faithfulness-map.md`.
 
 #![forbid(unsafe_code)]
 

@@ -58,7 +58,7 @@ pub struct Parameters {
     /// When the forward search finds an edge of the reverse tree invalid, repair the reverse
     /// search in place (`true`: LPA*-style, only the branch below the edge is searched again,
     /// OMPL's AIT* default) or restart it from the goals (`false`, the default: EIT*'s rule, and
-    /// the faster one for our AIT*, `docs/faithfulness.md` §6). Without a reverse search (BIT*)
+    /// the faster one for our AIT*, `docs/guide/src/reference/faithfulness-map.md` §6). Without a reverse search (BIT*)
     /// there is nothing to repair. Not in the paper.
     pub repair_reverse_search: bool,
     /// Standard deviation `δ` of the adaptive sampler, as a fraction of the maximum extent.
@@ -79,7 +79,7 @@ pub struct Parameters {
     pub eis_batch_size: Option<usize>,
     /// A new estimated informed set asks for a batch drawn in it at once (`true`: the MIT*
     /// authors' code, spec §3.1 step 1), or bounds the next batch the search asks for
-    /// (`false`, the default: the paper's Alg. 1; `docs/ablation.md` has the evidence).
+    /// (`false`, the default: the paper's Alg. 1; `docs/guide/src/reference/ablation-study.md` has the evidence).
     pub eis_immediate_batch: bool,
     /// Certify every edge on a grid this many times finer than the check step before it joins
     /// the forward tree (1: no certification; `None`: the problem's

@@ -16,7 +16,7 @@ struct Block {
 ///
 /// The buffer holds up to a quarter of the indexed points, megabytes in high dimensions. As one
 /// `Vec` it doubled as it grew, copying itself in one step no termination condition can
-/// interrupt (milliseconds past a deadline in `R^32`; `docs/benchmarks.md`). Blocks never
+/// interrupt (milliseconds past a deadline in `R^32`; `docs/guide/src/reference/reliability.md`). Blocks never
 /// move; emptied, they are kept for the points that follow.
 #[derive(Debug, Clone)]
 pub(crate) struct PendingPoints {
