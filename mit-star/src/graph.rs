@@ -9,9 +9,9 @@ use petgraph::stable_graph::StableGraph;
 use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 
 use crate::Neighbours;
-use crate::chunked::Chunked;
 use crate::edge_hasher::{BuildEdgeHasher, edge_key};
-use crate::kd_tree::Alive;
+use crate::nearest::Alive;
+use crate::nearest::Chunked;
 use crate::neighbour_cache::MERGE_LIMIT;
 use crate::recent_states::RecentStates;
 use crate::state_chunks::StateChunks;

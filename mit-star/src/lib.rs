@@ -55,7 +55,6 @@
 mod aliases;
 mod batch;
 mod builder;
-mod chunked;
 mod components;
 mod configuration;
 mod counters;
@@ -68,14 +67,10 @@ mod forward_tree;
 mod graph;
 mod guidance;
 mod informed_rrt_star;
-mod kd_tree;
-mod kd_tree_build;
-mod nearest_neighbors;
+mod nearest;
 mod neighbour_cache;
-mod neighbours;
 mod observer;
 mod parameters;
-mod pending_points;
 mod planner;
 mod recent_states;
 mod reverse_queue;
@@ -103,9 +98,7 @@ pub use error::{BuildError, Endpoint, PlannerError};
 pub use graph::RandomGeometricGraph;
 pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch, Suspending};
 pub use informed_rrt_star::InformedRrtStar;
-pub use kd_tree::KdTree;
-pub use nearest_neighbors::NearestNeighbors;
-pub use neighbours::Neighbours;
+pub use nearest::{KdTree, NearestNeighbors, Neighbours};
 pub use observer::{BatchEvent, Observer, RestartEvent, SolutionEvent};
 pub use parameters::{
     Connection, EisExpansionForm, EisExpansionRule, Parameters, k_nearest, r_disc,

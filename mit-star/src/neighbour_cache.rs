@@ -6,7 +6,7 @@ use spaces::{StateSpace, Stop};
 
 use crate::Neighbours;
 use crate::graph::{DEAD, Neighbour, Neighbourhood, RandomGeometricGraph};
-use crate::kd_tree::{Alive, Poll};
+use crate::nearest::{Alive, Poll};
 
 /// Extra nearest neighbours kept beyond `k`, so a list survives a few increments of `k` and a
 /// few pruned neighbours.

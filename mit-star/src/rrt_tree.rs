@@ -4,7 +4,7 @@
 
 use spaces::{StateSpace, States, Stop};
 
-use crate::kd_tree::Alive;
+use crate::nearest::Alive;
 use crate::{NearestNeighbors, Neighbours};
 
 /// The parent of a root.

@@ -3,10 +3,10 @@
 
 use spaces::{Never, Stop};
 
-use crate::Neighbours;
-use crate::kd_tree::{Alive, KdTree, Poll, squared_distance};
-use crate::kd_tree_build::{Parts, Spare, fresh};
-use crate::pending_points::PendingPoints;
+use crate::nearest::kd_tree::{Alive, KdTree, Poll, squared_distance};
+use crate::nearest::kd_tree_build::{Parts, Spare, fresh};
+use crate::nearest::neighbours::Neighbours;
+use crate::nearest::pending_points::PendingPoints;
 
 /// Points that may wait in the linear buffer before a query builds them into a tree (the
 /// buffer may also hold up to a quarter of the points already in trees).
@@ -417,7 +417,7 @@ mod tests {
                 nn.tree_count()
             );
             let query: Vec<f64> = (0..n).map(|_| rng.random_range(-0.5..0.5)).collect();
-            let stamps: crate::chunked::Chunked<u32> = births.iter().copied().collect();
+            let stamps: crate::nearest::chunked::Chunked<u32> = births.iter().copied().collect();
             let alive = Alive::Current(&stamps);
             nn.nearest_alive(&query, 10, &mut found, alive, &Never);
             let expected = brute(&points, n, &query, live);

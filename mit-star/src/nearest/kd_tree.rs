@@ -1,7 +1,7 @@
 //! [`KdTree`]: a static, bucketed kd-tree over points of any dimension, with exact k-nearest and
 //! radius queries that never allocate once their buffers are warm.
 
-use crate::Neighbours;
+use crate::nearest::neighbours::Neighbours;
 
 /// Points per leaf bucket. Small enough that leaves are scanned quickly, large enough that the
 /// tree stays shallow.
@@ -21,7 +21,7 @@ const SCAN_DIMENSION: usize = 12;
 /// Points between two polls of a scanning query.
 const SCAN_BLOCK: usize = 1024;
 
-use crate::chunked::Chunked;
+use crate::nearest::chunked::Chunked;
 
 /// Which points a query may return: all, or those whose birth stamp is still current
 /// (`births[id] == birth`), so removed points can stay in a tree until it is rebuilt.
@@ -127,7 +127,7 @@ impl KdTree {
             coordinates.extend_from_slice(point);
         }
         let births = vec![0; ids.len()];
-        let mut spare = crate::kd_tree_build::Spare::default();
+        let mut spare = crate::nearest::kd_tree_build::Spare::default();
         Self::from_parts(
             dimension,
             &[(&ids, &births, &coordinates)],

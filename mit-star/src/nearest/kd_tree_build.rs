@@ -3,8 +3,8 @@
 
 use spaces::Stop;
 
-use crate::KdTree;
-use crate::kd_tree::{BUCKET, LEAF, Node};
+use crate::nearest::kd_tree::KdTree;
+use crate::nearest::kd_tree::{BUCKET, LEAF, Node};
 
 /// Cells larger than this take their split value from an evenly spaced sample of this size.
 const SAMPLED_MEDIAN: usize = 1023;
