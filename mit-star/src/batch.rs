@@ -7,10 +7,10 @@ use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::eit::Eit;
-use crate::forward_tree::Pruning;
+use crate::graph::NONE;
 use crate::graph::Neighbourhood;
+use crate::graph::Pruning;
 use crate::guidance::{Guidance, ReverseSearch};
-use crate::vertex::NONE;
 use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
 
 /// Samples of a batch made visible to neighbour queries (and indexed) at a time.

@@ -10,10 +10,10 @@ use validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
 
 use crate::forward_queue::ForwardQueue;
 use crate::graph::RandomGeometricGraph;
+use crate::graph::{NONE, Vertex};
 use crate::guidance::{EffortInformed, Guidance};
 use crate::reverse_queue::ReverseQueue;
 use crate::termination::SolveStop;
-use crate::vertex::{NONE, Vertex};
 use crate::{
     Counters, Endpoint, Observer, Outcome, Parameters, Planner, PlannerError, Solution,
     Termination, Trace, VertexId, VertexKind,

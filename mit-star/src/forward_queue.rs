@@ -4,7 +4,7 @@
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 
-use crate::edge_hasher::{BuildEdgeHasher, edge_key};
+use crate::graph::{BuildEdgeHasher, edge_key};
 
 /// The three keys of a queued forward edge `u → v`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -10,10 +10,10 @@ use crate::RestartEvent;
 use crate::eit::Eit;
 use crate::forward_queue::{ForwardEdge, Front};
 use crate::graph::EdgeRecord;
+use crate::graph::NONE;
 use crate::guidance::{Guidance, ReverseSearch};
 use crate::reverse_search::forward_keys;
 use crate::termination::SolveStop;
-use crate::vertex::NONE;
 
 impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where

@@ -58,21 +58,17 @@ mod builder;
 mod components;
 mod configuration;
 mod counters;
-mod edge_hasher;
 mod eit;
 mod error;
 mod forward_queue;
 mod forward_search;
-mod forward_tree;
 mod graph;
 mod guidance;
 mod informed_rrt_star;
 mod nearest;
-mod neighbour_cache;
 mod observer;
 mod parameters;
 mod planner;
-mod recent_states;
 mod reverse_queue;
 mod reverse_repair;
 mod reverse_search;
@@ -81,10 +77,8 @@ mod rrt_core;
 mod rrt_star_tree;
 mod rrt_tree;
 mod snapshot;
-mod state_chunks;
 mod termination;
 mod trace;
-mod vertex;
 
 pub use aliases::{
     AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr,
@@ -95,7 +89,7 @@ pub use configuration::{Configuration, build_planner, build_planner_with};
 pub use counters::Counters;
 pub use eit::Eit;
 pub use error::{BuildError, Endpoint, PlannerError};
-pub use graph::RandomGeometricGraph;
+pub use graph::{RandomGeometricGraph, VertexId, VertexKind};
 pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch, Suspending};
 pub use informed_rrt_star::InformedRrtStar;
 pub use nearest::{KdTree, NearestNeighbors, Neighbours};
@@ -111,4 +105,3 @@ pub use termination::{
     TimeLimit,
 };
 pub use trace::{Trace, TracePoint};
-pub use vertex::{VertexId, VertexKind};

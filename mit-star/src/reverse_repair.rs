@@ -2,7 +2,7 @@
 //! search finds an edge of the reverse tree invalid, only the branch below that edge loses its
 //! cost-to-go, and the search resumes from the branch's neighbours that kept theirs.
 //!
-//! The reverse tree keeps intrusive child lists ([`Vertex`](crate::vertex::Vertex)'s
+//! The reverse tree keeps intrusive child lists ([`Vertex`](crate::graph::Vertex)'s
 //! `reverse_first_child`, …), so a repair costs the branch's size, not the graph's.
 
 use heuristics::Heuristic;
@@ -11,9 +11,9 @@ use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::eit::Eit;
+use crate::graph::NONE;
 use crate::guidance::{Guidance, ReverseSearch};
 use crate::reverse_search::forward_keys;
-use crate::vertex::NONE;
 
 /// Branch vertices invalidated or re-seeded between two polls of the termination condition.
 const REPAIR_POLL: usize = 32;

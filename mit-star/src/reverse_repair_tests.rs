@@ -3,8 +3,8 @@
 
 use std::collections::BTreeMap;
 
+use crate::graph::NONE;
 use crate::termination::SolveStop;
-use crate::vertex::NONE;
 use crate::{AitStar, Connection, IterationLimit};
 
 type Ait = AitStar;

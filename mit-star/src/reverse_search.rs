@@ -8,10 +8,10 @@ use validity::{Counted, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, StateVa
 use crate::eit::Eit;
 use crate::forward_queue::{ForwardEdge, ForwardKeys};
 use crate::graph::{EdgeRecord, RandomGeometricGraph};
+use crate::graph::{NO_EFFORT, NONE};
 use crate::guidance::{Guidance, ReverseSearch};
 use crate::reverse_queue::ReverseEdge;
 use crate::termination::SolveStop;
-use crate::vertex::{NO_EFFORT, NONE};
 
 /// Where the forward keys take the target's heuristic from.
 #[derive(Debug, Clone, Copy)]

@@ -8,16 +8,17 @@ use petgraph::graph::{EdgeIndex, NodeIndex};
 use petgraph::stable_graph::StableGraph;
 use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 
-use crate::Neighbours;
-use crate::edge_hasher::{BuildEdgeHasher, edge_key};
+use crate::graph::edge_hasher::{BuildEdgeHasher, edge_key};
+use crate::graph::neighbour_cache::MERGE_LIMIT;
+use crate::graph::recent_states::RecentStates;
+use crate::graph::state_chunks::StateChunks;
+use crate::graph::vertex::{NONE, Vertex};
 use crate::nearest::Alive;
 use crate::nearest::Chunked;
-use crate::neighbour_cache::MERGE_LIMIT;
-use crate::recent_states::RecentStates;
-use crate::state_chunks::StateChunks;
-use crate::vertex::{NONE, Vertex};
+use crate::nearest::Neighbours;
 
-use crate::{NearestNeighbors, VertexId, VertexKind};
+use crate::graph::vertex::{VertexId, VertexKind};
+use crate::nearest::NearestNeighbors;
 
 /// The key of the undirected edge `u — v`.
 #[inline]

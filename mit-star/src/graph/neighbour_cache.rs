@@ -4,8 +4,8 @@
 use heuristics::Heuristic;
 use spaces::{StateSpace, Stop};
 
-use crate::Neighbours;
-use crate::graph::{DEAD, Neighbour, Neighbourhood, RandomGeometricGraph};
+use crate::graph::random_geometric_graph::{DEAD, Neighbour, Neighbourhood, RandomGeometricGraph};
+use crate::nearest::Neighbours;
 use crate::nearest::{Alive, Poll};
 
 /// Extra nearest neighbours kept beyond `k`, so a list survives a few increments of `k` and a
@@ -281,9 +281,9 @@ impl RandomGeometricGraph {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::VertexKind;
-    use crate::forward_tree::Pruning;
-    use crate::vertex::Vertex;
+    use crate::graph::forward_tree::Pruning;
+    use crate::graph::vertex::Vertex;
+    use crate::graph::vertex::VertexKind;
     use heuristics::Euclidean;
     use spaces::rand::{RngExt, SeedableRng};
     use spaces::{Never, RealVectorSpace, SeededRng, euclidean_distance};

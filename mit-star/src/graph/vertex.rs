@@ -6,7 +6,7 @@ pub(crate) const NONE: u32 = u32::MAX;
 /// Effort-to-go of a vertex the reverse search has not reached.
 pub(crate) const NO_EFFORT: u64 = u64::MAX;
 
-/// Identifies a vertex (a sample) of the [`RandomGeometricGraph`](crate::RandomGeometricGraph).
+/// Identifies a vertex (a sample) of the [`RandomGeometricGraph`](crate::graph::random_geometric_graph::RandomGeometricGraph).
 ///
 /// Ids are stable while the vertex lives; the id of a pruned vertex may be reused by a later
 /// sample.

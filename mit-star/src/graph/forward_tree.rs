@@ -2,8 +2,8 @@
 
 use spaces::Stop;
 
-use crate::graph::RandomGeometricGraph;
-use crate::vertex::NONE;
+use crate::graph::random_geometric_graph::RandomGeometricGraph;
+use crate::graph::vertex::NONE;
 
 /// Vertices the pruning scan visits between two polls of the stop condition (a few tens of
 /// microseconds of work).
@@ -187,9 +187,9 @@ impl RandomGeometricGraph {
 #[cfg(test)]
 mod tests {
     use super::Pruning;
-    use crate::VertexKind;
-    use crate::graph::RandomGeometricGraph;
-    use crate::vertex::{NONE, Vertex};
+    use crate::graph::random_geometric_graph::RandomGeometricGraph;
+    use crate::graph::vertex::VertexKind;
+    use crate::graph::vertex::{NONE, Vertex};
 
     /// A chain start → a → b → c with a sibling d under a.
     fn tree() -> (RandomGeometricGraph, [u32; 5]) {
@@ -305,7 +305,7 @@ mod tests {
         (0..count as u32)
             .map(|v| {
                 let x = g.vertex(v);
-                let live = g.state_of(crate::VertexId(v)).is_some();
+                let live = g.state_of(crate::graph::vertex::VertexId(v)).is_some();
                 (live, x.parent, x.first_child, x.next_sibling, x.g.to_bits())
             })
             .collect()
