@@ -7,9 +7,7 @@ use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::eit::Eit;
-use crate::graph::NONE;
-use crate::graph::Neighbourhood;
-use crate::graph::Pruning;
+use crate::graph::{NONE, Neighbourhood, Pruning};
 use crate::guidance::{Guidance, ReverseSearch};
 use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
 

@@ -7,8 +7,8 @@ use spaces::StateSpace;
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::components::configuration_name;
-use crate::eit::validate_query;
 use crate::guidance::{EffortInformed, Guidance};
+use crate::planner::validate_query;
 use crate::{
     BuildError, CheckerPart, Connection, EisExpansionForm, EisExpansionRule, Eit, Observer,
     Parameters, SamplerPart,

@@ -9,14 +9,14 @@ use spaces::{StateSpace, States};
 use validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
 
 use crate::forward_queue::ForwardQueue;
-use crate::graph::RandomGeometricGraph;
-use crate::graph::{NONE, Vertex};
+use crate::graph::{NONE, RandomGeometricGraph, Vertex};
 use crate::guidance::{EffortInformed, Guidance};
+use crate::planner::validate_query;
 use crate::reverse_queue::ReverseQueue;
 use crate::termination::SolveStop;
 use crate::{
-    Counters, Endpoint, Observer, Outcome, Parameters, Planner, PlannerError, Solution,
-    Termination, Trace, VertexId, VertexKind,
+    Counters, Observer, Outcome, Parameters, Planner, PlannerError, Solution, Termination, Trace,
+    VertexId, VertexKind,
 };
 
 /// Asymmetric bidirectional lazy search on a batched random geometric graph — the EIT*
@@ -427,40 +427,6 @@ where
             cost: self.best_cost,
         }))
     }
-}
-
-/// Checks a query against a space and a validity checker.
-pub(crate) fn validate_query<S, V>(
-    space: &S,
-    validity: &V,
-    start: &[f64],
-    goals: &[Vec<f64>],
-) -> Result<(), PlannerError>
-where
-    S: StateSpace + ?Sized,
-    V: StateValidity + ?Sized,
-{
-    if goals.is_empty() {
-        return Err(PlannerError::NoGoals);
-    }
-    let endpoints = std::iter::once((Endpoint::Start, start)).chain(
-        goals
-            .iter()
-            .enumerate()
-            .map(|(i, g)| (Endpoint::Goal(i), g.as_slice())),
-    );
-    for (endpoint, state) in endpoints {
-        space
-            .check_state(state)
-            .map_err(|source| PlannerError::State { endpoint, source })?;
-        if !validity.is_valid(state) {
-            return Err(PlannerError::InCollision {
-                endpoint,
-                state: state.to_vec(),
-            });
-        }
-    }
-    Ok(())
 }
 
 impl<S, V, Smp, E, H, G> Planner for Eit<S, V, Smp, E, H, G>

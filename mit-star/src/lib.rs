@@ -64,7 +64,6 @@ mod forward_queue;
 mod forward_search;
 mod graph;
 mod guidance;
-mod informed_rrt_star;
 mod nearest;
 mod observer;
 mod parameters;
@@ -72,10 +71,7 @@ mod planner;
 mod reverse_queue;
 mod reverse_repair;
 mod reverse_search;
-mod rrt_connect;
-mod rrt_core;
-mod rrt_star_tree;
-mod rrt_tree;
+mod rrt;
 mod snapshot;
 mod termination;
 mod trace;
@@ -91,14 +87,13 @@ pub use eit::Eit;
 pub use error::{BuildError, Endpoint, PlannerError};
 pub use graph::{RandomGeometricGraph, VertexId, VertexKind};
 pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch, Suspending};
-pub use informed_rrt_star::InformedRrtStar;
 pub use nearest::{KdTree, NearestNeighbors, Neighbours};
 pub use observer::{BatchEvent, Observer, RestartEvent, SolutionEvent};
 pub use parameters::{
     Connection, EisExpansionForm, EisExpansionRule, Parameters, k_nearest, r_disc,
 };
 pub use planner::{Outcome, Planner, Solution};
-pub use rrt_connect::{RrtConnect, default_range};
+pub use rrt::{InformedRrtStar, RrtConnect, default_range};
 pub use snapshot::Snapshot;
 pub use termination::{
     And, CostThreshold, FirstSolution, IterationLimit, Or, Progress, Termination, TerminationExt,

@@ -1,8 +1,9 @@
 //! The [`Planner`] trait every planner of the framework implements, and what `solve` returns.
 
-use spaces::States;
+use spaces::{StateSpace, States};
+use validity::StateValidity;
 
-use crate::{Counters, PlannerError, Snapshot, Termination, Trace};
+use crate::{Counters, Endpoint, PlannerError, Snapshot, Termination, Trace};
 
 /// A valid path from the start to a goal.
 #[derive(Debug, Clone, PartialEq)]
@@ -82,6 +83,40 @@ pub trait Planner {
     fn snapshot(&self) -> Option<Snapshot> {
         None
     }
+}
+
+/// Checks a query against a space and a validity checker.
+pub(crate) fn validate_query<S, V>(
+    space: &S,
+    validity: &V,
+    start: &[f64],
+    goals: &[Vec<f64>],
+) -> Result<(), PlannerError>
+where
+    S: StateSpace + ?Sized,
+    V: StateValidity + ?Sized,
+{
+    if goals.is_empty() {
+        return Err(PlannerError::NoGoals);
+    }
+    let endpoints = std::iter::once((Endpoint::Start, start)).chain(
+        goals
+            .iter()
+            .enumerate()
+            .map(|(i, g)| (Endpoint::Goal(i), g.as_slice())),
+    );
+    for (endpoint, state) in endpoints {
+        space
+            .check_state(state)
+            .map_err(|source| PlannerError::State { endpoint, source })?;
+        if !validity.is_valid(state) {
+            return Err(PlannerError::InCollision {
+                endpoint,
+                state: state.to_vec(),
+            });
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

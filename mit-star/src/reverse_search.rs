@@ -7,8 +7,7 @@ use validity::{Counted, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, StateVa
 
 use crate::eit::Eit;
 use crate::forward_queue::{ForwardEdge, ForwardKeys};
-use crate::graph::{EdgeRecord, RandomGeometricGraph};
-use crate::graph::{NO_EFFORT, NONE};
+use crate::graph::{EdgeRecord, NO_EFFORT, NONE, RandomGeometricGraph};
 use crate::guidance::{Guidance, ReverseSearch};
 use crate::reverse_queue::ReverseEdge;
 use crate::termination::SolveStop;

@@ -5,7 +5,7 @@
 use spaces::{StateSpace, States, Stop};
 
 use crate::nearest::Alive;
-use crate::{NearestNeighbors, Neighbours};
+use crate::nearest::{NearestNeighbors, Neighbours};
 
 /// The parent of a root.
 pub(crate) const ROOT: u32 = u32::MAX;

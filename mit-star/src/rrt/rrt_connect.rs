@@ -4,8 +4,8 @@ use samplers::{CostBound, Sampler, UniformSampler};
 use spaces::{StateSpace, States, Stop};
 use validity::{Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
-use crate::rrt_core::{RrtCore, problem_parts};
-use crate::rrt_tree::{ROOT, Tree, steer};
+use crate::rrt::rrt_core::{RrtCore, problem_parts};
+use crate::rrt::tree::{ROOT, Tree, steer};
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Outcome, Parameters, Planner, PlannerError, Snapshot, Termination, Trace,

@@ -3,7 +3,7 @@
 
 use spaces::{States, Stop};
 
-use crate::rrt_tree::{ROOT, Tree};
+use crate::rrt::tree::{ROOT, Tree};
 
 /// Vertices visited between two polls of the stop condition.
 const POLL: usize = 1024;
@@ -219,7 +219,7 @@ impl CostTree {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Neighbours;
+    use crate::nearest::Neighbours;
     use spaces::{Never, RealVectorSpace};
 
     #[test]

@@ -8,15 +8,14 @@ use spaces::rand::SeedableRng;
 use spaces::{SeededRng, StateSpace, Stop};
 use validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
-use crate::rrt_core::{RrtCore, checked_range, problem_parts};
-use crate::rrt_star_tree::CostTree;
+use crate::rrt::cost_tree::CostTree;
+use crate::rrt::rrt_core::{RrtCore, checked_range, problem_parts};
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Outcome, Parameters, Planner, PlannerError, Snapshot, Termination, Trace,
     VertexKind,
 };
 
-#[path = "informed_rrt_star_iteration.rs"]
 mod iteration;
 
 use iteration::{Candidate, Phase};
@@ -307,5 +306,4 @@ impl<S: StateSpace, V: StateValidity> InformedRrtStar<S, V, InformedSampler, Den
 }
 
 #[cfg(test)]
-#[path = "informed_rrt_star_tests.rs"]
 mod tests;

@@ -8,7 +8,7 @@ use samplers::Sampler;
 use spaces::{StateSpace, States, Stop};
 use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
-use crate::eit::validate_query;
+use crate::planner::validate_query;
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Neighbours, Outcome, Parameters, Solution, Trace, default_range,

@@ -8,7 +8,7 @@ use spaces::{StateSpace, States, Stop};
 use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use super::{InformedRrtStar, PRUNE_THRESHOLD};
-use crate::rrt_tree::steer;
+use crate::rrt::tree::steer;
 use crate::termination::SolveStop;
 use crate::{Planner, k_nearest};
 
