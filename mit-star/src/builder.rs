@@ -7,7 +7,7 @@ use spaces::StateSpace;
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::components::configuration_name;
-use crate::guidance::{EffortInformed, Guidance};
+use crate::informed_trees::{EffortInformed, Guidance};
 use crate::planner::validate_query;
 use crate::{
     BuildError, CheckerPart, Connection, EisExpansionForm, EisExpansionRule, Eit, Observer,
@@ -180,7 +180,7 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
     }
 
     /// Certify forward-tree edges on a grid `factor` times finer than the check step (1: off;
-    /// [`for_problem`](Self::for_problem) takes the problem's).
+    /// [`for_problem`](Eit::for_problem) takes the problem's).
     pub fn certification(mut self, factor: u32) -> Self {
         self.parameters.certification = Some(factor);
         self

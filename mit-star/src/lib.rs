@@ -52,41 +52,32 @@
 
 #![forbid(unsafe_code)]
 
-mod aliases;
-mod batch;
 mod builder;
 mod components;
 mod configuration;
 mod counters;
-mod eit;
 mod error;
-mod forward_queue;
-mod forward_search;
 mod graph;
-mod guidance;
+mod informed_trees;
 mod nearest;
 mod observer;
 mod parameters;
 mod planner;
-mod reverse_queue;
-mod reverse_repair;
-mod reverse_search;
 mod rrt;
 mod snapshot;
 mod termination;
 mod trace;
 
-pub use aliases::{
-    AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr,
-};
 pub use builder::Builder;
 pub use components::{CheckerPart, SamplerPart};
 pub use configuration::{Configuration, build_planner, build_planner_with};
 pub use counters::Counters;
-pub use eit::Eit;
 pub use error::{BuildError, Endpoint, PlannerError};
 pub use graph::{RandomGeometricGraph, VertexId, VertexKind};
-pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch, Suspending};
+pub use informed_trees::{
+    APriori, AitStar, AitStarEis, BitStar, CostInformed, EffortInformed, Eit, EitStar, Guidance,
+    MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr, ReverseSearch, Suspending,
+};
 pub use nearest::{KdTree, NearestNeighbors, Neighbours};
 pub use observer::{BatchEvent, Observer, RestartEvent, SolutionEvent};
 pub use parameters::{

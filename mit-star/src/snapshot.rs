@@ -8,7 +8,7 @@ use spaces::{StateSpace, States};
 use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::NONE;
-use crate::guidance::Guidance;
+use crate::informed_trees::Guidance;
 use crate::{Eit, VertexKind};
 
 /// A copy of what a planner holds at one moment: every vertex of its graph, the forward tree,

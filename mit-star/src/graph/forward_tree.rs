@@ -91,7 +91,7 @@ impl RandomGeometricGraph {
     /// Removes every sample whose admissible solution cost `ĉ(start, x) + ĉ(x, goals)` exceeds
     /// `bound`, except those in `protected` (start and goals are never removed). Forward
     /// subtrees hanging from removed vertices are detached (their vertices stay as samples with
-    /// `g = ∞`). Starts a new batch once done; [`pruned`](Self::pruned) then lists the removed
+    /// `g = ∞`). Starts a new batch once done; `pruned` (in tests) then lists the removed
     /// ids in ascending order.
     ///
     /// Both phases poll `stop`. If it fires during the scan for prunable vertices, nothing is

@@ -67,8 +67,8 @@ impl RecentStates {
     /// Writes to `out` the squared Euclidean distances from `query` to the states of log
     /// positions `from..` (the newest entries), in log order; `false` (and `out` untouched) if
     /// `from` is older than the ring holds. (The sums run over the coordinates in order, so
-    /// they may differ from [`squared_distance`](crate::nearest::kd_tree::squared_distance)'s in the
-    /// last bits: callers filter with a margin.)
+    /// they may differ from those of the kd-tree's `squared_distance` in the last bits: callers
+    /// filter with a margin.)
     pub(crate) fn squared_distances(&self, from: usize, query: &[f64], out: &mut Vec<f64>) -> bool {
         if from > self.end || from < self.end - self.held {
             return false;

@@ -6,9 +6,9 @@ use samplers::{CostBound, SampleError, Sampler};
 use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
-use crate::eit::Eit;
 use crate::graph::{NONE, Neighbourhood, Pruning};
-use crate::guidance::{Guidance, ReverseSearch};
+use crate::informed_trees::eit::Eit;
+use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
 
 /// Samples of a batch made visible to neighbour queries (and indexed) at a time.

@@ -5,11 +5,11 @@ use samplers::Sampler;
 use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, StateValidity};
 
-use crate::eit::Eit;
-use crate::forward_queue::{ForwardEdge, ForwardKeys};
 use crate::graph::{EdgeRecord, NO_EFFORT, NONE, RandomGeometricGraph};
-use crate::guidance::{Guidance, ReverseSearch};
-use crate::reverse_queue::ReverseEdge;
+use crate::informed_trees::eit::Eit;
+use crate::informed_trees::forward_queue::{ForwardEdge, ForwardKeys};
+use crate::informed_trees::guidance::{Guidance, ReverseSearch};
+use crate::informed_trees::reverse_queue::ReverseEdge;
 use crate::termination::SolveStop;
 
 /// Where the forward keys take the target's heuristic from.

@@ -10,10 +10,10 @@ use samplers::Sampler;
 use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
-use crate::eit::Eit;
 use crate::graph::NONE;
-use crate::guidance::{Guidance, ReverseSearch};
-use crate::reverse_search::forward_keys;
+use crate::informed_trees::eit::Eit;
+use crate::informed_trees::guidance::{Guidance, ReverseSearch};
+use crate::informed_trees::reverse_search::forward_keys;
 
 /// Branch vertices invalidated or re-seeded between two polls of the termination condition.
 const REPAIR_POLL: usize = 32;
@@ -184,5 +184,4 @@ where
 }
 
 #[cfg(test)]
-#[path = "reverse_repair_tests.rs"]
 mod tests;

@@ -6,7 +6,8 @@ use samplers::{AdaptiveSampler, Estimated, InformedSampler};
 use spaces::RealVectorSpace;
 use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, World};
 
-use crate::{APriori, CostInformed, Eit, Suspending};
+use crate::informed_trees::eit::Eit;
+use crate::informed_trees::guidance::{APriori, CostInformed, Suspending};
 
 /// **MIT*** (Zhang et al. 2025): adaptive sampler inside the estimated informed set
 /// ([`Estimated`] wrapper), length-related sparse collision checks, and the MIT* authors'

@@ -8,11 +8,11 @@ use samplers::Sampler;
 use spaces::{StateSpace, States};
 use validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
 
-use crate::forward_queue::ForwardQueue;
 use crate::graph::{NONE, RandomGeometricGraph, Vertex};
-use crate::guidance::{EffortInformed, Guidance};
+use crate::informed_trees::forward_queue::ForwardQueue;
+use crate::informed_trees::guidance::{EffortInformed, Guidance};
+use crate::informed_trees::reverse_queue::ReverseQueue;
 use crate::planner::validate_query;
-use crate::reverse_queue::ReverseQueue;
 use crate::termination::SolveStop;
 use crate::{
     Counters, Observer, Outcome, Parameters, Planner, PlannerError, Solution, Termination, Trace,

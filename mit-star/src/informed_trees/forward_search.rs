@@ -7,11 +7,11 @@ use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::RestartEvent;
-use crate::eit::Eit;
-use crate::forward_queue::{ForwardEdge, Front};
 use crate::graph::{EdgeRecord, NONE};
-use crate::guidance::{Guidance, ReverseSearch};
-use crate::reverse_search::forward_keys;
+use crate::informed_trees::eit::Eit;
+use crate::informed_trees::forward_queue::{ForwardEdge, Front};
+use crate::informed_trees::guidance::{Guidance, ReverseSearch};
+use crate::informed_trees::reverse_search::forward_keys;
 use crate::termination::SolveStop;
 
 impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>

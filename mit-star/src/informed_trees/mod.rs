@@ -1,0 +1,38 @@
+//! The informed-trees skeleton: [`Eit`], the asymmetric bidirectional lazy search of EIT*
+//! over a batched random geometric graph, and the guidances and type aliases that make MIT*,
+//! EIT*, AIT*, BIT* and ABIT* of it.
+//!
+//! - `eit.rs`: [`Eit`], the planner — its parts, state, setup, solution and the
+//!   [`Planner`](crate::Planner) implementation.
+//! - `guidance.rs`: [`Guidance`] and its four parts ([`EffortInformed`], [`Suspending`],
+//!   [`CostInformed`], [`APriori`]): how the forward search is led to the goals, the part that
+//!   tells EIT*, MIT*, AIT* and BIT* apart.
+//! - `aliases.rs`: the paper's configurations ([`MitStar`], [`EitStar`], the MIT* ablations)
+//!   and comparison planners ([`AitStar`], [`BitStar`]) as type aliases of [`Eit`].
+//! - `forward_search.rs` and `forward_queue.rs`: the forward search from the start (full edge
+//!   checks, effort-greedy then A*) and its edge queue.
+//! - `reverse_search.rs` and `reverse_queue.rs`: the lazy reverse search from the goals
+//!   (sparse checks) and its edge queue; `reverse_repair/`: AIT*'s in-place repair of the
+//!   reverse tree, with its tests.
+//! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches.
+//!
+//! May use: `graph` (the RGG, its vertices, neighbour lists, forward tree and pruning),
+//! `nearest` only through `graph`, the public API at the top of the crate (termination,
+//! [`Parameters`](crate::Parameters), errors, observer, trace, counters) and the `spaces`,
+//! `samplers`, `validity` and `heuristics` crates. Nothing of `rrt`.
+
+mod aliases;
+mod batch;
+mod eit;
+mod forward_queue;
+mod forward_search;
+mod guidance;
+mod reverse_queue;
+mod reverse_repair;
+mod reverse_search;
+
+pub use aliases::{
+    AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr,
+};
+pub use eit::Eit;
+pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch, Suspending};
