@@ -52,6 +52,19 @@
 
 #![forbid(unsafe_code)]
 
+// Source layout. The public API sits at the top of `src/`: the `Planner` trait and query
+// validation (planner.rs), termination conditions, parameters, errors, the builder and the parts
+// it makes (components.rs), configurations chosen at run time (configuration.rs), and what a run
+// reports (trace, counters, observer, snapshot). These files may use the four modules below;
+// the modules use them only for the API's own types. The machinery, lowest layer first (each
+// module's doc says what it holds and what it may use):
+// - `nearest`: exact nearest-neighbour search, kd-trees in a logarithmic forest. Uses nothing
+//   else of the crate.
+// - `graph`: the random geometric graph, its vertices, neighbour caches, forward tree and
+//   pruning. Uses `nearest`.
+// - `informed_trees`: the EIT* skeleton `Eit` (forward and reverse searches, queues, batches),
+//   its guidances, and the MIT*, EIT*, AIT*, BIT* type aliases. Uses `graph`.
+// - `rrt`: RRT-Connect and Informed RRT*. Uses `nearest`.
 mod builder;
 mod components;
 mod configuration;
