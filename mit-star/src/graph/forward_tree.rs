@@ -188,8 +188,7 @@ impl RandomGeometricGraph {
 mod tests {
     use super::Pruning;
     use crate::graph::random_geometric_graph::RandomGeometricGraph;
-    use crate::graph::vertex::VertexKind;
-    use crate::graph::vertex::{NONE, Vertex};
+    use crate::graph::vertex::{NONE, Vertex, VertexKind};
 
     /// A chain start → a → b → c with a sibling d under a.
     fn tree() -> (RandomGeometricGraph, [u32; 5]) {

@@ -5,8 +5,7 @@ use heuristics::Heuristic;
 use spaces::{StateSpace, Stop};
 
 use crate::graph::random_geometric_graph::{DEAD, Neighbour, Neighbourhood, RandomGeometricGraph};
-use crate::nearest::Neighbours;
-use crate::nearest::{Alive, Poll};
+use crate::nearest::{Alive, Neighbours, Poll};
 
 /// Extra nearest neighbours kept beyond `k`, so a list survives a few increments of `k` and a
 /// few pruned neighbours.
@@ -282,8 +281,7 @@ impl RandomGeometricGraph {
 mod tests {
     use super::*;
     use crate::graph::forward_tree::Pruning;
-    use crate::graph::vertex::Vertex;
-    use crate::graph::vertex::VertexKind;
+    use crate::graph::vertex::{Vertex, VertexKind};
     use heuristics::Euclidean;
     use spaces::rand::{RngExt, SeedableRng};
     use spaces::{Never, RealVectorSpace, SeededRng, euclidean_distance};

@@ -12,13 +12,8 @@ use crate::graph::edge_hasher::{BuildEdgeHasher, edge_key};
 use crate::graph::neighbour_cache::MERGE_LIMIT;
 use crate::graph::recent_states::RecentStates;
 use crate::graph::state_chunks::StateChunks;
-use crate::graph::vertex::{NONE, Vertex};
-use crate::nearest::Alive;
-use crate::nearest::Chunked;
-use crate::nearest::Neighbours;
-
-use crate::graph::vertex::{VertexId, VertexKind};
-use crate::nearest::NearestNeighbors;
+use crate::graph::vertex::{NONE, Vertex, VertexId, VertexKind};
+use crate::nearest::{Alive, Chunked, NearestNeighbors, Neighbours};
 
 /// The key of the undirected edge `u — v`.
 #[inline]

@@ -3,8 +3,7 @@
 
 use spaces::Stop;
 
-use crate::nearest::kd_tree::KdTree;
-use crate::nearest::kd_tree::{BUCKET, LEAF, Node};
+use crate::nearest::kd_tree::{BUCKET, KdTree, LEAF, Node};
 
 /// Cells larger than this take their split value from an evenly spaced sample of this size.
 const SAMPLED_MEDIAN: usize = 1023;

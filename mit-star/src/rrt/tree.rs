@@ -4,8 +4,7 @@
 
 use spaces::{StateSpace, States, Stop};
 
-use crate::nearest::Alive;
-use crate::nearest::{NearestNeighbors, Neighbours};
+use crate::nearest::{Alive, NearestNeighbors, Neighbours};
 
 /// The parent of a root.
 pub(crate) const ROOT: u32 = u32::MAX;
