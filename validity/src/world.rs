@@ -323,15 +323,17 @@ impl StateValidity for World {
         self.in_bounds(state) && (!self.in_obstacle(state) || in_boxes(&self.anti_obstacles, state))
     }
 
-    /// Keeps the boxes whose bounds meet the segment's reach and the bounds it may leave
-    /// (see [`World::prepare`]).
+    /// Keeps the boxes whose bounds meet the segment's reach (found through the world's
+    /// index) and the bounds it may leave: afterwards each point of the segment is tested
+    /// against those boxes only.
     #[inline]
     fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
         self.prepare(segment)
     }
 
-    /// Four points per SIMD step against the boxes the segment kept (see
-    /// [`World::first_invalid_on_segment`]).
+    /// Four points per SIMD step against the boxes the segment kept: bounds along the
+    /// coordinates the segment may leave, then the kept obstacles' crossings, then — only for
+    /// points inside an obstacle — the kept anti-obstacles'.
     #[inline]
     fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
         self.first_invalid_on_segment(segment, fractions)
