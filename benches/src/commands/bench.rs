@@ -255,7 +255,7 @@ impl BenchArgs {
             let first = &problems[0];
             let dims: Vec<String> = first.dimensions.iter().map(|d| format!("n{d}")).collect();
             let more = if problems.len() > 1 { "-and-more" } else { "" };
-            crate::experiment::safe_name(&format!(
+            crate::definition::experiment::safe_name(&format!(
                 "{}-{}{more}",
                 first.source.label(),
                 dims.join("-")

@@ -7,12 +7,13 @@ use std::time::Instant;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
-use crate::interrupt::ReadingInputs;
-use crate::kpi_table::number;
+use crate::definition::problem_source::sanitise;
+use crate::execution::interrupt::ReadingInputs;
+use crate::formats::kpi_table::number;
 use crate::{
     ArmPicture, HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource,
     RunJob, RunPicture, RunRecord, RunStatus, budget_duration, deadline_after, parse_configuration,
-    problem_source::sanitise, short_number,
+    short_number,
 };
 
 /// Options of `mit-star plan`.

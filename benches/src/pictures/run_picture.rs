@@ -11,7 +11,7 @@ use samplers::SampleOrigin;
 use validity::AxisBox;
 
 use crate::HarnessError;
-use crate::plot_style::{Figure, clip_segment, save_svg_and_png};
+use crate::pictures::plot_style::{Figure, clip_segment, save_svg_and_png};
 
 const OBSTACLE: RGBColor = RGBColor(110, 110, 120);
 const ANTI_OBSTACLE: RGBColor = RGBColor(200, 235, 200);

@@ -6,8 +6,9 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use crate::pictures::plot_style;
 use crate::statistics::{AnytimeSeries, MedianEstimate, log_time_grid};
-use crate::{ExperimentResults, HarnessError, planner_colours, plot_style};
+use crate::{ExperimentResults, HarnessError, planner_colours};
 
 /// Points on each curve.
 const GRID_POINTS: usize = 240;

@@ -233,7 +233,7 @@ impl BenchmarkLog {
             ],
             hostname: results.machine.hostname.clone(),
             date: results.started_at.clone(),
-            setup: crate::setup_description(results, index),
+            setup: crate::formats::ompl_log::setup_description::setup_description(results, index),
             cpu_info: Some(format!("{}\n", results.machine.cpu)),
             seed: experiment.seed,
             time_limit: instance.budget,

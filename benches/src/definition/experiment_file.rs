@@ -226,7 +226,7 @@ impl ExperimentFile {
             // An explicit name is checked as given; the default (a file's stem) is made safe.
             name: self
                 .name
-                .unwrap_or_else(|| crate::experiment::safe_name(default_name)),
+                .unwrap_or_else(|| crate::definition::experiment::safe_name(default_name)),
             description: self.description.unwrap_or_default(),
             planners,
             problems,
@@ -265,7 +265,7 @@ fn problem_spec(
                     ".name",
                     HarnessError::UnknownProblem {
                         name: name.clone(),
-                        known: crate::problem_source::builtin_names(),
+                        known: crate::definition::problem_source::builtin_names(),
                     },
                 ));
             }

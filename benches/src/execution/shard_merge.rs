@@ -4,7 +4,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-use crate::results_folder::folder_lock::FolderLock;
+use crate::execution::results_folder::folder_lock::FolderLock;
 use crate::{
     Experiment, ExperimentResults, HarnessError, MachineInfo, ResultsFolder, RunJob, RunJournal,
     RunKey, RunRecord, Shard, iso_timestamp, results_from_records,

@@ -6,9 +6,10 @@ use std::path::Path;
 
 use rusqlite::{Connection, OpenFlags};
 
-use crate::results_folder::DATABASE_FILE;
-use crate::run_journal::{describe, repeats};
-use crate::{HarnessError, RunJournal, RunKey, Shard, raw_runs};
+use crate::execution::results_folder::DATABASE_FILE;
+use crate::execution::run_journal::{describe, repeats};
+use crate::formats::raw_runs;
+use crate::{HarnessError, RunJournal, RunKey, Shard};
 
 /// Checks that `runs.jsonl`, `runs.csv` and `benchmark.db` of `folder` hold the same runs, each
 /// once: the same identities in both raw files, and as many runs in the database. A last line

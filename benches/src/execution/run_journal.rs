@@ -11,11 +11,12 @@ use std::time::Instant;
 use repair::{JournalLine, cut_partial_line, distinct, io, open_for_append, read_lines};
 pub(crate) use repair::{describe, repeats};
 
-use crate::results_folder::folder_lock::FolderLock;
-use crate::results_folder::{DATABASE_FILE, write_replacing};
+use crate::execution::results_folder::folder_lock::FolderLock;
+use crate::execution::results_folder::{DATABASE_FILE, write_replacing};
+use crate::formats::raw_runs;
 use crate::{
     BenchmarkLog, ExperimentResults, HarnessError, MachineInfo, PlannerArenaDatabase,
-    ProblemInstance, RunKey, RunRecord, raw_runs,
+    ProblemInstance, RunKey, RunRecord,
 };
 
 /// Appends finished runs to a results folder the moment they finish: one line to `runs.jsonl`,

@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use crate::experiment_file::ExperimentFile;
+use crate::definition::experiment_file::ExperimentFile;
 use crate::{
     HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec,
     ShippedExperiment,

@@ -11,7 +11,7 @@ use problems::PlanningProblem;
 use robot::{ArmProblem, Kinematics, Shape};
 
 use crate::HarnessError;
-use crate::plot_style::{Figure, save_svg_and_png};
+use crate::pictures::plot_style::{Figure, save_svg_and_png};
 
 const OBSTACLE: RGBColor = RGBColor(150, 150, 162);
 const START: RGBColor = RGBColor(0, 150, 60);

@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use crate::kpi_table::number;
+use crate::formats::kpi_table::number;
 use crate::statistics::{ClopperPearson, MedianEstimate};
 use crate::{ExperimentResults, KpiRow, KpiTable, Shard};
 
