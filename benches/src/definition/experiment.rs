@@ -4,10 +4,13 @@
 use std::path::Path;
 
 use crate::definition::experiment_file::ExperimentFile;
-use crate::{
-    HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec,
-    ShippedExperiment,
-};
+use crate::definition::parameter_overrides::ParameterOverrides;
+use crate::definition::planner_spec::PlannerSpec;
+use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_source::ProblemSource;
+use crate::definition::problem_spec::ProblemSpec;
+use crate::definition::shipped_experiment::ShippedExperiment;
+use crate::error::HarnessError;
 
 /// An experiment: every planner runs `runs` times on every problem instance; run `i` of every
 /// planner uses seed `seed + i`.

@@ -36,10 +36,12 @@ use std::path::Path;
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 
-use crate::{
-    Experiment, HarnessError, ParameterOverrides, PlannerSpec, ProblemSource, ProblemSpec,
-    parse_configuration,
-};
+use crate::definition::experiment::Experiment;
+use crate::definition::parameter_overrides::ParameterOverrides;
+use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
+use crate::definition::problem_source::ProblemSource;
+use crate::definition::problem_spec::ProblemSpec;
+use crate::error::HarnessError;
 
 /// The schema of an experiment file, as parsed (before names are checked).
 #[derive(Debug, Clone, Deserialize, Serialize)]

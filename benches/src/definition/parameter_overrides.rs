@@ -4,7 +4,7 @@
 use mit_star::Parameters;
 use serde::{Deserialize, Serialize};
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 
 /// Parameters the harness sets itself, which overrides may not touch.
 const RESERVED: [(&str, &str); 2] = [

@@ -2,7 +2,8 @@
 
 use mit_star::{Configuration, Parameters};
 
-use crate::{HarnessError, ParameterOverrides};
+use crate::definition::parameter_overrides::ParameterOverrides;
+use crate::error::HarnessError;
 
 /// The valid configuration names, comma separated.
 pub(crate) fn configuration_names() -> String {

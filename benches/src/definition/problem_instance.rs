@@ -1,6 +1,7 @@
 //! [`ProblemInstance`]: one concrete problem of an experiment, with its time budget.
 
-use crate::{InstanceProblem, ProblemSource};
+use crate::definition::problem_kind::InstanceProblem;
+use crate::definition::problem_source::ProblemSource;
 
 /// One problem instance of an experiment: a problem in one dimension (and, for seeded
 /// families, one layout), with the time budget of each run. Each instance is one OMPL

@@ -12,7 +12,7 @@ use robot::{ArmProblem, MotionAudit};
 const AUDIT_BUDGET: u64 = 2_000_000;
 use spaces::StateSpace;
 
-use crate::PathValidation;
+use crate::path_validation::PathValidation;
 
 /// The problem of one [`ProblemInstance`](crate::ProblemInstance): a box world (the PDT
 /// families and problem files) or a robot arm in a scene (MotionBenchMaker). Every kind plans

@@ -7,9 +7,9 @@ use problems::Problem;
 use robot::RobotModel;
 use spaces::StateSpace;
 
-use crate::InstanceProblem;
+use crate::definition::problem_kind::InstanceProblem;
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 
 /// The built-in family names, comma separated.
 pub(crate) fn builtin_names() -> String {

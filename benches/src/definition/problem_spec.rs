@@ -1,6 +1,8 @@
 //! [`ProblemSpec`]: a problem of an experiment over several dimensions and instances.
 
-use crate::{HarnessError, ProblemInstance, ProblemSource};
+use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_source::ProblemSource;
+use crate::error::HarnessError;
 
 /// A problem entry of an experiment: a source, the dimensions to run it in with one time
 /// budget per dimension, the layout seeds (seeded families), and optionally another

@@ -1,6 +1,6 @@
 //! [`ShippedExperiment`]: the experiment files embedded in the binary.
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 
 /// An experiment file shipped with the tool (`benches/experiments/*.toml`), embedded in the
 /// binary so that `mit-star bench --experiment NAME` works from any folder.

@@ -8,10 +8,14 @@ use std::time::{Instant, SystemTime};
 
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::{
-    Experiment, ExperimentResults, HarnessError, MachineInfo, ProblemInstance, RunJob, RunRecord,
-    RunStatus, Shard, iso_timestamp,
-};
+use crate::definition::experiment::Experiment;
+use crate::definition::problem_instance::ProblemInstance;
+use crate::error::HarnessError;
+use crate::execution::run_job::RunJob;
+use crate::execution::shard::Shard;
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::machine_info::{MachineInfo, iso_timestamp};
+use crate::outcome::run_record::{RunRecord, RunStatus};
 
 /// A run's identity in a results folder: instance id, planner name, run index.
 pub type RunKey = (String, String, usize);

@@ -5,7 +5,7 @@ use std::sync::atomic::{AtomicBool, AtomicI32, AtomicUsize, Ordering};
 
 use signal_hook::consts::{SIGINT, SIGTERM};
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 
 /// The process's reaction to SIGINT (Ctrl-C) and SIGTERM (what Slurm sends at a job's time
 /// limit): the first one raises a flag that stops scheduling new runs and stops the planners in

@@ -8,10 +8,15 @@ use std::path::{Path, PathBuf};
 
 use folder_lock::FolderLock;
 
-use crate::{
-    BenchmarkLog, Experiment, ExperimentFigure, ExperimentResults, HarnessError, KpiTable,
-    PlannerArenaDatabase, RunJournal, Shard, results_from_records,
-};
+use crate::definition::experiment::Experiment;
+use crate::error::HarnessError;
+use crate::execution::run_journal::{RunJournal, results_from_records};
+use crate::execution::shard::Shard;
+use crate::formats::kpi_table::KpiTable;
+use crate::formats::ompl_log::benchmark_log::BenchmarkLog;
+use crate::formats::planner_arena_database::PlannerArenaDatabase;
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::pictures::experiment_figure::ExperimentFigure;
 
 /// The name of the Planner Arena database in a results folder.
 pub const DATABASE_FILE: &str = "benchmark.db";

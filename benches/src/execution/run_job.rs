@@ -11,7 +11,10 @@ use rand::SeedableRng;
 use rand::seq::SliceRandom;
 use spaces::SeededRng;
 
-use crate::{PlannerSpec, ProblemInstance, RunRecord, RunStatus, deadline_after};
+use crate::budget::deadline_after;
+use crate::definition::planner_spec::PlannerSpec;
+use crate::definition::problem_instance::ProblemInstance;
+use crate::outcome::run_record::{RunRecord, RunStatus};
 
 /// Memory a finished run's record takes until the results are written, generously (counters,
 /// trace, path): the unit of the run-count limit.
@@ -263,7 +266,9 @@ impl RunJob {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{ParameterOverrides, ProblemSource, ProblemSpec};
+    use crate::definition::parameter_overrides::ParameterOverrides;
+    use crate::definition::problem_source::ProblemSource;
+    use crate::definition::problem_spec::ProblemSpec;
 
     #[test]
     fn orders_differ_between_runs_but_cover_every_planner() {

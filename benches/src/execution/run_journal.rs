@@ -11,13 +11,17 @@ use std::time::Instant;
 use repair::{JournalLine, cut_partial_line, distinct, io, open_for_append, read_lines};
 pub(crate) use repair::{describe, repeats};
 
+use crate::definition::problem_instance::ProblemInstance;
+use crate::error::HarnessError;
+use crate::execution::executor::RunKey;
 use crate::execution::results_folder::folder_lock::FolderLock;
 use crate::execution::results_folder::{DATABASE_FILE, write_replacing};
+use crate::formats::ompl_log::benchmark_log::BenchmarkLog;
+use crate::formats::planner_arena_database::PlannerArenaDatabase;
 use crate::formats::raw_runs;
-use crate::{
-    BenchmarkLog, ExperimentResults, HarnessError, MachineInfo, PlannerArenaDatabase,
-    ProblemInstance, RunKey, RunRecord,
-};
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::machine_info::MachineInfo;
+use crate::outcome::run_record::RunRecord;
 
 /// Appends finished runs to a results folder the moment they finish: one line to `runs.jsonl`,
 /// then one row to `runs.csv` (each a single write of a whole line), then one transaction to
@@ -372,7 +376,8 @@ pub fn results_from_records(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Experiment, RunStatus};
+    use crate::definition::experiment::Experiment;
+    use crate::outcome::run_record::RunStatus;
 
     /// A folder, the results template of a one-instance, two-planner experiment, and a run.
     fn setup(name: &str) -> (PathBuf, ExperimentResults) {

@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::str::FromStr;
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 
 /// The name of the file recording a results folder's shard.
 pub const SHARD_FILE: &str = "shard.toml";

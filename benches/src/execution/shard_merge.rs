@@ -4,11 +4,17 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
+use crate::definition::experiment::Experiment;
+use crate::error::HarnessError;
+use crate::execution::executor::RunKey;
+use crate::execution::results_folder::ResultsFolder;
 use crate::execution::results_folder::folder_lock::FolderLock;
-use crate::{
-    Experiment, ExperimentResults, HarnessError, MachineInfo, ResultsFolder, RunJob, RunJournal,
-    RunKey, RunRecord, Shard, iso_timestamp, results_from_records,
-};
+use crate::execution::run_job::RunJob;
+use crate::execution::run_journal::{RunJournal, results_from_records};
+use crate::execution::shard::Shard;
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::machine_info::{MachineInfo, iso_timestamp};
+use crate::outcome::run_record::RunRecord;
 
 /// What [`merge_parts`] combined.
 #[derive(Debug, Clone)]

@@ -3,9 +3,11 @@
 
 use std::fmt::Write as _;
 
+use crate::execution::shard::Shard;
 use crate::formats::kpi_table::number;
+use crate::formats::kpi_table::{KpiRow, KpiTable};
+use crate::outcome::experiment_results::ExperimentResults;
 use crate::statistics::{ClopperPearson, MedianEstimate};
-use crate::{ExperimentResults, KpiRow, KpiTable, Shard};
 
 /// How a statistic moved from A to B, judged by its confidence intervals.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

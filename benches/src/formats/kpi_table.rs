@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use mit_star::Configuration;
 use serde::Serialize;
 
-use crate::ExperimentResults;
+use crate::outcome::experiment_results::ExperimentResults;
 use crate::statistics::{ClopperPearson, MedianEstimate};
 
 /// The KPIs of one planner on one problem instance.
@@ -342,7 +342,7 @@ fn with_interval(m: &MedianEstimate) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ExperimentResults;
+    use crate::outcome::experiment_results::ExperimentResults;
 
     #[test]
     fn numbers_print_like_the_paper() {

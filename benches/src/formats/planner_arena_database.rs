@@ -7,7 +7,9 @@ use std::path::{Path, PathBuf};
 use rusqlite::types::Value;
 use rusqlite::{Connection, OptionalExtension as _, params_from_iter};
 
-use crate::{BenchmarkLog, HarnessError, LogValue};
+use crate::error::HarnessError;
+use crate::formats::ompl_log::benchmark_log::BenchmarkLog;
+use crate::formats::ompl_log::log_value::LogValue;
 
 /// The tables, exactly as OMPL's log reader creates them.
 const SCHEMA: &str = "

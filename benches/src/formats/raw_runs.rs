@@ -4,7 +4,11 @@
 use std::io::Write as _;
 use std::path::Path;
 
-use crate::{ExperimentResults, HarnessError, ProblemInstance, RunKey, RunRecord};
+use crate::definition::problem_instance::ProblemInstance;
+use crate::error::HarnessError;
+use crate::execution::executor::RunKey;
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::run_record::RunRecord;
 
 /// The fixed CSV columns before the counters (the trace column comes last).
 pub const CSV_COLUMNS: [&str; 23] = [

@@ -1,6 +1,10 @@
 //! [`ExperimentResults`]: every finished run of an experiment, with how and where it ran.
 
-use crate::{Experiment, MachineInfo, ProblemInstance, RunRecord, RunStatus, Shard};
+use crate::definition::experiment::Experiment;
+use crate::definition::problem_instance::ProblemInstance;
+use crate::execution::shard::Shard;
+use crate::outcome::machine_info::MachineInfo;
+use crate::outcome::run_record::{RunRecord, RunStatus};
 
 /// The outcome of executing an [`Experiment`]: the runs of every problem instance, and what
 /// the outputs must record about the execution (start date, total time, how many runs

@@ -6,7 +6,7 @@ use mit_star::{Configuration, Counters, TracePoint};
 use serde::{Deserialize, Serialize};
 use validity::LENGTH_BUCKET_LABELS;
 
-use crate::PathValidation;
+use crate::path_validation::PathValidation;
 
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

@@ -10,7 +10,7 @@ use plotters::prelude::*;
 use problems::PlanningProblem;
 use robot::{ArmProblem, Kinematics, Shape};
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 use crate::pictures::plot_style::{Figure, save_svg_and_png};
 
 const OBSTACLE: RGBColor = RGBColor(150, 150, 162);

@@ -6,9 +6,11 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use crate::error::HarnessError;
+use crate::outcome::experiment_results::ExperimentResults;
 use crate::pictures::plot_style;
+use crate::pictures::plot_style::planner_colours;
 use crate::statistics::{AnytimeSeries, MedianEstimate, log_time_grid};
-use crate::{ExperimentResults, HarnessError, planner_colours};
 
 /// Points on each curve.
 const GRID_POINTS: usize = 240;

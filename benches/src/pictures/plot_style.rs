@@ -9,7 +9,8 @@ use plotters::coord::Shift;
 use plotters::prelude::{BitMapBackend, DrawingArea, DrawingBackend, IntoDrawingArea, SVGBackend};
 use plotters::style::{FontStyle, RGBColor};
 
-use crate::{HarnessError, PlannerSpec};
+use crate::definition::planner_spec::PlannerSpec;
+use crate::error::HarnessError;
 
 /// A figure plotters can draw on any backend, saved by [`save_svg_and_png`].
 pub(crate) trait Figure {

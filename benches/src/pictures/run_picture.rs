@@ -10,7 +10,7 @@ use problems::Problem;
 use samplers::SampleOrigin;
 use validity::AxisBox;
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 use crate::pictures::plot_style::{Figure, clip_segment, save_svg_and_png};
 
 const OBSTACLE: RGBColor = RGBColor(110, 110, 120);

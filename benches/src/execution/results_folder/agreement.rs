@@ -6,10 +6,13 @@ use std::path::Path;
 
 use rusqlite::{Connection, OpenFlags};
 
+use crate::error::HarnessError;
+use crate::execution::executor::RunKey;
 use crate::execution::results_folder::DATABASE_FILE;
+use crate::execution::run_journal::RunJournal;
 use crate::execution::run_journal::{describe, repeats};
+use crate::execution::shard::Shard;
 use crate::formats::raw_runs;
-use crate::{HarnessError, RunJournal, RunKey, Shard};
 
 /// Checks that `runs.jsonl`, `runs.csv` and `benchmark.db` of `folder` hold the same runs, each
 /// once: the same identities in both raw files, and as many runs in the database. A last line

@@ -18,7 +18,7 @@ use std::time::{Duration, Instant};
 
 use fs4::{FileExt, TryLockError};
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 
 /// The name of the lock file in a results folder.
 pub(crate) const LOCK_FILE: &str = ".mit-star.lock";

@@ -6,7 +6,9 @@ use std::fs::{File, OpenOptions};
 use std::io::{BufRead as _, BufReader, Read as _, Seek as _, SeekFrom};
 use std::path::Path;
 
-use crate::{HarnessError, RunKey, RunRecord};
+use crate::error::HarnessError;
+use crate::execution::executor::RunKey;
+use crate::outcome::run_record::RunRecord;
 
 /// One line of `runs.jsonl`: the run, how many runs executed at the same time, and the line as
 /// written (kept verbatim when the file is rewritten).

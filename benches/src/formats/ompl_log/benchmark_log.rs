@@ -3,9 +3,11 @@
 
 use std::fmt::Write as _;
 
-use crate::{
-    EnumType, ExperimentProperty, ExperimentResults, LogValue, Property, PropertyType, RunRecord,
+use crate::formats::ompl_log::log_value::{
+    EnumType, ExperimentProperty, LogValue, Property, PropertyType,
 };
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::run_record::RunRecord;
 
 /// One planner's block of a log.
 #[derive(Debug, Clone, PartialEq)]

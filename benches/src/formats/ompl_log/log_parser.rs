@@ -1,8 +1,9 @@
 //! Reading OMPL benchmark logs back ([`BenchmarkLog::parse`]), strictly by the grammar.
 
-use crate::{
-    BenchmarkLog, EnumType, ExperimentProperty, HarnessError, LogValue, PlannerLog, Property,
-    PropertyType,
+use crate::error::HarnessError;
+use crate::formats::ompl_log::benchmark_log::{BenchmarkLog, PlannerLog};
+use crate::formats::ompl_log::log_value::{
+    EnumType, ExperimentProperty, LogValue, Property, PropertyType,
 };
 
 /// The lines of a log with a cursor; errors carry 1-based line numbers.

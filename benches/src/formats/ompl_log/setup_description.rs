@@ -1,6 +1,6 @@
 //! The free-text setup description of an OMPL log (`<<<| … |>>>`).
 
-use crate::ExperimentResults;
+use crate::outcome::experiment_results::ExperimentResults;
 
 /// Describes how instance `index` of `results` was run: the experiment, the problem (as a
 /// problem file), the protocol (seeds, shuffling, budget), and how many runs executed
