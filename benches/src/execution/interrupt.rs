@@ -14,7 +14,7 @@ use crate::error::HarnessError;
 /// leaves at once (exit code `128 +` that signal); the raw files are complete up to the last
 /// finished run then.
 ///
-/// While a command reads its inputs ([`ReadingInputs::begin`]), a read may
+/// While a command reads its inputs (`ReadingInputs::begin`), a read may
 /// block (a FIFO, a stalled network file system) where no flag is polled: a signal then leaves
 /// at once, saying so, with the same exit code; nothing was run yet.
 ///

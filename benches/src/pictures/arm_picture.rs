@@ -37,7 +37,7 @@ const SIZE: (u32, u32) = (1500, 820);
 /// Drawn, by depth (far first), in two orthographic views: the scene's boxes, cylinders and
 /// spheres (grey, translucent so that the arm shows through, shaded by a light above and
 /// behind the viewer), over a floor grid at `z = 0` with 0.25 m squares; the robot's collision
-/// spheres at the start (green), at [`WAYPOINTS`] points evenly spaced along the path (orange,
+/// spheres at the start (green), at `WAYPOINTS` points evenly spaced along the path (orange,
 /// translucent) and at the goal (blue); the trajectory of the last link's origin (the hand,
 /// red). Without a path, only the start and the goal are drawn.
 #[derive(Debug, Clone)]
