@@ -57,7 +57,7 @@
 //! | [`budget_duration`], [`deadline_after`], [`BudgetError`], [`short_number`] | time budgets checked into durations; numbers for messages |
 //! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
 //!
-//! The command line and the output formats are described in `docs/experiments.md`.
+//! The command line and the output formats are described in `docs/guide/src/reference/experiment-files.md`.
 //!
 //! # Layout
 //! | folder | what it holds |
