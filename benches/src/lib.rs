@@ -34,6 +34,18 @@
 //! # Ok::<(), mit_star_benches::HarnessError>(())
 //! ```
 //!
+//! # Layout
+//! | folder | what it holds |
+//! |---|---|
+//! | `definition/` | defining experiments: the experiment and its TOML file, shipped experiments, planner and problem specs, parameter overrides, problem sources, instances and their problems |
+//! | `execution/` | running them: the run schedule, the executor, interrupts, the run journal, the results folder (lock, agreement), shards and their merge |
+//! | `outcome/` | what was measured: run records, an experiment's results, the machine |
+//! | `formats/` | the result formats, each writer beside its reader: `ompl_log/` (OMPL logs written and parsed), the Planner Arena database, raw runs (CSV, JSON lines), KPI tables and campaign comparisons |
+//! | `pictures/` | figures of experiments, pictures of 2-D runs and of arm plans, their shared style |
+//! | `statistics/` | medians and their confidence intervals, Clopper–Pearson, anytime series |
+//! | `commands/` | the `mit-star` command line, thin on top of the rest |
+//! | `path_validation.rs`, `budget.rs`, `error.rs` | the independent path check; time budgets; [`HarnessError`] |
+//!
 //! # Catalogue
 //! | item | what it is |
 //! |---|---|
@@ -58,18 +70,6 @@
 //! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
 //!
 //! The command line and the output formats are described in `docs/guide/src/reference/experiment-files.md`.
-//!
-//! # Layout
-//! | folder | what it holds |
-//! |---|---|
-//! | `definition/` | defining experiments: the experiment and its TOML file, shipped experiments, planner and problem specs, parameter overrides, problem sources, instances and their problems |
-//! | `execution/` | running them: the run schedule, the executor, interrupts, the run journal, the results folder (lock, agreement), shards and their merge |
-//! | `outcome/` | what was measured: run records, an experiment's results, the machine |
-//! | `formats/` | the result formats, each writer beside its reader: `ompl_log/` (OMPL logs written and parsed), the Planner Arena database, raw runs (CSV, JSON lines), KPI tables and campaign comparisons |
-//! | `pictures/` | figures of experiments, pictures of 2-D runs and of arm plans, their shared style |
-//! | `statistics/` | medians and their confidence intervals, Clopper–Pearson, anytime series |
-//! | `commands/` | the `mit-star` command line, thin on top of the rest |
-//! | `path_validation.rs`, `budget.rs`, `error.rs` | the independent path check; time budgets; [`HarnessError`] |
 
 #![forbid(unsafe_code)]
 
