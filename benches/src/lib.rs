@@ -34,6 +34,18 @@
 //! # Ok::<(), mit_star_benches::HarnessError>(())
 //! ```
 //!
+//! # Layout
+//! | folder | what it holds |
+//! |---|---|
+//! | `definition/` | defining experiments: the experiment and its TOML file, shipped experiments, planner and problem specs, parameter overrides, problem sources, instances and their problems |
+//! | `execution/` | running them: the run schedule, the executor, interrupts, the run journal, the results folder (lock, agreement), shards and their merge |
+//! | `outcome/` | what was measured: run records, an experiment's results, the machine |
+//! | `formats/` | the result formats, each writer beside its reader: `ompl_log/` (OMPL logs written and parsed), the Planner Arena database, raw runs (CSV, JSON lines), KPI tables and campaign comparisons |
+//! | `pictures/` | figures of experiments, pictures of 2-D runs and of arm plans, their shared style |
+//! | `statistics/` | medians and their confidence intervals, Clopper–Pearson, anytime series |
+//! | `commands/` | the `mit-star` command line, thin on top of the rest |
+//! | `path_validation.rs`, `budget.rs`, `error.rs` | the independent path check; time budgets; [`HarnessError`] |
+//!
 //! # Catalogue
 //! | item | what it is |
 //! |---|---|
@@ -61,72 +73,48 @@
 
 #![forbid(unsafe_code)]
 
-mod arm_picture;
-mod benchmark_log;
 mod budget;
-mod campaign_comparison;
 pub mod commands;
+mod definition;
 mod error;
-mod executor;
-mod experiment;
-mod experiment_figure;
-pub mod experiment_file;
-mod experiment_results;
-mod instance_problem;
-mod interrupt;
-mod kpi_table;
-mod log_parser;
-mod log_value;
-mod machine_info;
-mod merge_parts;
-mod parameter_overrides;
+mod execution;
+mod formats;
+mod outcome;
 mod path_validation;
-mod planner_arena_database;
-mod planner_spec;
-mod plot_style;
-mod problem_instance;
-mod problem_source;
-mod problem_spec;
-mod raw_runs;
-mod results_folder;
-mod run_job;
-mod run_journal;
-mod run_picture;
-mod run_record;
-mod setup_text;
-mod shard;
-mod shipped_experiment;
+mod pictures;
 pub mod statistics;
 
-pub use arm_picture::ArmPicture;
-pub use benchmark_log::{BenchmarkLog, OMPL_STATUS, PlannerLog};
 pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};
-pub use campaign_comparison::{CampaignComparison, Change, ComparedRow};
+pub use definition::experiment::Experiment;
+pub use definition::experiment_file;
+pub use definition::parameter_overrides::ParameterOverrides;
+pub use definition::planner_spec::{PlannerSpec, parse_configuration};
+pub use definition::problem_instance::ProblemInstance;
+pub use definition::problem_kind::InstanceProblem;
+pub use definition::problem_source::{ProblemFile, ProblemSource};
+pub use definition::problem_spec::ProblemSpec;
+pub use definition::shipped_experiment::ShippedExperiment;
 pub use error::HarnessError;
-pub use executor::{ExecutionOptions, Executor, RecordSink, RunKey};
-pub use experiment::Experiment;
-pub use experiment_figure::ExperimentFigure;
-pub use experiment_results::ExperimentResults;
-pub use instance_problem::InstanceProblem;
-pub use interrupt::Interrupt;
-pub use kpi_table::{KpiRow, KpiTable, t_init_gain};
-pub use log_value::{EnumType, ExperimentProperty, LogValue, Property, PropertyType};
-pub use machine_info::{MachineInfo, iso_timestamp};
-pub use merge_parts::{MergeReport, merge_parts};
-pub use parameter_overrides::ParameterOverrides;
+pub use execution::executor::{ExecutionOptions, Executor, RecordSink, RunKey};
+pub use execution::interrupt::Interrupt;
+pub use execution::results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
+pub use execution::run_job::{RUN_RECORD_BYTES, RunJob};
+pub use execution::run_journal::{RunJournal, results_from_records};
+pub use execution::shard::{SHARD_FILE, Shard};
+pub use execution::shard_merge::{MergeReport, merge_parts};
+pub use formats::campaign_comparison::{CampaignComparison, Change, ComparedRow};
+pub use formats::kpi_table::{KpiRow, KpiTable, t_init_gain};
+pub use formats::ompl_log::benchmark_log::{BenchmarkLog, OMPL_STATUS, PlannerLog};
+pub use formats::ompl_log::log_value::{
+    EnumType, ExperimentProperty, LogValue, Property, PropertyType,
+};
+pub use formats::planner_arena_database::PlannerArenaDatabase;
+pub use formats::raw_runs::{CSV_COLUMNS, write_runs_csv, write_runs_jsonl};
+pub use outcome::experiment_results::ExperimentResults;
+pub use outcome::machine_info::{MachineInfo, iso_timestamp};
+pub use outcome::run_record::{RunRecord, RunStatus};
 pub use path_validation::{PathValidation, ValidationMethod};
-pub use planner_arena_database::PlannerArenaDatabase;
-pub use planner_spec::{PlannerSpec, parse_configuration};
-pub use plot_style::planner_colours;
-pub use problem_instance::ProblemInstance;
-pub use problem_source::{ProblemFile, ProblemSource};
-pub use problem_spec::ProblemSpec;
-pub use raw_runs::{CSV_COLUMNS, write_runs_csv, write_runs_jsonl};
-pub use results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
-pub use run_job::{RUN_RECORD_BYTES, RunJob};
-pub use run_journal::{RunJournal, results_from_records};
-pub use run_picture::RunPicture;
-pub use run_record::{RunRecord, RunStatus};
-pub(crate) use setup_text::setup_description;
-pub use shard::{SHARD_FILE, Shard};
-pub use shipped_experiment::ShippedExperiment;
+pub use pictures::arm_picture::ArmPicture;
+pub use pictures::experiment_figure::ExperimentFigure;
+pub use pictures::plot_style::planner_colours;
+pub use pictures::run_picture::RunPicture;

@@ -8,12 +8,23 @@ use std::time::SystemTime;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
-use crate::{
-    ExecutionOptions, Executor, Experiment, ExperimentResults, HarnessError, KpiTable, MachineInfo,
-    ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource, ProblemSpec, ResultsFolder,
-    RunJob, RunJournal, RunRecord, Shard, ShippedExperiment, iso_timestamp, parse_configuration,
-    results_from_records,
-};
+use crate::definition::experiment::Experiment;
+use crate::definition::parameter_overrides::ParameterOverrides;
+use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
+use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_source::ProblemSource;
+use crate::definition::problem_spec::ProblemSpec;
+use crate::definition::shipped_experiment::ShippedExperiment;
+use crate::error::HarnessError;
+use crate::execution::executor::{ExecutionOptions, Executor};
+use crate::execution::results_folder::ResultsFolder;
+use crate::execution::run_job::RunJob;
+use crate::execution::run_journal::{RunJournal, results_from_records};
+use crate::execution::shard::Shard;
+use crate::formats::kpi_table::KpiTable;
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::machine_info::{MachineInfo, iso_timestamp};
+use crate::outcome::run_record::RunRecord;
 
 /// Options of `mit-star bench`.
 ///
@@ -255,7 +266,7 @@ impl BenchArgs {
             let first = &problems[0];
             let dims: Vec<String> = first.dimensions.iter().map(|d| format!("n{d}")).collect();
             let more = if problems.len() > 1 { "-and-more" } else { "" };
-            crate::experiment::safe_name(&format!(
+            crate::definition::experiment::safe_name(&format!(
                 "{}-{}{more}",
                 first.source.label(),
                 dims.join("-")

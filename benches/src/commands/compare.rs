@@ -5,7 +5,11 @@ use std::path::PathBuf;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
-use crate::{CampaignComparison, HarnessError, KpiTable, ResultsFolder, Shard};
+use crate::error::HarnessError;
+use crate::execution::results_folder::ResultsFolder;
+use crate::execution::shard::Shard;
+use crate::formats::campaign_comparison::CampaignComparison;
+use crate::formats::kpi_table::KpiTable;
 
 /// Options of `mit-star compare`.
 #[derive(Debug, Args)]

@@ -4,7 +4,8 @@ use clap::Args;
 use mit_star::{Configuration, Parameters};
 
 use crate::commands::CommandOutcome;
-use crate::{HarnessError, ShippedExperiment};
+use crate::definition::shipped_experiment::ShippedExperiment;
+use crate::error::HarnessError;
 
 /// Options of `mit-star problems`.
 #[derive(Debug, Args)]

@@ -5,7 +5,9 @@ use std::path::PathBuf;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
-use crate::{HarnessError, KpiTable, merge_parts};
+use crate::error::HarnessError;
+use crate::execution::shard_merge::merge_parts;
+use crate::formats::kpi_table::KpiTable;
 
 /// Options of `mit-star merge`.
 #[derive(Debug, Args)]

@@ -30,7 +30,7 @@ pub use listings::{ExperimentsArgs, ProblemsArgs};
 pub use merge::MergeArgs;
 pub use plan::PlanArgs;
 
-use crate::HarnessError;
+use crate::error::HarnessError;
 
 /// `mit-star`: run MIT*, EIT* and their ablations on benchmark problems, and the paper's
 /// experiments, producing OMPL logs, Planner Arena databases, plots and KPI tables.

@@ -6,14 +6,20 @@ use std::time::Instant;
 
 use clap::Args;
 
+use crate::budget::{budget_duration, deadline_after, short_number};
 use crate::commands::CommandOutcome;
-use crate::interrupt::ReadingInputs;
-use crate::kpi_table::number;
-use crate::{
-    ArmPicture, HarnessError, ParameterOverrides, PlannerSpec, ProblemInstance, ProblemSource,
-    RunJob, RunPicture, RunRecord, RunStatus, budget_duration, deadline_after, parse_configuration,
-    problem_source::sanitise, short_number,
-};
+use crate::definition::parameter_overrides::ParameterOverrides;
+use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
+use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_source::ProblemSource;
+use crate::definition::problem_source::sanitise;
+use crate::error::HarnessError;
+use crate::execution::interrupt::ReadingInputs;
+use crate::execution::run_job::RunJob;
+use crate::formats::kpi_table::number;
+use crate::outcome::run_record::{RunRecord, RunStatus};
+use crate::pictures::arm_picture::ArmPicture;
+use crate::pictures::run_picture::RunPicture;
 
 /// Options of `mit-star plan`.
 #[derive(Debug, Args)]

@@ -1,0 +1,28 @@
+//! Defining experiments: what is to run, decided and checked before anything runs.
+//!
+//! - [`experiment`]: an [`Experiment`](crate::Experiment), planners × problem instances × runs,
+//!   with its seed and confidence; [`experiment_file`]: its TOML file format;
+//!   [`shipped_experiment`]: the experiment files embedded in the binary.
+//! - [`planner_spec`]: one planner of an experiment (a configuration and its parameters);
+//!   [`parameter_overrides`]: `key = value` changes to the planners' parameters.
+//! - [`problem_spec`]: one problem of an experiment over several dimensions and layouts;
+//!   [`problem_source`]: where it comes from (a built-in family, a problem file, a
+//!   MotionBenchMaker folder); [`problem_instance`]: one concrete instance (id, dimension,
+//!   layout, time budget); [`problem_kind`]: the problem an instance plans on, a box world or an
+//!   arm, and how each kind builds planners, checks paths and describes itself.
+//!
+//! May use: the planner and problem crates (`mit-star`, `problems`, `robot`, `spaces`,
+//! `validity`), [`crate::error`], [`crate::budget`] and [`crate::path_validation`]; from
+//! execution only the size of a run record (`RUN_RECORD_BYTES`, for the memory check of an
+//! experiment). Nothing here runs a planner to completion, writes a results file or draws.
+
+pub mod experiment_file;
+
+pub(crate) mod experiment;
+pub(crate) mod parameter_overrides;
+pub(crate) mod planner_spec;
+pub(crate) mod problem_instance;
+pub(crate) mod problem_kind;
+pub(crate) mod problem_source;
+pub(crate) mod problem_spec;
+pub(crate) mod shipped_experiment;

@@ -1,0 +1,230 @@
+//! [`InstanceProblem`]: the problem of an experiment's instance, whatever its kind.
+
+use std::sync::Arc;
+
+use mit_star::{BuildError, Configuration, Parameters, Planner};
+use problems::{PlanningProblem, Problem, ProblemError};
+use robot::{ArmProblem, MotionAudit};
+
+/// Configurations the continuous audit of an arm path may compute per segment before it calls
+/// the segment undecided (a failure): far more than a path with a millimetre of clearance
+/// needs.
+const AUDIT_BUDGET: u64 = 2_000_000;
+use spaces::StateSpace;
+
+use crate::path_validation::PathValidation;
+
+/// The problem of one [`ProblemInstance`](crate::ProblemInstance): a box world (the PDT
+/// families and problem files) or a robot arm in a scene (MotionBenchMaker). Every kind plans
+/// through [`PlanningProblem`]; what differs is how a path is validated independently, what a
+/// picture shows, and what a log describes.
+// A handful of instances per experiment: the size of the box variant does not matter.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone)]
+pub enum InstanceProblem {
+    /// A point among axis-aligned boxes in `R^n`.
+    Boxes(Problem),
+    /// The Panda among a MotionBenchMaker scene's primitives (shared: the scene and checker
+    /// are built once per instance).
+    Arm(Arc<ArmProblem>),
+}
+
+/// Arm problems are equal when they are the same problem of the same folder at the same
+/// resolution.
+impl PartialEq for InstanceProblem {
+    fn eq(&self, other: &Self) -> bool {
+        match (self, other) {
+            (Self::Boxes(a), Self::Boxes(b)) => a == b,
+            (Self::Arm(a), Self::Arm(b)) => {
+                Arc::ptr_eq(a, b)
+                    || (a.name() == b.name()
+                        && a.resolution() == b.resolution()
+                        && a.start() == b.start()
+                        && a.goals() == b.goals())
+            }
+            _ => false,
+        }
+    }
+}
+
+impl InstanceProblem {
+    /// The box-world problem, if this is one.
+    pub fn as_boxes(&self) -> Option<&Problem> {
+        match self {
+            Self::Boxes(p) => Some(p),
+            Self::Arm(_) => None,
+        }
+    }
+
+    /// The arm problem, if this is one.
+    pub fn as_arm(&self) -> Option<&Arc<ArmProblem>> {
+        match self {
+            Self::Boxes(_) => None,
+            Self::Arm(p) => Some(p),
+        }
+    }
+
+    /// Allows (or not) a check that may miss thin obstacles: a box world's step coarser than
+    /// its thinnest obstacle ([`Problem::allowing_coarse_step`]), an arm's motion checked with
+    /// certification off ([`ArmProblem::allowing_uncertified_motion`]).
+    #[must_use]
+    pub fn allowing_coarse_step(self, allow: bool) -> Self {
+        match self {
+            Self::Boxes(p) => Self::Boxes(p.allowing_coarse_step(allow)),
+            Self::Arm(p) => Self::Arm(Arc::new(
+                Arc::unwrap_or_clone(p).allowing_uncertified_motion(allow),
+            )),
+        }
+    }
+
+    /// The collision-check step, or why the problem refuses it ([`PlanningProblem::check_step`]).
+    ///
+    /// # Errors
+    /// [`ProblemError::StepTooCoarse`] for a box world whose thinnest box is thinner than the
+    /// step (unless allowed).
+    pub fn check_step(&self) -> Result<f64, ProblemError> {
+        match self {
+            Self::Boxes(p) => PlanningProblem::check_step(p),
+            Self::Arm(p) => p.check_step(),
+        }
+    }
+
+    /// The dimension of the configuration space.
+    pub fn dimension(&self) -> usize {
+        match self {
+            Self::Boxes(p) => p.dimension(),
+            Self::Arm(p) => p.space().dimension(),
+        }
+    }
+
+    /// The start state.
+    pub fn start(&self) -> &[f64] {
+        match self {
+            Self::Boxes(p) => p.start(),
+            Self::Arm(p) => p.start(),
+        }
+    }
+
+    /// The goal states.
+    pub fn goals(&self) -> &[Vec<f64>] {
+        match self {
+            Self::Boxes(p) => p.goals(),
+            Self::Arm(p) => p.goals(),
+        }
+    }
+
+    /// The collision-check resolution (a fraction of the maximum extent).
+    pub fn resolution(&self) -> f64 {
+        match self {
+            Self::Boxes(p) => p.resolution(),
+            Self::Arm(p) => p.resolution(),
+        }
+    }
+
+    /// The collision-check step in the space's units.
+    pub fn step(&self) -> f64 {
+        match self {
+            Self::Boxes(p) => p.step(),
+            Self::Arm(p) => p.resolution() * p.space().maximum_extent(),
+        }
+    }
+
+    /// The known optimal cost, if any.
+    pub fn optimum(&self) -> Option<f64> {
+        match self {
+            Self::Boxes(p) => p.optimum(),
+            Self::Arm(_) => None,
+        }
+    }
+
+    /// The distance from the start to the nearest goal, ignoring obstacles.
+    pub fn straight_line_cost(&self) -> f64 {
+        match self {
+            Self::Boxes(p) => p.straight_line_cost(),
+            Self::Arm(p) => p
+                .goals()
+                .iter()
+                .map(|g| p.space().distance(p.start(), g))
+                .fold(f64::INFINITY, f64::min),
+        }
+    }
+
+    /// Builds `configuration` for this problem with `parameters`.
+    ///
+    /// # Errors
+    /// As [`mit_star::build_planner`].
+    pub fn build_planner(
+        &self,
+        configuration: Configuration,
+        parameters: &Parameters,
+    ) -> Result<Box<dyn Planner + Send>, BuildError> {
+        match self {
+            Self::Boxes(p) => mit_star::build_planner(configuration, p, parameters),
+            Self::Arm(p) => mit_star::build_planner(configuration, &**p, parameters),
+        }
+    }
+
+    /// `false` for an arm problem whose start or goal is in collision (MotionBenchMaker has
+    /// a few; experiments skip them). Box worlds refuse such ends when they are built.
+    pub fn ends_are_valid(&self) -> bool {
+        match self {
+            Self::Boxes(_) => true,
+            Self::Arm(p) => p.ends_are_valid(),
+        }
+    }
+
+    /// Validates a returned path independently of the planner: exactly for box worlds,
+    /// continuously in `f64` for arms ([`PathValidation::check_continuous`]).
+    pub fn validate(&self, path: &[Vec<f64>], reported_cost: f64) -> PathValidation {
+        match self {
+            Self::Boxes(p) => PathValidation::check(p, path, reported_cost),
+            Self::Arm(p) => PathValidation::check_continuous(
+                &MotionAudit::new(p.robot(), p.scene()),
+                (p.start(), p.goals()),
+                path,
+                reported_cost,
+                AUDIT_BUDGET,
+            ),
+        }
+    }
+
+    /// The problem as text for logs: a TOML problem file for box worlds.
+    pub fn describe(&self) -> String {
+        match self {
+            Self::Boxes(p) => p.to_toml_string(),
+            Self::Arm(p) => describe_arm(p),
+        }
+    }
+}
+
+/// An arm problem as text for logs: robot, scene, ends and resolution, one `key = value` per
+/// line.
+fn describe_arm(p: &ArmProblem) -> String {
+    let numbers = |q: &[f64]| {
+        let v: Vec<String> = q.iter().map(|x| format!("{x}")).collect();
+        format!("[{}]", v.join(", "))
+    };
+    let mut kinds = [0usize; 3];
+    for o in p.scene().obstacles() {
+        kinds[match o.shape() {
+            robot::Shape::Cuboid { .. } => 0,
+            robot::Shape::Cylinder { .. } => 1,
+            robot::Shape::Sphere { .. } => 2,
+        }] += 1;
+    }
+    format!(
+        "name = \"{}\"\nrobot = \"{}\"\njoints = {}\nspheres = {}\nself_collision_pairs = {}\n\
+         obstacles = {{ boxes = {}, cylinders = {}, spheres = {} }}\nstart = {}\ngoal = {}\nresolution = {}\n",
+        p.name(),
+        p.robot().name(),
+        p.space().dimension(),
+        p.robot().spheres().len(),
+        p.robot().self_collision_pairs().len(),
+        kinds[0],
+        kinds[1],
+        kinds[2],
+        numbers(p.start()),
+        numbers(&p.goals()[0]),
+        p.resolution()
+    )
+}

@@ -1,0 +1,161 @@
+//! [`ProblemSpec`]: a problem of an experiment over several dimensions and instances.
+
+use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_source::ProblemSource;
+use crate::error::HarnessError;
+
+/// A problem entry of an experiment: a source, the dimensions to run it in with one time
+/// budget per dimension, the layout seeds (seeded families), and optionally another
+/// collision-check resolution.
+///
+/// ```
+/// use mit_star_benches::{ProblemSource, ProblemSpec};
+/// let spec = ProblemSpec {
+///     source: ProblemSource::parse("random-rectangles", None)?,
+///     dimensions: vec![4, 8],
+///     budgets: vec![0.8, 2.0],
+///     instances: vec![0, 1, 2],
+///     resolution: None,
+///     allow_coarse_step: false,
+/// };
+/// let instances = spec.instances()?;
+/// assert_eq!(instances.len(), 6);
+/// assert_eq!(instances[4].id, "random-rectangles-n8-i1");
+/// assert_eq!(instances[4].budget, 2.0);
+/// # Ok::<(), mit_star_benches::HarnessError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProblemSpec {
+    /// The problem.
+    pub source: ProblemSource,
+    /// Dimensions (for a problem file: its own dimension).
+    pub dimensions: Vec<usize>,
+    /// Time budget per run in seconds, one per dimension.
+    pub budgets: Vec<f64>,
+    /// Layout seeds (one `0` for families that do not use a seed).
+    pub instances: Vec<u64>,
+    /// Collision-check resolution, if not the problem's own.
+    pub resolution: Option<f64>,
+    /// Allow checks that can miss thin obstacles: a box world's step coarser than its
+    /// thinnest obstacle, an arm planned with certification off
+    /// ([`ProblemInstance`]'s `allowing_coarse_step`). A problem file's own
+    /// `allow_coarse_step` stands either way.
+    pub allow_coarse_step: bool,
+}
+
+impl ProblemSpec {
+    /// Builds every instance: dimensions in order, and instances within each dimension.
+    ///
+    /// # Errors
+    /// As [`ProblemSource::build`]; [`HarnessError::Usage`] when the budgets do not match the
+    /// dimensions, a budget is not positive, or several instances are asked of a family that
+    /// does not use a seed.
+    pub fn instances(&self) -> Result<Vec<ProblemInstance>, HarnessError> {
+        if self.budgets.len() != self.dimensions.len() {
+            return Err(HarnessError::Usage(format!(
+                "problem `{}`: {} time budgets for {} dimensions",
+                self.source.label(),
+                self.budgets.len(),
+                self.dimensions.len()
+            )));
+        }
+        for &b in &self.budgets {
+            crate::budget_duration(b).map_err(|source| HarnessError::Budget {
+                what: format!("problem `{}`, `time`", self.source.label()),
+                source,
+            })?;
+        }
+        let seeded = self.source.is_seeded();
+        if !seeded && self.instances.len() > 1 {
+            return Err(HarnessError::Usage(format!(
+                "problem `{}` does not depend on a seed: it has one instance",
+                self.source.label()
+            )));
+        }
+        let label = self.source.label();
+        let mut out = Vec::new();
+        for (&dimension, &budget) in self.dimensions.iter().zip(&self.budgets) {
+            for &instance in &self.instances {
+                let mut problem = self.source.build(dimension, instance, self.resolution)?;
+                if self.allow_coarse_step {
+                    problem = problem.allowing_coarse_step(true);
+                }
+                if !problem.ends_are_valid() {
+                    eprintln!(
+                        "note: {} problem {instance}: the start or goal is in collision; skipped",
+                        label
+                    );
+                    continue;
+                }
+                problem
+                    .check_step()
+                    .map_err(|source| HarnessError::Problem {
+                        name: label.clone(),
+                        dimension,
+                        source,
+                    })?;
+                let id = ProblemInstance::make_id(&label, dimension, seeded.then_some(instance));
+                out.push(ProblemInstance {
+                    id,
+                    label: label.clone(),
+                    source: self.source.clone(),
+                    dimension,
+                    instance: if seeded { instance } else { 0 },
+                    budget,
+                    problem,
+                });
+            }
+        }
+        Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(name: &str, dims: Vec<usize>, budgets: Vec<f64>, instances: Vec<u64>) -> ProblemSpec {
+        ProblemSpec {
+            source: ProblemSource::parse(name, None).unwrap(),
+            dimensions: dims,
+            budgets,
+            instances,
+            resolution: None,
+            allow_coarse_step: false,
+        }
+    }
+
+    #[test]
+    fn bad_specs_are_refused_before_building() {
+        let e = spec("flanking-gap", vec![4, 8], vec![0.1], vec![0]).instances();
+        assert!(
+            e.unwrap_err()
+                .to_string()
+                .contains("1 time budgets for 2 dimensions")
+        );
+        let e = spec("flanking-gap", vec![4], vec![-0.1], vec![0]).instances();
+        assert!(e.unwrap_err().to_string().contains("-0.1"));
+        let e = spec("flanking-gap", vec![4], vec![0.1], vec![0, 1]).instances();
+        assert!(
+            e.unwrap_err()
+                .to_string()
+                .contains("does not depend on a seed")
+        );
+        let e = spec("flanking-gap", vec![1], vec![0.1], vec![0]).instances();
+        assert!(matches!(e, Err(HarnessError::Problem { dimension: 1, .. })));
+    }
+
+    #[test]
+    fn ids_are_unique_and_titles_readable() {
+        let s = spec("goal-enclosure", vec![2, 4], vec![0.05, 0.1], vec![0]);
+        let i = s.instances().unwrap();
+        assert_eq!(i[0].id, "goal-enclosure-n2");
+        assert_eq!(i[1].title(), "goal-enclosure R^4");
+        assert_eq!(i[1].budget, 0.1);
+        let r = spec("random-rectangles", vec![2], vec![0.1], vec![5])
+            .instances()
+            .unwrap();
+        assert_eq!(r[0].title(), "random-rectangles R^2 #5");
+        assert_eq!(r[0].instance, 5);
+    }
+}

@@ -1,0 +1,458 @@
+//! [`ResultsFolder`]: where an experiment's outputs go, checked before any work starts.
+
+mod agreement;
+pub(crate) mod folder_lock;
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use folder_lock::FolderLock;
+
+use crate::definition::experiment::Experiment;
+use crate::error::HarnessError;
+use crate::execution::run_journal::{RunJournal, results_from_records};
+use crate::execution::shard::Shard;
+use crate::formats::kpi_table::KpiTable;
+use crate::formats::ompl_log::benchmark_log::BenchmarkLog;
+use crate::formats::planner_arena_database::PlannerArenaDatabase;
+use crate::outcome::experiment_results::ExperimentResults;
+use crate::pictures::experiment_figure::ExperimentFigure;
+
+/// The name of the Planner Arena database in a results folder.
+pub const DATABASE_FILE: &str = "benchmark.db";
+
+/// A results folder:
+///
+/// | file | what it holds |
+/// |---|---|
+/// | `experiment.toml` | the experiment as run (command-line overrides applied): rerun it with `mit-star bench experiment.toml`; a folder holds one experiment, and running it again resumes it |
+/// | `runs.csv` | one row per run (one line each), appended the moment the run finishes: every per-run figure, counters, the trace |
+/// | `runs.jsonl` | one JSON object per run, appended likewise, with the trace, the path and the validation: the journal every summary is rebuilt from |
+/// | `logs/<instance>.log` | one OMPL benchmark log per problem instance, rebuilt from every recorded run |
+/// | `benchmark.db` | the Planner Arena database: each run committed as it finishes, then rebuilt from every recorded run |
+/// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
+/// | `kpi.md` | the KPI tables |
+/// | `shard.toml` | which part of the experiment's runs the folder holds (`bench --shard K/N` only) |
+/// | `.mit-star.lock` | the lock of the one process writing the folder, with its process id and command line while it runs |
+///
+/// A folder has one writer at a time: [`prepare`](Self::prepare) takes an advisory lock on
+/// `.mit-star.lock` (`flock`), held until the `ResultsFolder` is dropped, and refuses a folder
+/// another process writes, naming it. The operating system releases the lock when the writer
+/// exits however it exits, so a killed writer leaves no stale lock. Readers
+/// ([`read_results`](Self::read_results), `merge` reading its parts) take it shared, and refuse
+/// a folder being written.
+///
+/// [`prepare`](Self::prepare) creates the folder, checks it is writable and opens the
+/// database before any planning, so that a bad folder fails fast. Nothing is ever written outside the folder: its
+/// files are the fixed names above and instance ids, which are file-name safe.
+#[derive(Debug)]
+pub struct ResultsFolder {
+    path: PathBuf,
+    database: PlannerArenaDatabase,
+    _lock: FolderLock,
+}
+
+impl ResultsFolder {
+    /// Creates the folder (and `logs/`, `plots/`), takes its write lock, checks that files can
+    /// be written in it, and opens (or creates) its database.
+    ///
+    /// # Errors
+    /// [`HarnessError::FolderLocked`] if another process writes (or reads) the folder,
+    /// [`HarnessError::OutputFolder`] if the folder cannot be created or written,
+    /// [`HarnessError::Database`] if an existing `benchmark.db` is not a database.
+    pub fn prepare(path: &Path) -> Result<Self, HarnessError> {
+        std::fs::create_dir_all(path).map_err(|source| HarnessError::OutputFolder {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let lock = FolderLock::exclusive(path)?;
+        writable_folder(path)?;
+        for dir in [path.join("logs"), path.join("plots")] {
+            writable_folder(&dir)?;
+        }
+        let database = PlannerArenaDatabase::open(&path.join(DATABASE_FILE))?;
+        Ok(Self {
+            path: path.to_path_buf(),
+            database,
+            _lock: lock,
+        })
+    }
+
+    /// The folder.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The database.
+    pub fn database(&self) -> &PlannerArenaDatabase {
+        &self.database
+    }
+
+    /// Records every run of `results` in the folder as `bench` does, for library use:
+    /// [`claim`](Self::claim)s the folder for `results.experiment`, appends the runs not yet
+    /// recorded through a [`RunJournal`], then [`finish`](Self::finish)es from every run
+    /// recorded. Returns the files written. Nothing recorded before is overwritten.
+    ///
+    /// # Errors
+    /// Those of [`claim`](Self::claim), [`RunJournal::open`], [`RunJournal::append`] and
+    /// [`finish`](Self::finish).
+    pub fn write(
+        &mut self,
+        results: &ExperimentResults,
+        plots: bool,
+    ) -> Result<Vec<PathBuf>, HarnessError> {
+        self.claim(&results.experiment)?;
+        let mut journal = RunJournal::open(&self.path, &results.instances)?;
+        for (index, runs) in results.runs.iter().enumerate() {
+            for record in runs {
+                if !journal.recorded().contains(&record.key()) {
+                    journal.append(results, index, record)?;
+                }
+            }
+        }
+        drop(journal);
+        let all = results_from_records(
+            results,
+            RunJournal::read_records(&self.path)?,
+            &results.instances,
+        );
+        self.finish(&all, plots)
+    }
+
+    /// Every run recorded in the results folder `path`, as results of the experiment in its
+    /// `experiment.toml` (for reading a finished campaign back, e.g. `mit-star compare`).
+    /// Reads under the folder's shared lock, and only a folder whose files agree: `runs.jsonl`
+    /// and `runs.csv` hold the same runs, each once, and the database as many.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] if `path` is not a results folder;
+    /// [`HarnessError::FolderLocked`] if another process is writing it;
+    /// [`HarnessError::FolderInconsistent`] naming each file's count if they disagree; the
+    /// errors of reading the experiment (its problems included) and the raw runs.
+    pub fn read_results(path: &Path) -> Result<ExperimentResults, HarnessError> {
+        let file = path.join("experiment.toml");
+        if !file.is_file() {
+            return Err(HarnessError::Usage(format!(
+                "`{}` is not a results folder (it has no experiment.toml)",
+                path.display()
+            )));
+        }
+        let _lock = FolderLock::shared(path)?;
+        agreement::check_agreement(path)?;
+        let experiment = Experiment::from_file(&file)?;
+        let instances = experiment.instances()?;
+        let template = ExperimentResults {
+            experiment,
+            instances: instances.clone(),
+            runs: Vec::new(),
+            started_at: String::new(),
+            total_time: 0.0,
+            concurrency: 1,
+            interrupted: false,
+            machine: crate::MachineInfo::detect(),
+        };
+        Ok(results_from_records(
+            &template,
+            RunJournal::read_records(path)?,
+            &instances,
+        ))
+    }
+
+    /// Claims the folder for `experiment`: writes `experiment.toml` if the folder holds none,
+    /// and refuses a folder that holds another experiment (its runs would be mixed with this
+    /// one's) or runs without an `experiment.toml`. The same experiment again resumes: runs
+    /// already recorded are skipped.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] naming both experiments, or the runs of unknown origin;
+    /// [`HarnessError::Io`] if the file cannot be written.
+    pub fn claim(&self, experiment: &Experiment) -> Result<PathBuf, HarnessError> {
+        let path = self.path.join("experiment.toml");
+        let text = experiment.to_toml();
+        match std::fs::read_to_string(&path) {
+            Ok(existing) if existing == text => Ok(path),
+            Ok(existing) => {
+                let other = existing
+                    .lines()
+                    .find_map(|l| l.strip_prefix("name = "))
+                    .unwrap_or("another experiment")
+                    .trim_matches('"')
+                    .to_owned();
+                Err(HarnessError::Usage(format!(
+                    "`{}` holds the results of experiment `{other}` (see its experiment.toml), \
+                     not those of `{}` as defined now; write to another --output folder \
+                     (a folder is resumed only by the same experiment)",
+                    self.path.display(),
+                    experiment.name
+                )))
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                let has_runs = ["runs.jsonl", "runs.csv"]
+                    .iter()
+                    .any(|f| std::fs::metadata(self.path.join(f)).is_ok_and(|m| m.len() > 0));
+                if has_runs {
+                    return Err(HarnessError::Usage(format!(
+                        "`{}` holds runs but no experiment.toml, so they cannot be told apart \
+                         from those of `{}`; write to another --output folder",
+                        self.path.display(),
+                        experiment.name
+                    )));
+                }
+                write_replacing(&path, text.as_bytes())?;
+                Ok(path)
+            }
+            Err(source) => Err(HarnessError::Io { path, source }),
+        }
+    }
+
+    /// Claims the folder for `shard` of its experiment (after [`claim`](Self::claim)): a shard's
+    /// folder records which one in [`SHARD_FILE`](crate::SHARD_FILE). Refuses a folder holding
+    /// another shard, a shard's folder for the whole experiment, and a folder holding runs of
+    /// the whole experiment for a shard.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] naming both; [`HarnessError::Io`] if the file cannot be read
+    /// or written.
+    pub fn claim_shard(&self, shard: Option<Shard>) -> Result<(), HarnessError> {
+        let existing = Shard::read(&self.path)?;
+        let folder = self.path.display();
+        match (existing, shard) {
+            (Some(e), Some(s)) if e == s => Ok(()),
+            (Some(e), Some(s)) => Err(HarnessError::Usage(format!(
+                "`{folder}` holds shard {e} of the experiment, not {s}; write to another --output folder"
+            ))),
+            (Some(e), None) => Err(HarnessError::Usage(format!(
+                "`{folder}` holds shard {e} of the experiment; resume it with --shard {e}, or                  write the whole experiment to another --output folder"
+            ))),
+            (None, Some(s)) => {
+                let has_runs =
+                    std::fs::metadata(self.path.join("runs.jsonl")).is_ok_and(|m| m.len() > 0);
+                if has_runs {
+                    return Err(HarnessError::Usage(format!(
+                        "`{folder}` holds runs of the whole experiment; write shard {s} to                          another --output folder"
+                    )));
+                }
+                write_replacing(&self.path.join(crate::SHARD_FILE), s.to_toml().as_bytes())
+            }
+            (None, None) => Ok(()),
+        }
+    }
+
+    /// Rebuilds everything derived from the raw runs — one OMPL `.log` per instance, the
+    /// Planner Arena database, plots and `kpi.md`, each replaced atomically — from `results`,
+    /// every run recorded in the folder. The raw files are the journal's and are not touched.
+    ///
+    /// # Errors
+    /// Whatever cannot be written.
+    pub fn finish(
+        &mut self,
+        results: &ExperimentResults,
+        plots: bool,
+    ) -> Result<Vec<PathBuf>, HarnessError> {
+        let mut files = vec![
+            self.path.join("experiment.toml"),
+            self.path.join("runs.csv"),
+            self.path.join("runs.jsonl"),
+        ];
+        let fresh = self.path.join(format!("{DATABASE_FILE}.new"));
+        for stale in [
+            fresh.clone(),
+            self.path.join(format!("{DATABASE_FILE}.new-journal")),
+        ] {
+            let _ = std::fs::remove_file(stale);
+        }
+        let mut database = PlannerArenaDatabase::open(&fresh)?;
+        for (index, instance) in results.instances.iter().enumerate() {
+            if results.runs[index].is_empty() {
+                continue;
+            }
+            let log = BenchmarkLog::from_results(results, index);
+            let path = self.path.join("logs").join(format!("{}.log", instance.id));
+            write_replacing(&path, log.to_text().as_bytes())?;
+            files.push(path);
+            database.insert(&log)?;
+            if plots {
+                let svg = self.path.join("plots").join(format!("{}.svg", instance.id));
+                let png = svg.with_extension("png");
+                ExperimentFigure::from_results(results, index).save(&svg, &png)?;
+                files.extend([svg, png]);
+            }
+        }
+        drop(database);
+        let target = self.path.join(DATABASE_FILE);
+        std::fs::rename(&fresh, &target).map_err(|source| HarnessError::Io {
+            path: target.clone(),
+            source,
+        })?;
+        self.database = PlannerArenaDatabase::open(&target)?;
+        files.push(target);
+        let kpi = kpi_markdown(results, &KpiTable::from_results(results));
+        let path = self.path.join("kpi.md");
+        write_replacing(&path, kpi.as_bytes())?;
+        files.push(path);
+        Ok(files)
+    }
+}
+
+/// Writes `bytes` to `path` by writing a temporary file beside it and renaming it over
+/// `path`: a reader (or a crash) sees the old file or the new one, never half of one.
+///
+/// # Errors
+/// [`HarnessError::Io`] naming the file.
+pub(crate) fn write_replacing(path: &Path, bytes: &[u8]) -> Result<(), HarnessError> {
+    let mut temporary = path.as_os_str().to_owned();
+    temporary.push(".new");
+    let temporary = PathBuf::from(temporary);
+    std::fs::write(&temporary, bytes)
+        .and_then(|()| std::fs::rename(&temporary, path))
+        .map_err(|source| HarnessError::Io {
+            path: path.to_path_buf(),
+            source,
+        })
+}
+
+/// Creates `path` if needed and checks that a file can be written in it.
+///
+/// # Errors
+/// [`HarnessError::OutputFolder`] naming the folder and the operating system's reason.
+pub fn writable_folder(path: &Path) -> Result<(), HarnessError> {
+    let fail = |source| HarnessError::OutputFolder {
+        path: path.to_path_buf(),
+        source,
+    };
+    std::fs::create_dir_all(path).map_err(fail)?;
+    let probe = path.join(".mit-star-write-test");
+    std::fs::write(&probe, b"ok").map_err(fail)?;
+    std::fs::remove_file(&probe).map_err(fail)
+}
+
+/// `kpi.md`: how the experiment ran, then the paper-style table and the full table.
+pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
+    let e = &results.experiment;
+    let mut s = format!("# {}\n\n", e.name);
+    if !e.description.is_empty() {
+        let _ = writeln!(s, "{}\n", e.description);
+    }
+    let planned = results.instances.len() * e.planners.len() * e.runs;
+    let _ = writeln!(
+        s,
+        "Started {} UTC on `{}` ({}); {} runs per planner and instance, seeds {}..{}; \
+         {} of {planned} runs recorded; the last `bench` took {:.1} s with **{} runs executing \
+         concurrently**.{}\n",
+        results.started_at,
+        results.machine.hostname,
+        results.machine.cpu,
+        e.runs,
+        e.seed,
+        e.seed.saturating_add(e.runs as u64).saturating_sub(1),
+        results.run_count(),
+        results.total_time,
+        results.concurrency,
+        if results.interrupted {
+            " **Interrupted (SIGINT or SIGTERM): only finished runs are included.**"
+        } else {
+            ""
+        }
+    );
+    let invalid = results.invalid_runs();
+    if !invalid.is_empty() {
+        let _ = writeln!(
+            s,
+            "**WARNING: {} runs returned a path that failed the independent full-resolution \
+             validation; they count as failures:**\n",
+            invalid.len()
+        );
+        for r in invalid {
+            let _ = writeln!(
+                s,
+                "- {} run {} (seed {}) on {}: {}",
+                r.planner,
+                r.run,
+                r.seed,
+                r.instance,
+                r.validation
+                    .as_ref()
+                    .and_then(|v| v.failure.clone())
+                    .unwrap_or_default()
+            );
+        }
+        s.push('\n');
+    }
+    let _ = writeln!(
+        s,
+        "## Medians (paper's Table I layout)\n\nMedian time to the first solution `t_init` [s], \
+         median first-solution cost `c_init`, median final cost `c_final`; failed runs count \
+         as ∞. t_init gain = 1 − t_MIT / t_EIT.\n\n{}",
+        table.paper_markdown()
+    );
+    if let Some(families) = table.families_markdown() {
+        let _ = writeln!(
+            s,
+            "## Problems with several layouts\n\nEvery layout pooled (a MotionBenchMaker scene's \
+             problems, random rectangles' seeds); failed runs count as ∞.\n\n{families}"
+        );
+    }
+    let _ = writeln!(
+        s,
+        "## All KPIs\n\nmin, median [{:.0} % confidence interval], max.\n\n{}",
+        100.0 * table.confidence,
+        table.full_markdown()
+    );
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir =
+            std::env::temp_dir().join(format!("mit-star-folder-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
+    #[test]
+    fn a_folder_holds_one_experiment() {
+        let dir = scratch("claim");
+        let folder = ResultsFolder::prepare(&dir).unwrap();
+        let smoke = Experiment::shipped("smoke").unwrap();
+        let toml = folder.claim(&smoke).unwrap();
+        let written = std::fs::read_to_string(&toml).unwrap();
+        folder.claim(&smoke).unwrap();
+        let mut other = smoke.clone();
+        other.runs += 1;
+        let message = folder.claim(&other).unwrap_err().to_string();
+        assert!(
+            message.contains("holds the results of experiment `smoke`"),
+            "{message}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(&toml).unwrap(),
+            written,
+            "not clobbered"
+        );
+
+        std::fs::remove_file(&toml).unwrap();
+        std::fs::write(dir.join("runs.csv"), "instance\n").unwrap();
+        let message = folder.claim(&smoke).unwrap_err().to_string();
+        assert!(
+            message.contains("holds runs but no experiment.toml"),
+            "{message}"
+        );
+        assert!(!toml.exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn replacing_a_file_leaves_no_temporary() {
+        let dir = scratch("replace");
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("kpi.md");
+        write_replacing(&path, b"old").unwrap();
+        write_replacing(&path, b"new").unwrap();
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "new");
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

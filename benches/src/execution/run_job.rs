@@ -1,0 +1,370 @@
+//! [`RunJob`]: one run of one planner on one problem instance, its place in the schedule, and
+//! its execution.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
+
+use mit_star::{
+    Counters, FirstSolution, Planner, Progress, Termination, TerminationExt, TimeLimit, TracePoint,
+};
+use rand::SeedableRng;
+use rand::seq::SliceRandom;
+use spaces::SeededRng;
+
+use crate::budget::deadline_after;
+use crate::definition::planner_spec::PlannerSpec;
+use crate::definition::problem_instance::ProblemInstance;
+use crate::outcome::run_record::{RunRecord, RunStatus};
+
+/// Memory a finished run's record takes until the results are written, generously (counters,
+/// trace, path): the unit of the run-count limit.
+pub const RUN_RECORD_BYTES: u64 = 4096;
+
+/// Decorrelates the planner-order shuffle from the planners' own seeds.
+const SHUFFLE_SALT: u64 = 0x5eed_0f0b_de5a_1700;
+
+/// One unit of work: run `run` (seed `seed`) of planner `planner` on instance `instance`
+/// (indices into the experiment's planners and instances).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RunJob {
+    /// Index of the problem instance.
+    pub instance: usize,
+    /// Index of the planner.
+    pub planner: usize,
+    /// Run index `i`.
+    pub run: usize,
+    /// The planner's seed, `base_seed + i`.
+    pub seed: u64,
+    /// Stop at the first solution ([`Experiment::first_solution`](crate::Experiment)).
+    pub first_solution: bool,
+}
+
+/// Stops a run when the experiment is interrupted (Ctrl-C).
+struct Interrupted<'a>(&'a AtomicBool);
+
+impl Termination for Interrupted<'_> {
+    fn should_terminate(&self, _: &Progress) -> bool {
+        self.0.load(Ordering::Relaxed)
+    }
+}
+
+impl RunJob {
+    /// The identity of this job's run in a results folder of `experiment` on `instances`.
+    pub fn key(
+        &self,
+        experiment: &crate::Experiment,
+        instances: &[ProblemInstance],
+    ) -> crate::RunKey {
+        (
+            instances[self.instance].id.clone(),
+            experiment.planners[self.planner].name().to_owned(),
+            self.run,
+        )
+    }
+
+    /// The schedule of an experiment: instance after instance; within an instance run index
+    /// after run index; within a run index every planner once, in an order shuffled with a
+    /// generator seeded by the run index (PDT's protocol, spreading machine drift evenly over
+    /// the planners). The same inputs always give the same schedule.
+    ///
+    /// ```
+    /// use mit_star_benches::RunJob;
+    /// let jobs = RunJob::schedule(1, 3, 2, 10);
+    /// assert_eq!(jobs.len(), 6);
+    /// assert!(jobs[..3].iter().all(|j| j.run == 0 && j.seed == 10));
+    /// let mut planners: Vec<usize> = jobs[..3].iter().map(|j| j.planner).collect();
+    /// planners.sort();
+    /// assert_eq!(planners, [0, 1, 2]);
+    /// assert_eq!(jobs, RunJob::schedule(1, 3, 2, 10));
+    /// ```
+    pub fn schedule(instances: usize, planners: usize, runs: usize, base_seed: u64) -> Vec<Self> {
+        let mut jobs = Vec::with_capacity(instances * planners * runs);
+        for instance in 0..instances {
+            for run in 0..runs {
+                let seed = base_seed.wrapping_add(run as u64);
+                let mut order: Vec<usize> = (0..planners).collect();
+                order.shuffle(&mut SeededRng::seed_from_u64(seed ^ SHUFFLE_SALT));
+                jobs.extend(order.into_iter().map(|planner| Self {
+                    instance,
+                    planner,
+                    run,
+                    seed,
+                    first_solution: false,
+                }));
+            }
+        }
+        jobs
+    }
+
+    /// Runs the job: builds the planner (its construction counts against the budget), solves
+    /// until the budget's deadline, records the anytime trace, counters, initial and final
+    /// solutions, and validates the returned path independently at full resolution.
+    ///
+    /// Returns `None` if `interrupt` was raised before the run finished (an interrupted run is
+    /// discarded, not recorded as a failure).
+    ///
+    /// A planner that panics does not take the experiment down: the run is recorded as
+    /// [`RunStatus::Error`] with the panic's message.
+    pub fn execute(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        interrupt: &AtomicBool,
+    ) -> Option<RunRecord> {
+        let run = std::panic::AssertUnwindSafe(|| {
+            self.execute_keeping_planner(instance, planner, interrupt)
+                .map(|(record, _)| record)
+        });
+        match std::panic::catch_unwind(run) {
+            Ok(record) => record,
+            Err(payload) => {
+                let message = payload
+                    .downcast_ref::<&str>()
+                    .map(|s| (*s).to_owned())
+                    .or_else(|| payload.downcast_ref::<String>().cloned())
+                    .unwrap_or_else(|| "unknown panic".to_owned());
+                let mut record = self.blank_record(instance, planner);
+                record.status = RunStatus::Error;
+                record.error = Some(format!("the planner panicked: {message}"));
+                Some(record)
+            }
+        }
+    }
+
+    /// A record of this job with nothing measured yet.
+    fn blank_record(&self, instance: &ProblemInstance, planner: &PlannerSpec) -> RunRecord {
+        RunRecord {
+            instance: instance.id.clone(),
+            planner: planner.name().to_owned(),
+            configuration: planner.configuration(),
+            run: self.run,
+            seed: self.seed,
+            budget: instance.budget,
+            status: RunStatus::Unsolved,
+            setup_time: 0.0,
+            run_time: 0.0,
+            initial_time: None,
+            initial_cost: None,
+            final_cost: None,
+            trace: Vec::new(),
+            path: Vec::new(),
+            validation: None,
+            counters: Counters::default(),
+            error: None,
+        }
+    }
+
+    /// As [`execute`](Self::execute), also returning the planner after the run (for pictures
+    /// and inspection; `None` if it could not be built).
+    pub fn execute_keeping_planner(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        interrupt: &AtomicBool,
+    ) -> Option<(RunRecord, Option<Box<dyn Planner + Send>>)> {
+        if interrupt.load(Ordering::Relaxed) {
+            return None;
+        }
+        let started = Instant::now();
+        let deadline = match deadline_after(started, instance.budget) {
+            Ok(deadline) => deadline,
+            Err(e) => return Some((self.failed(instance, planner, started, &e), None)),
+        };
+        let parameters = planner.parameters_for_seed(self.seed);
+        match instance
+            .problem
+            .build_planner(planner.configuration(), &parameters)
+        {
+            Ok(built) => self.solve_built(instance, planner, built, (started, deadline), interrupt),
+            Err(e) => Some((self.failed(instance, planner, started, &e), None)),
+        }
+    }
+
+    /// A record of a run that failed before planning (a budget no clock holds, a planner that
+    /// could not be built).
+    fn failed(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        started: Instant,
+        error: &dyn std::fmt::Display,
+    ) -> RunRecord {
+        let mut record = self.blank_record(instance, planner);
+        record.status = RunStatus::Error;
+        record.error = Some(error.to_string());
+        record.setup_time = started.elapsed().as_secs_f64();
+        record.run_time = record.setup_time;
+        record
+    }
+
+    /// Runs a planner built by the caller since `started` (so its construction counts against
+    /// the budget) until `deadline`, and records the run as [`execute`](Self::execute) does.
+    /// Used by `mit-star plan`, which builds the planner itself to report build errors as typed
+    /// errors — and builds it once.
+    ///
+    /// Returns `None` if `interrupt` was raised before the run finished.
+    pub fn solve_built(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        mut built: Box<dyn Planner + Send>,
+        (started, deadline): (Instant, Instant),
+        interrupt: &AtomicBool,
+    ) -> Option<(RunRecord, Option<Box<dyn Planner + Send>>)> {
+        let mut record = self.blank_record(instance, planner);
+        let setup = started.elapsed();
+        record.setup_time = setup.as_secs_f64();
+        let stop = TimeLimit::until(deadline).or(Interrupted(interrupt));
+        let outcome = if self.first_solution {
+            built.solve(&stop.or(FirstSolution))
+        } else {
+            built.solve(&stop)
+        };
+        record.run_time = started.elapsed().as_secs_f64();
+        if interrupt.load(Ordering::Relaxed) {
+            return None;
+        }
+        record.counters = built.counters();
+        let offset = record.setup_time;
+        for p in built.trace().points() {
+            let point = TracePoint {
+                time: p.time + offset,
+                cost: p.cost,
+            };
+            // Progress rows are keyed by time: keep one (the best) per instant.
+            match record.trace.last_mut() {
+                Some(last) if last.time >= point.time => last.cost = last.cost.min(point.cost),
+                _ => record.trace.push(point),
+            }
+        }
+        record.initial_time = record.trace.first().map(|p| p.time);
+        record.initial_cost = record.trace.first().map(|p| p.cost);
+        match outcome {
+            Err(e) => {
+                record.status = RunStatus::Error;
+                record.error = Some(e.to_string());
+            }
+            Ok(outcome) => match outcome.solution() {
+                None => record.status = RunStatus::Unsolved,
+                Some(solution) => {
+                    record.final_cost = Some(solution.cost);
+                    record.path = solution.path.iter().map(<[f64]>::to_vec).collect();
+                    let validation = instance.problem.validate(&record.path, solution.cost);
+                    record.status = if validation.valid {
+                        RunStatus::Solved
+                    } else {
+                        RunStatus::InvalidPath
+                    };
+                    record.validation = Some(validation);
+                }
+            },
+        }
+        Some((record, Some(built)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::definition::parameter_overrides::ParameterOverrides;
+    use crate::definition::problem_source::ProblemSource;
+    use crate::definition::problem_spec::ProblemSpec;
+
+    #[test]
+    fn orders_differ_between_runs_but_cover_every_planner() {
+        let jobs = RunJob::schedule(2, 5, 20, 0);
+        assert_eq!(jobs.len(), 200);
+        let orders: Vec<Vec<usize>> = jobs
+            .chunks(5)
+            .map(|c| c.iter().map(|j| j.planner).collect())
+            .collect();
+        assert!(orders.iter().any(|o| o != &orders[0]), "shuffled");
+        for o in &orders {
+            let mut s = o.clone();
+            s.sort_unstable();
+            assert_eq!(s, [0, 1, 2, 3, 4]);
+        }
+        // Instance 1 repeats instance 0's orders (same run indices, same seeds).
+        assert_eq!(orders[..20], orders[20..]);
+        assert_eq!(jobs[199].seed, 19);
+    }
+
+    /// The R^2 instance of built-in problem `name` with one budget and resolution, and a
+    /// planner of `configuration` with the default parameters.
+    fn instance_and_planner(
+        name: &str,
+        (budget, resolution): (f64, f64),
+        configuration: mit_star::Configuration,
+    ) -> (ProblemInstance, PlannerSpec) {
+        let instance = ProblemSpec {
+            source: ProblemSource::parse(name, None).unwrap(),
+            dimensions: vec![2],
+            budgets: vec![budget],
+            instances: vec![0],
+            resolution: Some(resolution),
+            allow_coarse_step: false,
+        }
+        .instances()
+        .unwrap()
+        .remove(0);
+        let planner =
+            PlannerSpec::new(configuration, None, &ParameterOverrides::default()).unwrap();
+        (instance, planner)
+    }
+
+    #[test]
+    fn a_run_records_a_validated_solution() {
+        let (instance, planner) = instance_and_planner(
+            "obstacle-free",
+            (0.02, 1e-3),
+            mit_star::Configuration::EitStar,
+        );
+        let job = RunJob {
+            instance: 0,
+            planner: 0,
+            run: 3,
+            seed: 3,
+            first_solution: false,
+        };
+        let r = job
+            .execute(&instance, &planner, &AtomicBool::new(false))
+            .unwrap();
+        assert_eq!(r.status, RunStatus::Solved, "{r:?}");
+        assert!(r.validation.as_ref().unwrap().valid);
+        assert_eq!((r.run, r.seed), (3, 3));
+        assert!(r.initial_time.unwrap() >= r.setup_time);
+        assert!(
+            r.trace
+                .windows(2)
+                .all(|w| w[1].time > w[0].time && w[1].cost < w[0].cost)
+        );
+        // An interrupted experiment records nothing.
+        assert!(
+            job.execute(&instance, &planner, &AtomicBool::new(true))
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn a_first_solution_run_stops_at_its_first_solution() {
+        let (instance, planner) = instance_and_planner(
+            "dividing-walls",
+            (5.0, 1e-4),
+            mit_star::Configuration::MitStar,
+        );
+        let job = RunJob {
+            instance: 0,
+            planner: 0,
+            run: 0,
+            seed: 1,
+            first_solution: true,
+        };
+        let r = job
+            .execute(&instance, &planner, &AtomicBool::new(false))
+            .unwrap();
+        assert_eq!(r.status, RunStatus::Solved, "{r:?}");
+        // One solution and no anytime phase (5 s of it would improve the first path).
+        assert_eq!(r.trace.len(), 1);
+        assert_eq!(r.initial_cost, r.final_cost);
+    }
+}

@@ -1,0 +1,22 @@
+//! The result formats motion-planning researchers read with their own tools: each writer sits
+//! beside its reader.
+//!
+//! - [`ompl_log`]: OMPL benchmark logs (`logs/<instance>.log`): the log, its writer and its
+//!   strict parser.
+//! - [`planner_arena_database`]: the SQLite database Planner Arena reads (`benchmark.db`), in
+//!   the schema OMPL's `ompl_benchmark_statistics.py` builds, filled from OMPL logs.
+//! - [`raw_runs`]: `runs.csv` (one row per run) and `runs.jsonl` (one JSON object per run):
+//!   their columns, rows and lines, and reading the CSV back.
+//! - [`kpi_table`]: the KPI tables (`kpi.md`, the paper's Table I and the full KPIs);
+//!   [`campaign_comparison`]: two results folders' KPIs side by side (`mit-star compare`).
+//!
+//! May use: [`crate::outcome`] (what is written), [`crate::definition`],
+//! [`crate::statistics`], [`crate::error`], and from execution only the names of a run and of a
+//! part ([`RunKey`](crate::RunKey), [`Shard`](crate::Shard)). Formats do not decide where files
+//! go or when: that is [`crate::execution`]'s.
+
+pub(crate) mod campaign_comparison;
+pub(crate) mod kpi_table;
+pub(crate) mod ompl_log;
+pub(crate) mod planner_arena_database;
+pub(crate) mod raw_runs;

@@ -1,0 +1,19 @@
+//! Pictures, in SVG and PNG.
+//!
+//! - [`experiment_figure`]: the figure of one problem instance of an experiment (median cost
+//!   and success rate over time, initial solutions), one per instance in `plots/`.
+//! - [`run_picture`]: one run on a 2-D problem (obstacles, samples, trees, informed sets, the
+//!   path), drawn by `mit-star plan`.
+//! - [`arm_picture`]: an arm plan (the scene, the arm's spheres along the path, the hand's
+//!   trajectory), drawn by `mit-star plan`.
+//! - [`plot_style`]: the look they share: the embedded font, the planners' colours, saving
+//!   SVG and PNG.
+//!
+//! May use: [`crate::outcome`], [`crate::definition`] (planner names),
+//! [`crate::statistics`], [`crate::error`], and the planner, problem and robot crates. Not the
+//! result formats or execution.
+
+pub(crate) mod arm_picture;
+pub(crate) mod experiment_figure;
+pub(crate) mod plot_style;
+pub(crate) mod run_picture;
