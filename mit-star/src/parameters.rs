@@ -90,7 +90,7 @@ pub struct Parameters {
     /// start and the goals, at every scale, through the [`NearTerminals`](samplers::NearTerminals)
     /// wrapper (0: no wrapper; `None`: the problem's
     /// [`near_terminals`](problems::PlanningProblem::near_terminals), 0 for the paper's
-    /// problems, 0.1 for arms). Not in the paper: it joins starts and goals that sit deep in
+    /// problems, 0.15 for arms). Not in the paper: it joins starts and goals that sit deep in
     /// pockets (grasps in shelf slots), which uniform samples in 7 dimensions seldom reach.
     pub near_terminals: Option<f64>,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the

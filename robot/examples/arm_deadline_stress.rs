@@ -8,7 +8,7 @@
 //! ```
 //!
 //! For every MotionBenchMaker scene shipped with the crate's tests (`tests/data/mbm/*_panda`,
-//! problem 1) × step (the default 1/32 rad per unit of joint distance, and 0.25, 0.5 and 1 rad)
+//! problem 1) × step (the default 1/16 rad per unit of joint distance, and 0.25, 0.5 and 1 rad)
 //! × certification (on, the problem's default; off, `with_certification(1)` with uncertified
 //! motion allowed) × configuration × budget (1 ms, 10 ms, 100 ms, 1 s) it takes the clock,
 //! builds the planner (construction counts against the budget, as in the harness), solves

@@ -13,7 +13,7 @@
 //! 4–30 cm wide centred on that sphere's centre, facing the way the sphere moves, so the straight
 //! motion crosses it (ends touching the plate are drawn again). Each problem is planned by MIT*
 //! (0.1 s, anytime) and RRT-Connect (to its first solution, at most 0.5 s) at every resolution
-//! of the list below (the default 1/32 rad per unit, and 0.01, 0.05, 0.1, 0.2, 0.5, 0.999 of
+//! of the list below (the default 1/16 rad per unit, and 0.01, 0.05, 0.1, 0.2, 0.5, 0.999 of
 //! the maximum extent), with certification on (the default). Then, as the control
 //! that shows the audit has teeth, RRT-Connect plans the same problem with certification off
 //! (`allowing_uncertified_motion`) at the coarsest resolution.
@@ -140,7 +140,10 @@ fn main() {
             .allowing_uncertified_motion(allow)
         };
         let label = |resolution: Option<f64>| {
-            resolution.map_or_else(|| "1/32 rad".to_owned(), |r| r.to_string())
+            resolution.map_or_else(
+                || format!("1/{} rad", robot::CHECKS_PER_UNIT),
+                |r| r.to_string(),
+            )
         };
         let mut runs: Vec<(&str, String, ArmProblem, u32)> = Vec::new();
         for resolution in RESOLUTIONS {

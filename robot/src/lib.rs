@@ -29,7 +29,7 @@
 //! | [`LeverArms`], [`CERTIFICATION_FLOOR`] | how far each link's spheres can move per unit of each joint, over all configurations: the bound certified motion rests on |
 //! | [`ParryChecker`] | the reference checker: `f64`, parry queries, no culling (tests and path re-checks) |
 //! | [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] | an independent continuous check of a motion: conservative advancement in `f64` from parry distances and its own speed bound (the harness's re-check of returned arm paths) |
-//! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with VAMP's default check density and the finer grid its solution edges are certified on |
+//! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with its default check density and the certification its edges ask for |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 
 #![forbid(unsafe_code)]

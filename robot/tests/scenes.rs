@@ -36,9 +36,10 @@ fn every_sample_problem_loads_with_valid_ends_under_both_checkers() {
             assert_eq!(problem.start().len(), 7);
             assert_eq!(problem.goals().len(), 1);
             assert!(!problem.scene().obstacles().is_empty());
-            // VAMP's default: 32 checks per unit of joint-space distance.
+            // The default: `CHECKS_PER_UNIT` checks per unit of joint-space distance.
             let extent = problem.space().maximum_extent();
-            assert!((problem.resolution() * extent * 32.0 - 1.0).abs() < 1e-12);
+            let per_unit = robot::CHECKS_PER_UNIT;
+            assert!((problem.resolution() * extent * per_unit - 1.0).abs() < 1e-12);
             let reference = ParryChecker::new(problem.robot(), problem.scene());
             for q in [problem.start(), &problem.goals()[0][..]] {
                 assert_eq!(

@@ -24,8 +24,8 @@ use crate::pictures::run_picture::RunPicture;
 /// Options of `mit-star plan`.
 #[derive(Debug, Args)]
 pub struct PlanArgs {
-    /// Planner: mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, ait-star, bit-star,
-    /// abit-star, informed-rrt-star, rrt-connect (`mit-star planners` lists them).
+    /// Planner: mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, mit-star-sr, ait-star,
+    /// bit-star, abit-star, informed-rrt-star, rrt-connect (`mit-star planners` lists them).
     #[arg(long, short, default_value = "mit-star")]
     pub planner: String,
     /// Built-in problem name (see `mit-star problems`) or a problem file path.

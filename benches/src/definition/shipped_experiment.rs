@@ -42,7 +42,7 @@ static SHIPPED: [ShippedExperiment; 6] = [
     },
     ShippedExperiment {
         name: "ablation-study",
-        summary: "the ablation study of docs/ablation.md: the six configurations to their first solution on GE R^2/R^4, DW R^4/R^8, FG R^4, 200 runs (about 3 minutes on 2 cores)",
+        summary: "the ablation study of docs/guide/src/reference/ablation-study.md: the six configurations to their first solution on GE R^2/R^4, DW R^4/R^8, FG R^4, 200 runs (about 3 minutes on 2 cores)",
         text: include_str!("../../experiments/ablation-study.toml"),
         data: None,
     },
