@@ -49,41 +49,21 @@
 
 #![forbid(unsafe_code)]
 
-mod bisection_order;
-mod box_set;
-mod box_tree;
-mod crossing;
-mod dense_checker;
-mod edge_checker;
-mod edge_progress;
+mod box_world;
+mod edge_checking;
 mod error;
-mod fixed_sparse_checker;
-mod grid_walker;
-mod length_adaptive_checker;
-mod length_buckets;
-mod motion_progress;
-mod segment;
-mod segment_certification;
-mod segment_validation;
-mod slab_index;
 mod state_validity;
-mod world;
-mod world_segment;
 
-pub use bisection_order::{BisectionOrder, EdgeGrid};
-pub use dense_checker::DenseChecker;
-pub use edge_checker::EdgeChecker;
-pub use edge_progress::{EdgeProgress, EdgeStatus};
+pub use box_world::{
+    AxisBox, Lattice, Preparation, Segment, SegmentCause, SegmentVerdict, TREE_THRESHOLD, World,
+};
+pub use edge_checking::{
+    BisectionOrder, DenseChecker, EdgeChecker, EdgeCounters, EdgeGrid, EdgeProgress, EdgeStatus,
+    FixedSparseChecker, GridWalker, LENGTH_BUCKET_BOUNDS, LENGTH_BUCKET_LABELS,
+    LengthAdaptiveChecker, LengthBuckets, MotionProgress, STOP_POLL, canonical_ends,
+};
 pub use error::ValidityError;
-pub use fixed_sparse_checker::FixedSparseChecker;
-pub use grid_walker::{EdgeCounters, GridWalker, STOP_POLL, canonical_ends};
-pub use length_adaptive_checker::LengthAdaptiveChecker;
-pub use length_buckets::{LENGTH_BUCKET_BOUNDS, LENGTH_BUCKET_LABELS, LengthBuckets};
-pub use motion_progress::MotionProgress;
-pub use segment::{Preparation, Segment};
-pub use segment_validation::{SegmentCause, SegmentVerdict};
 pub use state_validity::{AllValid, Counted, StateValidity};
-pub use world::{AxisBox, Lattice, TREE_THRESHOLD, World};
 
 /// The full-resolution step `L = resolution × maximum extent` (OMPL's convention, spec §2).
 ///

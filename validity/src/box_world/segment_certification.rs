@@ -21,7 +21,7 @@
 
 use spaces::Stop;
 
-use crate::segment_validation::{
+use crate::box_world::segment_validation::{
     FRACTIONS, Interval, crossed_interval, intersect_into, lattice_cubes, lattice_slab,
     leaves_bounds, meets_reach, merge_in_place, uncovered,
 };

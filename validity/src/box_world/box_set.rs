@@ -4,9 +4,9 @@
 
 use std::sync::{Arc, OnceLock};
 
-use crate::box_tree::BoxTree;
-use crate::slab_index::SlabIndex;
-use crate::world::{AxisBox, TREE_THRESHOLD};
+use crate::box_world::box_tree::BoxTree;
+use crate::box_world::slab_index::SlabIndex;
+use crate::box_world::world::{AxisBox, TREE_THRESHOLD};
 
 /// Boxes, their rows (`[lo, hi]` per dimension, box after box, widened by PDT's epsilon) and
 /// the hierarchy over the rows, built on first use after the last change.

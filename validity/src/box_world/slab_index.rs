@@ -298,7 +298,7 @@ mod tests {
     #[test]
     #[ignore = "a measurement; run in release with --ignored --nocapture"]
     fn measure_against_the_hierarchy() {
-        use crate::box_tree::BoxTree;
+        use crate::box_world::box_tree::BoxTree;
         use std::hint::black_box;
         use std::time::Instant;
         let mut seed = 5_u64;

@@ -2,7 +2,7 @@
 
 use spaces::{StateSpace, Stop};
 
-use crate::box_set::BoxSet;
+use crate::box_world::box_set::BoxSet;
 use crate::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity, ValidityError};
 
 /// Above this many boxes a world checks states through a bounding-volume hierarchy; at or

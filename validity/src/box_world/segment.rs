@@ -3,7 +3,7 @@
 
 use wide::f64x4;
 
-use crate::segment_certification::ExactCertification;
+use crate::box_world::segment_certification::ExactCertification;
 
 /// What a validity checker made of a straight segment it was asked to prepare
 /// ([`StateValidity::prepare_segment`](crate::StateValidity::prepare_segment)).

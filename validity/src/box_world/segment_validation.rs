@@ -28,7 +28,7 @@
 //! found. What lies *between* two computed points of the real segment (a corner clipped by
 //! less than an ulp of the coordinates) is decided as the nearest computed points are.
 
-use crate::segment::ROUNDING;
+use crate::box_world::segment::ROUNDING;
 use crate::{Lattice, Segment, World};
 
 /// Why a segment is invalid.

@@ -19,7 +19,7 @@
 
 use wide::f64x4;
 
-use crate::box_set::BoxSet;
+use crate::box_world::box_set::BoxSet;
 use crate::{Preparation, Segment, StateValidity, World};
 
 /// Points per SIMD step.
