@@ -57,41 +57,21 @@
 #![forbid(unsafe_code)]
 
 mod catalogue;
-mod center_square;
-mod dividing_walls;
-mod double_enclosure;
-mod enclosure;
 mod error;
-mod family;
-mod flanking_gap;
-mod goal_enclosure;
-mod narrow_passage;
-mod obstacle_free;
-mod optimum;
+mod families;
 mod planning_problem;
 mod problem;
 pub mod problem_file;
-mod random_rectangles;
-mod repeating_rectangles;
-mod start_enclosure;
 #[cfg(test)]
 mod test_support;
-mod wall_gap;
 
 pub use catalogue::{Family, Parameter, builtin, catalogue};
-pub use center_square::CenterSquare;
-pub use dividing_walls::DividingWalls;
-pub use double_enclosure::{BothEnclosed, DoubleEnclosure};
-pub use enclosure::{EnclosedEnds, Enclosure};
 pub use error::{Endpoint, Location, ProblemError, ProblemFileError};
-pub use flanking_gap::FlankingGap;
-pub use goal_enclosure::{GoalEnclosed, GoalEnclosure};
-pub use narrow_passage::NarrowPassage;
-pub use obstacle_free::ObstacleFree;
+pub use families::{
+    BothEnclosed, CenterSquare, DividingWalls, DoubleEnclosure, EnclosedEnds, Enclosure,
+    FlankingGap, GoalEnclosed, GoalEnclosure, NarrowPassage, ObstacleFree, RandomRectangles,
+    RepeatingRectangles, StartEnclosed, StartEnclosure, WallGap,
+};
 pub use planning_problem::PlanningProblem;
 pub use problem::Problem;
 pub use problem_file::humanise;
-pub use random_rectangles::RandomRectangles;
-pub use repeating_rectangles::RepeatingRectangles;
-pub use start_enclosure::{StartEnclosed, StartEnclosure};
-pub use wall_gap::WallGap;

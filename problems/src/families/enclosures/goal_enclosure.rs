@@ -1,7 +1,7 @@
 //! [`GoalEnclosure`]: PDT's goal enclosure — the goal sits in a hollow cube opening away from
 //! the start.
 
-use crate::enclosure::{EnclosedEnds, Enclosure, Ends};
+use crate::families::enclosures::enclosure::{EnclosedEnds, Enclosure, Ends};
 
 /// PDT's **goal enclosure** in `[-0.5, 0.5]^n`: the goal lies inside a hollow cube whose only
 /// opening is in the face pointing to `+x`, away from the start, so a planner must go around.

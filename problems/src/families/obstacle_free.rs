@@ -1,6 +1,6 @@
 //! [`ObstacleFree`]: the empty unit cube.
 
-use crate::family::{axis_point, check_endpoints, unit_world};
+use crate::families::shared::{axis_point, check_endpoints, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **obstacle-free** problem: the empty `[-0.5, 0.5]^n`.

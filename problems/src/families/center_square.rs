@@ -2,8 +2,8 @@
 
 use validity::AxisBox;
 
-use crate::family::{axis_point, check_endpoints, check_positive, on_axis, unit_world};
-use crate::optimum::slab_crossing;
+use crate::families::optimum::slab_crossing;
+use crate::families::shared::{axis_point, check_endpoints, check_positive, on_axis, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **center square** in `[-0.5, 0.5]^n`: a single cube centred at the origin, between

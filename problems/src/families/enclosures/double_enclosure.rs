@@ -1,6 +1,6 @@
 //! [`DoubleEnclosure`]: start and goal each sit in a hollow cube opening away from the other.
 
-use crate::enclosure::{EnclosedEnds, Enclosure, Ends};
+use crate::families::enclosures::enclosure::{EnclosedEnds, Enclosure, Ends};
 
 /// PDT's **double enclosure** in `[-0.5, 0.5]^n`: [`StartEnclosure`](crate::StartEnclosure)
 /// and [`GoalEnclosure`](crate::GoalEnclosure) together. Both cubes have the same sizes; the

@@ -1,9 +1,9 @@
 //! [`WallGap`]: a wall with a slot, and a corridor past its end.
 
-use crate::family::{
+use crate::families::optimum::{distance_to_union, slab_crossing};
+use crate::families::shared::{
     FULL, HALF, axis_point, check_endpoints, check_finite, check_positive, unit_world, xy_box,
 };
-use crate::optimum::{distance_to_union, slab_crossing};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **wall gap** in `[-0.5, 0.5]^n`: a wall across the x-axis from the lower bound of `y`

@@ -1,7 +1,7 @@
 //! [`StartEnclosure`]: goal enclosure mirrored — the start sits in a hollow cube opening away
 //! from the goal.
 
-use crate::enclosure::{EnclosedEnds, Enclosure, Ends};
+use crate::families::enclosures::enclosure::{EnclosedEnds, Enclosure, Ends};
 
 /// PDT's **start enclosure** in `[-0.5, 0.5]^n`: the mirror image of
 /// [`GoalEnclosure`](crate::GoalEnclosure). The start lies inside a hollow cube whose only

@@ -2,7 +2,7 @@
 
 use validity::Lattice;
 
-use crate::family::{axis_point, check_endpoints, check_positive, unit_world};
+use crate::families::shared::{axis_point, check_endpoints, check_positive, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **repeating rectangles** in `[-0.5, 0.5]^n`: a regular grid of `count^n` cubes of side

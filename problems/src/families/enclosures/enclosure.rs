@@ -5,8 +5,8 @@ use std::marker::PhantomData;
 
 use validity::{AxisBox, World};
 
-use crate::family::{axis_point, check_endpoints, check_positive, on_axis, unit_world};
-use crate::optimum::enclosure_escape;
+use crate::families::optimum::enclosure_escape;
+use crate::families::shared::{axis_point, check_endpoints, check_positive, on_axis, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's enclosure families in `[-0.5, 0.5]^n`: `E` says which ends sit at the centre of a

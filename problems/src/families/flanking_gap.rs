@@ -1,9 +1,9 @@
 //! [`FlankingGap`]: PDT's flanking gap — a wall with a small square hole, flanked by corridors.
 
-use crate::family::{
+use crate::families::optimum::{distance_to_union, slab_crossing};
+use crate::families::shared::{
     axis_point, check_endpoints, check_finite, check_positive, on_axis, unit_world, xy_box,
 };
-use crate::optimum::{distance_to_union, slab_crossing};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **flanking gap** in `[-0.5, 0.5]^n`: one wall across the x-axis that stops short of the

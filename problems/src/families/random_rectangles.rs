@@ -4,7 +4,7 @@ use rand::{RngExt, SeedableRng};
 use spaces::{SeededRng, StateSpace};
 use validity::AxisBox;
 
-use crate::family::{check_endpoints, check_positive, unit_world};
+use crate::families::shared::{check_endpoints, check_positive, unit_world};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **random rectangles** in `[-0.5, 0.5]^n`: `count` axis-aligned boxes placed at random,

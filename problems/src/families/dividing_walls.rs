@@ -1,7 +1,7 @@
 //! [`DividingWalls`]: PDT's dividing walls — three full walls cut by six slots.
 
-use crate::family::{FULL, axis_point, check_endpoints, unit_world, xy_box};
-use crate::optimum::{distance_to_union, slab_crossing};
+use crate::families::optimum::{distance_to_union, slab_crossing};
+use crate::families::shared::{FULL, axis_point, check_endpoints, unit_world, xy_box};
 use crate::{Parameter, Problem, ProblemError};
 
 /// PDT's **dividing walls** in `[-0.5, 0.5]^n`: walls across the x-axis spanning the bounds in
