@@ -21,8 +21,8 @@ mod model_error;
 mod robot_model;
 mod srdf;
 
-pub(crate) use kinematics::{JointMotion, to_f32};
 pub use kinematics::Kinematics;
+pub(crate) use kinematics::{JointMotion, to_f32};
 pub use lever_arms::LeverArms;
 pub use model_error::ModelError;
 pub use robot_model::{LinkFrame, LinkSphere, Motion, RobotModel, rpy_matrix};
