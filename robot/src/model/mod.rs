@@ -10,9 +10,9 @@
 //!   joint, over all configurations — the bound certified motion rests on.
 //! - [`ModelError`] (`model_error.rs`): why a URDF or SRDF could not be loaded.
 //!
-//! May use: the `spaces`, `glam`, `urdf-rs` and `roxmltree` crates, and of this crate only
-//! `Scene::MAX_LENGTH` from `scenes` (models and scenes share one length limit). Knows nothing
-//! of checking. Used by `scenes` (the `f32` pose conversion), `checking` and
+//! May use: the `spaces`, `glam`, `urdf-rs`, `roxmltree` and `thiserror` crates, and of this
+//! crate only `Scene::MAX_LENGTH` from `scenes` (models and scenes share one length limit).
+//! Knows nothing of checking. Used by `scenes` (the `f32` pose conversion), `checking` and
 //! [`ArmProblem`](crate::ArmProblem).
 
 mod kinematics;

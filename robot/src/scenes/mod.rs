@@ -10,9 +10,9 @@
 //! - [`SceneError`] (`scene_error.rs`): why a scene or problem file could not be read, naming
 //!   the file and field.
 //!
-//! May use: the `glam`, `serde` and `serde-saphyr` crates, and of this crate only the `f32` pose
-//! conversion of `model`. Knows nothing of checking. Used by `model` (the shared length limit),
-//! `checking` and [`ArmProblem`](crate::ArmProblem).
+//! May use: the `glam`, `wide`, `serde`, `serde-saphyr` and `thiserror` crates, and of this
+//! crate only the `f32` pose conversion of `model`. Knows nothing of checking. Used by `model`
+//! (the shared length limit), `checking` and [`ArmProblem`](crate::ArmProblem).
 
 mod mbm_problem;
 mod obstacle;
