@@ -34,37 +34,18 @@
 
 #![forbid(unsafe_code)]
 
-mod arm_certification;
-mod arm_checker;
 mod arm_error;
 mod arm_problem;
-mod kinematics;
-mod lanes;
-mod lever_arms;
-mod local_sweep;
-mod mbm_problem;
-mod model_error;
-mod motion_audit;
-mod obstacle;
-mod parry_checker;
-mod robot_model;
-mod scene;
-mod scene_error;
-mod scratch_cell;
-mod srdf;
-mod yaml_text;
+mod checking;
+mod model;
+mod scenes;
 
-pub use arm_certification::FLOOR as CERTIFICATION_FLOOR;
-pub use arm_checker::ArmChecker;
 pub use arm_error::ArmError;
 pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
-pub use kinematics::Kinematics;
-pub use lever_arms::LeverArms;
-pub use mbm_problem::MbmProblem;
-pub use model_error::ModelError;
-pub use motion_audit::{AUDIT_CONTACT, AuditVerdict, MotionAudit};
-pub use obstacle::{Obstacle, Shape};
-pub use parry_checker::ParryChecker;
-pub use robot_model::{LinkFrame, LinkSphere, Motion, RobotModel, rpy_matrix};
-pub use scene::Scene;
-pub use scene_error::SceneError;
+pub use checking::{
+    AUDIT_CONTACT, ArmChecker, AuditVerdict, CERTIFICATION_FLOOR, MotionAudit, ParryChecker,
+};
+pub use model::{
+    Kinematics, LeverArms, LinkFrame, LinkSphere, ModelError, Motion, RobotModel, rpy_matrix,
+};
+pub use scenes::{MbmProblem, Obstacle, Scene, SceneError, Shape};

@@ -3,7 +3,7 @@
 use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
-use crate::informed_draws::InformedDraws;
+use crate::sampling_steps::InformedDraws;
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, Sampler, SamplerCounters,
     SamplerError,

@@ -3,7 +3,7 @@
 use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
-use crate::informed_draws::InformedDraws;
+use crate::sampling_steps::InformedDraws;
 use crate::{CostBound, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError};
 
 /// Direct informed sampling (Gammell et al.; spec §7): states uniform over the informed set of

@@ -55,32 +55,25 @@
 mod adaptive_sampler;
 mod bridge_sampler;
 mod error;
-mod estimated;
-mod estimated_informed_set;
 mod gaussian_sampler;
-mod gaussian_step;
-mod hyperspheroid;
-mod informed_draws;
 mod informed_sampler;
-mod informed_set;
-mod near_terminals;
+mod informed_sets;
 mod sampler;
-mod segment_search;
+mod sampling_steps;
 mod uniform_sampler;
+mod wrappers;
 
 pub use adaptive_sampler::AdaptiveSampler;
 pub use bridge_sampler::BridgeSampler;
 pub use error::SamplerError;
-pub use estimated::Estimated;
-pub use estimated_informed_set::{EstimatedInformedSet, ExpansionForm, ExpansionRule};
 pub use gaussian_sampler::GaussianSampler;
-pub use gaussian_step::GaussianStep;
-pub use hyperspheroid::prolate_hyperspheroid_measure;
 pub use informed_sampler::InformedSampler;
-pub use informed_set::InformedSet;
-pub use near_terminals::NearTerminals;
+pub use informed_sets::{
+    EstimatedInformedSet, ExpansionForm, ExpansionRule, InformedSet, prolate_hyperspheroid_measure,
+};
 pub use sampler::{
     CostBound, LazyPathFailure, SampleError, SampleOrigin, Sampler, SamplerCounters,
 };
-pub use segment_search::SegmentSearch;
+pub use sampling_steps::{GaussianStep, SegmentSearch};
 pub use uniform_sampler::UniformSampler;
+pub use wrappers::{Estimated, NearTerminals};

@@ -19,7 +19,7 @@ struct Step {
 }
 
 /// How a link's joint moves it, classified once for the `f32` walks (the scalar one here and
-/// the eight-lane one in `lanes.rs`): the unit axis and the joint coordinate.
+/// the eight-lane one in `checking/lanes.rs`): the unit axis and the joint coordinate.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum JointMotion {
     Fixed,
@@ -39,7 +39,7 @@ pub(crate) enum JointMotion {
 ///
 /// ```
 /// use glam::{Affine3A, Vec3A};
-/// let urdf = include_str!("../data/panda/panda_spherized.urdf");
+/// let urdf = include_str!("../../data/panda/panda_spherized.urdf");
 /// let panda = robot::RobotModel::from_urdf_str(urdf)?;
 /// let fk = robot::Kinematics::new(&panda);
 /// let mut links = vec![Affine3A::IDENTITY; fk.link_count()];

@@ -76,7 +76,7 @@ impl Obstacle {
         Self {
             shape,
             pose,
-            inverse: crate::kinematics::to_f32(&inverse64),
+            inverse: crate::model::to_f32(&inverse64),
             inverse64,
             size,
             center: position.as_vec3a(),

@@ -10,7 +10,7 @@ use glam::{Affine3A, Vec3A};
 use wide::f32x8;
 
 use crate::Kinematics;
-use crate::kinematics::JointMotion;
+use crate::model::JointMotion;
 
 /// Lanes per batch.
 pub(crate) const LANES: usize = 8;
@@ -141,7 +141,7 @@ mod tests {
 
     #[test]
     fn lanes_place_links_as_the_scalar_walk_does() {
-        let urdf = include_str!("../data/panda/panda_spherized.urdf");
+        let urdf = include_str!("../../data/panda/panda_spherized.urdf");
         let panda = RobotModel::from_urdf_str(urdf).unwrap();
         let fk = Kinematics::new(&panda);
         let lanes = LaneKinematics::new(&fk);

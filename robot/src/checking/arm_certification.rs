@@ -12,7 +12,7 @@
 //! are tested at once, one per `f32x8` lane, each lane's spheres grown by the margin plus how
 //! far they can move within half a piece: the smaller of the lever-arm bound
 //! `w/2 · Σ_j λ_j |Δq_j|` and the local bound measured at the piece's middle configuration
-//! ([`LocalSweep`](crate::local_sweep::LocalSweep)). If all eight are clear, the certified
+//! ([`LocalSweep`](crate::checking::local_sweep::LocalSweep)). If all eight are clear, the certified
 //! prefix moves past them and `w` grows (by 1/16 near obstacles; doubling once four times as
 //! wide as the first pieces: free space); if a piece is not, the prefix moves up to it and the next batch tests pieces
 //! half as wide. The first pieces sweep about a centimetre. A piece whose growth is already below [`FLOOR`] and still
@@ -28,9 +28,9 @@ use validity::{EdgeStatus, MotionProgress};
 use wide::f32x8;
 
 use crate::ArmChecker;
-use crate::arm_checker::{Growth, Scratch, invalid_lanes};
-use crate::lanes::LANES;
-use crate::local_sweep::EdgeTerms;
+use crate::checking::arm_checker::{Growth, Scratch, invalid_lanes};
+use crate::checking::lanes::LANES;
+use crate::checking::local_sweep::EdgeTerms;
 
 /// The smallest growth beyond the margin, in metres, at which a piece that still touches
 /// something makes the edge invalid: 10 µm. An edge that passes closer than about this (plus

@@ -132,7 +132,7 @@ impl MbmProblem {
             path: request.clone(),
             source,
         })?;
-        let file: RequestFile = crate::yaml_text::read_yaml(&text, &origin)?;
+        let file: RequestFile = crate::scenes::yaml_text::read_yaml(&text, &origin)?;
         let state = file.start_state.joint_state;
         if state.name.len() != state.position.len() {
             return Err(SceneError::Field {

@@ -5,7 +5,7 @@
 use glam::Vec3A;
 use wide::f32x8;
 
-use crate::lanes::{LANES, Point8, Pose8};
+use crate::checking::lanes::{LANES, Point8, Pose8};
 use crate::{Motion, RobotModel};
 
 /// Added to every computed axis distance, in metres: covers the `f32` error of the distance

@@ -3,7 +3,7 @@
 use rand::{Rng, RngExt};
 use spaces::{StateSpace, Stop};
 
-use crate::hyperspheroid::{
+use crate::informed_sets::hyperspheroid::{
     dense_rotation, ln_unit_ball_measure, push_plane_rotation, rotate_about_centre,
     sample_unit_ball,
 };

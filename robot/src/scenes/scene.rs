@@ -188,7 +188,7 @@ impl Scene {
     /// mismatched primitive and pose counts, and a malformed allowed-collision matrix.
     pub fn from_yaml_str(text: &str, origin: &str) -> Result<Self, SceneError> {
         let errors = Errors { origin };
-        let file: SceneFile = crate::yaml_text::read_yaml(text, origin)?;
+        let file: SceneFile = crate::scenes::yaml_text::read_yaml(text, origin)?;
         let objects = match file.world {
             None => {
                 return Err(errors.field(

@@ -5,7 +5,7 @@ use rand::RngExt;
 use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
-use crate::informed_draws::InformedDraws;
+use crate::sampling_steps::InformedDraws;
 use crate::{
     CostBound, GaussianStep, LazyPathFailure, SampleError, SampleOrigin, Sampler, SamplerCounters,
     SamplerError,

@@ -65,8 +65,8 @@ pub struct LinkSphere {
 /// ([`with_srdf_str`](Self::with_srdf_str)) as MoveIt does.
 ///
 /// ```
-/// let urdf = include_str!("../data/panda/panda_spherized.urdf");
-/// let srdf = include_str!("../data/panda/panda.srdf");
+/// let urdf = include_str!("../../data/panda/panda_spherized.urdf");
+/// let srdf = include_str!("../../data/panda/panda.srdf");
 /// let panda = robot::RobotModel::from_urdf_str(urdf)?.with_srdf_str(srdf)?;
 /// assert_eq!(panda.joint_names().len(), 7);
 /// assert_eq!(panda.spheres().len(), 59);
@@ -307,7 +307,7 @@ impl RobotModel {
     /// [`ModelError::Srdf`] for malformed XML, [`ModelError::UnknownLink`] for a pair naming
     /// a link the robot does not have.
     pub fn with_srdf_str(self, text: &str) -> Result<Self, ModelError> {
-        let pairs = crate::srdf::disabled_pairs(text, "SRDF text")?;
+        let pairs = crate::model::srdf::disabled_pairs(text, "SRDF text")?;
         self.disable(&pairs, "SRDF text")
     }
 
@@ -321,7 +321,7 @@ impl RobotModel {
             source,
         })?;
         let origin = path.display().to_string();
-        let pairs = crate::srdf::disabled_pairs(&text, &origin)?;
+        let pairs = crate::model::srdf::disabled_pairs(&text, &origin)?;
         self.disable(&pairs, &origin)
     }
 

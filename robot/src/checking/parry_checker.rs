@@ -9,7 +9,7 @@ use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape};
 use spaces::StateSpace;
 use validity::StateValidity;
 
-use crate::scratch_cell::ScratchCell;
+use crate::checking::scratch_cell::ScratchCell;
 use crate::{Kinematics, RobotModel, Scene, Shape};
 
 /// Per-clone scratch: link poses, and sphere centres with radii.

@@ -9,9 +9,9 @@ use validity::{EdgeStatus, MotionProgress, StateValidity};
 
 use wide::f32x8;
 
-use crate::lanes::{LANES, LaneKinematics, Point8, Pose8};
-use crate::local_sweep::LocalSweep;
-use crate::scratch_cell::ScratchCell;
+use crate::checking::lanes::{LANES, LaneKinematics, Point8, Pose8};
+use crate::checking::local_sweep::LocalSweep;
+use crate::checking::scratch_cell::ScratchCell;
 use crate::{Kinematics, LeverArms, Obstacle, RobotModel, Scene};
 
 /// What the checks share between clones: the kinematics, the scene, the pair lists and the
@@ -58,7 +58,7 @@ pub(crate) enum Growth<'a> {
 #[derive(Debug, Clone)]
 pub(crate) struct Scratch {
     pub(crate) lanes: LaneScratch,
-    pub(crate) certify: crate::arm_certification::CertifyScratch,
+    pub(crate) certify: crate::checking::arm_certification::CertifyScratch,
 }
 
 /// The eight-lane checks' buffers: link poses, sphere centres, link bounding-sphere centres
@@ -171,7 +171,10 @@ impl ArmChecker {
                 placed: vec![false; links.len()],
                 q8: vec![f32x8::ZERO; dimension],
             },
-            certify: crate::arm_certification::CertifyScratch::new(dimension, links.len()),
+            certify: crate::checking::arm_certification::CertifyScratch::new(
+                dimension,
+                links.len(),
+            ),
         };
         let local = LocalSweep::new(robot, &links);
         let wraps = space

@@ -1,0 +1,31 @@
+//! Collision checking of arm configurations and motions: the planners' checker, its SIMD
+//! lanes and certified motion, and the independent `f64` checks used as references.
+//!
+//! - [`ArmChecker`] (`arm_checker.rs`): the checker planners use — joint limits, scene and
+//!   self-collision with broad phases, one-sided (a margin covers `f32` rounding); `lanes.rs`
+//!   runs its forward kinematics on eight configurations at once (`f32x8`).
+//! - `arm_certification.rs`: certified motion, every configuration of an edge proven clear
+//!   (not only grid points), with its floor [`CERTIFICATION_FLOOR`]; `local_sweep.rs` bounds
+//!   how far spheres move over a piece of an edge from the piece's middle configuration.
+//! - [`ParryChecker`] (`parry_checker.rs`): the reference checker, `f64` and parry queries, no
+//!   culling (tests and path re-checks).
+//! - [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] (`motion_audit.rs`): an independent
+//!   continuous check of a motion by conservative advancement on parry distances.
+//! - `scratch_cell.rs`: the per-clone scratch buffers both checkers keep behind a mutex.
+//!
+//! May use: `model` (the robot, its kinematics and lever arms), `scenes` (the obstacles), and
+//! the `spaces`, `validity`, `glam`, `wide` and `parry3d-f64` crates. Used by
+//! [`ArmProblem`](crate::ArmProblem).
+
+mod arm_certification;
+mod arm_checker;
+mod lanes;
+mod local_sweep;
+mod motion_audit;
+mod parry_checker;
+mod scratch_cell;
+
+pub use arm_certification::FLOOR as CERTIFICATION_FLOOR;
+pub use arm_checker::ArmChecker;
+pub use motion_audit::{AUDIT_CONTACT, AuditVerdict, MotionAudit};
+pub use parry_checker::ParryChecker;

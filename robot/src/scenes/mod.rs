@@ -1,0 +1,26 @@
+//! Scenes and the files they come from: obstacles, MoveIt planning scenes, and
+//! MotionBenchMaker problems.
+//!
+//! - [`Obstacle`], [`Shape`] (`obstacle.rs`): boxes, cylinders and spheres with poses, and the
+//!   exact sphere contact tests (one sphere, or eight at once for the SIMD checker).
+//! - [`Scene`] (`scene.rs`): a MoveIt planning scene from MotionBenchMaker's YAML: obstacles in
+//!   the robot's base frame and allowed collisions.
+//! - [`MbmProblem`] (`mbm_problem.rs`): a MotionBenchMaker scene and request pair.
+//! - `yaml_text.rs`: `read_yaml`, MoveIt's YAML parsed with limits that scale with the text.
+//! - [`SceneError`] (`scene_error.rs`): why a scene or problem file could not be read, naming
+//!   the file and field.
+//!
+//! May use: the `glam`, `wide`, `serde`, `serde-saphyr` and `thiserror` crates, and of this
+//! crate only the `f32` pose conversion of `model`. Knows nothing of checking. Used by `model`
+//! (the shared length limit), `checking` and [`ArmProblem`](crate::ArmProblem).
+
+mod mbm_problem;
+mod obstacle;
+mod scene;
+mod scene_error;
+mod yaml_text;
+
+pub use mbm_problem::MbmProblem;
+pub use obstacle::{Obstacle, Shape};
+pub use scene::Scene;
+pub use scene_error::SceneError;

@@ -1,0 +1,23 @@
+//! The steps the samplers share: drawing from the informed set, the Gaussian perturbation, and
+//! the search along a segment.
+//!
+//! - `informed_draws.rs`: `InformedDraws`, what every informed sampler owns — the informed set,
+//!   the seeded generator and the work counters — and the steps built from them (draw, perturb,
+//!   check, search a segment, count).
+//! - [`GaussianStep`] (`gaussian_step.rs`): the Gaussian perturbation of the Gaussian,
+//!   bridge-test and adaptive samplers and of [`NearTerminals`](crate::NearTerminals).
+//! - [`SegmentSearch`] (`segment_search.rs`): a valid state on a segment, in bisection order —
+//!   the bridge test's midpoint and the adaptive sampler's repair.
+//!
+//! May use: `informed_sets`, the [`Sampler`](crate::Sampler) trait's types,
+//! [`SamplerError`](crate::SamplerError), and the `spaces`, `validity`, `rand` and `rand_distr`
+//! crates. Knows no sampler: used by the informed, Gaussian, bridge-test and adaptive samplers
+//! and by `wrappers`.
+
+mod gaussian_step;
+mod informed_draws;
+mod segment_search;
+
+pub use gaussian_step::GaussianStep;
+pub(crate) use informed_draws::InformedDraws;
+pub use segment_search::SegmentSearch;
