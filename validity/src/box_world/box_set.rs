@@ -9,7 +9,8 @@ use crate::box_world::slab_index::SlabIndex;
 use crate::box_world::world::{AxisBox, TREE_THRESHOLD};
 
 /// Boxes, their rows (`[lo, hi]` per dimension, box after box, widened by PDT's epsilon) and
-/// the hierarchy over the rows, built on first use after the last change.
+/// the indices over the rows (a hierarchy or a slab index), built on first use after the last
+/// change or by [`BoxSet::build_indices`].
 ///
 /// Every planner clones its problem's world, and that clone counts against its budget; so the
 /// three live behind one [`Arc`] and a clone costs the same for 35 boxes as for 100 000 (a deep
@@ -50,13 +51,12 @@ impl BoxSet {
     /// Appends a box (already validated); the hierarchy is rebuilt on its next use.
     pub(crate) fn push(&mut self, b: AxisBox) {
         if Arc::get_mut(&mut self.0).is_none() {
-            // Shared: copy the boxes and rows, not the hierarchy this change invalidates.
+            // Shared: copy the boxes and rows, not the indices this change invalidates.
             self.0 = Arc::new(Boxes {
                 boxes: self.0.boxes.clone(),
                 rows: self.0.rows.clone(),
                 thinnest: self.0.thinnest,
-                tree: OnceLock::new(),
-                slabs: OnceLock::new(),
+                ..Boxes::default()
             });
         }
         let inner = Arc::make_mut(&mut self.0);
@@ -65,22 +65,28 @@ impl BoxSet {
             inner.rows.push(c - half);
             inner.rows.push(c + half);
         }
-        let side = b.widths.iter().copied().reduce(f64::min);
-        inner.thinnest = match (inner.thinnest, side) {
-            (Some(t), Some(s)) => Some(t.min(s)),
-            (t, s) => t.or(s),
-        };
+        inner.thinnest = inner
+            .thinnest
+            .into_iter()
+            .chain(b.widths.iter().copied())
+            .reduce(f64::min);
         inner.boxes.push(b);
         inner.tree = OnceLock::new();
         inner.slabs = OnceLock::new();
     }
 
+    /// `true` for sets a scan of the rows checks as fast as an index: at most
+    /// [`TREE_THRESHOLD`] boxes (or no dimension).
+    #[inline]
+    fn scanned(&self, dimension: usize) -> bool {
+        dimension == 0 || self.0.rows.len() <= TREE_THRESHOLD * 2 * dimension
+    }
+
     /// The hierarchy over the rows in `dimension` dimensions, built now if not yet; `None` for
-    /// sets of at most [`TREE_THRESHOLD`] boxes, which a scan of the rows checks as fast.
+    /// sets a scan checks as fast.
     #[inline]
     pub(crate) fn hierarchy(&self, dimension: usize) -> Option<&BoxTree> {
-        let width = 2 * dimension;
-        if width == 0 || self.0.rows.len() <= TREE_THRESHOLD * width {
+        if self.scanned(dimension) {
             return None;
         }
         Some(
@@ -89,9 +95,7 @@ impl BoxSet {
                 .get_or_init(|| BoxTree::build(&self.0.rows, dimension)),
         )
     }
-}
 
-impl BoxSet {
     /// Builds now the slab index or the hierarchy that checks in `dimension` dimensions use.
     pub(crate) fn build_indices(&self, dimension: usize) {
         if self.slabs(dimension).is_none() {
@@ -103,7 +107,7 @@ impl BoxSet {
     /// it checks better than the hierarchy ([`SlabIndex::serves`]); `None` for the others.
     #[inline]
     pub(crate) fn slabs(&self, dimension: usize) -> Option<&SlabIndex> {
-        if dimension == 0 || self.0.rows.len() <= TREE_THRESHOLD * 2 * dimension {
+        if self.scanned(dimension) {
             return None;
         }
         self.0

@@ -111,18 +111,22 @@ impl SlabIndex {
     /// boxes, a start state's place) and `cargo run --release -p validity --example
     /// large_world`.
     pub(crate) fn serves(count: usize, dimension: usize, side: f64) -> bool {
+        Self::hierarchy_is_shallow(count, dimension) && side >= 0.1
+    }
+
+    /// The first half of [`serves`](Self::serves), which needs no pass over the boxes: a
+    /// dimension the index serves, with a hierarchy over `count` boxes cutting each coordinate
+    /// fewer than 1.5 times.
+    fn hierarchy_is_shallow(count: usize, dimension: usize) -> bool {
         let depth = (count as f64 / 8.0).log2();
-        (1..=MAX_DIMENSION).contains(&dimension)
-            && count > 8
-            && side >= 0.1
-            && 1.5 * dimension as f64 >= depth
+        (1..=MAX_DIMENSION).contains(&dimension) && count > 8 && 1.5 * dimension as f64 >= depth
     }
 
     /// The index over `rows` if it [serves](Self::serves) them better than a hierarchy.
     pub(crate) fn if_it_serves(rows: &[f64], dimension: usize) -> Option<Self> {
         let width = 2 * dimension;
         let count = rows.len().checked_div(width)?;
-        if !Self::serves(count, dimension, 1.0) {
+        if !Self::hierarchy_is_shallow(count, dimension) {
             return None;
         }
         let mut extent = vec![(f64::INFINITY, f64::NEG_INFINITY); dimension];
