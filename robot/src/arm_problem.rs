@@ -15,9 +15,9 @@ use crate::{ArmChecker, ArmError, LeverArms, MbmProblem, RobotModel, Scene};
 /// certification proves every configuration between its points ([`CERTIFICATION`]) — so its
 /// density trades speed, not safety. Measured on the `panda-mbm` experiment to first solutions
 /// (RRT-Connect, range 1: 0.476 → 0.465 ms median against the 32-per-unit grid with the 4×
-/// grid certification it replaced; MIT*: 1.257 → 1.302 ms), and 16 instead of 32 takes 12 %
-/// off RRT-Connect's planning time with continuous certification (the user guide's reference
-/// page on arm planning, "The check grid's density").
+/// grid certification it replaced; MIT*: 1.257 → 1.302 ms), and 16 instead of 32 takes 13 %
+/// off RRT-Connect's planning time with continuous certification (`examples/check_density.rs`;
+/// the user guide's reference page on arm planning, "The check grid's density").
 pub const CHECKS_PER_UNIT: f64 = 16.0;
 
 /// The certification factor arm problems ask planners for. Any factor above 1 turns
