@@ -103,6 +103,22 @@ pub struct Parameters {
     /// RRT-Connect's maximum extension length (`None`: [`default_range`](crate::default_range),
     /// the paper's per dimension or 0.2 of the maximum extent). Unused by the EIT* family.
     pub range: Option<f64>,
+    /// RRT-Connect steers towards valid samples only (`true`, OMPL's valid-state sampler:
+    /// every draw costs a state check and invalid draws are redrawn) or towards any state of
+    /// the space (`false`, the default, as OMPL's RRT-Connect with its plain state sampler and
+    /// VAMP do): an extension towards an invalid draw stops where its motion does. Chosen by
+    /// measurement on the Panda (the arm-planning reference page, "RRT-Connect's parts").
+    pub rrt_valid_samples: bool,
+    /// RRT-Connect's dynamic domain (Yershova et al., 2005): a state from which an extension
+    /// failed gets a radius (4 ranges, then shrinking by 0.01 % per failure down to one range,
+    /// growing as much per success), and draws farther from their nearest state than its
+    /// radius are skipped without a check. `true` (the default, chosen by measurement on the
+    /// Panda) or `false` (plain RRT-Connect, as OMPL's).
+    pub rrt_dynamic_domain: bool,
+    /// RRT-Connect grows the smaller tree while one tree has at least twice the states of the
+    /// other (`true`, the default, chosen by measurement), instead of alternating strictly
+    /// (`false`, as OMPL's).
+    pub rrt_balance: bool,
     /// Informed RRT*'s probability of sampling a goal instead of the sampler's state.
     pub goal_bias: f64,
     /// Informed RRT*'s k-nearest rewiring factor (OMPL's `rewire_factor` of RRT*; the EIT*
@@ -150,6 +166,9 @@ impl Default for Parameters {
             near_terminals: None,
             accelerated_checks: true,
             range: None,
+            rrt_valid_samples: false,
+            rrt_dynamic_domain: true,
+            rrt_balance: true,
             goal_bias: 0.05,
             rrt_rewire_factor: 1.2,
             initial_inflation: None,
@@ -375,6 +394,9 @@ impl Parameters {
                     .map_or_else(|| "problem's".to_owned(), |f| f.to_string()),
             ),
             ("accelerated_checks", self.accelerated_checks.to_string()),
+            ("rrt_valid_samples", self.rrt_valid_samples.to_string()),
+            ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),
+            ("rrt_balance", self.rrt_balance.to_string()),
             ("goal_bias", self.goal_bias.to_string()),
             ("rrt_rewire_factor", self.rrt_rewire_factor.to_string()),
             (

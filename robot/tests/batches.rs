@@ -3,7 +3,8 @@
 //! Random scenes and runs of 1 to 20 configurations (some outside the joint limits): the
 //! batch's first invalid configuration is the one the scalar check finds first, and the one
 //! parry finds first, whenever no configuration of the run lies within the stated tolerance
-//! of touching (see `parry_agreement.rs`).
+//! of touching (see `parry_agreement.rs`); `any_invalid` names an invalid configuration
+//! exactly when there is one.
 
 use glam::DVec3;
 use proptest::prelude::*;
@@ -71,6 +72,13 @@ proptest! {
         prop_assert_eq!(fast.batch_width(), 8);
         prop_assert_eq!(fast.first_invalid(&states, 7), scalar);
         prop_assert_eq!(scalar, parry);
+        // `any_invalid` (edge checks): some configuration exactly when there is one, and an
+        // invalid one.
+        let any = fast.any_invalid(&states, 7);
+        prop_assert_eq!(any.is_some(), scalar.is_some());
+        if let Some(i) = any {
+            prop_assert!(!fast.is_valid(configurations[i]), "configuration {} is valid", i);
+        }
     }
 }
 

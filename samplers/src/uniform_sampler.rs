@@ -41,6 +41,31 @@ impl UniformSampler {
     }
 }
 
+impl UniformSampler {
+    /// Writes one state drawn uniformly from the whole space into `out`, valid or not (OMPL's
+    /// plain state sampler, as RRT-Connect uses it): a draw and no validity check, counted
+    /// as such.
+    ///
+    /// # Errors
+    /// [`SampleError::DimensionMismatch`] if `out` does not have the space's dimension.
+    pub fn draw_any<S: StateSpace + ?Sized>(
+        &mut self,
+        space: &S,
+        out: &mut [f64],
+    ) -> Result<(), SampleError> {
+        if out.len() != space.dimension() {
+            return Err(SampleError::DimensionMismatch {
+                expected: space.dimension(),
+                got: out.len(),
+            });
+        }
+        space.sample_uniform(&mut self.rng, out);
+        self.counters.drawn += 1;
+        self.counters.returned += 1;
+        Ok(())
+    }
+}
+
 impl<S, V> Sampler<S, V> for UniformSampler
 where
     S: StateSpace + ?Sized,

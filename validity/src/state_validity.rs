@@ -49,6 +49,17 @@ pub trait StateValidity {
             .position(|s| !self.is_valid(s))
     }
 
+    /// The index of *an* invalid state among `states` (laid out as for
+    /// [`first_invalid`](Self::first_invalid)), or `None` if all are valid: for checks that
+    /// only ask whether a batch is free — an edge check, whose grid points go out in batches.
+    /// A batched implementation may stop at the first invalid state it meets in any lane
+    /// instead of deciding every state before it. `None` exactly when `first_invalid` is
+    /// `None`. The default is [`first_invalid`](Self::first_invalid).
+    #[inline]
+    fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        self.first_invalid(states, dimension)
+    }
+
     /// Certifies the motion from `a` to `b` — every state the space's interpolation passes
     /// through, not only grid points — if this checker can (`None`, the default, when it can
     /// only test states; the [`GridWalker`](crate::GridWalker) then certifies on a finer grid).
@@ -139,6 +150,11 @@ macro_rules! forward_state_validity {
             #[inline]
             fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
                 (**self).first_invalid(states, dimension)
+            }
+
+            #[inline]
+            fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+                (**self).any_invalid(states, dimension)
             }
 
             #[inline]
@@ -263,6 +279,17 @@ impl<V: StateValidity> StateValidity for Counted<V> {
         let n = states.len() / dimension.max(1);
         self.count.set(self.count.get() + n as u64);
         self.inner.first_invalid(states, dimension)
+    }
+
+    /// Counted as [`first_invalid`](Self::first_invalid).
+    #[inline]
+    fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        if self.inner.batch_width() <= 1 {
+            return self.first_invalid(states, dimension);
+        }
+        let n = states.len() / dimension.max(1);
+        self.count.set(self.count.get() + n as u64);
+        self.inner.any_invalid(states, dimension)
     }
 
     /// Not counted: a motion certification is no state check (the walker counts the

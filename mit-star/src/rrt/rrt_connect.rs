@@ -80,6 +80,8 @@ enum Step {
 struct Motion {
     tree: usize,
     near: u32,
+    /// A step towards a sample (whose outcome updates the dynamic domain), not a connection.
+    grows: bool,
     /// The candidate is the target itself.
     reached: bool,
     progress: EdgeProgress,
@@ -93,6 +95,24 @@ enum Phase {
     /// Tree `1 − from` steps towards state `new` of tree `from`.
     Connect { from: usize, new: u32 },
 }
+
+/// A state's dynamic-domain radius after an extension from it succeeded (`valid`) or failed:
+/// a first failure sets it to [`DOMAIN_RADIUS`] ranges; later outcomes scale it by
+/// `1 ± DOMAIN_RATE`, never below one range (Yershova et al., 2005, with VAMP's constants).
+fn dynamic_radius(radius: f64, valid: bool, range: f64) -> f64 {
+    match (radius.is_finite(), valid) {
+        (false, true) => radius,
+        (false, false) => DOMAIN_RADIUS * range,
+        (true, true) => radius * (1.0 + DOMAIN_RATE),
+        (true, false) => (radius * (1.0 - DOMAIN_RATE)).max(range),
+    }
+}
+
+/// A state's first dynamic-domain radius, in ranges.
+const DOMAIN_RADIUS: f64 = 4.0;
+
+/// How much a dynamic-domain radius grows or shrinks per outcome.
+const DOMAIN_RATE: f64 = 1e-4;
 
 /// The paper's RRT-Connect range in R^`n` (for its unit-cube problems), else 0.2 of the
 /// maximum extent (OMPL's default).
@@ -169,39 +189,62 @@ where
             .flatten()
     }
 
+    /// The tree the next sample grows: the other one than last time, unless balancing is on
+    /// and one tree has at least twice the states of the other, then the smaller.
+    fn tree_to_grow(&self) -> usize {
+        let [a, b] = [&self.trees[0], &self.trees[1]].map(|t| t.parents.len());
+        if self.core.parameters.rrt_balance {
+            if a >= 2 * b {
+                return 1;
+            }
+            if b >= 2 * a {
+                return 0;
+            }
+        }
+        self.growing
+    }
+
     /// Starts a step of tree `t` from its state nearest to `self.core.target` towards it: the
-    /// candidate state (at most `range` away) goes to `self.core.candidate` and, if it is valid,
-    /// the motion to it becomes the pending one. `Trapped` if the candidate is invalid,
+    /// candidate state (at most `range` away) goes to `self.core.candidate` and the motion to
+    /// it becomes the pending one ([`finish_motion`](Self::finish_motion) checks both).
     /// `Stopped` if the stop fired during the nearest-neighbour query.
-    fn start_motion(&mut self, t: usize, stop: &dyn Stop) -> Option<Step> {
+    fn start_motion(&mut self, t: usize, grows: bool, stop: &dyn Stop) -> Option<Step> {
         let target = std::mem::take(&mut self.core.target);
         let near = self.nearest(t, &target, stop);
-        let step = near.map(|near| {
+        let dynamic = grows && self.core.parameters.rrt_dynamic_domain;
+        let started = near.map(|near| {
             let from = self.trees[t].state(near);
+            if dynamic
+                && self.core.space.distance(from, &target) > self.trees[t].radii[near as usize]
+            {
+                // Outside the nearest state's dynamic domain: skipped, nothing checked.
+                return false;
+            }
             let reached = steer(
                 &self.core.space,
                 (from, &target),
                 self.core.range,
                 &mut self.core.candidate,
             );
-            if self.core.validity.is_valid(&self.core.candidate) {
-                self.pending = Some(Motion {
-                    tree: t,
-                    near,
-                    reached,
-                    progress: EdgeProgress::UNTESTED,
-                });
-                None
-            } else {
-                Some(Step::Trapped)
-            }
+            self.pending = Some(Motion {
+                tree: t,
+                near,
+                grows,
+                reached,
+                progress: EdgeProgress::UNTESTED,
+            });
+            true
         });
         self.core.target = target;
-        step.unwrap_or(Some(Step::Stopped))
+        match started {
+            Some(true) => None,
+            Some(false) => Some(Step::Trapped),
+            None => Some(Step::Stopped),
+        }
     }
 
-    /// Checks the pending motion at every grid point and adds its end to its tree if it is
-    /// valid (certification, when the problem asks for it, waits for a connection: see
+    /// Checks the pending motion at every grid point, then its end, and adds the end to its
+    /// tree if both are valid (certification, when the problem asks for it, waits for a connection: see
     /// [`certify_connection`](Self::certify_connection)). A check the stop interrupts stays
     /// pending with its progress, and the next call resumes it.
     fn finish_motion(&mut self, stop: &dyn Stop) -> Step {
@@ -209,10 +252,23 @@ where
             return Step::Trapped;
         };
         let from = self.trees[motion.tree].state(motion.near);
-        match self
+        let status = match self
             .core
             .check_full_to_candidate(from, &mut motion.progress, stop)
         {
+            // The candidate itself last: the motion's grid points, in bisection order and
+            // batches, reject most invalid extensions sooner than one check of its end.
+            EdgeStatus::Valid if !self.core.validity.is_valid(&self.core.candidate) => {
+                EdgeStatus::Invalid
+            }
+            status => status,
+        };
+        if motion.grows && self.core.parameters.rrt_dynamic_domain && status != EdgeStatus::Unknown
+        {
+            let radius = &mut self.trees[motion.tree].radii[motion.near as usize];
+            *radius = dynamic_radius(*radius, status == EdgeStatus::Valid, self.core.range);
+        }
+        match status {
             EdgeStatus::Invalid => Step::Trapped,
             EdgeStatus::Unknown => {
                 self.pending = Some(motion);
@@ -245,22 +301,27 @@ where
             let step = match self.phase {
                 Phase::Grow if self.pending.is_none() => {
                     let mut sample = std::mem::take(&mut self.core.target);
-                    let drawn = self.core.sampler.sample(
-                        &self.core.space,
-                        &self.core.validity,
-                        CostBound::Unbounded,
-                        stop,
-                        &mut sample,
-                    );
+                    let drawn = if self.core.parameters.rrt_valid_samples {
+                        self.core.sampler.sample(
+                            &self.core.space,
+                            &self.core.validity,
+                            CostBound::Unbounded,
+                            stop,
+                            &mut sample,
+                        )
+                    } else {
+                        self.core.sampler.draw_any(&self.core.space, &mut sample)
+                    };
                     self.core.target = sample;
-                    // A uniform sampler fails only when stopped (the query was validated).
+                    // A uniform sampler fails only when stopped (the query was validated, so the
+                    // dimensions agree).
                     if drawn.is_err() {
                         return;
                     }
-                    let t = self.growing;
+                    let t = self.tree_to_grow();
                     // The trees take turns, whatever this step does.
                     self.growing = 1 - t;
-                    match self.start_motion(t, stop) {
+                    match self.start_motion(t, true, stop) {
                         Some(step) => step,
                         None => self.finish_motion(stop),
                     }
@@ -268,7 +329,7 @@ where
                 Phase::Connect { from, new } if self.pending.is_none() => {
                     let target = self.trees[from].state(new);
                     self.core.target.copy_from_slice(target);
-                    match self.start_motion(1 - from, stop) {
+                    match self.start_motion(1 - from, false, stop) {
                         Some(step) => step,
                         None => self.finish_motion(stop),
                     }
@@ -547,5 +608,41 @@ mod tests {
             let error = RrtConnect::for_problem(&problem, &parameters).unwrap_err();
             assert!(error.to_string().contains("range"), "{error}");
         }
+    }
+
+    #[test]
+    fn samples_are_checked_only_when_asked_and_paths_are_valid_either_way() {
+        let problem = problems::DividingWalls::new(2)
+            .build()
+            .unwrap()
+            .with_resolution(1e-4)
+            .unwrap();
+        for valid_samples in [false, true] {
+            let parameters = Parameters {
+                range: Some(0.1),
+                seed: 5,
+                rrt_valid_samples: valid_samples,
+                ..Parameters::default()
+            };
+            let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
+            let outcome = planner
+                .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+                .unwrap();
+            let path = &outcome.solution().unwrap().path;
+            for (a, b) in path.iter().zip(path.iter().skip(1)) {
+                assert!(problem.world().segment_verdict(a, b).is_valid());
+            }
+            let sampler_checks = planner.counters().sampler_checks;
+            assert_eq!(sampler_checks > 0, valid_samples, "{sampler_checks}");
+        }
+    }
+
+    #[test]
+    fn dynamic_domain_radii_start_at_four_ranges_and_stay_above_one() {
+        assert_eq!(dynamic_radius(f64::INFINITY, true, 0.5), f64::INFINITY);
+        assert_eq!(dynamic_radius(f64::INFINITY, false, 0.5), 2.0);
+        assert!(dynamic_radius(2.0, true, 0.5) > 2.0);
+        assert!(dynamic_radius(2.0, false, 0.5) < 2.0);
+        assert_eq!(dynamic_radius(0.5, false, 0.5), 0.5);
     }
 }

@@ -19,6 +19,9 @@ pub(crate) struct Tree {
     /// The edge from the parent passed certification (roots: `true`). Planners that certify
     /// lazily (only a solution's edges) read and set it.
     pub(crate) certified: Vec<bool>,
+    /// Per state: its dynamic-domain radius (RRT-Connect; `∞` until an extension from it
+    /// fails).
+    pub(crate) radii: Vec<f64>,
     nn: NearestNeighbors,
 }
 
@@ -28,6 +31,7 @@ impl Tree {
             states: States::new(dimension),
             parents: Vec::new(),
             certified: Vec::new(),
+            radii: Vec::new(),
             nn: NearestNeighbors::new(dimension),
         }
     }
@@ -37,6 +41,7 @@ impl Tree {
         self.states.push(state);
         self.parents.push(parent);
         self.certified.push(parent == ROOT);
+        self.radii.push(f64::INFINITY);
         self.nn.insert([(id, state)]);
         id
     }
@@ -63,6 +68,7 @@ impl Tree {
             };
             renumbered[old] = kept.add(&self.states[old], new_parent);
             kept.certified[renumbered[old] as usize] = self.certified[old];
+            kept.radii[renumbered[old] as usize] = self.radii[old];
         }
         *self = kept;
     }

@@ -28,7 +28,7 @@ use validity::{EdgeStatus, MotionProgress};
 use wide::f32x8;
 
 use crate::ArmChecker;
-use crate::checking::arm_checker::{Growth, Scratch, invalid_lanes};
+use crate::checking::arm_checker::{Growth, Scratch, Wanted, invalid_lanes};
 use crate::checking::lanes::LANES;
 use crate::checking::local_sweep::EdgeTerms;
 
@@ -167,7 +167,7 @@ impl ArmChecker {
                     .grow(poses, bounds, (delta, terms), &halves, s.margin, sweep, out);
             };
             let growth = Growth::Placed(grow, &place);
-            let invalid = invalid_lanes(s, lanes, &chunk[..count * n], n, growth);
+            let invalid = invalid_lanes(s, lanes, (&chunk[..count * n], n), growth, Wanted::First);
             if invalid == 0 {
                 t = (t + count as f64 * w).min(1.0);
                 w = (if w >= 4.0 * first { 2.0 } else { GROWTH } * w).min(1.0);

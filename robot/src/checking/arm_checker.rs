@@ -54,6 +54,15 @@ pub(crate) enum Growth<'a> {
     Placed(&'a mut [f32x8], PlaceGrowth<'a>),
 }
 
+/// Which invalid configuration of a batch a check must find.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Wanted {
+    /// The first one: every lane before it is decided.
+    First,
+    /// Any one: the check ends at the first contact in any lane.
+    Any,
+}
+
 /// Per-clone scratch, reused by every check.
 #[derive(Debug, Clone)]
 pub(crate) struct Scratch {
@@ -224,9 +233,9 @@ impl StateValidity for ArmChecker {
         invalid_lanes(
             s,
             &mut guard.lanes,
-            q,
-            q.len().max(1),
+            (q, q.len().max(1)),
             Growth::Fixed(&s.plain),
+            Wanted::Any,
         ) == 0
     }
 
@@ -250,17 +259,24 @@ impl StateValidity for ArmChecker {
     }
 
     fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        self.invalid_in(states, dimension, Wanted::First)
+    }
+
+    /// Ends a batch at its first contact in any lane, without deciding the lanes before it.
+    fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+        self.invalid_in(states, dimension, Wanted::Any)
+    }
+}
+
+impl ArmChecker {
+    /// An invalid configuration of `states` (the first, or any, as `wanted`), eight at a time.
+    fn invalid_in(&self, states: &[f64], dimension: usize, wanted: Wanted) -> Option<usize> {
         let dimension = dimension.max(1);
         let s = &*self.shared;
         let mut guard = self.scratch.lock();
         for (c, chunk) in states.chunks(LANES * dimension).enumerate() {
-            let invalid = invalid_lanes(
-                s,
-                &mut guard.lanes,
-                chunk,
-                dimension,
-                Growth::Fixed(&s.plain),
-            );
+            let growth = Growth::Fixed(&s.plain);
+            let invalid = invalid_lanes(s, &mut guard.lanes, (chunk, dimension), growth, wanted);
             if invalid != 0 {
                 return Some(c * LANES + invalid.trailing_zeros() as usize);
             }
@@ -271,14 +287,15 @@ impl StateValidity for ArmChecker {
 
 /// Bit `l` set if configuration `l` of `chunk` (at most [`LANES`] configurations of
 /// `dimension` values) is invalid with every sphere of the link in entry `k` of
-/// `Shared::links` grown by lane `l` of `grow[k]`; exact for every lane up to the first invalid
-/// one. A chunk of the wrong dimension is invalid in every lane.
+/// `Shared::links` grown by lane `l` of `grow[k]`. [`Wanted::First`]: exact for every lane up
+/// to the first invalid one. [`Wanted::Any`]: nonzero exactly when some lane is invalid, and
+/// every bit set is an invalid lane. A chunk of the wrong dimension is invalid in every lane.
 pub(crate) fn invalid_lanes(
     s: &Shared,
     scratch: &mut LaneScratch,
-    chunk: &[f64],
-    dimension: usize,
+    (chunk, dimension): (&[f64], usize),
     growth: Growth<'_>,
+    wanted: Wanted,
 ) -> u32 {
     let count = (chunk.len() / dimension).min(LANES);
     let live: u32 = (1 << count) - 1;
@@ -300,10 +317,13 @@ pub(crate) fn invalid_lanes(
             .any(|(x, (lo, hi))| !(lo <= x && x <= hi));
         invalid |= u32::from(out) << l;
     }
-    // Lanes still to decide: those before the first invalid one.
+    // Lanes still to decide: those before the first invalid one (none once one is found, if
+    // any will do).
     let undecided = |invalid: u32| {
         if invalid == 0 {
             live
+        } else if wanted == Wanted::Any {
+            0
         } else {
             live & ((1 << invalid.trailing_zeros()) - 1)
         }
@@ -318,14 +338,18 @@ pub(crate) fn invalid_lanes(
             chunk[if l < count { l } else { 0 } * dimension + c] as f32
         }));
     }
-    s.lanes.link_poses(q8, poses8);
     placed.fill(false);
-    for (bound, (link, _, center, _)) in bounds8.iter_mut().zip(&s.links) {
-        *bound = poses8[*link].point(*center);
-    }
+    // With a fixed growth, links are placed as the tests reach them (in tree order), so that a
+    // batch found invalid early skips the rest of the walk; a placed growth needs them all.
+    let mut posed = 0;
     let grow: &[f32x8] = match growth {
         Growth::Fixed(grow) => grow,
         Growth::Placed(buffer, place) => {
+            s.lanes.link_poses(q8, poses8);
+            posed = poses8.len();
+            for (bound, (link, _, center, _)) in bounds8.iter_mut().zip(&s.links) {
+                *bound = poses8[*link].point(*center);
+            }
             place(poses8, bounds8, buffer);
             buffer
         }
@@ -335,7 +359,12 @@ pub(crate) fn invalid_lanes(
             centers[i] = pose.point(s.spheres[i].0);
         }
     };
-    for (k, (link, range, _, radius)) in s.links.iter().enumerate() {
+    for (k, (link, range, center, radius)) in s.links.iter().enumerate() {
+        if *link >= posed {
+            s.lanes.link_poses_in(q8, poses8, posed..*link + 1);
+            posed = *link + 1;
+            bounds8[k] = poses8[*link].point(*center);
+        }
         let pose = &poses8[*link];
         let bound = f32x8::splat(*radius) + grow[k];
         for obstacle in &s.obstacles {

@@ -6,7 +6,9 @@
 //! [`Kinematics::link_poses`](crate::Kinematics::link_poses) with every number replaced by
 //! eight. Constants (joint origins, local sphere centres, obstacle transforms) are splatted.
 
-use glam::{Affine3A, Vec3A};
+use std::ops::Range;
+
+use glam::Vec3A;
 use wide::f32x8;
 
 use crate::Kinematics;
@@ -53,31 +55,101 @@ impl Pose8 {
         let [x, y, z] = self.rotate(p);
         [x + self.t[0], y + self.t[1], z + self.t[2]]
     }
+}
 
-    /// `self * a` for a constant `a`.
-    #[inline]
-    fn then_constant(&self, a: &Affine3A) -> Self {
-        let m = &a.matrix3;
-        Self {
-            r: [
-                self.rotate(m.x_axis),
-                self.rotate(m.y_axis),
-                self.rotate(m.z_axis),
-            ],
-            t: self.point(a.translation),
+/// How a step's constant joint origin turns the parent's rotation, classified once: most
+/// URDF origins turn by nothing or by quarter turns about an axis (the Panda's `rpy` of
+/// ±π/2), which only permute the parent's rotation columns and flip their signs.
+#[derive(Debug, Clone, Copy)]
+enum Turn {
+    /// The identity: the columns stay.
+    Keep,
+    /// Column `j` becomes the parent's column `from[j]`, negated if `negate[j]`.
+    Permute { from: [usize; 3], negate: [bool; 3] },
+    /// Any other rotation, by its columns.
+    Matrix([Vec3A; 3]),
+}
+
+impl Turn {
+    /// The turn of `m`, whose entries within [`SNAP`] of 0 or ±1 count as exactly that.
+    fn of(m: &glam::Mat3A) -> Self {
+        let columns = [m.x_axis, m.y_axis, m.z_axis];
+        let mut from = [0; 3];
+        let mut negate = [false; 3];
+        for (j, column) in columns.iter().enumerate() {
+            let entries = column.to_array();
+            let unit = entries.iter().position(|e| (e.abs() - 1.0).abs() <= SNAP);
+            let rest_zero = |k: usize| {
+                entries
+                    .iter()
+                    .enumerate()
+                    .all(|(i, e)| i == k || e.abs() <= SNAP)
+            };
+            match unit {
+                Some(k) if rest_zero(k) => {
+                    from[j] = k;
+                    negate[j] = entries[k] < 0.0;
+                }
+                _ => return Self::Matrix(columns),
+            }
+        }
+        if from == [0, 1, 2] && negate == [false; 3] {
+            Self::Keep
+        } else {
+            Self::Permute { from, negate }
         }
     }
 }
 
-/// The tree walk of a [`Kinematics`], eight configurations at a time.
+/// How close to 0 or ±1 (in `f32`) an entry of a joint origin's rotation counts as exactly
+/// that. URDF `rpy` values written to 12 digits (`1.57079632679`) leave entries of about
+/// 5e-12 where a quarter turn has zeros; treating them as zeros moves a point one metre from
+/// the joint by about 1e-9 m, against the checker's margin of 2e-5 m.
+const SNAP: f32 = 1e-9;
+
+/// One link's step of the lane walk: its parent, the origin's turn and the nonzero
+/// components of its translation, and the joint's motion.
+#[derive(Debug, Clone, Copy)]
+struct LaneStep {
+    parent: usize,
+    turn: Turn,
+    /// `(axis, value)` for each nonzero component of the origin's translation, first
+    /// `shifts` entries.
+    shift: [(usize, f32); 3],
+    shifts: usize,
+    motion: JointMotion,
+}
+
+/// The tree walk of a [`Kinematics`], eight configurations at a time, with each joint
+/// origin's constant transform applied by only the arithmetic it needs (a generic robot's
+/// constants folded at load time: see [`Turn`]).
 #[derive(Debug, Clone)]
 pub(crate) struct LaneKinematics {
-    steps: Vec<(usize, Affine3A, JointMotion)>,
+    steps: Vec<LaneStep>,
 }
 
 impl LaneKinematics {
     pub(crate) fn new(fk: &Kinematics) -> Self {
-        let steps = (0..fk.link_count()).map(|i| fk.step(i)).collect();
+        let steps = (0..fk.link_count())
+            .map(|i| {
+                let (parent, origin, motion) = fk.step(i);
+                let mut shift = [(0, 0.0); 3];
+                let mut shifts = 0;
+                for (axis, value) in origin.translation.to_array().into_iter().enumerate() {
+                    if value != 0.0 {
+                        shift[shifts] = (axis, value);
+                        shifts += 1;
+                    }
+                }
+                LaneStep {
+                    parent,
+                    turn: Turn::of(&origin.matrix3),
+                    shift,
+                    shifts,
+                    motion,
+                }
+            })
+            .collect();
         Self { steps }
     }
 
@@ -85,15 +157,46 @@ impl LaneKinematics {
     /// per coordinate) into `out` (one pose per link).
     #[inline]
     pub(crate) fn link_poses(&self, q: &[f32x8], out: &mut [Pose8]) {
-        for (i, &(parent, ref origin, joint)) in self.steps.iter().enumerate() {
-            let base = if parent == usize::MAX {
-                Pose8::IDENTITY
+        self.link_poses_in(q, out, 0..self.steps.len());
+    }
+
+    /// Writes the world poses of the links in `links` only, given those of the links before
+    /// (the walk of [`link_poses`](Self::link_poses) a stretch at a time, so that a check can
+    /// stop before placing the links it no longer needs).
+    #[inline]
+    pub(crate) fn link_poses_in(&self, q: &[f32x8], out: &mut [Pose8], links: Range<usize>) {
+        for i in links {
+            let step = &self.steps[i];
+            // In place: the parent comes before the link in tree order.
+            let (done, rest) = out.split_at_mut(i);
+            let pose = &mut rest[0];
+            let base = if step.parent == usize::MAX {
+                &Pose8::IDENTITY
             } else {
-                out[parent]
+                &done[step.parent]
             };
-            // parent · origin, then the joint's own motion.
-            let mut pose = base.then_constant(origin);
-            match joint {
+            // parent · origin: the translation through the parent's rotation, then the turn.
+            pose.t = base.t;
+            for &(axis, value) in &step.shift[..step.shifts] {
+                let value = f32x8::splat(value);
+                for (t, r) in pose.t.iter_mut().zip(base.r[axis]) {
+                    *t += r * value;
+                }
+            }
+            match step.turn {
+                Turn::Keep => pose.r = base.r,
+                Turn::Permute { from, negate } => {
+                    for (j, column) in pose.r.iter_mut().enumerate() {
+                        *column = base.r[from[j]];
+                        if negate[j] {
+                            *column = column.map(|x| -x);
+                        }
+                    }
+                }
+                Turn::Matrix(columns) => pose.r = columns.map(|c| base.rotate(c)),
+            }
+            // Then the joint's own motion.
+            match step.motion {
                 JointMotion::Fixed => {}
                 JointMotion::RevoluteZ(c) => {
                     let (s, cos) = q[c].sin_cos();
@@ -129,7 +232,6 @@ impl LaneKinematics {
                     }
                 }
             }
-            out[i] = pose;
         }
     }
 }
@@ -138,6 +240,41 @@ impl LaneKinematics {
 mod tests {
     use super::*;
     use crate::RobotModel;
+    use glam::Affine3A;
+
+    #[test]
+    fn quarter_turn_origins_only_permute_columns() {
+        let urdf = include_str!("../../data/panda/panda_spherized.urdf");
+        let panda = RobotModel::from_urdf_str(urdf).unwrap();
+        let lanes = LaneKinematics::new(&Kinematics::new(&panda));
+        let turns: Vec<&str> = lanes
+            .steps
+            .iter()
+            .map(|s| match s.turn {
+                Turn::Keep => "keep",
+                Turn::Permute { .. } => "permute",
+                Turn::Matrix(_) => "matrix",
+            })
+            .collect();
+        // Joints 2-7 turn by ±π/2 about x (`rpy` written to 12 digits); the hand by -π/4.
+        assert_eq!(
+            turns.iter().filter(|t| **t == "permute").count(),
+            6,
+            "{turns:?}"
+        );
+        assert_eq!(
+            turns.iter().filter(|t| **t == "matrix").count(),
+            1,
+            "{turns:?}"
+        );
+        // Translations keep only their nonzero components (joint 1: z = 0.333).
+        assert!(
+            lanes
+                .steps
+                .iter()
+                .any(|s| s.shifts == 1 && s.shift[0] == (2, 0.333))
+        );
+    }
 
     #[test]
     fn lanes_place_links_as_the_scalar_walk_does() {

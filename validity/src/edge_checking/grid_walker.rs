@@ -336,7 +336,7 @@ impl GridWalker {
 
     /// [`advance`](Self::advance) for a checker with batches: the next `width` points of the
     /// bisection order (fewer at the end of the walk or of a poll period) go to
-    /// [`StateValidity::first_invalid`] in one call. Each point of the order is drawn from
+    /// [`StateValidity::any_invalid`] in one call. Each point of the order is drawn from
     /// the order once, so no point is tested twice; polls fall on the same positions as in
     /// the one-by-one walk, because a batch never straddles a poll.
     #[inline(never)]
@@ -374,10 +374,10 @@ impl GridWalker {
 
     /// Tests the states at `fractions` of the edge `a → b` in order, `batches.width` to a call
     /// — [`StateValidity::first_invalid_on`] with the fractions if the walker's segment is
-    /// prepared, [`StateValidity::first_invalid`] with interpolated states otherwise — polling
+    /// prepared, [`StateValidity::any_invalid`] with interpolated states otherwise — polling
     /// `stop` every [`STOP_POLL`] points (and before the first if `batches.polls_first`) so that
-    /// no batch straddles a poll. Counts the points tested up to and including the first
-    /// invalid one.
+    /// no batch straddles a poll. Counts the points tested up to and including the invalid
+    /// one found.
     fn walk_batches<S, V>(
         &mut self,
         space: &S,
@@ -416,7 +416,7 @@ impl GridWalker {
                 for (slot, &t) in self.scratch.chunks_exact_mut(dimension).zip(&ts[..filled]) {
                     space.interpolate(a, b, t, slot);
                 }
-                validity.first_invalid(&self.scratch[..filled * dimension], dimension)
+                validity.any_invalid(&self.scratch[..filled * dimension], dimension)
             };
             if let Some(index) = found {
                 self.counters.points_tested += index.min(filled - 1) as u64 + 1;

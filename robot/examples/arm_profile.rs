@@ -1,0 +1,174 @@
+//! `arm_profile`: where an arm planner's time goes, per MotionBenchMaker scene.
+//!
+//! ```text
+//! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
+//! cargo run --release -p robot --example arm_profile -- target 100 rrt-connect 3
+//! ```
+//!
+//! Plans the named configuration (`rrt-connect` with range 1, `mit-star`, `eit-star`, …) to
+//! its first solution on the first `N` problems of each of the five scenes under `FOLDER`,
+//! `SEEDS` seeds each, one thread (then RRT-Connect's switches, e.g. `rrt_balance=false`), and
+//! prints per scene the median time to the first solution
+//! (construction excluded) with the medians of the planner's counters: configurations tested
+//! (sampler and edges, certification included), edge grid points, edges certified,
+//! nearest-neighbour queries and iterations. Then the cost of one configuration check on the
+//! scenes' first problems: scalar, and batched eight at a time. Run it under `perf record` for
+//! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping (the
+//! arm-planning reference page, "Where an arm solve's time goes").
+
+use std::path::Path;
+use std::time::Instant;
+
+use mit_star::{
+    Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
+};
+use problems::PlanningProblem;
+use robot::ArmProblem;
+use spaces::StateSpace;
+use validity::StateValidity;
+
+const SCENES: [&str; 5] = [
+    "bookshelf_small_panda",
+    "bookshelf_tall_panda",
+    "box_panda",
+    "cage_panda",
+    "table_pick_panda",
+];
+
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let folder = args.next().unwrap_or_else(|| "target".into());
+    let count: usize = args
+        .next()
+        .map_or(100, |a| a.parse().expect("a problem count"));
+    let name = args.next().unwrap_or_else(|| "rrt-connect".into());
+    let seeds: u64 = args.next().map_or(3, |a| a.parse().expect("a seed count"));
+    // Then RRT-Connect's switches as `name=true|false`.
+    let mut base = Parameters::default();
+    for setting in args {
+        let (name, value) = setting.split_once('=').expect("name=value");
+        let value: bool = value.parse().expect("true or false");
+        match name {
+            "rrt_valid_samples" => base.rrt_valid_samples = value,
+            "rrt_dynamic_domain" => base.rrt_dynamic_domain = value,
+            "rrt_balance" => base.rrt_balance = value,
+            other => panic!("unknown switch {other}"),
+        }
+    }
+    let configuration = name
+        .parse::<Configuration>()
+        .expect("a planner configuration");
+    println!(
+        "| scene | problems | median t_first (µs) | configurations | grid points | certified edges | NN queries | iterations | µs / configuration |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    let mut pooled = Vec::new();
+    let mut setups = Vec::new();
+    let mut first_problems = Vec::new();
+    for scene in SCENES {
+        let mut problems = Vec::new();
+        for index in 1..=count {
+            if let Ok(problem) = ArmProblem::panda_mbm(&Path::new(&folder).join(scene), index)
+                && problem.ends_are_valid()
+            {
+                problems.push(problem);
+            }
+        }
+        if let Some(first) = problems.first() {
+            first_problems.push((scene, first.clone()));
+        }
+        let mut rows: [Vec<f64>; 6] = Default::default();
+        for seed in 0..seeds {
+            for (i, problem) in problems.iter().enumerate() {
+                let parameters = Parameters {
+                    seed: seed * 1000 + i as u64,
+                    range: (configuration == Configuration::RrtConnect).then_some(1.0),
+                    ..base.clone()
+                };
+                let built = Instant::now();
+                let mut planner =
+                    build_planner(configuration, problem, &parameters).expect("builds");
+                setups.push(built.elapsed().as_secs_f64() * 1e6);
+                let run = Instant::now();
+                let _ = planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)));
+                let t = run.elapsed().as_secs_f64() * 1e6;
+                let c = planner.counters();
+                for (row, v) in rows.iter_mut().zip([
+                    t,
+                    c.validity_checks as f64,
+                    c.points_tested as f64,
+                    c.certifications as f64,
+                    c.neighbour_queries as f64,
+                    c.iterations as f64,
+                ]) {
+                    row.push(v);
+                }
+                pooled.push(t);
+            }
+        }
+        let per = rows[0].iter().sum::<f64>() / rows[1].iter().sum::<f64>().max(1.0);
+        let n = problems.len();
+        let [t, checks, points, certified, queries, iterations] = rows.map(|mut r| median(&mut r));
+        println!(
+            "| {} | {n} | {t:.0} | {checks:.0} | {points:.0} | {certified:.0} | {queries:.0} | {iterations:.0} | {per:.3} |",
+            scene.trim_end_matches("_panda")
+        );
+    }
+    println!(
+        "\npooled median t_first: {:.0} µs over {} runs; median construction {:.1} µs",
+        median(&mut pooled),
+        pooled.len(),
+        median(&mut setups)
+    );
+    if std::env::var_os("ARM_PROFILE_NO_CHECKS").is_some() {
+        return;
+    }
+    println!("\n| scene | scalar ns / configuration | batched ns / configuration | share valid |");
+    println!("|---|---|---|---|");
+    for (scene, problem) in first_problems {
+        let space = problem.space();
+        let checker = problem.validity();
+        let d = space.dimension();
+        let mut rng = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut states = vec![0.0; 4096 * d];
+        let (lower, upper) = (space.lower().to_vec(), space.upper().to_vec());
+        for (k, x) in states.iter_mut().enumerate() {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            let u = (rng >> 11) as f64 / (1u64 << 53) as f64;
+            let j = k % d;
+            *x = lower[j] + u * (upper[j] - lower[j]);
+        }
+        let started = Instant::now();
+        let mut valid = 0;
+        for _ in 0..5 {
+            valid = states.chunks(d).filter(|q| checker.is_valid(q)).count();
+        }
+        let scalar = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
+        let started = Instant::now();
+        let mut tested = 0;
+        for _ in 0..5 {
+            let mut at = 0;
+            while at < 4096 {
+                let rest = &states[at * d..];
+                at += checker
+                    .first_invalid(&rest[..rest.len().min(8 * d)], d)
+                    .map_or(8, |i| i + 1);
+                tested += 1;
+            }
+        }
+        let batched = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
+        let _ = tested;
+        println!(
+            "| {} | {scalar:.0} | {batched:.0} | {:.2} |",
+            scene.trim_end_matches("_panda"),
+            valid as f64 / 4096.0
+        );
+    }
+}
