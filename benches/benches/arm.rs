@@ -3,8 +3,8 @@
 //!
 //! Run: `cargo bench -p mit-star-benches --bench arm`. Reports, per configuration: forward
 //! kinematics plus the full collision check (scene and self) one configuration at a time, and
-//! in batches of eight lanes; and one full edge check of typical length, with and without
-//! batches. Figures are recorded in `docs/guide/src/reference/arm-planning.md`.
+//! in batches of eight lanes (finding the first invalid one, or any); and one full edge check of
+//! 1 rad, raked (its grid points in bisection order, eight per batch) and one by one. Figures are recorded in `docs/guide/src/reference/arm-planning.md`.
 
 use std::hint::black_box;
 use std::path::Path;
@@ -88,6 +88,16 @@ fn configuration_check(c: &mut Criterion) {
                         }
                     }
                     invalid
+                });
+            });
+            // Batches of 8 that only ask whether any is invalid (an edge check's question, and
+            // VAMP's): a batch ends at its first contact in any lane, and the next batch follows.
+            group.bench_function(BenchmarkId::new("batched_any", &name), |b| {
+                b.iter(|| {
+                    states
+                        .chunks(8 * 7)
+                        .filter(|batch| checker.any_invalid(black_box(batch), 7).is_some())
+                        .count()
                 });
             });
         }

@@ -12,8 +12,12 @@
 //! (construction excluded) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
 //! nearest-neighbour queries and iterations. Then the cost of one configuration check on the
-//! scenes' first problems: scalar, and batched eight at a time. Run it under `perf record` for
-//! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping (the
+//! scenes' first problems: scalar, batched eight at a time (resuming after each invalid one),
+//! batched asking only whether any of the eight is invalid, and batched over valid
+//! configurations only. Run it under `perf record` for
+//! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping
+//! (`ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
+//! per-configuration table) (the
 //! arm-planning reference page, "Where an arm solve's time goes").
 
 use std::path::Path;
@@ -70,7 +74,11 @@ fn main() {
     let mut pooled = Vec::new();
     let mut setups = Vec::new();
     let mut first_problems = Vec::new();
+    let only = std::env::var("ARM_PROFILE_SCENES").unwrap_or_default();
     for scene in SCENES {
+        if !only.is_empty() && !only.split(',').any(|s| scene.starts_with(s)) {
+            continue;
+        }
         let mut problems = Vec::new();
         for index in 1..=count {
             if let Ok(problem) = ArmProblem::panda_mbm(&Path::new(&folder).join(scene), index)
@@ -128,8 +136,10 @@ fn main() {
     if std::env::var_os("ARM_PROFILE_NO_CHECKS").is_some() {
         return;
     }
-    println!("\n| scene | scalar ns / configuration | batched ns / configuration | share valid |");
-    println!("|---|---|---|---|");
+    println!(
+        "\n| scene | scalar ns / configuration | batched ns / configuration | share valid | batched, any invalid | batched, valid ones |"
+    );
+    println!("|---|---|---|---|---|---|");
     for (scene, problem) in first_problems {
         let space = problem.space();
         let checker = problem.validity();
@@ -165,8 +175,34 @@ fn main() {
         }
         let batched = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
         let _ = tested;
+        // Eight per call, asking only whether any is invalid (an edge check's question).
+        let started = Instant::now();
+        let mut with_contact = 0;
+        for _ in 0..5 {
+            with_contact = states
+                .chunks(8 * d)
+                .filter(|batch| checker.any_invalid(batch, d).is_some())
+                .count();
+        }
+        let any = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
+        let _ = with_contact;
+        // Valid configurations only, eight per call: nothing ends a batch early.
+        let valid_states: Vec<f64> = states
+            .chunks(d)
+            .filter(|q| checker.is_valid(q))
+            .flatten()
+            .copied()
+            .collect();
+        let count = valid_states.len() / d / 8 * 8;
+        let started = Instant::now();
+        for _ in 0..5 {
+            for batch in valid_states[..count * d].chunks(8 * d) {
+                assert!(checker.first_invalid(batch, d).is_none());
+            }
+        }
+        let all_valid = started.elapsed().as_secs_f64() * 1e9 / (5.0 * count as f64);
         println!(
-            "| {} | {scalar:.0} | {batched:.0} | {:.2} |",
+            "| {} | {scalar:.0} | {batched:.0} | {:.2} | {any:.0} | {all_valid:.0} |",
             scene.trim_end_matches("_panda"),
             valid as f64 / 4096.0
         );
