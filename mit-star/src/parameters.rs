@@ -119,6 +119,9 @@ pub struct Parameters {
     /// other (`true`, the default, chosen by measurement), instead of alternating strictly
     /// (`false`, as OMPL's).
     pub rrt_balance: bool,
+    /// RRT-Connect draws from a Halton sequence shifted by the seed (`true`, as VAMP does)
+    /// instead of independent uniform draws (`false`, the default, chosen by measurement).
+    pub rrt_halton: bool,
     /// Informed RRT*'s probability of sampling a goal instead of the sampler's state.
     pub goal_bias: f64,
     /// Informed RRT*'s k-nearest rewiring factor (OMPL's `rewire_factor` of RRT*; the EIT*
@@ -169,6 +172,7 @@ impl Default for Parameters {
             rrt_valid_samples: false,
             rrt_dynamic_domain: true,
             rrt_balance: true,
+            rrt_halton: false,
             goal_bias: 0.05,
             rrt_rewire_factor: 1.2,
             initial_inflation: None,
@@ -397,6 +401,7 @@ impl Parameters {
             ("rrt_valid_samples", self.rrt_valid_samples.to_string()),
             ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),
             ("rrt_balance", self.rrt_balance.to_string()),
+            ("rrt_halton", self.rrt_halton.to_string()),
             ("goal_bias", self.goal_bias.to_string()),
             ("rrt_rewire_factor", self.rrt_rewire_factor.to_string()),
             (

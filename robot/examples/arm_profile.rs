@@ -61,6 +61,7 @@ fn main() {
             "rrt_valid_samples" => base.rrt_valid_samples = value,
             "rrt_dynamic_domain" => base.rrt_dynamic_domain = value,
             "rrt_balance" => base.rrt_balance = value,
+            "rrt_halton" => base.rrt_halton = value,
             other => panic!("unknown switch {other}"),
         }
     }

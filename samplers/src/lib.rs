@@ -38,7 +38,8 @@
 //! | item | what it is |
 //! |---|---|
 //! | [`Sampler`], [`CostBound`], [`SampleError`], [`SamplerCounters`], [`SampleOrigin`] | the trait, the bound a planner passes, why no state came back, work counters, which step made a state |
-//! | [`UniformSampler`] | uniform over the whole space, bound ignored (the uninformed baseline) |
+//! | [`UniformSampler`] | uniform over the whole space, bound ignored (the uninformed baseline); random or a shifted Halton sequence |
+//! | [`HaltonSequence`] | low-discrepancy points of the unit cube, shifted per seed |
 //! | [`InformedSampler`] | uniform over the informed set of the bound: direct informed sampling, and MIT*'s estimated-informed-set sampler under [`CostBound::Estimated`] |
 //! | [`GaussianSampler`] | Boor et al.'s Gaussian sampling near obstacle boundaries, within the informed set |
 //! | [`BridgeSampler`] | Hsu et al.'s bridge test for narrow passages, within the informed set |
@@ -56,6 +57,7 @@ mod adaptive_sampler;
 mod bridge_sampler;
 mod error;
 mod gaussian_sampler;
+mod halton_sequence;
 mod informed_sampler;
 mod informed_sets;
 mod sampler;
@@ -67,6 +69,7 @@ pub use adaptive_sampler::AdaptiveSampler;
 pub use bridge_sampler::BridgeSampler;
 pub use error::SamplerError;
 pub use gaussian_sampler::GaussianSampler;
+pub use halton_sequence::HaltonSequence;
 pub use informed_sampler::InformedSampler;
 pub use informed_sets::{
     EstimatedInformedSet, ExpansionForm, ExpansionRule, InformedSet, prolate_hyperspheroid_measure,

@@ -4,9 +4,11 @@ use rand::SeedableRng;
 use spaces::{SeededRng, StateSpace, Stop};
 use validity::StateValidity;
 
-use crate::{CostBound, SampleError, Sampler, SamplerCounters};
+use crate::{CostBound, HaltonSequence, SampleError, Sampler, SamplerCounters};
 
 /// Uniform samples of the whole space, invalid ones rejected; the cost bound is ignored.
+/// Independent random draws ([`new`](Self::new)) or a shifted Halton sequence
+/// ([`halton`](Self::halton)).
 ///
 /// The uninformed baseline (OMPL's `UniformValidStateSampler`). Its
 /// [`sampled_measure`](Sampler::sampled_measure) is always the space's measure.
@@ -28,6 +30,11 @@ use crate::{CostBound, SampleError, Sampler, SamplerCounters};
 #[derive(Debug, Clone)]
 pub struct UniformSampler {
     rng: SeededRng,
+    seed: u64,
+    /// Draws from a shifted Halton sequence instead of `rng`.
+    halton: bool,
+    /// That sequence, made for the space's dimension at the first draw.
+    sequence: Option<HaltonSequence>,
     counters: SamplerCounters,
 }
 
@@ -36,7 +43,37 @@ impl UniformSampler {
     pub fn new(seed: u64) -> Self {
         Self {
             rng: SeededRng::seed_from_u64(seed),
+            seed,
+            halton: false,
+            sequence: None,
             counters: SamplerCounters::default(),
+        }
+    }
+
+    /// A sampler of the same states drawn from a [`HaltonSequence`] shifted by `seed` instead
+    /// of independent random draws: low-discrepancy coverage of the space (VAMP's
+    /// RRT-Connect samples this way).
+    pub fn halton(seed: u64) -> Self {
+        Self {
+            halton: true,
+            ..Self::new(seed)
+        }
+    }
+
+    /// Writes one draw (random or Halton) scaled to the space's bounds into `out`.
+    fn draw<S: StateSpace + ?Sized>(&mut self, space: &S, out: &mut [f64]) {
+        if !self.halton {
+            space.sample_uniform(&mut self.rng, out);
+            return;
+        }
+        let d = space.dimension();
+        let halton = match &mut self.sequence {
+            Some(h) if h.dimension() == d => h,
+            slot => slot.insert(HaltonSequence::new(d, self.seed)),
+        };
+        halton.next_point(out);
+        for ((x, lo), hi) in out.iter_mut().zip(space.lower()).zip(space.upper()) {
+            *x = lo + *x * (hi - lo);
         }
     }
 }
@@ -59,7 +96,7 @@ impl UniformSampler {
                 got: out.len(),
             });
         }
-        space.sample_uniform(&mut self.rng, out);
+        self.draw(space, out);
         self.counters.drawn += 1;
         self.counters.returned += 1;
         Ok(())
@@ -89,7 +126,7 @@ where
             if stop.should_stop() {
                 return Err(SampleError::Stopped);
             }
-            space.sample_uniform(&mut self.rng, out);
+            self.draw(space, out);
             self.counters.drawn += 1;
             self.counters.validity_checks += 1;
             if validity.is_valid(out) {
@@ -105,6 +142,8 @@ where
 
     fn reseed(&mut self, seed: u64) {
         self.rng = SeededRng::seed_from_u64(seed);
+        self.seed = seed;
+        self.sequence = None;
     }
 
     fn counters(&self) -> SamplerCounters {

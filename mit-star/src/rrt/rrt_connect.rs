@@ -146,7 +146,11 @@ where
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
         let n = space.dimension();
-        let sampler = UniformSampler::new(parameters.seed);
+        let sampler = if parameters.rrt_halton {
+            UniformSampler::halton(parameters.seed)
+        } else {
+            UniformSampler::new(parameters.seed)
+        };
         let parts = (sampler, checker);
         let core = RrtCore::new(space, validity, query, parts, parameters, "RRT-Connect")?;
         Ok(Self {
@@ -611,17 +615,18 @@ mod tests {
     }
 
     #[test]
-    fn samples_are_checked_only_when_asked_and_paths_are_valid_either_way() {
+    fn samples_are_checked_only_when_asked_and_paths_are_valid_from_any_draws() {
         let problem = problems::DividingWalls::new(2)
             .build()
             .unwrap()
             .with_resolution(1e-4)
             .unwrap();
-        for valid_samples in [false, true] {
+        for (valid_samples, halton) in [(false, false), (true, false), (false, true)] {
             let parameters = Parameters {
                 range: Some(0.1),
                 seed: 5,
                 rrt_valid_samples: valid_samples,
+                rrt_halton: halton,
                 ..Parameters::default()
             };
             let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
