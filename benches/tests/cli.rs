@@ -330,6 +330,49 @@ fn plan_prints_the_result_and_draws_2d_runs() {
 }
 
 #[test]
+fn plan_simplifies_and_revalidates_on_request() {
+    let dir = scratch("plan-simplify");
+    let stdout = succeeded(&[
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        "dividing-walls",
+        "--dim",
+        "4",
+        "--time",
+        "0.5",
+        "--simplify",
+        "--json",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    let value: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let simplified = &value["simplified"];
+    assert_eq!(simplified["valid"], true, "{simplified}");
+    let (before, after) = (
+        simplified["original_cost"].as_f64().unwrap(),
+        simplified["cost"].as_f64().unwrap(),
+    );
+    assert!(after < before, "{before} -> {after}");
+    // A simplification time no clock holds is refused before planning.
+    let out = common::mit_star(&[
+        "plan",
+        "--problem",
+        "dividing-walls",
+        "--simplify",
+        "--simplify-time",
+        "-1",
+    ]);
+    assert!(!out.status.success());
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("--simplify-time"),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
 fn bench_with_flags_writes_a_results_folder() {
     let dir = scratch("bench");
     let stdout = succeeded(&[

@@ -88,6 +88,19 @@ pub enum BuildError {
     /// The query (start, goals) is malformed.
     #[error("query: {0}")]
     Query(#[from] PlannerError),
+    /// A path given to [`PathSimplifier`](crate::PathSimplifier) has fewer than two states,
+    /// or a state of another dimension than the space's or not finite.
+    #[error(
+        "a path to simplify needs at least two finite states of dimension {dimension}; state {state} of {states} is not one"
+    )]
+    BadPath {
+        /// The states the path has.
+        states: usize,
+        /// The first state at fault (its index; `states` itself when there are too few).
+        state: usize,
+        /// The space's dimension.
+        dimension: usize,
+    },
     /// A configuration name was not recognised.
     #[error("unknown configuration `{name}`; expected one of {expected}")]
     UnknownConfiguration {

@@ -77,6 +77,7 @@ mod observer;
 mod parameters;
 mod planner;
 mod rrt;
+mod simplification;
 mod snapshot;
 mod termination;
 mod trace;
@@ -98,6 +99,7 @@ pub use parameters::{
 };
 pub use planner::{Outcome, Planner, Solution};
 pub use rrt::{InformedRrtStar, RrtConnect, default_range};
+pub use simplification::{PathSimplifier, Simplified};
 pub use snapshot::Snapshot;
 pub use termination::{
     And, CostThreshold, FirstSolution, IterationLimit, Or, Progress, Termination, TerminationExt,

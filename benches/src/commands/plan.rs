@@ -68,6 +68,18 @@ pub struct PlanArgs {
     /// Print the result as JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Simplify the path found (vertex reduction and random shortcuts, every new edge checked
+    /// and certified), validate the result independently, and report and draw it.
+    #[arg(long)]
+    pub simplify: bool,
+    /// Time for `--simplify`, in seconds (after the planning budget).
+    #[arg(
+        long,
+        default_value_t = 0.1,
+        requires = "simplify",
+        allow_negative_numbers = true
+    )]
+    pub simplify_time: f64,
 }
 
 impl PlanArgs {
@@ -93,6 +105,12 @@ impl PlanArgs {
             what: "--time".into(),
             source,
         })?;
+        if self.simplify {
+            budget_duration(self.simplify_time).map_err(|source| HarnessError::Budget {
+                what: "--simplify-time".into(),
+                source,
+            })?;
+        }
         let source = match (&self.problem, &self.problem_file) {
             (_, Some(path)) => ProblemSource::file(path)?,
             (Some(text), None) => ProblemSource::parse(text, None)?,
@@ -185,6 +203,8 @@ impl PlanArgs {
         else {
             return Ok(CommandOutcome::Interrupted);
         };
+        let simplified = self.simplified(&instance, &record)?;
+        let drawn = simplified.as_ref().map_or(&record.path, |(s, _)| &s.path);
         let mut files = Vec::new();
         let stem = format!(
             "{}-{}-seed{}",
@@ -198,12 +218,16 @@ impl PlanArgs {
             instance.title(),
             self.seed,
             self.time,
-            number(record.final_cost.unwrap_or(f64::INFINITY))
+            number(
+                simplified
+                    .as_ref()
+                    .map_or(record.final_cost.unwrap_or(f64::INFINITY), |(s, _)| s.cost)
+            )
         );
         if picture && let Some(arm) = &arm {
             let svg = self.output.join(format!("{stem}.svg"));
             let png = self.output.join(format!("{stem}.png"));
-            ArmPicture::new(arm, &record.path, title.clone()).save(&svg, &png)?;
+            ArmPicture::new(arm, drawn, title.clone()).save(&svg, &png)?;
             files.extend([svg, png]);
         }
         if picture
@@ -212,7 +236,7 @@ impl PlanArgs {
         {
             let svg = self.output.join(format!("{stem}.svg"));
             let png = self.output.join(format!("{stem}.png"));
-            RunPicture::new(boxes, &snapshot, &record.path, title)?.save(&svg, &png)?;
+            RunPicture::new(boxes, &snapshot, drawn, title)?.save(&svg, &png)?;
             files.extend([svg, png]);
         }
         if self.json {
@@ -224,10 +248,31 @@ impl PlanArgs {
                 o.insert("optimum".into(), instance.problem.optimum().into());
                 let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
                 o.insert("files".into(), names.into());
+                if let Some((s, validation)) = &simplified {
+                    o.insert(
+                        "simplified".into(),
+                        serde_json::json!({
+                            "path": s.path,
+                            "cost": s.cost,
+                            "original_cost": s.original_cost,
+                            "vertices_removed": s.vertices_removed,
+                            "shortcuts": s.shortcuts,
+                            "edges_checked": s.edges_checked,
+                            "valid": validation.valid,
+                            "validation_failure": validation.failure,
+                        }),
+                    );
+                }
             }
             say!("{value}");
         } else {
             print_record(&record, &instance, &files);
+            if let Some((s, validation)) = &simplified {
+                print_simplified(s, validation);
+            }
+        }
+        if simplified.as_ref().is_some_and(|(_, v)| !v.valid) {
+            return Ok(CommandOutcome::InvalidPaths);
         }
         if let Some(e) = &record.error {
             return Err(HarnessError::Planning {
@@ -240,6 +285,68 @@ impl PlanArgs {
         } else {
             CommandOutcome::Success
         })
+    }
+}
+
+impl PlanArgs {
+    /// The run's path simplified (`--simplify`) and its independent validation; `None` without
+    /// the flag or a path.
+    ///
+    /// # Errors
+    /// A problem that refuses its check step (refused before planning in practice).
+    fn simplified(
+        &self,
+        instance: &ProblemInstance,
+        record: &RunRecord,
+    ) -> Result<Option<(mit_star::Simplified, crate::path_validation::PathValidation)>, HarnessError>
+    {
+        if !self.simplify || record.path.len() < 2 {
+            return Ok(None);
+        }
+        let simplified = instance
+            .problem
+            .simplify(&record.path, self.simplify_time, self.seed)
+            .map_err(|source| HarnessError::Build {
+                planner: "path simplifier".to_owned(),
+                source,
+            })?;
+        let validation = instance.problem.validate(&simplified.path, simplified.cost);
+        Ok(Some((simplified, validation)))
+    }
+}
+
+/// The report of a simplified path.
+fn print_simplified(s: &mit_star::Simplified, validation: &crate::path_validation::PathValidation) {
+    say!(
+        "  simplified: cost {} -> {} ({} states removed, {} shortcuts, {} edges checked{})",
+        number(s.original_cost),
+        number(s.cost),
+        s.vertices_removed,
+        s.shortcuts,
+        s.edges_checked,
+        if s.stopped {
+            ", stopped by --simplify-time"
+        } else {
+            ""
+        }
+    );
+    if validation.valid {
+        say!(
+            "  simplified path validated independently, {} ({} segments, {} states):",
+            validation.method.describe(),
+            validation.segments_checked,
+            validation.states_checked
+        );
+    } else {
+        say!(
+            "  INVALID SIMPLIFIED PATH ({}): {}",
+            validation.method.describe(),
+            validation.failure.clone().unwrap_or_default()
+        );
+    }
+    for state in &s.path {
+        let coordinates: Vec<String> = state.iter().map(|x| format!("{x:.6}")).collect();
+        say!("    ({})", coordinates.join(", "));
     }
 }
 

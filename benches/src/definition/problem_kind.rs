@@ -164,6 +164,25 @@ impl InstanceProblem {
         }
     }
 
+    /// `path` made shorter by a [`PathSimplifier`](mit_star::PathSimplifier) with `seed` for
+    /// at most `seconds` (every new edge checked and certified as the problem asks).
+    ///
+    /// # Errors
+    /// As [`PathSimplifier::simplify`](mit_star::PathSimplifier::simplify).
+    pub fn simplify(
+        &self,
+        path: &[Vec<f64>],
+        seconds: f64,
+        seed: u64,
+    ) -> Result<mit_star::Simplified, BuildError> {
+        let stop = spaces::Deadline::after(std::time::Duration::from_secs_f64(seconds));
+        let simplifier = mit_star::PathSimplifier::new().seed(seed);
+        match self {
+            Self::Boxes(p) => simplifier.simplify(p, path, &stop),
+            Self::Arm(p) => simplifier.simplify(&**p, path, &stop),
+        }
+    }
+
     /// `false` for an arm problem whose start or goal is in collision (MotionBenchMaker has
     /// a few; experiments skip them). Box worlds refuse such ends when they are built.
     pub fn ends_are_valid(&self) -> bool {

@@ -1,0 +1,105 @@
+//! The path simplifier: same ends, never longer, every segment valid, the stop honoured, bad
+//! paths refused with a typed error.
+
+use std::time::Duration;
+
+use mit_star::{
+    BuildError, FirstSolution, Parameters, PathSimplifier, Planner, RrtConnect, TerminationExt,
+    TimeLimit,
+};
+use spaces::{Deadline, StateSpace};
+
+fn rrt_path(problem: &problems::Problem, seed: u64) -> Vec<Vec<f64>> {
+    let parameters = Parameters {
+        seed,
+        ..Parameters::default()
+    };
+    let mut planner = RrtConnect::for_problem(problem, &parameters).unwrap();
+    let outcome = planner
+        .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+        .unwrap();
+    outcome
+        .solution()
+        .unwrap()
+        .path
+        .iter()
+        .map(<[f64]>::to_vec)
+        .collect()
+}
+
+#[test]
+fn simplified_paths_keep_their_ends_get_no_longer_and_stay_valid() {
+    for (dimension, seed) in [(2, 1), (2, 2), (4, 3), (8, 4)] {
+        let problem = problems::DividingWalls::new(dimension)
+            .build()
+            .unwrap()
+            .with_resolution(1e-3)
+            .unwrap();
+        let path = rrt_path(&problem, seed);
+        let simplified = PathSimplifier::new()
+            .seed(seed)
+            .simplify(&problem, &path, &Deadline::after(Duration::from_secs(5)))
+            .unwrap();
+        assert_eq!(simplified.path.first(), path.first());
+        assert_eq!(simplified.path.last(), path.last());
+        assert!(simplified.cost <= simplified.original_cost + 1e-12);
+        assert!(simplified.cost >= problem.straight_line_cost() - 1e-9);
+        let length: f64 = simplified
+            .path
+            .windows(2)
+            .map(|w| problem.space().distance(&w[0], &w[1]))
+            .sum();
+        assert!((length - simplified.cost).abs() < 1e-9);
+        for w in simplified.path.windows(2) {
+            assert!(
+                problem.world().segment_verdict(&w[0], &w[1]).is_valid(),
+                "R^{dimension} seed {seed}: an invalid segment"
+            );
+        }
+        // An RRT-Connect path through two walls shortens a lot.
+        assert!(
+            simplified.cost < 0.8 * simplified.original_cost,
+            "R^{dimension} seed {seed}: {} -> {}",
+            simplified.original_cost,
+            simplified.cost
+        );
+        assert!(!simplified.stopped);
+    }
+}
+
+#[test]
+fn a_fired_stop_returns_the_path_unchanged() {
+    let problem = problems::DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let path = rrt_path(&problem, 5);
+    let simplified = PathSimplifier::new()
+        .simplify(&problem, &path, &|| true)
+        .unwrap();
+    assert!(simplified.stopped);
+    assert_eq!(simplified.path, path);
+    assert_eq!(simplified.edges_checked, 0);
+}
+
+#[test]
+fn bad_paths_are_typed_errors() {
+    let problem = problems::DividingWalls::new(2).build().unwrap();
+    let never = spaces::Never;
+    let simplifier = PathSimplifier::new();
+    for (path, state) in [
+        (vec![vec![0.1, 0.1]], 1),
+        (vec![vec![0.1, 0.1], vec![0.2]], 1),
+        (vec![vec![f64::NAN, 0.1], vec![0.2, 0.2]], 0),
+    ] {
+        match simplifier.simplify(&problem, &path, &never) {
+            Err(BuildError::BadPath {
+                state: s,
+                dimension: 2,
+                ..
+            }) => assert_eq!(s, state),
+            other => panic!("{other:?}"),
+        }
+    }
+}

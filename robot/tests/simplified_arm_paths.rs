@@ -1,0 +1,61 @@
+//! Simplified arm paths stay collision-free along their whole length: RRT-Connect paths on
+//! MotionBenchMaker problems, simplified, then audited continuously in `f64` with parry.
+
+use std::path::Path;
+use std::time::Duration;
+
+use mit_star::{FirstSolution, Parameters, PathSimplifier, Planner, TerminationExt, TimeLimit};
+use problems::PlanningProblem;
+use robot::{ArmProblem, AuditVerdict, MotionAudit};
+use validity::StateValidity;
+
+#[test]
+fn simplified_arm_paths_pass_the_continuous_audit() {
+    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm");
+    let mut shortened = 0;
+    for scene in ["bookshelf_small_panda", "cage_panda", "table_pick_panda"] {
+        let problem = ArmProblem::panda_mbm(&folder.join(scene), 1).unwrap();
+        let parameters = Parameters {
+            range: Some(1.0),
+            seed: 3,
+            ..Parameters::default()
+        };
+        let mut planner = mit_star::RrtConnect::for_problem(&problem, &parameters).unwrap();
+        let outcome = planner
+            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+            .unwrap();
+        let path: Vec<Vec<f64>> = outcome
+            .solution()
+            .unwrap()
+            .path
+            .iter()
+            .map(<[f64]>::to_vec)
+            .collect();
+        let simplified = PathSimplifier::new()
+            .seed(7)
+            .simplify(
+                &problem,
+                &path,
+                &spaces::Deadline::after(Duration::from_secs(2)),
+            )
+            .unwrap();
+        assert_eq!(simplified.path.first(), path.first());
+        assert_eq!(simplified.path.last(), path.last());
+        assert!(simplified.cost <= simplified.original_cost + 1e-12);
+        shortened += usize::from(simplified.cost < 0.95 * simplified.original_cost);
+        let audit = MotionAudit::new(problem.robot(), problem.scene());
+        for w in simplified.path.windows(2) {
+            match audit.audit(&w[0], &w[1], 1_000_000) {
+                AuditVerdict::Clear { .. } => {}
+                other => panic!("{scene}: a simplified edge is not clear: {other:?}"),
+            }
+        }
+        assert!(
+            simplified
+                .path
+                .iter()
+                .all(|q| problem.validity().is_valid(q))
+        );
+    }
+    assert!(shortened >= 2, "only {shortened} of 3 paths got shorter");
+}
