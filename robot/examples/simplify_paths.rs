@@ -1,0 +1,110 @@
+//! `simplify_paths`: what the path simplifier does to arm paths.
+//!
+//! ```text
+//! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
+//! cargo run --release -p robot --example simplify_paths -- target 20 rrt-connect 0.1
+//! ```
+//!
+//! Plans the named configuration on the first `N` problems of each of the five
+//! MotionBenchMaker scenes (RRT-Connect with range 1 to its first solution, an asymptotically
+//! optimal planner for 1 s), simplifies each path for at most `SECONDS`, and audits every
+//! simplified edge continuously in `f64` with parry. Prints per scene the median path length
+//! before and after, the median straight-line distance (a lower bound), the median time the
+//! simplification took and how many simplified paths failed the audit.
+
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use mit_star::{
+    Configuration, FirstSolution, Parameters, PathSimplifier, TerminationExt, TimeLimit,
+    build_planner,
+};
+use problems::PlanningProblem;
+use robot::{ArmProblem, AuditVerdict, MotionAudit};
+use spaces::StateSpace;
+
+const SCENES: [&str; 5] = [
+    "bookshelf_small_panda",
+    "bookshelf_tall_panda",
+    "box_panda",
+    "cage_panda",
+    "table_pick_panda",
+];
+
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let folder = args.next().unwrap_or_else(|| "target".into());
+    let count: usize = args
+        .next()
+        .map_or(20, |a| a.parse().expect("a problem count"));
+    let name = args.next().unwrap_or_else(|| "rrt-connect".into());
+    let seconds: f64 = args.next().map_or(0.1, |a| a.parse().expect("seconds"));
+    let configuration: Configuration = name.parse().expect("a planner configuration");
+    println!(
+        "| scene | problems | median length before | median after | median straight line | median simplification (ms) | failed audits |"
+    );
+    println!("|---|---|---|---|---|---|---|");
+    for scene in SCENES {
+        let (mut before, mut after, mut line, mut took) = (vec![], vec![], vec![], vec![]);
+        let mut failed = 0;
+        for index in 1..=count {
+            let Ok(problem) = ArmProblem::panda_mbm(&Path::new(&folder).join(scene), index) else {
+                continue;
+            };
+            if !problem.ends_are_valid() {
+                continue;
+            }
+            let parameters = Parameters {
+                seed: index as u64,
+                range: (configuration == Configuration::RrtConnect).then_some(1.0),
+                ..Parameters::default()
+            };
+            let mut planner = build_planner(configuration, &problem, &parameters).expect("builds");
+            let outcome = if configuration.is_asymptotically_optimal() {
+                planner.solve(&TimeLimit::seconds(1.0))
+            } else {
+                planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)))
+            };
+            let Some(solution) = outcome.ok().and_then(|o| o.solution().cloned()) else {
+                continue;
+            };
+            let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
+            let started = Instant::now();
+            let simplified = PathSimplifier::new()
+                .seed(index as u64)
+                .simplify(
+                    &problem,
+                    &path,
+                    &spaces::Deadline::after(Duration::from_secs_f64(seconds)),
+                )
+                .expect("a path of the problem");
+            took.push(started.elapsed().as_secs_f64() * 1e3);
+            before.push(simplified.original_cost);
+            after.push(simplified.cost);
+            line.push(problem.space().distance(&path[0], &path[path.len() - 1]));
+            let audit = MotionAudit::new(problem.robot(), problem.scene());
+            if simplified.path.windows(2).any(|w| {
+                !matches!(
+                    audit.audit(&w[0], &w[1], 1_000_000),
+                    AuditVerdict::Clear { .. }
+                )
+            }) {
+                failed += 1;
+            }
+        }
+        println!(
+            "| {} | {} | {:.2} | {:.2} | {:.2} | {:.1} | {failed} |",
+            scene.trim_end_matches("_panda"),
+            before.len(),
+            median(&mut before),
+            median(&mut after),
+            median(&mut line),
+            median(&mut took)
+        );
+    }
+}
