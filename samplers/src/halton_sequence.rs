@@ -6,8 +6,8 @@ use spaces::SeededRng;
 /// The Halton sequence in `d` dimensions (coordinate `j` is the radical inverse of the point's
 /// index in the `j`-th prime), shifted modulo 1 by an offset per coordinate drawn from a seed
 /// (a Cranley–Patterson rotation), so that seeds give different sequences of the same
-/// uniformity. Fills the unit cube more evenly than independent uniform draws: `n` points
-/// leave no empty box much larger than `1/n` of the cube.
+/// uniformity. Fills the unit cube more evenly than independent uniform draws (1024 points in
+/// a 16 × 16 grid of the square: 1 to 7 in every cell, where uniform draws leave cells empty).
 ///
 /// ```
 /// use samplers::HaltonSequence;
@@ -94,15 +94,18 @@ mod tests {
 
     #[test]
     fn points_fill_the_cube_evenly() {
-        // 1024 points of the unit square in a 16 × 16 grid of cells: every cell gets 2 to 6
-        // (independent uniform draws leave some cells with 0 or 10 and more).
-        let mut halton = HaltonSequence::new(2, 3);
-        let mut cells = [0u32; 256];
-        let mut p = [0.0; 2];
-        for _ in 0..1024 {
-            halton.next_point(&mut p);
-            cells[(p[0] * 16.0) as usize * 16 + (p[1] * 16.0) as usize] += 1;
+        // 1024 points of the unit square in a 16 × 16 grid of cells (4 expected per cell):
+        // every cell gets 1 to 7, whatever the shift (independent uniform draws leave some
+        // cells empty and others with 10 or more).
+        for seed in 0..5 {
+            let mut halton = HaltonSequence::new(2, seed);
+            let mut cells = [0u32; 256];
+            let mut p = [0.0; 2];
+            for _ in 0..1024 {
+                halton.next_point(&mut p);
+                cells[(p[0] * 16.0) as usize * 16 + (p[1] * 16.0) as usize] += 1;
+            }
+            assert!(cells.iter().all(|&c| (1..=7).contains(&c)), "{cells:?}");
         }
-        assert!(cells.iter().all(|&c| (2..=6).contains(&c)), "{cells:?}");
     }
 }
