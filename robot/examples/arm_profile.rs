@@ -17,7 +17,8 @@
 //! configurations only. Run it under `perf record` for
 //! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping
 //! (`ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
-//! per-configuration table) (the
+//! per-configuration table; `ARM_PROFILE_AUDIT=1` audits every path with parry between runs,
+//! as the benchmark harness does) (the
 //! arm-planning reference page, "Where an arm solve's time goes").
 
 use std::path::Path;
@@ -104,8 +105,18 @@ fn main() {
                     build_planner(configuration, problem, &parameters).expect("builds");
                 setups.push(built.elapsed().as_secs_f64() * 1e6);
                 let run = Instant::now();
-                let _ = planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)));
+                let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)));
                 let t = run.elapsed().as_secs_f64() * 1e6;
+                // As the benchmark harness does between runs: audit the path with parry.
+                if std::env::var_os("ARM_PROFILE_AUDIT").is_some()
+                    && let Some(solution) = outcome.ok().and_then(|o| o.solution().cloned())
+                {
+                    let audit = robot::MotionAudit::new(problem.robot(), problem.scene());
+                    let path: Vec<&[f64]> = solution.path.iter().collect();
+                    for w in path.windows(2) {
+                        let _ = audit.audit(w[0], w[1], 2_000_000);
+                    }
+                }
                 let c = planner.counters();
                 for (row, v) in rows.iter_mut().zip([
                     t,
