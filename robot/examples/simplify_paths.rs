@@ -7,7 +7,8 @@
 //!
 //! Plans the named configuration on the first `N` problems of each of the five
 //! MotionBenchMaker scenes (RRT-Connect with range 1 to its first solution, an asymptotically
-//! optimal planner for 1 s), simplifies each path for at most `SECONDS`, and audits every
+//! optimal planner for 1 s), simplifies each path for at most `SECONDS` (`whole` after it:
+//! without per-joint shortcuts), and audits every
 //! simplified edge continuously in `f64` with parry. Prints per scene the median path length
 //! before and after, the median straight-line distance (a lower bound), the median time the
 //! simplification took and how many simplified paths failed the audit.
@@ -44,6 +45,8 @@ fn main() {
         .map_or(20, |a| a.parse().expect("a problem count"));
     let name = args.next().unwrap_or_else(|| "rrt-connect".into());
     let seconds: f64 = args.next().map_or(0.1, |a| a.parse().expect("seconds"));
+    // `whole` as a fifth argument: whole-configuration shortcuts only.
+    let partial = args.next().is_none_or(|a| a != "whole");
     let configuration: Configuration = name.parse().expect("a planner configuration");
     println!(
         "| scene | problems | median length before | median after | median straight line | median simplification (ms) | failed audits |"
@@ -77,6 +80,7 @@ fn main() {
             let started = Instant::now();
             let simplified = PathSimplifier::new()
                 .seed(index as u64)
+                .partial_shortcuts(partial)
                 .simplify(
                     &problem,
                     &path,

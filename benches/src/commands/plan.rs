@@ -257,6 +257,7 @@ impl PlanArgs {
                             "original_cost": s.original_cost,
                             "vertices_removed": s.vertices_removed,
                             "shortcuts": s.shortcuts,
+                            "partial_shortcuts": s.partial_shortcuts,
                             "edges_checked": s.edges_checked,
                             "valid": validation.valid,
                             "validation_failure": validation.failure,
@@ -318,11 +319,12 @@ impl PlanArgs {
 /// The report of a simplified path.
 fn print_simplified(s: &mit_star::Simplified, validation: &crate::path_validation::PathValidation) {
     say!(
-        "  simplified: cost {} -> {} ({} states removed, {} shortcuts, {} edges checked{})",
+        "  simplified: cost {} -> {} ({} states removed, {} shortcuts, {} per-coordinate, {} edges checked{})",
         number(s.original_cost),
         number(s.cost),
         s.vertices_removed,
         s.shortcuts,
+        s.partial_shortcuts,
         s.edges_checked,
         if s.stopped {
             ", stopped by --simplify-time"

@@ -7,12 +7,12 @@ use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidit
 use crate::BuildError;
 
 /// Makes a valid path shorter, keeping its ends: OMPL's `PathSimplifier` steps (vertex
-/// reduction, random shortcuts between points anywhere on the path, vertex reduction of the
-/// corners they leave), with every edge it
+/// reduction, random shortcuts between points anywhere on the path and per-coordinate
+/// shortcuts, vertex reduction of the corners they leave), with every edge it
 /// adds checked on the problem's grid and certified as the problem asks (for arms, every
 /// configuration of the edge proven collision-free), so the path stays as valid as a
-/// planner's. Stops when the stop fires or after `attempts` shortcuts in a row fail; polls the
-/// stop before every edge check and inside it.
+/// planner's. Stops when the stop fires or after `attempts` shortcuts in a row fail or gain
+/// less than 10⁻⁴ of the path's length; polls the stop before every edge check and inside it.
 ///
 /// # Arguments
 /// A problem (its space, validity checker, check step and certification), a path of at least
@@ -43,6 +43,7 @@ use crate::BuildError;
 pub struct PathSimplifier {
     seed: u64,
     attempts: usize,
+    partial: bool,
 }
 
 impl Default for PathSimplifier {
@@ -65,6 +66,8 @@ pub struct Simplified {
     pub vertices_removed: u64,
     /// Shortcuts taken.
     pub shortcuts: u64,
+    /// Per-coordinate shortcuts taken.
+    pub partial_shortcuts: u64,
     /// Edges checked (each also certified when the problem asks).
     pub edges_checked: u64,
     /// `true` if the stop ended it (else the attempts ran out).
@@ -72,12 +75,23 @@ pub struct Simplified {
 }
 
 impl PathSimplifier {
-    /// A simplifier with seed 0 that gives up after 100 failed shortcuts in a row.
+    /// A simplifier with seed 0, partial shortcuts on, that gives up after 100 failed
+    /// shortcuts in a row.
     pub fn new() -> Self {
         Self {
             seed: 0,
             attempts: 100,
+            partial: true,
         }
+    }
+
+    /// Half of the shortcut attempts move one coordinate only (`true`, the default: OMPL's
+    /// partial shortcuts, which straighten one joint's motion over a stretch of the path where
+    /// the whole configuration cannot shortcut); `false` tries whole shortcuts only.
+    #[must_use]
+    pub fn partial_shortcuts(mut self, on: bool) -> Self {
+        self.partial = on;
+        self
     }
 
     /// The seed of the random shortcuts.
@@ -137,7 +151,22 @@ impl PathSimplifier {
         let (mut failures, mut shortcuts) = (0, 0);
         let mut a = vec![0.0; dimension];
         let mut b = vec![0.0; dimension];
+        let mut partial = 0;
         while !stopped && failures < self.attempts && states.len() >= 3 {
+            // A shortcut that gains less than this is taken but counts as a failure: the
+            // search ends when shortcuts stop paying.
+            let negligible = 1e-4 * length(space, &states);
+            if self.partial && rng.random::<bool>() {
+                match run.partial_shortcut(&mut states, &mut rng) {
+                    Some((EdgeStatus::Valid, gain)) => {
+                        partial += 1;
+                        failures = if gain < negligible { failures + 1 } else { 0 };
+                    }
+                    Some((EdgeStatus::Unknown, _)) => stopped = true,
+                    Some((EdgeStatus::Invalid, _)) | None => failures += 1,
+                }
+                continue;
+            }
             let lengths: Vec<f64> = states
                 .windows(2)
                 .map(|w| space.distance(&w[0], &w[1]))
@@ -173,7 +202,11 @@ impl PathSimplifier {
                     states.push(b.clone());
                     states.extend(tail);
                     shortcuts += 1;
-                    failures = 0;
+                    failures = if along - direct < negligible {
+                        failures + 1
+                    } else {
+                        0
+                    };
                 }
                 EdgeStatus::Invalid => failures += 1,
                 EdgeStatus::Unknown => stopped = true,
@@ -189,6 +222,7 @@ impl PathSimplifier {
             original_cost,
             vertices_removed,
             shortcuts,
+            partial_shortcuts: partial,
             edges_checked: run.checked,
             stopped,
         })
@@ -244,6 +278,52 @@ impl<S: StateSpace, V: StateValidity> Run<'_, S, V> {
             }
             other => other,
         }
+    }
+}
+
+impl<S: StateSpace, V: StateValidity> Run<'_, S, V> {
+    /// A per-coordinate shortcut: between two random states `i < j` of the path, one random
+    /// coordinate of every state strictly between them is blended linearly (by arc length)
+    /// from its value at `i` to its value at `j`; taken if the stretch gets shorter and all
+    /// its new edges pass. `None` if it was not shorter (nothing checked), else the first
+    /// status that was not `Valid`, or `Valid` when taken, with the length gained.
+    fn partial_shortcut(
+        &mut self,
+        states: &mut [Vec<f64>],
+        rng: &mut SeededRng,
+    ) -> Option<(EdgeStatus, f64)> {
+        let n = states.len();
+        let i = rng.random_range(0..n - 2);
+        let j = rng.random_range(i + 2..n);
+        let k = rng.random_range(0..self.space.dimension());
+        let pieces: Vec<f64> = states[i..=j]
+            .windows(2)
+            .map(|w| self.space.distance(&w[0], &w[1]))
+            .collect();
+        let total: f64 = pieces.iter().sum();
+        if total <= 0.0 {
+            return None;
+        }
+        let (from, to) = (states[i][k], states[j][k]);
+        let mut stretch = states[i..=j].to_vec();
+        let mut along = 0.0;
+        let inner = stretch.len() - 1;
+        for (state, piece) in stretch[1..inner].iter_mut().zip(&pieces) {
+            along += piece;
+            state[k] = from + (to - from) * along / total;
+        }
+        let shorter = length(self.space, &stretch);
+        if shorter >= total * (1.0 - 1e-9) {
+            return None;
+        }
+        for w in stretch.windows(2) {
+            let status = self.edge(&w[0], &w[1]);
+            if status != EdgeStatus::Valid {
+                return Some((status, 0.0));
+            }
+        }
+        states[i..=j].clone_from_slice(&stretch);
+        Some((EdgeStatus::Valid, total - shorter))
     }
 }
 
