@@ -162,12 +162,22 @@ pub fn build_planner<P: PlanningProblem>(
     problem: &P,
     parameters: &Parameters,
 ) -> Result<Box<dyn Planner + Send>, BuildError> {
-    build_planner_with(
+    let planner = build_planner_with(
         configuration,
         problem,
         parameters,
         problem.validity().clone(),
-    )
+    )?;
+    if !parameters.simplify_solutions {
+        return Ok(planner);
+    }
+    let certification = parameters.for_problem(problem)?.certification.unwrap_or(1);
+    Ok(Box::new(crate::Simplifying::new(
+        planner,
+        (problem.space().clone(), problem.validity().clone()),
+        (problem.check_step()?, certification),
+        crate::PathSimplifier::new().seed(parameters.seed),
+    )))
 }
 
 /// [`build_planner`] with another validity checker than the problem's own — a wrapper that

@@ -38,7 +38,7 @@
 //! | [`Configuration`], [`build_planner`], [`build_planner_with`] | choose a configuration at run time (`Box<dyn Planner + Send>`), optionally with your own validity checker |
 //! | [`Planner`], [`Outcome`], [`Solution`] | the trait every planner implements and what `solve` returns |
 //! | [`RrtConnect`], [`InformedRrtStar`] | comparison planners from the same parts: RRT-Connect, and Informed RRT* (k-nearest RRT* with direct informed sampling and pruning) |
-//! | [`PathSimplifier`], [`Simplified`] | shorter paths after planning: vertex reduction and random shortcuts, every new edge checked and certified |
+//! | [`PathSimplifier`], [`Simplified`], [`Simplifying`] | shorter paths: vertex reduction, random and per-joint shortcuts, every new edge checked and certified; after planning, or at every solution of a wrapped planner |
 //! | [`Termination`], [`TimeLimit`], [`IterationLimit`], [`CostThreshold`], [`FirstSolution`], [`TerminationExt`] | termination conditions and their `or` / `and` combinators |
 //! | [`Trace`], [`Counters`] | the anytime `(time, cost)` record and work counters |
 //! | [`Snapshot`] | a read-only copy of samples, trees and cost bounds, for pictures of runs |
@@ -100,7 +100,7 @@ pub use parameters::{
 };
 pub use planner::{Outcome, Planner, Solution};
 pub use rrt::{InformedRrtStar, RrtConnect, default_range};
-pub use simplification::{PathSimplifier, Simplified};
+pub use simplification::{PathSimplifier, Simplified, Simplifying};
 pub use snapshot::Snapshot;
 pub use termination::{
     And, CostThreshold, FirstSolution, IterationLimit, Or, Progress, Termination, TerminationExt,

@@ -122,6 +122,11 @@ pub struct Parameters {
     /// RRT-Connect draws from a Halton sequence shifted by the seed (`true`, as VAMP does)
     /// instead of independent uniform draws (`false`, the default, chosen by measurement).
     pub rrt_halton: bool,
+    /// Every new solution is shortened by a [`PathSimplifier`](crate::PathSimplifier) before it
+    /// is reported (`true`; [`build_planner`](crate::build_planner) wraps the planner in
+    /// [`Simplifying`](crate::Simplifying)), or reported as the planner found it (`false`, the
+    /// default: the paper's planners and their ablations as published). Not in the paper.
+    pub simplify_solutions: bool,
     /// Informed RRT*'s probability of sampling a goal instead of the sampler's state.
     pub goal_bias: f64,
     /// Informed RRT*'s k-nearest rewiring factor (OMPL's `rewire_factor` of RRT*; the EIT*
@@ -173,6 +178,7 @@ impl Default for Parameters {
             rrt_dynamic_domain: true,
             rrt_balance: true,
             rrt_halton: false,
+            simplify_solutions: false,
             goal_bias: 0.05,
             rrt_rewire_factor: 1.2,
             initial_inflation: None,
@@ -402,6 +408,7 @@ impl Parameters {
             ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),
             ("rrt_balance", self.rrt_balance.to_string()),
             ("rrt_halton", self.rrt_halton.to_string()),
+            ("simplify_solutions", self.simplify_solutions.to_string()),
             ("goal_bias", self.goal_bias.to_string()),
             ("rrt_rewire_factor", self.rrt_rewire_factor.to_string()),
             (

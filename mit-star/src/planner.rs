@@ -85,6 +85,42 @@ pub trait Planner {
     }
 }
 
+/// A boxed planner is a planner (so wrappers such as [`Simplifying`](crate::Simplifying) take
+/// run-time configurations).
+impl<P: Planner + ?Sized> Planner for Box<P> {
+    fn name(&self) -> &str {
+        (**self).name()
+    }
+
+    fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
+        (**self).solve(termination)
+    }
+
+    fn clear(&mut self) {
+        (**self).clear();
+    }
+
+    fn best_cost(&self) -> f64 {
+        (**self).best_cost()
+    }
+
+    fn trace(&self) -> &Trace {
+        (**self).trace()
+    }
+
+    fn counters(&self) -> Counters {
+        (**self).counters()
+    }
+
+    fn settings(&self) -> Vec<(String, String)> {
+        (**self).settings()
+    }
+
+    fn snapshot(&self) -> Option<Snapshot> {
+        (**self).snapshot()
+    }
+}
+
 /// Checks a query against a space and a validity checker.
 pub(crate) fn validate_query<S, V>(
     space: &S,

@@ -108,3 +108,55 @@ fn bad_paths_are_typed_errors() {
         }
     }
 }
+
+#[test]
+fn a_simplifying_planner_reports_shorter_valid_paths_at_every_solution() {
+    let problem = problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    for configuration in [
+        mit_star::Configuration::MitStar,
+        mit_star::Configuration::RrtConnect,
+    ] {
+        let plain = Parameters {
+            seed: 2,
+            ..Parameters::default()
+        };
+        let simplified = Parameters {
+            simplify_solutions: true,
+            ..plain.clone()
+        };
+        let mut inner = mit_star::build_planner(configuration, &problem, &plain).unwrap();
+        let mut wrapped = mit_star::build_planner(configuration, &problem, &simplified).unwrap();
+        let stop = FirstSolution.or(TimeLimit::seconds(10.0));
+        let first_inner = inner.solve(&stop).unwrap();
+        let first = wrapped.solve(&stop).unwrap();
+        // The same planner found the same first path; the wrapper shortened it.
+        assert!(first.cost() < first_inner.cost(), "{configuration}");
+        let more = wrapped
+            .solve(&mit_star::IterationLimit::new(2_000).or(TimeLimit::seconds(10.0)))
+            .unwrap();
+        let path = &more.solution().unwrap().path;
+        assert_eq!(&path[0], problem.start());
+        let mut length = 0.0;
+        for (a, b) in path.iter().zip(path.iter().skip(1)) {
+            assert!(problem.world().segment_verdict(a, b).is_valid());
+            length += problem.space().distance(a, b);
+        }
+        assert!((length - more.cost()).abs() < 1e-9);
+        assert_eq!(wrapped.best_cost(), more.cost());
+        let costs: Vec<f64> = wrapped.trace().points().iter().map(|p| p.cost).collect();
+        assert!(costs.windows(2).all(|w| w[1] < w[0]), "{costs:?}");
+        assert!(
+            wrapped
+                .settings()
+                .iter()
+                .any(|(k, v)| k == "simplified_solutions" && v != "0")
+        );
+        wrapped.clear();
+        assert_eq!(wrapped.best_cost(), f64::INFINITY);
+        assert!(wrapped.trace().is_empty());
+    }
+}

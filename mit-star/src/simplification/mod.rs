@@ -1,9 +1,12 @@
 //! Path simplification: shorter paths from a planner's path, every new edge checked and
-//! certified as the planners check theirs ([`PathSimplifier`]).
+//! certified as the planners check theirs ([`PathSimplifier`]), after planning or at every
+//! solution of a planner ([`Simplifying`]).
 //!
 //! May use: the problem's space, validity checker, check step and certification (`problems`,
-//! `validity`, `spaces`); nothing of the planners.
+//! `validity`, `spaces`); of the planners only the [`Planner`](crate::Planner) trait.
 
 mod path_simplifier;
+mod simplifying;
 
 pub use path_simplifier::{PathSimplifier, Simplified};
+pub use simplifying::Simplifying;

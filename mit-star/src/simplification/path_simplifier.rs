@@ -120,8 +120,25 @@ impl PathSimplifier {
         path: &[Vec<f64>],
         stop: &dyn Stop,
     ) -> Result<Simplified, BuildError> {
-        let space = problem.space();
-        let step = problem.check_step()?;
+        let parts = (problem.check_step()?, problem.certification());
+        self.simplify_in(problem.space(), problem.validity(), parts, path, stop)
+    }
+
+    /// [`simplify`](Self::simplify) with the problem's parts given one by one: its space, its
+    /// validity checker, and `(step, certification)` — the check step and how many times finer
+    /// edges are certified (1: not at all).
+    ///
+    /// # Errors
+    /// [`BuildError::Validity`] for a step that is not finite and positive;
+    /// [`BuildError::BadPath`] as [`simplify`](Self::simplify).
+    pub fn simplify_in<S: StateSpace, V: StateValidity>(
+        &self,
+        space: &S,
+        validity: &V,
+        (step, certification): (f64, u32),
+        path: &[Vec<f64>],
+        stop: &dyn Stop,
+    ) -> Result<Simplified, BuildError> {
         let checker = DenseChecker::new(step)?;
         let dimension = space.dimension();
         let bad = path
@@ -136,9 +153,9 @@ impl PathSimplifier {
         }
         let mut run = Run {
             space,
-            validity: problem.validity(),
+            validity,
             checker,
-            certification: problem.certification(),
+            certification,
             stop,
             checked: 0,
         };

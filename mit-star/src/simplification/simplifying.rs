@@ -1,0 +1,194 @@
+//! [`Simplifying`]: a planner whose every new solution is simplified before it is reported.
+
+use std::time::{Duration, Instant};
+
+use spaces::{StateSpace, States};
+use validity::StateValidity;
+
+use crate::{
+    CostThreshold, Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot,
+    Solution, Termination, TerminationExt, Trace,
+};
+
+/// Wraps a planner so that each solution it finds is reported at once and then shortened by
+/// a [`PathSimplifier`] (OMPL's anytime path shortening, for one planner): the reported cost
+/// falls right after every improvement of the planner, and the first solution comes as soon
+/// as without the wrapper. Removing the wrapper is the ablation (`simplify_solutions` in [`Parameters`]).
+///
+/// The inner planner runs until the caller's termination fires or it improves its own
+/// solution; the simplification then runs under the same termination. Every edge the
+/// simplifier adds is checked and certified as the planner's are. The inner planner does not
+/// see the shorter cost: its informed set and pruning follow its own solutions.
+///
+/// [`Parameters`]: crate::Parameters
+#[derive(Debug, Clone)]
+pub struct Simplifying<P, S, V> {
+    inner: P,
+    space: S,
+    validity: V,
+    /// Check step and certification factor of the problem.
+    checks: (f64, u32),
+    simplifier: PathSimplifier,
+    solution: Option<Solution>,
+    trace: Trace,
+    /// Planning time of the finished `solve` calls.
+    elapsed: Duration,
+    /// Simplifications run.
+    runs: u64,
+}
+
+impl<P, S, V> Simplifying<P, S, V>
+where
+    P: Planner,
+    S: StateSpace,
+    V: StateValidity,
+{
+    /// `inner` with its solutions simplified in `space` with `validity`, edges checked at
+    /// `step` and certified `certification` times finer (1: not at all), by `simplifier`.
+    pub fn new(
+        inner: P,
+        (space, validity): (S, V),
+        (step, certification): (f64, u32),
+        simplifier: PathSimplifier,
+    ) -> Self {
+        Self {
+            inner,
+            space,
+            validity,
+            checks: (step, certification),
+            simplifier,
+            solution: None,
+            trace: Trace::default(),
+            elapsed: Duration::ZERO,
+            runs: 0,
+        }
+    }
+
+    /// The wrapped planner.
+    pub fn inner(&self) -> &P {
+        &self.inner
+    }
+
+    /// Takes `solution` (the inner planner's newest) if it beats the best so far, at once,
+    /// then simplifies it and takes the result if shorter. The simplification stops when the
+    /// caller's termination would have fired before this solution (so a first-solution
+    /// condition still lets its first path be simplified).
+    fn adopt(&mut self, solution: &Solution, termination: &dyn Termination, started: Instant) {
+        let before = self.best_cost();
+        self.keep(solution.clone(), started);
+        let stop = || termination.should_terminate(&Progress::new(started.elapsed(), 0, before));
+        let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
+        self.runs += 1;
+        let simplified =
+            self.simplifier
+                .simplify_in(&self.space, &self.validity, self.checks, &path, &stop);
+        if let Ok(simplified) = simplified {
+            let mut states = States::new(self.space.dimension());
+            for state in &simplified.path {
+                states.push(state);
+            }
+            let cost = simplified.cost;
+            self.keep(Solution { path: states, cost }, started);
+        }
+    }
+
+    /// Makes `solution` the best one, with a trace point, if it is cheaper.
+    fn keep(&mut self, solution: Solution, started: Instant) {
+        if solution.cost < self.best_cost() {
+            let time = (self.elapsed + started.elapsed()).as_secs_f64();
+            self.trace.push(time, solution.cost);
+            self.solution = Some(solution);
+        }
+    }
+}
+
+/// The caller's termination seen with this wrapper's clock and best cost.
+struct Outer<'a> {
+    termination: &'a dyn Termination,
+    started: Instant,
+    best: f64,
+}
+
+impl Termination for Outer<'_> {
+    fn should_terminate(&self, progress: &Progress) -> bool {
+        let progress = Progress {
+            elapsed: progress.now.saturating_duration_since(self.started),
+            best_cost: progress.best_cost.min(self.best),
+            ..*progress
+        };
+        self.termination.should_terminate(&progress)
+    }
+}
+
+impl<P, S, V> Planner for Simplifying<P, S, V>
+where
+    P: Planner,
+    S: StateSpace,
+    V: StateValidity,
+{
+    fn name(&self) -> &str {
+        self.inner.name()
+    }
+
+    fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
+        let started = Instant::now();
+        loop {
+            let before = self.inner.best_cost();
+            let outer = Outer {
+                termination,
+                started,
+                best: self.best_cost(),
+            };
+            // Back as soon as the inner planner improves on `before`.
+            let improved = CostThreshold::new(if before.is_finite() {
+                before - before.abs() * 1e-12 - f64::MIN_POSITIVE
+            } else {
+                f64::MAX
+            });
+            let outcome = self.inner.solve(&(&outer).or(improved))?;
+            let found = self.inner.best_cost() < before;
+            if found && let Outcome::Solved(solution) = &outcome {
+                self.adopt(solution, termination, started);
+            }
+            let progress = Progress::new(started.elapsed(), 0, self.best_cost());
+            if !found || termination.should_terminate(&progress) {
+                break;
+            }
+        }
+        self.elapsed += started.elapsed();
+        Ok(match &self.solution {
+            Some(solution) => Outcome::Solved(solution.clone()),
+            None => Outcome::NoSolution,
+        })
+    }
+
+    fn clear(&mut self) {
+        self.inner.clear();
+        self.solution = None;
+        self.trace.clear();
+        self.elapsed = Duration::ZERO;
+        self.runs = 0;
+    }
+
+    fn best_cost(&self) -> f64 {
+        self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)
+    }
+
+    fn trace(&self) -> &Trace {
+        &self.trace
+    }
+
+    fn counters(&self) -> Counters {
+        self.inner.counters()
+    }
+
+    fn settings(&self) -> Vec<(String, String)> {
+        let mut settings = self.inner.settings();
+        settings.push(("simplified_solutions".into(), self.runs.to_string()));
+        settings
+    }
+
+    fn snapshot(&self) -> Option<Snapshot> {
+        self.inner.snapshot()
+    }
+}
