@@ -18,7 +18,9 @@ use crate::{
 /// The inner planner runs until the caller's termination fires or it improves its own
 /// solution; the simplification then runs under the same termination. Every edge the
 /// simplifier adds is checked and certified as the planner's are. The inner planner does not
-/// see the shorter cost: its informed set and pruning follow its own solutions.
+/// see the shorter cost: its informed set and pruning follow its own solutions. Time limits
+/// and cost thresholds apply to the whole call; an [`IterationLimit`](crate::IterationLimit)
+/// counts the iterations of each stretch of planning between two solutions.
 ///
 /// [`Parameters`]: crate::Parameters
 #[derive(Debug, Clone)]
