@@ -21,7 +21,7 @@
 //! as the benchmark harness does) (the
 //! arm-planning reference page, "Where an arm solve's time goes").
 
-use std::path::Path;
+use std::hint::black_box;
 use std::time::Instant;
 
 use mit_star::{
@@ -32,18 +32,9 @@ use robot::ArmProblem;
 use spaces::StateSpace;
 use validity::StateValidity;
 
-const SCENES: [&str; 5] = [
-    "bookshelf_small_panda",
-    "bookshelf_tall_panda",
-    "box_panda",
-    "cage_panda",
-    "table_pick_panda",
-];
-
-fn median(values: &mut [f64]) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
-}
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::{SCENES, median, problems};
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -81,14 +72,10 @@ fn main() {
         if !only.is_empty() && !only.split(',').any(|s| scene.starts_with(s)) {
             continue;
         }
-        let mut problems = Vec::new();
-        for index in 1..=count {
-            if let Ok(problem) = ArmProblem::panda_mbm(&Path::new(&folder).join(scene), index)
-                && problem.ends_are_valid()
-            {
-                problems.push(problem);
-            }
-        }
+        let problems: Vec<ArmProblem> = problems(&folder, scene, count)
+            .into_iter()
+            .map(|(_, problem)| problem)
+            .collect();
         if let Some(first) = problems.first() {
             first_problems.push((scene, first.clone()));
         }
@@ -174,30 +161,27 @@ fn main() {
         }
         let scalar = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
         let started = Instant::now();
-        let mut tested = 0;
         for _ in 0..5 {
             let mut at = 0;
             while at < 4096 {
                 let rest = &states[at * d..];
                 at += checker
-                    .first_invalid(&rest[..rest.len().min(8 * d)], d)
+                    .first_invalid(black_box(&rest[..rest.len().min(8 * d)]), d)
                     .map_or(8, |i| i + 1);
-                tested += 1;
             }
         }
         let batched = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
-        let _ = tested;
         // Eight per call, asking only whether any is invalid (an edge check's question).
         let started = Instant::now();
-        let mut with_contact = 0;
         for _ in 0..5 {
-            with_contact = states
-                .chunks(8 * d)
-                .filter(|batch| checker.any_invalid(batch, d).is_some())
-                .count();
+            black_box(
+                states
+                    .chunks(8 * d)
+                    .filter(|batch| checker.any_invalid(black_box(batch), d).is_some())
+                    .count(),
+            );
         }
         let any = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
-        let _ = with_contact;
         // Valid configurations only, eight per call: nothing ends a batch early.
         let valid_states: Vec<f64> = states
             .chunks(d)

@@ -13,7 +13,6 @@
 //! Prints configurations evaluated and nanoseconds per edge for both, per scene; the ratio is
 //! what the certification's cost target is judged by.
 
-use std::path::Path;
 use std::time::Instant;
 
 use mit_star::{
@@ -24,13 +23,9 @@ use robot::ArmProblem;
 use spaces::{Never, StateSpace};
 use validity::{EdgeStatus, MotionProgress, StateValidity};
 
-const SCENES: [&str; 5] = [
-    "bookshelf_small_panda",
-    "bookshelf_tall_panda",
-    "box_panda",
-    "cage_panda",
-    "table_pick_panda",
-];
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::{SCENES, problems};
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -46,13 +41,7 @@ fn main() {
     let (mut all_c, mut all_g) = (0.0, 0.0);
     for scene in SCENES {
         let mut edges: Vec<(ArmProblem, Vec<f64>, Vec<f64>)> = Vec::new();
-        for index in 1..=count {
-            let Ok(problem) = ArmProblem::panda_mbm(&Path::new(&folder).join(scene), index) else {
-                continue;
-            };
-            if !problem.ends_are_valid() {
-                continue;
-            }
+        for (index, problem) in problems(&folder, scene, count) {
             let problem = problem.allowing_uncertified_motion(true);
             for configuration in [Configuration::MitStar, Configuration::RrtConnect] {
                 let parameters = Parameters {

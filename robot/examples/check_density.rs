@@ -12,23 +12,17 @@
 //! and the edges certified: the figures of the arm-planning reference page's "The check
 //! grid's density".
 
-use std::path::Path;
 use std::time::Instant;
 
 use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
 use problems::PlanningProblem;
-use robot::ArmProblem;
 use spaces::StateSpace;
 
-const SCENES: [&str; 5] = [
-    "bookshelf_small_panda",
-    "bookshelf_tall_panda",
-    "box_panda",
-    "cage_panda",
-    "table_pick_panda",
-];
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::SCENES;
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -36,16 +30,11 @@ fn main() {
     let count: usize = args
         .next()
         .map_or(40, |a| a.parse().expect("a problem count"));
-    let mut problems = Vec::new();
-    for scene in SCENES {
-        for index in 1..=count {
-            if let Ok(problem) = ArmProblem::panda_mbm(&Path::new(&folder).join(scene), index)
-                && problem.ends_are_valid()
-            {
-                problems.push(problem.allowing_uncertified_motion(true));
-            }
-        }
-    }
+    let problems: Vec<_> = SCENES
+        .iter()
+        .flat_map(|scene| mbm_scenes::problems(&folder, scene, count))
+        .map(|(_, problem)| problem.allowing_uncertified_motion(true))
+        .collect();
     println!("{} problems × 3 seeds", problems.len());
     println!(
         "| planner | checks per unit | certification | total (s) | median run (ms) | edges certified |"

@@ -13,7 +13,6 @@
 //! before and after, the median straight-line distance (a lower bound), the median time the
 //! simplification took and how many simplified paths failed the audit.
 
-use std::path::Path;
 use std::time::{Duration, Instant};
 
 use mit_star::{
@@ -21,21 +20,12 @@ use mit_star::{
     build_planner,
 };
 use problems::PlanningProblem;
-use robot::{ArmProblem, AuditVerdict, MotionAudit};
+use robot::{AuditVerdict, MotionAudit};
 use spaces::StateSpace;
 
-const SCENES: [&str; 5] = [
-    "bookshelf_small_panda",
-    "bookshelf_tall_panda",
-    "box_panda",
-    "cage_panda",
-    "table_pick_panda",
-];
-
-fn median(values: &mut [f64]) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
-}
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::{SCENES, median, problems};
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -55,13 +45,7 @@ fn main() {
     for scene in SCENES {
         let (mut before, mut after, mut line, mut took) = (vec![], vec![], vec![], vec![]);
         let mut failed = 0;
-        for index in 1..=count {
-            let Ok(problem) = ArmProblem::panda_mbm(&Path::new(&folder).join(scene), index) else {
-                continue;
-            };
-            if !problem.ends_are_valid() {
-                continue;
-            }
+        for (index, problem) in problems(&folder, scene, count) {
             let parameters = Parameters {
                 seed: index as u64,
                 range: (configuration == Configuration::RrtConnect).then_some(1.0),

@@ -90,12 +90,7 @@ impl UniformSampler {
         space: &S,
         out: &mut [f64],
     ) -> Result<(), SampleError> {
-        if out.len() != space.dimension() {
-            return Err(SampleError::DimensionMismatch {
-                expected: space.dimension(),
-                got: out.len(),
-            });
-        }
+        fits(space, out)?;
         self.draw(space, out);
         self.counters.drawn += 1;
         self.counters.returned += 1;
@@ -116,12 +111,7 @@ where
         stop: &dyn Stop,
         out: &mut [f64],
     ) -> Result<(), SampleError> {
-        if out.len() != space.dimension() {
-            return Err(SampleError::DimensionMismatch {
-                expected: space.dimension(),
-                got: out.len(),
-            });
-        }
+        fits(space, out)?;
         loop {
             if stop.should_stop() {
                 return Err(SampleError::Stopped);
@@ -148,5 +138,17 @@ where
 
     fn counters(&self) -> SamplerCounters {
         self.counters
+    }
+}
+
+/// [`SampleError::DimensionMismatch`] unless `out` has the space's dimension.
+fn fits<S: StateSpace + ?Sized>(space: &S, out: &[f64]) -> Result<(), SampleError> {
+    if out.len() == space.dimension() {
+        Ok(())
+    } else {
+        Err(SampleError::DimensionMismatch {
+            expected: space.dimension(),
+            got: out.len(),
+        })
     }
 }

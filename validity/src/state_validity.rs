@@ -255,6 +255,28 @@ impl<V> Counted<V> {
     }
 }
 
+impl<V: StateValidity> Counted<V> {
+    /// A batch question (`ask`: the inner checker's `first_invalid` or `any_invalid`), counted:
+    /// one by one up to the first invalid state for a checker without batches, the whole batch
+    /// for a batched checker.
+    #[inline]
+    fn batch(
+        &self,
+        states: &[f64],
+        dimension: usize,
+        ask: fn(&V, &[f64], usize) -> Option<usize>,
+    ) -> Option<usize> {
+        if self.inner.batch_width() <= 1 {
+            return states
+                .chunks_exact(dimension.max(1))
+                .position(|s| !self.is_valid(s));
+        }
+        let n = states.len() / dimension.max(1);
+        self.count.set(self.count.get() + n as u64);
+        ask(&self.inner, states, dimension)
+    }
+}
+
 impl<V: StateValidity> StateValidity for Counted<V> {
     #[inline]
     fn is_valid(&self, state: &[f64]) -> bool {
@@ -271,25 +293,13 @@ impl<V: StateValidity> StateValidity for Counted<V> {
     /// batches, the whole batch for a batched checker (it tests them all).
     #[inline]
     fn first_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
-        if self.inner.batch_width() <= 1 {
-            return states
-                .chunks_exact(dimension.max(1))
-                .position(|s| !self.is_valid(s));
-        }
-        let n = states.len() / dimension.max(1);
-        self.count.set(self.count.get() + n as u64);
-        self.inner.first_invalid(states, dimension)
+        self.batch(states, dimension, V::first_invalid)
     }
 
     /// Counted as [`first_invalid`](Self::first_invalid).
     #[inline]
     fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
-        if self.inner.batch_width() <= 1 {
-            return self.first_invalid(states, dimension);
-        }
-        let n = states.len() / dimension.max(1);
-        self.count.set(self.count.get() + n as u64);
-        self.inner.any_invalid(states, dimension)
+        self.batch(states, dimension, V::any_invalid)
     }
 
     /// Not counted: a motion certification is no state check (the walker counts the

@@ -1,38 +1,31 @@
 #!/usr/bin/env python3
-"""Summarize side_by_side.sh: per scene, medians over problems of each problem's median time."""
-import csv, glob, math, statistics as st, sys
+"""The side-by-side summary with mit-star timed as VAMP is: from the start of its solve.
+
+`../shared/peers/vamp/side_by_side.sh` times mit-star by `initial_time`, which includes the
+planner's construction in the benchmark harness (`setup_time`). This copies OUT to a temporary
+folder with every `ours_*/*/runs.csv` rewritten to `initial_time - setup_time`, then runs the
+shared `summarize.py` (path in $SUMMARIZE, else `../shared/peers/vamp/summarize.py` beside the
+repository) on it:
+
+    python3 benches/peers/vamp/summarize_solve.py OUT bookshelf_small bookshelf_tall box cage table_pick
+"""
+import csv, glob, os, shutil, subprocess, sys, tempfile
+from pathlib import Path
 
 out, scenes = sys.argv[1], sys.argv[2:]
-vamp, ours, fails = {}, {}, {}
-for f in glob.glob(f"{out}/vamp_*.csv"):
-    for r in csv.DictReader(open(f)):
-        if r["scene"] in scenes and r.get("solved", "1") == "1":
-            vamp.setdefault((r["scene"], int(r["index"])), []).append(float(r["plan_us"]))
-for d in glob.glob(f"{out}/ours_*"):
-    for s in scenes:
-        try:
-            rows = list(csv.DictReader(open(f"{d}/{s}/runs.csv")))
-        except FileNotFoundError:
-            continue
+shared = os.environ.get("SUMMARIZE") or str(
+    Path(__file__).resolve().parents[3].parent / "shared/peers/vamp/summarize.py")
+with tempfile.TemporaryDirectory() as tmp:
+    copy = Path(tmp) / "out"
+    shutil.copytree(out, copy)
+    for f in glob.glob(f"{copy}/ours_*/*/runs.csv"):
+        rows = list(csv.DictReader(open(f)))
         for r in rows:
-            k = (s, int(r["instance_seed"]))
-            if r["success"] == "true":
-                ours.setdefault(k, []).append((float(r["initial_time"]) - float(r["setup_time"])) * 1e6)
-            else:
-                fails[k] = fails.get(k, 0) + 1
-
-def p95(v):
-    v = sorted(v)
-    return v[min(len(v) - 1, math.ceil(0.95 * len(v)) - 1)]
-
-print("| scene | VAMP median µs | mit-star median µs | mit-star / VAMP | VAMP p95 | mit-star p95 | p95 ratio | mit-star unsolved |")
-print("|---|---|---|---|---|---|---|---|")
-pool_v, pool_o = [], []
-for s in scenes + ["all"]:
-    keys = [k for k in set(vamp) | set(ours) if s == "all" or k[0] == s]
-    v = [st.median(vamp[k]) for k in keys if k in vamp]
-    o = [st.median(ours[k]) for k in keys if k in ours]
-    nf = sum(n for k, n in fails.items() if s == "all" or k[0] == s)
-    if v and o:
-        print(f"| {s} | {st.median(v):.0f} | {st.median(o):.0f} | {st.median(o)/st.median(v):.2f}× "
-              f"| {p95(v):.0f} | {p95(o):.0f} | {p95(o)/p95(v):.2f}× | {nf} |")
+            if r["initial_time"]:
+                r["initial_time"] = repr(float(r["initial_time"]) - float(r["setup_time"]))
+        if rows:
+            with open(f, "w", newline="") as handle:
+                writer = csv.DictWriter(handle, fieldnames=list(rows[0]))
+                writer.writeheader()
+                writer.writerows(rows)
+    sys.exit(subprocess.call([sys.executable, shared, str(copy), *scenes]))

@@ -346,7 +346,12 @@ fn print_simplified(s: &mit_star::Simplified, validation: &crate::path_validatio
             validation.failure.clone().unwrap_or_default()
         );
     }
-    for state in &s.path {
+    print_states(&s.path);
+}
+
+/// One line per state, six decimals.
+fn print_states(states: &[Vec<f64>]) {
+    for state in states {
         let coordinates: Vec<String> = state.iter().map(|x| format!("{x:.6}")).collect();
         say!("    ({})", coordinates.join(", "));
     }
@@ -412,10 +417,7 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     }
     if !r.path.is_empty() {
         say!("  path ({} states):", r.path.len());
-        for state in &r.path {
-            let coordinates: Vec<String> = state.iter().map(|x| format!("{x:.6}")).collect();
-            say!("    ({})", coordinates.join(", "));
-        }
+        print_states(&r.path);
     }
     for f in files {
         say!("  picture: {}", f.display());

@@ -169,12 +169,16 @@ impl PathSimplifier {
         let mut a = vec![0.0; dimension];
         let mut b = vec![0.0; dimension];
         let mut partial = 0;
+        let mut lengths = Vec::with_capacity(states.len());
         while !stopped && failures < self.attempts && states.len() >= 3 {
+            lengths.clear();
+            lengths.extend(states.windows(2).map(|w| space.distance(&w[0], &w[1])));
+            let total: f64 = lengths.iter().sum();
             // A shortcut that gains less than this is taken but counts as a failure: the
             // search ends when shortcuts stop paying.
-            let negligible = 1e-4 * length(space, &states);
+            let negligible = 1e-4 * total;
             if self.partial && rng.random::<bool>() {
-                match run.partial_shortcut(&mut states, &mut rng) {
+                match run.partial_shortcut(&mut states, &lengths, &mut rng) {
                     Some((EdgeStatus::Valid, gain)) => {
                         partial += 1;
                         failures = if gain < negligible { failures + 1 } else { 0 };
@@ -184,11 +188,6 @@ impl PathSimplifier {
                 }
                 continue;
             }
-            let lengths: Vec<f64> = states
-                .windows(2)
-                .map(|w| space.distance(&w[0], &w[1]))
-                .collect();
-            let total: f64 = lengths.iter().sum();
             let (mut s, mut t) = (rng.random::<f64>() * total, rng.random::<f64>() * total);
             if s > t {
                 std::mem::swap(&mut s, &mut t);
@@ -299,24 +298,22 @@ impl<S: StateSpace, V: StateValidity> Run<'_, S, V> {
 }
 
 impl<S: StateSpace, V: StateValidity> Run<'_, S, V> {
-    /// A per-coordinate shortcut: between two random states `i < j` of the path, one random
-    /// coordinate of every state strictly between them is blended linearly (by arc length)
-    /// from its value at `i` to its value at `j`; taken if the stretch gets shorter and all
-    /// its new edges pass. `None` if it was not shorter (nothing checked), else the first
+    /// A per-coordinate shortcut (`lengths`: the path's edge lengths): between two random
+    /// states `i < j` of the path, one random coordinate of every state strictly between them
+    /// is blended linearly (by arc length) from its value at `i` to its value at `j`; taken if
+    /// the stretch gets shorter and all its new edges pass. `None` if it was not shorter (nothing checked), else the first
     /// status that was not `Valid`, or `Valid` when taken, with the length gained.
     fn partial_shortcut(
         &mut self,
         states: &mut [Vec<f64>],
+        lengths: &[f64],
         rng: &mut SeededRng,
     ) -> Option<(EdgeStatus, f64)> {
         let n = states.len();
         let i = rng.random_range(0..n - 2);
         let j = rng.random_range(i + 2..n);
         let k = rng.random_range(0..self.space.dimension());
-        let pieces: Vec<f64> = states[i..=j]
-            .windows(2)
-            .map(|w| self.space.distance(&w[0], &w[1]))
-            .collect();
+        let pieces = &lengths[i..j];
         let total: f64 = pieces.iter().sum();
         if total <= 0.0 {
             return None;
@@ -325,7 +322,7 @@ impl<S: StateSpace, V: StateValidity> Run<'_, S, V> {
         let mut stretch = states[i..=j].to_vec();
         let mut along = 0.0;
         let inner = stretch.len() - 1;
-        for (state, piece) in stretch[1..inner].iter_mut().zip(&pieces) {
+        for (state, piece) in stretch[1..inner].iter_mut().zip(pieces) {
             along += piece;
             state[k] = from + (to - from) * along / total;
         }

@@ -6,8 +6,8 @@ use spaces::{StateSpace, States};
 use validity::StateValidity;
 
 use crate::{
-    CostThreshold, Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot,
-    Solution, Termination, TerminationExt, Trace,
+    Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot, Solution,
+    Termination, TerminationExt, Trace,
 };
 
 /// Wraps a planner so that each solution it finds is reported at once and then shortened by
@@ -104,6 +104,15 @@ where
     }
 }
 
+/// Fires once the inner planner's best cost is below the given one.
+struct Improved(f64);
+
+impl Termination for Improved {
+    fn should_terminate(&self, progress: &Progress) -> bool {
+        progress.best_cost < self.0
+    }
+}
+
 /// The caller's termination seen with this wrapper's clock and best cost.
 struct Outer<'a> {
     termination: &'a dyn Termination,
@@ -142,12 +151,7 @@ where
                 best: self.best_cost(),
             };
             // Back as soon as the inner planner improves on `before`.
-            let improved = CostThreshold::new(if before.is_finite() {
-                before - before.abs() * 1e-12 - f64::MIN_POSITIVE
-            } else {
-                f64::MAX
-            });
-            let outcome = self.inner.solve(&(&outer).or(improved))?;
+            let outcome = self.inner.solve(&(&outer).or(Improved(before)))?;
             let found = self.inner.best_cost() < before;
             if found && let Outcome::Solved(solution) = &outcome {
                 self.adopt(solution, termination, started);

@@ -341,15 +341,17 @@ pub(crate) fn invalid_lanes(
     placed.fill(false);
     // With a fixed growth, links are placed as the tests reach them (in tree order), so that a
     // batch found invalid early skips the rest of the walk; a placed growth needs them all.
-    let mut posed = 0;
+    // `posed`: links placed so far (in tree order); `bounded`: entries of `s.links` whose
+    // bounding centres are placed.
+    let (mut posed, mut bounded) = (0, 0);
     let grow: &[f32x8] = match growth {
         Growth::Fixed(grow) => grow,
         Growth::Placed(buffer, place) => {
             s.lanes.link_poses(q8, poses8);
-            posed = poses8.len();
             for (bound, (link, _, center, _)) in bounds8.iter_mut().zip(&s.links) {
                 *bound = poses8[*link].point(*center);
             }
+            (posed, bounded) = (poses8.len(), s.links.len());
             place(poses8, bounds8, buffer);
             buffer
         }
@@ -363,7 +365,10 @@ pub(crate) fn invalid_lanes(
         if *link >= posed {
             s.lanes.link_poses_in(q8, poses8, posed..*link + 1);
             posed = *link + 1;
+        }
+        if k >= bounded {
             bounds8[k] = poses8[*link].point(*center);
+            bounded = k + 1;
         }
         let pose = &poses8[*link];
         let bound = f32x8::splat(*radius) + grow[k];

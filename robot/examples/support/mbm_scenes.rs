@@ -1,0 +1,33 @@
+//! What the arm examples share: the five MotionBenchMaker scenes shipped with the Panda, their
+//! problems with a valid start and goal, and a median.
+#![allow(dead_code)] // each example uses its own part of it
+
+use std::path::Path;
+
+use robot::ArmProblem;
+
+/// The scenes of `robot/data/panda/mbm_problems.tar.bz2`, as folder names.
+pub(crate) const SCENES: [&str; 5] = [
+    "bookshelf_small_panda",
+    "bookshelf_tall_panda",
+    "box_panda",
+    "cage_panda",
+    "table_pick_panda",
+];
+
+/// Problems `1..=count` of `scene` under `folder` that load and have a valid start and goal,
+/// with their 1-based index.
+pub(crate) fn problems(folder: &str, scene: &str, count: usize) -> Vec<(usize, ArmProblem)> {
+    (1..=count)
+        .filter_map(|index| {
+            let problem = ArmProblem::panda_mbm(&Path::new(folder).join(scene), index).ok()?;
+            problem.ends_are_valid().then_some((index, problem))
+        })
+        .collect()
+}
+
+/// The median of `values` (sorted in place); NaN if there are none.
+pub(crate) fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
