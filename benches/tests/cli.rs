@@ -373,6 +373,86 @@ fn plan_simplifies_and_revalidates_on_request() {
 }
 
 #[test]
+fn check_path_judges_a_path_from_a_file() {
+    let dir = scratch("check-path");
+    std::fs::create_dir_all(&dir).unwrap();
+    let stdout = succeeded(&[
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        "dividing-walls",
+        "--time",
+        "0.5",
+        "--json",
+        "--no-picture",
+    ]);
+    let value: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let rows: Vec<String> = value["path"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|state| {
+            let xs: Vec<String> = state
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.to_string())
+                .collect();
+            xs.join(" ")
+        })
+        .collect();
+    let (first, last) = (rows[0].clone(), rows[rows.len() - 1].clone());
+    let file = dir.join("paths.txt");
+    // The planner's path, then the straight line through the walls.
+    std::fs::write(
+        &file,
+        format!("# from plan\n{}\n\n{first}\n{last}\n", rows.join("\n")),
+    )
+    .unwrap();
+    let out = common::mit_star(&[
+        "check-path",
+        "--problem",
+        "dividing-walls",
+        "--path",
+        file.to_str().unwrap(),
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(3), "{text}");
+    assert!(
+        text.contains("path 1:") && text.contains("path 2:"),
+        "{text}"
+    );
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(
+        lines[1].contains("certification): valid; independent check: valid"),
+        "{text}"
+    );
+    assert!(lines[2].contains("1 of 1 edges fail"), "{text}");
+    // Only the planner's path: success.
+    std::fs::write(&file, rows.join("\n")).unwrap();
+    succeeded(&[
+        "check-path",
+        "--problem",
+        "dividing-walls",
+        "--path",
+        file.to_str().unwrap(),
+    ]);
+    // Not numbers: refused, naming the line.
+    std::fs::write(&file, "0.1 0.5\n0.2 x\n").unwrap();
+    refused(
+        &[
+            "check-path",
+            "--problem",
+            "dividing-walls",
+            "--path",
+            file.to_str().unwrap(),
+        ],
+        &["line 2"],
+    );
+}
+
+#[test]
 fn bench_with_flags_writes_a_results_folder() {
     let dir = scratch("bench");
     let stdout = succeeded(&[

@@ -14,14 +14,15 @@ use spaces::StateSpace;
 use validity::{Counted, EdgeChecker};
 
 use crate::{
-    AitStar, BitStar, BuildError, CheckerPart, Eit, EitStar, Guidance, InformedRrtStar, MitStar,
-    MitStarAs, MitStarEis, MitStarSc, MitStarSr, Parameters, Planner, RrtConnect, SamplerPart,
+    AitStar, Aorrtc, BitStar, BuildError, CheckerPart, Eit, EitStar, Guidance, InformedRrtStar,
+    MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr, Parameters, Planner, RrtConnect,
+    SamplerPart,
 };
 
 /// A configuration of the MIT*/EIT* family, or a comparison planner, for choosing one at run
 /// time (command lines, benchmark files). The names are `mit-star`, `eit-star`, `mit-star-as`,
-/// `mit-star-eis`, `mit-star-sc`, `mit-star-sr`, `rrt-connect`, `bit-star`, `abit-star`, `ait-star` and
-/// `informed-rrt-star`.
+/// `mit-star-eis`, `mit-star-sc`, `mit-star-sr`, `rrt-connect`, `aorrtc`, `bit-star`, `abit-star`,
+/// `ait-star` and `informed-rrt-star`.
 ///
 /// ```
 /// use mit_star::Configuration;
@@ -49,6 +50,9 @@ pub enum Configuration {
     MitStarSr,
     /// RRT-Connect (Kuffner & LaValle 2000): bidirectional trees, first solution.
     RrtConnect,
+    /// AORRTC (Wilson et al. 2025): RRT-Connect, then repeated cost-bounded searches under the
+    /// best cost, each solution simplified.
+    Aorrtc,
     /// BIT* (Gammell et al. 2020): the forward search alone, ordered by the a-priori heuristic.
     BitStar,
     /// ABIT* (Strub & Gammell 2020): BIT* with an inflated, then truncated search per batch.
@@ -63,7 +67,7 @@ pub enum Configuration {
 
 impl Configuration {
     /// Every configuration, MIT* first.
-    pub const ALL: [Self; 11] = [
+    pub const ALL: [Self; 12] = [
         Self::MitStar,
         Self::EitStar,
         Self::MitStarAs,
@@ -71,6 +75,7 @@ impl Configuration {
         Self::MitStarSc,
         Self::MitStarSr,
         Self::RrtConnect,
+        Self::Aorrtc,
         Self::BitStar,
         Self::AbitStar,
         Self::AitStar,
@@ -87,6 +92,7 @@ impl Configuration {
             Self::MitStarSc => "mit-star-sc",
             Self::MitStarSr => "mit-star-sr",
             Self::RrtConnect => "rrt-connect",
+            Self::Aorrtc => "aorrtc",
             Self::BitStar => "bit-star",
             Self::AbitStar => "abit-star",
             Self::AitStar => "ait-star",
@@ -110,6 +116,7 @@ impl Configuration {
             Self::MitStarSc => "MIT*-SC",
             Self::MitStarSr => "MIT*-SR",
             Self::RrtConnect => "RRT-Connect",
+            Self::Aorrtc => "AORRTC",
             Self::BitStar => "BIT*",
             Self::AbitStar => "ABIT*",
             Self::AitStar => "AIT*",
@@ -134,7 +141,7 @@ impl FromStr for Configuration {
             .ok_or_else(|| BuildError::UnknownConfiguration {
                 name: s.to_string(),
                 expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, mit-star-sr, \
-                           rrt-connect, \
+                           rrt-connect, aorrtc, \
                            bit-star, abit-star, ait-star, informed-rrt-star",
             })
     }
@@ -226,6 +233,12 @@ where
         Configuration::RrtConnect => {
             let (space, validity, start, goals) = query;
             let mut planner = RrtConnect::new(space, validity, (start, goals), parameters)?;
+            planner.set_name(label);
+            Box::new(planner)
+        }
+        Configuration::Aorrtc => {
+            let (space, validity, start, goals) = query;
+            let mut planner = Aorrtc::new(space, validity, (start, goals), parameters)?;
             planner.set_name(label);
             Box::new(planner)
         }

@@ -37,8 +37,9 @@
 //! | [`SamplerPart`], [`CheckerPart`] | how the builder makes parts from parameters |
 //! | [`Configuration`], [`build_planner`], [`build_planner_with`] | choose a configuration at run time (`Box<dyn Planner + Send>`), optionally with your own validity checker |
 //! | [`Planner`], [`Outcome`], [`Solution`] | the trait every planner implements and what `solve` returns |
-//! | [`RrtConnect`], [`InformedRrtStar`] | comparison planners from the same parts: RRT-Connect, and Informed RRT* (k-nearest RRT* with direct informed sampling and pruning) |
+//! | [`RrtConnect`], [`Aorrtc`], [`InformedRrtStar`] | comparison planners from the same parts: RRT-Connect; AORRTC (RRT-Connect, then repeated cost-bounded searches with informed sampling and simplification); Informed RRT* (k-nearest RRT* with direct informed sampling and pruning) |
 //! | [`PathSimplifier`], [`Simplified`], [`Simplifying`] | shorter paths: vertex reduction, random and per-joint shortcuts, every new edge checked and certified; after planning, or at every solution of a wrapped planner |
+//! | [`check_path`], [`PathVerdict`], [`snap_ends`] | judge a path from anywhere (another planner's) by the rules our solutions pass |
 //! | [`Termination`], [`TimeLimit`], [`IterationLimit`], [`CostThreshold`], [`FirstSolution`], [`TerminationExt`] | termination conditions and their `or` / `and` combinators |
 //! | [`Trace`], [`Counters`] | the anytime `(time, cost)` record and work counters |
 //! | [`Snapshot`] | a read-only copy of samples, trees and cost bounds, for pictures of runs |
@@ -76,6 +77,7 @@ mod informed_trees;
 mod nearest;
 mod observer;
 mod parameters;
+mod path_check;
 mod planner;
 mod rrt;
 mod simplification;
@@ -98,8 +100,9 @@ pub use observer::{BatchEvent, Observer, RestartEvent, SolutionEvent};
 pub use parameters::{
     Connection, EisExpansionForm, EisExpansionRule, Parameters, k_nearest, r_disc,
 };
+pub use path_check::{PathVerdict, check_path, snap_ends};
 pub use planner::{Outcome, Planner, Solution};
-pub use rrt::{InformedRrtStar, RrtConnect, default_range};
+pub use rrt::{Aorrtc, InformedRrtStar, RrtConnect, default_range};
 pub use simplification::{PathSimplifier, Simplified, Simplifying};
 pub use snapshot::Snapshot;
 pub use termination::{

@@ -127,6 +127,15 @@ pub struct Parameters {
     /// [`Simplifying`](crate::Simplifying)), or reported as the planner found it (`false`, the
     /// default: the paper's planners and their ablations as published). Not in the paper.
     pub simplify_solutions: bool,
+    /// AORRTC shortens each solution it finds with a [`PathSimplifier`](crate::PathSimplifier)
+    /// before the next cost-bounded search starts, so that search is bounded by the shorter
+    /// cost (`true`, the default, as its authors' planner), or searches under the cost of the
+    /// path as found (`false`).
+    pub aorrtc_simplify: bool,
+    /// AORRTC's cost-bound resampling: after a new state joins a tree, up to this many more
+    /// parents are sought under redrawn cost bounds, each taken if its edge is valid and
+    /// cheaper (1000, as its authors' planner; 0: the first parent stays).
+    pub aorrtc_resamples: u32,
     /// Informed RRT*'s probability of sampling a goal instead of the sampler's state.
     pub goal_bias: f64,
     /// Informed RRT*'s k-nearest rewiring factor (OMPL's `rewire_factor` of RRT*; the EIT*
@@ -138,9 +147,9 @@ pub struct Parameters {
     /// ABIT*'s inflation scaling `s ≥ 0`: a batch's second search orders by
     /// `g + ĉ + (1 + s/q)·ĥ` (`None`: 0 for BIT*, 10 for ABIT*).
     pub inflation_scaling: Option<f64>,
-    /// ABIT*'s truncation scaling `t ≥ 0`: a batch's search stops once
-    /// `(1 + t/q)·(g + ĉ + ĥ)` of every queued edge reaches the solution cost (`None`: 0 for
-    /// BIT*, 5 for ABIT*).
+    /// ABIT*'s truncation scaling `t ≥ 0`: a batch's search stops at the first edge it takes
+    /// whose `(1 + t/q)·(g + ĉ + ĥ)` reaches the solution cost, or once every queued edge's does
+    /// (`None`: 0 for BIT*, 5 for ABIT*).
     pub truncation_scaling: Option<f64>,
     /// BIT*-family rewirings: a forward expansion queues edges to vertices already in the tree
     /// on every expansion (`true`), or only on a vertex's first expansion that meets any
@@ -179,6 +188,8 @@ impl Default for Parameters {
             rrt_balance: true,
             rrt_halton: false,
             simplify_solutions: false,
+            aorrtc_simplify: true,
+            aorrtc_resamples: 1000,
             goal_bias: 0.05,
             rrt_rewire_factor: 1.2,
             initial_inflation: None,
@@ -409,6 +420,8 @@ impl Parameters {
             ("rrt_balance", self.rrt_balance.to_string()),
             ("rrt_halton", self.rrt_halton.to_string()),
             ("simplify_solutions", self.simplify_solutions.to_string()),
+            ("aorrtc_simplify", self.aorrtc_simplify.to_string()),
+            ("aorrtc_resamples", self.aorrtc_resamples.to_string()),
             ("goal_bias", self.goal_bias.to_string()),
             ("rrt_rewire_factor", self.rrt_rewire_factor.to_string()),
             (

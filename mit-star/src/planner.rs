@@ -83,6 +83,19 @@ pub trait Planner {
     fn snapshot(&self) -> Option<Snapshot> {
         None
     }
+
+    /// Offers the planner a solution found outside its search — a shortened copy of its own
+    /// path ([`Simplifying`](crate::Simplifying)), or another planner's — between two `solve`
+    /// calls. A planner that can use it checks it as its own edges (every edge at full
+    /// resolution, then certified when the problem asks; the path must join its start to one of
+    /// its goals) and, if it is valid and cheaper than its best, makes it its best solution, so
+    /// its cost bound, informed set and pruning follow from then on; it then returns `true`.
+    /// The default ignores the offer and returns `false` (planners that return their first
+    /// solution, and wrappers that cannot pass it on).
+    fn offer_solution(&mut self, solution: &Solution) -> bool {
+        let _ = solution;
+        false
+    }
 }
 
 /// A boxed planner is a planner (so wrappers such as [`Simplifying`](crate::Simplifying) take
@@ -119,6 +132,58 @@ impl<P: Planner + ?Sized> Planner for Box<P> {
     fn snapshot(&self) -> Option<Snapshot> {
         (**self).snapshot()
     }
+
+    fn offer_solution(&mut self, solution: &Solution) -> bool {
+        (**self).offer_solution(solution)
+    }
+}
+
+/// The length of `path` in `space` (the sum of its edges).
+pub(crate) fn path_cost<S: StateSpace>(space: &S, path: &States) -> f64 {
+    path.iter()
+        .zip(path.iter().skip(1))
+        .map(|(a, b)| space.distance(a, b))
+        .sum()
+}
+
+/// Whether `path` joins `start` to one of `goals` with every state finite and of the space's
+/// dimension, and every edge valid at full resolution on `checker`'s grid and, when
+/// `certification > 1`, certified: the test an offered solution passes before a planner takes
+/// it ([`Planner::offer_solution`]). Runs to the end (no stop): an offer is bounded work.
+pub(crate) fn offered_path_is_valid<S, V, E>(
+    (space, validity, checker): (&S, &V, &mut E),
+    certification: u32,
+    (start, goals): (&[f64], &[Vec<f64>]),
+    path: &States,
+) -> bool
+where
+    S: StateSpace,
+    V: StateValidity,
+    E: validity::EdgeChecker<S, V>,
+{
+    let n = space.dimension();
+    if path.len() < 2 || path.dimension() != n || path[0] != *start {
+        return false;
+    }
+    let end = &path[path.len() - 1];
+    if !goals.iter().any(|g| g.as_slice() == end) {
+        return false;
+    }
+    if path
+        .iter()
+        .any(|x| space.check_state(x).is_err() || !validity.is_valid(x))
+    {
+        return false;
+    }
+    path.iter().zip(path.iter().skip(1)).all(|(a, b)| {
+        let mut progress = validity::EdgeProgress::UNTESTED;
+        let never = &spaces::Never;
+        checker.check_full(space, validity, a, b, &mut progress, never)
+            == validity::EdgeStatus::Valid
+            && (certification <= 1
+                || checker.certify(space, validity, a, b, certification, never)
+                    == validity::EdgeStatus::Valid)
+    })
 }
 
 /// Checks a query against a space and a validity checker.

@@ -99,6 +99,9 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
         Configuration::RrtConnect => {
             "bidirectional trees, extensions of at most `range`, first solution (parameters: range, resolution, seed, certification)"
         }
+        Configuration::Aorrtc => {
+            "RRT-Connect's first solution, then cost-bounded bidirectional searches with informed samples, each path simplified (parameters: range, aorrtc_simplify, aorrtc_resamples)"
+        }
         Configuration::BitStar => {
             "informed sampler, no reverse search: edges in order of g + ĉ + ĥ, full checks (parameters: batch_size, rewire_factor, pruning)"
         }

@@ -13,10 +13,12 @@ macro_rules! say {
 }
 
 mod bench;
+mod check_path;
 mod compare;
 mod listings;
 mod merge;
 mod plan;
+mod problem_args;
 
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -25,6 +27,7 @@ use std::sync::atomic::AtomicBool;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use check_path::CheckPathArgs;
 pub use compare::CompareArgs;
 pub use listings::{ExperimentsArgs, ProblemsArgs};
 pub use merge::MergeArgs;
@@ -52,6 +55,10 @@ pub struct Cli {
 pub enum Command {
     /// Run one planner on one problem; print the result and draw 2-D runs and arm plans.
     Plan(PlanArgs),
+    /// Check a path from a file (another planner's) against a problem by the rules our
+    /// planners' paths pass: the problem's grid with its certification, and the independent
+    /// check (exact for box worlds, continuous for arms).
+    CheckPath(CheckPathArgs),
     /// Run an experiment (file, shipped name, or flags) and write its results folder.
     Bench(BenchArgs),
     /// Combine the results folders of an experiment's shards (`bench --shard K/N`) into one.
@@ -116,6 +123,7 @@ impl Cli {
     pub fn run(&self, interrupt: Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
         match &self.command {
             Command::Plan(args) => args.run(&interrupt),
+            Command::CheckPath(args) => args.run(),
             Command::Bench(args) => args.run(interrupt),
             Command::Merge(args) => args.run(),
             Command::Compare(args) => args.run(),

@@ -6,12 +6,12 @@ use std::time::Instant;
 
 use clap::Args;
 
-use crate::budget::{budget_duration, deadline_after, short_number};
+use crate::budget::{budget_duration, deadline_after};
 use crate::commands::CommandOutcome;
+use crate::commands::problem_args::ProblemArgs;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
 use crate::definition::problem_instance::ProblemInstance;
-use crate::definition::problem_source::ProblemSource;
 use crate::definition::problem_source::sanitise;
 use crate::error::HarnessError;
 use crate::execution::interrupt::ReadingInputs;
@@ -25,22 +25,12 @@ use crate::pictures::run_picture::RunPicture;
 #[derive(Debug, Args)]
 pub struct PlanArgs {
     /// Planner: mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, mit-star-sr, ait-star,
-    /// bit-star, abit-star, informed-rrt-star, rrt-connect (`mit-star planners` lists them).
+    /// bit-star, abit-star, informed-rrt-star, rrt-connect, aorrtc (`mit-star planners` lists them).
     #[arg(long, short, default_value = "mit-star")]
     pub planner: String,
-    /// Built-in problem name (see `mit-star problems`) or a problem file path.
-    #[arg(long, required_unless_present = "problem_file")]
-    pub problem: Option<String>,
-    /// A TOML problem file.
-    #[arg(long, conflicts_with = "problem")]
-    pub problem_file: Option<PathBuf>,
-    /// Dimension of a built-in problem (default 2).
-    #[arg(long)]
-    pub dim: Option<usize>,
-    /// Layout seed of seeded problems (random-rectangles, default 0), or the problem index
-    /// in a MotionBenchMaker folder (`--problem mbm:PATH`, default its first problem).
-    #[arg(long)]
-    pub instance: Option<u64>,
+    /// The problem.
+    #[command(flatten)]
+    pub problem: ProblemArgs,
     /// Time budget in seconds (planner construction included).
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub time: f64,
@@ -50,15 +40,6 @@ pub struct PlanArgs {
     /// Parameter override, e.g. `--set batch_size=200` (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
-    /// Collision-check resolution (fraction of the maximum extent) instead of the problem's.
-    #[arg(long, allow_negative_numbers = true)]
-    pub resolution: Option<f64>,
-    /// Allow a check that can miss thin obstacles: a box world's step larger than its thinnest
-    /// obstacle or anti-obstacle, or an arm planned with certification off
-    /// (`--set certification=1`); refused otherwise, since edges could cross thin obstacles
-    /// between checked points. Without it, a problem file's `allow_coarse_step` stands.
-    #[arg(long)]
-    pub allow_coarse_step: bool,
     /// Folder for the picture of a 2-D run or an arm plan.
     #[arg(long, short, default_value = "results/plan")]
     pub output: PathBuf,
@@ -111,67 +92,11 @@ impl PlanArgs {
                 source,
             })?;
         }
-        let source = match (&self.problem, &self.problem_file) {
-            (_, Some(path)) => ProblemSource::file(path)?,
-            (Some(text), None) => ProblemSource::parse(text, None)?,
-            (None, None) => return Err(HarnessError::Usage("give --problem NAME|PATH".into())),
-        };
-        let dimension = match (source.fixed_dimension()?, self.dim) {
-            (Some(n), Some(d)) if n != d => {
-                return Err(HarnessError::Usage(format!(
-                    "the problem file is {n}-dimensional; --dim {d} does not apply"
-                )));
-            }
-            (Some(n), _) => n,
-            (None, d) => d.unwrap_or(2),
-        };
-        let instance_number = self
-            .instance
-            .unwrap_or_else(|| crate::commands::bench::first_instance(&source));
-        let mut problem = source.build(dimension, instance_number, self.resolution)?;
-        // The flag only ever allows: without it, the problem file's choice stands.
-        if self.allow_coarse_step {
-            problem = problem.allowing_coarse_step(true);
-        }
-        let label = source.label();
-        problem
-            .check_step()
-            .map_err(|source| HarnessError::Problem {
-                name: label,
-                dimension,
-                source,
-            })?;
-        let seeded = source.is_seeded();
-        let instance = ProblemInstance {
-            id: ProblemInstance::make_id(
-                &source.label(),
-                dimension,
-                seeded.then_some(instance_number),
-            ),
-            label: source.label(),
-            source,
-            dimension,
-            instance: instance_number,
-            budget: self.time,
-            problem,
-        };
+        let instance = self.problem.build(self.time)?;
         let arm = instance.problem.as_arm().cloned();
-        let picture = (dimension == 2 || arm.is_some()) && !self.no_picture;
+        let picture = (instance.dimension == 2 || arm.is_some()) && !self.no_picture;
         if picture {
             crate::writable_folder(&self.output)?;
-        }
-        if let Some(boxes) = instance.problem.as_boxes()
-            && boxes.step_is_coarse()
-        {
-            let (obstacle, anti) = boxes.thinnest_extents();
-            eprintln!(
-                "warning: the collision-check step {} is larger than the thinnest obstacle ({}) \
-                 or anti-obstacle ({}); edges may cross them between checked points (allowed by \
-                 --allow-coarse-step or the problem file)",
-                short_number(instance.problem.step()),
-                obstacle.map_or_else(|| "none".to_owned(), short_number),
-                anti.map_or_else(|| "none".to_owned(), short_number),
-            );
         }
         drop(reading);
         if interrupt.load(std::sync::atomic::Ordering::SeqCst) {

@@ -183,6 +183,29 @@ impl InstanceProblem {
         }
     }
 
+    /// `path` checked by [`mit_star::check_path`]: the problem's grid and certification.
+    ///
+    /// # Errors
+    /// As [`mit_star::check_path`].
+    pub fn check_path(
+        &self,
+        path: &[Vec<f64>],
+        tolerance: f64,
+    ) -> Result<mit_star::PathVerdict, BuildError> {
+        match self {
+            Self::Boxes(p) => mit_star::check_path(p, path, tolerance),
+            Self::Arm(p) => mit_star::check_path(&**p, path, tolerance),
+        }
+    }
+
+    /// [`mit_star::snap_ends`] for this problem.
+    pub fn snap_ends(&self, path: &mut [Vec<f64>], tolerance: f64) -> bool {
+        match self {
+            Self::Boxes(p) => mit_star::snap_ends(p, path, tolerance),
+            Self::Arm(p) => mit_star::snap_ends(&**p, path, tolerance),
+        }
+    }
+
     /// `false` for an arm problem whose start or goal is in collision (MotionBenchMaker has
     /// a few; experiments skip them). Box worlds refuse such ends when they are built.
     pub fn ends_are_valid(&self) -> bool {

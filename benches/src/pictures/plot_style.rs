@@ -66,6 +66,7 @@ fn configuration_colour(c: Configuration) -> RGBColor {
         Configuration::MitStarSc => RGBColor(255, 127, 14),
         Configuration::MitStarSr => RGBColor(23, 100, 60),
         Configuration::RrtConnect => RGBColor(23, 190, 207),
+        Configuration::Aorrtc => RGBColor(0, 90, 110),
         Configuration::BitStar => RGBColor(140, 86, 75),
         Configuration::AbitStar => RGBColor(227, 119, 194),
         Configuration::AitStar => RGBColor(188, 189, 34),

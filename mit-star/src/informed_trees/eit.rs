@@ -97,6 +97,9 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) goal_ids: Vec<u32>,
     pub(crate) best_cost: f64,
     pub(crate) best_goal: u32,
+    /// A solution offered from outside ([`Planner::offer_solution`]), the best one while
+    /// `best_goal` is `NONE`.
+    external: Option<Solution>,
     pub(crate) lower_bound: f64,
     pub(crate) last_prune_cost: f64,
     /// The informed set is empty: no better solution exists.
@@ -191,6 +194,7 @@ where
             goal_ids: Vec::new(),
             best_cost: f64::INFINITY,
             best_goal: NONE,
+            external: None,
             lower_bound: 0.0,
             last_prune_cost: f64::INFINITY,
             exhausted: false,
@@ -250,7 +254,8 @@ where
         self.step
     }
 
-    /// The vertices of the best solution, start first (empty without one).
+    /// The vertices of the best solution, start first (empty without one, or when the best
+    /// solution is one offered from outside, [`Planner::offer_solution`]).
     pub fn solution_vertices(&self) -> Vec<VertexId> {
         let mut path = Vec::new();
         if self.best_goal == NONE {
@@ -392,7 +397,7 @@ where
     fn extract_solution(&self) -> Result<Option<Solution>, PlannerError> {
         let vertices = self.solution_vertices();
         if vertices.is_empty() {
-            return Ok(None);
+            return Ok(self.external.clone());
         }
         let mut path = States::with_capacity(self.space.dimension(), vertices.len());
         for (i, v) in vertices.iter().enumerate() {
@@ -473,6 +478,7 @@ where
         self.goal_ids.clear();
         self.best_cost = f64::INFINITY;
         self.best_goal = NONE;
+        self.external = None;
         self.last_prune_cost = f64::INFINITY;
         self.exhausted = false;
         self.restart_pending = false;
@@ -489,6 +495,30 @@ where
 
     fn best_cost(&self) -> f64 {
         self.best_cost
+    }
+
+    fn offer_solution(&mut self, solution: &Solution) -> bool {
+        if solution.cost >= self.best_cost {
+            return false;
+        }
+        let certification = self.parameters.certification.unwrap_or(1);
+        let parts = (&self.space, &self.validity, &mut self.checker);
+        let query = (self.start.as_slice(), self.goals.as_slice());
+        if !crate::planner::offered_path_is_valid(parts, certification, query, &solution.path) {
+            return false;
+        }
+        let cost = crate::planner::path_cost(&self.space, &solution.path);
+        if cost >= self.best_cost {
+            return false;
+        }
+        self.best_cost = cost;
+        self.best_goal = NONE;
+        self.external = Some(Solution {
+            path: solution.path.clone(),
+            cost,
+        });
+        self.trace.push(self.elapsed.as_secs_f64(), cost);
+        true
     }
 
     fn trace(&self) -> &Trace {

@@ -4,6 +4,8 @@
 //!
 //! - [`RrtConnect`] (`rrt_connect.rs`): Kuffner and LaValle's bidirectional RRT, and
 //!   [`default_range`], its extension range.
+//! - [`Aorrtc`] (`aorrtc/`): Wilson et al.'s AORRTC — RRT-Connect's first solution, then
+//!   repeated cost-bounded searches (`search.rs`) under the best cost, each path simplified.
 //! - [`InformedRrtStar`] (`informed_rrt_star/`): Gammell, Srinivasa and Barfoot's Informed
 //!   RRT* — the planner (`mod.rs`), its resumable iteration (`iteration.rs`) and its tests.
 //! - `rrt_core.rs`: [`RrtCore`](rrt_core::RrtCore), what both planners hold besides their
@@ -17,11 +19,13 @@
 //! trace, counters, [`Snapshot`](crate::Snapshot) and its [`VertexKind`](crate::VertexKind)).
 //! Nothing of `informed_trees` or `graph`'s search structures.
 
+mod aorrtc;
 mod cost_tree;
 mod informed_rrt_star;
 mod rrt_connect;
 mod rrt_core;
 mod tree;
 
+pub use aorrtc::Aorrtc;
 pub use informed_rrt_star::InformedRrtStar;
 pub use rrt_connect::{RrtConnect, default_range};

@@ -48,8 +48,9 @@ use crate::{
 /// ```
 #[derive(Debug, Clone)]
 pub struct RrtConnect<S, V, E = DenseChecker> {
-    /// The query, parts, parameters, solution and records.
-    core: RrtCore<S, V, UniformSampler, E>,
+    /// The query, parts, parameters, solution and records (AORRTC's too: it starts with this
+    /// planner and keeps its parts).
+    pub(super) core: RrtCore<S, V, UniformSampler, E>,
     /// The start tree (0) and the goal tree (1).
     trees: [Tree; 2],
     /// The tree that grows towards the next sample.
@@ -99,7 +100,7 @@ enum Phase {
 /// A state's dynamic-domain radius after an extension from it succeeded (`valid`) or failed:
 /// a first failure sets it to [`DOMAIN_RADIUS`] ranges; later outcomes scale it by
 /// `1 ± DOMAIN_RATE`, never below one range (Yershova et al., 2005, with VAMP's constants).
-fn dynamic_radius(radius: f64, valid: bool, range: f64) -> f64 {
+pub(super) fn dynamic_radius(radius: f64, valid: bool, range: f64) -> f64 {
     match (radius.is_finite(), valid) {
         (false, true) => radius,
         (false, false) => DOMAIN_RADIUS * range,
@@ -174,7 +175,7 @@ where
     }
 
     /// Plants the roots once.
-    fn setup(&mut self) {
+    pub(super) fn setup(&mut self) {
         if self.trees[0].parents.is_empty() {
             self.trees[0].add(&self.core.start, ROOT);
             for goal in &self.core.goals {
@@ -295,7 +296,7 @@ where
     /// One iteration: grow a tree one step towards a uniform sample, then let the other tree
     /// step towards the new state until it reaches it (a solution) or is blocked. Work the
     /// stop interrupts (a motion check, the connect phase) resumes at the next call.
-    fn iterate(&mut self, stop: &SolveStop<'_>) {
+    pub(super) fn iterate(&mut self, stop: &SolveStop<'_>) {
         self.core.counters.iterations += 1;
         if self.connection.is_some() {
             self.certify_connection(stop);

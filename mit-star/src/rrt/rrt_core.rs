@@ -194,6 +194,31 @@ where
         }
     }
 
+    /// Takes `solution`, offered from outside ([`Planner::offer_solution`](crate::Planner)), as
+    /// the best one if it is valid (checked and certified as the planner's edges) and cheaper,
+    /// with a trace point at the planning time so far.
+    pub(crate) fn offer(&mut self, solution: &Solution) -> bool {
+        if solution.cost >= self.best_cost() {
+            return false;
+        }
+        let certification = self.certification();
+        let parts = (&self.space, &self.validity, &mut self.checker);
+        let query = (self.start.as_slice(), self.goals.as_slice());
+        if !crate::planner::offered_path_is_valid(parts, certification, query, &solution.path) {
+            return false;
+        }
+        let cost = crate::planner::path_cost(&self.space, &solution.path);
+        if cost >= self.best_cost() {
+            return false;
+        }
+        self.trace.push(self.elapsed.as_secs_f64(), cost);
+        self.solution = Some(Solution {
+            path: solution.path.clone(),
+            cost,
+        });
+        true
+    }
+
     /// Cost of the best solution (`∞` if none).
     pub(crate) fn best_cost(&self) -> f64 {
         self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)

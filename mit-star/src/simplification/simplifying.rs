@@ -17,8 +17,10 @@ use crate::{
 ///
 /// The inner planner runs until the caller's termination fires or it improves its own
 /// solution; the simplification then runs under the same termination. Every edge the
-/// simplifier adds is checked and certified as the planner's are. The inner planner does not
-/// see the shorter cost: its informed set and pruning follow its own solutions. Time limits
+/// simplifier adds is checked and certified as the planner's are. The shorter path is then
+/// offered to the inner planner ([`Planner::offer_solution`]): the asymptotically optimal
+/// planners of the crate take it as their best solution, so their cost bound, informed set and
+/// pruning follow the shorter cost; others ignore it. Time limits
 /// and cost thresholds apply to the whole call; an [`IterationLimit`](crate::IterationLimit)
 /// counts the iterations of each stretch of planning between two solutions.
 ///
@@ -37,6 +39,8 @@ pub struct Simplifying<P, S, V> {
     elapsed: Duration,
     /// Simplifications run.
     runs: u64,
+    /// Simplified paths the inner planner took as its best solution.
+    taken: u64,
 }
 
 impl<P, S, V> Simplifying<P, S, V>
@@ -63,6 +67,7 @@ where
             trace: Trace::default(),
             elapsed: Duration::ZERO,
             runs: 0,
+            taken: 0,
         }
     }
 
@@ -89,8 +94,14 @@ where
             for state in &simplified.path {
                 states.push(state);
             }
-            let cost = simplified.cost;
-            self.keep(Solution { path: states, cost }, started);
+            let shorter = Solution {
+                path: states,
+                cost: simplified.cost,
+            };
+            if shorter.cost < solution.cost && self.inner.offer_solution(&shorter) {
+                self.taken += 1;
+            }
+            self.keep(shorter, started);
         }
     }
 
@@ -174,6 +185,7 @@ where
         self.trace.clear();
         self.elapsed = Duration::ZERO;
         self.runs = 0;
+        self.taken = 0;
     }
 
     fn best_cost(&self) -> f64 {
@@ -191,10 +203,23 @@ where
     fn settings(&self) -> Vec<(String, String)> {
         let mut settings = self.inner.settings();
         settings.push(("simplified_solutions".into(), self.runs.to_string()));
+        settings.push(("simplified_taken_by_planner".into(), self.taken.to_string()));
         settings
     }
 
     fn snapshot(&self) -> Option<Snapshot> {
         self.inner.snapshot()
+    }
+
+    fn offer_solution(&mut self, solution: &Solution) -> bool {
+        if !self.inner.offer_solution(solution) {
+            return false;
+        }
+        let time = self.elapsed.as_secs_f64();
+        if solution.cost < self.best_cost() {
+            self.trace.push(time, solution.cost);
+            self.solution = Some(solution.clone());
+        }
+        true
     }
 }

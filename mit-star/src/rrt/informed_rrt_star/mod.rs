@@ -201,6 +201,10 @@ where
         self.peak_vertices = 1;
     }
 
+    fn offer_solution(&mut self, solution: &crate::Solution) -> bool {
+        self.core.offer(solution)
+    }
+
     fn best_cost(&self) -> f64 {
         self.core.best_cost()
     }

@@ -1,0 +1,162 @@
+// VAMP's AORRTC over time on the Panda MotionBenchMaker problems (exported by the shared
+// export_problems.py), for mit-star's anytime comparison (benches/peers/vamp/README.md).
+//
+// VAMP's AORRTC has no time limit, only an iteration limit, and is deterministic for a given
+// random sequence (Halton, reset before every run). So each problem is solved again and again
+// with a growing iteration limit K (1, 2, 5, 10, 20, 50, …) until a run takes longer than the
+// budget. anytime_table.py takes as the cost at time T that of the run with the largest K that
+// ended within T, and as the time to the first solution that of the smallest K that solved.
+// (Runs with a larger K do not exactly repeat those with a smaller one: their costs are not
+// monotone in K.) Default AORRTC settings (RRT-Connect range 1, simplification of every
+// solution inside the planner), as VAMP's scripts use.
+//
+// Usage: vamp_anytime PROBLEMS.txt [PER_SCENE=20] [BUDGET_S=1] [PATHS_FILE]
+// Output (stdout), one line per run: scene,index,limit,time_us,cost,solved
+// With PATHS_FILE: the final path of the last run of each problem, as lines
+// `scene index` then one configuration per line, then an empty line.
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <vamp/collision/factory.hh>
+#include <vamp/planning/aorrtc.hh>
+#include <vamp/random/halton.hh>
+#include <vamp/robots/panda.hh>
+
+using Robot = vamp::robots::Panda;
+static constexpr std::size_t rake = vamp::FloatVectorWidth;
+using EnvIn = vamp::collision::Environment<float>;
+using EnvVec = vamp::collision::Environment<vamp::FloatVector<rake>>;
+using Planner = vamp::planning::AORRTC<Robot, rake, Robot::resolution>;
+namespace vf = vamp::collision::factory;
+
+struct Problem
+{
+    std::string scene;
+    int index = 0;
+    bool valid = false;
+    Robot::ConfigurationArray start{};
+    std::vector<Robot::ConfigurationArray> goals;
+    EnvIn env;
+};
+
+static std::array<float, 3> three(std::istringstream &s)
+{
+    std::array<float, 3> a{};
+    s >> a[0] >> a[1] >> a[2];
+    return a;
+}
+
+static Robot::ConfigurationArray configuration(std::istringstream &s)
+{
+    Robot::ConfigurationArray a{};
+    for (auto &x : a) s >> x;
+    return a;
+}
+
+static std::vector<Problem> read(const char *file)
+{
+    std::ifstream in(file);
+    std::vector<Problem> all;
+    std::string line;
+    while (std::getline(in, line))
+    {
+        std::istringstream ss(line);
+        std::string tag;
+        ss >> tag;
+        if (tag == "P")
+        {
+            all.emplace_back();
+            int valid, goals;
+            ss >> all.back().scene >> all.back().index >> valid >> goals;
+            all.back().valid = valid;
+            continue;
+        }
+        if (all.empty()) continue;
+        auto &p = all.back();
+        if (tag == "S") p.start = configuration(ss);
+        else if (tag == "G") p.goals.push_back(configuration(ss));
+        else if (tag == "sphere")
+        {
+            auto c = three(ss);
+            float r;
+            ss >> r;
+            p.env.spheres.emplace_back(vf::sphere::array(c, r));
+        }
+        else if (tag == "capsule")
+        {
+            auto c = three(ss), e = three(ss);
+            float r, l;
+            ss >> r >> l;
+            auto shape = vf::cylinder::center::array(c, e, r, l);
+            if (shape.xv == 0. and shape.yv == 0.) p.env.z_aligned_capsules.emplace_back(shape);
+            else p.env.capsules.emplace_back(shape);
+        }
+        else if (tag == "cuboid")
+        {
+            auto c = three(ss), e = three(ss), h = three(ss);
+            auto shape = vf::cuboid::array(c, e, h);
+            if (shape.axis_3_z == 1.) p.env.z_aligned_cuboids.emplace_back(shape);
+            else p.env.cuboids.emplace_back(shape);
+        }
+        p.env.sort();
+    }
+    return all;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2)
+    {
+        std::cerr << "usage: vamp_anytime PROBLEMS.txt [PER_SCENE] [BUDGET_S] [PATHS_FILE]\n";
+        return 2;
+    }
+    const int per_scene = argc > 2 ? std::stoi(argv[2]) : 20;
+    const double budget_us = (argc > 3 ? std::stod(argv[3]) : 1.0) * 1e6;
+    std::ofstream paths;
+    if (argc > 4) paths.open(argv[4]);
+    std::map<std::string, int> taken;
+    auto rng = std::make_shared<vamp::rng::Halton<Robot>>();
+    std::cout << "scene,index,limit,time_us,cost,solved\n";
+    for (const auto &p : read(argv[1]))
+    {
+        if (not p.valid or taken[p.scene] >= per_scene) continue;
+        ++taken[p.scene];
+        EnvVec env(p.env);
+        std::vector<Robot::Configuration> goals(p.goals.begin(), p.goals.end());
+        vamp::planning::PlanningResult<Robot> last;
+        // 1, 2, 5, 10, 20, 50, …
+        for (std::size_t limit = 1, step = 0;; limit = (step % 3 == 1) ? limit * 5 / 2 : limit * 2, ++step)
+        {
+            vamp::planning::AORRTCSettings settings;
+            settings.rrtc.range = 1.0;
+            settings.max_iterations = limit;
+            rng->reset();
+            const auto started = std::chrono::steady_clock::now();
+            auto result = Planner::solve(Robot::Configuration(p.start), goals, env, settings, rng);
+            const double us =
+                std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
+            const bool solved = not result.path.empty();
+            std::cout << p.scene << "," << p.index << "," << limit << "," << us << ","
+                      << (solved ? result.path.cost() : -1.0) << "," << solved << "\n";
+            if (solved) last = result;
+            if (us > budget_us or limit > 50000000) break;
+        }
+        if (paths.is_open() and not last.path.empty())
+        {
+            paths << p.scene << " " << p.index << "\n";
+            for (const auto &c : last.path)
+            {
+                const auto a = c.to_array();
+                for (auto i = 0U; i < Robot::dimension; ++i) paths << (i ? " " : "") << a[i];
+                paths << "\n";
+            }
+            paths << "\n";
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,110 @@
+use super::*;
+use crate::{FirstSolution, IterationLimit, Parameters, TerminationExt, TimeLimit};
+
+fn walls() -> problems::Problem {
+    problems::DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-4)
+        .unwrap()
+}
+
+fn assert_valid(problem: &problems::Problem, path: &States) {
+    assert_eq!(&path[0], problem.start());
+    assert_eq!(&path[path.len() - 1], &problem.goals()[0][..]);
+    for (a, b) in path.iter().zip(path.iter().skip(1)) {
+        assert!(
+            problem.world().segment_verdict(a, b).is_valid(),
+            "{a:?} → {b:?}"
+        );
+    }
+}
+
+#[test]
+fn improves_on_its_first_solution_with_valid_paths_only() {
+    let problem = walls();
+    let parameters = Parameters {
+        seed: 2,
+        ..Parameters::default()
+    };
+    let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
+    let first = planner
+        .solve(&FirstSolution.or(TimeLimit::seconds(5.0)))
+        .unwrap();
+    assert_valid(&problem, &first.solution().unwrap().path);
+    let later = planner.solve(&TimeLimit::seconds(0.3)).unwrap();
+    assert_valid(&problem, &later.solution().unwrap().path);
+    assert!(
+        later.cost() < first.cost(),
+        "{} vs {}",
+        later.cost(),
+        first.cost()
+    );
+    let costs: Vec<f64> = planner.trace().points().iter().map(|p| p.cost).collect();
+    assert!(costs.windows(2).all(|w| w[1] < w[0]), "{costs:?}");
+    // Searches ran, each bounded by the best cost when it started.
+    let settings = planner.settings();
+    let searches = settings.iter().find(|(k, _)| k == "searches").unwrap();
+    assert!(searches.1.parse::<u64>().unwrap() > 1, "{settings:?}");
+}
+
+#[test]
+fn converges_toward_the_optimum_without_obstacles_and_stops_at_it() {
+    let problem = problems::ObstacleFree::new(4).build().unwrap();
+    let mut planner = Aorrtc::for_problem(&problem, &Parameters::default()).unwrap();
+    let started = std::time::Instant::now();
+    let outcome = planner.solve(&TimeLimit::seconds(5.0)).unwrap();
+    // RRT-Connect joins the two roots in steps; the simplifier then takes the straight line,
+    // which no search can beat: the planner returns before its time is up.
+    assert!((outcome.cost() - problem.straight_line_cost()).abs() < 1e-9);
+    assert!(started.elapsed().as_secs_f64() < 4.0);
+}
+
+#[test]
+fn without_simplification_the_searches_alone_improve() {
+    let problem = walls();
+    let parameters = Parameters {
+        seed: 7,
+        aorrtc_simplify: false,
+        ..Parameters::default()
+    };
+    let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
+    let outcome = planner.solve(&TimeLimit::seconds(0.3)).unwrap();
+    assert_valid(&problem, &outcome.solution().unwrap().path);
+    assert!(planner.trace().len() > 1, "{:?}", planner.trace());
+    let settings = planner.settings();
+    assert!(settings.contains(&("simplified_solutions".into(), "0".into())));
+}
+
+#[test]
+fn the_same_seed_gives_the_same_plan_after_clear_and_in_slices() {
+    let problem = walls();
+    let parameters = Parameters {
+        seed: 11,
+        ..Parameters::default()
+    };
+    let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
+    let whole = planner.solve(&IterationLimit::new(3000)).unwrap();
+    planner.clear();
+    assert_eq!(planner.best_cost(), f64::INFINITY);
+    assert_eq!(planner.solve(&IterationLimit::new(3000)).unwrap(), whole);
+    // Many short calls: each resumes where the last stopped, and every path is valid.
+    let mut sliced = Aorrtc::for_problem(&problem, &parameters).unwrap();
+    for _ in 0..300 {
+        if let Outcome::Solved(s) = sliced.solve(&IterationLimit::new(10)).unwrap() {
+            assert_valid(&problem, &s.path);
+        }
+    }
+    assert!(sliced.best_cost().is_finite());
+}
+
+#[test]
+fn bad_parameters_are_typed_errors() {
+    let problem = walls();
+    let parameters = Parameters {
+        range: Some(-1.0),
+        ..Parameters::default()
+    };
+    let error = Aorrtc::for_problem(&problem, &parameters).unwrap_err();
+    assert!(error.to_string().contains("range"), "{error}");
+}

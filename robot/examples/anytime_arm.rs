@@ -1,0 +1,140 @@
+//! `anytime_arm`: how fast planners find a first path on the Panda and how short their paths
+//! get over time — our side of the anytime comparison with VAMP's planners.
+//!
+//! ```text
+//! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
+//! cargo run --release -p robot --example anytime_arm -- target 20 aorrtc,mit-star 1.0
+//! ```
+//!
+//! Runs each named configuration once (seed = the problem's index, one thread) on the first
+//! `N` problems of each of the five MotionBenchMaker scenes for `SECONDS`, and prints per
+//! scene and planner: problems solved, the median time to the first solution, the median cost
+//! (joint-space path length) of the best path at 10 ms, 100 ms and 1 s (a run without a path by
+//! then counts as infinitely long), the median straight-line lower bound, and how many final
+//! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
+//! (`simplify_solutions=true`, `aorrtc_simplify=false`, …); `csv=FILE` also writes one line per
+//! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
+//! `benches/peers/vamp/anytime_table.py`.
+
+use std::io::Write;
+
+use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
+use problems::PlanningProblem;
+use robot::{AuditVerdict, MotionAudit};
+use spaces::StateSpace;
+
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::{SCENES, median, problems};
+
+/// The times at which the best cost is read, in seconds.
+const MOMENTS: [f64; 3] = [0.01, 0.1, 1.0];
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let folder = args.next().unwrap_or_else(|| "target".into());
+    let count: usize = args
+        .next()
+        .map_or(20, |a| a.parse().expect("a problem count"));
+    let names = args.next().unwrap_or_else(|| "aorrtc,mit-star".into());
+    let seconds: f64 = args.next().map_or(1.0, |a| a.parse().expect("seconds"));
+    let mut base = Parameters::default();
+    let mut csv = None;
+    for setting in args {
+        let (key, value) = setting.split_once('=').expect("key=value");
+        if key == "csv" {
+            let mut file = std::fs::File::create(value).expect("a writable CSV file");
+            writeln!(
+                file,
+                "scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s"
+            )
+            .unwrap();
+            csv = Some(file);
+            continue;
+        }
+        let on = value.parse::<bool>().expect("true or false");
+        match key {
+            "simplify_solutions" => base.simplify_solutions = on,
+            "aorrtc_simplify" => base.aorrtc_simplify = on,
+            "rrt_dynamic_domain" => base.rrt_dynamic_domain = on,
+            other => panic!("unknown switch {other}"),
+        }
+    }
+    let configurations: Vec<Configuration> = names
+        .split(',')
+        .map(|n| n.parse().expect("a planner configuration"))
+        .collect();
+    println!(
+        "| scene | planner | solved | median t_first (ms) | cost at 10 ms | at 100 ms | at 1 s | straight line | failed audits |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    let mut pooled = vec![Vec::new(); configurations.len() * MOMENTS.len()];
+    for scene in SCENES {
+        let loaded = problems(&folder, scene, count);
+        for (p, &configuration) in configurations.iter().enumerate() {
+            let (mut first, mut line) = (Vec::new(), Vec::new());
+            let mut at = vec![Vec::new(); MOMENTS.len()];
+            let (mut solved, mut failed) = (0, 0);
+            for (index, problem) in &loaded {
+                let parameters = Parameters {
+                    seed: *index as u64,
+                    range: matches!(
+                        configuration,
+                        Configuration::RrtConnect | Configuration::Aorrtc
+                    )
+                    .then_some(1.0),
+                    ..base.clone()
+                };
+                let mut planner =
+                    build_planner(configuration, problem, &parameters).expect("builds");
+                let outcome = planner.solve(&TimeLimit::seconds(seconds)).expect("plans");
+                let trace = planner.trace();
+                first.push(trace.initial().map_or(f64::INFINITY, |p| p.time * 1e3));
+                if let Some(file) = csv.as_mut() {
+                    let costs = MOMENTS.map(|m| trace.cost_at(m).to_string()).join(",");
+                    let name = scene.trim_end_matches("_panda");
+                    let planner = configuration.name();
+                    writeln!(
+                        file,
+                        "{name},{index},{planner},{},{costs}",
+                        first[first.len() - 1]
+                    )
+                    .expect("the CSV file takes a line");
+                }
+                for (m, &moment) in MOMENTS.iter().enumerate() {
+                    at[m].push(trace.cost_at(moment));
+                    pooled[p * MOMENTS.len() + m].push(trace.cost_at(moment));
+                }
+                let space = problem.space();
+                line.push(space.distance(problem.start(), &problem.goals()[0]));
+                let Some(solution) = outcome.solution() else {
+                    continue;
+                };
+                solved += 1;
+                let audit = MotionAudit::new(problem.robot(), problem.scene());
+                let path = &solution.path;
+                if path.iter().zip(path.iter().skip(1)).any(|(a, b)| {
+                    !matches!(audit.audit(a, b, 1_000_000), AuditVerdict::Clear { .. })
+                }) {
+                    failed += 1;
+                }
+            }
+            let [a, b, c] = [0, 1, 2].map(|m| median(&mut at[m]));
+            println!(
+                "| {} | {} | {solved}/{} | {:.2} | {a:.2} | {b:.2} | {c:.2} | {:.2} | {failed} |",
+                scene.trim_end_matches("_panda"),
+                configuration.label(),
+                loaded.len(),
+                median(&mut first),
+                median(&mut line),
+            );
+        }
+    }
+    for (p, configuration) in configurations.iter().enumerate() {
+        let [a, b, c] = [0, 1, 2].map(|m| median(&mut pooled[p * MOMENTS.len() + m]));
+        println!(
+            "| all | {} | | | {a:.2} | {b:.2} | {c:.2} | | |",
+            configuration.label()
+        );
+    }
+}
