@@ -24,6 +24,16 @@ pub enum ArmError {
         /// What is wrong with it.
         source: spaces::SpaceError,
     },
+    /// A start or goal in collision ([`ArmProblem::check_ends`](crate::ArmProblem::check_ends)).
+    #[error("problem `{problem}`: the {what} configuration collides with {with}")]
+    EndInCollision {
+        /// The problem's name.
+        problem: String,
+        /// `"start"` or `"goal"`.
+        what: &'static str,
+        /// What it collides with: `itself: links a/b, c/d`, or the scene.
+        with: String,
+    },
     /// A collision-check resolution outside `(0, 1)`.
     #[error(
         "collision-check resolution {0} is not in (0, 1): it is a fraction of the maximum extent (the paper uses 5e-3)"

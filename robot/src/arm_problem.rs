@@ -27,11 +27,6 @@ pub const CHECKS_PER_UNIT: f64 = 16.0;
 /// path. (The factor's value matters only for checkers that certify on a finer grid.)
 pub const CERTIFICATION: u32 = 4;
 
-/// The Panda sphere model shipped with the crate (VAMP's, 59 spheres).
-const PANDA_URDF: &str = include_str!("../data/panda/panda_spherized.urdf");
-/// The Panda's MoveIt semantic description (its disabled self-collision pairs).
-const PANDA_SRDF: &str = include_str!("../data/panda/panda.srdf");
-
 /// A planning problem for a robot arm: plan the arm's joints from `start` to `goal` among the
 /// scene's obstacles without self-collision.
 ///
@@ -118,6 +113,45 @@ impl ArmProblem {
         Self::mbm(Self::panda()?, folder, index)
     }
 
+    /// How far outside a joint limit a MotionBenchMaker start or goal value may be and still be
+    /// taken as the limit ([`mbm`](Self::mbm)): `1e-5` (radians or metres).
+    pub const LIMIT_TOLERANCE: f64 = 1e-5;
+
+    /// The start and the goal are free, or which collision makes them invalid: the link
+    /// pairs in self-collision, else the scene.
+    ///
+    /// # Errors
+    /// [`ArmError::EndInCollision`] naming the end and what it collides with.
+    pub fn check_ends(&self) -> Result<(), ArmError> {
+        let ends =
+            std::iter::once(("start", &self.start)).chain(self.goals.iter().map(|g| ("goal", g)));
+        for (what, q) in ends {
+            if self.checker.is_valid(q) {
+                continue;
+            }
+            let names = |(a, b): (usize, usize)| {
+                let links = self.robot.links();
+                format!("{}/{}", links[a].name, links[b].name)
+            };
+            let pairs: Vec<String> = self
+                .robot
+                .colliding_link_pairs(q)
+                .into_iter()
+                .map(names)
+                .collect();
+            return Err(ArmError::EndInCollision {
+                problem: self.name.clone(),
+                what,
+                with: if pairs.is_empty() {
+                    "the scene (or outside the joint limits)".to_owned()
+                } else {
+                    format!("itself: links {}", pairs.join(", "))
+                },
+            });
+        }
+        Ok(())
+    }
+
     /// The certification factor arm problems ask planners for ([`CERTIFICATION`]).
     pub const CERTIFICATION: u32 = CERTIFICATION;
 
@@ -134,10 +168,13 @@ impl ArmProblem {
     /// # Errors
     /// None in practice (the files are compiled in and tested); typed for form's sake.
     pub fn panda() -> Result<RobotModel, ArmError> {
-        Ok(RobotModel::from_urdf_str(PANDA_URDF)?.with_srdf_str(PANDA_SRDF)?)
+        // The default shipped robot is the Panda (tested in `robots::shipped_robot`).
+        Ok(crate::ShippedRobot::default_robot().model(false)?)
     }
 
-    /// MotionBenchMaker problem `index` of `folder` for `robot` (SRDF applied).
+    /// MotionBenchMaker problem `index` of `folder` for `robot` (SRDF applied). Joint values
+    /// within [`LIMIT_TOLERANCE`](Self::LIMIT_TOLERANCE) outside a limit are moved onto it
+    /// (files round limits: Fetch's `±3.14159` against requests' `±π`).
     ///
     /// # Errors
     /// As [`panda_mbm`](Self::panda_mbm).
@@ -145,8 +182,11 @@ impl ArmProblem {
         let problem = MbmProblem::load(folder, index)?;
         let names = robot.joint_names();
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
-        let start = problem.start_for(&names)?;
-        let goal = problem.goal_for(&names)?;
+        let mut start = problem.start_for(&names)?;
+        let mut goal = problem.goal_for(&names)?;
+        for q in [&mut start, &mut goal] {
+            snap_to_limits(robot.joint_space(), q);
+        }
         let name = problem.name.clone();
         Self::new(name, robot, problem.scene, start, goal)
     }
@@ -251,5 +291,21 @@ impl PlanningProblem for ArmProblem {
 
     fn near_terminals(&self) -> f64 {
         Self::NEAR_TERMINALS
+    }
+}
+
+/// Moves values within [`ArmProblem::LIMIT_TOLERANCE`] outside a joint's limits onto them.
+fn snap_to_limits(space: &JointSpace, q: &mut [f64]) {
+    for (v, joint) in q.iter_mut().zip(space.joints()) {
+        if let spaces::JointKind::Revolute { lower, upper }
+        | spaces::JointKind::Prismatic { lower, upper } = joint.kind
+        {
+            let tolerance = ArmProblem::LIMIT_TOLERANCE;
+            if *v < lower && *v >= lower - tolerance {
+                *v = lower;
+            } else if *v > upper && *v <= upper + tolerance {
+                *v = upper;
+            }
+        }
     }
 }

@@ -31,6 +31,8 @@
 //! | [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] | an independent continuous check of a motion: conservative advancement in `f64` from parry distances and its own speed bound (the harness's re-check of returned arm paths) |
 //! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with its default check density and the certification its edges ask for |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
+//! | [`ShippedRobot`], [`RobotSource`], [`RobotSourceError`] | the shipped models (Panda, UR5, Fetch) and a robot named by name or folder |
+//! | [`ModelWarning`] | what a lenient model ignored: SRDF and allowed-collision entries naming links it lacks |
 
 #![forbid(unsafe_code)]
 
@@ -38,6 +40,7 @@ mod arm_error;
 mod arm_problem;
 mod checking;
 mod model;
+mod robots;
 mod scenes;
 
 pub use arm_error::ArmError;
@@ -46,6 +49,8 @@ pub use checking::{
     AUDIT_CONTACT, ArmChecker, AuditVerdict, CERTIFICATION_FLOOR, MotionAudit, ParryChecker,
 };
 pub use model::{
-    Kinematics, LeverArms, LinkFrame, LinkSphere, ModelError, Motion, RobotModel, rpy_matrix,
+    Kinematics, LeverArms, LinkFrame, LinkSphere, ModelError, ModelWarning, Motion, RobotModel,
+    rpy_matrix,
 };
+pub use robots::{RobotSource, RobotSourceError, ShippedRobot};
 pub use scenes::{MbmProblem, Obstacle, Scene, SceneError, Shape};

@@ -2,7 +2,7 @@
 //! by hand, and every malformed input as a typed error.
 
 use glam::{Affine3A, DAffine3, DVec3, Vec3A};
-use robot::{Kinematics, ModelError, RobotModel};
+use robot::{Kinematics, ModelError, ModelWarning, RobotModel};
 use spaces::StateSpace;
 
 const PANDA_URDF: &str = include_str!("../data/panda/panda_spherized.urdf");
@@ -112,9 +112,45 @@ fn srdf_pairs_and_allowed_collisions_remove_pairs_and_name_unknown_links() {
     assert_eq!(robot.self_collision_pairs().len(), 5);
     let robot = robot.allow_collisions([("tool", "slider")]).unwrap();
     assert_eq!(robot.self_collision_pairs().len(), 4);
-    let error = robot.allow_collisions([("tool", "gripper")]).unwrap_err();
+    // Strict: an unknown link is an error naming it.
+    let error = robot
+        .clone()
+        .strict(true)
+        .allow_collisions([("tool", "gripper")])
+        .unwrap_err();
     assert!(matches!(&error, ModelError::UnknownLink { link, .. } if link == "gripper"));
     assert!(error.to_string().contains("`gripper`"), "{error}");
+    // Lenient (the default): the entry is skipped and a warning names the link, once.
+    assert!(!robot.is_strict() && robot.warnings().is_empty());
+    let lenient = robot
+        .allow_collisions([("tool", "gripper"), ("gripper", "base"), ("arm", "tool")])
+        .unwrap();
+    assert_eq!(lenient.self_collision_pairs().len(), 3);
+    let [warning @ ModelWarning::UnknownLinks { links, entries, .. }] = lenient.warnings() else {
+        panic!("one warning: {:?}", lenient.warnings())
+    };
+    assert_eq!(
+        (links.as_slice(), *entries),
+        (&["gripper".to_owned()][..], 2)
+    );
+    let text = warning.to_string();
+    assert!(
+        text.contains("allowed-collision matrix")
+            && text.contains("2 entries")
+            && text.contains("gripper"),
+        "{text}"
+    );
+    // An SRDF naming unknown links: a warning when lenient, an error when strict.
+    let srdf = r#"<robot name="r"><disable_collisions link1="base" link2="camera"/>
+        <disable_collisions link1="sensor" link2="camera"/></robot>"#;
+    let model = RobotModel::from_urdf_str(TWO_LINK).unwrap();
+    let lenient = model.clone().with_srdf_str(srdf).unwrap();
+    assert!(
+        matches!(&lenient.warnings()[0], ModelWarning::UnknownLinks { links, .. } if links == &["camera", "sensor"])
+    );
+    assert_eq!(lenient.self_collision_pairs(), model.self_collision_pairs());
+    let error = model.strict(true).with_srdf_str(srdf).unwrap_err();
+    assert!(matches!(&error, ModelError::UnknownLink { link, .. } if link == "camera"));
     let error = RobotModel::from_urdf_str(TWO_LINK)
         .unwrap()
         .with_srdf_str("<robot><disable_collisions link1=\"base\"/></robot>")

@@ -7,7 +7,7 @@ use std::path::Path;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 use spaces::{Joint, JointSpace};
 
-use crate::ModelError;
+use crate::{ModelError, ModelWarning};
 
 /// How the joint above a link moves it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -74,14 +74,16 @@ pub struct LinkSphere {
 /// ```
 #[derive(Debug, Clone)]
 pub struct RobotModel {
-    name: String,
+    pub(super) name: String,
     links: Vec<LinkFrame>,
     space: JointSpace,
     joint_names: Vec<String>,
     spheres: Vec<LinkSphere>,
     ranges: Vec<Range<usize>>,
     bounds: Vec<Option<(DVec3, f64)>>,
-    pairs: Vec<(usize, usize)>,
+    pub(super) pairs: Vec<(usize, usize)>,
+    pub(super) strict: bool,
+    pub(super) warnings: Vec<ModelWarning>,
 }
 
 impl RobotModel {
@@ -244,6 +246,8 @@ impl RobotModel {
             ranges,
             bounds,
             pairs,
+            strict: false,
+            warnings: Vec::new(),
         })
     }
 
@@ -299,64 +303,6 @@ impl RobotModel {
     /// neither the SRDF nor an allowed-collision entry disabled the pair.
     pub fn self_collision_pairs(&self) -> &[(usize, usize)] {
         &self.pairs
-    }
-
-    /// Applies an SRDF document: its `disable_collisions` pairs are no longer checked.
-    ///
-    /// # Errors
-    /// [`ModelError::Srdf`] for malformed XML, [`ModelError::UnknownLink`] for a pair naming
-    /// a link the robot does not have.
-    pub fn with_srdf_str(self, text: &str) -> Result<Self, ModelError> {
-        let pairs = crate::model::srdf::disabled_pairs(text, "SRDF text")?;
-        self.disable(&pairs, "SRDF text")
-    }
-
-    /// Applies an SRDF file (see [`with_srdf_str`](Self::with_srdf_str)).
-    ///
-    /// # Errors
-    /// [`ModelError::Io`] if it cannot be read, else as [`with_srdf_str`](Self::with_srdf_str).
-    pub fn with_srdf_file(self, path: &Path) -> Result<Self, ModelError> {
-        let text = std::fs::read_to_string(path).map_err(|source| ModelError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
-        let origin = path.display().to_string();
-        let pairs = crate::model::srdf::disabled_pairs(&text, &origin)?;
-        self.disable(&pairs, &origin)
-    }
-
-    /// Stops checking the given link pairs for self-collision (a MoveIt scene's
-    /// allowed-collision matrix). Pairs involving links without spheres change nothing.
-    ///
-    /// # Errors
-    /// [`ModelError::UnknownLink`] for a name that is not a link of the robot.
-    pub fn allow_collisions<'a>(
-        self,
-        pairs: impl IntoIterator<Item = (&'a str, &'a str)>,
-    ) -> Result<Self, ModelError> {
-        let pairs: Vec<(String, String)> = pairs
-            .into_iter()
-            .map(|(a, b)| (a.to_owned(), b.to_owned()))
-            .collect();
-        self.disable(&pairs, "allowed-collision matrix")
-    }
-
-    fn disable(mut self, pairs: &[(String, String)], origin: &str) -> Result<Self, ModelError> {
-        let mut off = HashSet::new();
-        for (a, b) in pairs {
-            let index = |name: &str| {
-                self.link_index(name)
-                    .ok_or_else(|| ModelError::UnknownLink {
-                        origin: origin.to_owned(),
-                        link: name.to_owned(),
-                        robot: self.name.clone(),
-                    })
-            };
-            let (i, j) = (index(a)?, index(b)?);
-            off.insert((i.min(j), i.max(j)));
-        }
-        self.pairs.retain(|p| !off.contains(p));
-        Ok(self)
     }
 }
 

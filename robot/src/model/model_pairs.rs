@@ -1,0 +1,170 @@
+//! Self-collision pairs the sphere model itself rules out, as MoveIt's setup assistant does:
+//! adjacent links, and pairs in collision in every configuration tried.
+
+use glam::{DAffine3, DVec3};
+use spaces::JointKind;
+
+use crate::{Kinematics, ModelWarning, RobotModel};
+
+impl RobotModel {
+    /// The checked [self-collision pairs](Self::self_collision_pairs) whose spheres overlap
+    /// at configuration `q` (exact `f64` sphere tests): what makes `q` self-colliding.
+    ///
+    /// # Panics
+    /// If `q` is shorter than the robot's dimension (a caller's bug).
+    pub fn colliding_link_pairs(&self, q: &[f64]) -> Vec<(usize, usize)> {
+        let fk = Kinematics::new(self);
+        let mut links = vec![DAffine3::IDENTITY; fk.link_count()];
+        let mut centers = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+        fk.sphere_centers_f64(q, &mut links, &mut centers);
+        self.pairs
+            .iter()
+            .copied()
+            .filter(|&(a, b)| {
+                let (mut ra, rb) = (self.link_sphere_range(a), self.link_sphere_range(b));
+                ra.any(|i| {
+                    rb.clone().any(|j| {
+                        let ((ci, ri), (cj, rj)) = (centers[i], centers[j]);
+                        ci.distance(cj) < ri + rj
+                    })
+                })
+            })
+            .collect()
+    }
+
+    /// The default configuration, as MoveIt's: every joint at 0, or at the middle of its
+    /// limits when 0 is outside them.
+    pub fn default_configuration(&self) -> Vec<f64> {
+        self.joint_space()
+            .joints()
+            .iter()
+            .map(|j| match j.kind {
+                JointKind::Revolute { lower, upper } | JointKind::Prismatic { lower, upper } => {
+                    if (lower..=upper).contains(&0.0) {
+                        0.0
+                    } else {
+                        0.5 * (lower + upper)
+                    }
+                }
+                JointKind::Continuous => 0.0,
+            })
+            .collect()
+    }
+
+    /// The adjacent link pairs among links with spheres, `i < j`: links joined by a joint, or
+    /// by a chain of links without spheres (MoveIt's rule: a link without geometry joins its
+    /// neighbours).
+    pub fn adjacent_link_pairs(&self) -> Vec<(usize, usize)> {
+        let links = self.links();
+        let mut neighbours = vec![Vec::new(); links.len()];
+        for (i, link) in links.iter().enumerate() {
+            if let Some(p) = link.parent {
+                neighbours[i].push(p);
+                neighbours[p].push(i);
+            }
+        }
+        let has_spheres = |l: usize| !self.link_sphere_range(l).is_empty();
+        let mut pairs = Vec::new();
+        for start in (0..links.len()).filter(|&l| has_spheres(l)) {
+            // Through links without spheres, to the first links with spheres.
+            let (mut seen, mut stack) = (vec![false; links.len()], vec![start]);
+            seen[start] = true;
+            while let Some(l) = stack.pop() {
+                for &n in &neighbours[l] {
+                    if std::mem::replace(&mut seen[n], true) {
+                        continue;
+                    }
+                    if has_spheres(n) {
+                        if start < n {
+                            pairs.push((start, n));
+                        }
+                    } else {
+                        stack.push(n);
+                    }
+                }
+            }
+        }
+        pairs.sort_unstable();
+        pairs
+    }
+
+    /// The same model without checking the pairs its own geometry rules out, as MoveIt's setup
+    /// assistant writes them into an SRDF: [adjacent](Self::adjacent_link_pairs) links, and
+    /// pairs [always in collision](Self::always_colliding_link_pairs) (a sphere model's spheres
+    /// can overlap where the meshes only touch, so an SRDF written for the meshes can leave a
+    /// pair that collides everywhere). Each group of pairs disabled here that was still checked
+    /// is recorded as a [`ModelWarning::DisabledPairs`] to review.
+    ///
+    /// ```
+    /// let urdf = include_str!("../../data/ur5/ur5_spherized.urdf");
+    /// let srdf = include_str!("../../data/ur5/ur5.srdf");
+    /// let ur5 = robot::RobotModel::from_urdf_str(urdf)?.with_srdf_str(srdf)?;
+    /// // The SRDF leaves wrist_2_link/fts_robotside checked; their spheres always overlap.
+    /// assert_eq!(ur5.colliding_link_pairs(&ur5.default_configuration()).len(), 1);
+    /// let ur5 = ur5.without_model_pairs();
+    /// assert!(ur5.colliding_link_pairs(&ur5.default_configuration()).is_empty());
+    /// # Ok::<(), robot::ModelError>(())
+    /// ```
+    #[must_use]
+    pub fn without_model_pairs(mut self) -> Self {
+        let adjacent = self.adjacent_link_pairs();
+        self = self.stop_checking(adjacent, "adjacent");
+        let always = self.always_colliding_link_pairs();
+        self.stop_checking(always, "in collision in every sampled configuration")
+    }
+
+    /// The checked pairs in collision at the [default configuration](Self::default_configuration)
+    /// and at each of [`ALWAYS_SAMPLES`](Self::ALWAYS_SAMPLES) configurations drawn uniformly
+    /// within the joint limits (a fixed seed: the answer does not change from run to run).
+    /// Stricter than MoveIt's 95 %: a pair that is ever free is kept.
+    pub fn always_colliding_link_pairs(&self) -> Vec<(usize, usize)> {
+        let mut pairs = self.colliding_link_pairs(&self.default_configuration());
+        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+        let mut q = vec![0.0; self.joint_names().len()];
+        for _ in 0..Self::ALWAYS_SAMPLES {
+            if pairs.is_empty() {
+                break;
+            }
+            for (v, joint) in q.iter_mut().zip(self.joint_space().joints()) {
+                let u = unit(&mut state);
+                *v = match joint.kind {
+                    JointKind::Revolute { lower, upper }
+                    | JointKind::Prismatic { lower, upper } => lower + u * (upper - lower),
+                    JointKind::Continuous => std::f64::consts::PI * (2.0 * u - 1.0),
+                };
+            }
+            let now = self.colliding_link_pairs(&q);
+            pairs.retain(|p| now.contains(p));
+        }
+        pairs
+    }
+
+    /// How many random configurations [`always_colliding_link_pairs`](Self::always_colliding_link_pairs) tries.
+    pub const ALWAYS_SAMPLES: usize = 1000;
+
+    fn stop_checking(mut self, pairs: Vec<(usize, usize)>, reason: &'static str) -> Self {
+        let checked: Vec<(usize, usize)> = pairs
+            .into_iter()
+            .filter(|p| self.pairs.contains(p))
+            .collect();
+        if checked.is_empty() {
+            return self;
+        }
+        self.pairs.retain(|p| !checked.contains(p));
+        let name = |l: usize| self.links()[l].name.clone();
+        let pairs = checked.iter().map(|&(a, b)| (name(a), name(b))).collect();
+        self.warnings
+            .push(ModelWarning::DisabledPairs { reason, pairs });
+        self
+    }
+}
+
+/// A uniform number in `[0, 1)` from a SplitMix64 stream.
+fn unit(state: &mut u64) -> f64 {
+    *state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^= z >> 31;
+    (z >> 11) as f64 / (1u64 << 53) as f64
+}

@@ -1,0 +1,56 @@
+//! [`RobotSourceError`]: why a named robot could not be found or loaded.
+
+use std::path::PathBuf;
+
+use thiserror::Error;
+
+use crate::ModelError;
+
+/// Why a [`RobotSource`](crate::RobotSource) could not be found or loaded.
+#[derive(Debug, Error)]
+pub enum RobotSourceError {
+    /// Neither a shipped robot's name nor a folder.
+    #[error(
+        "`{name}` is neither a shipped robot ({known}) nor a folder holding a URDF and an SRDF"
+    )]
+    Unknown {
+        /// What was given.
+        name: String,
+        /// The shipped robots' names.
+        known: String,
+    },
+    /// A folder without the URDF or the SRDF.
+    #[error("folder `{}` holds no {what}", folder.display())]
+    Missing {
+        /// The folder.
+        folder: PathBuf,
+        /// `URDF (*.urdf)` or `SRDF (*.srdf)`.
+        what: &'static str,
+    },
+    /// A folder with several candidates.
+    #[error("folder `{}` holds several {what} files ({files}): keep one", folder.display())]
+    Ambiguous {
+        /// The folder.
+        folder: PathBuf,
+        /// `URDF (*.urdf)` or `SRDF (*.srdf)`.
+        what: &'static str,
+        /// Their names, comma separated.
+        files: String,
+    },
+    /// A folder that cannot be listed.
+    #[error("cannot list `{}`: {source}", path.display())]
+    Io {
+        /// The folder.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+    /// The files were found but the model could not be made from them.
+    #[error("robot `{robot}`: {source}")]
+    Model {
+        /// The robot's name or URDF.
+        robot: String,
+        /// What is wrong.
+        source: ModelError,
+    },
+}
