@@ -5,8 +5,8 @@
 use std::cell::Cell;
 
 use mit_star::{
-    AitStar, BitStar, EitStar, InformedRrtStar, MitStar, Parameters, Planner, Progress, RrtConnect,
-    Termination,
+    AitStar, Aorrtc, BitStar, EitStar, InformedRrtStar, MitStar, Parameters, Planner, Progress,
+    RrtConnect, Termination,
 };
 use problems::PlanningProblem;
 use robot::{ArmProblem, ParryChecker};
@@ -69,6 +69,10 @@ fn planners(problem: &ArmProblem, seed: u64) -> Vec<(&'static str, Box<dyn Plann
             "RRT-Connect",
             Box::new(RrtConnect::for_problem(problem, &parameters).unwrap()),
         ),
+        (
+            "AORRTC",
+            Box::new(Aorrtc::for_problem(problem, &parameters).unwrap()),
+        ),
     ]
 }
 
@@ -95,21 +99,68 @@ fn every_planner_solves_in_slices_of_a_few_polls() {
             calls > 1,
             "{name} solved in one slice: the test proves nothing"
         );
-        // The path is certified: dense f64 re-check at 1e-3 rad.
-        for pair in path.windows(2) {
-            let (a, b) = (&pair[0], &pair[1]);
-            let pieces = (spaces::euclidean_distance(a, b) / 1e-3).ceil().max(1.0) as u32;
-            for k in 0..=pieces {
-                let t = f64::from(k) / f64::from(pieces);
-                let q: Vec<f64> = a
-                    .iter()
-                    .zip(b.iter())
-                    .map(|(x, y)| x + (y - x) * t)
-                    .collect();
-                assert!(reference.is_valid(&q), "{name}: {q:?} collides");
-            }
-        }
+        assert_densely_clear(&reference, &path, name);
         assert!(problem.certification() > 1);
         eprintln!("{name}: solved after {calls} slices");
     }
+}
+
+/// The path is certified: dense `f64` re-check at 1e-3 rad.
+fn assert_densely_clear(reference: &ParryChecker, path: &[Vec<f64>], name: &str) {
+    for pair in path.windows(2) {
+        let (a, b) = (&pair[0], &pair[1]);
+        let pieces = (spaces::euclidean_distance(a, b) / 1e-3).ceil().max(1.0) as u32;
+        for k in 0..=pieces {
+            let t = f64::from(k) / f64::from(pieces);
+            let q: Vec<f64> = a
+                .iter()
+                .zip(b.iter())
+                .map(|(x, y)| x + (y - x) * t)
+                .collect();
+            assert!(reference.is_valid(&q), "{name}: {q:?} collides");
+        }
+    }
+}
+
+/// Fires from its `polls`-th poll on, whatever the cost: slices of an anytime search.
+struct Polls {
+    seen: Cell<u64>,
+    polls: u64,
+}
+
+impl Termination for Polls {
+    fn should_terminate(&self, _: &Progress) -> bool {
+        self.seen.set(self.seen.get() + 1);
+        self.seen.get() >= self.polls
+    }
+}
+
+#[test]
+fn aorrtc_improves_in_slices_and_every_path_stays_certified() {
+    let problem = problem();
+    let reference = ParryChecker::new(problem.robot(), problem.scene());
+    let parameters = Parameters {
+        seed: 5,
+        ..Parameters::default()
+    };
+    let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
+    let slice = Polls {
+        seen: Cell::new(0),
+        polls: 6,
+    };
+    let mut costs = Vec::new();
+    for _ in 0..20_000 {
+        slice.seen.set(0);
+        let outcome = planner.solve(&slice).unwrap();
+        if let Some(solution) = outcome.solution()
+            && costs.last() != Some(&solution.cost)
+        {
+            costs.push(solution.cost);
+            let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
+            assert_densely_clear(&reference, &path, "AORRTC");
+        }
+    }
+    // The cost-bounded searches ran across slices and improved the first path.
+    assert!(costs.len() > 2, "{costs:?}");
+    assert!(costs.windows(2).all(|w| w[1] < w[0]), "{costs:?}");
 }
