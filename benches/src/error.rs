@@ -116,6 +116,9 @@ pub enum HarnessError {
     /// The command line combines options that do not go together, or lacks a required one.
     #[error("{0}")]
     Usage(String),
+    /// A robot (`--robot`, an experiment's `robot`) could not be found or loaded.
+    #[error(transparent)]
+    Robot(#[from] robot::RobotSourceError),
     /// A MotionBenchMaker folder or arm problem could not be read.
     #[error("arm problem `{name}`: {source}")]
     Arm {

@@ -52,6 +52,7 @@
 //! | [`Experiment`], [`experiment_file`], [`ShippedExperiment`] | an experiment; its TOML file format; the embedded `paper-table`, `ablation`, `smoke` |
 //! | [`PlannerSpec`], [`parse_configuration`], [`ParameterOverrides`] | a planner of an experiment; configuration names; `key = value` parameter changes |
 //! | [`ProblemSpec`], [`ProblemSource`], [`ProblemInstance`] | a problem over dimensions and layouts; built-in or file; one concrete instance with its budget |
+//! | [`MbmFolder`], [`RobotChoice`] | a MotionBenchMaker folder and the robot planned for (`--robot`, shipped or a folder) |
 //! | [`RunJob`], [`Executor`], [`ExecutionOptions`], [`Interrupt`] | the shuffled, seeded schedule of runs; parallel execution with progress; SIGINT/SIGTERM |
 //! | [`RunJournal`], [`results_from_records`] | every finished run appended to the raw files and committed to the database at once; reading them back |
 //! | [`RunRecord`], [`RunStatus`], [`PathValidation`], [`ValidationMethod`] | what one run measured; how it ended; the independent path check (exact for box worlds) |
@@ -65,7 +66,7 @@
 //! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
 //! | [`Shard`], [`SHARD_FILE`], [`merge_parts`], [`MergeReport`] | one of N disjoint parts of an experiment (`bench --shard K/N`); the parts' folders combined into one |
 //! | [`CampaignComparison`], [`ComparedRow`], [`Change`] | two results folders side by side (`mit-star compare A B`) |
-//! | [`commands`] | the `mit-star` command line (`plan`, `bench`, `merge`, `compare`, `problems`, `planners`, `experiments`) |
+//! | [`commands`] | the `mit-star` command line (`plan`, `check-path`, `bench`, `merge`, `compare`, `problems`, `planners`, `robots`, `experiments`) |
 //! | [`budget_duration`], [`deadline_after`], [`BudgetError`], [`short_number`] | time budgets checked into durations; numbers for messages |
 //! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
 //!
@@ -87,12 +88,14 @@ pub mod statistics;
 pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};
 pub use definition::experiment::Experiment;
 pub use definition::experiment_file;
+pub use definition::mbm_folder::MbmFolder;
 pub use definition::parameter_overrides::ParameterOverrides;
 pub use definition::planner_spec::{PlannerSpec, parse_configuration};
 pub use definition::problem_instance::ProblemInstance;
 pub use definition::problem_kind::InstanceProblem;
 pub use definition::problem_source::{ProblemFile, ProblemSource};
 pub use definition::problem_spec::ProblemSpec;
+pub use definition::robot_choice::RobotChoice;
 pub use definition::shipped_experiment::ShippedExperiment;
 pub use error::HarnessError;
 pub use execution::executor::{ExecutionOptions, Executor, RecordSink, RunKey};

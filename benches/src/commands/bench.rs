@@ -14,6 +14,7 @@ use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
 use crate::definition::problem_instance::ProblemInstance;
 use crate::definition::problem_source::ProblemSource;
 use crate::definition::problem_spec::ProblemSpec;
+use crate::definition::robot_choice::RobotChoice;
 use crate::definition::shipped_experiment::ShippedExperiment;
 use crate::error::HarnessError;
 use crate::execution::executor::{ExecutionOptions, Executor};
@@ -45,6 +46,15 @@ pub struct BenchArgs {
     /// Built-in problem names or problem file paths, comma separated or repeated (flags mode).
     #[arg(long = "problem", value_delimiter = ',')]
     pub problems: Vec<String>,
+    /// The robot MotionBenchMaker folders (`--problem mbm:PATH`) are planned for (flags mode):
+    /// a shipped robot (`mit-star robots`; default panda) or a folder holding one URDF and one
+    /// SRDF. Experiment files say `robot = "ur5"` in the problem entry.
+    #[arg(long, value_name = "NAME|DIR")]
+    pub robot: Option<String>,
+    /// Refuse SRDF and allowed-collision entries naming links the robot lacks (flags mode;
+    /// experiment files: `strict_robot = true`).
+    #[arg(long)]
+    pub strict_robot: bool,
     /// Dimension of the built-in problems (flags mode).
     #[arg(long, conflicts_with = "dims")]
     pub dim: Option<usize>,
@@ -124,13 +134,16 @@ impl BenchArgs {
             || !self.time.is_empty()
             || self.instances.is_some()
             || self.resolution.is_some()
+            || self.robot.is_some()
+            || self.strict_robot
             || self.name.is_some();
         let experiment = match (&self.file, &self.experiment) {
             (Some(_), _) | (_, Some(_)) if flags_mode => {
                 return Err(HarnessError::Usage(
-                    "--planners, --problem, --dim(s), --time, --instances, --resolution and \
-                     --name describe an experiment on the command line; they cannot be combined \
-                     with an experiment file or --experiment"
+                    "--planners, --problem, --dim(s), --time, --instances, --resolution, \
+                     --robot, --strict-robot and --name describe an experiment on the command \
+                     line; they cannot be combined with an experiment file or --experiment \
+                     (whose problem entries take `robot` and `strict_robot` keys)"
                         .into(),
                 ));
             }
@@ -218,9 +231,15 @@ impl BenchArgs {
             Some(d) => vec![d],
             None => self.dims.clone(),
         };
+        let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?;
         let mut problems = Vec::new();
         for text in &self.problems {
-            let source = ProblemSource::parse(text, None)?;
+            let source = ProblemSource::parse_for_robot(text, None, &robot)?;
+            if !robot.is_default() && !matches!(source, ProblemSource::Mbm(_)) {
+                return Err(HarnessError::Usage(format!(
+                    "--robot and --strict-robot apply to MotionBenchMaker problems (mbm:PATH), not `{text}`"
+                )));
+            }
             let dimensions = match source.fixed_dimension()? {
                 Some(n) if dims.is_empty() || dims == [n] => vec![n],
                 Some(n) => {

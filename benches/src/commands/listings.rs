@@ -1,4 +1,4 @@
-//! The listing subcommands: `problems`, `planners`, `experiments`.
+//! The listing subcommands: `problems`, `planners`, `robots`, `experiments`.
 
 use clap::Args;
 use mit_star::{Configuration, Parameters};
@@ -158,4 +158,48 @@ impl ExperimentsArgs {
         }
         Ok(CommandOutcome::Success)
     }
+}
+
+/// `mit-star robots`: the shipped robots, their size, and how to unpack their problems.
+pub(crate) fn print_robots() -> Result<CommandOutcome, HarnessError> {
+    say!(
+        "Shipped robots (`--robot NAME`; or `--robot DIR`, a folder with one URDF and one SRDF):\n"
+    );
+    for shipped in robot::ShippedRobot::all() {
+        let model = shipped
+            .model(false)
+            .map_err(|source| robot::RobotSourceError::Model {
+                robot: shipped.name.to_owned(),
+                source,
+            })?;
+        let default = if shipped.name == robot::ShippedRobot::DEFAULT {
+            " (default)"
+        } else {
+            ""
+        };
+        say!("{}{default}", shipped.name);
+        say!("  {}", shipped.description);
+        say!(
+            "  {} joints (dimension {}): {}",
+            model.joint_names().len(),
+            model.joint_names().len(),
+            model.joint_names().join(", ")
+        );
+        say!(
+            "  {} spheres on {} links",
+            model.spheres().len(),
+            model.links().len()
+        );
+        say!("  problems: {}", shipped.problems);
+        say!(
+            "  unpack:   mkdir -p target && tar xjf {} -C target/",
+            shipped.problems
+        );
+        say!(
+            "  plan:     mit-star plan --robot {} --problem mbm:{} --planner mit-star\n",
+            shipped.name,
+            shipped.unpacked.replace("{scene}", "box")
+        );
+    }
+    Ok(CommandOutcome::Success)
 }

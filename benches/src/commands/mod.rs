@@ -70,6 +70,8 @@ pub enum Command {
     Problems(ProblemsArgs),
     /// List the planner configurations and their parameters' defaults.
     Planners,
+    /// List the shipped robots (`--robot NAME`): joints, spheres, and their problem sets.
+    Robots,
     /// List the shipped experiments, or print one.
     Experiments(ExperimentsArgs),
 }
@@ -129,6 +131,7 @@ impl Cli {
             Command::Compare(args) => args.run(),
             Command::Problems(args) => args.run(),
             Command::Planners => listings::print_planners(),
+            Command::Robots => listings::print_robots(),
             Command::Experiments(args) => args.run(),
         }
     }

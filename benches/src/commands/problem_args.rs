@@ -3,10 +3,12 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use problems::PlanningProblem;
 
 use crate::budget::short_number;
 use crate::definition::problem_instance::ProblemInstance;
 use crate::definition::problem_source::ProblemSource;
+use crate::definition::robot_choice::RobotChoice;
 use crate::error::HarnessError;
 
 /// The options that name one problem instance.
@@ -18,6 +20,15 @@ pub struct ProblemArgs {
     /// A TOML problem file.
     #[arg(long, conflicts_with = "problem")]
     pub problem_file: Option<PathBuf>,
+    /// The robot a MotionBenchMaker folder (`--problem mbm:PATH`) is planned for: a shipped
+    /// robot (`mit-star robots`: panda, the default, ur5, fetch) or a folder holding one URDF
+    /// (a `*_spherized.urdf` preferred) and one SRDF.
+    #[arg(long, value_name = "NAME|DIR")]
+    pub robot: Option<String>,
+    /// Refuse SRDF and allowed-collision entries naming links the robot lacks (by default they
+    /// are skipped with a warning).
+    #[arg(long)]
+    pub strict_robot: bool,
     /// Dimension of a built-in problem (default 2).
     #[arg(long)]
     pub dim: Option<usize>,
@@ -41,12 +52,14 @@ impl ProblemArgs {
     /// when a box world's step is coarser than its thinnest obstacle (and allowed).
     ///
     /// # Errors
-    /// An unknown problem, a dimension the problem file does not have, a bad resolution or a
-    /// step the problem refuses.
+    /// An unknown problem or robot, a dimension the problem file does not have, a bad
+    /// resolution, a step the problem refuses, or an arm's start or goal in collision (naming
+    /// the colliding links).
     pub fn build(&self, budget: f64) -> Result<ProblemInstance, HarnessError> {
+        let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?;
         let source = match (&self.problem, &self.problem_file) {
             (_, Some(path)) => ProblemSource::file(path)?,
-            (Some(text), None) => ProblemSource::parse(text, None)?,
+            (Some(text), None) => ProblemSource::parse_for_robot(text, None, &robot)?,
             (None, None) => return Err(HarnessError::Usage("give --problem NAME|PATH".into())),
         };
         let dimension = match (source.fixed_dimension()?, self.dim) {
@@ -65,6 +78,18 @@ impl ProblemArgs {
         // The flag only ever allows: without it, the problem file's choice stands.
         if self.allow_coarse_step {
             problem = problem.allowing_coarse_step(true);
+        }
+        if (self.robot.is_some() || self.strict_robot) && !matches!(source, ProblemSource::Mbm(_)) {
+            return Err(HarnessError::Usage(
+                "--robot and --strict-robot apply to MotionBenchMaker problems (--problem mbm:PATH)"
+                    .into(),
+            ));
+        }
+        if let Some(arm) = problem.as_arm() {
+            arm.check_ends().map_err(|source| HarnessError::Arm {
+                name: arm.name().to_owned(),
+                source,
+            })?;
         }
         let label = source.label();
         problem

@@ -270,6 +270,13 @@ impl Experiment {
                         let absolute = std::fs::canonicalize(folder.path())
                             .unwrap_or_else(|_| folder.path().to_path_buf());
                         e.insert("name".into(), format!("mbm:{}", absolute.display()).into());
+                        let robot = folder.robot();
+                        if !robot.is_default() {
+                            e.insert("robot".into(), robot.file_value().into());
+                        }
+                        if robot.is_strict() {
+                            e.insert("strict_robot".into(), true.into());
+                        }
                         let dims: Vec<toml::Value> =
                             p.dimensions.iter().map(|&d| (d as i64).into()).collect();
                         e.insert("dimensions".into(), dims.into());

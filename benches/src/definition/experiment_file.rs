@@ -28,6 +28,9 @@
 //! # allow_coarse_step = true          # allow checks that can miss thin obstacles: a step
 //! #                                   # coarser than the thinnest box, an arm planned with
 //! #                                   # certification off (default false)
+//! # robot = "ur5"                     # `name = "mbm:PATH"` only: a shipped robot (panda, the
+//! #                                   # default, ur5, fetch) or a folder with a URDF and SRDF
+//! # strict_robot = true               # refuse SRDF entries naming links the robot lacks
 //! ```
 
 use std::fmt;
@@ -41,6 +44,7 @@ use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
 use crate::definition::problem_source::ProblemSource;
 use crate::definition::problem_spec::ProblemSpec;
+use crate::definition::robot_choice::RobotChoice;
 use crate::error::HarnessError;
 
 /// The schema of an experiment file, as parsed (before names are checked).
@@ -133,6 +137,11 @@ pub struct ProblemEntry {
     /// Allow checks that can miss thin obstacles (a coarse step; an arm without
     /// certification).
     pub allow_coarse_step: Option<bool>,
+    /// The robot a MotionBenchMaker folder is planned for: a shipped name (`panda`, the
+    /// default, `ur5`, `fetch`) or a folder with a URDF and an SRDF (relative to the file).
+    pub robot: Option<String>,
+    /// Refuse SRDF and allowed-collision entries naming links the robot lacks.
+    pub strict_robot: Option<bool>,
 }
 
 /// One number of seconds or a list of them; integers are accepted.
@@ -258,7 +267,19 @@ fn problem_spec(
         // `mbm:PATH` is a MotionBenchMaker folder (relative to the file's folder, or to the
         // working folder for a file without one): its errors say what is wrong with it.
         (Some(name), None) if name.trim().starts_with("mbm:") => {
-            ProblemSource::parse(name, base).map_err(|e| bad(".name", e))?
+            let strict = p.strict_robot.unwrap_or(false);
+            let robot = RobotChoice::parse(p.robot.as_deref(), base, strict)
+                .map_err(|e| bad(".robot", e))?;
+            ProblemSource::parse_for_robot(name, base, &robot).map_err(|e| bad(".name", e))?
+        }
+        _ if p.robot.is_some() || p.strict_robot.is_some() => {
+            return Err(bad(
+                ".robot",
+                HarnessError::Usage(
+                    "`robot` and `strict_robot` apply to MotionBenchMaker problems (`name = \"mbm:PATH\"`)"
+                        .into(),
+                ),
+            ));
         }
         (Some(name), None) => match ProblemSource::parse(name, None) {
             Ok(ProblemSource::Builtin(b)) => ProblemSource::Builtin(b),

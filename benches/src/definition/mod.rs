@@ -7,7 +7,8 @@
 //!   [`parameter_overrides`]: `key = value` changes to the planners' parameters.
 //! - [`problem_spec`]: one problem of an experiment over several dimensions and layouts;
 //!   [`problem_source`]: where it comes from (a built-in family, a problem file, a
-//!   MotionBenchMaker folder); [`problem_instance`]: one concrete instance (id, dimension,
+//!   MotionBenchMaker folder, [`mbm_folder`], planned for the robot of [`robot_choice`]);
+//!   [`problem_instance`]: one concrete instance (id, dimension,
 //!   layout, time budget); [`problem_kind`]: the problem an instance plans on, a box world or an
 //!   arm, and how each kind builds planners, checks paths and describes itself.
 //!
@@ -19,10 +20,12 @@
 pub mod experiment_file;
 
 pub(crate) mod experiment;
+pub(crate) mod mbm_folder;
 pub(crate) mod parameter_overrides;
 pub(crate) mod planner_spec;
 pub(crate) mod problem_instance;
 pub(crate) mod problem_kind;
 pub(crate) mod problem_source;
 pub(crate) mod problem_spec;
+pub(crate) mod robot_choice;
 pub(crate) mod shipped_experiment;

@@ -4,10 +4,10 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use problems::Problem;
-use robot::RobotModel;
-use spaces::StateSpace;
 
+use crate::definition::mbm_folder::MbmFolder;
 use crate::definition::problem_kind::InstanceProblem;
+use crate::definition::robot_choice::RobotChoice;
 
 use crate::error::HarnessError;
 
@@ -38,58 +38,10 @@ pub enum ProblemSource {
     Builtin(String),
     /// A problem file, read and checked once.
     File(ProblemFile),
-    /// A MotionBenchMaker scene folder for the Panda (`mbm:PATH`); instances are its problem
-    /// indices (1-based).
+    /// A MotionBenchMaker scene folder (`mbm:PATH`) and the robot planned for; instances are
+    /// its problem indices (1-based).
     Mbm(MbmFolder),
 }
-
-/// A MotionBenchMaker scene folder (`sceneNNNN.yaml` + `requestNNNN.yaml` pairs) and the
-/// Panda model its problems are planned for, read once.
-#[derive(Debug, Clone)]
-pub struct MbmFolder {
-    path: PathBuf,
-    indices: Vec<usize>,
-    robot: Arc<RobotModel>,
-}
-
-impl MbmFolder {
-    /// Lists the folder's problems and loads the Panda model.
-    ///
-    /// # Errors
-    /// [`HarnessError::Arm`] for a folder without problems, or half of one.
-    pub fn read(path: impl Into<PathBuf>) -> Result<Self, HarnessError> {
-        let path = path.into();
-        let arm = |source: robot::ArmError| HarnessError::Arm {
-            name: path.display().to_string(),
-            source,
-        };
-        let indices = robot::MbmProblem::indices(&path).map_err(|e| arm(e.into()))?;
-        let robot = robot::ArmProblem::panda().map_err(arm)?;
-        Ok(Self {
-            path,
-            indices,
-            robot: Arc::new(robot),
-        })
-    }
-
-    /// The folder.
-    pub fn path(&self) -> &Path {
-        &self.path
-    }
-
-    /// The problem indices it holds, ascending.
-    pub fn indices(&self) -> &[usize] {
-        &self.indices
-    }
-}
-
-impl PartialEq for MbmFolder {
-    fn eq(&self, other: &Self) -> bool {
-        self.path == other.path
-    }
-}
-
-impl Eq for MbmFolder {}
 
 /// A problem file read once: its path and the problem it defines (a world of 100 000 boxes is
 /// several megabytes of TOML; every instance of an experiment shares the one parsed copy).
@@ -150,13 +102,25 @@ impl ProblemSource {
     /// # Errors
     /// [`HarnessError::UnknownProblem`] listing the built-in names when `text` is neither.
     pub fn parse(text: &str, base: Option<&Path>) -> Result<Self, HarnessError> {
+        Self::parse_for_robot(text, base, &RobotChoice::default())
+    }
+
+    /// As [`parse`](Self::parse), a MotionBenchMaker folder planned for `robot`.
+    ///
+    /// # Errors
+    /// As [`parse`](Self::parse); [`HarnessError::Robot`] if the robot's files cannot be loaded.
+    pub fn parse_for_robot(
+        text: &str,
+        base: Option<&Path>,
+        robot: &RobotChoice,
+    ) -> Result<Self, HarnessError> {
         let text = text.trim();
         if let Some(folder) = text.strip_prefix("mbm:") {
             let path = match base {
                 Some(base) if Path::new(folder).is_relative() => base.join(folder),
                 _ => PathBuf::from(folder),
             };
-            return MbmFolder::read(path).map(Self::Mbm);
+            return MbmFolder::read(path, robot).map(Self::Mbm);
         }
         if problems::catalogue().iter().any(|f| f.name() == text) {
             return Ok(Self::Builtin(text.to_owned()));
@@ -223,7 +187,7 @@ impl ProblemSource {
         resolution: Option<f64>,
     ) -> Result<InstanceProblem, HarnessError> {
         if let Self::Mbm(folder) = self {
-            return build_arm(folder, dimension, instance, resolution);
+            return folder.build(dimension, instance, resolution);
         }
         let problem = match self {
             Self::Mbm(_) => unreachable!("built above"),
@@ -269,46 +233,9 @@ impl ProblemSource {
         match self {
             Self::Builtin(_) => Ok(None),
             Self::File(file) => Ok(Some(file.problem().dimension())),
-            Self::Mbm(folder) => Ok(Some(folder.robot.joint_space().dimension())),
+            Self::Mbm(folder) => Ok(Some(folder.dimension())),
         }
     }
-}
-
-/// Problem `index` of a MotionBenchMaker folder, for the Panda.
-fn build_arm(
-    folder: &MbmFolder,
-    dimension: usize,
-    index: u64,
-    resolution: Option<f64>,
-) -> Result<InstanceProblem, HarnessError> {
-    let joints = folder.robot.joint_space().dimension();
-    if dimension != joints {
-        return Err(HarnessError::Usage(format!(
-            "`{}` plans for the Panda's {joints} joints, not {dimension} dimensions",
-            folder.path.display()
-        )));
-    }
-    let Some(&index) = usize::try_from(index)
-        .ok()
-        .and_then(|i| folder.indices.iter().find(|&&k| k == i))
-    else {
-        let (first, last) = (folder.indices[0], folder.indices[folder.indices.len() - 1]);
-        return Err(HarnessError::Usage(format!(
-            "`{}` has no problem {index} (it holds {} problems, {first} to {last})",
-            folder.path.display(),
-            folder.indices.len()
-        )));
-    };
-    let arm = |source: robot::ArmError| HarnessError::Arm {
-        name: format!("{}/{index:04}", folder.path.display()),
-        source,
-    };
-    let mut problem =
-        robot::ArmProblem::mbm((*folder.robot).clone(), &folder.path, index).map_err(arm)?;
-    if let Some(r) = resolution {
-        problem = problem.with_resolution(r).map_err(arm)?;
-    }
-    Ok(InstanceProblem::Arm(Arc::new(problem)))
 }
 
 /// Keeps letters, digits, `-`, `_` and `.`; everything else becomes `-`.

@@ -80,11 +80,10 @@ impl ProblemSpec {
                 if self.allow_coarse_step {
                     problem = problem.allowing_coarse_step(true);
                 }
-                if !problem.ends_are_valid() {
-                    eprintln!(
-                        "note: {} problem {instance}: the start or goal is in collision; skipped",
-                        label
-                    );
+                if let Some(arm) = problem.as_arm()
+                    && let Err(e) = arm.check_ends()
+                {
+                    eprintln!("note: {label} problem {instance} skipped: {e}");
                     continue;
                 }
                 problem

@@ -1,0 +1,105 @@
+//! [`RobotChoice`]: the robot MotionBenchMaker problems are planned for (`--robot`, `robot`).
+
+use std::path::{Path, PathBuf};
+
+use robot::{RobotModel, RobotSource, ShippedRobot};
+
+use crate::error::HarnessError;
+
+/// A robot named on the command line or in an experiment file: a shipped robot
+/// ([`ShippedRobot`], the Panda by default) or a folder with a URDF and an SRDF, read strictly
+/// (SRDF and allowed-collision entries naming unknown links are errors) or leniently (they are
+/// warnings).
+///
+/// ```
+/// use mit_star_benches::RobotChoice;
+/// let ur5 = RobotChoice::parse(Some("ur5"), None, false)?;
+/// assert_eq!(ur5.label(), "ur5");
+/// assert!(RobotChoice::default().is_default());
+/// let e = RobotChoice::parse(Some("ur10"), None, false).unwrap_err().to_string();
+/// assert!(e.contains("panda, ur5, fetch"), "{e}");
+/// # Ok::<(), mit_star_benches::HarnessError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct RobotChoice {
+    source: RobotSource,
+    strict: bool,
+}
+
+impl RobotChoice {
+    /// The robot `text` names (none: the default), a relative folder taken relative to
+    /// `base` if given; `strict` as `--strict-robot`.
+    ///
+    /// # Errors
+    /// [`HarnessError::Robot`] for a name that is neither shipped nor a folder with one URDF
+    /// and one SRDF, listing the shipped names.
+    pub fn parse(
+        text: Option<&str>,
+        base: Option<&Path>,
+        strict: bool,
+    ) -> Result<Self, HarnessError> {
+        let source = match text.map(str::trim) {
+            None => RobotSource::default(),
+            Some(name) if ShippedRobot::find(name).is_some() => RobotSource::parse(name)?,
+            Some(folder) => {
+                let path = match base {
+                    Some(base) if Path::new(folder).is_relative() => base.join(folder),
+                    _ => PathBuf::from(folder),
+                };
+                RobotSource::parse(&path.to_string_lossy()).map_err(|e| match e {
+                    // Name what was written, not the joined path.
+                    robot::RobotSourceError::Unknown { known, .. } => {
+                        robot::RobotSourceError::Unknown {
+                            name: folder.to_owned(),
+                            known,
+                        }
+                    }
+                    other => other,
+                })?
+            }
+        };
+        Ok(Self { source, strict })
+    }
+
+    /// `true` for the lenient default robot.
+    pub fn is_default(&self) -> bool {
+        *self == Self::default()
+    }
+
+    /// `true` if unknown link names are errors.
+    pub fn is_strict(&self) -> bool {
+        self.strict
+    }
+
+    /// The shipped name, or the URDF's path.
+    pub fn label(&self) -> String {
+        self.source.label()
+    }
+
+    /// What an experiment file's `robot` key holds for it: the shipped name, or the folder's
+    /// absolute path.
+    pub fn file_value(&self) -> String {
+        match &self.source {
+            RobotSource::Shipped(name) => (*name).to_owned(),
+            RobotSource::Files { urdf, .. } => {
+                let folder = urdf.parent().unwrap_or(urdf);
+                std::fs::canonicalize(folder)
+                    .unwrap_or_else(|_| folder.to_path_buf())
+                    .display()
+                    .to_string()
+            }
+        }
+    }
+
+    /// Loads the model; prints what a lenient model ignored or stopped checking to stderr.
+    ///
+    /// # Errors
+    /// [`HarnessError::Robot`] naming the robot and what is wrong with its files.
+    pub fn load(&self) -> Result<RobotModel, HarnessError> {
+        let model = self.source.load(self.strict)?;
+        for warning in model.warnings() {
+            eprintln!("warning: robot `{}`: {warning}", self.label());
+        }
+        Ok(model)
+    }
+}

@@ -1,0 +1,130 @@
+//! `--robot` and `mit-star robots`: the shipped robots are listed, plan from the command line
+//! and in experiments, and an unknown robot or an unknown link (in strict mode) is refused
+//! with a message naming it. The UR5 problems are the two copies in `robot/tests/data/mbm`.
+
+use std::path::Path;
+
+mod common;
+use common::{mit_star, refused, succeeded};
+
+/// `mbm:` and the sample UR5 box folder.
+fn ur5_box() -> String {
+    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("../robot/tests/data/mbm/box_ur5");
+    format!("mbm:{}", folder.display())
+}
+
+#[test]
+fn robots_lists_the_shipped_ones() {
+    let out = succeeded(&["robots"]);
+    for needle in [
+        "panda (default)",
+        "ur5",
+        "fetch",
+        "6 joints (dimension 6)",
+        "40 spheres",
+        "ur5/problems.tar.bz2",
+        "tar xjf",
+        "--robot ur5 --problem mbm:target/problems/box_ur5",
+    ] {
+        assert!(out.contains(needle), "`{needle}` not in:\n{out}");
+    }
+}
+
+#[test]
+fn unknown_robots_and_links_are_refused_naming_them() {
+    let problem = ur5_box();
+    refused(
+        &["plan", "--robot", "ur10", "--problem", &problem],
+        &["`ur10`", "panda, ur5, fetch"],
+    );
+    refused(
+        &[
+            "plan",
+            "--robot",
+            "ur5",
+            "--strict-robot",
+            "--problem",
+            &problem,
+        ],
+        &["`box_link`", "allowed-collision matrix"],
+    );
+    refused(
+        &["plan", "--problem", &problem],
+        &["no value for joint `panda_joint1`"],
+    );
+    refused(
+        &["plan", "--robot", "ur5", "--problem", "dividing-walls"],
+        &["--robot", "mbm:PATH"],
+    );
+}
+
+#[test]
+fn ur5_plans_from_the_command_line_and_in_experiments() {
+    let problem = ur5_box();
+    let out = mit_star(&[
+        "plan",
+        "--robot",
+        "ur5",
+        "--problem",
+        &problem,
+        "--planner",
+        "rrt-connect",
+        "--time",
+        "5",
+        "--no-picture",
+    ]);
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert!(out.status.success(), "{stdout}{stderr}");
+    assert!(stdout.contains("solved; path validated"), "{stdout}");
+    assert!(
+        stderr.contains("box_link") && stderr.contains("wrist_2_link/fts_robotside"),
+        "{stderr}"
+    );
+    let folder = common::scratch("robots", "ur5-bench");
+    let folder_text = folder.to_string_lossy().into_owned();
+    succeeded(&[
+        "bench",
+        "--robot",
+        "ur5",
+        "--planners",
+        "rrt-connect",
+        "--problem",
+        &problem,
+        "--instances",
+        "1-2",
+        "--time",
+        "2",
+        "--runs",
+        "1",
+        "--threads",
+        "1",
+        "--no-plots",
+        "--quiet",
+        "-o",
+        &folder_text,
+    ]);
+    let experiment = std::fs::read_to_string(folder.join("experiment.toml")).unwrap();
+    assert!(experiment.contains("robot = \"ur5\""), "{experiment}");
+    // The written experiment file runs again, robot included.
+    let again = common::scratch("robots", "ur5-again");
+    let file = folder.join("experiment.toml");
+    succeeded(&[
+        "bench",
+        &file.to_string_lossy(),
+        "--no-plots",
+        "--quiet",
+        "-o",
+        &again.to_string_lossy(),
+    ]);
+    let runs = std::fs::read_to_string(again.join("runs.csv")).unwrap();
+    assert_eq!(
+        runs.lines()
+            .filter(|l| l.contains(",solved,true,true,"))
+            .count(),
+        2,
+        "{runs}"
+    );
+}
