@@ -107,6 +107,25 @@ pub enum SampleOrigin {
     NearTerminal,
 }
 
+impl SampleOrigin {
+    /// `true` if a state of this origin counts in the sample number `q` of a planner's
+    /// connection rules `k(q)` and `r(q)`: the states a sampler draws to cover its set —
+    /// uniform and informed draws, and the obstacle-based samplers' states, which stand in for
+    /// draws of the set as in MIT* — but not [`NearTerminal`](Self::NearTerminal) states,
+    /// clustered around the start and the goals, which would make the set look more densely
+    /// sampled than it is (and the radius too small for asymptotic optimality).
+    ///
+    /// ```
+    /// use samplers::SampleOrigin;
+    /// assert!(SampleOrigin::Drawn.counts_toward_density());
+    /// assert!(SampleOrigin::Gaussian.counts_toward_density());
+    /// assert!(!SampleOrigin::NearTerminal.counts_toward_density());
+    /// ```
+    pub fn counts_toward_density(self) -> bool {
+        !matches!(self, Self::NearTerminal)
+    }
+}
+
 /// Draws valid states for a planner (OMPL's `ValidStateSampler`, made informed).
 ///
 /// A sampler is seeded and owns its random generator: the same seed gives the same sequence of

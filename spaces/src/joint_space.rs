@@ -4,7 +4,7 @@ use std::f64::consts::{PI, TAU};
 
 use rand::{Rng, RngExt};
 
-use crate::{SpaceError, StateSpace};
+use crate::{SpaceError, StateSpace, reflect_into_interval};
 
 /// How a joint moves.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -244,6 +244,16 @@ impl StateSpace for JointSpace {
                 wrap_angle(*x)
             } else {
                 x.clamp(self.lower[i], self.upper[i])
+            };
+        }
+    }
+
+    fn reflect_into_bounds(&self, state: &mut [f64]) {
+        for (i, x) in state.iter_mut().enumerate() {
+            *x = if self.wraps[i] {
+                wrap_angle(*x)
+            } else {
+                reflect_into_interval(*x, self.lower[i], self.upper[i])
             };
         }
     }

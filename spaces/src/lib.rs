@@ -32,7 +32,7 @@
 //! | [`States`] | contiguous storage for many states |
 //! | [`Stop`], [`Deadline`], [`Never`] | stop conditions polled by every loop |
 //! | [`SeededRng`] | the project's portable, seedable random generator |
-//! | [`unit_ball_measure`], [`euclidean_distance`], [`wrap_angle`] | geometric helpers |
+//! | [`unit_ball_measure`], [`euclidean_distance`], [`wrap_angle`], [`reflect_into_interval`] | geometric helpers |
 //! | [`short_number`] | numbers for messages (`1e308`, not 309 digits) |
 //! | [`MemoryBudget`] | memory a request may claim, checked before allocating |
 //! | [`SpaceError`] | what is wrong with a space or a state |
@@ -53,7 +53,7 @@ pub use joint_space::{Joint, JointKind, JointSpace, wrap_angle};
 pub use memory_budget::MemoryBudget;
 pub use real_vector_space::{RealVectorSpace, euclidean_distance};
 pub use short_number::short_number;
-pub use state_space::{StateSpace, unit_ball_measure};
+pub use state_space::{StateSpace, reflect_into_interval, unit_ball_measure};
 pub use states::States;
 pub use stop::{Deadline, Never, Stop};
 

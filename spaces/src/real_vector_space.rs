@@ -2,7 +2,7 @@
 
 use rand::{Rng, RngExt};
 
-use crate::{SpaceError, StateSpace};
+use crate::{SpaceError, StateSpace, reflect_into_interval};
 
 /// `R^n` restricted to an axis-aligned box, with the Euclidean metric and linear interpolation.
 ///
@@ -121,6 +121,12 @@ impl StateSpace for RealVectorSpace {
     fn enforce_bounds(&self, state: &mut [f64]) {
         for (x, (&lo, &hi)) in state.iter_mut().zip(self.lower.iter().zip(&self.upper)) {
             *x = x.clamp(lo, hi);
+        }
+    }
+
+    fn reflect_into_bounds(&self, state: &mut [f64]) {
+        for (x, (&lo, &hi)) in state.iter_mut().zip(self.lower.iter().zip(&self.upper)) {
+            *x = reflect_into_interval(*x, lo, hi);
         }
     }
 

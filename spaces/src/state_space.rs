@@ -16,7 +16,7 @@ use crate::SpaceError;
 /// - `distance` is symmetric, non-negative and zero on equal states;
 /// - `interpolate(a, b, 0) == a`, `interpolate(a, b, 1) == b` (up to wrapping), and the result
 ///   of interpolating two states inside the bounds is inside the bounds;
-/// - `enforce_bounds` leaves a state for which `contains` holds;
+/// - `enforce_bounds` and `reflect_into_bounds` leave a state for which `contains` holds;
 /// - `sample_uniform` returns states for which `contains` holds.
 pub trait StateSpace {
     /// Number of coordinates of a state.
@@ -41,6 +41,28 @@ pub trait StateSpace {
 
     /// Moves a state into the bounds: clamps bounded coordinates, wraps periodic ones.
     fn enforce_bounds(&self, state: &mut [f64]);
+
+    /// Moves a state into the bounds by reflecting bounded coordinates at the bounds
+    /// (`x → 2·lower − x` below, `x → 2·upper − x` above, repeated for an overshoot of more
+    /// than the interval) and wrapping periodic ones. Unlike clamping, reflection puts no
+    /// weight on the bounds themselves: a density that spills over a bound folds back inside.
+    /// A non-finite coordinate is clamped as by [`enforce_bounds`](Self::enforce_bounds).
+    ///
+    /// The default is [`enforce_bounds`](Self::enforce_bounds), for spaces without box bounds
+    /// to reflect at; [`RealVectorSpace`](crate::RealVectorSpace) and
+    /// [`JointSpace`](crate::JointSpace) reflect.
+    ///
+    /// ```
+    /// use spaces::{RealVectorSpace, StateSpace};
+    /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
+    /// let mut x = [-0.25, 3.5]; // 0.25 below the bounds, 2.5 above
+    /// space.reflect_into_bounds(&mut x);
+    /// assert_eq!(x, [0.25, 0.5]);
+    /// # Ok::<(), spaces::SpaceError>(())
+    /// ```
+    fn reflect_into_bounds(&self, state: &mut [f64]) {
+        self.enforce_bounds(state);
+    }
 
     /// Lebesgue measure (volume) of the space.
     fn measure(&self) -> f64;
@@ -109,6 +131,9 @@ impl<S: StateSpace + ?Sized> StateSpace for &S {
     fn enforce_bounds(&self, state: &mut [f64]) {
         (**self).enforce_bounds(state);
     }
+    fn reflect_into_bounds(&self, state: &mut [f64]) {
+        (**self).reflect_into_bounds(state);
+    }
     fn measure(&self) -> f64 {
         (**self).measure()
     }
@@ -120,6 +145,36 @@ impl<S: StateSpace + ?Sized> StateSpace for &S {
     }
     fn is_euclidean(&self) -> bool {
         (**self).is_euclidean()
+    }
+}
+
+/// `x` reflected into `[lower, upper]` (see [`StateSpace::reflect_into_bounds`]): unchanged
+/// inside, folded back at the bounds with period `2·(upper − lower)` outside, clamped if not
+/// finite.
+///
+/// ```
+/// assert_eq!(spaces::reflect_into_interval(1.25, 0.0, 1.0), 0.75);
+/// assert_eq!(spaces::reflect_into_interval(-2.25, 0.0, 1.0), 0.25);
+/// assert_eq!(spaces::reflect_into_interval(0.5, 0.0, 1.0), 0.5);
+/// ```
+#[inline]
+pub fn reflect_into_interval(x: f64, lower: f64, upper: f64) -> f64 {
+    if (lower..=upper).contains(&x) {
+        return x;
+    }
+    let width = upper - lower;
+    let folded = (x - lower).rem_euclid(2.0 * width);
+    let y = lower
+        + if folded > width {
+            2.0 * width - folded
+        } else {
+            folded
+        };
+    // Rounding may land an ulp outside; a non-finite `x` (or width) clamps.
+    if y.is_finite() {
+        y.clamp(lower, upper)
+    } else {
+        x.clamp(lower, upper)
     }
 }
 
@@ -137,8 +192,31 @@ pub fn unit_ball_measure(n: usize) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::unit_ball_measure;
+    use super::{reflect_into_interval, unit_ball_measure};
     use std::f64::consts::PI;
+
+    #[test]
+    fn reflection_folds_with_twice_the_width_and_clamps_the_infinite() {
+        let cases = [
+            (0.3, 0.3),
+            (-0.1, 0.1),
+            (1.1, 0.9),
+            (2.1, 0.1),
+            (-1.1, 0.9),
+            (4.0, 0.0),
+            (5.0, 1.0),
+            (-7.25, 0.75),
+        ];
+        for (x, expected) in cases {
+            let y = reflect_into_interval(x, 0.0, 1.0);
+            assert!((y - expected).abs() < 1e-12, "{x} -> {y}, not {expected}");
+        }
+        assert_eq!(reflect_into_interval(f64::INFINITY, -1.0, 2.0), 2.0);
+        assert_eq!(reflect_into_interval(f64::NEG_INFINITY, -1.0, 2.0), -1.0);
+        assert!(reflect_into_interval(f64::NAN, -1.0, 2.0).is_nan());
+        // A huge overshoot still lands inside.
+        assert!((-1.0..=2.0).contains(&reflect_into_interval(1e300, -1.0, 2.0)));
+    }
 
     #[test]
     fn unit_ball_measure_matches_closed_forms() {

@@ -103,6 +103,40 @@ proptest! {
     }
 
     #[test]
+    fn reflect_into_bounds_lands_inside_and_keeps_inside_states(
+        space in joint_spaces(),
+        seed in any::<u64>(),
+        push in -20.0f64..20.0,
+    ) {
+        let (inside, _) = two_states(&space, seed);
+        let mut kept = inside.clone();
+        space.reflect_into_bounds(&mut kept);
+        for (i, joint) in space.joints().iter().enumerate() {
+            if !matches!(joint.kind, spaces::JointKind::Continuous) {
+                prop_assert_eq!(kept[i], inside[i]);
+            }
+        }
+        let mut pushed: Vec<f64> = inside.iter().map(|x| x + push).collect();
+        space.reflect_into_bounds(&mut pushed);
+        prop_assert!(space.contains(&pushed), "{pushed:?} out of bounds after reflect_into_bounds");
+    }
+
+    #[test]
+    fn box_reflection_folds_the_overshoot_back(space in boxes(), seed in any::<u64>(), depth in 0.0f64..1.0) {
+        // A state pushed past a bound by less than the interval comes back as far inside.
+        let (mut a, _) = two_states(&space, seed);
+        let (lower, upper) = (space.lower()[0], space.upper()[0]);
+        let overshoot = depth * (upper - lower);
+        a[0] = lower - overshoot;
+        space.reflect_into_bounds(&mut a);
+        prop_assert!((a[0] - (lower + overshoot)).abs() <= 1e-9 * (1.0 + lower.abs() + upper.abs()));
+        a[0] = upper + overshoot;
+        space.reflect_into_bounds(&mut a);
+        prop_assert!((a[0] - (upper - overshoot)).abs() <= 1e-9 * (1.0 + lower.abs() + upper.abs()));
+        prop_assert!(space.contains(&a));
+    }
+
+    #[test]
     fn continuous_joints_wrap(x in -PI..PI, turns in -5i32..5, weight in 0.1f64..3.0) {
         let space = JointSpace::new(vec![Joint::continuous("c").weight(weight)]).unwrap();
         // Adding whole turns does not move the joint.

@@ -105,6 +105,9 @@ pub struct RandomGeometricGraph {
     pub(crate) prune_ids: Vec<u32>,
     /// The next of `prune_ids` to remove, while a pruning is interrupted.
     pub(crate) prune_next: Option<usize>,
+    /// Live vertices whose states do not count toward the sampling density (drawn near the
+    /// terminals: [`SampleOrigin::counts_toward_density`](samplers::SampleOrigin)).
+    clustered: usize,
 }
 
 impl RandomGeometricGraph {
@@ -132,6 +135,7 @@ impl RandomGeometricGraph {
             removals: 0,
             prune_ids: Vec::new(),
             prune_next: None,
+            clustered: 0,
         }
     }
 
@@ -139,6 +143,7 @@ impl RandomGeometricGraph {
     /// [`commit`](Self::commit)).
     pub(crate) fn add_vertex(&mut self, state: &[f64], vertex: Vertex) -> u32 {
         let id = self.graph.add_node(()).index();
+        self.clustered += usize::from(!vertex.origin.counts_toward_density());
         if id == self.states.len() {
             self.states.push(state);
             self.vertices.push(vertex);
@@ -282,6 +287,9 @@ impl RandomGeometricGraph {
             self.edges.remove(&pair(v, w.index() as u32));
         }
         self.graph.remove_node(node);
+        if !self.vertices[v as usize].origin.counts_toward_density() {
+            self.clustered -= 1;
+        }
         self.births[v as usize] = DEAD;
         self.lists[v as usize].clear();
         self.removals += 1;
@@ -292,6 +300,14 @@ impl RandomGeometricGraph {
     /// Number of vertices (samples, start and goals).
     pub fn vertex_count(&self) -> usize {
         self.graph.node_count()
+    }
+
+    /// Number of vertices that count in the sample number `q` of the connection rules `k(q)`
+    /// and `r(q)`: the start, the goals and every sample but those drawn near the terminals
+    /// ([`SampleOrigin::counts_toward_density`](samplers::SampleOrigin::counts_toward_density)),
+    /// which would make the graph look denser than the sampler's coverage of its set.
+    pub fn density_count(&self) -> usize {
+        self.vertex_count() - self.clustered
     }
 
     /// Number of stored (checked) edges, white-, black- or not yet listed.

@@ -36,9 +36,12 @@ where
         }
     }
 
-    /// Sets `k` or `r` for the current number of vertices `q` (start and goals included).
+    /// Sets `k` or `r` for the current number of vertices `q` (start and goals included),
+    /// counting only the vertices that stand for the sampler's coverage of its set: states
+    /// drawn near the terminals ([`NearTerminals`](samplers::NearTerminals)) are left out, so
+    /// the rules keep the rewire factor `η` they are given for the wrapped sampler's density.
     pub(crate) fn update_neighbourhood(&mut self) -> f64 {
-        let q = self.graph.vertex_count();
+        let q = self.graph.density_count();
         let n = self.space.dimension();
         let eta = self.parameters.rewire_factor;
         match self.parameters.connection {

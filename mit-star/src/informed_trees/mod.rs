@@ -14,7 +14,8 @@
 //! - `reverse_search.rs` and `reverse_queue.rs`: the lazy reverse search from the goals
 //!   (sparse checks) and its edge queue; `reverse_repair/`: AIT*'s in-place repair of the
 //!   reverse tree, with its tests.
-//! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches.
+//! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches;
+//!   `batch_tests.rs`: the sample count of its connection rules.
 //!
 //! May use: `graph` (the RGG, its vertices, neighbour lists, forward tree and pruning),
 //! `nearest` only through `graph`, the public API at the top of the crate (termination,
@@ -23,6 +24,8 @@
 
 mod aliases;
 mod batch;
+#[cfg(test)]
+mod batch_tests;
 mod eit;
 mod forward_queue;
 mod forward_search;

@@ -10,7 +10,12 @@ use crate::SamplerError;
 /// Draws a state from `N(x, σ² I)` around a state `x` and moves it into the bounds.
 ///
 /// The perturbation is isotropic in coordinates; the result is clamped into the bounds (wrapping
-/// coordinates are wrapped) with the space's `enforce_bounds`, so it always lies in the space.
+/// coordinates are wrapped) with the space's `enforce_bounds`, so it always lies in the space —
+/// as OMPL's `sampleGaussian` does for the Gaussian, bridge-test and adaptive samplers. A
+/// [`reflecting`](Self::reflecting) step reflects at the bounds instead
+/// ([`StateSpace::reflect_into_bounds`]), so no draws pile up on them (a joint limit next to a
+/// terminal would otherwise collect every draw that spills over it): the step of
+/// [`NearTerminals`](crate::NearTerminals).
 ///
 /// ```
 /// use rand::SeedableRng;
@@ -29,6 +34,8 @@ use crate::SamplerError;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GaussianStep {
     std_dev: f64,
+    /// Reflect at the bounds rather than clamp onto them.
+    reflect: bool,
 }
 
 impl GaussianStep {
@@ -46,7 +53,23 @@ impl GaussianStep {
                 value: std_dev,
             });
         }
-        Ok(Self { std_dev })
+        Ok(Self {
+            std_dev,
+            reflect: false,
+        })
+    }
+
+    /// This step, reflecting its draws at the bounds ([`StateSpace::reflect_into_bounds`])
+    /// instead of clamping them onto the bounds.
+    #[must_use]
+    pub fn reflecting(mut self) -> Self {
+        self.reflect = true;
+        self
+    }
+
+    /// `true` if draws are reflected at the bounds, `false` if clamped onto them.
+    pub fn reflects(&self) -> bool {
+        self.reflect
     }
 
     /// The default step for `space`: `σ = 0.1 ·` its maximum extent.
@@ -62,7 +85,8 @@ impl GaussianStep {
         self.std_dev
     }
 
-    /// Writes `from + σ · N(0, I)`, moved into the bounds, into `out`.
+    /// Writes `from + σ · N(0, I)`, moved into the bounds (clamped, or reflected by a
+    /// [`reflecting`](Self::reflecting) step), into `out`.
     pub fn perturb<S: StateSpace + ?Sized>(
         &self,
         space: &S,
@@ -74,7 +98,11 @@ impl GaussianStep {
             let z: f64 = StandardNormal.sample(rng);
             *o = x + self.std_dev * z;
         }
-        space.enforce_bounds(out);
+        if self.reflect {
+            space.reflect_into_bounds(out);
+        } else {
+            space.enforce_bounds(out);
+        }
     }
 }
 
@@ -124,5 +152,24 @@ mod tests {
             step.perturb(&space, &mut rng, &[0.5; 3], &mut x);
             assert!(space.contains(&x));
         }
+    }
+
+    #[test]
+    fn reflecting_steps_fold_back_inside_and_leave_the_bounds_empty() {
+        let space = RealVectorSpace::cube(2, 0.0, 1.0).unwrap();
+        let step = GaussianStep::new(0.3).unwrap().reflecting();
+        assert!(step.reflects() && !GaussianStep::new(0.3).unwrap().reflects());
+        let mut rng = SeededRng::seed_from_u64(5);
+        let mut x = [0.0; 2];
+        let mut near_edge = 0;
+        for _ in 0..2000 {
+            // From a corner: about three quarters of the raw draws leave the square.
+            step.perturb(&space, &mut rng, &[0.0, 0.0], &mut x);
+            assert!(space.contains(&x));
+            assert!(x.iter().all(|&c| c > 0.0 && c < 1.0), "{x:?} on a bound");
+            near_edge += usize::from(x[0] < 0.1);
+        }
+        // Folded: |N(0, 0.3²)| puts about 26 % below 0.1.
+        assert!((400..650).contains(&near_edge), "{near_edge}");
     }
 }
