@@ -44,8 +44,17 @@ impl RobotModel {
     /// [`ModelError::UnknownLink`] for a pair naming a link the robot does not have (else
     /// such pairs are skipped and a [`ModelWarning`] names them).
     pub fn with_srdf_str(self, text: &str) -> Result<Self, ModelError> {
-        let pairs = crate::model::srdf::disabled_pairs(text, "SRDF text")?;
-        self.disable(&pairs, "SRDF text")
+        self.with_srdf_named(text, "SRDF text")
+    }
+
+    /// As [`with_srdf_str`](Self::with_srdf_str), errors and warnings naming the document
+    /// `origin` (a file name, say, for an SRDF compiled in).
+    ///
+    /// # Errors
+    /// As [`with_srdf_str`](Self::with_srdf_str).
+    pub fn with_srdf_named(self, text: &str, origin: &str) -> Result<Self, ModelError> {
+        let pairs = crate::model::srdf::disabled_pairs(text, origin)?;
+        self.disable(&pairs, origin)
     }
 
     /// Applies an SRDF file (see [`with_srdf_str`](Self::with_srdf_str)).

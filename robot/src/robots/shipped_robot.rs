@@ -97,7 +97,7 @@ impl ShippedRobot {
     pub fn model(&self, strict: bool) -> Result<RobotModel, ModelError> {
         RobotModel::from_urdf_str(self.urdf)?
             .strict(strict)
-            .with_srdf_str(self.srdf)
+            .with_srdf_named(self.srdf, &format!("robot/data/{0}/{0}.srdf", self.name))
             .map(RobotModel::without_model_pairs)
     }
 }
@@ -149,5 +149,9 @@ mod tests {
         assert!(!fetch.model(false).unwrap().warnings().is_empty());
         let e = fetch.model(true).unwrap_err();
         assert!(matches!(e, ModelError::UnknownLink { .. }), "{e}");
+        assert!(
+            e.to_string().starts_with("robot/data/fetch/fetch.srdf: "),
+            "{e}"
+        );
     }
 }
