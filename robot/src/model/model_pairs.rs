@@ -168,3 +168,56 @@ fn unit(state: &mut u64) -> f64 {
     z ^= z >> 31;
     (z >> 11) as f64 / (1u64 << 53) as f64
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn links_without_spheres_join_their_neighbours() {
+        let urdf = include_str!("../../data/ur5/ur5_spherized.urdf");
+        let ur5 = RobotModel::from_urdf_str(urdf).unwrap();
+        let name = |(a, b): (usize, usize)| {
+            let links = ur5.links();
+            (links[a].name.as_str(), links[b].name.as_str())
+        };
+        let adjacent: Vec<_> = ur5.adjacent_link_pairs().into_iter().map(name).collect();
+        // Joined by a joint.
+        assert!(
+            adjacent.contains(&("wrist_1_link", "wrist_2_link")),
+            "{adjacent:?}"
+        );
+        // Through `ee_link`, which has no spheres.
+        assert!(
+            adjacent.contains(&("wrist_3_link", "fts_robotside")),
+            "{adjacent:?}"
+        );
+        // Two joints apart: not adjacent.
+        assert!(
+            !adjacent.contains(&("wrist_2_link", "fts_robotside")),
+            "{adjacent:?}"
+        );
+        let without = ur5.clone().without_model_pairs();
+        assert!(without.self_collision_pairs().len() < ur5.self_collision_pairs().len());
+        assert!(matches!(
+            without.warnings(),
+            [
+                ModelWarning::DisabledPairs {
+                    reason: "adjacent",
+                    ..
+                },
+                ..
+            ]
+        ));
+    }
+
+    #[test]
+    fn the_default_configuration_is_zero_or_the_middle_of_the_limits() {
+        let urdf = include_str!("../../tests/data/two_link.urdf")
+            .replace(r#"lower="0.0" upper="0.3""#, r#"lower="0.1" upper="0.3""#);
+        let robot = RobotModel::from_urdf_str(&urdf).unwrap();
+        let q = robot.default_configuration();
+        assert_eq!(q[0], 0.0);
+        assert!((q[1] - 0.2).abs() < 1e-12, "{q:?}");
+    }
+}
