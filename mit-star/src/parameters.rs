@@ -147,9 +147,9 @@ pub struct Parameters {
     /// ABIT*'s inflation scaling `s ≥ 0`: a batch's second search orders by
     /// `g + ĉ + (1 + s/q)·ĥ` (`None`: 0 for BIT*, 10 for ABIT*).
     pub inflation_scaling: Option<f64>,
-    /// ABIT*'s truncation scaling `t ≥ 0`: a batch's search stops once
-    /// `(1 + t/q)·(g + ĉ + ĥ)` of every queued edge reaches the solution cost (`None`: 0 for
-    /// BIT*, 5 for ABIT*).
+    /// ABIT*'s truncation scaling `t ≥ 0`: a batch's search stops at the first edge it takes
+    /// whose `(1 + t/q)·(g + ĉ + ĥ)` reaches the solution cost, or once every queued edge's does
+    /// (`None`: 0 for BIT*, 5 for ABIT*).
     pub truncation_scaling: Option<f64>,
     /// BIT*-family rewirings: a forward expansion queues edges to vertices already in the tree
     /// on every expansion (`true`), or only on a vertex's first expansion that meets any

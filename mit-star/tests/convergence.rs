@@ -80,13 +80,18 @@ fn dividing_walls_r2_cost_converges_toward_the_optimum() {
         .unwrap();
     let optimum = problem.optimum().unwrap();
     // Iterations include every reverse-search step: 282 000 in all are about 0.25 s in release.
-    let costs = costs_over_time(&problem, &[2_000, 30_000, 250_000], 5, true);
-    assert!(costs[0].is_finite(), "{costs:?}");
-    assert!(costs[2] < costs[0], "{costs:?}");
-    assert!(
-        costs[2] / optimum - 1.0 < 0.08,
-        "within 8 % of {optimum}: {costs:?}"
-    );
+    // Six seeds: a run can stay in another homotopy class at this budget (seed 5 ends 14.6 %
+    // above the optimum through another gap; 19 of seeds 0–19 end within 0.4 %).
+    let mut close = 0;
+    for seed in 0..6 {
+        let costs = costs_over_time(&problem, &[2_000, 30_000, 250_000], seed, true);
+        assert!(costs[0].is_finite(), "seed {seed}: {costs:?}");
+        assert!(costs[2] < costs[0], "seed {seed}: {costs:?}");
+        if costs[2] / optimum - 1.0 < 0.02 {
+            close += 1;
+        }
+    }
+    assert!(close >= 5, "{close} of 6 seeds within 2 % of {optimum}");
 }
 
 /// The conformance suite's convergence requirement, for every asymptotically optimal planner

@@ -1,4 +1,5 @@
-//! Tests of a batch: the sample count its connection rules use.
+//! Tests of a batch: the sample count its connection rules use, and where ABIT*'s search of it
+//! ends.
 
 use samplers::{InformedSampler, NearTerminals, SampleOrigin};
 use spaces::StateSpace;
@@ -6,7 +7,7 @@ use validity::{FixedSparseChecker, World};
 
 use crate::graph::Neighbourhood;
 use crate::termination::SolveStop;
-use crate::{Connection, Eit, IterationLimit, k_nearest, r_disc};
+use crate::{BitStar, Connection, Eit, IterationLimit, k_nearest, r_disc};
 
 /// EIT* with half of its samples drawn near the start and the goal.
 type NearEit =
@@ -55,4 +56,51 @@ fn states_near_the_terminals_are_left_out_of_the_connection_rules() {
         };
         assert_eq!(graph.neighbourhood, expected, "{connection:?}");
     }
+}
+
+#[test]
+fn abit_star_ends_a_batch_search_at_the_first_truncated_edge() {
+    let problem = problems::DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    let mut planner = BitStar::for_problem(&problem)
+        .abit_star()
+        .seed(2)
+        .batch_size(200)
+        .build()
+        .unwrap();
+    planner.setup(&stop).unwrap();
+    // Edges taken that failed the truncation test `(g + ĉ + ĥ)·truncation < c_best`, and how
+    // many of them the search went on after.
+    let (mut truncated, mut went_on) = (0, 0);
+    while planner.counters.batches < 6 && planner.counters.iterations < 200_000 {
+        // The edge a forward step would take, and whether it fails the test.
+        let fails = planner.best_cost.is_finite()
+            && planner
+                .forward
+                .peek(planner.front())
+                .is_some_and(|(edge, _)| {
+                    let (source, target) = (edge.source, edge.target);
+                    let g = planner.graph.vertex(source).g;
+                    let h = planner.forward_h(target);
+                    planner.graph.vertex(target).parent != source
+                        && (g + edge.cost + h) * planner.truncation >= planner.best_cost
+                });
+        let steps = planner.counters.forward_iterations;
+        planner.iterate(&stop);
+        if fails && planner.counters.forward_iterations == steps + 1 {
+            truncated += 1;
+            went_on += usize::from(planner.continue_forward());
+        }
+    }
+    assert!(planner.truncation > 1.0 && planner.best_cost.is_finite());
+    assert!(truncated > 0, "no edge failed the truncation test");
+    assert_eq!(
+        went_on, 0,
+        "the search went on after {went_on} of {truncated}"
+    );
 }

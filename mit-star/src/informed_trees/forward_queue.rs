@@ -175,7 +175,9 @@ impl ForwardQueue {
         };
         let id = match self.free.pop() {
             Some(id) => {
-                self.slots[id as usize] = slot;
+                // A new version: the heaps may still hold entries of the slot's last edge.
+                let version = self.slots[id as usize].version.wrapping_add(1);
+                self.slots[id as usize] = Slot { version, ..slot };
                 id
             }
             None => {
@@ -479,6 +481,21 @@ mod tests {
         // Only the unreached target is left: its lower key is infinite.
         assert_eq!(q.pop(Front::Greedy).unwrap().0.target, 3);
         assert!(q.is_empty() && q.pop(Front::Greedy).is_none());
+    }
+
+    #[test]
+    fn a_reused_slot_is_not_taken_for_its_last_edge() {
+        // The popped edge's entries stay in the heaps; the next edge inserted takes its slot
+        // and must be ordered by its own keys, not the popped edge's.
+        let mut q = ForwardQueue::default();
+        q.insert_or_update(edge(0, 1), keys(1.0, 1.0, 1), true);
+        q.insert_or_update(edge(0, 2), keys(2.0, 2.0, 2), true);
+        assert_eq!(q.pop(Front::Estimated).unwrap().0.target, 1);
+        q.insert_or_update(edge(1, 3), keys(3.0, 3.0, 3), true);
+        for front in [Front::Estimated, Front::Optimal, Front::Greedy] {
+            assert_eq!(q.peek(front).unwrap().0.target, 2, "{front:?}");
+        }
+        assert_eq!(q.min_lower(), 2.0);
     }
 
     #[test]

@@ -41,6 +41,14 @@ where
         !self.forward.is_empty() && self.forward.min_lower() * self.truncation < self.best_cost
     }
 
+    /// `true` if the search of a batch ends at the first edge it takes that fails the
+    /// truncation test `(g + ĉ + ĥ) · truncation < c_best`, as ABIT*'s does: the a-priori
+    /// guidance with a truncation factor above 1. BIT* (factor 1) skips such an edge and
+    /// goes on, as do the guidances with a reverse search, whose own rules end a search.
+    fn truncates(&self) -> bool {
+        G::REVERSE == ReverseSearch::None && self.truncation > 1.0
+    }
+
     /// Queues `edge` with its current keys.
     fn queue_forward(&mut self, edge: ForwardEdge) {
         let keys = forward_keys(&self.graph, self.key_rule(), &edge);
@@ -142,11 +150,16 @@ where
         }
         let g_u = self.graph.vertex(u).g;
         let (g_v, h_v) = (target.g, self.forward_h(v));
-        if g_u + edge.cost >= g_v {
-            return;
-        }
         if self.best_cost.is_finite() && (g_u + edge.cost + h_v) * self.truncation >= self.best_cost
         {
+            if self.truncates() {
+                // ABIT* (OMPL's `isSearchDone_`): the queue is in order, so no later edge
+                // passes either — the batch's search ends here.
+                self.forward.clear();
+            }
+            return;
+        }
+        if g_u + edge.cost >= g_v {
             return;
         }
         let record = self.graph.edge(u, v);

@@ -15,7 +15,8 @@
 //!   (sparse checks) and its edge queue; `reverse_repair/`: AIT*'s in-place repair of the
 //!   reverse tree, with its tests.
 //! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches;
-//!   `batch_tests.rs`: the sample count of its connection rules.
+//!   `batch_tests.rs`: the sample count of its connection rules, and where ABIT*'s search of a
+//!   batch ends.
 //!
 //! May use: `graph` (the RGG, its vertices, neighbour lists, forward tree and pruning),
 //! `nearest` only through `graph`, the public API at the top of the crate (termination,

@@ -81,7 +81,7 @@ fn a_repaired_search_reaches_the_fixpoint_of_a_restart() {
     let limit = IterationLimit::new(u64::MAX);
     let stop = SolveStop::new(&limit);
     let (mut compared, mut widest) = (0, 0);
-    for seed in 0..40 {
+    for seed in 0..80 {
         let mut planner = Ait::for_problem(&problem)
             .seed(seed)
             .connection(Connection::RDisc)
@@ -90,9 +90,9 @@ fn a_repaired_search_reaches_the_fixpoint_of_a_restart() {
             .build()
             .unwrap();
         planner.setup(&stop).unwrap();
-        // Stop right after the first repair of a branch of eight vertices or more.
+        // Stop right after the first repair of a branch of six vertices or more.
         let mut branch = 0;
-        while branch < 8
+        while branch < 6
             && planner.best_cost.is_infinite()
             && planner.counters.batches <= 1
             && planner.counters.iterations < 1_000_000
@@ -104,7 +104,7 @@ fn a_repaired_search_reaches_the_fixpoint_of_a_restart() {
             }
         }
         assert_eq!(planner.counters.reverse_restarts, 0, "AIT* restarted");
-        if branch < 8
+        if branch < 6
             || planner.best_cost.is_finite()
             || planner.counters.batches != 1
             || planner.reverse_restart_pending
