@@ -12,7 +12,8 @@
 //! (joint-space path length) of the best path at 10 ms, 100 ms and 1 s (a run without a path by
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
-//! (`simplify_solutions=true`, `aorrtc_simplify=false`, …); `csv=FILE` also writes one line per
+//! (`simplify_solutions=true`, `aorrtc_simplify=false`, `batch_size=200`, `rewire_factor=1.5`,
+//! `near_terminals=0.3`, …); `csv=FILE` also writes one line per
 //! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
 //! `benches/peers/vamp/anytime_table.py`.
 
@@ -52,12 +53,16 @@ fn main() {
             csv = Some(file);
             continue;
         }
-        let on = value.parse::<bool>().expect("true or false");
+        let on = || value.parse::<bool>().expect("true or false");
+        let number = || value.parse::<f64>().expect("a number");
         match key {
-            "simplify_solutions" => base.simplify_solutions = on,
-            "aorrtc_simplify" => base.aorrtc_simplify = on,
-            "rrt_dynamic_domain" => base.rrt_dynamic_domain = on,
-            other => panic!("unknown switch {other}"),
+            "simplify_solutions" => base.simplify_solutions = on(),
+            "aorrtc_simplify" => base.aorrtc_simplify = on(),
+            "rrt_dynamic_domain" => base.rrt_dynamic_domain = on(),
+            "batch_size" => base.batch_size = number() as usize,
+            "rewire_factor" => base.rewire_factor = number(),
+            "near_terminals" => base.near_terminals = Some(number()),
+            other => panic!("unknown parameter {other}"),
         }
     }
     let configurations: Vec<Configuration> = names

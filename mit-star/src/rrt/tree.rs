@@ -111,35 +111,6 @@ impl Tree {
         }
         true
     }
-    /// Every state within `radius` of `target` in `found` (`(squared distance, id)`, nearest
-    /// first), by the kd-trees in a Euclidean space, else by a scan with the space's metric.
-    /// `false` (and `found` incomplete) if `stop` fired first.
-    pub(crate) fn within<S: StateSpace>(
-        &mut self,
-        space: &S,
-        target: &[f64],
-        radius: f64,
-        found: &mut Neighbours,
-        stop: &dyn Stop,
-    ) -> bool {
-        if space.is_euclidean() {
-            return self
-                .nn
-                .within_alive(target, radius, found, Alive::All, stop);
-        }
-        found.reset(usize::MAX);
-        for (id, state) in self.states.iter().enumerate() {
-            if id % 4096 == 4095 && stop.should_stop() {
-                return false;
-            }
-            let d = space.distance(state, target);
-            if d <= radius {
-                found.push_unordered(d * d, id as u32);
-            }
-        }
-        found.sort();
-        true
-    }
 }
 
 /// Writes to `out` the state at most `range` from `from` towards `target` (`target` itself when

@@ -18,6 +18,12 @@ use crate::{
 };
 use search::{AoxTrees, Found};
 
+/// A search whose trees hold this many states without finding a cheaper path starts afresh
+/// under the same bound (VAMP's AORRTC caps a search at 100 000 samples and iterations): the
+/// cost of an iteration stays bounded once the best path is near the optimum, where searches
+/// seldom succeed.
+const MAX_SEARCH_STATES: usize = 10_000;
+
 /// AORRTC (Wilson et al., "AORRTC: Almost-surely asymptotically optimal planning with
 /// RRT-Connect", 2025): [`RrtConnect`] finds a first solution; then, again and again, a fresh
 /// pair of trees searches for a path cheaper than the best one, and every path found becomes the
@@ -32,7 +38,8 @@ use search::{AoxTrees, Found};
 /// redrawn bounds (`aorrtc_resamples`). The other tree is joined, step by step, from the new
 /// state to its nearest state that keeps the path under `c`. A path found is certified, then
 /// shortened by a [`PathSimplifier`] (`aorrtc_simplify`), and the next search starts under its
-/// cost. The searches stop when the best cost reaches the straight-line lower bound.
+/// cost. A search whose trees reach 10 000 states without success starts afresh under the same
+/// bound. The searches stop when the best cost reaches the straight-line lower bound.
 ///
 /// RRT-Connect's switches (`rrt_dynamic_domain`, `rrt_balance`, `rrt_halton`,
 /// `rrt_valid_samples`) apply to the first search, and the first two to the cost-bounded ones.
@@ -216,7 +223,7 @@ where
         }
         self.connect.core.counters.iterations += 1;
         let best = self.best_cost();
-        if self.search.bound != best {
+        if self.search.bound != best || self.search.size() >= MAX_SEARCH_STATES {
             let core = &self.connect.core;
             self.search.restart(&core.start, &core.goals, best);
             self.searches += 1;

@@ -62,6 +62,11 @@ impl AoxTrees {
         self.connection = None;
     }
 
+    /// States in both trees.
+    pub(super) fn size(&self) -> usize {
+        self.costs[0].len() + self.costs[1].len()
+    }
+
     fn add(&mut self, t: usize, state: &[f64], parent: u32, cost: f64) -> u32 {
         self.costs[t].push(cost);
         self.trees[t].add(state, parent)
@@ -290,9 +295,21 @@ where
     }
 }
 
+/// The nearest states [`nearest_within_cost`] looks at first; it looks at four times as many
+/// each round, up to [`MAX_CANDIDATES`].
+const FIRST_CANDIDATES: usize = 8;
+
+/// The most states [`nearest_within_cost`] looks at before it takes the root.
+const MAX_CANDIDATES: usize = 32;
+
 /// The state of tree `t` nearest to `core.target` among those that reach it within cost
-/// `c_rand` (cost-to-come plus distance), else `root` (whose cost is 0), with its distance to
-/// the target. Only states nearer than the root are candidates. `None` if the stop fired.
+/// `c_rand` (cost-to-come plus distance), else `root` (whose cost is 0 and which always does),
+/// with its distance to the target. Only states nearer than the root are candidates, and only
+/// the [`MAX_CANDIDATES`] nearest: past them the root is taken (VAMP's AORRTC looks at every
+/// state within the root's distance, which costs time linear in the tree per query once a search
+/// near the optimum grows large). The nearest states are fetched in rounds of growing size, so
+/// the usual query, whose nearest state qualifies, costs one small k-nearest search. `None` if
+/// the stop fired.
 fn nearest_within_cost<S, V, Smp, E>(
     search: &mut AoxTrees,
     core: &mut RrtCore<S, V, Smp, E>,
@@ -306,22 +323,30 @@ where
 {
     core.counters.neighbour_queries += 1;
     let tree = &mut search.trees[t];
+    let size = tree.parents.len();
     let radius = core.space.distance(tree.state(root), &core.target);
-    if !tree.within(
-        &core.space,
-        &core.target,
-        radius,
-        &mut core.neighbours,
-        stop,
-    ) {
-        return None;
-    }
     let costs = &search.costs[t];
-    let found = core.neighbours.iter().find_map(|&(d2, id)| {
-        let d = d2.sqrt();
-        (tree.parents[id as usize] == ROOT || costs[id as usize] + d <= c_rand).then_some((id, d))
-    });
-    Some(found.unwrap_or((root, radius)))
+    let mut k = FIRST_CANDIDATES;
+    let mut seen = 0;
+    loop {
+        if !tree.nearest(&core.space, &core.target, k, &mut core.neighbours, stop) {
+            return None;
+        }
+        for &(d2, id) in core.neighbours.iter().skip(seen) {
+            let d = d2.sqrt();
+            if d >= radius {
+                return Some((root, radius));
+            }
+            if tree.parents[id as usize] == ROOT || costs[id as usize] + d <= c_rand {
+                return Some((id, d));
+            }
+        }
+        seen = core.neighbours.len();
+        if seen >= size || k >= MAX_CANDIDATES {
+            return Some((root, radius));
+        }
+        k *= 4;
+    }
 }
 
 /// Checks the motion `from → core.candidate` at full resolution, then the candidate itself.
