@@ -257,7 +257,9 @@ fn the_database_has_planner_arenas_schema_and_appends() {
         )
         .unwrap();
     assert!(
-        settings.starts_with("accelerated_checks = true\n;batch_size = 50\n;"),
+        settings.starts_with(
+            "accelerated_checks = true\n;aorrtc_resamples = 1000\n;aorrtc_simplify = true\n;batch_size = 50\n;"
+        ),
         "{settings:?}"
     );
     drop(db);

@@ -284,7 +284,7 @@ mod tests {
         let m = message(o.clone().with_assignment("batch_sise=3"));
         assert!(
             m.starts_with(
-                "parameter `batch_sise`: unknown parameter; valid parameters: accelerated_checks, batch_size"
+                "parameter `batch_sise`: unknown parameter; valid parameters: accelerated_checks, aorrtc_resamples, aorrtc_simplify, batch_size"
             ),
             "{m}"
         );
