@@ -33,8 +33,10 @@ const MAX_SEARCH_STATES: usize = 10_000;
 /// informed set of the best cost `c` (direct informed sampling), each with a cost bound drawn
 /// uniformly between the least cost a path through it could have to come (its distance to the
 /// tree's root) and what `c` leaves after the distance to the other tree's root. The tree grows
-/// from the nearest state whose cost-to-come plus distance stays within that bound (the root
-/// if none), by at most [`range`](Self::range); the new state then seeks cheaper parents under
+/// from the nearest state whose cost-to-come plus distance stays within that bound — among the
+/// 32 nearest states closer than the root, else the root — by at most [`range`](Self::range)
+/// (VAMP's AORRTC looks through every state closer than the root, at a cost linear in the tree
+/// per query); the new state then seeks cheaper parents under
 /// redrawn bounds (`aorrtc_resamples`). The other tree is joined, step by step, from the new
 /// state to its nearest state that keeps the path under `c`. A path found is certified, then
 /// shortened by a [`PathSimplifier`] (`aorrtc_simplify`), and the next search starts under its
