@@ -13,7 +13,7 @@
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
 //! (`simplify_solutions=true`, `aorrtc_simplify=false`, `batch_size=200`, `rewire_factor=1.5`,
-//! `near_terminals=0.3`, …); `csv=FILE` also writes one line per
+//! `near_terminals=0.3`, …; `scenes=cage,box` for some scenes only); `csv=FILE` also writes one line per
 //! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
 //! `benches/peers/vamp/anytime_table.py`.
 
@@ -41,8 +41,13 @@ fn main() {
     let seconds: f64 = args.next().map_or(1.0, |a| a.parse().expect("seconds"));
     let mut base = Parameters::default();
     let mut csv = None;
+    let mut scenes: Vec<String> = SCENES.iter().map(|s| (*s).to_owned()).collect();
     for setting in args {
         let (key, value) = setting.split_once('=').expect("key=value");
+        if key == "scenes" {
+            scenes = value.split(',').map(|v| format!("{v}_panda")).collect();
+            continue;
+        }
         if key == "csv" {
             let mut file = std::fs::File::create(value).expect("a writable CSV file");
             writeln!(
@@ -74,7 +79,7 @@ fn main() {
     );
     println!("|---|---|---|---|---|---|---|---|---|");
     let mut pooled = vec![Vec::new(); configurations.len() * MOMENTS.len()];
-    for scene in SCENES {
+    for scene in &scenes {
         let loaded = problems(&folder, scene, count);
         for (p, &configuration) in configurations.iter().enumerate() {
             let (mut first, mut line) = (Vec::new(), Vec::new());
