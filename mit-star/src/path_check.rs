@@ -26,6 +26,23 @@ pub struct PathVerdict {
     pub cost: f64,
 }
 
+/// [`BuildError::BadPath`] unless `path` has at least two states, each of the space's dimension
+/// and finite.
+pub(crate) fn check_states<S: StateSpace>(space: &S, path: &[Vec<f64>]) -> Result<(), BuildError> {
+    let dimension = space.dimension();
+    let bad = path
+        .iter()
+        .position(|s| s.len() != dimension || s.iter().any(|x| !x.is_finite()));
+    if path.len() < 2 || bad.is_some() {
+        return Err(BuildError::BadPath {
+            states: path.len(),
+            state: bad.unwrap_or(path.len()),
+            dimension,
+        });
+    }
+    Ok(())
+}
+
 /// Moves the first state of `path` onto the problem's start and the last onto the goal it is
 /// nearest to, if they are within `tolerance` per coordinate (a path from a planner that
 /// computes in `f32`); `false` (and `path` unchanged) if they are not, or the path is empty.
@@ -74,17 +91,7 @@ pub fn check_path<P: PlanningProblem>(
 ) -> Result<PathVerdict, BuildError> {
     let space = problem.space();
     let validity = problem.validity();
-    let dimension = space.dimension();
-    let bad = path
-        .iter()
-        .position(|s| s.len() != dimension || s.iter().any(|x| !x.is_finite()));
-    if path.len() < 2 || bad.is_some() {
-        return Err(BuildError::BadPath {
-            states: path.len(),
-            state: bad.unwrap_or(path.len()),
-            dimension,
-        });
-    }
+    check_states(space, path)?;
     let mut checker = DenseChecker::new(problem.check_step()?)?;
     let certification = problem.certification();
     let close = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tolerance);

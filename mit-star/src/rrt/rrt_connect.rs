@@ -5,11 +5,10 @@ use spaces::{StateSpace, States, Stop};
 use validity::{Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::rrt::rrt_core::{RrtCore, problem_parts};
-use crate::rrt::tree::{ROOT, Tree, steer};
+use crate::rrt::tree::{ROOT, Tree, snapshot_of, steer};
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Outcome, Parameters, Planner, PlannerError, Snapshot, Termination, Trace,
-    VertexKind,
 };
 
 /// RRT-Connect (Kuffner & LaValle, ICRA 2000): a tree from the start and a tree from the goals
@@ -480,35 +479,7 @@ where
     }
 
     fn snapshot(&self) -> Option<Snapshot> {
-        let mut states = States::new(self.core.space.dimension());
-        let mut kinds = Vec::new();
-        let mut edges = [Vec::new(), Vec::new()];
-        for (t, tree) in self.trees.iter().enumerate() {
-            let offset = states.len();
-            for (id, state) in tree.states.iter().enumerate() {
-                states.push(state);
-                let parent = tree.parents[id];
-                kinds.push(match (t, parent) {
-                    (0, ROOT) => VertexKind::Start,
-                    (_, ROOT) => VertexKind::Goal,
-                    _ => VertexKind::Sample,
-                });
-                if parent != ROOT {
-                    edges[t].push((offset + parent as usize, offset + id));
-                }
-            }
-        }
-        let [forward_edges, reverse_edges] = edges;
-        Some(Snapshot {
-            states,
-            origins: vec![samplers::SampleOrigin::Drawn; kinds.len()],
-            kinds,
-            forward_edges,
-            reverse_edges,
-            solution: Vec::new(),
-            best_cost: self.best_cost(),
-            estimated_informed_cost: None,
-        })
+        Some(snapshot_of(&self.trees, self.best_cost()))
     }
 }
 

@@ -113,6 +113,40 @@ impl Tree {
     }
 }
 
+/// A [`Snapshot`](crate::Snapshot) of a start tree (0) and a goal tree (1): their states, the
+/// start tree's edges as forward edges and the goal tree's as reverse ones.
+pub(crate) fn snapshot_of(trees: &[Tree; 2], best_cost: f64) -> crate::Snapshot {
+    let mut states = States::new(trees[0].states.dimension());
+    let mut kinds = Vec::new();
+    let mut edges = [Vec::new(), Vec::new()];
+    for (t, tree) in trees.iter().enumerate() {
+        let offset = states.len();
+        for (id, state) in tree.states.iter().enumerate() {
+            states.push(state);
+            let parent = tree.parents[id];
+            kinds.push(match (t, parent) {
+                (0, ROOT) => crate::VertexKind::Start,
+                (_, ROOT) => crate::VertexKind::Goal,
+                _ => crate::VertexKind::Sample,
+            });
+            if parent != ROOT {
+                edges[t].push((offset + parent as usize, offset + id));
+            }
+        }
+    }
+    let [forward_edges, reverse_edges] = edges;
+    crate::Snapshot {
+        states,
+        origins: vec![samplers::SampleOrigin::Drawn; kinds.len()],
+        kinds,
+        forward_edges,
+        reverse_edges,
+        solution: Vec::new(),
+        best_cost,
+        estimated_informed_cost: None,
+    }
+}
+
 /// Writes to `out` the state at most `range` from `from` towards `target` (`target` itself when
 /// it is that close) and returns whether it is `target`.
 pub(crate) fn steer<S: StateSpace>(

@@ -141,16 +141,7 @@ impl PathSimplifier {
     ) -> Result<Simplified, BuildError> {
         let checker = DenseChecker::new(step)?;
         let dimension = space.dimension();
-        let bad = path
-            .iter()
-            .position(|s| s.len() != dimension || s.iter().any(|x| !x.is_finite()));
-        if path.len() < 2 || bad.is_some() {
-            return Err(BuildError::BadPath {
-                states: path.len(),
-                state: bad.unwrap_or(path.len()),
-                dimension,
-            });
-        }
+        crate::path_check::check_states(space, path)?;
         let mut run = Run {
             space,
             validity,

@@ -14,7 +14,7 @@ use crate::rrt::rrt_core::problem_parts;
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, RrtConnect,
-    Snapshot, Termination, Trace, VertexKind,
+    Snapshot, Termination, Trace,
 };
 use search::{AoxTrees, Found};
 
@@ -316,35 +316,10 @@ where
         if self.connect.core.solution.is_none() || self.searches == 0 {
             return self.connect.snapshot();
         }
-        let mut states = States::new(self.connect.core.space.dimension());
-        let mut kinds = Vec::new();
-        let mut edges = [Vec::new(), Vec::new()];
-        for (t, tree) in self.search.trees.iter().enumerate() {
-            let offset = states.len();
-            for (id, state) in tree.states.iter().enumerate() {
-                states.push(state);
-                let parent = tree.parents[id];
-                kinds.push(match (t, parent) {
-                    (0, crate::rrt::tree::ROOT) => VertexKind::Start,
-                    (_, crate::rrt::tree::ROOT) => VertexKind::Goal,
-                    _ => VertexKind::Sample,
-                });
-                if parent != crate::rrt::tree::ROOT {
-                    edges[t].push((offset + parent as usize, offset + id));
-                }
-            }
-        }
-        let [forward_edges, reverse_edges] = edges;
-        Some(Snapshot {
-            states,
-            origins: vec![samplers::SampleOrigin::Drawn; kinds.len()],
-            kinds,
-            forward_edges,
-            reverse_edges,
-            solution: Vec::new(),
-            best_cost: self.best_cost(),
-            estimated_informed_cost: None,
-        })
+        Some(crate::rrt::tree::snapshot_of(
+            &self.search.trees,
+            self.best_cost(),
+        ))
     }
 }
 
