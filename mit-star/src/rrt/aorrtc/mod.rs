@@ -137,10 +137,10 @@ where
     }
 
     /// The simplifier AORRTC uses unless [`set_simplifier`](Self::set_simplifier) replaces it:
-    /// whole shortcuts only, ending after 30 failures in a row. Chosen on the Panda problems
-    /// (`robot/examples/anytime_arm.rs`): per-joint shortcuts make each simplification ten
-    /// times longer (20 ms against 2 ms on a first RRT-Connect path) for paths the following
-    /// searches shorten anyway; 10, 30 and 100 attempts end within 1 % of each other.
+    /// whole shortcuts only, ending after 30 failures in a row. Per-joint shortcuts make a
+    /// simplification of a first RRT-Connect path on the Panda take 10–26 ms instead of 2–3 ms
+    /// (`robot/examples/simplify_paths.rs`, with and without `whole`), for paths the following
+    /// searches shorten anyway.
     pub fn default_simplifier(seed: u64) -> PathSimplifier {
         PathSimplifier::new()
             .seed(seed)
