@@ -32,6 +32,7 @@ pub use compare::CompareArgs;
 pub use listings::{ExperimentsArgs, ProblemsArgs};
 pub use merge::MergeArgs;
 pub use plan::PlanArgs;
+pub use problem_args::ProblemArgs;
 
 use crate::error::HarnessError;
 

@@ -1,0 +1,288 @@
+//! [`PyProblem`] (`mit_star.Problem`): a planning problem — a PDT family by name and
+//! dimension, a TOML problem file, a box world from numpy arrays, or a MotionBenchMaker problem
+//! for a robot — resolved exactly as `mit-star plan --problem … --dim …` resolves it.
+
+use std::path::PathBuf;
+
+use mit_star_benches::InstanceProblem;
+use mit_star_benches::commands::ProblemArgs;
+use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use problems::{PlanningProblem, Problem};
+use pyo3::prelude::*;
+use spaces::StateSpace;
+use validity::StateValidity;
+
+use crate::box_world::box_world;
+use crate::error::{BindingError, BindingResult};
+
+/// A planning problem: a space (bounds), a start, one or more goals, a collision-check
+/// resolution and a built-in validity checker (a box world or a robot arm in a scene).
+///
+/// Build one with `Problem(name, dim=…)` (a PDT family, a TOML file or `mbm:FOLDER`, as the
+/// command line's `--problem` takes them), `Problem.from_file`, `Problem.mbm` or
+/// `Problem.boxes`.
+#[pyclass(module = "mit_star._native", name = "Problem", frozen)]
+#[derive(Debug, Clone)]
+pub struct PyProblem {
+    /// The problem the planners plan on.
+    pub(crate) problem: InstanceProblem,
+    /// The problem's identifier (`dividing-walls-R4`, `box_panda-R7-3`, …).
+    pub(crate) id: String,
+}
+
+impl PyProblem {
+    /// Resolves a problem exactly as the command line's problem options do.
+    fn resolve(args: &ProblemArgs) -> BindingResult<Self> {
+        let instance = args.build(1.0)?;
+        Ok(Self {
+            problem: instance.problem,
+            id: instance.id,
+        })
+    }
+
+    /// A box-world problem built here (numpy arrays), checked as a problem file would be.
+    pub(crate) fn from_boxes(problem: Problem) -> BindingResult<Self> {
+        let boxes = InstanceProblem::Boxes(problem);
+        boxes.check_step()?;
+        let id = format!(
+            "{}-R{}",
+            boxes.as_boxes().map_or("boxes", |p| p.name()),
+            boxes.dimension()
+        );
+        Ok(Self { problem: boxes, id })
+    }
+
+    /// The space's lower and upper bounds.
+    fn bounds_of(&self) -> (&[f64], &[f64]) {
+        match &self.problem {
+            InstanceProblem::Boxes(p) => (p.space().lower(), p.space().upper()),
+            InstanceProblem::Arm(p) => (p.space().lower(), p.space().upper()),
+        }
+    }
+}
+
+#[pymethods]
+impl PyProblem {
+    /// A problem named as the command line's `--problem` names it: a PDT family
+    /// (`mit_star.problem_families()`, built for `dim` dimensions, default 2), a TOML problem
+    /// file, or `mbm:FOLDER` (a MotionBenchMaker scene folder, planned for `robot`).
+    ///
+    /// `instance` is the layout seed of seeded families (random rectangles, default 0) or the
+    /// problem index in a MotionBenchMaker folder (default its first); `resolution` replaces
+    /// the problem's collision-check resolution; `robot` is a shipped robot (`panda`, `ur5`,
+    /// `fetch`) or a folder holding one URDF and one SRDF; `strict_robot` refuses SRDF entries
+    /// naming links the robot lacks; `allow_coarse_step` allows a step coarser than the
+    /// thinnest obstacle (or an arm without certification).
+    #[new]
+    #[pyo3(signature = (name, dim=None, *, instance=None, resolution=None, robot=None, strict_robot=false, allow_coarse_step=false))]
+    fn new(
+        name: &str,
+        dim: Option<usize>,
+        instance: Option<u64>,
+        resolution: Option<f64>,
+        robot: Option<String>,
+        strict_robot: bool,
+        allow_coarse_step: bool,
+    ) -> BindingResult<Self> {
+        let file = name.ends_with(".toml").then(|| PathBuf::from(name));
+        Self::resolve(&ProblemArgs {
+            problem: file.is_none().then(|| name.to_owned()),
+            problem_file: file,
+            robot,
+            strict_robot,
+            dim,
+            instance,
+            resolution,
+            allow_coarse_step,
+        })
+    }
+
+    /// A problem read from a TOML problem file (see `problems/examples/`).
+    #[staticmethod]
+    #[pyo3(signature = (path, *, resolution=None, allow_coarse_step=false))]
+    fn from_file(
+        path: PathBuf,
+        resolution: Option<f64>,
+        allow_coarse_step: bool,
+    ) -> BindingResult<Self> {
+        Self::resolve(&ProblemArgs {
+            problem: None,
+            problem_file: Some(path),
+            robot: None,
+            strict_robot: false,
+            dim: None,
+            instance: None,
+            resolution,
+            allow_coarse_step,
+        })
+    }
+
+    /// Problem `instance` (1-based; default the folder's first) of a MotionBenchMaker scene
+    /// folder, planned for `robot` (a shipped robot name or a folder with a URDF and an SRDF;
+    /// default the Panda). The folders of the shipped Panda problems come from
+    /// `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`.
+    #[staticmethod]
+    #[pyo3(signature = (folder, instance=None, *, robot=None, strict_robot=false, resolution=None))]
+    fn mbm(
+        folder: PathBuf,
+        instance: Option<u64>,
+        robot: Option<String>,
+        strict_robot: bool,
+        resolution: Option<f64>,
+    ) -> BindingResult<Self> {
+        Self::resolve(&ProblemArgs {
+            problem: Some(format!("mbm:{}", folder.display())),
+            problem_file: None,
+            robot,
+            strict_robot,
+            dim: None,
+            instance,
+            resolution,
+            allow_coarse_step: false,
+        })
+    }
+
+    /// A box world from numpy arrays: bounds `lower`, `upper` (length d), a `start` and a
+    /// `goal` (length d, or `goals` of shape (k, d)), obstacles as `centers` and `widths` of
+    /// shape (m, d) (full side lengths), and optionally anti-obstacles (free boxes carved out of
+    /// obstacles) as `free_centers` and `free_widths`.
+    #[staticmethod]
+    #[pyo3(signature = (lower, upper, start, goal, *, centers=None, widths=None, free_centers=None, free_widths=None, resolution=None, name="boxes", allow_coarse_step=false))]
+    #[allow(clippy::too_many_arguments)]
+    fn boxes(
+        lower: PyReadonlyArray1<'_, f64>,
+        upper: PyReadonlyArray1<'_, f64>,
+        start: PyReadonlyArray1<'_, f64>,
+        goal: &Bound<'_, PyAny>,
+        centers: Option<PyReadonlyArray2<'_, f64>>,
+        widths: Option<PyReadonlyArray2<'_, f64>>,
+        free_centers: Option<PyReadonlyArray2<'_, f64>>,
+        free_widths: Option<PyReadonlyArray2<'_, f64>>,
+        resolution: Option<f64>,
+        name: &str,
+        allow_coarse_step: bool,
+    ) -> BindingResult<Self> {
+        let problem = box_world(
+            name,
+            (lower.as_array(), upper.as_array()),
+            (start.as_array(), goal),
+            (
+                centers.as_ref().map(|c| c.as_array()),
+                widths.as_ref().map(|w| w.as_array()),
+            ),
+            (
+                free_centers.as_ref().map(|c| c.as_array()),
+                free_widths.as_ref().map(|w| w.as_array()),
+            ),
+        )?;
+        let problem = match resolution {
+            Some(r) => problem.with_resolution(r)?,
+            None => problem,
+        };
+        Self::from_boxes(problem.allowing_coarse_step(allow_coarse_step))
+    }
+
+    /// The problem's identifier (`dividing-walls-R4`, `box_panda-R7-3`, …).
+    #[getter]
+    fn id(&self) -> &str {
+        &self.id
+    }
+
+    /// The problem's name.
+    #[getter]
+    fn name(&self) -> String {
+        match &self.problem {
+            InstanceProblem::Boxes(p) => p.name().to_owned(),
+            InstanceProblem::Arm(p) => p.name().to_owned(),
+        }
+    }
+
+    /// The dimension of the configuration space.
+    #[getter]
+    fn dimension(&self) -> usize {
+        self.problem.dimension()
+    }
+
+    /// The start state, shape (d,).
+    #[getter]
+    fn start<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, self.problem.start())
+    }
+
+    /// The goal states, shape (k, d).
+    #[getter]
+    fn goals<'py>(&self, py: Python<'py>) -> BindingResult<Bound<'py, PyArray2<f64>>> {
+        PyArray2::from_vec2(py, self.problem.goals())
+            .map_err(|e| BindingError::Value(e.to_string()))
+    }
+
+    /// The space's bounds `(lower, upper)`, each of shape (d,).
+    #[getter]
+    fn bounds<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>) {
+        let (lower, upper) = self.bounds_of();
+        (
+            PyArray1::from_slice(py, lower),
+            PyArray1::from_slice(py, upper),
+        )
+    }
+
+    /// The collision-check resolution (a fraction of the space's maximum extent).
+    #[getter]
+    fn resolution(&self) -> f64 {
+        self.problem.resolution()
+    }
+
+    /// The collision-check step in the space's units.
+    #[getter]
+    fn step(&self) -> f64 {
+        self.problem.step()
+    }
+
+    /// The known optimal cost (PDT families with a closed form), else `None`.
+    #[getter]
+    fn optimum(&self) -> Option<f64> {
+        self.problem.optimum()
+    }
+
+    /// `True` for a robot-arm problem (MotionBenchMaker), `False` for a box world.
+    #[getter]
+    fn is_arm(&self) -> bool {
+        self.problem.as_arm().is_some()
+    }
+
+    /// Whether `state` is valid for the problem's built-in checker (the box world, or the arm
+    /// among the scene's obstacles).
+    fn is_valid(&self, state: PyReadonlyArray1<'_, f64>) -> BindingResult<bool> {
+        let state = state
+            .as_slice()
+            .map_err(|e| BindingError::Value(e.to_string()))?;
+        if state.len() != self.problem.dimension() {
+            return Err(BindingError::Value(format!(
+                "state has {} coordinates; the problem has {}",
+                state.len(),
+                self.problem.dimension()
+            )));
+        }
+        Ok(match &self.problem {
+            InstanceProblem::Boxes(p) => p.validity().is_valid(state),
+            InstanceProblem::Arm(p) => p.validity().is_valid(state),
+        })
+    }
+
+    /// The problem as a TOML problem file (box worlds), or a description (arms).
+    fn describe(&self) -> String {
+        self.problem.describe()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Problem({:?}, dimension={}, resolution={})",
+            self.id,
+            self.problem.dimension(),
+            self.problem.resolution()
+        )
+    }
+}
