@@ -55,7 +55,9 @@ impl From<BindingError> for PyErr {
         let message = error.to_string();
         match error {
             BindingError::Type(_) => PyTypeError::new_err(message),
-            BindingError::Planner(_) | BindingError::Busy => PlanningError::new_err(message),
+            BindingError::Planner(_)
+            | BindingError::Build(mit_star::BuildError::Query(_))
+            | BindingError::Busy => PlanningError::new_err(message),
             BindingError::Harness(
                 H::Io { .. }
                 | H::OutputFolder { .. }
