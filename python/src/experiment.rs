@@ -42,6 +42,7 @@ pub(crate) fn experiments() -> Vec<(&'static str, &'static str)> {
 /// experiment and raises `KeyboardInterrupt`; finished runs are then lost unless `output` was
 /// given.
 #[pyfunction]
+#[allow(clippy::needless_pass_by_value, clippy::too_many_arguments)] // PyO3's argument shape
 #[pyo3(signature = (experiment, *, runs=None, seed=None, threads=1, output=None, plots=false, **params))]
 pub(crate) fn run_experiment(
     py: Python<'_>,
@@ -107,6 +108,7 @@ pub(crate) fn run_experiment(
 
 /// The results recorded in a results folder written by `mit-star bench` or `run_experiment`.
 #[pyfunction]
+#[allow(clippy::needless_pass_by_value)] // PyO3's argument shape
 pub(crate) fn read_results(folder: PathBuf) -> BindingResult<PyExperimentResults> {
     Ok(PyExperimentResults {
         results: ResultsFolder::read_results(&folder)?,

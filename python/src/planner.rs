@@ -57,6 +57,8 @@ impl PyPlanner {
     }
 }
 
+// PyO3 extracts each argument as an owned value: taking it by value is the binding's shape.
+#[allow(clippy::needless_pass_by_value)]
 #[pymethods]
 impl PyPlanner {
     #[new]

@@ -61,6 +61,8 @@ impl PyProblem {
     }
 }
 
+// PyO3 extracts each argument as an owned value: taking it by value is the binding's shape.
+#[allow(clippy::needless_pass_by_value)]
 #[pymethods]
 impl PyProblem {
     /// A problem named as the command line's `--problem` names it: a PDT family

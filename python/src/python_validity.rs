@@ -86,7 +86,7 @@ impl PythonValidity {
         &self,
         py: Python<'_>,
         f: &Py<PyAny>,
-        states: ArrayView2<'_, f64>,
+        states: &ArrayView2<'_, f64>,
     ) -> Option<Vec<bool>> {
         let n = states.nrows();
         let reply = f
@@ -118,9 +118,10 @@ impl StateValidity for PythonValidity {
                 })
             }
             (None, Some(f)) => {
-                let view = ArrayView2::from_shape((1, state.len()), state)
-                    .expect("one row of the state's length");
-                self.call_vectorised(py, f, view)
+                let Ok(view) = ArrayView2::from_shape((1, state.len()), state) else {
+                    return false;
+                };
+                self.call_vectorised(py, f, &view)
                     .is_some_and(|answers| answers[0])
             }
             (None, None) => true,
@@ -148,7 +149,7 @@ impl StateValidity for PythonValidity {
         let Ok(view) = ArrayView2::from_shape((n, dimension), &states[..n * dimension]) else {
             return Some(0);
         };
-        Python::attach(|py| match self.call_vectorised(py, f, view) {
+        Python::attach(|py| match self.call_vectorised(py, f, &view) {
             Some(answers) => answers.iter().position(|&valid| !valid),
             None => Some(0),
         })
