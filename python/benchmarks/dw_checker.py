@@ -26,7 +26,7 @@ def boxes(problem: mit_star.Problem, key: str) -> list[tuple[list[float], list[f
 
 
 def scalar_checker(problem: mit_star.Problem):
-    """``valid(state)`` in pure Python (indexes the state: a numpy array or an OMPL state)."""
+    """``valid(state)`` in pure Python (a numpy array, taken as a list, or an OMPL state, indexed)."""
     obstacles = boxes(problem, "obstacles")
     free = boxes(problem, "anti_obstacles")
     d = problem.dimension
@@ -39,6 +39,8 @@ def scalar_checker(problem: mit_star.Problem):
         return True
 
     def valid(x) -> bool:
+        if hasattr(x, "tolist"):
+            x = x.tolist()  # a numpy array: Python floats index and compare faster
         for box in obstacles:
             if inside(x, box):
                 return any(inside(x, f) for f in free)
