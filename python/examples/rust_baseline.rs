@@ -33,10 +33,14 @@ fn main() -> ExitCode {
 /// Parses the arguments and prints one `seed seconds cost` line per seed.
 fn run(args: &[String]) -> Result<(), String> {
     let [problem, number, planner, iterations, seeds] = args else {
-        return Err("usage: rust_baseline PROBLEM DIM|INSTANCE PLANNER ITERATIONS FIRST..END".into());
+        return Err(
+            "usage: rust_baseline PROBLEM DIM|INSTANCE PLANNER ITERATIONS FIRST..END".into(),
+        );
     };
     let number: u64 = number.parse().map_err(|e| format!("{number}: {e}"))?;
-    let iterations: u64 = iterations.parse().map_err(|e| format!("{iterations}: {e}"))?;
+    let iterations: u64 = iterations
+        .parse()
+        .map_err(|e| format!("{iterations}: {e}"))?;
     let (first, end) = seeds
         .split_once("..")
         .and_then(|(a, b)| Some((a.parse::<u64>().ok()?, b.parse::<u64>().ok()?)))
