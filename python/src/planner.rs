@@ -188,7 +188,7 @@ impl PyPlanner {
         self.with_planner(|p| counters_dict(py, p))?
     }
 
-    /// The planner's parameters as `{name: value}` strings, as benchmark logs record them.
+    /// The planner's parameters as `(name, value)` string pairs, as benchmark logs record them.
     #[getter]
     fn settings(&self) -> BindingResult<Vec<(String, String)>> {
         self.with_planner(|p| p.settings())
