@@ -113,3 +113,16 @@ def test_a_start_the_checker_refuses_is_a_planning_error(walls4: mit_star.Proble
     # The query is checked when the planner is built.
     with pytest.raises(mit_star.PlanningError, match="start"):
         mit_star.MitStar(walls4, validity=lambda s: s[0] > -0.4)
+
+
+def test_a_python_checker_on_an_arm(box_panda) -> None:
+    problem = mit_star.Problem.mbm(box_panda, 1)
+    calls = [0]
+
+    def valid(q: np.ndarray) -> bool:
+        calls[0] += 1
+        return problem.is_valid(q)
+
+    result = mit_star.RrtConnect(problem, seed=2, validity=valid).solve(time=10.0)
+    assert result.solved and calls[0] > 0
+    assert all(problem.is_valid(q) for q in result.path)
