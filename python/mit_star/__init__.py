@@ -21,6 +21,7 @@ by the checker stops the planner and is raised from ``solve``.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from ._native import (
@@ -64,7 +65,7 @@ __all__ = [
 ]
 
 
-def _configuration(name: str, label: str) -> Any:
+def _configuration(name: str, label: str) -> Callable[..., Planner]:
     def build(problem: Problem, **params: Any) -> Planner:
         return Planner(name, problem, **params)
 
