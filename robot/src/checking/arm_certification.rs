@@ -2,23 +2,22 @@
 //! its grid points ([`ArmChecker`]'s [`StateValidity::certify_motion`]).
 //!
 //! # The guarantee
-//! An arm edge certified valid has **every** configuration on it collision-free: for each
-//! piece of the edge, every sphere, grown by how far it can move within the piece (the
-//! [`LeverArms`](crate::LeverArms) bound) and by the checker's margin for `f32` rounding, was
-//! found clear of the scene and of the other links at the piece's middle configuration.
+//! An arm edge certified valid has **every** configuration on it collision-free: the edge is
+//! covered by pieces, and for each piece every sphere, grown by how far it can move within the
+//! piece (the local sweep and [`LeverArms`](crate::LeverArms) bounds) and by the checker's
+//! margin for `f32` rounding, is clear of the scene and of the other links at the piece's
+//! middle configuration.
 //!
 //! # The walk
-//! From the edge's first end, eight consecutive pieces of width `w` (a fraction of the edge)
-//! are tested at once, one per `f32x8` lane, each lane's spheres grown by the margin plus how
-//! far they can move within half a piece: the smaller of the lever-arm bound
-//! `w/2 · Σ_j λ_j |Δq_j|` and the local bound measured at the piece's middle configuration
-//! ([`LocalSweep`](crate::checking::local_sweep::LocalSweep)). If all eight are clear, the certified
-//! prefix moves past them and `w` grows (by 1/16 near obstacles; doubling once four times as
-//! wide as the first pieces: free space); if a piece is not, the prefix moves up to it and the next batch tests pieces
-//! half as wide. The first pieces sweep about a centimetre. A piece whose growth is already below [`FLOOR`] and still
-//! touches something is a contact (or within a hair of one): the edge is invalid. So free
-//! space is certified in a few batches whatever the edge's length — the first batch tests
-//! the whole edge as eight pieces — and the walk only refines near obstacles.
+//! Conservative advancement along the edge from its first end. Each batch evaluates eight
+//! configurations ahead of the certified prefix `t`, spaced `2w` apart (`t + w`, `t + 3w`,
+//! …); each lane's clearance gives its *certified radius* (`clearance.rs`): how far along the
+//! edge the configuration can move before any sphere could reach an obstacle or another
+//! link. The prefix then runs on through every lane whose piece touches it, and the next
+//! spacing is the smallest radius seen — so free space is crossed in one or two batches
+//! whatever the edge's length, and the pieces shrink only where the edge passes close to
+//! something. A configuration whose clearance is below [`FLOOR`] (in contact, or within a
+//! hair of it) makes the edge invalid.
 //!
 //! The prefix and `w` are the whole state of the walk: a stopped certification keeps them in
 //! the caller's [`MotionProgress`] and the next call goes on from there.
@@ -28,26 +27,27 @@ use validity::{EdgeStatus, MotionProgress};
 use wide::f32x8;
 
 use crate::ArmChecker;
-use crate::checking::arm_checker::{Growth, Scratch, Wanted, invalid_lanes};
+use crate::checking::arm_checker::Scratch;
+use crate::checking::clearance::{EdgeBounds, certified_radii};
 use crate::checking::lanes::LANES;
 use crate::checking::local_sweep::EdgeTerms;
 
-/// The smallest growth beyond the margin, in metres, at which a piece that still touches
-/// something makes the edge invalid: 10 µm. An edge that passes closer than about this (plus
-/// the margin) to an obstacle may be refused; none that touches one is accepted.
+/// The smallest clearance beyond the margin, in metres, of a configuration of a valid edge:
+/// 10 µm. An edge that passes closer than this (plus the margin) to an obstacle or to another
+/// link is refused; none that touches one is accepted.
 pub const FLOOR: f64 = 1e-5;
 
-/// How far (metres) a sphere may sweep over half a piece of an edge's first batch: about the
-/// clearance a solution edge keeps near obstacles, so that most first batches pass
-/// (measured on MotionBenchMaker solution edges, `examples/certification_cost.rs`).
+/// How far (metres) the fastest sphere may sweep over half a piece of an edge's first batch:
+/// about the clearance a solution edge keeps near obstacles, so that most first batches
+/// join up (measured on MotionBenchMaker solution edges, `examples/certification_cost.rs`).
 const FIRST_SWEEP: f64 = 0.01;
 
-/// How much wider the pieces of the next batch are after a clear batch, while they are less
-/// than four times as wide as the first pieces (near obstacles); wider, they double.
-const GROWTH: f64 = 1.0625;
+/// The widest piece a batch seeks, in spacings `w`: limits how far clearances are sought, and
+/// so how much of the scene each batch looks at.
+const USEFUL: f64 = 2.5;
 
-/// How much narrower the pieces become after a batch with a piece that is not clear.
-const SHRINK: f64 = 2.0;
+/// The next spacing's share of the smallest radius met.
+const SPACING: f64 = 0.9;
 
 /// Batches between two polls of the stop condition (a batch is eight configurations: about
 /// the [`STOP_POLL`](validity::STOP_POLL) state checks the grid walks poll after).
@@ -62,19 +62,23 @@ pub(crate) struct CertifyScratch {
     delta: Vec<f64>,
     /// Per link with spheres: how far its spheres move over the whole edge.
     sweep: Vec<f64>,
-    /// Per link with spheres: the growth in each lane.
-    grow: Vec<f32x8>,
+    /// Per self-collision pair: how far its links move relative to each other over the
+    /// whole edge.
+    pair_sweep: Vec<f64>,
+    /// Per link with spheres: its speed term in each lane.
+    speeds: Vec<f32x8>,
     /// The edge's terms of the local sweep bound.
     terms: EdgeTerms,
 }
 
 impl CertifyScratch {
-    pub(crate) fn new(dimension: usize, links: usize) -> Self {
+    pub(crate) fn new(dimension: usize, links: usize, pairs: usize) -> Self {
         Self {
             chunk: vec![0.0; LANES * dimension],
             delta: vec![0.0; dimension],
             sweep: vec![0.0; links],
-            grow: vec![f32x8::ZERO; links],
+            pair_sweep: vec![0.0; pairs],
+            speeds: vec![f32x8::ZERO; links],
             terms: EdgeTerms::default(),
         }
     }
@@ -108,7 +112,8 @@ impl ArmChecker {
             chunk,
             delta,
             sweep,
-            grow,
+            pair_sweep,
+            speeds,
             terms,
         } = certify;
         for (j, d) in delta.iter_mut().enumerate() {
@@ -122,14 +127,23 @@ impl ArmChecker {
             let levers = &s.levers[k * n..(k + 1) * n];
             *out = levers.iter().zip(&*delta).map(|(l, d)| l * d.abs()).sum();
         }
+        for (p, out) in pair_sweep.iter_mut().enumerate() {
+            let levers = &s.pair_levers[p * n..(p + 1) * n];
+            *out = levers.iter().zip(&*delta).map(|(l, d)| l * d.abs()).sum();
+        }
         let fastest = sweep.iter().copied().fold(0.0, f64::max);
         s.local.edge_terms(delta, &s.levers, terms);
+        let edge = EdgeBounds {
+            delta,
+            terms,
+            sweep,
+            pair_sweep,
+        };
         let (mut t, mut w) = (progress.certified(), progress.cursor());
-        // First pieces: sweeping at most `FIRST_SWEEP` over a half piece, at most an eighth of
-        // the edge.
-        let first = (2.0 * FIRST_SWEEP / fastest.max(1e-12)).min(1.0 / LANES as f64);
+        // First pieces: the fastest sphere sweeping at most `FIRST_SWEEP` over a half piece,
+        // eight of them spanning at most the edge.
         if !(w > 0.0 && w <= 1.0) {
-            w = first;
+            w = (FIRST_SWEEP / fastest.max(1e-12)).min(0.5 / LANES as f64);
         }
         let mut batches = 0_u32;
         loop {
@@ -142,45 +156,57 @@ impl ArmChecker {
                 return Some(EdgeStatus::Unknown);
             }
             batches += 1;
-            // Pieces `[t + l·w, t + (l + 1)·w]`, cut at the end of the edge; the same
-            // expression gives a piece's end and the next one's start, so none is skipped.
+            // Configurations at `t + w`, `t + 3w`, …, the last one at the edge's end at the
+            // latest.
             let mut count = 0;
-            let mut halves = [0.0_f64; LANES];
-            for (l, half) in halves.iter_mut().enumerate() {
-                let t0 = t + l as f64 * w;
-                if t0 >= 1.0 {
-                    break;
-                }
-                let t1 = (t + (l + 1) as f64 * w).min(1.0);
-                let middle = 0.5 * (t0 + t1);
-                *half = 0.5 * (t1 - t0);
+            let mut middles = [0.0_f64; LANES];
+            for (l, middle) in middles.iter_mut().enumerate() {
+                *middle = (t + (2 * l + 1) as f64 * w).min(1.0);
                 let q = &mut chunk[l * n..(l + 1) * n];
                 for (j, x) in q.iter_mut().enumerate() {
-                    let v = a[j] + delta[j] * middle;
-                    *x = if s.wraps[j] { wrap_angle(v) } else { v };
+                    let v = a[j] + delta[j] * *middle;
+                    // Kept between the ends, which rounding could leave by an ulp (past a
+                    // joint limit that an end sits on).
+                    *x = if s.wraps[j] {
+                        wrap_angle(v)
+                    } else {
+                        v.clamp(a[j].min(b[j]), a[j].max(b[j]))
+                    };
                 }
                 count += 1;
+                if *middle + w >= 1.0 {
+                    break;
+                }
             }
             progress.count(count as u64);
-            let place = |poses: &[_], bounds: &[_], out: &mut [f32x8]| {
-                s.local
-                    .grow(poses, bounds, (delta, terms), &halves, s.margin, sweep, out);
-            };
-            let growth = Growth::Placed(grow, &place);
-            let invalid = invalid_lanes(s, lanes, (&chunk[..count * n], n), growth, Wanted::First);
-            if invalid == 0 {
-                t = (t + count as f64 * w).min(1.0);
-                w = (if w >= 4.0 * first { 2.0 } else { GROWTH } * w).min(1.0);
-                continue;
-            }
-            let first = invalid.trailing_zeros();
-            let failed_half = halves[first as usize];
-            t += f64::from(first) * w;
-            if fastest * failed_half <= FLOOR {
+            // No piece needs to reach further than the edge, and a batch's pieces need not be
+            // more than `USEFUL` spacings wide.
+            let useful = (USEFUL * w).min(1.0);
+            let (radii, refused) = certified_radii(
+                s,
+                lanes,
+                speeds,
+                &chunk[..count * n],
+                &edge,
+                (FLOOR, useful),
+            );
+            if refused != 0 {
                 *progress = progress.advanced(t, w);
                 return Some(EdgeStatus::Invalid);
             }
-            w /= SHRINK;
+            // The prefix runs on through every piece that reaches it; the next spacing is the
+            // smallest radius met on the way.
+            let mut next = 1.0_f64;
+            for (&middle, &radius) in middles.iter().zip(&radii).take(count) {
+                next = next.min(radius);
+                if middle - radius > t {
+                    break;
+                }
+                t = t.max(middle + radius);
+            }
+            // A little less, so that the next batch's first piece reaches the prefix even
+            // where the clearance stays as it is (an equal spacing can miss it by rounding).
+            w = next * SPACING;
         }
     }
 }

@@ -24,13 +24,13 @@ pub(crate) struct Shared {
     pub(crate) upper: Vec<f64>,
     /// Per coordinate: the joint wraps around (continuous), so motions go the short way.
     pub(crate) wraps: Vec<bool>,
-    obstacles: Vec<Obstacle>,
+    pub(crate) obstacles: Vec<Obstacle>,
     /// Links with spheres, in tree order: link, its sphere range, local bounding sphere.
     pub(crate) links: Vec<(usize, Range<usize>, Vec3A, f32)>,
     /// Local sphere centres and radii.
-    spheres: Vec<(Vec3A, f32)>,
+    pub(crate) spheres: Vec<(Vec3A, f32)>,
     /// Self-collision pairs as indices into `links`.
-    pairs: Vec<(usize, usize)>,
+    pub(crate) pairs: Vec<(usize, usize)>,
     /// How much every sphere is grown in every test, covering the `f32` rounding of the
     /// kinematics and of the contact tests (see [`ArmChecker::margin`]).
     pub(crate) margin: f64,
@@ -38,20 +38,11 @@ pub(crate) struct Shared {
     plain: Vec<f32x8>,
     /// Per entry of `links`, per coordinate: the link's lever arm ([`LeverArms`]).
     pub(crate) levers: Vec<f64>,
+    /// Per entry of `pairs`, per coordinate: how fast the pair's links can move relative to
+    /// each other ([`LocalSweep::relative_levers`]).
+    pub(crate) pair_levers: Vec<f64>,
     /// The configuration-dependent sweep bound certification uses.
     pub(crate) local: LocalSweep,
-}
-
-/// Writes each link's growth for a batch from its link poses and bounding centres.
-pub(crate) type PlaceGrowth<'a> = &'a dyn Fn(&[Pose8], &[Point8], &mut [f32x8]);
-
-/// How much the spheres of each link are grown in a batch: fixed, or computed from the
-/// batch's link poses and bounding centres (certification's local sweep bound).
-pub(crate) enum Growth<'a> {
-    /// The same growth whatever the poses.
-    Fixed(&'a [f32x8]),
-    /// Written into the buffer by the function once the batch's links are placed.
-    Placed(&'a mut [f32x8], PlaceGrowth<'a>),
 }
 
 /// Which invalid configuration of a batch a check must find.
@@ -75,11 +66,11 @@ pub(crate) struct Scratch {
 /// coordinate.
 #[derive(Debug, Clone)]
 pub(crate) struct LaneScratch {
-    poses8: Vec<Pose8>,
-    centers8: Vec<Point8>,
-    bounds8: Vec<Point8>,
-    placed: Vec<bool>,
-    q8: Vec<f32x8>,
+    pub(crate) poses8: Vec<Pose8>,
+    pub(crate) centers8: Vec<Point8>,
+    pub(crate) bounds8: Vec<Point8>,
+    pub(crate) placed: Vec<bool>,
+    pub(crate) q8: Vec<f32x8>,
 }
 
 /// Smallest growth of the spheres in every test, in metres: covers the `f32` rounding of the
@@ -141,7 +132,7 @@ impl ArmChecker {
             })
             .collect();
         let slot = |link: usize| links.iter().position(|e| e.0 == link);
-        let pairs = robot
+        let pairs: Vec<(usize, usize)> = robot
             .self_collision_pairs()
             .iter()
             .filter_map(|&(a, b)| Some((slot(a)?, slot(b)?)))
@@ -183,9 +174,14 @@ impl ArmChecker {
             certify: crate::checking::arm_certification::CertifyScratch::new(
                 dimension,
                 links.len(),
+                pairs.len(),
             ),
         };
         let local = LocalSweep::new(robot, &links);
+        let pair_levers = pairs
+            .iter()
+            .flat_map(|&pair| local.relative_levers(pair, &levers, dimension))
+            .collect();
         let wraps = space
             .joints()
             .iter()
@@ -205,6 +201,7 @@ impl ArmChecker {
                 pairs,
                 margin,
                 levers,
+                pair_levers,
                 local,
             }),
             scratch: ScratchCell::new(scratch),
@@ -234,7 +231,7 @@ impl StateValidity for ArmChecker {
             s,
             &mut guard.lanes,
             (q, q.len().max(1)),
-            Growth::Fixed(&s.plain),
+            &s.plain,
             Wanted::Any,
         ) == 0
     }
@@ -275,8 +272,7 @@ impl ArmChecker {
         let s = &*self.shared;
         let mut guard = self.scratch.lock();
         for (c, chunk) in states.chunks(LANES * dimension).enumerate() {
-            let growth = Growth::Fixed(&s.plain);
-            let invalid = invalid_lanes(s, &mut guard.lanes, (chunk, dimension), growth, wanted);
+            let invalid = invalid_lanes(s, &mut guard.lanes, (chunk, dimension), &s.plain, wanted);
             if invalid != 0 {
                 return Some(c * LANES + invalid.trailing_zeros() as usize);
             }
@@ -287,14 +283,14 @@ impl ArmChecker {
 
 /// Bit `l` set if configuration `l` of `chunk` (at most [`LANES`] configurations of
 /// `dimension` values) is invalid with every sphere of the link in entry `k` of
-/// `Shared::links` grown by lane `l` of `grow[k]`. [`Wanted::First`]: exact for every lane up
+/// `Shared::links` grown by `grow[k]` (the same in every lane). [`Wanted::First`]: exact for every lane up
 /// to the first invalid one. [`Wanted::Any`]: nonzero exactly when some lane is invalid, and
 /// every bit set is an invalid lane. A chunk of the wrong dimension is invalid in every lane.
 pub(crate) fn invalid_lanes(
     s: &Shared,
     scratch: &mut LaneScratch,
     (chunk, dimension): (&[f64], usize),
-    growth: Growth<'_>,
+    grow: &[f32x8],
     wanted: Wanted,
 ) -> u32 {
     let count = (chunk.len() / dimension).min(LANES);
@@ -309,14 +305,7 @@ pub(crate) fn invalid_lanes(
         placed,
         q8,
     } = scratch;
-    let mut invalid = 0u32;
-    for (l, q) in chunk.chunks_exact(dimension).enumerate() {
-        let out = q
-            .iter()
-            .zip(s.lower.iter().zip(&s.upper))
-            .any(|(x, (lo, hi))| !(lo <= x && x <= hi));
-        invalid |= u32::from(out) << l;
-    }
+    let mut invalid = outside_limits(s, chunk, dimension);
     // Lanes still to decide: those before the first invalid one (none once one is found, if
     // any will do).
     let undecided = |invalid: u32| {
@@ -332,30 +321,12 @@ pub(crate) fn invalid_lanes(
     if active == 0 {
         return invalid;
     }
-    // Joint values by coordinate; padding lanes repeat configuration 0.
-    for (c, v) in q8.iter_mut().enumerate() {
-        *v = f32x8::new(std::array::from_fn(|l| {
-            chunk[if l < count { l } else { 0 } * dimension + c] as f32
-        }));
-    }
+    fill_lanes(q8, chunk, dimension);
     placed.fill(false);
-    // With a fixed growth, links are placed as the tests reach them (in tree order), so that a
-    // batch found invalid early skips the rest of the walk; a placed growth needs them all.
-    // `posed`: links placed so far (in tree order); `bounded`: entries of `s.links` whose
-    // bounding centres are placed.
+    // Links are placed as the tests reach them (in tree order), so that a batch found invalid
+    // early skips the rest of the walk. `posed`: links placed so far (in tree order);
+    // `bounded`: entries of `s.links` whose bounding centres are placed.
     let (mut posed, mut bounded) = (0, 0);
-    let grow: &[f32x8] = match growth {
-        Growth::Fixed(grow) => grow,
-        Growth::Placed(buffer, place) => {
-            s.lanes.link_poses(q8, poses8);
-            for (bound, (link, _, center, _)) in bounds8.iter_mut().zip(&s.links) {
-                *bound = poses8[*link].point(*center);
-            }
-            (posed, bounded) = (poses8.len(), s.links.len());
-            place(poses8, bounds8, buffer);
-            buffer
-        }
-    };
     let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
         for i in range.clone() {
             centers[i] = pose.point(s.spheres[i].0);
@@ -445,4 +416,29 @@ pub(crate) fn invalid_lanes(
 fn distance_squared(a: &Point8, b: &Point8) -> f32x8 {
     let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
     x * x + y * y + z * z
+}
+
+/// Bit `l` set if configuration `l` of `chunk` (`dimension` values each) is outside the joint
+/// limits (or not a number).
+pub(crate) fn outside_limits(s: &Shared, chunk: &[f64], dimension: usize) -> u32 {
+    let mut outside = 0u32;
+    for (l, q) in chunk.chunks_exact(dimension).take(LANES).enumerate() {
+        let out = q
+            .iter()
+            .zip(s.lower.iter().zip(&s.upper))
+            .any(|(x, (lo, hi))| !(lo <= x && x <= hi));
+        outside |= u32::from(out) << l;
+    }
+    outside
+}
+
+/// Writes the joint values of `chunk`'s configurations (at most [`LANES`], `dimension` values
+/// each) into `q8` by coordinate; padding lanes repeat configuration 0.
+pub(crate) fn fill_lanes(q8: &mut [f32x8], chunk: &[f64], dimension: usize) {
+    let count = (chunk.len() / dimension).min(LANES);
+    for (c, v) in q8.iter_mut().enumerate() {
+        *v = f32x8::new(std::array::from_fn(|l| {
+            chunk[if l < count { l } else { 0 } * dimension + c] as f32
+        }));
+    }
 }

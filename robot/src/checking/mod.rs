@@ -5,8 +5,11 @@
 //!   self-collision with broad phases, one-sided (a margin covers `f32` rounding); `lanes.rs`
 //!   runs its forward kinematics on eight configurations at once (`f32x8`).
 //! - `arm_certification.rs`: certified motion, every configuration of an edge proven clear
-//!   (not only grid points), with its floor [`CERTIFICATION_FLOOR`]; `local_sweep.rs` bounds
-//!   how far spheres move over a piece of an edge from the piece's middle configuration.
+//!   (not only grid points) by conservative advancement, with its floor
+//!   [`CERTIFICATION_FLOOR`]; `clearance.rs` turns eight configurations' clearances into how
+//!   far along the edge each stays clear; `local_sweep.rs` bounds how far spheres move over a
+//!   piece of an edge, from the piece's middle configuration, and how fast the two links of a
+//!   self-collision pair move relative to each other.
 //! - [`ParryChecker`] (`parry_checker.rs`): the reference checker, `f64` and parry queries, no
 //!   culling (tests and path re-checks).
 //! - [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] (`motion_audit.rs`): an independent
@@ -19,6 +22,7 @@
 
 mod arm_certification;
 mod arm_checker;
+mod clearance;
 mod lanes;
 mod local_sweep;
 mod motion_audit;

@@ -142,6 +142,33 @@ impl Obstacle {
         if near == 0 {
             return 0;
         }
+        near & self.excess8(center).simd_le(radius * radius).to_bitmask()
+    }
+
+    /// Per lane, the distance from the point to the solid (0 inside), `f32`: the same
+    /// arithmetic as [`collides_spheres8`](Self::collides_spheres8), square-rooted.
+    #[inline]
+    pub(crate) fn distances8(&self, point: &[f32x8; 3]) -> f32x8 {
+        self.excess8(point).sqrt()
+    }
+
+    /// Per lane, a lower bound on the distance from the point to the solid: its distance to
+    /// the obstacle's bounding sphere (0 inside), one subtraction cheaper than
+    /// [`distances8`](Self::distances8).
+    #[inline]
+    pub(crate) fn bound_distances8(&self, point: &[f32x8; 3]) -> f32x8 {
+        let [x, y, z] = *point;
+        let (dx, dy, dz) = (
+            x - f32x8::splat(self.center.x),
+            y - f32x8::splat(self.center.y),
+            z - f32x8::splat(self.center.z),
+        );
+        ((dx * dx + dy * dy + dz * dz).sqrt() - f32x8::splat(self.bound)).max(f32x8::ZERO)
+    }
+
+    /// Per lane, the squared distance from the point to the solid (0 inside), `f32`.
+    #[inline]
+    fn excess8(&self, &[x, y, z]: &[f32x8; 3]) -> f32x8 {
         let m = &self.inverse.matrix3;
         let t = self.inverse.translation;
         let row = |a: Vec3A, t: f32| {
@@ -152,7 +179,7 @@ impl Obstacle {
         let py = row(Vec3A::new(m.x_axis.y, m.y_axis.y, m.z_axis.y), t.y);
         let pz = row(Vec3A::new(m.x_axis.z, m.y_axis.z, m.z_axis.z), t.z);
         let zero = f32x8::ZERO;
-        let excess = match self.shape {
+        match self.shape {
             Shape::Cuboid { .. } => {
                 let ex = (px.abs() - f32x8::splat(self.size.x)).max(zero);
                 let ey = (py.abs() - f32x8::splat(self.size.y)).max(zero);
@@ -169,8 +196,7 @@ impl Obstacle {
                     ((px * px + py * py + pz * pz).sqrt() - f32x8::splat(self.size.x)).max(zero);
                 d * d
             }
-        };
-        near & excess.simd_le(radius * radius).to_bitmask()
+        }
     }
 
     /// The distance from `point` to the solid (0 inside), in `f64`: the reference for the

@@ -1,0 +1,206 @@
+//! Certified radii: from the clearance of eight configurations of an edge, how far along the
+//! edge each one can move and stay collision-free — conservative advancement, one `f32x8`
+//! lane per configuration.
+//!
+//! # The radius
+//! At a configuration `m` of the edge (a fraction of it), let `c_k` be the clearance of link
+//! entry `k`: the smallest distance from one of its spheres to an obstacle, less the sphere's
+//! radius and the checker's margin. Over the piece `[m − h, m + h]` its spheres move at most
+//! `B_k(h) = min(h · A_k + h² · Q_k, h · S_k)` (the local sweep bound, with `A_k` measured at
+//! `m`, and the lever-arm bound `S_k`: see `local_sweep.rs`). So the piece is clear of the
+//! scene for link `k` while `B_k(h) ≤ c_k`. A self-collision pair `(a, b)` only moves apart
+//! or together through the joints above one link and not the other (those above both carry
+//! the two rigidly): with `S_ab` the lever-arm sweep of those joints over the edge, the piece
+//! is clear for the pair while `h · S_ab ≤ c_ab`, the pair's clearance less two margins. The
+//! lane's radius is the largest `h` meeting all of them, each solved in closed form and
+//! rounded down.
+//!
+//! Clearances are only computed as far as they matter: the caller names the largest radius
+//! it has a use for, and a link clear by how far it moves over such a piece is not looked at
+//! more closely; a link's bounding
+//! sphere (then its distance to the solid) is tested before its small spheres, which are
+//! placed only if the bound is below what the link has found so far.
+
+use wide::f32x8;
+
+use crate::checking::arm_checker::{LaneScratch, Shared, fill_lanes, outside_limits};
+use crate::checking::lanes::{LANES, Point8};
+use crate::checking::local_sweep::EdgeTerms;
+
+/// What the radii of an edge's configurations depend on besides the configurations: the
+/// joint displacements, the local sweep bound's terms, per link entry the lever-arm sweep
+/// over the whole edge, and per self-collision pair the links' sweep relative to each other.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct EdgeBounds<'a> {
+    pub(crate) delta: &'a [f64],
+    pub(crate) terms: &'a EdgeTerms,
+    pub(crate) sweep: &'a [f64],
+    pub(crate) pair_sweep: &'a [f64],
+}
+
+/// Per lane of `chunk` (at most [`LANES`] configurations of the robot's dimension, on the
+/// edge of `edge`): its certified radius, as a fraction of the edge, and as bit `l` of the
+/// second value whether lane `l` is refused — outside the joint limits, or with a clearance
+/// below `floor` metres (in contact, or within a hair of it). Radii are computed up to
+/// `useful` (a radius at least that large may be returned as `useful` or a little more:
+/// clearances are not sought beyond what it needs). `speeds` is scratch, one entry per link
+/// entry.
+pub(crate) fn certified_radii(
+    s: &Shared,
+    lanes: &mut LaneScratch,
+    speeds: &mut [f32x8],
+    chunk: &[f64],
+    edge: &EdgeBounds<'_>,
+    (floor, useful): (f64, f64),
+) -> ([f64; LANES], u32) {
+    let n = s.lower.len();
+    let count = (chunk.len() / n).min(LANES);
+    let live: u32 = (1 << count) - 1;
+    let mut refused = outside_limits(s, chunk, n) & live;
+    let LaneScratch {
+        poses8,
+        centers8,
+        bounds8,
+        placed,
+        q8,
+    } = lanes;
+    fill_lanes(q8, &chunk[..count * n], n);
+    s.lanes.link_poses(q8, poses8);
+    for (bound, (link, _, center, _)) in bounds8.iter_mut().zip(&s.links) {
+        *bound = poses8[*link].point(*center);
+    }
+    placed.fill(false);
+    s.local
+        .speeds(poses8, bounds8, (edge.delta, edge.terms), speeds);
+    // Rounded up, as the plain checks' margin.
+    let margin = f32x8::splat((s.margin * (1.0 + 1e-6)) as f32);
+    let floor = f32x8::splat(floor as f32);
+    let below = |value: f32x8, than: f32x8| value.simd_lt(than).to_bitmask() & live != 0;
+    let useful = useful as f32;
+    // How far link entry `k` moves over a piece of radius `useful`: clear by this (and twice
+    // the floor, safe from rounding), its radius is at least `useful`.
+    let cap = |k: usize| {
+        let (a, q) = (speeds[k], edge.terms.second(k) as f32);
+        let local = f32x8::splat(useful) * a + f32x8::splat(useful * useful * q);
+        local.min(f32x8::splat(useful * edge.sweep[k] as f32)) + floor + floor
+    };
+    let mut radius = f32x8::splat(f32::INFINITY);
+    for (k, (link, range, _, bound_radius)) in s.links.iter().enumerate() {
+        let sweep = edge.sweep[k] as f32;
+        let r = f32x8::splat(*bound_radius);
+        let mut best = cap(k) + margin;
+        for obstacle in &s.obstacles {
+            if !below(obstacle.bound_distances8(&bounds8[k]) - r, best)
+                || !below(obstacle.distances8(&bounds8[k]) - r, best)
+            {
+                continue;
+            }
+            if !placed[k] {
+                let pose = &poses8[*link];
+                for i in range.clone() {
+                    centers8[i] = pose.point(s.spheres[i].0);
+                }
+                placed[k] = true;
+            }
+            for i in range.clone() {
+                let gap = obstacle.distances8(&centers8[i]) - f32x8::splat(s.spheres[i].1);
+                best = best.min(gap);
+            }
+        }
+        let clear = best - margin;
+        refused |= clear.simd_lt(floor).to_bitmask() & live;
+        let second = edge.terms.second(k) as f32;
+        radius = radius.min(reach(clear, speeds[k], second, sweep));
+    }
+    for (p, &(a, b)) in s.pairs.iter().enumerate() {
+        let (la, lb) = (&s.links[a], &s.links[b]);
+        // Joints above both links move them rigidly together: only the pair's relative sweep
+        // counts.
+        let sweep = edge.pair_sweep[p] as f32;
+        let margins = margin + margin;
+        let mut best = f32x8::splat(useful * sweep) + floor + floor + margins;
+        let reach_ab = f32x8::splat(la.3 + lb.3);
+        if below(distance(&bounds8[a], &bounds8[b]) - reach_ab, best) {
+            for (k, l) in [(a, la), (b, lb)] {
+                if !placed[k] {
+                    let pose = &poses8[l.0];
+                    for i in l.1.clone() {
+                        centers8[i] = pose.point(s.spheres[i].0);
+                    }
+                    placed[k] = true;
+                }
+            }
+            for i in la.1.clone() {
+                let ri = s.spheres[i].1;
+                if !below(
+                    distance(&centers8[i], &bounds8[b]) - f32x8::splat(ri + lb.3),
+                    best,
+                ) {
+                    continue;
+                }
+                for j in lb.1.clone() {
+                    let gap =
+                        distance(&centers8[i], &centers8[j]) - f32x8::splat(ri + s.spheres[j].1);
+                    best = best.min(gap);
+                }
+            }
+        }
+        let clear = best - margins;
+        refused |= clear.simd_lt(floor).to_bitmask() & live;
+        let linear = if sweep > 0.0 {
+            clear.max(f32x8::ZERO) / f32x8::splat(sweep)
+        } else {
+            f32x8::splat(f32::INFINITY)
+        };
+        radius = radius.min(linear);
+    }
+    let radius = radius.to_array();
+    let radii = std::array::from_fn(|l| f64::from(radius[l]) * (1.0 - 1e-4));
+    (radii, refused)
+}
+
+/// Per lane, the largest `h` with `min(h · speed + h² · second, h · sweep) ≤ clear` (0 for a
+/// clearance of 0 or less; unbounded for what does not move).
+#[inline]
+fn reach(clear: f32x8, speed: f32x8, second: f32, sweep: f32) -> f32x8 {
+    let c = clear.max(f32x8::ZERO);
+    let linear = if sweep > 0.0 {
+        c / f32x8::splat(sweep)
+    } else {
+        f32x8::splat(f32::INFINITY)
+    };
+    let q = f32x8::splat(second);
+    // The root of h² · q + h · speed = c, in the form that stays exact as q → 0.
+    let denominator = speed + (speed * speed + f32x8::splat(4.0) * q * c).sqrt();
+    let quadratic = (c + c) / denominator.max(f32x8::splat(f32::MIN_POSITIVE));
+    linear.max(quadratic)
+}
+
+#[inline]
+fn distance(a: &Point8, b: &Point8) -> f32x8 {
+    let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+    (x * x + y * y + z * z).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_radius_meets_the_bound_with_equality() {
+        let (speed, second, sweep) = (0.8_f32, 0.5_f32, 2.0_f32);
+        for clear in [1e-4_f32, 1e-2, 0.3] {
+            let h = reach(f32x8::splat(clear), f32x8::splat(speed), second, sweep).to_array()[0];
+            let bound = (h * speed + h * h * second).min(h * sweep);
+            assert!((bound - clear).abs() <= 1e-5 * clear, "{clear}: {bound}");
+        }
+        // The lever-arm bound wins when it is the tighter one.
+        let h = reach(f32x8::splat(0.5), f32x8::splat(3.0), 10.0, 1.0).to_array()[0];
+        assert!((h - 0.5).abs() < 1e-6, "{h}");
+        // Nothing moves: unbounded; no clearance: nothing.
+        let h = reach(f32x8::splat(0.1), f32x8::ZERO, 0.0, 0.0).to_array()[0];
+        assert!(h > 1e6, "{h}");
+        let h = reach(f32x8::splat(-0.1), f32x8::splat(1.0), 1.0, 1.0).to_array()[0];
+        assert_eq!(h, 0.0);
+    }
+}
