@@ -75,7 +75,6 @@ pub(crate) fn certified_radii(
     // Rounded up, as the plain checks' margin.
     let margin = f32x8::splat((s.margin * (1.0 + 1e-6)) as f32);
     let floor = f32x8::splat(floor as f32);
-    let below = |value: f32x8, than: f32x8| value.simd_lt(than).to_bitmask() & live != 0;
     let useful = useful as f32;
     // How far link entry `k` moves over a piece of radius `useful`: clear by this (and twice
     // the floor, safe from rounding), its radius is at least `useful`.
@@ -90,8 +89,10 @@ pub(crate) fn certified_radii(
         let r = f32x8::splat(*bound_radius);
         let mut best = cap(k) + margin;
         for obstacle in &s.obstacles {
-            if !below(obstacle.bound_distances8(&bounds8[k]) - r, best)
-                || !below(obstacle.distances8(&bounds8[k]) - r, best)
+            // Spheres of the link are no closer than its bounding sphere.
+            let limit = best + r;
+            if obstacle.may_be_within8(&bounds8[k], limit) & live == 0
+                || obstacle.within8(&bounds8[k], limit) & live == 0
             {
                 continue;
             }
@@ -120,7 +121,7 @@ pub(crate) fn certified_radii(
         let margins = margin + margin;
         let mut best = f32x8::splat(useful * sweep) + floor + floor + margins;
         let reach_ab = f32x8::splat(la.3 + lb.3);
-        if below(distance(&bounds8[a], &bounds8[b]) - reach_ab, best) {
+        if closer(&bounds8[a], &bounds8[b], best + reach_ab) & live != 0 {
             for (k, l) in [(a, la), (b, lb)] {
                 if !placed[k] {
                     let pose = &poses8[l.0];
@@ -132,10 +133,7 @@ pub(crate) fn certified_radii(
             }
             for i in la.1.clone() {
                 let ri = s.spheres[i].1;
-                if !below(
-                    distance(&centers8[i], &bounds8[b]) - f32x8::splat(ri + lb.3),
-                    best,
-                ) {
+                if closer(&centers8[i], &bounds8[b], best + f32x8::splat(ri + lb.3)) & live == 0 {
                     continue;
                 }
                 for j in lb.1.clone() {
@@ -174,6 +172,14 @@ fn reach(clear: f32x8, speed: f32x8, second: f32, sweep: f32) -> f32x8 {
     let denominator = speed + (speed * speed + f32x8::splat(4.0) * q * c).sqrt();
     let quadratic = (c + c) / denominator.max(f32x8::splat(f32::MIN_POSITIVE));
     linear.max(quadratic)
+}
+
+/// Bit `l` set if lane `l`'s points are closer than `limit[l]` (no square root).
+#[inline]
+fn closer(a: &Point8, b: &Point8, limit: f32x8) -> u32 {
+    let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+    let positive = limit.simd_gt(f32x8::ZERO).to_bitmask();
+    positive & (x * x + y * y + z * z).simd_lt(limit * limit).to_bitmask()
 }
 
 #[inline]

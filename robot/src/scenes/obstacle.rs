@@ -152,18 +152,31 @@ impl Obstacle {
         self.excess8(point).sqrt()
     }
 
-    /// Per lane, a lower bound on the distance from the point to the solid: its distance to
-    /// the obstacle's bounding sphere (0 inside), one subtraction cheaper than
-    /// [`distances8`](Self::distances8).
+    /// Bit `l` set if lane `l`'s point may be closer than `limit[l]` to the solid: closer
+    /// than `limit + bound` to the bounding sphere's centre (no square root; a cheaper, looser
+    /// test than [`distances8`](Self::distances8)).
     #[inline]
-    pub(crate) fn bound_distances8(&self, point: &[f32x8; 3]) -> f32x8 {
+    pub(crate) fn may_be_within8(&self, point: &[f32x8; 3], limit: f32x8) -> u32 {
         let [x, y, z] = *point;
         let (dx, dy, dz) = (
             x - f32x8::splat(self.center.x),
             y - f32x8::splat(self.center.y),
             z - f32x8::splat(self.center.z),
         );
-        ((dx * dx + dy * dy + dz * dz).sqrt() - f32x8::splat(self.bound)).max(f32x8::ZERO)
+        let reach = limit + f32x8::splat(self.bound);
+        let positive = limit.simd_gt(f32x8::ZERO).to_bitmask();
+        positive
+            & (dx * dx + dy * dy + dz * dz)
+                .simd_lt(reach * reach)
+                .to_bitmask()
+    }
+
+    /// Bit `l` set if lane `l`'s point is closer than `limit[l]` to the solid (no square
+    /// root).
+    #[inline]
+    pub(crate) fn within8(&self, point: &[f32x8; 3], limit: f32x8) -> u32 {
+        let positive = limit.simd_gt(f32x8::ZERO).to_bitmask();
+        positive & self.excess8(point).simd_lt(limit * limit).to_bitmask()
     }
 
     /// Per lane, the squared distance from the point to the solid (0 inside), `f32`.
