@@ -664,3 +664,47 @@ fn an_arm_without_certification_is_refused_unless_allowed() {
         "{stdout}"
     );
 }
+
+#[test]
+fn check_state_names_what_a_configuration_touches() {
+    let folder = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../robot/tests/data/mbm/box_panda"
+    );
+    let problem = format!("mbm:{folder}");
+    // The problem's own start and goal: valid, with their nearest obstacles.
+    let stdout = succeeded(&["check-state", "--problem", problem.as_str()]);
+    assert!(
+        stdout.contains("start: valid") && stdout.contains("goal 1: valid"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("nearest obstacle:"), "{stdout}");
+    // Joint 1 past its limit, the hand folded into link 5: both named, exit code 3.
+    let out = common::mit_star(&[
+        "check-state",
+        "--problem",
+        problem.as_str(),
+        "--state",
+        "3,0,0,0,0,0,0",
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(3), "{text}");
+    for needle in [
+        "INVALID",
+        "joint panda_joint1 = 3 is outside its limits",
+        "link panda_link5 meets link panda_hand",
+    ] {
+        assert!(text.contains(needle), "`{needle}` not in {text}");
+    }
+    // A state of the wrong length is a usage error naming the joint count.
+    let out = common::mit_star(&[
+        "check-state",
+        "--problem",
+        problem.as_str(),
+        "--state",
+        "1,2",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("7 joints"), "{stderr}");
+}

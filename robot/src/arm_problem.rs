@@ -152,6 +152,12 @@ impl ArmProblem {
         Ok(())
     }
 
+    /// What configuration `q` touches, by name: joints outside their limits, links meeting
+    /// obstacles or each other, the nearest obstacle ([`StateDiagnosis`](crate::StateDiagnosis)).
+    pub fn diagnose(&self, q: &[f64]) -> crate::StateDiagnosis {
+        crate::StateDiagnosis::of(&self.robot, &self.scene, &self.checker, q)
+    }
+
     /// The certification factor arm problems ask planners for ([`CERTIFICATION`]).
     pub const CERTIFICATION: u32 = CERTIFICATION;
 

@@ -28,6 +28,7 @@
 //! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases, one-sided (a margin covers `f32` rounding), and certified motion (every configuration of an edge, not only grid points) |
 //! | [`LeverArms`], [`CERTIFICATION_FLOOR`] | how far each link's spheres can move per unit of each joint, over all configurations: the bound certified motion rests on |
 //! | [`ParryChecker`] | the reference checker: `f64`, parry queries, no culling (tests and path re-checks) |
+//! | [`StateDiagnosis`], [`Contact`], [`LimitViolation`] | what one configuration touches, by name (`f64`): joints outside limits, links meeting obstacles or each other, the nearest obstacle (`mit-star check-state`) |
 //! | [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] | an independent continuous check of a motion: conservative advancement in `f64` from parry distances and its own speed bound (the harness's re-check of returned arm paths) |
 //! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with its default check density and the certification its edges ask for |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
@@ -46,7 +47,8 @@ mod scenes;
 pub use arm_error::ArmError;
 pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
 pub use checking::{
-    AUDIT_CONTACT, ArmChecker, AuditVerdict, CERTIFICATION_FLOOR, MotionAudit, ParryChecker,
+    AUDIT_CONTACT, ArmChecker, AuditVerdict, CERTIFICATION_FLOOR, Contact, LimitViolation,
+    MotionAudit, ParryChecker, StateDiagnosis,
 };
 pub use model::{
     Kinematics, LeverArms, LinkFrame, LinkSphere, ModelError, ModelWarning, Motion, RobotModel,

@@ -14,6 +14,7 @@ macro_rules! say {
 
 mod bench;
 mod check_path;
+mod check_state;
 mod compare;
 mod listings;
 mod merge;
@@ -28,6 +29,7 @@ use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
 pub use check_path::CheckPathArgs;
+pub use check_state::CheckStateArgs;
 pub use compare::CompareArgs;
 pub use listings::{ExperimentsArgs, ProblemsArgs};
 pub use merge::MergeArgs;
@@ -60,6 +62,9 @@ pub enum Command {
     /// planners' paths pass: the problem's grid with its certification, and the independent
     /// check (exact for box worlds, continuous for arms).
     CheckPath(CheckPathArgs),
+    /// Diagnose an arm configuration (or a problem's start and goals): joints outside their
+    /// limits, links meeting obstacles or each other, by name, and the nearest obstacle.
+    CheckState(CheckStateArgs),
     /// Run an experiment (file, shipped name, or flags) and write its results folder.
     Bench(BenchArgs),
     /// Combine the results folders of an experiment's shards (`bench --shard K/N`) into one.
@@ -127,6 +132,7 @@ impl Cli {
         match &self.command {
             Command::Plan(args) => args.run(&interrupt),
             Command::CheckPath(args) => args.run(),
+            Command::CheckState(args) => args.run(),
             Command::Bench(args) => args.run(interrupt),
             Command::Merge(args) => args.run(),
             Command::Compare(args) => args.run(),

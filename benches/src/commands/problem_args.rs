@@ -56,6 +56,23 @@ impl ProblemArgs {
     /// resolution, a step the problem refuses, or an arm's start or goal in collision (naming
     /// the colliding links).
     pub fn build(&self, budget: f64) -> Result<ProblemInstance, HarnessError> {
+        self.build_checking_ends(budget, true)
+    }
+
+    /// [`build`](Self::build), keeping an arm problem whose start or goal is in collision
+    /// (for `check-state`, which diagnoses them).
+    ///
+    /// # Errors
+    /// As [`build`](Self::build), but for the ends.
+    pub fn build_with_any_ends(&self, budget: f64) -> Result<ProblemInstance, HarnessError> {
+        self.build_checking_ends(budget, false)
+    }
+
+    fn build_checking_ends(
+        &self,
+        budget: f64,
+        check_ends: bool,
+    ) -> Result<ProblemInstance, HarnessError> {
         let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?;
         let source = match (&self.problem, &self.problem_file) {
             (_, Some(path)) => ProblemSource::file(path)?,
@@ -85,7 +102,7 @@ impl ProblemArgs {
                     .into(),
             ));
         }
-        if let Some(arm) = problem.as_arm() {
+        if let Some(arm) = problem.as_arm().filter(|_| check_ends) {
             arm.check_ends().map_err(|source| HarnessError::Arm {
                 name: arm.name().to_owned(),
                 source,

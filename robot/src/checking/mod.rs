@@ -14,6 +14,8 @@
 //!   culling (tests and path re-checks).
 //! - [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] (`motion_audit.rs`): an independent
 //!   continuous check of a motion by conservative advancement on parry distances.
+//! - [`StateDiagnosis`] (`state_diagnosis.rs`): what one configuration touches, by name, in
+//!   `f64` (`mit-star check-state`).
 //! - `scratch_cell.rs`: the per-clone scratch buffers both checkers keep behind a mutex.
 //!
 //! May use: `model` (the robot, its kinematics and lever arms), `scenes` (the obstacles), and
@@ -28,8 +30,10 @@ mod local_sweep;
 mod motion_audit;
 mod parry_checker;
 mod scratch_cell;
+mod state_diagnosis;
 
 pub use arm_certification::FLOOR as CERTIFICATION_FLOOR;
 pub use arm_checker::ArmChecker;
 pub use motion_audit::{AUDIT_CONTACT, AuditVerdict, MotionAudit};
 pub use parry_checker::ParryChecker;
+pub use state_diagnosis::{Contact, LimitViolation, StateDiagnosis};
