@@ -116,6 +116,14 @@ pub enum HarnessError {
     /// The command line combines options that do not go together, or lacks a required one.
     #[error("{0}")]
     Usage(String),
+    /// A rule of the re-planning experiment (`mit-star replan`) has a value it cannot use.
+    #[error("re-planning rule `{field}` {message}")]
+    ReplanningRule {
+        /// The rule, e.g. `window`.
+        field: String,
+        /// What is wrong with its value.
+        message: String,
+    },
     /// A robot (`--robot`, an experiment's `robot`) could not be found or loaded.
     #[error(transparent)]
     Robot(#[from] robot::RobotSourceError),

@@ -83,6 +83,7 @@ mod formats;
 mod outcome;
 mod path_validation;
 mod pictures;
+pub mod replanning;
 pub mod statistics;
 
 pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};

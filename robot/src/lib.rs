@@ -25,6 +25,7 @@
 //! | [`Obstacle`], [`Shape`] | boxes, cylinders and spheres with poses; exact sphere contact tests |
 //! | [`Scene`] | a MoveIt planning scene (MotionBenchMaker YAML): obstacles and allowed collisions |
 //! | [`MbmProblem`] | a MotionBenchMaker scene + request pair |
+//! | [`MovingObstacle`], [`MovingScene`] | boxes going back and forth along lines; a scene at a time or swept over an interval (the re-planning experiment) |
 //! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases, one-sided (a margin covers `f32` rounding), and certified motion (every configuration of an edge, not only grid points) |
 //! | [`LeverArms`], [`CERTIFICATION_FLOOR`] | how far each link's spheres can move per unit of each joint, over all configurations: the bound certified motion rests on |
 //! | [`ParryChecker`] | the reference checker: `f64`, parry queries, no culling (tests and path re-checks) |
@@ -55,4 +56,4 @@ pub use model::{
     rpy_matrix,
 };
 pub use robots::{RobotSource, RobotSourceError, ShippedRobot};
-pub use scenes::{MbmProblem, Obstacle, Scene, SceneError, Shape};
+pub use scenes::{MbmProblem, MovingObstacle, MovingScene, Obstacle, Scene, SceneError, Shape};
