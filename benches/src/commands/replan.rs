@@ -1,0 +1,177 @@
+//! `mit-star replan`: the paper's re-planning experiment (§V-C) on the Panda.
+
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+
+use clap::Args;
+
+use crate::commands::CommandOutcome;
+use crate::definition::parameter_overrides::ParameterOverrides;
+use crate::definition::problem_source::sanitise;
+use crate::error::HarnessError;
+use crate::replanning::{
+    PlanningBudget, ReplanningExperiment, ReplanningRules, ReplanningScene, ReplanningSummary,
+    TrialPicture, write_trials_csv,
+};
+
+/// Options of `mit-star replan`. The defaults are the shipped experiment: both scenes, the
+/// five planners, 30 trials each, 0.1 s per plan.
+#[derive(Debug, Args)]
+pub struct ReplanArgs {
+    /// Scenes, comma separated: horizontal, vertical.
+    #[arg(long, value_delimiter = ',', default_value = "horizontal,vertical")]
+    pub scenes: Vec<String>,
+    /// Planners, comma separated (`mit-star planners` lists them).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "mit-star,eit-star,ait-star,aorrtc,rrt-connect"
+    )]
+    pub planners: Vec<String>,
+    /// Trials per planner and scene.
+    #[arg(long, default_value_t = 30)]
+    pub trials: usize,
+    /// The seed of the first trial's first plan.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Seconds per plan: the planner's wall-clock budget and what the simulated clock charges.
+    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
+    pub plan_time: f64,
+    /// Plan for this many planner iterations instead of `--plan-time` of wall clock
+    /// (deterministic; the simulated clock still charges `--plan-time`).
+    #[arg(long)]
+    pub iterations: Option<u64>,
+    /// Seconds of motion between two looks of the execution monitor.
+    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
+    pub window: f64,
+    /// Fraction of the joint velocity limits the arm moves at.
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
+    pub velocity_scaling: f64,
+    /// Journeys between the start and the goal per trial.
+    #[arg(long, default_value_t = 5)]
+    pub legs: usize,
+    /// Simulated seconds within which a trial must finish its legs.
+    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
+    pub time_limit: f64,
+    /// Confidence of the intervals.
+    #[arg(long, default_value_t = 0.95)]
+    pub confidence: f64,
+    /// Folder for the tables and pictures.
+    #[arg(long, short, default_value = "results/replanning")]
+    pub output: PathBuf,
+    /// Do not draw the first trial of each planner and scene.
+    #[arg(long)]
+    pub no_picture: bool,
+}
+
+impl ReplanArgs {
+    /// The experiment the options describe.
+    ///
+    /// # Errors
+    /// Unknown scenes or planners, refused parameters, rules that cannot be used.
+    pub fn experiment(&self) -> Result<ReplanningExperiment, HarnessError> {
+        let scenes = self
+            .scenes
+            .iter()
+            .map(|s| ReplanningScene::parse(s))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut overrides = ParameterOverrides::default();
+        for s in &self.set {
+            overrides.push_assignment(s)?;
+        }
+        if !(self.confidence > 0.0 && self.confidence < 1.0) {
+            return Err(HarnessError::Usage(format!(
+                "--confidence {} must be between 0 and 1",
+                self.confidence
+            )));
+        }
+        let rules = ReplanningRules {
+            plan_time: self.plan_time,
+            budget: match self.iterations {
+                Some(n) => PlanningBudget::Iterations(n),
+                None => PlanningBudget::WallClock(self.plan_time),
+            },
+            window: self.window,
+            velocity_scaling: self.velocity_scaling,
+            legs: self.legs,
+            time_limit: self.time_limit,
+            ..ReplanningRules::default()
+        };
+        let rules = rules.checked(crate::replanning::PANDA_VELOCITY_LIMITS.len())?;
+        Ok(ReplanningExperiment {
+            scenes,
+            planners: ReplanningExperiment::planners(&self.planners, &overrides)?,
+            trials: self.trials,
+            seed: self.seed,
+            rules,
+        })
+    }
+
+    /// Runs the trials, prints the table and writes `trials.csv`, `summary.csv`,
+    /// `summary.md` and the pictures into the output folder.
+    ///
+    /// # Errors
+    /// As [`experiment`](Self::experiment), an unwritable folder (before any trial), a
+    /// planner that fails, or a file that cannot be written.
+    pub fn run(&self, interrupt: &AtomicBool) -> Result<CommandOutcome, HarnessError> {
+        let experiment = self.experiment()?;
+        crate::writable_folder(&self.output)?;
+        let total = experiment.scenes.len() * experiment.planners.len() * experiment.trials;
+        let mut count = 0;
+        let records = experiment.run(interrupt, |r| {
+            count += 1;
+            eprintln!(
+                "[{count}/{total}] {} {} trial {}: {} at {:.2} s, travelled {:.2}, {} plans ({} without a path), {} dropped, {:.1} s wall",
+                r.scene,
+                r.planner,
+                r.trial,
+                r.end.label(),
+                r.time,
+                r.travelled,
+                r.plans,
+                r.failed_plans,
+                r.invalidations,
+                r.wall_seconds
+            );
+        })?;
+        write_trials_csv(&records, &self.output.join("trials.csv"))?;
+        let summary = ReplanningSummary::new(&records, self.confidence);
+        summary.write_csv(&self.output.join("summary.csv"))?;
+        let table = summary.markdown();
+        let path = self.output.join("summary.md");
+        std::fs::write(&path, &table).map_err(|source| HarnessError::Io { path, source })?;
+        say!("{table}");
+        if !self.no_picture {
+            for scene in &experiment.scenes {
+                let setup = scene.setup()?;
+                for planner in &experiment.planners {
+                    let first = records
+                        .iter()
+                        .find(|r| r.scene == setup.name && r.planner == planner.name());
+                    if let Some(record) = first {
+                        let stem = format!(
+                            "{}-{}-trial{}",
+                            setup.name,
+                            sanitise(planner.configuration().name()),
+                            record.trial
+                        );
+                        let (svg, png) = (
+                            self.output.join(format!("{stem}.svg")),
+                            self.output.join(format!("{stem}.png")),
+                        );
+                        TrialPicture::new(&setup, record).save(&svg, &png)?;
+                    }
+                }
+            }
+        }
+        say!("results written to {}", self.output.display());
+        Ok(if records.len() < total {
+            CommandOutcome::Interrupted
+        } else {
+            CommandOutcome::Success
+        })
+    }
+}
