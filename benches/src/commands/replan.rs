@@ -37,16 +37,18 @@ pub struct ReplanArgs {
     /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
-    /// Seconds per plan: the planner's wall-clock budget and what the simulated clock charges.
+    /// Seconds of one control cycle: one plan's wall-clock budget, and the simulated time
+    /// between two plans.
     #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
-    pub plan_time: f64,
-    /// Plan for this many planner iterations instead of `--plan-time` of wall clock
-    /// (deterministic; the simulated clock still charges `--plan-time`).
+    pub cycle: f64,
+    /// Plan for this many planner iterations instead of one cycle of wall clock
+    /// (deterministic; the simulated clock still charges a cycle per plan).
     #[arg(long)]
     pub iterations: Option<u64>,
-    /// Seconds of motion between two looks of the execution monitor.
-    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
-    pub window: f64,
+    /// Seconds after a plan is taken up over which planners see the moving obstacles' sweep
+    /// (halved, down to one cycle, while the arm or the goal is inside it).
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    pub look_ahead: f64,
     /// Fraction of the joint velocity limits the arm moves at.
     #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
     pub velocity_scaling: f64,
@@ -89,12 +91,12 @@ impl ReplanArgs {
             )));
         }
         let rules = ReplanningRules {
-            plan_time: self.plan_time,
+            cycle: self.cycle,
             budget: match self.iterations {
                 Some(n) => PlanningBudget::Iterations(n),
-                None => PlanningBudget::WallClock(self.plan_time),
+                None => PlanningBudget::WallClock(self.cycle),
             },
-            window: self.window,
+            look_ahead: self.look_ahead,
             velocity_scaling: self.velocity_scaling,
             legs: self.legs,
             time_limit: self.time_limit,
@@ -124,7 +126,7 @@ impl ReplanArgs {
         let records = experiment.run(interrupt, |r| {
             count += 1;
             eprintln!(
-                "[{count}/{total}] {} {} trial {}: {} at {:.2} s, travelled {:.2}, {} plans ({} without a path), {} dropped, {:.1} s wall",
+                "[{count}/{total}] {} {} trial {}: {} at {:.2} s, travelled {:.2}, {} plans ({} without a path, {} adopted), {} stops, {:.1} s wall",
                 r.scene,
                 r.planner,
                 r.trial,
@@ -133,7 +135,8 @@ impl ReplanArgs {
                 r.travelled,
                 r.plans,
                 r.failed_plans,
-                r.invalidations,
+                r.adopted,
+                r.dropped,
                 r.wall_seconds
             );
         })?;

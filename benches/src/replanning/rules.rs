@@ -14,7 +14,7 @@ pub enum PlanningBudget {
     /// 0.1 s). Results then depend on the machine's speed.
     WallClock(f64),
     /// A number of planner iterations: deterministic on every machine, for tests and exact
-    /// reproduction (the simulated clock still charges [`ReplanningRules::plan_time`]).
+    /// reproduction (the simulated clock still charges one [`ReplanningRules::cycle`]).
     Iterations(u64),
 }
 
@@ -23,12 +23,15 @@ pub enum PlanningBudget {
 /// simulated clock.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ReplanningRules {
-    /// Simulated seconds one plan takes, during which the arm holds still: 0.1.
-    pub plan_time: f64,
+    /// Simulated seconds of one control cycle: the arm executes its path for one cycle while
+    /// the next plan is made, so one plan takes one cycle of the simulated clock: 0.1.
+    pub cycle: f64,
     /// What the planner may compute for one plan: 0.1 s of wall clock by default.
     pub budget: PlanningBudget,
-    /// Seconds of motion between two looks of the execution monitor: 0.1.
-    pub window: f64,
+    /// How far ahead, in seconds after the plan is taken up, planners see the moving
+    /// obstacles' sweep: 1.0 (halved, down to one cycle, while the arm or the goal is inside
+    /// it).
+    pub look_ahead: f64,
     /// Joint velocity limits in rad/s, one per joint ([`PANDA_VELOCITY_LIMITS`]).
     pub velocity_limits: Vec<f64>,
     /// The fraction of the velocity limits the arm moves at (MoveIt's velocity scaling): 0.5.
@@ -45,9 +48,9 @@ pub struct ReplanningRules {
 impl Default for ReplanningRules {
     fn default() -> Self {
         Self {
-            plan_time: 0.1,
+            cycle: 0.1,
             budget: PlanningBudget::WallClock(0.1),
-            window: 0.1,
+            look_ahead: 1.0,
             velocity_limits: PANDA_VELOCITY_LIMITS.to_vec(),
             velocity_scaling: 0.5,
             legs: 5,
@@ -85,8 +88,8 @@ impl ReplanningRules {
                 ))
             }
         };
-        positive("plan time", self.plan_time)?;
-        positive("window", self.window)?;
+        positive("cycle", self.cycle)?;
+        positive("look-ahead", self.look_ahead)?;
         positive("velocity scaling", self.velocity_scaling)?;
         positive("time limit", self.time_limit)?;
         positive("contact floor", self.contact_floor)?;
@@ -120,10 +123,10 @@ impl ReplanningRules {
         if self.legs == 0 {
             return Err(fail("legs", "is 0; at least one leg is needed".to_owned()));
         }
-        if self.contact_floor >= self.window {
+        if self.contact_floor >= self.cycle {
             return Err(fail(
                 "contact floor",
-                format!("{} must be shorter than the window", self.contact_floor),
+                format!("{} must be shorter than the cycle", self.contact_floor),
             ));
         }
         Ok(self)
@@ -147,10 +150,10 @@ mod tests {
             "{e}"
         );
         let bad = ReplanningRules {
-            window: -0.1,
+            cycle: -0.1,
             ..ReplanningRules::default()
         };
-        assert!(bad.checked(7).unwrap_err().to_string().contains("window"));
+        assert!(bad.checked(7).unwrap_err().to_string().contains("cycle"));
         let bad = ReplanningRules {
             budget: PlanningBudget::WallClock(f64::NAN),
             ..ReplanningRules::default()

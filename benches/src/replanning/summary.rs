@@ -35,8 +35,10 @@ pub struct SummaryRow {
     pub plans: f64,
     /// Median failed plans per trial.
     pub failed_plans: f64,
-    /// Median paths dropped by the monitor per trial.
-    pub invalidations: f64,
+    /// Median new paths adopted per trial.
+    pub adopted: f64,
+    /// Median stops per trial (path blocked, no new path).
+    pub dropped: f64,
     /// Median simulated seconds of the successful trials (`∞` without one).
     pub time: f64,
 }
@@ -94,7 +96,8 @@ impl ReplanningSummary {
                     timeouts: count(&|r| r.end == TrialEnd::Timeout),
                     plans: per_trial(&|r| r.plans),
                     failed_plans: per_trial(&|r| r.failed_plans),
-                    invalidations: per_trial(&|r| r.invalidations),
+                    adopted: per_trial(&|r| r.adopted),
+                    dropped: per_trial(&|r| r.dropped),
                     time: median(
                         group
                             .iter()
@@ -120,7 +123,7 @@ impl ReplanningSummary {
         };
         let level = pct(self.confidence);
         let mut out = format!(
-            "| scene | planner | success % [{level} % CI] | median cost [{level} % CI] | collisions | timeouts | plans | failed plans | dropped paths | median time (s) |\n|---|---|---|---|---|---|---|---|---|---|\n"
+            "| scene | planner | success % [{level} % CI] | median cost [{level} % CI] | collisions | timeouts | plans | failed plans | paths adopted | stops | median time (s) |\n|---|---|---|---|---|---|---|---|---|---|---|\n"
         );
         for r in &self.rows {
             let cost = r.cost.map_or("–".to_owned(), |c| {
@@ -133,7 +136,7 @@ impl ReplanningSummary {
             });
             let _ = writeln!(
                 out,
-                "| {} | {} | {}/{} = {} [{}, {}] | {} | {} | {} | {} | {} | {} | {} |",
+                "| {} | {} | {}/{} = {} [{}, {}] | {} | {} | {} | {} | {} | {} | {} | {} |",
                 r.scene,
                 r.planner,
                 r.successes,
@@ -146,7 +149,8 @@ impl ReplanningSummary {
                 r.timeouts,
                 r.plans,
                 r.failed_plans,
-                r.invalidations,
+                r.adopted,
+                r.dropped,
                 number(r.time),
             );
         }
@@ -159,7 +163,7 @@ impl ReplanningSummary {
     /// [`HarnessError::Io`] if the file cannot be written.
     pub fn write_csv(&self, path: &Path) -> Result<(), HarnessError> {
         let mut out = String::from(
-            "scene,planner,trials,successes,success_rate,success_lower,success_upper,median_cost,cost_lower,cost_upper,collisions,timeouts,median_plans,median_failed_plans,median_dropped_paths,median_time\n",
+            "scene,planner,trials,successes,success_rate,success_lower,success_upper,median_cost,cost_lower,cost_upper,collisions,timeouts,median_plans,median_failed_plans,median_adopted,median_stops,median_time\n",
         );
         for r in &self.rows {
             let (m, lo, hi) = r.cost.map_or((f64::NAN, f64::NAN, f64::NAN), |c| {
@@ -167,7 +171,7 @@ impl ReplanningSummary {
             });
             let _ = writeln!(
                 out,
-                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                 r.scene,
                 r.planner,
                 r.trials,
@@ -182,7 +186,8 @@ impl ReplanningSummary {
                 r.timeouts,
                 r.plans,
                 r.failed_plans,
-                r.invalidations,
+                r.adopted,
+                r.dropped,
                 r.time
             );
         }
@@ -196,12 +201,12 @@ impl ReplanningSummary {
 /// [`HarnessError::Io`] if the file cannot be written.
 pub fn write_trials_csv(records: &[TrialRecord], path: &Path) -> Result<(), HarnessError> {
     let mut out = String::from(
-        "scene,planner,trial,seed,end,collision_time,time,legs_done,travelled,cost,plans,failed_plans,dropped_paths,unpadded_plans,held,wall_seconds\n",
+        "scene,planner,trial,seed,end,collision_time,time,legs_done,travelled,cost,plans,failed_plans,adopted,stops,unpadded_plans,held,wall_seconds\n",
     );
     for r in records {
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.scene,
             r.planner,
             r.trial,
@@ -214,7 +219,8 @@ pub fn write_trials_csv(records: &[TrialRecord], path: &Path) -> Result<(), Harn
             r.cost(),
             r.plans,
             r.failed_plans,
-            r.invalidations,
+            r.adopted,
+            r.dropped,
             r.unpadded_plans,
             r.held,
             r.wall_seconds
@@ -246,7 +252,8 @@ mod tests {
             travelled,
             plans,
             failed_plans: 0,
-            invalidations: 1,
+            adopted: 1,
+            dropped: 1,
             unpadded_plans: 0,
             held: 1.0,
             wall_seconds: 1.0,

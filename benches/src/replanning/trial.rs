@@ -19,25 +19,30 @@ const TIME_SLACK: f64 = 1e-9;
 
 /// One re-planning trial: a planner, a scene, the rules and a seed.
 ///
-/// The loop, on a simulated clock `t` (the rules are stated in the user guide's reference
-/// page on arm planning, "Re-planning among moving obstacles"):
+/// The loop, on a simulated clock `t` in control cycles of `cycle` seconds (the rules are
+/// stated in words in the user guide's reference page on arm planning, "Re-planning among
+/// moving obstacles"). At the start of each cycle:
 ///
-/// 1. **Plan** when the arm has no path (at the start of each leg, after a failed plan, or
-///    after the monitor dropped its path). The planner is built afresh (`build_planner`, as
-///    the command line builds planners) for an [`ArmProblem`] from the arm's configuration to
-///    the leg's goal among the fixed obstacles and the moving ones *swept* over
-///    `[t, t + plan_time + window]` — where they may be until the monitor's first look at the
-///    new path. If the arm or the goal lies in that sweep, the plan is made against the
-///    obstacles where they are at `t` (counted as `unpadded_plans`). The arm holds still for
-///    `plan_time`, judged like any motion; a plan without a path leaves it holding.
-/// 2. **Monitor** before each window: the rest of the path is checked (certified) against
-///    the obstacles where they are now; a path an obstacle has moved onto is dropped (the
-///    arm stops at once: no deceleration is modelled) and a new plan is asked for.
-/// 3. **Execute** the path for one `window` (or until it ends) at the joint speeds, the
-///    motion **judged** continuously against the moving obstacles ([`MotionJudge`]): a
-///    contact ends the trial as a collision.
+/// 1. **Predict** where the arm will be at `t + cycle`: along its path, or where it holds.
+///    The plan is for the leg it will be on then (the next leg if the path reaches its goal
+///    within the cycle).
+/// 2. **Plan** from that configuration to the leg's goal, concurrently with the motion: a
+///    planner built afresh (`build_planner`, as the command line builds planners) for an
+///    [`ArmProblem`] among the fixed obstacles and the moving ones *swept* over
+///    `[t, t + cycle + look_ahead]` — from now until `look_ahead` seconds after the new path
+///    is taken up. While the predicted configuration or the goal lies in that sweep, the
+///    look-ahead is halved, down to one cycle; if they are inside even then, the plan is made
+///    against the obstacles where they will be at `t + cycle` (`unpadded_plans`).
+/// 3. **Execute** the current path for the cycle at the joint speeds (or hold still
+///    without one); the motion is **judged** continuously against the moving obstacles
+///    ([`MotionJudge`]): a contact ends the trial as a collision. Reaching the goal ends the
+///    leg; reaching the last leg's goal ends the trial as a success.
+/// 4. **Switch** at `t + cycle`: the rest of the current path is checked (certified) in the
+///    planning scene of step 2. The new path is taken if the rest is blocked or the new path
+///    is shorter; a blocked path with no new path is dropped and the arm stops at once (no
+///    deceleration is modelled: `dropped`).
 ///
-/// The trial succeeds when the last leg's goal is reached within `time_limit`.
+/// A trial not done within `time_limit` times out.
 #[derive(Debug)]
 pub struct Trial<'a> {
     setup: &'a ReplanningSetup,
@@ -69,6 +74,7 @@ impl<'a> Trial<'a> {
         let (setup, rules) = (self.setup, self.rules);
         let space = setup.robot.joint_space().clone();
         let speeds = rules.joint_speeds();
+        let cycle = rules.cycle;
         let mut judge = MotionJudge::new(&setup.robot, &setup.scene, rules.contact_floor);
         let ends = [setup.goal.clone(), setup.start.clone()];
         let mut record = TrialRecord {
@@ -82,7 +88,8 @@ impl<'a> Trial<'a> {
             travelled: 0.0,
             plans: 0,
             failed_plans: 0,
-            invalidations: 0,
+            adopted: 0,
+            dropped: 0,
             unpadded_plans: 0,
             held: 0.0,
             wall_seconds: 0.0,
@@ -92,40 +99,56 @@ impl<'a> Trial<'a> {
         let (mut t, mut q) = (0.0, setup.start.clone());
         let mut path: Option<TimedPath> = None;
         record.end = loop {
-            if record.legs_done == rules.legs {
-                break TrialEnd::Success;
-            }
             if t >= rules.time_limit - TIME_SLACK {
                 break TrialEnd::Timeout;
             }
-            let target = &ends[record.legs_done % 2];
-            let Some(current) = &path else {
-                let plan_seed = seed.wrapping_add(record.plans as u64);
-                let (found, padded) = self.plan(t, &q, target, plan_seed)?;
+            let next = t + cycle;
+            // 1. Where the arm will be, and on which leg.
+            let arrives = path
+                .as_ref()
+                .is_some_and(|p| p.end_time() <= next + TIME_SLACK);
+            let leg = record.legs_done + usize::from(arrives);
+            let predicted = path.as_ref().map_or(q.clone(), |p| p.state_at(next));
+            // 2. Plan (not after the last leg), and judge the current path's rest.
+            let mut planned = None;
+            if leg < rules.legs {
+                let target = &ends[leg % 2];
+                let scene = self.planning_scene(t, &predicted, target);
+                record.unpadded_plans += usize::from(!scene.1);
+                let found = self.plan(
+                    &scene.0,
+                    &predicted,
+                    target,
+                    seed.wrapping_add(record.plans as u64),
+                )?;
                 record.plans += 1;
-                record.unpadded_plans += usize::from(!padded);
                 record.plan_times.push((t, found.is_some()));
-                let hold = Piece::hold(t, t + rules.plan_time, &q);
-                if let Some(time) = judge.first_contact(&[hold]) {
-                    break TrialEnd::Collision { time };
-                }
-                t += rules.plan_time;
-                record.held += rules.plan_time;
-                record.trajectory.push((t, q.clone()));
-                match found {
-                    Some(states) => path = Some(TimedPath::new(&space, &states, &speeds, t)),
-                    None => record.failed_plans += 1,
-                }
-                continue;
-            };
-            let now = setup.scene.at(t);
-            if !path_is_clear(&setup.robot, &now, &current.remaining(t)) {
-                record.invalidations += 1;
-                path = None;
-                continue;
+                record.failed_plans += usize::from(found.is_none());
+                let rest = match &path {
+                    Some(p) if !arrives => Some(p.remaining(next)),
+                    _ => None,
+                };
+                let rest_clear = rest
+                    .as_ref()
+                    .is_some_and(|r| path_is_clear(&setup.robot, &scene.0, r));
+                let rest_length = rest.as_ref().map_or(f64::INFINITY, |r| length(&space, r));
+                planned = Some((found, rest.is_some(), rest_clear, rest_length));
             }
-            let until = (t + rules.window).min(current.end_time());
-            let pieces = current.pieces(t, until);
+            // 3. Execute the cycle.
+            let pieces = match &path {
+                Some(p) => {
+                    let mut pieces = p.pieces(t, next);
+                    let arrival = p.end_time().max(t);
+                    if arrival < next {
+                        pieces.push(Piece::hold(arrival, next, p.last()));
+                    }
+                    pieces
+                }
+                None => {
+                    record.held += cycle;
+                    vec![Piece::hold(t, next, &q)]
+                }
+            };
             if let Some(time) = judge.first_contact(&pieces) {
                 break TrialEnd::Collision { time };
             }
@@ -133,12 +156,30 @@ impl<'a> Trial<'a> {
                 record.travelled += robot_distance(&space, &piece.a, &piece.b);
                 record.trajectory.push((piece.t1, piece.b.clone()));
             }
-            t = until;
-            q = current.state_at(t);
-            if t >= current.end_time() - TIME_SLACK {
-                q = current.last().to_vec();
+            if arrives {
+                let arrival = path.as_ref().map_or(t, TimedPath::end_time).max(t);
                 record.legs_done += 1;
                 path = None;
+                if record.legs_done == rules.legs {
+                    t = arrival;
+                    break TrialEnd::Success;
+                }
+            }
+            t = next;
+            q = predicted;
+            // 4. Switch.
+            if let Some((found, had_rest, rest_clear, rest_length)) = planned {
+                match found {
+                    Some(states) if !rest_clear || length(&space, &states) < rest_length => {
+                        path = Some(TimedPath::new(&space, &states, &speeds, t));
+                        record.adopted += 1;
+                    }
+                    None if had_rest && !rest_clear => {
+                        path = None;
+                        record.dropped += 1;
+                    }
+                    _ => {}
+                }
             }
         };
         record.time = match record.end {
@@ -149,43 +190,54 @@ impl<'a> Trial<'a> {
         Ok(record)
     }
 
-    /// One plan from `q` at time `t` to `target`: the path found (if any), and whether it was
-    /// planned against the obstacles' sweep (`true`) or where they are (`false`).
-    fn plan(
-        &self,
-        t: f64,
-        q: &[f64],
-        target: &[f64],
-        seed: u64,
-    ) -> Result<(Option<Vec<Vec<f64>>>, bool), HarnessError> {
-        let started = Instant::now();
-        let (setup, rules) = (self.setup, self.rules);
-        let ends_clear = |scene: &Scene| {
+    /// The scene a plan made at `t` for the arm at `q` at `t + cycle` sees: the obstacles
+    /// swept over `[t, t + cycle + h]` for the longest look-ahead `h` (the rules'
+    /// `look_ahead`, halved down to one cycle) whose sweep leaves `q` and `target` free
+    /// (`true`), else the obstacles where they will be at `t + cycle` (`false`).
+    fn planning_scene(&self, t: f64, q: &[f64], target: &[f64]) -> (Scene, bool) {
+        let (setup, cycle) = (self.setup, self.rules.cycle);
+        let clear = |scene: &Scene| {
             path_is_clear(&setup.robot, scene, &[q.to_vec()])
                 && path_is_clear(&setup.robot, scene, &[target.to_vec()])
         };
-        let swept = setup.scene.swept(t, t + rules.plan_time + rules.window);
-        let (scene, padded) = if ends_clear(&swept) {
-            (swept, true)
-        } else {
-            (setup.scene.at(t), false)
-        };
-        if !ends_clear(&scene) {
-            return Ok((None, padded));
+        let mut h = self.rules.look_ahead.max(cycle);
+        loop {
+            let swept = setup.scene.swept(t, t + cycle + h);
+            if clear(&swept) {
+                return (swept, true);
+            }
+            if h <= cycle {
+                return (setup.scene.at(t + cycle), false);
+            }
+            h = (0.5 * h).max(cycle);
         }
-        let name = format!("{}@{t:.3}", setup.name);
-        let arm = |source| HarnessError::Arm {
-            name: name.clone(),
-            source,
-        };
+    }
+
+    /// One plan from `q` to `target` in `scene`: the path found, if any (none if `q` or
+    /// `target` is not free there).
+    fn plan(
+        &self,
+        scene: &Scene,
+        q: &[f64],
+        target: &[f64],
+        seed: u64,
+    ) -> Result<Option<Vec<Vec<f64>>>, HarnessError> {
+        let started = Instant::now();
+        let setup = self.setup;
+        if !path_is_clear(&setup.robot, scene, &[q.to_vec()])
+            || !path_is_clear(&setup.robot, scene, &[target.to_vec()])
+        {
+            return Ok(None);
+        }
+        let name = format!("{}-replanning", setup.name);
         let problem = ArmProblem::new(
             name.clone(),
             setup.robot.clone(),
-            scene,
+            scene.clone(),
             q.to_vec(),
             target.to_vec(),
         )
-        .map_err(arm)?;
+        .map_err(|source| HarnessError::Arm { name, source })?;
         let planner_name = self.planner.name().to_owned();
         let parameters = self.planner.parameters_for_seed(seed);
         let mut planner =
@@ -195,7 +247,7 @@ impl<'a> Trial<'a> {
                     source,
                 },
             )?;
-        let outcome = match rules.budget {
+        let outcome = match self.rules.budget {
             PlanningBudget::WallClock(seconds) => {
                 let budget = crate::budget::budget_duration(seconds).map_err(|source| {
                     HarnessError::Budget {
@@ -211,11 +263,17 @@ impl<'a> Trial<'a> {
             planner: planner_name,
             source,
         })?;
-        let path = outcome
+        Ok(outcome
             .solution()
-            .map(|s| s.path.iter().map(<[f64]>::to_vec).collect());
-        Ok((path, padded))
+            .map(|s| s.path.iter().map(<[f64]>::to_vec).collect()))
     }
+}
+
+/// The joint-space length of `path`.
+fn length(space: &spaces::JointSpace, path: &[Vec<f64>]) -> f64 {
+    path.windows(2)
+        .map(|w| robot_distance(space, &w[0], &w[1]))
+        .sum()
 }
 
 /// The joint-space distance the planners' cost measures.
@@ -269,8 +327,12 @@ mod tests {
         let (planner, rules) = (rrt_connect(), rules());
         let record = Trial::new(&setup, &planner, &rules).run(1, 7).unwrap();
         assert_eq!(record.end, TrialEnd::Success, "{record:?}");
-        assert_eq!((record.legs_done, record.invalidations), (2, 0));
-        assert_eq!(record.plans, 2 + record.failed_plans);
+        assert_eq!(
+            (record.legs_done, record.dropped, record.failed_plans),
+            (2, 0, 0)
+        );
+        // One plan per cycle until the last leg is on its way.
+        assert!(record.plans >= 2 && record.adopted >= 2);
         // The arm went there and back: at least twice the straight line.
         let straight =
             spaces::StateSpace::distance(setup.robot.joint_space(), &setup.start, &setup.goal);
@@ -287,9 +349,9 @@ mod tests {
             .map(|w| robot_distance(setup.robot.joint_space(), &w[0].1, &w[1].1))
             .sum();
         assert!((length - record.travelled).abs() < 1e-9);
-        // Held while planning, moved at the joint speeds otherwise.
-        assert!((record.held - 0.1 * record.plans as f64).abs() < 1e-9);
-        assert!(record.time > record.held && record.time < rules.time_limit);
+        // Held only for the first cycle, while the first plan was made.
+        assert!((record.held - 0.1).abs() < 1e-9, "{}", record.held);
+        assert!(record.time > 1.0 && record.time < rules.time_limit);
         // The same seed plans the same trial (an iteration budget is deterministic).
         let again = Trial::new(&setup, &planner, &rules).run(1, 7).unwrap();
         assert_eq!(

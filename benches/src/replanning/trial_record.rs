@@ -50,19 +50,22 @@ pub struct TrialRecord {
     pub travelled: f64,
     /// Plans asked for.
     pub plans: usize,
-    /// Plans that returned no path (the arm held still).
+    /// Plans that returned no path.
     pub failed_plans: usize,
-    /// Paths the execution monitor dropped because an obstacle had moved onto them.
-    pub invalidations: usize,
-    /// Plans made against the obstacles where they were, because the arm or the goal lay in
-    /// their sweep over the plan and the next window.
+    /// New paths the arm switched to.
+    pub adopted: usize,
+    /// Times the arm stopped because its path was blocked and the plan found none.
+    pub dropped: usize,
+    /// Plans made against the obstacles where they will be when the plan is taken up, because
+    /// the arm or the goal lay in their sweep.
     pub unpadded_plans: usize,
-    /// Simulated seconds the arm held still (planning, or without a path).
+    /// Simulated seconds the arm held still for want of a path (the first cycle, while the
+    /// first plan is made, included).
     pub held: f64,
     /// Wall-clock seconds the trial took.
     pub wall_seconds: f64,
     /// The configurations the arm passed through, with their simulated times (at every
-    /// window's end and every path state).
+    /// cycle's end and every path state).
     #[serde(skip)]
     pub trajectory: Vec<(f64, Vec<f64>)>,
     /// When each plan was asked for, and whether it returned a path.
@@ -112,7 +115,8 @@ mod tests {
             travelled: 12.5,
             plans: 7,
             failed_plans: 0,
-            invalidations: 2,
+            adopted: 6,
+            dropped: 2,
             unpadded_plans: 0,
             held: 0.7,
             wall_seconds: 0.7,
