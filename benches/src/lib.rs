@@ -43,6 +43,7 @@
 //! | `formats/` | the result formats, each writer beside its reader: `ompl_log/` (OMPL logs written and parsed), the Planner Arena database, raw runs (CSV, JSON lines), KPI tables and campaign comparisons |
 //! | `pictures/` | figures of experiments, pictures of 2-D runs and of arm plans, their shared style |
 //! | `statistics/` | medians and their confidence intervals, Clopper–Pearson, anytime series |
+//! | `replanning/` | the paper's re-planning experiment on the Panda: moving-obstacle scenes, the trial loop, its judge, table and picture ([`replanning`]) |
 //! | `commands/` | the `mit-star` command line, thin on top of the rest |
 //! | `path_validation.rs`, `budget.rs`, `error.rs` | the independent path check; time budgets; [`HarnessError`] |
 //!
@@ -66,7 +67,7 @@
 //! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
 //! | [`Shard`], [`SHARD_FILE`], [`merge_parts`], [`MergeReport`] | one of N disjoint parts of an experiment (`bench --shard K/N`); the parts' folders combined into one |
 //! | [`CampaignComparison`], [`ComparedRow`], [`Change`] | two results folders side by side (`mit-star compare A B`) |
-//! | [`commands`] | the `mit-star` command line (`plan`, `check-path`, `bench`, `merge`, `compare`, `problems`, `planners`, `robots`, `experiments`) |
+//! | [`commands`] | the `mit-star` command line (`plan`, `check-path`, `bench`, `merge`, `compare`, `problems`, `planners`, `robots`, `experiments`, `replan`) |
 //! | [`budget_duration`], [`deadline_after`], [`BudgetError`], [`short_number`] | time budgets checked into durations; numbers for messages |
 //! | [`HarnessError`] | everything that can go wrong, naming what is wrong |
 //!

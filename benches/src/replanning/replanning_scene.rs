@@ -190,7 +190,7 @@ mod tests {
                 // Clear of every obstacle over a whole period of the motion.
                 let swept = setup.scene.swept(0.0, 10.0);
                 assert!(
-                    path_is_clear(&setup.robot, &swept, &[q.clone()]),
+                    path_is_clear(&setup.robot, &swept, std::slice::from_ref(q)),
                     "{}",
                     scene.name()
                 );

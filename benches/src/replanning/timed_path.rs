@@ -63,8 +63,8 @@ impl Piece {
 }
 
 /// A path of straight joint-space edges executed from `start_time` on, each edge at constant
-/// speed and taking `max_j |Δq_j| / speed_j` seconds: the slowest joint at its speed, the
-/// others slower, no acceleration limit (the arm starts and stops at once). Time-optimal for
+/// speed and taking `max_j |Δq_j| / speed_j` seconds: the joint that needs longest moves at
+/// its speed, the others slower, no acceleration limit (the arm starts and stops at once). Time-optimal for
 /// a straight edge under per-joint speed limits.
 ///
 /// ```
@@ -240,7 +240,7 @@ mod tests {
             b: vec![2.0, -2.0],
         };
         let (first, second) = piece.halves(&space());
-        assert_eq!((first.t1, first.b.clone()), (1.0, vec![1.0, -1.0]));
+        assert_eq!((first.t1, first.b), (1.0, vec![1.0, -1.0]));
         assert_eq!((second.t0, second.a), (1.0, vec![1.0, -1.0]));
         let single = TimedPath::new(&space(), &[vec![0.5, 0.5]], &[1.0, 1.0], 0.0);
         assert_eq!(single.end_time(), 0.0);
