@@ -4,24 +4,25 @@
 mod common;
 use common::{refused, succeeded};
 
+/// Two trials of two planners, two legs each, on iteration budgets (deterministic).
+const TINY: [&str; 11] = [
+    "replan",
+    "--scenes",
+    "horizontal",
+    "--planners",
+    "rrt-connect,mit-star",
+    "--trials",
+    "2",
+    "--legs",
+    "2",
+    "--iterations",
+    "150",
+];
+
 #[test]
 fn a_tiny_replanning_experiment_writes_its_table_and_pictures() {
     let out = common::scratch("replanning", "tiny");
-    let text = succeeded(&[
-        "replan",
-        "--scenes",
-        "horizontal",
-        "--planners",
-        "rrt-connect,mit-star",
-        "--trials",
-        "2",
-        "--legs",
-        "2",
-        "--iterations",
-        "150",
-        "--output",
-        out.to_str().unwrap(),
-    ]);
+    let text = succeeded(&[TINY.as_slice(), &["--output", out.to_str().unwrap()]].concat());
     assert!(
         text.contains("| horizontal | RRT-Connect | 2/2 = 100.0 ["),
         "{text}"
@@ -49,22 +50,13 @@ fn a_tiny_replanning_experiment_writes_its_table_and_pictures() {
     }
     // Iteration budgets are deterministic: the same command, the same trials.
     let again = common::scratch("replanning", "tiny-again");
-    succeeded(&[
-        "replan",
-        "--scenes",
-        "horizontal",
-        "--planners",
-        "rrt-connect,mit-star",
-        "--trials",
-        "2",
-        "--legs",
-        "2",
-        "--iterations",
-        "150",
-        "--no-picture",
-        "--output",
-        again.to_str().unwrap(),
-    ]);
+    succeeded(
+        &[
+            TINY.as_slice(),
+            &["--no-picture", "--output", again.to_str().unwrap()],
+        ]
+        .concat(),
+    );
     let columns = |text: &str| -> Vec<String> {
         // Everything but the wall-clock seconds.
         text.lines()
