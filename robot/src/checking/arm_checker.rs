@@ -412,8 +412,9 @@ pub(crate) fn invalid_lanes(
     invalid
 }
 
+/// Per lane, the squared distance between the two points.
 #[inline]
-fn distance_squared(a: &Point8, b: &Point8) -> f32x8 {
+pub(crate) fn distance_squared(a: &Point8, b: &Point8) -> f32x8 {
     let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
     x * x + y * y + z * z
 }

@@ -23,7 +23,9 @@
 
 use wide::f32x8;
 
-use crate::checking::arm_checker::{LaneScratch, Shared, fill_lanes, outside_limits};
+use crate::checking::arm_checker::{
+    LaneScratch, Shared, distance_squared, fill_lanes, outside_limits,
+};
 use crate::checking::lanes::{LANES, Point8};
 use crate::checking::local_sweep::EdgeTerms;
 
@@ -137,8 +139,8 @@ pub(crate) fn certified_radii(
                     continue;
                 }
                 for j in lb.1.clone() {
-                    let gap =
-                        distance(&centers8[i], &centers8[j]) - f32x8::splat(ri + s.spheres[j].1);
+                    let gap = distance_squared(&centers8[i], &centers8[j]).sqrt()
+                        - f32x8::splat(ri + s.spheres[j].1);
                     best = best.min(gap);
                 }
             }
@@ -177,15 +179,8 @@ fn reach(clear: f32x8, speed: f32x8, second: f32, sweep: f32) -> f32x8 {
 /// Bit `l` set if lane `l`'s points are closer than `limit[l]` (no square root).
 #[inline]
 fn closer(a: &Point8, b: &Point8, limit: f32x8) -> u32 {
-    let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
     let positive = limit.simd_gt(f32x8::ZERO).to_bitmask();
-    positive & (x * x + y * y + z * z).simd_lt(limit * limit).to_bitmask()
-}
-
-#[inline]
-fn distance(a: &Point8, b: &Point8) -> f32x8 {
-    let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-    (x * x + y * y + z * z).sqrt()
+    positive & distance_squared(a, b).simd_lt(limit * limit).to_bitmask()
 }
 
 #[cfg(test)]

@@ -213,6 +213,13 @@ mod tests {
                 .wrapping_add(1);
             (self.0 >> 11) as f64 / (1u64 << 53) as f64
         }
+
+        /// A configuration drawn uniformly within the joint limits of `space`.
+        fn configuration(&mut self, space: &spaces::JointSpace) -> Vec<f64> {
+            (0..space.dimension())
+                .map(|j| space.lower()[j] + self.unit() * (space.upper()[j] - space.lower()[j]))
+                .collect()
+        }
     }
 
     /// Over random pieces of random Panda edges, no sphere centre moves (sampled finely, in
@@ -237,12 +244,7 @@ mod tests {
         let mut rng = Lcg(7);
         let mut tightest = f64::INFINITY;
         for _ in 0..300 {
-            let draw = |rng: &mut Lcg| -> Vec<f64> {
-                (0..n)
-                    .map(|j| space.lower()[j] + rng.unit() * (space.upper()[j] - space.lower()[j]))
-                    .collect()
-            };
-            let (a, b) = (draw(&mut rng), draw(&mut rng));
+            let (a, b) = (rng.configuration(space), rng.configuration(space));
             let delta: Vec<f64> = a.iter().zip(&b).map(|(x, y)| y - x).collect();
             let h = 0.5 * rng.unit().powi(3);
             let m = h + rng.unit() * (1.0 - 2.0 * h);
@@ -303,12 +305,7 @@ mod tests {
         let mut tightest = f64::INFINITY;
         assert!(!s.pairs.is_empty());
         for _ in 0..100 {
-            let draw = |rng: &mut Lcg| -> Vec<f64> {
-                (0..n)
-                    .map(|j| space.lower()[j] + rng.unit() * (space.upper()[j] - space.lower()[j]))
-                    .collect()
-            };
-            let (a, b) = (draw(&mut rng), draw(&mut rng));
+            let (a, b) = (rng.configuration(space), rng.configuration(space));
             let q =
                 |t: f64| -> Vec<f64> { a.iter().zip(&b).map(|(x, y)| x + (y - x) * t).collect() };
             let (m, t) = (rng.unit(), rng.unit());
