@@ -34,6 +34,7 @@
 //! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with its default check density and the certification its edges ask for |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 //! | [`ShippedRobot`], [`RobotSource`], [`RobotSourceError`] | the shipped models (Panda, UR5, Fetch) and a robot named by name or folder |
+//! | [`SphereCover`], [`CoverOptions`], [`CoverSphere`], [`TriangleMesh`], [`read_stl`], [`parse_stl`], [`SpherisedUrdf`], [`SpheriseOptions`], [`LinkReport`], [`LinkSource`], [`SpheriseError`] | spheres from meshes: a conservative cover of a mesh's solid within a tolerance, and a URDF rewritten with them (`mit-star spherise`) |
 //! | [`ModelWarning`] | what a lenient model ignored: SRDF and allowed-collision entries naming links it lacks |
 
 #![forbid(unsafe_code)]
@@ -44,6 +45,7 @@ mod checking;
 mod model;
 mod robots;
 mod scenes;
+mod spherise;
 
 pub use arm_error::ArmError;
 pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
@@ -57,3 +59,7 @@ pub use model::{
 };
 pub use robots::{RobotSource, RobotSourceError, ShippedRobot};
 pub use scenes::{MbmProblem, MovingObstacle, MovingScene, Obstacle, Scene, SceneError, Shape};
+pub use spherise::{
+    CoverOptions, CoverSphere, LinkReport, LinkSource, SphereCover, SpheriseError, SpheriseOptions,
+    SpherisedUrdf, TriangleMesh, parse_stl, read_stl,
+};

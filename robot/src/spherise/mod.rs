@@ -1,0 +1,37 @@
+//! Spheres from meshes: a conservative sphere cover of each link's collision meshes, and a
+//! URDF written with those spheres as its collision geometry (`mit-star spherise`).
+//!
+//! - [`TriangleMesh`] (`triangle_mesh.rs`): triangles over shared vertices, boxes and
+//!   cylinders as meshes; [`read_stl`] and [`parse_stl`] (`stl.rs`): binary and ASCII STL.
+//! - `solid.rs`: a mesh as a point set (the solid of a closed mesh, the surface of an open
+//!   one), distances through parry and a robust ray-parity test of inside.
+//! - `cell_grid.rs`: the solid cut into cells, each cell's part bounded by a box.
+//! - [`SphereCover`] (`sphere_cover.rs`): few spheres containing every cell's box, each
+//!   protruding by at most the tolerance, with [`CoverOptions`] and [`CoverSphere`].
+//! - [`SpherisedUrdf`] (`spherised_urdf.rs`): a URDF's collision meshes and primitives
+//!   covered link by link, and the URDF rewritten with spheres; `urdf_collisions.rs` reads
+//!   the collision elements and finds their mesh files.
+//! - [`SpheriseError`] (`spherise_error.rs`): what went wrong, naming the file or link.
+//!
+//! **The guarantee:** the union of a cover's spheres contains every point of every triangle
+//! and, for a closed mesh, every point inside it; no point of a sphere lies farther from the
+//! mesh's solid than the sphere's reported protrusion (tested in
+//! `robot/tests/sphere_cover.rs`).
+//!
+//! May use: `glam`, `parry3d-f64`, `roxmltree`, `thiserror`, and `rpy_matrix` from `model`.
+//! Nothing else in the crate uses it.
+
+mod cell_grid;
+mod solid;
+mod sphere_cover;
+mod spherise_error;
+mod spherised_urdf;
+mod stl;
+mod triangle_mesh;
+mod urdf_collisions;
+
+pub use sphere_cover::{CoverOptions, CoverSphere, SphereCover};
+pub use spherise_error::SpheriseError;
+pub use spherised_urdf::{LinkReport, LinkSource, SpheriseOptions, SpherisedUrdf};
+pub use stl::{parse_stl, read_stl};
+pub use triangle_mesh::TriangleMesh;

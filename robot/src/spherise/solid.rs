@@ -1,0 +1,201 @@
+//! [`Solid`]: the point set a mesh stands for — the enclosed solid of a closed mesh, the
+//! surface of an open one — with distances (parry's bounding-volume tree) and a robust
+//! ray-parity test of inside.
+
+use glam::{DVec2, DVec3};
+use parry3d_f64::query::PointQuery;
+use parry3d_f64::shape::TriMesh;
+
+use super::spherise_error::SpheriseError;
+use super::triangle_mesh::TriangleMesh;
+
+/// How many nearby rays a parity test tries before it gives up on a column whose rays all
+/// graze an edge or a vertex.
+const RAY_TRIES: u32 = 48;
+
+/// A mesh as a point set: for a closed mesh the solid it bounds, for an open one its surface.
+pub(super) struct Solid {
+    mesh: TriangleMesh,
+    closed: bool,
+    tree: TriMesh,
+    /// Points this close to the surface count as part of the solid: the parity test may be
+    /// wrong only within it (its rays are moved by less when they graze an edge).
+    near: f64,
+    /// A ray passing this close to a projected edge grazes it, and is moved.
+    graze: f64,
+}
+
+impl Solid {
+    /// The solid of `mesh` (its surface if the mesh is not closed).
+    ///
+    /// # Errors
+    /// [`SpheriseError::BadMesh`] if parry refuses the mesh (it has no triangle).
+    pub(super) fn new(mesh: TriangleMesh) -> Result<Self, SpheriseError> {
+        let tree =
+            TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec()).map_err(|e| {
+                SpheriseError::BadMesh {
+                    what: "mesh".into(),
+                    why: e.to_string(),
+                }
+            })?;
+        let (lo, hi) = mesh.bounds();
+        let scale = 1.0 + (hi - lo).length() + lo.abs().max(hi.abs()).max_element();
+        Ok(Self {
+            closed: mesh.is_closed(),
+            mesh,
+            tree,
+            near: 1e-8 * scale,
+            graze: 1e-11 * scale,
+        })
+    }
+
+    /// The mesh.
+    pub(super) fn mesh(&self) -> &TriangleMesh {
+        &self.mesh
+    }
+
+    /// Whether the mesh is closed (the solid has an inside).
+    pub(super) fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The distance within which a point counts as on the surface
+    /// ([`contains`](Self::contains) answers `Some(true)` there).
+    pub(super) fn near(&self) -> f64 {
+        self.near
+    }
+
+    /// The distance from `p` to the surface.
+    pub(super) fn surface_distance(&self, p: DVec3) -> f64 {
+        self.tree.distance_to_local_point(p, false)
+    }
+
+    /// Whether `p` is in the solid: inside a closed mesh by ray parity, or within
+    /// [`near`](Self::near) of the surface. `None` if every ray tried grazed an edge.
+    pub(super) fn contains(&self, p: DVec3) -> Option<bool> {
+        if self.surface_distance(p) <= self.near {
+            return Some(true);
+        }
+        if !self.closed {
+            return Some(false);
+        }
+        let crossings = self.column_crossings(p.x, p.y)?;
+        Some(crossings.iter().filter(|&&z| z > p.z).count() % 2 == 1)
+    }
+
+    /// The distance from `p` to the solid (0 inside it), conservative where parity is
+    /// undecided (the distance to the surface).
+    pub(super) fn distance(&self, p: DVec3) -> f64 {
+        match self.contains(p) {
+            Some(true) => 0.0,
+            _ => self.surface_distance(p),
+        }
+    }
+
+    /// The heights at which a ray parallel to `z` through `(x, y)`, moved by less than
+    /// [`near`](Self::near) if it grazes an edge, crosses the surface, sorted. A point of
+    /// that column farther than `near` from the surface is inside iff an odd number of them
+    /// lie above it. `None` if every ray tried grazed an edge.
+    pub(super) fn column_crossings(&self, x: f64, y: f64) -> Option<Vec<f64>> {
+        let step = self.near / f64::from(2 * RAY_TRIES);
+        (0..RAY_TRIES).find_map(|k| {
+            let shift = step * f64::from(k);
+            let q = DVec2::new(x + 0.754_877_666 * shift, y + 0.569_840_291 * shift);
+            let mut crossings = Vec::new();
+            for t in 0..self.mesh.triangles().len() {
+                match crossing(self.mesh.corners(t), q, self.graze) {
+                    Crossing::Grazes => return None,
+                    Crossing::At(z) => crossings.push(z),
+                    Crossing::Misses => {}
+                }
+            }
+            crossings.sort_by(f64::total_cmp);
+            Some(crossings)
+        })
+    }
+}
+
+enum Crossing {
+    Misses,
+    At(f64),
+    Grazes,
+}
+
+/// Where the vertical line through `q` crosses the triangle, if it does; `Grazes` when it
+/// passes within `graze` of a projected edge (the parity would be unreliable).
+fn crossing([a, b, c]: [DVec3; 3], q: DVec2, graze: f64) -> Crossing {
+    let (a2, b2, c2) = (a.truncate(), b.truncate(), c.truncate());
+    let lo = a2.min(b2).min(c2) - DVec2::splat(graze);
+    let hi = a2.max(b2).max(c2) + DVec2::splat(graze);
+    if q.x < lo.x || q.y < lo.y || q.x > hi.x || q.y > hi.y {
+        return Crossing::Misses;
+    }
+    if [(a2, b2), (b2, c2), (c2, a2)]
+        .iter()
+        .any(|&(u, v)| segment_distance(q, u, v) <= graze)
+    {
+        return Crossing::Grazes;
+    }
+    let orient = |u: DVec2, v: DVec2| (v - u).perp_dot(q - u);
+    let (wa, wb, wc) = (orient(b2, c2), orient(c2, a2), orient(a2, b2));
+    let area = wa + wb + wc;
+    let same = |w: f64| (w > 0.0) == (area > 0.0);
+    if area == 0.0 || !(same(wa) && same(wb) && same(wc)) {
+        return Crossing::Misses;
+    }
+    Crossing::At((wa * a.z + wb * b.z + wc * c.z) / area)
+}
+
+/// The distance from `q` to the segment `uv` in the plane.
+fn segment_distance(q: DVec2, u: DVec2, v: DVec2) -> f64 {
+    let d = v - u;
+    let length2 = d.length_squared();
+    let t = if length2 > 0.0 {
+        ((q - u).dot(d) / length2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (u + d * t - q).length()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cube_contains_its_inside_and_measures_distances() {
+        let cube = Solid::new(TriangleMesh::cuboid(DVec3::splat(1.0)).unwrap()).unwrap();
+        assert!(cube.is_closed());
+        // Points on the columns of the cube's edges and vertices graze and are moved.
+        for p in [
+            DVec3::ZERO,
+            DVec3::new(0.9, -0.9, 0.5),
+            DVec3::new(0.0, 0.0, 0.99),
+        ] {
+            assert_eq!(cube.contains(p), Some(true), "{p}");
+        }
+        for p in [
+            DVec3::new(1.1, 0.0, 0.0),
+            DVec3::new(0.0, 0.0, -1.5),
+            DVec3::new(1.0, 1.0, 2.0),
+        ] {
+            assert_eq!(cube.contains(p), Some(false), "{p}");
+        }
+        assert!((cube.surface_distance(DVec3::new(0.5, 0.0, 0.0)) - 0.5).abs() < 1e-12);
+        assert_eq!(cube.distance(DVec3::new(0.5, 0.0, 0.0)), 0.0);
+        assert!((cube.distance(DVec3::new(3.0, 0.0, 0.0)) - 2.0).abs() < 1e-12);
+        // On the surface counts as in.
+        assert_eq!(cube.contains(DVec3::new(1.0, 0.3, 0.2)), Some(true));
+    }
+
+    #[test]
+    fn an_open_mesh_is_its_surface() {
+        let sheet =
+            TriangleMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]).unwrap();
+        let sheet = Solid::new(sheet).unwrap();
+        assert!(!sheet.is_closed());
+        assert_eq!(sheet.contains(DVec3::new(0.2, 0.2, 0.0)), Some(true));
+        assert_eq!(sheet.contains(DVec3::new(0.2, 0.2, 0.1)), Some(false));
+        assert!((sheet.distance(DVec3::new(0.2, 0.2, -0.25)) - 0.25).abs() < 1e-12);
+    }
+}

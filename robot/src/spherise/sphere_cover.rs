@@ -1,0 +1,431 @@
+//! [`SphereCover`]: few spheres whose union contains a mesh's solid, each protruding beyond
+//! it by at most the tolerance.
+//!
+//! The solid is cut into cells ([`CellGrid`]); a sphere must contain each cell's element box.
+//! Candidate spheres protrude by at most the tolerance `t` by construction: a centre `c`
+//! inside the solid at distance `D` from its surface has the inner ball `B(c, D)` in the
+//! solid, so `B(c, D + t)` reaches at most `t` beyond it; a centre outside at distance `d`
+//! gets radius `t − d`. Greedy set cover (lazy, by the number of elements still uncovered)
+//! picks candidates until every element is covered; each picked sphere then shrinks to the
+//! farthest corner of the elements it was picked for, and spheres whose elements others
+//! cover are dropped. Cells of edge `t/√3` make every element coverable by a candidate.
+
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+use glam::DVec3;
+
+use super::cell_grid::{CellGrid, Element};
+use super::solid::Solid;
+use super::spherise_error::SpheriseError;
+use super::triangle_mesh::TriangleMesh;
+
+/// Samples per sphere for the measured protrusion.
+const SAMPLES_PER_SPHERE: usize = 400;
+
+/// How to cover a mesh.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoverOptions {
+    /// The most a sphere may protrude beyond the mesh's solid, in the mesh's units (metres).
+    pub tolerance: f64,
+    /// The most spheres per mesh: with more, the tolerance is raised by a quarter at a time
+    /// until the cover fits (the cover reports the tolerance it used).
+    pub max_spheres: Option<usize>,
+}
+
+impl Default for CoverOptions {
+    fn default() -> Self {
+        Self {
+            tolerance: 0.01,
+            max_spheres: None,
+        }
+    }
+}
+
+/// One sphere of a cover.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoverSphere {
+    /// The centre.
+    pub centre: DVec3,
+    /// The radius.
+    pub radius: f64,
+    /// A bound on how far any point of the sphere lies from the solid: the radius less the
+    /// centre's distance to the surface if the centre is inside, plus it if outside.
+    pub protrusion: f64,
+}
+
+/// Spheres whose union contains a mesh's solid (its surface if the mesh is open), with what
+/// was measured of them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SphereCover {
+    /// The spheres.
+    pub spheres: Vec<CoverSphere>,
+    /// Whether the mesh is closed (otherwise its surface is covered, with a warning).
+    pub closed: bool,
+    /// The mesh's triangle count.
+    pub triangles: usize,
+    /// The tolerance the cover was built for (above the one asked when `max_spheres` or the
+    /// grid's cell limit raised it).
+    pub tolerance: f64,
+    /// The guaranteed bound: no point of the union lies farther than this from the solid.
+    pub max_protrusion: f64,
+    /// The largest distance from the solid measured on sample points of the union's surface
+    /// (at most `max_protrusion`).
+    pub measured_max: f64,
+    /// The mean distance from the solid over those sample points.
+    pub measured_mean: f64,
+}
+
+impl SphereCover {
+    /// Covers `mesh` with spheres.
+    ///
+    /// # Errors
+    /// [`SpheriseError::BadOption`] for a tolerance that is not positive and finite or a
+    /// sphere budget of 0; [`SpheriseError::BadMesh`] if parry refuses the mesh.
+    pub fn new(mesh: &TriangleMesh, options: &CoverOptions) -> Result<Self, SpheriseError> {
+        if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
+            return Err(SpheriseError::BadOption {
+                what: "the tolerance",
+                rule: "positive and finite",
+                value: options.tolerance.to_string(),
+            });
+        }
+        if options.max_spheres == Some(0) {
+            return Err(SpheriseError::BadOption {
+                what: "the sphere budget",
+                rule: "at least 1",
+                value: "0".into(),
+            });
+        }
+        let solid = Solid::new(mesh.clone())?;
+        let mut tolerance = options.tolerance;
+        loop {
+            let grid = CellGrid::new(&solid, tolerance / 3f64.sqrt());
+            // A coarsened grid needs a larger tolerance for every cell to be coverable.
+            tolerance = tolerance.max(grid.h * 3f64.sqrt());
+            let spheres = cover(&solid, &grid, tolerance);
+            let over_budget = options.max_spheres.is_some_and(|m| spheres.len() > m);
+            if !over_budget || tolerance > 1e3 * options.tolerance {
+                return Ok(Self::measured(&solid, spheres, tolerance));
+            }
+            tolerance *= 1.25;
+        }
+    }
+
+    fn measured(solid: &Solid, spheres: Vec<CoverSphere>, tolerance: f64) -> Self {
+        let mut max: f64 = 0.0;
+        let mut sum = 0.0;
+        let mut count = 0_usize;
+        for (i, s) in spheres.iter().enumerate() {
+            for p in fibonacci_sphere(SAMPLES_PER_SPHERE) {
+                let p = s.centre + p * s.radius;
+                let inside_other = spheres
+                    .iter()
+                    .enumerate()
+                    .any(|(j, o)| j != i && p.distance(o.centre) < o.radius);
+                if !inside_other {
+                    let d = solid.distance(p);
+                    max = max.max(d);
+                    sum += d;
+                    count += 1;
+                }
+            }
+        }
+        Self {
+            max_protrusion: spheres.iter().map(|s| s.protrusion).fold(0.0, f64::max),
+            closed: solid.is_closed(),
+            triangles: solid.mesh().triangles().len(),
+            tolerance,
+            measured_max: max,
+            measured_mean: if count > 0 { sum / count as f64 } else { 0.0 },
+            spheres,
+        }
+    }
+}
+
+/// `n` points spread evenly over the unit sphere.
+pub(super) fn fibonacci_sphere(n: usize) -> impl Iterator<Item = DVec3> {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..n).map(move |i| {
+        let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+        let r = (1.0 - z * z).sqrt();
+        let (s, c) = (golden * i as f64).sin_cos();
+        DVec3::new(r * c, r * s, z)
+    })
+}
+
+/// A candidate sphere: centre, largest radius, and the signed distance of the centre into
+/// the solid (`D` inside, `−d` outside): the protrusion of radius `r` is `r −` that.
+#[derive(Debug, Clone, Copy)]
+struct Candidate {
+    centre: DVec3,
+    reach: f64,
+    depth: f64,
+}
+
+fn candidate(solid: &Solid, centre: DVec3, inside: Option<bool>, tolerance: f64) -> Candidate {
+    let d = solid.surface_distance(centre);
+    // A centre counted inside within `near` of the surface may be outside by that much.
+    let depth = if inside == Some(true) && solid.is_closed() {
+        (d - solid.near()).max(-solid.near())
+    } else {
+        -d
+    };
+    Candidate {
+        centre,
+        reach: depth + tolerance,
+        depth,
+    }
+}
+
+fn candidates(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    // Every second inside corner per axis: each cell has one such corner, whose inner ball
+    // (radius ≥ t, the cell's diagonal) covers the cell.
+    for i in (0..=grid.n[0]).step_by(2) {
+        for j in (0..=grid.n[1]).step_by(2) {
+            for k in (0..=grid.n[2]).step_by(2) {
+                if grid.trusted[grid.corner_index([i, j, k])] {
+                    out.push(candidate(
+                        solid,
+                        grid.corner([i, j, k]),
+                        Some(true),
+                        tolerance,
+                    ));
+                }
+            }
+        }
+    }
+    // The centre of each element with surface, or without a trusted even corner: the
+    // element's half diagonal is at most t/2, and so is the centre's distance to the solid.
+    for e in &grid.elements {
+        let even = e.cell.map(|c| c + c % 2);
+        let covered_by_corner = grid.trusted[grid.corner_index(even)];
+        if e.surface || !covered_by_corner {
+            let c = e.centre();
+            out.push(candidate(solid, c, solid.contains(c), tolerance));
+        }
+    }
+    out
+}
+
+/// The uncovered elements candidate `c` would cover.
+fn gain(grid: &CellGrid, c: &Candidate, covered: &[bool], mut visit: impl FnMut(usize)) -> u32 {
+    let mut n = 0;
+    let r = DVec3::splat(c.reach);
+    let [ri, rj, rk] = grid.cell_range(c.centre - r, c.centre + r);
+    for i in ri {
+        for j in rj.clone() {
+            for k in rk.clone() {
+                let e = grid.element_of[grid.cell_index([i, j, k])];
+                if e != u32::MAX && !covered[e as usize] {
+                    let element: &Element = &grid.elements[e as usize];
+                    if element.reach_from(c.centre) <= c.reach {
+                        n += 1;
+                        visit(e as usize);
+                    }
+                }
+            }
+        }
+    }
+    n
+}
+
+fn cover(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<CoverSphere> {
+    let candidates = candidates(solid, grid, tolerance);
+    let mut covered = vec![false; grid.elements.len()];
+    let mut left = grid.elements.len();
+    // Lazy greedy: gains only fall as elements get covered, so a popped candidate whose
+    // fresh gain still tops the heap is the best one.
+    let mut heap: BinaryHeap<(u32, Reverse<usize>)> = candidates
+        .iter()
+        .enumerate()
+        .map(|(i, c)| (gain(grid, c, &covered, |_| {}), Reverse(i)))
+        .collect();
+    let mut picked: Vec<(Candidate, Vec<usize>)> = Vec::new();
+    while left > 0 {
+        let Some((stale, Reverse(i))) = heap.pop() else {
+            break;
+        };
+        let fresh = gain(grid, &candidates[i], &covered, |_| {});
+        if fresh == 0 {
+            continue;
+        }
+        if fresh < stale && heap.peek().is_some_and(|&(top, _)| top > fresh) {
+            heap.push((fresh, Reverse(i)));
+            continue;
+        }
+        let mut mine = Vec::new();
+        gain(grid, &candidates[i], &covered, |e| mine.push(e));
+        for &e in &mine {
+            covered[e] = true;
+        }
+        left -= mine.len();
+        picked.push((candidates[i], mine));
+    }
+    // Elements no candidate covered (none, by the cell size; kept as a safety net): each
+    // gets a sphere of its own, with its true protrusion.
+    for (e, _) in covered.iter().enumerate().filter(|(_, c)| !**c) {
+        let c = grid.elements[e].centre();
+        let mut own = candidate(solid, c, solid.contains(c), tolerance);
+        own.reach = grid.elements[e].reach_from(c);
+        picked.push((own, vec![e]));
+    }
+    shrink_and_prune(solid, grid, picked)
+}
+
+/// Each sphere shrinks to its elements' farthest corner; then spheres whose elements the
+/// others contain are dropped, fewest elements first.
+fn shrink_and_prune(
+    solid: &Solid,
+    grid: &CellGrid,
+    picked: Vec<(Candidate, Vec<usize>)>,
+) -> Vec<CoverSphere> {
+    // A little room for rounding in the distances.
+    let slack = solid.near();
+    let mut spheres: Vec<(DVec3, f64, f64, Vec<usize>)> = picked
+        .into_iter()
+        .map(|(c, mine)| {
+            let r = mine
+                .iter()
+                .map(|&e| grid.elements[e].reach_from(c.centre))
+                .fold(0.0, f64::max)
+                + slack;
+            (c.centre, r, c.depth, mine)
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..spheres.len()).collect();
+    order.sort_by_key(|&i| spheres[i].3.len());
+    let mut kept = vec![true; spheres.len()];
+    for i in order {
+        let others_cover = spheres[i].3.iter().all(|&e| {
+            let element = &grid.elements[e];
+            (0..spheres.len()).any(|j| {
+                j != i && kept[j] && element.reach_from(spheres[j].0) + slack <= spheres[j].1
+            })
+        });
+        if others_cover {
+            kept[i] = false;
+            spheres[i].3.clear();
+        }
+    }
+    spheres
+        .into_iter()
+        .zip(kept)
+        .filter(|(_, k)| *k)
+        .map(|((centre, radius, depth, _), _)| CoverSphere {
+            centre,
+            radius,
+            protrusion: radius - depth,
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn covered(spheres: &[CoverSphere], p: DVec3) -> bool {
+        spheres.iter().any(|s| p.distance(s.centre) <= s.radius)
+    }
+
+    #[test]
+    fn a_cube_is_covered_within_the_tolerance() {
+        let cube = TriangleMesh::cuboid(DVec3::splat(0.1)).unwrap();
+        let options = CoverOptions {
+            tolerance: 0.02,
+            max_spheres: None,
+        };
+        let cover = SphereCover::new(&cube, &options).unwrap();
+        assert!(cover.closed);
+        assert!(
+            cover.max_protrusion <= 0.02 + 1e-6,
+            "{}",
+            cover.max_protrusion
+        );
+        assert!(cover.measured_max <= cover.max_protrusion);
+        assert!(cover.measured_mean > 0.0 && cover.measured_mean <= cover.measured_max);
+        // The cube's corners, edge midpoints and centre are covered.
+        for i in 0..27 {
+            let p = DVec3::new((i % 3) as f64, ((i / 3) % 3) as f64, (i / 9) as f64) * 0.1
+                - DVec3::splat(0.1);
+            assert!(covered(&cover.spheres, p), "{p}");
+        }
+        // A tight tolerance takes more spheres than a loose one, which takes a few.
+        let loose = SphereCover::new(
+            &cube,
+            &CoverOptions {
+                tolerance: 0.1,
+                max_spheres: None,
+            },
+        )
+        .unwrap();
+        assert!(loose.spheres.len() <= 3, "{}", loose.spheres.len());
+        assert!(cover.spheres.len() > loose.spheres.len());
+    }
+
+    #[test]
+    fn a_sphere_budget_raises_the_tolerance() {
+        let cylinder = TriangleMesh::cylinder(0.05, 0.4, 24).unwrap();
+        let free = SphereCover::new(
+            &cylinder,
+            &CoverOptions {
+                tolerance: 0.005,
+                max_spheres: None,
+            },
+        )
+        .unwrap();
+        let budget = SphereCover::new(
+            &cylinder,
+            &CoverOptions {
+                tolerance: 0.005,
+                max_spheres: Some(4),
+            },
+        )
+        .unwrap();
+        assert!(free.spheres.len() > 4, "{}", free.spheres.len());
+        assert!(budget.spheres.len() <= 4);
+        assert!(budget.tolerance > 0.005);
+        assert!(budget.max_protrusion <= budget.tolerance + 1e-6);
+        assert!(free.max_protrusion <= 0.005 + 1e-6);
+        // Along its axis and on its rim, the cylinder is covered.
+        for s in 0..=20 {
+            let z = -0.2 + 0.02 * f64::from(s);
+            for p in [
+                DVec3::new(0.0, 0.0, z),
+                DVec3::new(0.05, 0.0, z),
+                DVec3::new(0.0, -0.05, z),
+            ] {
+                assert!(covered(&free.spheres, p), "{p}");
+                assert!(covered(&budget.spheres, p), "{p}");
+            }
+        }
+    }
+
+    #[test]
+    fn bad_options_are_refused() {
+        let cube = TriangleMesh::cuboid(DVec3::splat(0.1)).unwrap();
+        for tolerance in [0.0, -1.0, f64::NAN] {
+            assert!(
+                SphereCover::new(
+                    &cube,
+                    &CoverOptions {
+                        tolerance,
+                        max_spheres: None
+                    }
+                )
+                .is_err()
+            );
+        }
+        assert!(
+            SphereCover::new(
+                &cube,
+                &CoverOptions {
+                    tolerance: 0.01,
+                    max_spheres: Some(0)
+                }
+            )
+            .is_err()
+        );
+    }
+}
