@@ -127,6 +127,9 @@ pub enum HarnessError {
     /// A robot (`--robot`, an experiment's `robot`) could not be found or loaded.
     #[error(transparent)]
     Robot(#[from] robot::RobotSourceError),
+    /// A URDF could not be spherised (`mit-star spherise`).
+    #[error(transparent)]
+    Spherise(#[from] robot::SpheriseError),
     /// A MotionBenchMaker folder or arm problem could not be read.
     #[error("arm problem `{name}`: {source}")]
     Arm {

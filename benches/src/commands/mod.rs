@@ -21,6 +21,7 @@ mod merge;
 mod plan;
 mod problem_args;
 mod replan;
+mod spherise;
 
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -37,6 +38,7 @@ pub use merge::MergeArgs;
 pub use plan::PlanArgs;
 pub use problem_args::ProblemArgs;
 pub use replan::ReplanArgs;
+pub use spherise::SpheriseArgs;
 
 use crate::error::HarnessError;
 
@@ -86,6 +88,9 @@ pub enum Command {
     /// five times among moving obstacles, re-planning with 0.1 s per plan; success rates and
     /// travelled costs per planner and scene.
     Replan(ReplanArgs),
+    /// Cover a URDF's collision meshes with spheres (every point of each mesh's solid inside
+    /// them, none farther than the tolerance from it) and write the spherised URDF.
+    Spherise(SpheriseArgs),
 }
 
 /// How a successful command ended, for the exit code.
@@ -147,6 +152,7 @@ impl Cli {
             Command::Robots => listings::print_robots(),
             Command::Experiments(args) => args.run(),
             Command::Replan(args) => args.run(&interrupt),
+            Command::Spherise(args) => args.run(),
         }
     }
 }

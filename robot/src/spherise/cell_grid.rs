@@ -124,7 +124,7 @@ impl CellGrid {
         let count = (self.n[0] + 1) * (self.n[1] + 1) * (self.n[2] + 1);
         self.inside = vec![false; count];
         self.trusted = vec![false; count];
-        if !solid.is_closed() {
+        if !solid.has_inside() {
             return;
         }
         for i in 0..=self.n[0] {
@@ -136,9 +136,8 @@ impl CellGrid {
                     let index = self.corner_index([i, j, k]);
                     let near = solid.surface_distance(p) <= solid.near();
                     match &crossings {
-                        Some(zs) => {
-                            let above = zs.len() - zs.partition_point(|&z| z <= p.z);
-                            self.inside[index] = near || above % 2 == 1;
+                        Some(column) => {
+                            self.inside[index] = near || column.inside(p.z);
                             self.trusted[index] = self.inside[index];
                         }
                         // Undecided: count the point as inside (the cover then contains

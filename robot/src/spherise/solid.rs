@@ -13,11 +13,13 @@ use super::triangle_mesh::TriangleMesh;
 /// graze an edge or a vertex.
 const RAY_TRIES: u32 = 48;
 
-/// A mesh as a point set: for a closed mesh the solid it bounds, for an open one its surface.
+/// A mesh as a point set: the union of the solids its closed shells bound (a shell is a
+/// connected component; shells may overlap, as collision meshes made of parts do) and the
+/// surfaces of its open ones.
 pub(super) struct Solid {
     mesh: TriangleMesh,
-    closed: bool,
     tree: TriMesh,
+    shells: Vec<Shell>,
     /// Points this close to the surface count as part of the solid: the parity test may be
     /// wrong only within it (its rays are moved by less when they graze an edge).
     near: f64,
@@ -25,25 +27,67 @@ pub(super) struct Solid {
     graze: f64,
 }
 
+/// One connected component of the mesh.
+struct Shell {
+    mesh: TriangleMesh,
+    tree: TriMesh,
+    closed: bool,
+}
+
+/// The crossings of a vertical line with each closed shell, sorted per shell.
+pub(super) struct Column(Vec<Vec<f64>>);
+
+impl Column {
+    /// Whether height `z` of the column is inside some closed shell (an odd number of its
+    /// crossings above).
+    pub(super) fn inside(&self, z: f64) -> bool {
+        self.0
+            .iter()
+            .any(|zs| (zs.len() - zs.partition_point(|&c| c <= z)) % 2 == 1)
+    }
+
+    /// The shells (indices among the closed ones) with `z` inside.
+    fn shells_with(&self, z: f64) -> impl Iterator<Item = usize> + '_ {
+        self.0
+            .iter()
+            .enumerate()
+            .filter(move |(_, zs)| (zs.len() - zs.partition_point(|&c| c <= z)) % 2 == 1)
+            .map(|(i, _)| i)
+    }
+}
+
+fn tree(mesh: &TriangleMesh) -> Result<TriMesh, SpheriseError> {
+    TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec()).map_err(|e| {
+        SpheriseError::BadMesh {
+            what: "mesh".into(),
+            why: e.to_string(),
+        }
+    })
+}
+
 impl Solid {
-    /// The solid of `mesh` (its surface if the mesh is not closed).
+    /// The solid of `mesh`.
     ///
     /// # Errors
     /// [`SpheriseError::BadMesh`] if parry refuses the mesh (it has no triangle).
     pub(super) fn new(mesh: TriangleMesh) -> Result<Self, SpheriseError> {
-        let tree =
-            TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec()).map_err(|e| {
-                SpheriseError::BadMesh {
-                    what: "mesh".into(),
-                    why: e.to_string(),
-                }
-            })?;
+        let shells = mesh
+            .components()
+            .into_iter()
+            .map(|m| {
+                Ok(Shell {
+                    tree: tree(&m)?,
+                    closed: m.is_closed(),
+                    mesh: m,
+                })
+            })
+            .collect::<Result<Vec<_>, SpheriseError>>()?;
         let (lo, hi) = mesh.bounds();
         let scale = 1.0 + (hi - lo).length() + lo.abs().max(hi.abs()).max_element();
         Ok(Self {
-            closed: mesh.is_closed(),
+            tree: tree(&mesh)?,
             mesh,
-            tree,
+            shells,
             near: 1e-8 * scale,
             graze: 1e-11 * scale,
         })
@@ -54,9 +98,14 @@ impl Solid {
         &self.mesh
     }
 
-    /// Whether the mesh is closed (the solid has an inside).
+    /// Whether every shell is closed (otherwise the open ones stand for their surface only).
     pub(super) fn is_closed(&self) -> bool {
-        self.closed
+        self.shells.iter().all(|s| s.closed)
+    }
+
+    /// Whether some shell is closed (the solid has an inside).
+    pub(super) fn has_inside(&self) -> bool {
+        self.shells.iter().any(|s| s.closed)
     }
 
     /// The distance within which a point counts as on the surface
@@ -65,22 +114,39 @@ impl Solid {
         self.near
     }
 
-    /// The distance from `p` to the surface.
+    /// The distance from `p` to the surface (every shell's).
     pub(super) fn surface_distance(&self, p: DVec3) -> f64 {
         self.tree.distance_to_local_point(p, false)
     }
 
-    /// Whether `p` is in the solid: inside a closed mesh by ray parity, or within
+    /// Whether `p` is in the solid: inside a closed shell by ray parity, or within
     /// [`near`](Self::near) of the surface. `None` if every ray tried grazed an edge.
     pub(super) fn contains(&self, p: DVec3) -> Option<bool> {
         if self.surface_distance(p) <= self.near {
             return Some(true);
         }
-        if !self.closed {
+        if !self.has_inside() {
             return Some(false);
         }
-        let crossings = self.column_crossings(p.x, p.y)?;
-        Some(crossings.iter().filter(|&&z| z > p.z).count() % 2 == 1)
+        Some(self.column_crossings(p.x, p.y)?.inside(p.z))
+    }
+
+    /// How deep `p` lies in the solid: the radius of a ball about `p` inside one closed shell
+    /// (the largest such shell distance), or, outside (or undecided, or within
+    /// [`near`](Self::near) of the surface), minus the distance to the surface.
+    pub(super) fn depth(&self, p: DVec3) -> f64 {
+        let d = self.surface_distance(p);
+        if d <= self.near || !self.has_inside() {
+            return -d;
+        }
+        let Some(column) = self.column_crossings(p.x, p.y) else {
+            return -d;
+        };
+        let closed: Vec<&Shell> = self.shells.iter().filter(|s| s.closed).collect();
+        column
+            .shells_with(p.z)
+            .map(|i| closed[i].tree.distance_to_local_point(p, false) - self.near)
+            .fold(-d, f64::max)
     }
 
     /// The distance from `p` to the solid (0 inside it), conservative where parity is
@@ -93,24 +159,28 @@ impl Solid {
     }
 
     /// The heights at which a ray parallel to `z` through `(x, y)`, moved by less than
-    /// [`near`](Self::near) if it grazes an edge, crosses the surface, sorted. A point of
-    /// that column farther than `near` from the surface is inside iff an odd number of them
-    /// lie above it. `None` if every ray tried grazed an edge.
-    pub(super) fn column_crossings(&self, x: f64, y: f64) -> Option<Vec<f64>> {
+    /// [`near`](Self::near) if it grazes an edge, crosses each closed shell. A point of that
+    /// column farther than `near` from the surface is inside a shell iff an odd number of
+    /// its crossings lie above it. `None` if every ray tried grazed an edge.
+    pub(super) fn column_crossings(&self, x: f64, y: f64) -> Option<Column> {
         let step = self.near / f64::from(2 * RAY_TRIES);
         (0..RAY_TRIES).find_map(|k| {
             let shift = step * f64::from(k);
             let q = DVec2::new(x + 0.754_877_666 * shift, y + 0.569_840_291 * shift);
-            let mut crossings = Vec::new();
-            for t in 0..self.mesh.triangles().len() {
-                match crossing(self.mesh.corners(t), q, self.graze) {
-                    Crossing::Grazes => return None,
-                    Crossing::At(z) => crossings.push(z),
-                    Crossing::Misses => {}
+            let mut column = Vec::new();
+            for shell in self.shells.iter().filter(|s| s.closed) {
+                let mut crossings = Vec::new();
+                for t in 0..shell.mesh.triangles().len() {
+                    match crossing(shell.mesh.corners(t), q, self.graze) {
+                        Crossing::Grazes => return None,
+                        Crossing::At(z) => crossings.push(z),
+                        Crossing::Misses => {}
+                    }
                 }
+                crossings.sort_by(f64::total_cmp);
+                column.push(crossings);
             }
-            crossings.sort_by(f64::total_cmp);
-            Some(crossings)
+            Some(Column(column))
         })
     }
 }
@@ -163,9 +233,36 @@ mod tests {
     use super::*;
 
     #[test]
+    fn overlapping_shells_make_one_solid() {
+        // Two cubes overlapping in [0.5, 1]³-like slabs: the overlap is inside (parity over
+        // the whole mesh would call it outside), and its depth counts one cube's inner ball.
+        let a = TriangleMesh::cuboid(DVec3::splat(1.0)).unwrap();
+        let b = a.transformed(glam::DMat3::IDENTITY, DVec3::new(1.5, 0.0, 0.0), DVec3::ONE);
+        let mut vertices = a.vertices().to_vec();
+        vertices.extend(b.vertices());
+        let mut triangles = a.triangles().to_vec();
+        triangles.extend(b.triangles().iter().map(|t| t.map(|i| i + 8)));
+        let both = Solid::new(TriangleMesh::new(vertices, triangles).unwrap()).unwrap();
+        assert_eq!(both.shells.len(), 2);
+        let overlap = DVec3::new(0.75, 0.0, 0.0);
+        assert_eq!(both.contains(overlap), Some(true));
+        // In the overlap, 0.25 from the first cube's face x = 1 and the second's x = 0.5.
+        assert!(
+            (both.depth(overlap) - 0.25).abs() < 1e-6,
+            "{}",
+            both.depth(overlap)
+        );
+        assert!((both.depth(DVec3::new(2.0, 0.0, 0.0)) - 0.5).abs() < 1e-6);
+        assert_eq!(both.contains(DVec3::new(2.6, 0.0, 0.0)), Some(false));
+    }
+
+    #[test]
     fn a_cube_contains_its_inside_and_measures_distances() {
         let cube = Solid::new(TriangleMesh::cuboid(DVec3::splat(1.0)).unwrap()).unwrap();
-        assert!(cube.is_closed());
+        assert!(cube.is_closed() && cube.has_inside());
+        assert_eq!(cube.shells.len(), 1);
+        assert!((cube.depth(DVec3::new(0.5, 0.0, 0.0)) - 0.5).abs() < 1e-6);
+        assert!((cube.depth(DVec3::new(1.5, 0.0, 0.0)) + 0.5).abs() < 1e-12);
         // Points on the columns of the cube's edges and vertices graze and are moved.
         for p in [
             DVec3::ZERO,
@@ -193,7 +290,7 @@ mod tests {
         let sheet =
             TriangleMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]).unwrap();
         let sheet = Solid::new(sheet).unwrap();
-        assert!(!sheet.is_closed());
+        assert!(!sheet.is_closed() && !sheet.has_inside());
         assert_eq!(sheet.contains(DVec3::new(0.2, 0.2, 0.0)), Some(true));
         assert_eq!(sheet.contains(DVec3::new(0.2, 0.2, 0.1)), Some(false));
         assert!((sheet.distance(DVec3::new(0.2, 0.2, -0.25)) - 0.25).abs() < 1e-12);

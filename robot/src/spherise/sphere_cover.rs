@@ -100,7 +100,8 @@ impl SphereCover {
         let solid = Solid::new(mesh.clone())?;
         let mut tolerance = options.tolerance;
         loop {
-            let grid = CellGrid::new(&solid, tolerance / 3f64.sqrt());
+            // Cells a little under t/√3, so their diagonal stays below t less rounding room.
+            let grid = CellGrid::new(&solid, tolerance / 3f64.sqrt() * (1.0 - 1e-5));
             // A coarsened grid needs a larger tolerance for every cell to be coverable.
             tolerance = tolerance.max(grid.h * 3f64.sqrt());
             let spheres = cover(&solid, &grid, tolerance);
@@ -163,14 +164,8 @@ struct Candidate {
     depth: f64,
 }
 
-fn candidate(solid: &Solid, centre: DVec3, inside: Option<bool>, tolerance: f64) -> Candidate {
-    let d = solid.surface_distance(centre);
-    // A centre counted inside within `near` of the surface may be outside by that much.
-    let depth = if inside == Some(true) && solid.is_closed() {
-        (d - solid.near()).max(-solid.near())
-    } else {
-        -d
-    };
+fn candidate(solid: &Solid, centre: DVec3, tolerance: f64) -> Candidate {
+    let depth = solid.depth(centre);
     Candidate {
         centre,
         reach: depth + tolerance,
@@ -186,12 +181,7 @@ fn candidates(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<Candidate> 
         for j in (0..=grid.n[1]).step_by(2) {
             for k in (0..=grid.n[2]).step_by(2) {
                 if grid.trusted[grid.corner_index([i, j, k])] {
-                    out.push(candidate(
-                        solid,
-                        grid.corner([i, j, k]),
-                        Some(true),
-                        tolerance,
-                    ));
+                    out.push(candidate(solid, grid.corner([i, j, k]), tolerance));
                 }
             }
         }
@@ -203,7 +193,7 @@ fn candidates(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<Candidate> 
         let covered_by_corner = grid.trusted[grid.corner_index(even)];
         if e.surface || !covered_by_corner {
             let c = e.centre();
-            out.push(candidate(solid, c, solid.contains(c), tolerance));
+            out.push(candidate(solid, c, tolerance));
         }
     }
     out
@@ -267,15 +257,16 @@ fn cover(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<CoverSphere> {
     // gets a sphere of its own, with its true protrusion.
     for (e, _) in covered.iter().enumerate().filter(|(_, c)| !**c) {
         let c = grid.elements[e].centre();
-        let mut own = candidate(solid, c, solid.contains(c), tolerance);
+        let mut own = candidate(solid, c, tolerance);
         own.reach = grid.elements[e].reach_from(c);
         picked.push((own, vec![e]));
     }
     shrink_and_prune(solid, grid, picked)
 }
 
-/// Each sphere shrinks to its elements' farthest corner; then spheres whose elements the
-/// others contain are dropped, fewest elements first.
+/// Drops spheres whose elements other spheres can take within their reach (fewest elements
+/// first), handing each element to the sphere it enlarges least; then each sphere shrinks to
+/// its elements' farthest corner.
 fn shrink_and_prune(
     solid: &Solid,
     grid: &CellGrid,
@@ -283,40 +274,50 @@ fn shrink_and_prune(
 ) -> Vec<CoverSphere> {
     // A little room for rounding in the distances.
     let slack = solid.near();
-    let mut spheres: Vec<(DVec3, f64, f64, Vec<usize>)> = picked
-        .into_iter()
-        .map(|(c, mine)| {
-            let r = mine
-                .iter()
-                .map(|&e| grid.elements[e].reach_from(c.centre))
-                .fold(0.0, f64::max)
-                + slack;
-            (c.centre, r, c.depth, mine)
-        })
+    let reach = |c: &Candidate, e: usize| grid.elements[e].reach_from(c.centre);
+    let mut radius: Vec<f64> = picked
+        .iter()
+        .map(|(c, mine)| mine.iter().map(|&e| reach(c, e)).fold(0.0, f64::max))
         .collect();
-    let mut order: Vec<usize> = (0..spheres.len()).collect();
-    order.sort_by_key(|&i| spheres[i].3.len());
-    let mut kept = vec![true; spheres.len()];
+    let mut owned: Vec<Vec<usize>> = picked.iter().map(|(_, mine)| mine.clone()).collect();
+    let mut kept = vec![true; picked.len()];
+    let mut order: Vec<usize> = (0..picked.len()).collect();
+    order.sort_by_key(|&i| owned[i].len());
     for i in order {
-        let others_cover = spheres[i].3.iter().all(|&e| {
-            let element = &grid.elements[e];
-            (0..spheres.len()).any(|j| {
-                j != i && kept[j] && element.reach_from(spheres[j].0) + slack <= spheres[j].1
-            })
-        });
-        if others_cover {
-            kept[i] = false;
-            spheres[i].3.clear();
+        // For each element, the other sphere that takes it with the least growth.
+        let mut moves = Vec::with_capacity(owned[i].len());
+        for &e in &owned[i] {
+            let best = (0..picked.len())
+                .filter(|&j| j != i && kept[j])
+                .filter_map(|j| {
+                    let r = reach(&picked[j].0, e);
+                    (r <= picked[j].0.reach).then_some((j, (r - radius[j]).max(0.0)))
+                })
+                .min_by(|a, b| a.1.total_cmp(&b.1));
+            match best {
+                Some((j, _)) => moves.push((e, j)),
+                None => break,
+            }
+        }
+        if moves.len() < owned[i].len() {
+            continue;
+        }
+        kept[i] = false;
+        owned[i].clear();
+        for (e, j) in moves {
+            radius[j] = radius[j].max(reach(&picked[j].0, e));
+            owned[j].push(e);
         }
     }
-    spheres
-        .into_iter()
+    picked
+        .iter()
+        .zip(radius)
         .zip(kept)
         .filter(|(_, k)| *k)
-        .map(|((centre, radius, depth, _), _)| CoverSphere {
-            centre,
-            radius,
-            protrusion: radius - depth,
+        .map(|(((c, _), r), _)| CoverSphere {
+            centre: c.centre,
+            radius: r + slack,
+            protrusion: r + slack - c.depth,
         })
         .collect()
 }

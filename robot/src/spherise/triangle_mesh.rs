@@ -171,6 +171,52 @@ impl TriangleMesh {
         edges.values().all(|n| n % 2 == 0)
     }
 
+    /// The connected components (triangles sharing vertices, transitively), each with only
+    /// its own vertices, in the order of their first triangle.
+    pub fn components(&self) -> Vec<TriangleMesh> {
+        let mut parent: Vec<usize> = (0..self.vertices.len()).collect();
+        fn root(parent: &mut [usize], mut v: usize) -> usize {
+            while parent[v] != v {
+                parent[v] = parent[parent[v]];
+                v = parent[v];
+            }
+            v
+        }
+        for t in &self.triangles {
+            for k in 1..3 {
+                let (a, b) = (
+                    root(&mut parent, t[0] as usize),
+                    root(&mut parent, t[k] as usize),
+                );
+                parent[a] = b;
+            }
+        }
+        let mut which: HashMap<usize, usize> = HashMap::new();
+        let mut parts: Vec<(HashMap<u32, u32>, TriangleMesh)> = Vec::new();
+        for t in &self.triangles {
+            let r = root(&mut parent, t[0] as usize);
+            let index = *which.entry(r).or_insert_with(|| {
+                parts.push((
+                    HashMap::new(),
+                    TriangleMesh {
+                        vertices: Vec::new(),
+                        triangles: Vec::new(),
+                    },
+                ));
+                parts.len() - 1
+            });
+            let (map, part) = &mut parts[index];
+            let local = t.map(|v| {
+                *map.entry(v).or_insert_with(|| {
+                    part.vertices.push(self.vertices[v as usize]);
+                    u32::try_from(part.vertices.len() - 1).unwrap_or(u32::MAX)
+                })
+            });
+            part.triangles.push(local);
+        }
+        parts.into_iter().map(|(_, part)| part).collect()
+    }
+
     /// The smallest and largest coordinates of the vertices.
     pub fn bounds(&self) -> (DVec3, DVec3) {
         self.vertices.iter().fold(
@@ -213,6 +259,18 @@ mod tests {
         let open =
             TriangleMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]).unwrap();
         assert!(!open.is_closed());
+        assert_eq!(open.components(), [open.clone()]);
+        let cube = TriangleMesh::cuboid(DVec3::ONE).unwrap();
+        let mut vertices = cube.vertices().to_vec();
+        vertices.extend(open.vertices());
+        let mut triangles = cube.triangles().to_vec();
+        triangles.push([8, 9, 10]);
+        let parts = TriangleMesh::new(vertices, triangles).unwrap().components();
+        assert_eq!(parts.len(), 2);
+        assert_eq!(parts[0].triangles().len(), 12);
+        assert!(parts[0].is_closed());
+        assert_eq!(parts[0].bounds(), cube.bounds());
+        assert_eq!(parts[1], open);
         assert!(TriangleMesh::new(vec![DVec3::ZERO], vec![[0, 0, 1]]).is_err());
         assert!(TriangleMesh::new(vec![DVec3::ZERO], vec![]).is_err());
         assert!(TriangleMesh::new(vec![DVec3::NAN; 3], vec![[0, 1, 2]]).is_err());
