@@ -175,22 +175,22 @@ fn candidate(solid: &Solid, centre: DVec3, tolerance: f64) -> Candidate {
 
 fn candidates(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<Candidate> {
     let mut out = Vec::new();
-    // Every second inside corner per axis: each cell has one such corner, whose inner ball
-    // (radius ≥ t, the cell's diagonal) covers the cell.
-    for i in (0..=grid.n[0]).step_by(2) {
-        for j in (0..=grid.n[1]).step_by(2) {
-            for k in (0..=grid.n[2]).step_by(2) {
+    // Every inside corner: its inner ball grown by t (radius ≥ t, a cell's diagonal) covers
+    // the cells around it. (Every second corner per axis would do, one per cell; all of them
+    // give the greedy choice finer positions: a quarter fewer spheres on the UR5.)
+    for i in 0..=grid.n[0] {
+        for j in 0..=grid.n[1] {
+            for k in 0..=grid.n[2] {
                 if grid.trusted[grid.corner_index([i, j, k])] {
                     out.push(candidate(solid, grid.corner([i, j, k]), tolerance));
                 }
             }
         }
     }
-    // The centre of each element with surface, or without a trusted even corner: the
+    // The centre of each element with surface, or whose own corner is not a trusted inside one: the
     // element's half diagonal is at most t/2, and so is the centre's distance to the solid.
     for e in &grid.elements {
-        let even = e.cell.map(|c| c + c % 2);
-        let covered_by_corner = grid.trusted[grid.corner_index(even)];
+        let covered_by_corner = grid.trusted[grid.corner_index(e.cell)];
         if e.surface || !covered_by_corner {
             let c = e.centre();
             out.push(candidate(solid, c, tolerance));
@@ -261,7 +261,7 @@ fn cover(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<CoverSphere> {
         own.reach = grid.elements[e].reach_from(c);
         picked.push((own, vec![e]));
     }
-    shrink_and_prune(solid, grid, picked)
+    shrink_and_prune(solid, grid, &picked)
 }
 
 /// Drops spheres whose elements other spheres can take within their reach (fewest elements
@@ -270,7 +270,7 @@ fn cover(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<CoverSphere> {
 fn shrink_and_prune(
     solid: &Solid,
     grid: &CellGrid,
-    picked: Vec<(Candidate, Vec<usize>)>,
+    picked: &[(Candidate, Vec<usize>)],
 ) -> Vec<CoverSphere> {
     // A little room for rounding in the distances.
     let slack = solid.near();
@@ -348,7 +348,7 @@ mod tests {
         assert!(cover.measured_mean > 0.0 && cover.measured_mean <= cover.measured_max);
         // The cube's corners, edge midpoints and centre are covered.
         for i in 0..27 {
-            let p = DVec3::new((i % 3) as f64, ((i / 3) % 3) as f64, (i / 9) as f64) * 0.1
+            let p = DVec3::new(f64::from(i % 3), f64::from((i / 3) % 3), f64::from(i / 9)) * 0.1
                 - DVec3::splat(0.1);
             assert!(covered(&cover.spheres, p), "{p}");
         }

@@ -259,7 +259,7 @@ mod tests {
         let open =
             TriangleMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]).unwrap();
         assert!(!open.is_closed());
-        assert_eq!(open.components(), [open.clone()]);
+        assert_eq!(open.components(), std::slice::from_ref(&open));
         let cube = TriangleMesh::cuboid(DVec3::ONE).unwrap();
         let mut vertices = cube.vertices().to_vec();
         vertices.extend(open.vertices());
