@@ -35,7 +35,7 @@ fn unknown_robots_and_links_are_refused_naming_them() {
     let problem = ur5_box();
     refused(
         &["plan", "--robot", "ur10", "--problem", &problem],
-        &["`ur10`", "panda, ur5, fetch"],
+        &["`ur10`", "panda, ur5, fetch, baxter"],
     );
     refused(
         &[
