@@ -150,7 +150,6 @@ fn srdf_groups_choose_the_coordinates_and_hold_the_rest() {
     // The mimic finger follows the held one: 0.2 out, then -2·0.02 + 0.01.
     assert!((c[sphere_of(&held, "finger_r")].y - (0.2 - 0.03)).abs() < 1e-12);
     let spun = robot
-        .clone()
         .with_group_str(SRDF, "hand")
         .unwrap()
         .with_joint_positions([("spin", 2.0 * PI + 0.25)])
