@@ -6,7 +6,7 @@ use std::cell::Cell;
 use problems::Problem;
 use robot::{AuditVerdict, MotionAudit};
 use serde::{Deserialize, Serialize};
-use spaces::euclidean_distance;
+use spaces::{StateSpace, euclidean_distance};
 use validity::{SegmentCause, SegmentVerdict, StateValidity, World};
 
 /// How a path was validated.
@@ -105,7 +105,7 @@ impl PathValidation {
             path,
             reported_cost,
             ValidationMethod::ExactBoxes,
-            world,
+            (world, euclidean_distance),
             |a, b, _| match world.segment_verdict(a, b) {
                 SegmentVerdict::Valid => Ok(0),
                 SegmentVerdict::Invalid { t, cause } => Err(describe(world, t, cause)),
@@ -132,7 +132,7 @@ impl PathValidation {
                 configurations: 0,
                 clearance: f64::INFINITY,
             },
-            audit,
+            (audit, |a: &[f64], b: &[f64]| audit.space().distance(a, b)),
             |a, b, _| match audit.audit(a, b, budget) {
                 AuditVerdict::Clear {
                     configurations,
@@ -179,7 +179,7 @@ impl PathValidation {
             path,
             reported_cost,
             ValidationMethod::Resampled { step },
-            validity,
+            (validity, euclidean_distance),
             |a, b, d| {
                 let pieces = (d / step).ceil().clamp(1.0, 1e12) as u64;
                 point.resize(a.len(), 0.0);
@@ -198,13 +198,14 @@ impl PathValidation {
     }
 
     /// The checks shared by both methods: ends, states, segments (with `segment`, returning
-    /// the points it tested or why it failed) and length.
+    /// the points it tested or why it failed) and length (in the metric `distance`: an arm's
+    /// joint space weighs prismatic joints and goes the short way round continuous ones).
     fn walk<V: StateValidity + ?Sized>(
         (start, goals): (&[f64], &[Vec<f64>]),
         path: &[Vec<f64>],
         reported_cost: f64,
         method: ValidationMethod,
-        validity: &V,
+        (validity, distance): (&V, impl Fn(&[f64], &[f64]) -> f64),
         mut segment: impl FnMut(&[f64], &[f64], f64) -> Result<u64, String>,
     ) -> Self {
         let mut result = Self {
@@ -245,7 +246,7 @@ impl PathValidation {
                 continue;
             }
             let a = &path[i - 1];
-            let d = euclidean_distance(a, state);
+            let d = distance(a, state);
             result.length += d;
             result.segments_checked += 1;
             match segment(a, state, d) {
@@ -374,5 +375,40 @@ mod tests {
         let needed = 4 * (p.straight_line_cost() / p.step()).floor() as u64;
         assert!(v.valid && v.states_checked >= needed, "{v:?}");
         assert!(v.method.describe().contains("4× finer"));
+    }
+
+    #[test]
+    fn an_arm_path_is_measured_in_its_joint_space_metric() {
+        // The hand-written test robot: a revolute joint and a prismatic one, weighted 1/R.
+        let urdf = include_str!("../../robot/tests/data/two_link.urdf");
+        let robot = robot::RobotModel::from_urdf_str(urdf)
+            .unwrap()
+            .without_model_pairs();
+        let audit = MotionAudit::new(&robot, &robot::Scene::new(Vec::new()));
+        let (start, goal) = (vec![0.0, 0.0], vec![0.5, 0.2]);
+        let space = robot.joint_space();
+        assert_ne!(space.joints()[1].weight, 1.0);
+        let path = [start.clone(), goal.clone()];
+        let cost = space.distance(&start, &goal);
+        let budget = 100_000;
+        let v = PathValidation::check_continuous(
+            &audit,
+            (&start, std::slice::from_ref(&goal)),
+            &path,
+            cost,
+            budget,
+        );
+        assert!(v.valid, "{v:?}");
+        assert_eq!(v.length, cost);
+        let euclidean = euclidean_distance(&start, &goal);
+        assert!((euclidean - cost).abs() > 1e-6, "{euclidean} {cost}");
+        let v = PathValidation::check_continuous(
+            &audit,
+            (&start, std::slice::from_ref(&goal)),
+            &path,
+            euclidean,
+            budget,
+        );
+        assert!(!v.valid, "{v:?}");
     }
 }

@@ -35,7 +35,7 @@ fn unknown_robots_and_links_are_refused_naming_them() {
     let problem = ur5_box();
     refused(
         &["plan", "--robot", "ur10", "--problem", &problem],
-        &["`ur10`", "panda, ur5, fetch"],
+        &["`ur10`", "panda, ur5, fetch, baxter"],
     );
     refused(
         &[
@@ -126,5 +126,50 @@ fn ur5_plans_from_the_command_line_and_in_experiments() {
             .count(),
         2,
         "{runs}"
+    );
+}
+
+#[test]
+fn a_planning_group_is_planned_with_the_other_joints_held() {
+    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("../robot/tests/data/mbm/box_fetch");
+    let problem = format!("mbm:{}", folder.display());
+    let state = |group: Option<&str>| {
+        let mut args = vec!["check-state", "--robot", "fetch", "--problem", &problem];
+        args.extend(group.iter().flat_map(|g| ["--group", *g]));
+        // `check-state` exits with 1 when a state is invalid.
+        String::from_utf8_lossy(&mit_star(&args).stdout).into_owned()
+    };
+    // With the torso, the goal is free; the `arm` group holds the torso at the request's
+    // start (0.1 m, where the goal wants 0.345 m), so the same arm goal hits the scene.
+    let whole = state(None);
+    assert!(
+        whole.contains("R^8") && whole.contains("goal 1: valid"),
+        "{whole}"
+    );
+    let arm = state(Some("arm"));
+    assert!(
+        arm.contains("R^7") && arm.contains("goal 1: INVALID"),
+        "{arm}"
+    );
+    refused(
+        &[
+            "plan",
+            "--robot",
+            "fetch",
+            "--group",
+            "legs",
+            "--problem",
+            &problem,
+        ],
+        &["no planning group `legs`", "arm, arm_with_torso"],
+    );
+    refused(
+        &["plan", "--group", "arm", "--problem", "dividing-walls"],
+        &["--group", "mbm:PATH"],
+    );
+    let listed = succeeded(&["robots"]);
+    assert!(
+        listed.contains("groups:   left_arm, right_arm, both_arms"),
+        "{listed}"
     );
 }

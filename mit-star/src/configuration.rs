@@ -169,12 +169,24 @@ pub fn build_planner<P: PlanningProblem>(
     problem: &P,
     parameters: &Parameters,
 ) -> Result<Box<dyn Planner + Send>, BuildError> {
-    let planner = build_planner_with(
+    let mut planner = build_planner_with(
         configuration,
         problem,
         parameters,
         problem.validity().clone(),
     )?;
+    if parameters.warm_start
+        && configuration.is_asymptotically_optimal()
+        && configuration != Configuration::Aorrtc
+    {
+        let front = build_planner_with(
+            Configuration::RrtConnect,
+            problem,
+            parameters,
+            problem.validity().clone(),
+        )?;
+        planner = Box::new(crate::WarmStarted::new(planner, front));
+    }
     if !parameters.simplify_solutions {
         return Ok(planner);
     }

@@ -84,6 +84,112 @@ pub struct Counters {
 }
 
 impl Counters {
+    /// The work of two planners together (a planner wrapping another, as
+    /// [`WarmStarted`](crate::WarmStarted)): every count summed, the graph sizes too (both
+    /// planners hold their graphs); the estimated informed set's costs are `self`'s when it
+    /// has them, else `other`'s.
+    #[must_use]
+    pub fn merged(mut self, other: &Self) -> Self {
+        // Destructured in full, so that a new counter cannot be left out.
+        let Self {
+            iterations,
+            batches,
+            samples,
+            samples_drawn,
+            validity_checks,
+            sparse_checks,
+            full_checks,
+            points_tested,
+            points_culled,
+            certifications,
+            certification_failures,
+            neighbour_queries,
+            reverse_restarts,
+            reverse_repairs,
+            reverse_iterations,
+            forward_iterations,
+            pruned,
+            vertices,
+            edges,
+            peak_vertices,
+            peak_edges,
+            sampler_checks,
+            sampler_pre_valid,
+            sampler_gaussian,
+            sampler_bridge,
+            sampler_near_terminals,
+            sampler_restarts,
+            estimate_initial,
+            estimate_final,
+            estimate_expansions,
+            estimate_batches,
+            sparse_checks_by_length,
+            sparse_points_by_length,
+            full_checks_by_length,
+            full_points_by_length,
+        } = *other;
+        self.iterations += iterations;
+        self.batches += batches;
+        self.samples += samples;
+        self.samples_drawn += samples_drawn;
+        self.validity_checks += validity_checks;
+        self.sparse_checks += sparse_checks;
+        self.full_checks += full_checks;
+        self.points_tested += points_tested;
+        self.points_culled += points_culled;
+        self.certifications += certifications;
+        self.certification_failures += certification_failures;
+        self.neighbour_queries += neighbour_queries;
+        self.reverse_restarts += reverse_restarts;
+        self.reverse_repairs += reverse_repairs;
+        self.reverse_iterations += reverse_iterations;
+        self.forward_iterations += forward_iterations;
+        self.pruned += pruned;
+        self.vertices += vertices;
+        self.edges += edges;
+        self.peak_vertices += peak_vertices;
+        self.peak_edges += peak_edges;
+        self.sampler_checks += sampler_checks;
+        self.sampler_pre_valid += sampler_pre_valid;
+        self.sampler_gaussian += sampler_gaussian;
+        self.sampler_bridge += sampler_bridge;
+        self.sampler_near_terminals += sampler_near_terminals;
+        self.sampler_restarts += sampler_restarts;
+        self.estimate_expansions += estimate_expansions;
+        self.estimate_batches += estimate_batches;
+        self.estimate_initial = self.estimate_initial.or(estimate_initial);
+        self.estimate_final = self.estimate_final.or(estimate_final);
+        for (mine, theirs) in self
+            .sparse_checks_by_length
+            .iter_mut()
+            .zip(sparse_checks_by_length)
+        {
+            *mine += theirs;
+        }
+        for (mine, theirs) in self
+            .sparse_points_by_length
+            .iter_mut()
+            .zip(sparse_points_by_length)
+        {
+            *mine += theirs;
+        }
+        for (mine, theirs) in self
+            .full_checks_by_length
+            .iter_mut()
+            .zip(full_checks_by_length)
+        {
+            *mine += theirs;
+        }
+        for (mine, theirs) in self
+            .full_points_by_length
+            .iter_mut()
+            .zip(full_points_by_length)
+        {
+            *mine += theirs;
+        }
+        self
+    }
+
     /// These counters with the work the parts counted themselves: the edge checker's checks
     /// and certifications, the validity checker's state checks and the sampler's draws,
     /// branches and estimate.
@@ -116,5 +222,36 @@ impl Counters {
         self.estimate_expansions = sampler.estimate_expansions;
         self.estimate_batches = sampler.estimate_batches;
         self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn merged_sums_counts_and_keeps_the_first_estimate() {
+        let a = Counters {
+            iterations: 3,
+            vertices: 10,
+            full_checks_by_length: [1, 2, 3, 4, 5],
+            estimate_initial: Some(2.0),
+            ..Counters::default()
+        };
+        let b = Counters {
+            iterations: 4,
+            vertices: 5,
+            full_checks_by_length: [1, 1, 1, 1, 1],
+            estimate_initial: Some(9.0),
+            estimate_final: Some(3.0),
+            ..Counters::default()
+        };
+        let m = a.merged(&b);
+        assert_eq!(m.iterations, 7);
+        assert_eq!(m.vertices, 15);
+        assert_eq!(m.full_checks_by_length, [2, 3, 4, 5, 6]);
+        assert_eq!(m.estimate_initial, Some(2.0));
+        assert_eq!(m.estimate_final, Some(3.0));
+        assert_eq!(Counters::default().merged(&b), b);
     }
 }

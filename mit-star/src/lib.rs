@@ -39,6 +39,7 @@
 //! | [`Planner`], [`Outcome`], [`Solution`] | the trait every planner implements and what `solve` returns |
 //! | [`RrtConnect`], [`Aorrtc`], [`InformedRrtStar`] | comparison planners from the same parts: RRT-Connect; AORRTC (RRT-Connect, then repeated cost-bounded searches with informed sampling and simplification); Informed RRT* (k-nearest RRT* with direct informed sampling and pruning) |
 //! | [`PathSimplifier`], [`Simplified`], [`Simplifying`] | shorter paths: vertex reduction, random and per-joint shortcuts, every new edge checked and certified; after planning, or at every solution of a wrapped planner |
+//! | [`WarmStarted`] | an anytime planner started from a feasibility planner's first solution (RRT-Connect's, with `warm_start`) |
 //! | [`check_path`], [`PathVerdict`], [`snap_ends`] | judge a path from anywhere (another planner's) by the rules our solutions pass |
 //! | [`Termination`], [`TimeLimit`], [`IterationLimit`], [`CostThreshold`], [`FirstSolution`], [`TerminationExt`] | termination conditions and their `or` / `and` combinators |
 //! | [`Trace`], [`Counters`] | the anytime `(time, cost)` record and work counters |
@@ -84,6 +85,7 @@ mod simplification;
 mod snapshot;
 mod termination;
 mod trace;
+mod warm_started;
 
 pub use builder::Builder;
 pub use components::{CheckerPart, SamplerPart};
@@ -110,3 +112,4 @@ pub use termination::{
     TimeLimit,
 };
 pub use trace::{Trace, TracePoint};
+pub use warm_started::WarmStarted;

@@ -127,6 +127,11 @@ pub struct Parameters {
     /// [`Simplifying`](crate::Simplifying)), or reported as the planner found it (`false`, the
     /// default: the paper's planners and their ablations as published). Not in the paper.
     pub simplify_solutions: bool,
+    /// An asymptotically optimal planner starts from RRT-Connect's first solution (`true`;
+    /// [`build_planner`](crate::build_planner) wraps it in [`WarmStarted`](crate::WarmStarted))
+    /// or finds its own (`false`, the default: the paper's planners). RRT-Connect and AORRTC
+    /// (whose first search is RRT-Connect) ignore it. Not in the paper.
+    pub warm_start: bool,
     /// AORRTC shortens each solution it finds with a [`PathSimplifier`](crate::PathSimplifier)
     /// before the next cost-bounded search starts, so that search is bounded by the shorter
     /// cost (`true`, the default, as its authors' planner), or searches under the cost of the
@@ -188,6 +193,7 @@ impl Default for Parameters {
             rrt_balance: true,
             rrt_halton: false,
             simplify_solutions: false,
+            warm_start: false,
             aorrtc_simplify: true,
             aorrtc_resamples: 1000,
             goal_bias: 0.05,
@@ -420,6 +426,7 @@ impl Parameters {
             ("rrt_balance", self.rrt_balance.to_string()),
             ("rrt_halton", self.rrt_halton.to_string()),
             ("simplify_solutions", self.simplify_solutions.to_string()),
+            ("warm_start", self.warm_start.to_string()),
             ("aorrtc_simplify", self.aorrtc_simplify.to_string()),
             ("aorrtc_resamples", self.aorrtc_resamples.to_string()),
             ("goal_bias", self.goal_bias.to_string()),

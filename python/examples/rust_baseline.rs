@@ -50,6 +50,7 @@ fn run(args: &[String]) -> Result<(), String> {
         problem: Some(problem.clone()),
         problem_file: None,
         robot: None,
+        group: None,
         strict_robot: false,
         dim: (!arm).then_some(number as usize),
         instance: arm.then_some(number),

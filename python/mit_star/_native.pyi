@@ -26,6 +26,7 @@ class Problem:
         instance: Optional[int] = None,
         resolution: Optional[float] = None,
         robot: Optional[str] = None,
+        group: Optional[str] = None,
         strict_robot: bool = False,
         allow_coarse_step: bool = False,
     ) -> None:
@@ -42,11 +43,13 @@ class Problem:
         instance: Optional[int] = None,
         *,
         robot: Optional[str] = None,
+        group: Optional[str] = None,
         strict_robot: bool = False,
         resolution: Optional[float] = None,
     ) -> Problem:
         """Problem ``instance`` (1-based) of a MotionBenchMaker folder, for ``robot`` (a shipped
-        name or a folder with one URDF and one SRDF; default the Panda)."""
+        name or a folder with one URDF and one SRDF; default the Panda), planning its SRDF group
+        ``group`` (default every moving joint)."""
     @staticmethod
     def boxes(
         lower: ArrayLike,

@@ -72,17 +72,20 @@ impl PyProblem {
     /// `instance` is the layout seed of seeded families (random rectangles, default 0) or the
     /// problem index in a MotionBenchMaker folder (default its first); `resolution` replaces
     /// the problem's collision-check resolution; `robot` is a shipped robot (`panda`, `ur5`,
-    /// `fetch`) or a folder holding one URDF and one SRDF; `strict_robot` refuses SRDF entries
+    /// `fetch`, `baxter`) or a folder holding one URDF and one SRDF; `group` plans only that
+    /// SRDF planning group (the other joints held); `strict_robot` refuses SRDF entries
     /// naming links the robot lacks; `allow_coarse_step` allows a step coarser than the
     /// thinnest obstacle (or an arm without certification).
     #[new]
-    #[pyo3(signature = (name, dim=None, *, instance=None, resolution=None, robot=None, strict_robot=false, allow_coarse_step=false))]
+    #[pyo3(signature = (name, dim=None, *, instance=None, resolution=None, robot=None, group=None, strict_robot=false, allow_coarse_step=false))]
+    #[allow(clippy::too_many_arguments)]
     fn new(
         name: &str,
         dim: Option<usize>,
         instance: Option<u64>,
         resolution: Option<f64>,
         robot: Option<String>,
+        group: Option<String>,
         strict_robot: bool,
         allow_coarse_step: bool,
     ) -> BindingResult<Self> {
@@ -91,6 +94,7 @@ impl PyProblem {
             problem: file.is_none().then(|| name.to_owned()),
             problem_file: file,
             robot,
+            group,
             strict_robot,
             dim,
             instance,
@@ -111,6 +115,7 @@ impl PyProblem {
             problem: None,
             problem_file: Some(path),
             robot: None,
+            group: None,
             strict_robot: false,
             dim: None,
             instance: None,
@@ -121,14 +126,15 @@ impl PyProblem {
 
     /// Problem `instance` (1-based; default the folder's first) of a MotionBenchMaker scene
     /// folder, planned for `robot` (a shipped robot name or a folder with a URDF and an SRDF;
-    /// default the Panda). The folders of the shipped Panda problems come from
+    /// default the Panda) and its SRDF planning group `group` (default every moving joint). The folders of the shipped Panda problems come from
     /// `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`.
     #[staticmethod]
-    #[pyo3(signature = (folder, instance=None, *, robot=None, strict_robot=false, resolution=None))]
+    #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None))]
     fn mbm(
         folder: PathBuf,
         instance: Option<u64>,
         robot: Option<String>,
+        group: Option<String>,
         strict_robot: bool,
         resolution: Option<f64>,
     ) -> BindingResult<Self> {
@@ -136,6 +142,7 @@ impl PyProblem {
             problem: Some(format!("mbm:{}", folder.display())),
             problem_file: None,
             robot,
+            group,
             strict_robot,
             dim: None,
             instance,

@@ -180,12 +180,19 @@ impl ArmProblem {
 
     /// MotionBenchMaker problem `index` of `folder` for `robot` (SRDF applied). Joint values
     /// within [`LIMIT_TOLERANCE`](Self::LIMIT_TOLERANCE) outside a limit are moved onto it
-    /// (files round limits: Fetch's `±3.14159` against requests' `±π`).
+    /// (files round limits: Fetch's `±3.14159` against requests' `±π`); a continuous joint's
+    /// value is wrapped into `[-π, π]`. Joints outside the robot's planning group
+    /// ([`RobotModel::held_joints`]) are held at the request's start values.
     ///
     /// # Errors
     /// As [`panda_mbm`](Self::panda_mbm).
     pub fn mbm(robot: RobotModel, folder: &Path, index: usize) -> Result<Self, ArmError> {
         let problem = MbmProblem::load(folder, index)?;
+        let robot = if robot.held_joints().is_empty() {
+            robot
+        } else {
+            robot.with_joint_positions(problem.start.iter().map(|(n, v)| (n.as_str(), *v)))?
+        };
         let names = robot.joint_names();
         let names: Vec<&str> = names.iter().map(String::as_str).collect();
         let mut start = problem.start_for(&names)?;
@@ -300,18 +307,22 @@ impl PlanningProblem for ArmProblem {
     }
 }
 
-/// Moves values within [`ArmProblem::LIMIT_TOLERANCE`] outside a joint's limits onto them.
+/// Moves values within [`ArmProblem::LIMIT_TOLERANCE`] outside a joint's limits onto them,
+/// and wraps a continuous joint's value into `[-π, π]` (a request may say `2π` for `0`).
 fn snap_to_limits(space: &JointSpace, q: &mut [f64]) {
     for (v, joint) in q.iter_mut().zip(space.joints()) {
-        if let spaces::JointKind::Revolute { lower, upper }
-        | spaces::JointKind::Prismatic { lower, upper } = joint.kind
-        {
-            let tolerance = ArmProblem::LIMIT_TOLERANCE;
-            if *v < lower && *v >= lower - tolerance {
-                *v = lower;
-            } else if *v > upper && *v <= upper + tolerance {
-                *v = upper;
+        match joint.kind {
+            spaces::JointKind::Revolute { lower, upper }
+            | spaces::JointKind::Prismatic { lower, upper } => {
+                let tolerance = ArmProblem::LIMIT_TOLERANCE;
+                if *v < lower && *v >= lower - tolerance {
+                    *v = lower;
+                } else if *v > upper && *v <= upper + tolerance {
+                    *v = upper;
+                }
             }
+            spaces::JointKind::Continuous if v.is_finite() => *v = spaces::wrap_angle(*v),
+            spaces::JointKind::Continuous => {}
         }
     }
 }

@@ -33,7 +33,7 @@
 //! | [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] | an independent continuous check of a motion: conservative advancement in `f64` from parry distances and its own speed bound (the harness's re-check of returned arm paths) |
 //! | [`ArmProblem`], [`CHECKS_PER_UNIT`], [`CERTIFICATION`] | an arm planning problem, with its default check density and the certification its edges ask for |
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
-//! | [`ShippedRobot`], [`RobotSource`], [`RobotSourceError`] | the shipped models (Panda, UR5, Fetch) and a robot named by name or folder |
+//! | [`ShippedRobot`], [`RobotSource`], [`RobotSourceError`] | the shipped models (Panda, UR5, Fetch, Baxter) and a robot named by name or folder |
 //! | [`SphereCover`], [`CoverOptions`], [`CoverSphere`], [`TriangleMesh`], [`read_stl`], [`parse_stl`], [`SpherisedUrdf`], [`SpheriseOptions`], [`LinkReport`], [`LinkSource`], [`SpheriseError`] | spheres from meshes: a conservative cover of a mesh's solid within a tolerance, and a URDF rewritten with them (`mit-star spherise`) |
 //! | [`ModelWarning`] | what a lenient model ignored: SRDF and allowed-collision entries naming links it lacks |
 

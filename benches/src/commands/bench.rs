@@ -51,6 +51,10 @@ pub struct BenchArgs {
     /// SRDF. Experiment files say `robot = "ur5"` in the problem entry.
     #[arg(long, value_name = "NAME|DIR")]
     pub robot: Option<String>,
+    /// Plan only this SRDF planning group of the robot (flags mode; experiment files:
+    /// `group = "right_arm"`); the other joints are held at each request's start values.
+    #[arg(long, value_name = "GROUP")]
+    pub group: Option<String>,
     /// Refuse SRDF and allowed-collision entries naming links the robot lacks (flags mode;
     /// experiment files: `strict_robot = true`).
     #[arg(long)]
@@ -135,15 +139,17 @@ impl BenchArgs {
             || self.instances.is_some()
             || self.resolution.is_some()
             || self.robot.is_some()
+            || self.group.is_some()
             || self.strict_robot
             || self.name.is_some();
         let experiment = match (&self.file, &self.experiment) {
             (Some(_), _) | (_, Some(_)) if flags_mode => {
                 return Err(HarnessError::Usage(
                     "--planners, --problem, --dim(s), --time, --instances, --resolution, \
-                     --robot, --strict-robot and --name describe an experiment on the command \
-                     line; they cannot be combined with an experiment file or --experiment \
-                     (whose problem entries take `robot` and `strict_robot` keys)"
+                     --robot, --group, --strict-robot and --name describe an experiment on the \
+                     command line; they cannot be combined with an experiment file or \
+                     --experiment (whose problem entries take `robot`, `group` and \
+                     `strict_robot` keys)"
                         .into(),
                 ));
             }
@@ -231,13 +237,14 @@ impl BenchArgs {
             Some(d) => vec![d],
             None => self.dims.clone(),
         };
-        let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?;
+        let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?
+            .with_group(self.group.as_deref());
         let mut problems = Vec::new();
         for text in &self.problems {
             let source = ProblemSource::parse_for_robot(text, None, &robot)?;
             if !robot.is_default() && !matches!(source, ProblemSource::Mbm(_)) {
                 return Err(HarnessError::Usage(format!(
-                    "--robot and --strict-robot apply to MotionBenchMaker problems (mbm:PATH), not `{text}`"
+                    "--robot, --group and --strict-robot apply to MotionBenchMaker problems (mbm:PATH), not `{text}`"
                 )));
             }
             let dimensions = match source.fixed_dimension()? {

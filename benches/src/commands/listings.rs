@@ -193,6 +193,10 @@ pub(crate) fn print_robots() -> Result<CommandOutcome, HarnessError> {
             model.spheres().len(),
             model.links().len()
         );
+        say!(
+            "  groups:   {} (`--group NAME`)",
+            shipped.groups().join(", ")
+        );
         say!("  problems: {}", shipped.problems);
         say!(
             "  unpack:   mkdir -p target && tar xjf {} -C target/",
@@ -201,7 +205,7 @@ pub(crate) fn print_robots() -> Result<CommandOutcome, HarnessError> {
         say!(
             "  plan:     mit-star plan --robot {} --problem mbm:{} --planner mit-star\n",
             shipped.name,
-            shipped.unpacked.replace("{scene}", "box")
+            shipped.unpacked.replace("{scene}", shipped.scene)
         );
     }
     Ok(CommandOutcome::Success)

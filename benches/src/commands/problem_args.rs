@@ -21,10 +21,14 @@ pub struct ProblemArgs {
     #[arg(long, conflicts_with = "problem")]
     pub problem_file: Option<PathBuf>,
     /// The robot a MotionBenchMaker folder (`--problem mbm:PATH`) is planned for: a shipped
-    /// robot (`mit-star robots`: panda, the default, ur5, fetch) or a folder holding one URDF
-    /// (a `*_spherized.urdf` preferred) and one SRDF.
+    /// robot (`mit-star robots`: panda, the default, ur5, fetch, baxter) or a folder holding
+    /// one URDF (a `*_spherized.urdf` preferred) and one SRDF.
     #[arg(long, value_name = "NAME|DIR")]
     pub robot: Option<String>,
+    /// Plan only this SRDF planning group of the robot (`right_arm`); the other joints are
+    /// held at the request's start values. Default: every moving joint.
+    #[arg(long, value_name = "GROUP")]
+    pub group: Option<String>,
     /// Refuse SRDF and allowed-collision entries naming links the robot lacks (by default they
     /// are skipped with a warning).
     #[arg(long)]
@@ -73,7 +77,8 @@ impl ProblemArgs {
         budget: f64,
         check_ends: bool,
     ) -> Result<ProblemInstance, HarnessError> {
-        let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?;
+        let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?
+            .with_group(self.group.as_deref());
         let source = match (&self.problem, &self.problem_file) {
             (_, Some(path)) => ProblemSource::file(path)?,
             (Some(text), None) => ProblemSource::parse_for_robot(text, None, &robot)?,
@@ -96,9 +101,11 @@ impl ProblemArgs {
         if self.allow_coarse_step {
             problem = problem.allowing_coarse_step(true);
         }
-        if (self.robot.is_some() || self.strict_robot) && !matches!(source, ProblemSource::Mbm(_)) {
+        if (self.robot.is_some() || self.strict_robot || self.group.is_some())
+            && !matches!(source, ProblemSource::Mbm(_))
+        {
             return Err(HarnessError::Usage(
-                "--robot and --strict-robot apply to MotionBenchMaker problems (--problem mbm:PATH)"
+                "--robot, --group and --strict-robot apply to MotionBenchMaker problems (--problem mbm:PATH)"
                     .into(),
             ));
         }

@@ -274,6 +274,9 @@ impl Experiment {
                         if !robot.is_default() {
                             e.insert("robot".into(), robot.file_value().into());
                         }
+                        if let Some(group) = robot.group() {
+                            e.insert("group".into(), group.into());
+                        }
                         if robot.is_strict() {
                             e.insert("strict_robot".into(), true.into());
                         }

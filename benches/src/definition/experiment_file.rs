@@ -29,7 +29,10 @@
 //! #                                   # coarser than the thinnest box, an arm planned with
 //! #                                   # certification off (default false)
 //! # robot = "ur5"                     # `name = "mbm:PATH"` only: a shipped robot (panda, the
-//! #                                   # default, ur5, fetch) or a folder with a URDF and SRDF
+//! #                                   # default, ur5, fetch, baxter) or a folder with a URDF
+//! #                                   # and SRDF
+//! # group = "right_arm"               # plan only this SRDF planning group (default: every
+//! #                                   # moving joint; the others take the request's values)
 //! # strict_robot = true               # refuse SRDF entries naming links the robot lacks
 //! ```
 
@@ -138,8 +141,10 @@ pub struct ProblemEntry {
     /// certification).
     pub allow_coarse_step: Option<bool>,
     /// The robot a MotionBenchMaker folder is planned for: a shipped name (`panda`, the
-    /// default, `ur5`, `fetch`) or a folder with a URDF and an SRDF (relative to the file).
+    /// default, `ur5`, `fetch`, `baxter`) or a folder with a URDF and an SRDF (relative to the file).
     pub robot: Option<String>,
+    /// The SRDF planning group planned (`right_arm`); default every moving joint.
+    pub group: Option<String>,
     /// Refuse SRDF and allowed-collision entries naming links the robot lacks.
     pub strict_robot: Option<bool>,
 }
@@ -269,14 +274,15 @@ fn problem_spec(
         (Some(name), None) if name.trim().starts_with("mbm:") => {
             let strict = p.strict_robot.unwrap_or(false);
             let robot = RobotChoice::parse(p.robot.as_deref(), base, strict)
-                .map_err(|e| bad(".robot", e))?;
+                .map_err(|e| bad(".robot", e))?
+                .with_group(p.group.as_deref());
             ProblemSource::parse_for_robot(name, base, &robot).map_err(|e| bad(".name", e))?
         }
-        _ if p.robot.is_some() || p.strict_robot.is_some() => {
+        _ if p.robot.is_some() || p.strict_robot.is_some() || p.group.is_some() => {
             return Err(bad(
                 ".robot",
                 HarnessError::Usage(
-                    "`robot` and `strict_robot` apply to MotionBenchMaker problems (`name = \"mbm:PATH\"`)"
+                    "`robot`, `group` and `strict_robot` apply to MotionBenchMaker problems (`name = \"mbm:PATH\"`)"
                         .into(),
                 ),
             ));

@@ -17,13 +17,14 @@ use crate::error::HarnessError;
 /// assert_eq!(ur5.label(), "ur5");
 /// assert!(RobotChoice::default().is_default());
 /// let e = RobotChoice::parse(Some("ur10"), None, false).unwrap_err().to_string();
-/// assert!(e.contains("panda, ur5, fetch"), "{e}");
+/// assert!(e.contains("panda, ur5, fetch, baxter"), "{e}");
 /// # Ok::<(), mit_star_benches::HarnessError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct RobotChoice {
     source: RobotSource,
     strict: bool,
+    group: Option<String>,
 }
 
 impl RobotChoice {
@@ -58,7 +59,24 @@ impl RobotChoice {
                 })?
             }
         };
-        Ok(Self { source, strict })
+        Ok(Self {
+            source,
+            strict,
+            group: None,
+        })
+    }
+
+    /// The same robot planning only the SRDF's planning group `group` (`--group`, `group`):
+    /// the other joints are held at the request's start values.
+    #[must_use]
+    pub fn with_group(mut self, group: Option<&str>) -> Self {
+        self.group = group.map(|g| g.trim().to_owned());
+        self
+    }
+
+    /// The planning group, if one is named.
+    pub fn group(&self) -> Option<&str> {
+        self.group.as_deref()
     }
 
     /// `true` for the lenient default robot.
@@ -71,9 +89,12 @@ impl RobotChoice {
         self.strict
     }
 
-    /// The shipped name, or the URDF's path.
+    /// The shipped name, or the URDF's path, and the group (`baxter/right_arm`).
     pub fn label(&self) -> String {
-        self.source.label()
+        match &self.group {
+            Some(group) => format!("{}/{group}", self.source.label()),
+            None => self.source.label(),
+        }
     }
 
     /// What an experiment file's `robot` key holds for it: the shipped name, or the folder's
@@ -96,7 +117,7 @@ impl RobotChoice {
     /// # Errors
     /// [`HarnessError::Robot`] naming the robot and what is wrong with its files.
     pub fn load(&self) -> Result<RobotModel, HarnessError> {
-        let model = self.source.load(self.strict)?;
+        let model = self.source.load_group(self.strict, self.group.as_deref())?;
         for warning in model.warnings() {
             eprintln!("warning: robot `{}`: {warning}", self.label());
         }

@@ -128,6 +128,12 @@ impl MotionAudit {
         &self.checker
     }
 
+    /// The joint space whose straight lines it audits (its metric measures a path's length:
+    /// weighted, the short way round for continuous joints).
+    pub fn space(&self) -> &spaces::JointSpace {
+        &self.space
+    }
+
     /// Audits the straight motion `a → b`, computing at most `budget` configurations.
     ///
     /// Arguments: two configurations of the robot's dimension, within its joint limits (the

@@ -6,7 +6,9 @@
 //!   `srdf.rs` reads the SRDF's `disable_collisions` pairs; `collision_pairs.rs` applies them
 //!   and a scene's allowed collisions, leniently (warnings) or strictly (errors);
 //!   `model_pairs.rs` finds the pairs the sphere model rules out (adjacent links, pairs in
-//!   collision everywhere) and the pairs colliding at a configuration.
+//!   collision everywhere) and the pairs colliding at a configuration; `model_joint.rs` derives
+//!   the coordinates and link frames from the joints (planned, held, mimic; the prismatic
+//!   weight); `planning_group.rs` reads SRDF planning groups and the held joints' values.
 //! - [`Kinematics`] (`kinematics.rs`): forward kinematics, link poses and sphere centres, `f32`
 //!   and `f64`, no allocation; its per-joint steps are what the SIMD lanes of `checking` replay.
 //! - [`LeverArms`] (`lever_arms.rs`): how far each link's spheres can move per unit of each
@@ -23,8 +25,10 @@ mod collision_pairs;
 mod kinematics;
 mod lever_arms;
 mod model_error;
+mod model_joint;
 mod model_pairs;
 mod model_warning;
+mod planning_group;
 mod robot_model;
 mod srdf;
 

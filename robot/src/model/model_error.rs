@@ -118,6 +118,38 @@ pub enum ModelError {
         /// The robot's name.
         robot: String,
     },
+    /// A mimic joint follows a joint that is not a moving joint of the URDF, or mimic joints
+    /// follow each other round in a cycle.
+    #[error(
+        "mimic joint `{joint}` follows `{leader}`, which is not a revolute, continuous or prismatic joint leading to a planned or held one"
+    )]
+    MimicLeader {
+        /// The mimic joint.
+        joint: String,
+        /// The joint it names.
+        leader: String,
+    },
+    /// The SRDF has no planning group of that name.
+    #[error("{origin}: no planning group `{group}` (groups: {known})")]
+    UnknownGroup {
+        /// The SRDF file (or `"SRDF text"`).
+        origin: String,
+        /// The group asked for.
+        group: String,
+        /// The groups the SRDF defines, comma separated.
+        known: String,
+    },
+    /// A planning group names a joint or link the robot lacks (strict mode), has a chain
+    /// whose base is not above its tip, or includes itself.
+    #[error("{origin}: planning group `{group}`: {why}")]
+    BadGroup {
+        /// The SRDF file (or `"SRDF text"`, or `"joint list"`).
+        origin: String,
+        /// The group.
+        group: String,
+        /// What is wrong, naming the element.
+        why: String,
+    },
     /// The joint space could not be made.
     #[error("joint space: {0}")]
     Space(#[from] spaces::SpaceError),

@@ -21,6 +21,16 @@ pub enum ModelWarning {
         /// How many entries named one of them.
         entries: usize,
     },
+    /// Members of a planning group naming joints or links the model does not have, skipped
+    /// (a spherised model often drops a gripper's links).
+    UnknownGroupMembers {
+        /// The SRDF file (or `"SRDF text"`).
+        origin: String,
+        /// The group.
+        group: String,
+        /// The unknown names (`joint x`, `link y`), each once.
+        names: Vec<String>,
+    },
     /// Link pairs no longer checked for self-collision because the sphere model itself says
     /// so ([`RobotModel::without_model_pairs`](crate::RobotModel::without_model_pairs)).
     DisabledPairs {
@@ -47,6 +57,15 @@ impl fmt::Display for ModelWarning {
                     links.join(", ")
                 )
             }
+            Self::UnknownGroupMembers {
+                origin,
+                group,
+                names,
+            } => write!(
+                f,
+                "{origin}: planning group `{group}`: ignored members the model does not have: {}",
+                names.join(", ")
+            ),
             Self::DisabledPairs { reason, pairs } => {
                 let names: Vec<String> = pairs.iter().map(|(a, b)| format!("{a}/{b}")).collect();
                 write!(

@@ -7,6 +7,7 @@ use std::path::Path;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 use spaces::{Joint, JointSpace};
 
+use crate::model::model_joint::ModelJoint;
 use crate::{ModelError, ModelWarning};
 
 /// How the joint above a link moves it.
@@ -60,7 +61,10 @@ pub struct LinkSphere {
 ///
 /// Actuated joints (revolute, continuous, prismatic) are the configuration's coordinates in
 /// depth-first tree order from the root (for the Panda: `panda_joint1` … `panda_joint7`);
-/// fixed joints ride along. Without an SRDF every pair of links with spheres is checked for
+/// fixed joints ride along. Mimic joints follow their leader; a planning group
+/// ([`with_group_str`](Self::with_group_str)) keeps only its joints as coordinates and holds
+/// the others ([`held_joints`](Self::held_joints)). Continuous coordinates wrap; prismatic
+/// ones weigh `1 / `[`revolute_reach`](Self::revolute_reach) in the metric. Without an SRDF every pair of links with spheres is checked for
 /// self-collision, adjacent links included: apply the robot's SRDF
 /// ([`with_srdf_str`](Self::with_srdf_str)) as MoveIt does.
 ///
@@ -75,9 +79,13 @@ pub struct LinkSphere {
 #[derive(Debug, Clone)]
 pub struct RobotModel {
     pub(super) name: String,
-    links: Vec<LinkFrame>,
-    space: JointSpace,
-    joint_names: Vec<String>,
+    pub(super) links: Vec<LinkFrame>,
+    pub(super) space: JointSpace,
+    pub(super) joint_names: Vec<String>,
+    /// Every revolute, continuous and prismatic joint, in tree order.
+    pub(super) joints: Vec<ModelJoint>,
+    /// Per link, the name of the joint above it (`None` for the root).
+    pub(super) link_joints: Vec<Option<String>>,
     spheres: Vec<LinkSphere>,
     ranges: Vec<Range<usize>>,
     bounds: Vec<Option<(DVec3, f64)>>,
@@ -173,20 +181,22 @@ impl RobotModel {
         };
         // Depth-first from the root, children in document order.
         let mut links = Vec::with_capacity(urdf.links.len());
+        let mut link_joints = Vec::with_capacity(urdf.links.len());
         let mut joints = Vec::new();
         let mut stack: Vec<(Option<usize>, &str, Option<&urdf_rs::Joint>)> =
             vec![(None, root, None)];
         while let Some((parent, name, joint)) = stack.pop() {
             let index = links.len();
-            let (origin, motion) = match joint {
-                None => (DAffine3::IDENTITY, Motion::Fixed),
-                Some(j) => joint_frame(j, &mut joints)?,
+            let origin = match joint {
+                None => DAffine3::IDENTITY,
+                Some(j) => joint_frame(j, index, &mut joints)?,
             };
+            link_joints.push(joint.map(|j| j.name.clone()));
             links.push(LinkFrame {
                 name: name.to_owned(),
                 parent,
                 origin,
-                motion,
+                motion: Motion::Fixed,
             });
             for j in children.get(name).into_iter().flatten().rev() {
                 stack.push((Some(index), j.child.link.as_str(), Some(j)));
@@ -197,11 +207,9 @@ impl RobotModel {
                 why: "some links are not reachable from the root (a cycle)".into(),
             });
         }
-        if joints.is_empty() {
+        if joints.iter().all(|j| j.mimic.is_some()) {
             return Err(ModelError::NoJoints);
         }
-        let joint_names = joints.iter().map(|j: &Joint| j.name.clone()).collect();
-        let space = JointSpace::new(joints)?;
         let by_name: HashMap<&str, &urdf_rs::Link> =
             urdf.links.iter().map(|l| (l.name.as_str(), l)).collect();
         let (mut spheres, mut ranges, mut bounds) = (Vec::new(), Vec::new(), Vec::new());
@@ -237,18 +245,23 @@ impl RobotModel {
                 pairs.push((i, j));
             }
         }
-        Ok(Self {
+        let mut model = Self {
             name: urdf.name,
             links,
-            space,
-            joint_names,
+            // Placeholders until `rebuild` derives them from the joints.
+            space: JointSpace::new(vec![Joint::continuous("placeholder")])?,
+            joint_names: Vec::new(),
+            joints,
+            link_joints,
             spheres,
             ranges,
             bounds,
             pairs,
             strict: false,
             warnings: Vec::new(),
-        })
+        };
+        model.rebuild()?;
+        Ok(model)
     }
 
     /// The robot's name.
@@ -306,22 +319,22 @@ impl RobotModel {
     }
 }
 
-/// The origin and motion of a URDF joint; pushes its coordinate onto `joints` if it moves.
+/// The origin of a URDF joint moving link `link`; pushes the joint onto `joints` if it moves.
 fn joint_frame(
     joint: &urdf_rs::Joint,
-    joints: &mut Vec<Joint>,
-) -> Result<(DAffine3, Motion), ModelError> {
+    link: usize,
+    joints: &mut Vec<ModelJoint>,
+) -> Result<DAffine3, ModelError> {
     use urdf_rs::JointType as T;
     let origin = pose(&joint.origin, &joint.name)?;
     let what = match joint.joint_type {
         // A fixed joint does not move, whatever it claims to mimic.
-        T::Fixed => return Ok((origin, Motion::Fixed)),
+        T::Fixed => return Ok(origin),
         T::Revolute | T::Continuous | T::Prismatic => None,
         T::Floating => Some("a floating joint"),
         T::Planar => Some("a planar joint"),
         T::Spherical => Some("a spherical joint"),
     };
-    let what = what.or(joint.mimic.as_ref().map(|_| "a mimic joint"));
     if let Some(what) = what {
         return Err(ModelError::UnsupportedJoint {
             joint: joint.name.clone(),
@@ -333,7 +346,19 @@ fn joint_frame(
         joint: joint.name.clone(),
         axis: joint.axis.xyz.0,
     })?;
-    let coordinate = joints.len();
+    let mimic = match &joint.mimic {
+        None => None,
+        Some(m) => {
+            let multiplier = m.multiplier.unwrap_or(1.0);
+            let offset = m.offset.unwrap_or(0.0);
+            for (what, v) in [("mimic multiplier", multiplier), ("mimic offset", offset)] {
+                if !v.is_finite() {
+                    return Err(bad(&joint.name, what, v));
+                }
+            }
+            Some((m.joint.clone(), multiplier, offset))
+        }
+    };
     let (lower, upper) = (joint.limit.lower, joint.limit.upper);
     let limited = |j: fn(String, f64, f64) -> Joint| {
         if lower.is_finite() && upper.is_finite() && lower < upper {
@@ -346,22 +371,27 @@ fn joint_frame(
             })
         }
     };
-    let (spec, motion) = match joint.joint_type {
-        T::Revolute => (
-            limited(Joint::revolute)?,
-            Motion::Revolute { axis, coordinate },
-        ),
-        T::Prismatic => (
-            limited(Joint::prismatic)?,
-            Motion::Prismatic { axis, coordinate },
-        ),
-        _ => (
-            Joint::continuous(joint.name.clone()),
-            Motion::Revolute { axis, coordinate },
-        ),
+    // A mimic joint's own limits are not used: its leader's rule.
+    let spec = match (joint.joint_type.clone(), &mimic) {
+        (_, Some(_)) => None,
+        (T::Revolute, None) => Some(limited(Joint::revolute)?),
+        (T::Prismatic, None) => Some(limited(Joint::prismatic)?),
+        _ => Some(Joint::continuous(joint.name.clone())),
     };
-    joints.push(spec);
-    Ok((origin, motion))
+    let mut joint = ModelJoint {
+        name: joint.name.clone(),
+        link,
+        origin,
+        axis,
+        prismatic: matches!(joint.joint_type, T::Prismatic),
+        spec,
+        mimic,
+        planned: true,
+        value: 0.0,
+    };
+    joint.value = joint.default_value();
+    joints.push(joint);
+    Ok(origin)
 }
 
 /// A URDF pose: translation `xyz`, rotation `Rz(yaw)·Ry(pitch)·Rx(roll)` from `rpy`.

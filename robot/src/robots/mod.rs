@@ -1,6 +1,6 @@
 //! Choosing a robot: the models shipped with the crate and robots named on the command line.
 //!
-//! - [`ShippedRobot`] (`shipped_robot.rs`): the Panda, UR5 and Fetch spherised models, compiled
+//! - [`ShippedRobot`] (`shipped_robot.rs`): the Panda, UR5, Fetch and Baxter spherised models, compiled
 //!   in, and where their MotionBenchMaker problem sets are.
 //! - [`RobotSource`] (`robot_source.rs`): a shipped name or a folder with a URDF and an SRDF,
 //!   loaded strictly or leniently; [`RobotSourceError`] (`robot_source_error.rs`): what is wrong.

@@ -13,7 +13,7 @@ use crate::{RobotModel, RobotSourceError, ShippedRobot};
 /// let model = ur5.load(false)?;
 /// assert_eq!(model.joint_space().joints().len(), 6);
 /// let e = robot::RobotSource::parse("ur10").unwrap_err().to_string();
-/// assert!(e.contains("panda, ur5, fetch"), "{e}");
+/// assert!(e.contains("panda, ur5, fetch, baxter"), "{e}");
 /// # Ok::<(), robot::RobotSourceError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -94,6 +94,20 @@ impl RobotSource {
     /// # Errors
     /// [`RobotSourceError::Model`] naming the robot and what is wrong with its files.
     pub fn load(&self, strict: bool) -> Result<RobotModel, RobotSourceError> {
+        self.load_group(strict, None)
+    }
+
+    /// As [`load`](Self::load), planning only the SRDF's planning group `group` if one is
+    /// named ([`RobotModel::with_group_str`]; the other joints are held).
+    ///
+    /// # Errors
+    /// As [`load`](Self::load); an unknown group is a [`RobotSourceError::Model`] listing the
+    /// SRDF's groups.
+    pub fn load_group(
+        &self,
+        strict: bool,
+        group: Option<&str>,
+    ) -> Result<RobotModel, RobotSourceError> {
         let model = |source| RobotSourceError::Model {
             robot: self.label(),
             source,
@@ -104,10 +118,14 @@ impl RobotSource {
                     name: (*name).to_owned(),
                     known: ShippedRobot::names(),
                 })?
-                .model(strict)
+                .model_of_group(strict, group)
                 .map_err(model),
             Self::Files { urdf, srdf } => RobotModel::from_urdf_file(urdf)
                 .and_then(|m| m.strict(strict).with_srdf_file(srdf))
+                .and_then(|m| match group {
+                    Some(group) => m.with_group_file(srdf, group),
+                    None => Ok(m),
+                })
                 .map(RobotModel::without_model_pairs)
                 .map_err(model),
         }

@@ -14,7 +14,7 @@ use crate::{ModelError, RobotModel};
 /// ```
 #[derive(Debug)]
 pub struct ShippedRobot {
-    /// The name `--robot` takes (`panda`, `ur5`, `fetch`).
+    /// The name `--robot` takes (`panda`, `ur5`, `fetch`, `baxter`).
     pub name: &'static str,
     /// One line on what it is.
     pub description: &'static str,
@@ -23,12 +23,14 @@ pub struct ShippedRobot {
     /// Where `tar xjf PROBLEMS -C target/` puts a scene folder, `{scene}` standing for the
     /// scene (`target/problems/{scene}_ur5`).
     pub unpacked: &'static str,
+    /// A scene of its problem set (`box`; Baxter's `bookshelf_tall_both_arms_easy`).
+    pub scene: &'static str,
     urdf: &'static str,
     srdf: &'static str,
 }
 
 /// The shipped robots, the default ([`ShippedRobot::DEFAULT`]) first.
-const SHIPPED: [ShippedRobot; 3] = [
+const SHIPPED: [ShippedRobot; 4] = [
     ShippedRobot {
         name: "panda",
         description: "Franka Panda arm and hand (VAMP's spheres)",
@@ -37,6 +39,7 @@ const SHIPPED: [ShippedRobot; 3] = [
             "/data/panda/mbm_problems.tar.bz2"
         ),
         unpacked: "target/{scene}_panda",
+        scene: "box",
         urdf: include_str!("../../data/panda/panda_spherized.urdf"),
         srdf: include_str!("../../data/panda/panda.srdf"),
     },
@@ -45,6 +48,7 @@ const SHIPPED: [ShippedRobot; 3] = [
         description: "Universal Robots UR5 with Robotiq gripper (VAMP's spheres)",
         problems: concat!(env!("CARGO_MANIFEST_DIR"), "/data/ur5/problems.tar.bz2"),
         unpacked: "target/problems/{scene}_ur5",
+        scene: "box",
         urdf: include_str!("../../data/ur5/ur5_spherized.urdf"),
         srdf: include_str!("../../data/ur5/ur5.srdf"),
     },
@@ -53,8 +57,18 @@ const SHIPPED: [ShippedRobot; 3] = [
         description: "Fetch torso and arm, base fixed (VAMP's spheres)",
         problems: concat!(env!("CARGO_MANIFEST_DIR"), "/data/fetch/problems.tar.bz2"),
         unpacked: "target/problems/{scene}_fetch",
+        scene: "box",
         urdf: include_str!("../../data/fetch/fetch_spherized.urdf"),
         srdf: include_str!("../../data/fetch/fetch.srdf"),
+    },
+    ShippedRobot {
+        name: "baxter",
+        description: "Rethink Baxter, both arms, torso fixed (VAMP's spheres)",
+        problems: concat!(env!("CARGO_MANIFEST_DIR"), "/data/baxter/problems.tar.bz2"),
+        unpacked: "target/problems/{scene}_baxter",
+        scene: "bookshelf_tall_both_arms_easy",
+        urdf: include_str!("../../data/baxter/baxter_spherized.urdf"),
+        srdf: include_str!("../../data/baxter/baxter.srdf"),
     },
 ];
 
@@ -86,6 +100,11 @@ impl ShippedRobot {
             .join(", ")
     }
 
+    /// The planning groups its SRDF defines, in file order (`--group NAME`).
+    pub fn groups(&self) -> Vec<String> {
+        RobotModel::srdf_groups(self.srdf).unwrap_or_default()
+    }
+
     /// The model: the URDF with its SRDF applied, [strict](RobotModel::strict) or lenient
     /// about SRDF entries naming links the sphere model lacks, then
     /// [without the pairs the sphere model rules out](RobotModel::without_model_pairs)
@@ -95,10 +114,28 @@ impl ShippedRobot {
     /// Only in strict mode, [`ModelError::UnknownLink`] for such an entry (the shipped files
     /// are tested to load).
     pub fn model(&self, strict: bool) -> Result<RobotModel, ModelError> {
-        RobotModel::from_urdf_str(self.urdf)?
+        self.model_of_group(strict, None)
+    }
+
+    /// As [`model`](Self::model), planning only the SRDF group `group` if one is named
+    /// ([`RobotModel::with_group_str`]); the pairs the sphere model rules out are found with
+    /// the other joints held.
+    ///
+    /// # Errors
+    /// As [`model`](Self::model), and as [`RobotModel::with_group_str`] for the group.
+    pub fn model_of_group(
+        &self,
+        strict: bool,
+        group: Option<&str>,
+    ) -> Result<RobotModel, ModelError> {
+        let origin = format!("robot/data/{0}/{0}.srdf", self.name);
+        let mut model = RobotModel::from_urdf_str(self.urdf)?
             .strict(strict)
-            .with_srdf_named(self.srdf, &format!("robot/data/{0}/{0}.srdf", self.name))
-            .map(RobotModel::without_model_pairs)
+            .with_srdf_named(self.srdf, &origin)?;
+        if let Some(group) = group {
+            model = model.with_group_named(self.srdf, &origin, group)?;
+        }
+        Ok(model.without_model_pairs())
     }
 }
 
@@ -125,7 +162,7 @@ mod tests {
             .and_then(|m| m.with_srdf_str(SHIPPED[0].srdf))
             .unwrap();
         assert_eq!(bare.self_collision_pairs(), panda.self_collision_pairs());
-        assert_eq!(ShippedRobot::names(), "panda, ur5, fetch");
+        assert_eq!(ShippedRobot::names(), "panda, ur5, fetch, baxter");
     }
 
     #[test]
