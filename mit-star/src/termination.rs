@@ -194,6 +194,27 @@ pub trait TerminationExt: Termination + Sized {
 
 impl<T: Termination> TerminationExt for T {}
 
+/// A caller's termination seen by a planner that a wrapper runs (as
+/// [`Simplifying`](crate::Simplifying) and [`WarmStarted`](crate::WarmStarted) do): time
+/// counts from the wrapper's `solve` call, and the best cost is the better of the wrapped
+/// planner's and the wrapper's own.
+pub(crate) struct Wrapped<'a> {
+    pub(crate) termination: &'a dyn Termination,
+    pub(crate) started: Instant,
+    pub(crate) best: f64,
+}
+
+impl Termination for Wrapped<'_> {
+    fn should_terminate(&self, progress: &Progress) -> bool {
+        let progress = Progress {
+            elapsed: progress.now.saturating_duration_since(self.started),
+            best_cost: progress.best_cost.min(self.best),
+            ..*progress
+        };
+        self.termination.should_terminate(&progress)
+    }
+}
+
 /// The [`Stop`] view of a termination condition that building blocks poll during one
 /// iteration: time moves on, the iteration count and best cost are those of the iteration.
 pub(crate) struct SolveStop<'a> {

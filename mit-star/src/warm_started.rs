@@ -3,6 +3,7 @@
 
 use std::time::{Duration, Instant};
 
+use crate::termination::Wrapped;
 use crate::{
     Counters, Outcome, Planner, PlannerError, Progress, Snapshot, Solution, Termination, Trace,
 };
@@ -114,7 +115,7 @@ impl<P: Planner, F: Planner> WarmStarted<P, F> {
         termination: &dyn Termination,
         started: Instant,
     ) -> Result<(), PlannerError> {
-        let outer = Outer {
+        let outer = Wrapped {
             termination,
             started,
             best: self.best_cost(),
@@ -144,24 +145,6 @@ impl<P: Planner, F: Planner> WarmStarted<P, F> {
     }
 }
 
-/// The caller's termination seen with this wrapper's clock and best cost.
-struct Outer<'a> {
-    termination: &'a dyn Termination,
-    started: Instant,
-    best: f64,
-}
-
-impl Termination for Outer<'_> {
-    fn should_terminate(&self, progress: &Progress) -> bool {
-        let progress = Progress {
-            elapsed: progress.now.saturating_duration_since(self.started),
-            best_cost: progress.best_cost.min(self.best),
-            ..*progress
-        };
-        self.termination.should_terminate(&progress)
-    }
-}
-
 impl<P: Planner, F: Planner> Planner for WarmStarted<P, F> {
     fn name(&self) -> &str {
         self.inner.name()
@@ -180,7 +163,7 @@ impl<P: Planner, F: Planner> Planner for WarmStarted<P, F> {
                 }
             }
             self.merged = self.inner.trace().len();
-            let outer = Outer {
+            let outer = Wrapped {
                 termination,
                 started,
                 best: self.best_cost(),

@@ -5,6 +5,7 @@ use std::time::{Duration, Instant};
 use spaces::{StateSpace, States};
 use validity::StateValidity;
 
+use crate::termination::Wrapped;
 use crate::{
     Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot, Solution,
     Termination, TerminationExt, Trace,
@@ -124,24 +125,6 @@ impl Termination for Improved {
     }
 }
 
-/// The caller's termination seen with this wrapper's clock and best cost.
-struct Outer<'a> {
-    termination: &'a dyn Termination,
-    started: Instant,
-    best: f64,
-}
-
-impl Termination for Outer<'_> {
-    fn should_terminate(&self, progress: &Progress) -> bool {
-        let progress = Progress {
-            elapsed: progress.now.saturating_duration_since(self.started),
-            best_cost: progress.best_cost.min(self.best),
-            ..*progress
-        };
-        self.termination.should_terminate(&progress)
-    }
-}
-
 impl<P, S, V> Planner for Simplifying<P, S, V>
 where
     P: Planner,
@@ -156,7 +139,7 @@ where
         let started = Instant::now();
         loop {
             let before = self.inner.best_cost();
-            let outer = Outer {
+            let outer = Wrapped {
                 termination,
                 started,
                 best: self.best_cost(),

@@ -46,16 +46,7 @@ enum Drive {
 impl ModelJoint {
     /// MoveIt's default value: 0, or the middle of the limits when 0 is outside them.
     pub(crate) fn default_value(&self) -> f64 {
-        self.spec.as_ref().map_or(0.0, |s| match s.kind {
-            JointKind::Revolute { lower, upper } | JointKind::Prismatic { lower, upper } => {
-                if (lower..=upper).contains(&0.0) {
-                    0.0
-                } else {
-                    0.5 * (lower + upper)
-                }
-            }
-            JointKind::Continuous => 0.0,
-        })
+        self.spec.as_ref().map_or(0.0, |s| default_value(&s.kind))
     }
 
     /// `value` made a position of this joint: clamped into its limits, or wrapped into
@@ -211,5 +202,20 @@ impl RobotModel {
                 offset: multiplier * o + offset,
             },
         })
+    }
+}
+
+/// MoveIt's default value of a joint of `kind`: 0, or the middle of the limits when 0 is
+/// outside them.
+pub(crate) fn default_value(kind: &JointKind) -> f64 {
+    match *kind {
+        JointKind::Revolute { lower, upper } | JointKind::Prismatic { lower, upper } => {
+            if (lower..=upper).contains(&0.0) {
+                0.0
+            } else {
+                0.5 * (lower + upper)
+            }
+        }
+        JointKind::Continuous => 0.0,
     }
 }

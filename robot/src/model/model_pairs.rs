@@ -38,16 +38,7 @@ impl RobotModel {
         self.joint_space()
             .joints()
             .iter()
-            .map(|j| match j.kind {
-                JointKind::Revolute { lower, upper } | JointKind::Prismatic { lower, upper } => {
-                    if (lower..=upper).contains(&0.0) {
-                        0.0
-                    } else {
-                        0.5 * (lower + upper)
-                    }
-                }
-                JointKind::Continuous => 0.0,
-            })
+            .map(|j| crate::model::model_joint::default_value(&j.kind))
             .collect()
     }
 
