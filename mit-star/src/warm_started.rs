@@ -54,10 +54,8 @@ use crate::{
 pub struct WarmStarted<P, F> {
     inner: P,
     front: F,
-    /// The front's solution, once found.
-    first: Option<Solution>,
-    /// The front's solution is still to be offered to `inner`.
-    pending: bool,
+    /// The front's solution, until it is offered to `inner`.
+    pending: Option<Solution>,
     solution: Option<Solution>,
     trace: Trace,
     /// Planning time of the finished `solve` calls.
@@ -78,8 +76,7 @@ impl<P: Planner, F: Planner> WarmStarted<P, F> {
         Self {
             inner,
             front,
-            first: None,
-            pending: false,
+            pending: None,
             solution: None,
             trace: Trace::default(),
             elapsed: Duration::ZERO,
@@ -126,8 +123,7 @@ impl<P: Planner, F: Planner> WarmStarted<P, F> {
         if let Outcome::Solved(solution) = outcome {
             let time = (self.elapsed + started.elapsed()).as_secs_f64();
             self.keep(&solution, time);
-            self.first = Some(solution);
-            self.pending = true;
+            self.pending = Some(solution);
         }
         Ok(())
     }
@@ -135,9 +131,8 @@ impl<P: Planner, F: Planner> WarmStarted<P, F> {
     /// Appends the inner planner's new trace points, its times (its own planning time) moved
     /// `shift` seconds on.
     fn merge_inner_trace(&mut self, shift: f64) {
-        let points: Vec<_> = self.inner.trace().points()[self.merged..].to_vec();
-        self.merged += points.len();
-        for point in points {
+        while let Some(&point) = self.inner.trace().points().get(self.merged) {
+            self.merged += 1;
             if point.cost < self.best_cost() {
                 self.trace.push(point.time + shift, point.cost);
             }
@@ -157,10 +152,8 @@ impl<P: Planner, F: Planner> Planner for WarmStarted<P, F> {
         }
         let progress = Progress::new(started.elapsed(), 0, self.best_cost());
         if self.solution.is_some() && !termination.should_terminate(&progress) {
-            if std::mem::take(&mut self.pending) {
-                if let Some(first) = &self.first {
-                    self.taken = self.inner.offer_solution(first);
-                }
+            if let Some(first) = self.pending.take() {
+                self.taken = self.inner.offer_solution(&first);
             }
             self.merged = self.inner.trace().len();
             let outer = Wrapped {
@@ -192,8 +185,7 @@ impl<P: Planner, F: Planner> Planner for WarmStarted<P, F> {
     fn clear(&mut self) {
         self.inner.clear();
         self.front.clear();
-        self.first = None;
-        self.pending = false;
+        self.pending = None;
         self.solution = None;
         self.trace.clear();
         self.elapsed = Duration::ZERO;
