@@ -90,6 +90,8 @@ pub trait Planner {
     /// resolution, then certified when the problem asks; the path must join its start to one of
     /// its goals) and, if it is valid and cheaper than its best, makes it its best solution, so
     /// its cost bound, informed set and pruning follow from then on; it then returns `true`.
+    /// The EIT* family also grafts the path into its forward tree (its corners become
+    /// vertices, its edges known valid), so later batches can improve on it locally.
     /// The default ignores the offer and returns `false` (planners that return their first
     /// solution, and wrappers that cannot pass it on).
     fn offer_solution(&mut self, solution: &Solution) -> bool {
@@ -149,18 +151,22 @@ pub(crate) fn path_cost<S: StateSpace>(space: &S, path: &States) -> f64 {
 /// Whether `path` joins `start` to one of `goals` with every state finite and of the space's
 /// dimension, and every edge valid at full resolution on `checker`'s grid and, when
 /// `certification > 1`, certified: the test an offered solution passes before a planner takes
-/// it ([`Planner::offer_solution`]). Runs to the end (no stop): an offer is bounded work.
+/// it ([`Planner::offer_solution`]). `progress` receives each edge's checking progress (all of
+/// its grid tested when the path passes), for a planner that keeps the edges. Runs to the end
+/// (no stop): an offer is bounded work.
 pub(crate) fn offered_path_is_valid<S, V, E>(
     (space, validity, checker): (&S, &V, &mut E),
     certification: u32,
     (start, goals): (&[f64], &[Vec<f64>]),
     path: &States,
+    progress: &mut Vec<validity::EdgeProgress>,
 ) -> bool
 where
     S: StateSpace,
     V: StateValidity,
     E: validity::EdgeChecker<S, V>,
 {
+    progress.clear();
     let n = space.dimension();
     if path.len() < 2 || path.dimension() != n || path[0] != *start {
         return false;
@@ -176,13 +182,15 @@ where
         return false;
     }
     path.iter().zip(path.iter().skip(1)).all(|(a, b)| {
-        let mut progress = validity::EdgeProgress::UNTESTED;
+        let mut tested = validity::EdgeProgress::UNTESTED;
         let never = &spaces::Never;
-        checker.check_full(space, validity, a, b, &mut progress, never)
+        let valid = checker.check_full(space, validity, a, b, &mut tested, never)
             == validity::EdgeStatus::Valid
             && (certification <= 1
                 || checker.certify(space, validity, a, b, certification, never)
-                    == validity::EdgeStatus::Valid)
+                    == validity::EdgeStatus::Valid);
+        progress.push(tested);
+        valid
     })
 }
 

@@ -226,7 +226,9 @@ mod tests {
                 SampleOrigin::Drawn => tally[0] += 1,
                 SampleOrigin::Gaussian => tally[1] += 1,
                 SampleOrigin::Bridge => tally[2] += 1,
-                SampleOrigin::NearTerminal => panic!("the adaptive sampler draws near no terminal"),
+                SampleOrigin::NearTerminal | SampleOrigin::Offered => {
+                    panic!("the adaptive sampler draws only Drawn, Gaussian and Bridge states")
+                }
             }
             assert!(
                 world.is_valid(&x) && (x[1] - 0.5).abs() <= 0.01 + 1e-9,

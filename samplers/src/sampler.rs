@@ -105,6 +105,10 @@ pub enum SampleOrigin {
     Bridge,
     /// Drawn near the start or a goal by the [`NearTerminals`](crate::NearTerminals) wrapper.
     NearTerminal,
+    /// Not drawn: a state of a path given to the planner from outside (a warm start's first
+    /// path, a simplified solution), kept as a vertex so the search can improve on that path
+    /// locally.
+    Offered,
 }
 
 impl SampleOrigin {
@@ -112,17 +116,19 @@ impl SampleOrigin {
     /// connection rules `k(q)` and `r(q)`: the states a sampler draws to cover its set —
     /// uniform and informed draws, and the obstacle-based samplers' states, which stand in for
     /// draws of the set as in MIT* — but not [`NearTerminal`](Self::NearTerminal) states,
-    /// clustered around the start and the goals, which would make the set look more densely
-    /// sampled than it is (and the radius too small for asymptotic optimality).
+    /// clustered around the start and the goals, nor [`Offered`](Self::Offered) ones, strung
+    /// along one path: either would make the set look more densely sampled than it is (and the
+    /// radius too small for asymptotic optimality).
     ///
     /// ```
     /// use samplers::SampleOrigin;
     /// assert!(SampleOrigin::Drawn.counts_toward_density());
     /// assert!(SampleOrigin::Gaussian.counts_toward_density());
     /// assert!(!SampleOrigin::NearTerminal.counts_toward_density());
+    /// assert!(!SampleOrigin::Offered.counts_toward_density());
     /// ```
     pub fn counts_toward_density(self) -> bool {
-        !matches!(self, Self::NearTerminal)
+        !matches!(self, Self::NearTerminal | Self::Offered)
     }
 }
 

@@ -66,6 +66,23 @@ impl RandomGeometricGraph {
         c.g = g;
     }
 
+    /// Sets `g` of every vertex below `root` to its parent's `g` plus its edge's cost, from the
+    /// top down (after links above have changed); `stack` is scratch.
+    pub(crate) fn refresh_costs_below(&mut self, root: u32, stack: &mut Vec<u32>) {
+        stack.clear();
+        stack.push(root);
+        while let Some(v) = stack.pop() {
+            let g = self.vertex(v).g;
+            let mut child = self.vertex(v).first_child;
+            while child != NONE {
+                let c = self.vertex_mut(child);
+                c.g = g + c.parent_cost;
+                stack.push(child);
+                child = c.next_sibling;
+            }
+        }
+    }
+
     /// Cuts `root` and its forward subtree out of the forward tree: every vertex in it gets
     /// `g = ∞` and no tree links.
     pub(crate) fn detach_subtree(&mut self, root: u32, stack: &mut Vec<u32>) {

@@ -97,9 +97,10 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) goal_ids: Vec<u32>,
     pub(crate) best_cost: f64,
     pub(crate) best_goal: u32,
-    /// A solution offered from outside ([`Planner::offer_solution`]), the best one while
-    /// `best_goal` is `NONE`.
-    external: Option<Solution>,
+    /// A solution offered from outside ([`Planner::offer_solution`]) before the graph was
+    /// built, with its edges' checking progress: the best one until `setup` grafts it into
+    /// the forward tree ([`adopt_offer`](Self::adopt_offer)).
+    pub(crate) offered: Option<(Solution, Vec<validity::EdgeProgress>)>,
     pub(crate) lower_bound: f64,
     pub(crate) last_prune_cost: f64,
     /// The informed set is empty: no better solution exists.
@@ -194,7 +195,7 @@ where
             goal_ids: Vec::new(),
             best_cost: f64::INFINITY,
             best_goal: NONE,
-            external: None,
+            offered: None,
             lower_bound: 0.0,
             last_prune_cost: f64::INFINITY,
             exhausted: false,
@@ -254,8 +255,9 @@ where
         self.step
     }
 
-    /// The vertices of the best solution, start first (empty without one, or when the best
-    /// solution is one offered from outside, [`Planner::offer_solution`]).
+    /// The vertices of the best solution, start first (empty without one, or while the best
+    /// solution is one offered from outside before the first solve: [`Planner::offer_solution`]
+    /// grafts an offered path into the forward tree when the graph is built).
     pub fn solution_vertices(&self) -> Vec<VertexId> {
         let mut path = Vec::new();
         if self.best_goal == NONE {
@@ -307,6 +309,9 @@ where
         self.update_neighbourhood();
         self.forward.clear();
         self.ready = true;
+        if let Some((solution, progress)) = self.offered.take() {
+            self.adopt_offer(&solution.path, &progress);
+        }
         self.restart_searches(stop);
         Ok(())
     }
@@ -397,7 +402,7 @@ where
     fn extract_solution(&self) -> Result<Option<Solution>, PlannerError> {
         let vertices = self.solution_vertices();
         if vertices.is_empty() {
-            return Ok(self.external.clone());
+            return Ok(self.offered.as_ref().map(|(solution, _)| solution.clone()));
         }
         let mut path = States::with_capacity(self.space.dimension(), vertices.len());
         for (i, v) in vertices.iter().enumerate() {
@@ -478,7 +483,7 @@ where
         self.goal_ids.clear();
         self.best_cost = f64::INFINITY;
         self.best_goal = NONE;
-        self.external = None;
+        self.offered = None;
         self.last_prune_cost = f64::INFINITY;
         self.exhausted = false;
         self.restart_pending = false;
@@ -504,20 +509,30 @@ where
         let certification = self.parameters.certification.unwrap_or(1);
         let parts = (&self.space, &self.validity, &mut self.checker);
         let query = (self.start.as_slice(), self.goals.as_slice());
-        if !crate::planner::offered_path_is_valid(parts, certification, query, &solution.path) {
+        let mut progress = Vec::with_capacity(solution.path.len());
+        let path = &solution.path;
+        if !crate::planner::offered_path_is_valid(parts, certification, query, path, &mut progress)
+        {
             return false;
         }
-        let cost = crate::planner::path_cost(&self.space, &solution.path);
+        let cost = crate::planner::path_cost(&self.space, path);
         if cost >= self.best_cost {
             return false;
         }
         self.best_cost = cost;
-        self.best_goal = NONE;
-        self.external = Some(Solution {
-            path: solution.path.clone(),
-            cost,
-        });
         self.trace.push(self.elapsed.as_secs_f64(), cost);
+        if self.ready {
+            self.adopt_offer(path, &progress);
+        } else {
+            self.best_goal = NONE;
+            self.offered = Some((
+                Solution {
+                    path: path.clone(),
+                    cost,
+                },
+                progress,
+            ));
+        }
         true
     }
 

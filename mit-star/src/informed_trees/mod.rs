@@ -14,6 +14,8 @@
 //! - `reverse_search.rs` and `reverse_queue.rs`: the lazy reverse search from the goals
 //!   (sparse checks) and its edge queue; `reverse_repair/`: AIT*'s in-place repair of the
 //!   reverse tree, with its tests.
+//! - `offered_path.rs`: a path offered from outside (a warm start's, a simplified solution)
+//!   grafted into the forward tree as the best solution.
 //! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches;
 //!   `batch_tests.rs`: the sample count of its connection rules, and where ABIT*'s search of a
 //!   batch ends.
@@ -31,6 +33,7 @@ mod eit;
 mod forward_queue;
 mod forward_search;
 mod guidance;
+mod offered_path;
 mod reverse_queue;
 mod reverse_repair;
 mod reverse_search;

@@ -204,7 +204,9 @@ where
         let certification = self.certification();
         let parts = (&self.space, &self.validity, &mut self.checker);
         let query = (self.start.as_slice(), self.goals.as_slice());
-        if !crate::planner::offered_path_is_valid(parts, certification, query, &solution.path) {
+        let progress = &mut Vec::new();
+        let path = &solution.path;
+        if !crate::planner::offered_path_is_valid(parts, certification, query, path, progress) {
             return false;
         }
         let cost = crate::planner::path_cost(&self.space, &solution.path);
