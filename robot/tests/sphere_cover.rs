@@ -59,14 +59,40 @@ static COVERED: LazyLock<Vec<Covered>> = LazyLock::new(|| {
         TriangleMesh::cylinder(0.04, 0.3, 20).unwrap(),
     ));
     meshes.push(("open box".into(), open_box));
-    meshes
+    let mut covered: Vec<Covered> = meshes
         .into_iter()
         .map(|(name, mesh)| {
             let cover = SphereCover::new(&mesh, &options).unwrap();
             Covered { name, mesh, cover }
         })
-        .collect()
+        .collect();
+    // A fine tolerance too (the one the guide plans with), on the smallest UR5 mesh.
+    let wrist = read_stl(&ur5_folder().join("meshes/ur5/collision/wrist3.stl")).unwrap();
+    let fine = CoverOptions {
+        tolerance: FINE_TOLERANCE,
+        max_spheres: None,
+    };
+    covered.push(Covered {
+        name: "wrist3 at 5 mm".into(),
+        cover: SphereCover::new(&wrist, &fine).unwrap(),
+        mesh: wrist,
+    });
+    covered
 });
+
+/// The fine tolerance of the last entry of [`COVERED`].
+const FINE_TOLERANCE: f64 = 0.005;
+
+#[test]
+fn a_fine_cover_keeps_its_tolerance_with_more_spheres() {
+    let fine = COVERED.last().unwrap();
+    let coarse = COVERED.iter().find(|c| c.name == "wrist3").unwrap();
+    assert!(fine.cover.max_protrusion <= FINE_TOLERANCE + 1e-6);
+    assert!(fine.cover.measured_max <= fine.cover.max_protrusion);
+    assert!(fine.cover.spheres.len() > 4 * coarse.cover.spheres.len());
+    // Finer spheres hug the mesh: the mean measured protrusion shrinks with the tolerance.
+    assert!(fine.cover.measured_mean < coarse.cover.measured_mean / 2.0);
+}
 
 fn in_cover(cover: &SphereCover, p: DVec3) -> bool {
     cover
