@@ -333,7 +333,8 @@ mod tests {
             let centre = e.centre();
             let far = e.reach_from(centre);
             assert!(far <= (e.hi - e.lo).length() / 2.0 + 1e-12);
-            assert!(e.within(centre, far) && !e.within(centre, far * 0.999 - 1e-12));
+            assert!(e.within(centre, far * (1.0 + 1e-12)));
+            assert!(!e.within(centre, far * 0.999 - 1e-12));
         }
         // The boxes of the elements cover the cube's volume (a unit cube): their sum is at
         // least 1, less the sliver rounding takes.
