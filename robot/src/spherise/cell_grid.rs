@@ -1,13 +1,15 @@
 //! [`CellGrid`]: the solid cut into grid cells, each cell's part of the solid bounded by a
 //! box that a covering sphere must contain.
 //!
-//! Why a box per cell suffices: the part of the solid in a cell is contained in the convex
-//! hull of the cell's corners inside the solid and the pieces of the surface inside the cell
-//! (an extreme point of that part is either a corner of the cell or on the surface). The
-//! element of a cell is the bounding box of those corners and of the vertices of the surface
-//! triangles clipped to the cell, so a sphere that contains the element's box contains the
-//! cell's part of the solid. For an open mesh the solid is the surface, and only the clipped
-//! triangles count.
+//! Why a few points per cell suffice: the part of the solid in a cell is contained in the
+//! convex hull of the cell's corners inside the solid and the pieces of the surface inside the
+//! cell (an extreme point of that part is either a corner of the cell or on the surface). The
+//! element of a cell is the set of those corners and of the vertices of the surface triangles
+//! clipped to the cell; a ball is convex, so a sphere that contains the element's points
+//! contains their hull, and so the cell's part of the solid. For an open mesh the solid is the
+//! surface, and only the clipped triangles count. The points' bounding box is kept too: a
+//! sphere containing the box contains the points (a quick test), but the box reaches up to a
+//! cell's diagonal beyond the solid where the points do not.
 
 use std::collections::HashMap;
 
@@ -18,9 +20,11 @@ use super::solid::Solid;
 /// The most cells a grid may have; a finer grid is coarsened to this.
 pub(super) const MAX_CELLS: usize = 4_000_000;
 
-/// One cell's part of the solid, bounded by a box.
-#[derive(Debug, Clone, Copy)]
+/// One cell's part of the solid: points whose convex hull contains it, and their box.
+#[derive(Debug, Clone)]
 pub(super) struct Element {
+    /// The points (inside corners and clipped surface vertices), without repeats.
+    pub(super) points: Vec<DVec3>,
     /// The box's lower corner.
     pub(super) lo: DVec3,
     /// The box's upper corner.
@@ -32,10 +36,33 @@ pub(super) struct Element {
 }
 
 impl Element {
-    /// The distance from `c` to the farthest corner of the element's box: a sphere about `c`
-    /// contains the element iff its radius is at least this.
+    /// The distance from `c` to the element's farthest point: a sphere about `c` contains
+    /// the element's hull iff its radius is at least this.
     pub(super) fn reach_from(&self, c: DVec3) -> f64 {
-        (c - self.lo).abs().max((c - self.hi).abs()).length()
+        self.points
+            .iter()
+            .map(|p| p.distance_squared(c))
+            .fold(0.0, f64::max)
+            .sqrt()
+    }
+
+    /// Whether the sphere of radius `r` about `c` contains every point of the element (the
+    /// box first: containing its farthest corner settles it).
+    pub(super) fn within(&self, c: DVec3, r: f64) -> bool {
+        let r2 = r * r;
+        if (c - self.lo)
+            .abs()
+            .max((c - self.hi).abs())
+            .length_squared()
+            <= r2
+        {
+            return true;
+        }
+        // The box's nearest point farther than r: so is every point.
+        if (c.clamp(self.lo, self.hi) - c).length_squared() > r2 {
+            return false;
+        }
+        self.points.iter().all(|p| p.distance_squared(c) <= r2)
     }
 
     /// The box's centre.
@@ -151,19 +178,15 @@ impl CellGrid {
 
     fn make_elements(&mut self, solid: &Solid) {
         let mesh = solid.mesh();
-        let mut boxes: HashMap<usize, (DVec3, DVec3)> = HashMap::new();
-        let mut extend = |cell: usize, p: DVec3| {
-            let entry = boxes.entry(cell).or_insert((p, p));
-            entry.0 = entry.0.min(p);
-            entry.1 = entry.1.max(p);
-        };
+        let mut cells: HashMap<usize, Vec<DVec3>> = HashMap::new();
         let mut polygon = Vec::with_capacity(12);
         let mut scratch = Vec::with_capacity(12);
         for t in 0..mesh.triangles().len() {
             let corners = mesh.corners(t);
             for &v in &corners {
                 let [ri, rj, rk] = self.cell_range(v, v);
-                extend(self.cell_index([*ri.start(), *rj.start(), *rk.start()]), v);
+                let cell = self.cell_index([*ri.start(), *rj.start(), *rk.start()]);
+                cells.entry(cell).or_default().push(v);
             }
             let lo = corners[0].min(corners[1]).min(corners[2]);
             let hi = corners[0].max(corners[1]).max(corners[2]);
@@ -176,8 +199,9 @@ impl CellGrid {
                         polygon.clear();
                         polygon.extend_from_slice(&corners);
                         clip_to_box(&mut polygon, &mut scratch, cell_lo, cell_hi);
-                        for &p in &polygon {
-                            extend(self.cell_index([i, j, k]), p);
+                        if !polygon.is_empty() {
+                            let points = cells.entry(self.cell_index([i, j, k])).or_default();
+                            points.extend_from_slice(&polygon);
                         }
                     }
                 }
@@ -189,26 +213,36 @@ impl CellGrid {
             for j in 0..self.n[1] {
                 for k in 0..self.n[2] {
                     let cell = [i, j, k];
-                    let mut bounds = boxes.get(&self.cell_index(cell)).copied();
-                    let surface = bounds.is_some();
+                    let index = self.cell_index(cell);
+                    let mut points = cells.remove(&index).unwrap_or_default();
+                    let surface = !points.is_empty();
                     for corner in 0..8 {
                         let c = [i + (corner & 1), j + ((corner >> 1) & 1), k + (corner >> 2)];
                         if self.inside[self.corner_index(c)] {
-                            let p = self.corner(c);
-                            bounds = Some(bounds.map_or((p, p), |(lo, hi)| (lo.min(p), hi.max(p))));
+                            points.push(self.corner(c));
                         }
                     }
-                    if let Some((lo, hi)) = bounds {
-                        let index = self.cell_index(cell);
-                        self.element_of[index] =
-                            u32::try_from(self.elements.len()).unwrap_or(u32::MAX);
-                        self.elements.push(Element {
-                            lo,
-                            hi,
-                            cell,
-                            surface,
-                        });
+                    if points.is_empty() {
+                        continue;
                     }
+                    points.sort_by(|a, b| {
+                        a.x.total_cmp(&b.x)
+                            .then(a.y.total_cmp(&b.y))
+                            .then(a.z.total_cmp(&b.z))
+                    });
+                    points.dedup();
+                    points.shrink_to_fit();
+                    let (lo, hi) = points.iter().fold((points[0], points[0]), |(lo, hi), &p| {
+                        (lo.min(p), hi.max(p))
+                    });
+                    self.element_of[index] = u32::try_from(self.elements.len()).unwrap_or(u32::MAX);
+                    self.elements.push(Element {
+                        points,
+                        lo,
+                        hi,
+                        cell,
+                        surface,
+                    });
                 }
             }
         }
@@ -294,6 +328,13 @@ mod tests {
         for e in &grid.elements {
             assert!(e.lo.cmpge(DVec3::splat(-0.5 - 1e-12)).all(), "{e:?}");
             assert!(e.hi.cmple(DVec3::splat(0.5 + 1e-12)).all(), "{e:?}");
+            // The points span the box, and a sphere holding the box holds them.
+            assert!(!e.points.is_empty());
+            let centre = e.centre();
+            let far = e.reach_from(centre);
+            assert!(far <= (e.hi - e.lo).length() / 2.0 + 1e-12);
+            assert!(e.within(centre, far * (1.0 + 1e-12)));
+            assert!(!e.within(centre, far * 0.999 - 1e-12));
         }
         // The boxes of the elements cover the cube's volume (a unit cube): their sum is at
         // least 1, less the sliver rounding takes.

@@ -1,13 +1,14 @@
 //! [`SphereCover`]: few spheres whose union contains a mesh's solid, each protruding beyond
 //! it by at most the tolerance.
 //!
-//! The solid is cut into cells ([`CellGrid`]); a sphere must contain each cell's element box.
+//! The solid is cut into cells ([`CellGrid`]); a sphere must contain each cell's element: a
+//! few points of the solid whose convex hull holds the cell's part of it.
 //! Candidate spheres protrude by at most the tolerance `t` by construction: a centre `c`
 //! inside the solid at distance `D` from its surface has the inner ball `B(c, D)` in the
 //! solid, so `B(c, D + t)` reaches at most `t` beyond it; a centre outside at distance `d`
 //! gets radius `t − d`. Greedy set cover (lazy, by the number of elements still uncovered)
 //! picks candidates until every element is covered; each picked sphere then shrinks to the
-//! farthest corner of the elements it was picked for, and spheres whose elements others
+//! farthest point of the elements it was picked for, and spheres whose elements others
 //! cover are dropped. Cells of edge `t/√3` make every element coverable by a candidate.
 
 use std::cmp::Reverse;
@@ -210,7 +211,7 @@ fn gain(grid: &CellGrid, c: &Candidate, covered: &[bool], mut visit: impl FnMut(
                 let e = grid.element_of[grid.cell_index([i, j, k])];
                 if e != u32::MAX && !covered[e as usize] {
                     let element: &Element = &grid.elements[e as usize];
-                    if element.reach_from(c.centre) <= c.reach {
+                    if element.within(c.centre, c.reach) {
                         n += 1;
                         visit(e as usize);
                     }
@@ -266,7 +267,7 @@ fn cover(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<CoverSphere> {
 
 /// Drops spheres whose elements other spheres can take within their reach (fewest elements
 /// first), handing each element to the sphere it enlarges least; then each sphere shrinks to
-/// its elements' farthest corner.
+/// its elements' farthest point.
 fn shrink_and_prune(
     solid: &Solid,
     grid: &CellGrid,
@@ -289,10 +290,8 @@ fn shrink_and_prune(
         for &e in &owned[i] {
             let best = (0..picked.len())
                 .filter(|&j| j != i && kept[j])
-                .filter_map(|j| {
-                    let r = reach(&picked[j].0, e);
-                    (r <= picked[j].0.reach).then_some((j, (r - radius[j]).max(0.0)))
-                })
+                .filter(|&j| grid.elements[e].within(picked[j].0.centre, picked[j].0.reach))
+                .map(|j| (j, (reach(&picked[j].0, e) - radius[j]).max(0.0)))
                 .min_by(|a, b| a.1.total_cmp(&b.1));
             match best {
                 Some((j, _)) => moves.push((e, j)),
