@@ -10,7 +10,9 @@
 //!
 //! Arguments: the robot (`ur5`, or a folder with a spherised URDF and an SRDF, as `--robot`
 //! takes), the folder holding `<scene>_ur5/`, the problems per scene (the first `N`), the
-//! seconds per run, and optionally the scenes (comma separated; default all seven). One run per planner and problem, seed 0, default parameters, one thread —
+//! seconds per run, and optionally the scenes (comma separated; default all seven) and
+//! `warm_start=true` (MIT* started from RRT-Connect's first path). One run per planner and
+//! problem, seed 0, default parameters, one thread —
 //! what `mit-star bench --planners mit-star,rrt-connect --runs 1 --time T` runs, without the
 //! harness's independent re-check of each returned path (`MotionAudit`, in `f64` with parry,
 //! whose cost grows with the product of the sphere counts of the checked link pairs: about
@@ -43,16 +45,19 @@ fn main() {
         .get(2)
         .map_or(20, |a| a.parse().expect("a problem count"));
     let seconds: f64 = args.get(3).map_or(1.0, |a| a.parse().expect("seconds"));
+    let warm_start = args.iter().skip(4).any(|a| a == "warm_start=true");
     let scenes: Vec<&str> = args
         .get(4)
+        .filter(|a| !a.contains('='))
         .map_or(SCENES.to_vec(), |a| a.split(',').collect());
     let model = RobotSource::parse(robot)
         .and_then(|s| s.load(false))
         .expect("a robot");
     let planners = [Configuration::MitStar, Configuration::RrtConnect];
     println!(
-        "robot {robot}: {} spheres; {count} problems per scene, {seconds} s per run",
-        model.spheres().len()
+        "robot {robot}: {} spheres; {count} problems per scene, {seconds} s per run{}",
+        model.spheres().len(),
+        if warm_start { ", MIT* warm-started" } else { "" }
     );
     println!("| scene | problems | skipped | MIT* solved | RRT-Connect solved |");
     println!("|---|---|---|---|---|");
@@ -72,6 +77,7 @@ fn main() {
             for (p, configuration) in planners.iter().enumerate() {
                 let parameters = Parameters {
                     seed: 0,
+                    warm_start,
                     ..Parameters::default()
                 };
                 let mut planner =
