@@ -57,7 +57,11 @@ fn main() {
     println!(
         "robot {robot}: {} spheres; {count} problems per scene, {seconds} s per run{}",
         model.spheres().len(),
-        if warm_start { ", MIT* warm-started" } else { "" }
+        if warm_start {
+            ", MIT* warm-started"
+        } else {
+            ""
+        }
     );
     println!("| scene | problems | skipped | MIT* solved | RRT-Connect solved |");
     println!("|---|---|---|---|---|");
