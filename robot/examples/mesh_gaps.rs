@@ -21,8 +21,8 @@ use std::path::Path;
 use glam::{DAffine3, DQuat};
 use parry3d_f64::math::Pose;
 use parry3d_f64::query::distance;
-use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape, TriMesh};
-use robot::{MbmProblem, RobotModel, Shape};
+use parry3d_f64::shape::{SharedShape, TriMesh};
+use robot::{MbmProblem, ParryChecker, RobotModel};
 
 const SCENES: [&str; 7] = [
     "bookshelf_small",
@@ -106,33 +106,11 @@ fn main() {
             let problem = MbmProblem::load(&dir, index).expect("a problem");
             let obstacles: Vec<(String, Pose, SharedShape)> = problem
                 .scene
-                .obstacles()
+                .ids()
                 .iter()
-                .zip(problem.scene.ids())
-                .map(|(o, id)| {
-                    let p = o.pose();
-                    let rotation = DQuat::from_mat3(&p.matrix3);
-                    let (shape, local) = match o.shape() {
-                        Shape::Cuboid { half_extents } => {
-                            (SharedShape::new(Cuboid::new(half_extents)), DQuat::IDENTITY)
-                        }
-                        Shape::Cylinder {
-                            half_height,
-                            radius,
-                        } => (
-                            SharedShape::new(Cylinder::new(half_height, radius)),
-                            DQuat::from_rotation_x(std::f64::consts::FRAC_PI_2),
-                        ),
-                        Shape::Sphere { radius } => {
-                            (SharedShape::new(Ball::new(radius)), DQuat::IDENTITY)
-                        }
-                    };
-                    (
-                        id.clone(),
-                        Pose::from_parts(p.translation, rotation * local),
-                        shape,
-                    )
-                })
+                .cloned()
+                .zip(ParryChecker::obstacle_shapes(&problem.scene))
+                .map(|(id, (pose, shape))| (id, pose, shape))
                 .collect();
             for (which, q) in [
                 ("start", problem.start_for(&joints).expect("start")),

@@ -54,10 +54,10 @@ pub struct ParryChecker {
 }
 
 impl ParryChecker {
-    /// The reference checker of `robot` (its self-collision pairs as they stand) in `scene`.
-    pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
-        let fk = Kinematics::new(robot);
-        let obstacles = scene
+    /// The obstacles of `scene` as parry shapes with their poses, in the scene's order
+    /// (MoveIt's cylinders run along z, parry's along y: they are turned onto z).
+    pub fn obstacle_shapes(scene: &Scene) -> Vec<(Pose, SharedShape)> {
+        scene
             .obstacles()
             .iter()
             .map(|o| {
@@ -67,7 +67,6 @@ impl ParryChecker {
                     Shape::Cuboid { half_extents } => {
                         (SharedShape::new(Cuboid::new(half_extents)), DQuat::IDENTITY)
                     }
-                    // Parry's cylinders run along y, MoveIt's along z: turn y onto z.
                     Shape::Cylinder {
                         half_height,
                         radius,
@@ -81,7 +80,13 @@ impl ParryChecker {
                 };
                 (Pose::from_parts(pose.translation, rotation * local), shape)
             })
-            .collect();
+            .collect()
+    }
+
+    /// The reference checker of `robot` (its self-collision pairs as they stand) in `scene`.
+    pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
+        let fk = Kinematics::new(robot);
+        let obstacles = Self::obstacle_shapes(scene);
         let space = robot.joint_space();
         let link_spheres = (0..robot.links().len())
             .map(|l| robot.link_sphere_range(l))
