@@ -26,15 +26,9 @@ type Instance = (
 /// last far one, through every waypoint whose segment from the one before is valid. `None` if
 /// the ends are not valid or do not join.
 fn world_and_path(
-    (dimension, height, boxes, near, over, far): (
-        usize,
-        f64,
-        &[(Vec<f64>, Vec<f64>)],
-        &[Vec<f64>],
-        f64,
-        &[Vec<f64>],
-    ),
+    (dimension, height, boxes, near, over, far, _, _): &Instance,
 ) -> Option<(Problem, Vec<Vec<f64>>)> {
+    let (dimension, height, over) = (*dimension, *height, *over);
     let mut world = World::new(vec![0.0; dimension], vec![1.0; dimension]);
     let mut center = vec![0.5; dimension];
     let mut widths = vec![1.0; dimension];
@@ -109,14 +103,11 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(96))]
 
     #[test]
-    fn smoothed_paths_stay_valid_keep_their_ends_and_get_no_longer(
-        (dimension, height, boxes, near, over, far, seed, moves) in instance()
-    ) {
-        let Some((problem, path)) =
-            world_and_path((dimension, height, &boxes, &near, over, &far))
-        else {
+    fn smoothed_paths_stay_valid_keep_their_ends_and_get_no_longer(instance in instance()) {
+        let Some((problem, path)) = world_and_path(&instance) else {
             return Ok(());
         };
+        let (seed, moves) = (instance.6, instance.7);
         let moves = [SmoothingMoves::Relax, SmoothingMoves::Perturb, SmoothingMoves::RelaxThenPerturb]
             [usize::from(moves)];
         // Smoothing right after vertex reduction, no shortcuts.

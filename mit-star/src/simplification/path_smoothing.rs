@@ -179,7 +179,8 @@ impl PathSmoothing {
             return None;
         }
         let width = self.scales[i] * shorter_edge / (self.step.len() as f64).sqrt();
-        if !(width > 0.0) {
+        // Not above zero, or not a number: no step.
+        if width.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         for x in &mut self.step {
@@ -218,7 +219,8 @@ impl PathSmoothing {
         let (before, after) = (&states[i - 1], &states[i + 1]);
         let moved =
             space.distance(before, &self.candidate) + space.distance(&self.candidate, after);
-        if !(moved < now * (1.0 - MINIMUM_GAIN)) {
+        // Not shorter, or not a number: nothing to try.
+        if moved.partial_cmp(&(now * (1.0 - MINIMUM_GAIN))) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         for (a, b) in [(before, &self.candidate), (&self.candidate, after)] {
