@@ -33,7 +33,7 @@ const SWEEPS_PER_ROUND: usize = 5;
 /// # Complexity
 /// Vertex reduction checks `O(n²)` edges for `n` states in the worst case (usually `O(n)`);
 /// each shortcut attempt checks one edge, each smoothing move of a state at most two (a
-/// sweep at most six per interior state).
+/// sweep at most six per interior state with the default [`SmoothingMoves`]).
 ///
 /// ```
 /// use mit_star::{FirstSolution, PathSimplifier, Planner, RrtConnect, TerminationExt, TimeLimit};
@@ -207,8 +207,8 @@ impl PathSimplifier {
     /// As [`simplify`](Self::simplify).
     ///
     /// # Complexity
-    /// At most six edge checks per interior state and sweep, five sweeps and the shortcuts'
-    /// attempts per round.
+    /// At most six edge checks per interior state and sweep (with the default
+    /// [`SmoothingMoves`]), five sweeps and the shortcuts' attempts per round.
     ///
     /// ```
     /// use mit_star::PathSimplifier;
