@@ -195,7 +195,13 @@ pub fn build_planner<P: PlanningProblem>(
         planner,
         (problem.space().clone(), problem.validity().clone()),
         (problem.check_step()?, certification),
-        crate::PathSimplifier::new().seed(parameters.seed),
+        crate::PathSimplifier::new()
+            .seed(parameters.seed)
+            .smoothing_rounds(if parameters.simplify_smoothing {
+                crate::PathSimplifier::DEFAULT_SMOOTHING_ROUNDS
+            } else {
+                0
+            }),
     )))
 }
 

@@ -105,7 +105,7 @@ pub use parameters::{
 pub use path_check::{PathVerdict, check_path, snap_ends};
 pub use planner::{Outcome, Planner, Solution};
 pub use rrt::{Aorrtc, InformedRrtStar, RrtConnect, default_range};
-pub use simplification::{PathSimplifier, Simplified, Simplifying};
+pub use simplification::{PathSimplifier, Simplified, Simplifying, SmoothingMoves};
 pub use snapshot::Snapshot;
 pub use termination::{
     And, CostThreshold, FirstSolution, IterationLimit, Or, Progress, Termination, TerminationExt,

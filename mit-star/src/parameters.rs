@@ -127,6 +127,12 @@ pub struct Parameters {
     /// [`Simplifying`](crate::Simplifying)), or reported as the planner found it (`false`, the
     /// default: the paper's planners and their ablations as published). Not in the paper.
     pub simplify_solutions: bool,
+    /// With [`simplify_solutions`](Self::simplify_solutions), each simplification ends with
+    /// smoothing sweeps ([`PathSimplifier::smoothing_rounds`](crate::PathSimplifier::smoothing_rounds):
+    /// interior states moved off the path where it gets shorter, every new edge checked and
+    /// certified) (`true`, the default), or with the shortcuts (`false`, the ablation). Not in
+    /// the paper.
+    pub simplify_smoothing: bool,
     /// An asymptotically optimal planner starts from RRT-Connect's first solution (`true`;
     /// [`build_planner`](crate::build_planner) wraps it in [`WarmStarted`](crate::WarmStarted))
     /// or finds its own (`false`, the default: the paper's planners). RRT-Connect and AORRTC
@@ -193,6 +199,7 @@ impl Default for Parameters {
             rrt_balance: true,
             rrt_halton: false,
             simplify_solutions: false,
+            simplify_smoothing: true,
             warm_start: false,
             aorrtc_simplify: true,
             aorrtc_resamples: 1000,
@@ -426,6 +433,7 @@ impl Parameters {
             ("rrt_balance", self.rrt_balance.to_string()),
             ("rrt_halton", self.rrt_halton.to_string()),
             ("simplify_solutions", self.simplify_solutions.to_string()),
+            ("simplify_smoothing", self.simplify_smoothing.to_string()),
             ("warm_start", self.warm_start.to_string()),
             ("aorrtc_simplify", self.aorrtc_simplify.to_string()),
             ("aorrtc_resamples", self.aorrtc_resamples.to_string()),

@@ -160,3 +160,47 @@ fn a_simplifying_planner_reports_shorter_valid_paths_at_every_solution() {
         assert!(wrapped.trace().is_empty());
     }
 }
+
+#[test]
+fn a_simplifying_planner_smooths_unless_told_not_to() {
+    let problem = problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let moves = |smoothing: bool| {
+        let parameters = Parameters {
+            seed: 3,
+            simplify_solutions: true,
+            simplify_smoothing: smoothing,
+            ..Parameters::default()
+        };
+        let mut planner =
+            mit_star::build_planner(mit_star::Configuration::RrtConnect, &problem, &parameters)
+                .unwrap();
+        let outcome = planner
+            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+            .unwrap();
+        for w in outcome
+            .solution()
+            .unwrap()
+            .path
+            .iter()
+            .collect::<Vec<_>>()
+            .windows(2)
+        {
+            assert!(problem.world().segment_verdict(w[0], w[1]).is_valid());
+        }
+        let settings = planner.settings();
+        let moves = settings
+            .iter()
+            .find(|(k, _)| k == "smoothing_moves")
+            .map(|(_, v)| v.parse::<u64>().unwrap());
+        (moves, outcome.cost())
+    };
+    let (on, off) = (moves(true), moves(false));
+    assert!(on.0.unwrap() > 0, "{on:?}");
+    assert_eq!(off.0, Some(0));
+    // The same first path and shortcuts; smoothing only ever shortens.
+    assert!(on.1 <= off.1, "{on:?} {off:?}");
+}

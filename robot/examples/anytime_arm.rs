@@ -12,7 +12,7 @@
 //! (joint-space path length) of the best path at 10 ms, 100 ms and 1 s (a run without a path by
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
-//! (`simplify_solutions=true`, `warm_start=true`, `aorrtc_simplify=false`, `batch_size=200`, `rewire_factor=1.5`,
+//! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`, `aorrtc_simplify=false`, `batch_size=200`, `rewire_factor=1.5`,
 //! `near_terminals=0.3`, …; `scenes=cage,box` for some scenes only); `csv=FILE` also writes one line per
 //! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
 //! `benches/peers/vamp/anytime_table.py`.
@@ -62,6 +62,7 @@ fn main() {
         let number = || value.parse::<f64>().expect("a number");
         match key {
             "simplify_solutions" => base.simplify_solutions = on(),
+            "simplify_smoothing" => base.simplify_smoothing = on(),
             "warm_start" => base.warm_start = on(),
             "aorrtc_simplify" => base.aorrtc_simplify = on(),
             "rrt_dynamic_domain" => base.rrt_dynamic_domain = on(),

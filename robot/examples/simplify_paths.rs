@@ -8,7 +8,8 @@
 //! Plans the named configuration on the first `N` problems of each of the five
 //! MotionBenchMaker scenes (RRT-Connect with range 1 to its first solution, an asymptotically
 //! optimal planner for 1 s), simplifies each path for at most `SECONDS` (`whole` after it:
-//! without per-joint shortcuts), and audits every
+//! without per-joint shortcuts; `smooth=N`: `N` smoothing sweeps instead of the default;
+//! `moves=relax|perturb|both`: the smoothing moves), and audits every
 //! simplified edge continuously in `f64` with parry. Prints per scene the median path length
 //! before and after, the median straight-line distance (a lower bound), the median time the
 //! simplification took and how many simplified paths failed the audit.
@@ -16,8 +17,8 @@
 use std::time::{Duration, Instant};
 
 use mit_star::{
-    Configuration, FirstSolution, Parameters, PathSimplifier, TerminationExt, TimeLimit,
-    build_planner,
+    Configuration, FirstSolution, Parameters, PathSimplifier, SmoothingMoves, TerminationExt,
+    TimeLimit, build_planner,
 };
 use problems::PlanningProblem;
 use robot::{AuditVerdict, MotionAudit};
@@ -35,15 +36,34 @@ fn main() {
         .map_or(20, |a| a.parse().expect("a problem count"));
     let name = args.next().unwrap_or_else(|| "rrt-connect".into());
     let seconds: f64 = args.next().map_or(0.1, |a| a.parse().expect("seconds"));
-    // `whole` as a fifth argument: whole-configuration shortcuts only.
-    let partial = args.next().is_none_or(|a| a != "whole");
+    let mut partial = true;
+    let mut simplifier = PathSimplifier::new();
+    for option in args {
+        match option.split_once('=') {
+            // Whole-configuration shortcuts only.
+            None if option == "whole" => partial = false,
+            Some(("smooth", n)) => {
+                simplifier = simplifier.smoothing_rounds(n.parse().expect("a sweep count"));
+            }
+            Some(("moves", moves)) => {
+                simplifier = simplifier.smoothing_moves(match moves {
+                    "relax" => SmoothingMoves::Relax,
+                    "perturb" => SmoothingMoves::Perturb,
+                    "both" => SmoothingMoves::RelaxThenPerturb,
+                    other => panic!("unknown smoothing moves {other}"),
+                });
+            }
+            _ => panic!("unknown option {option}: whole, smooth=N or moves=relax|perturb|both"),
+        }
+    }
     let configuration: Configuration = name.parse().expect("a planner configuration");
     println!(
-        "| scene | problems | median length before | median after | median straight line | median simplification (ms) | failed audits |"
+        "| scene | problems | median length before | median after | mean after | median straight line | median simplification (ms) | median smoothing moves | failed audits |"
     );
-    println!("|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|");
     for scene in SCENES {
         let (mut before, mut after, mut line, mut took) = (vec![], vec![], vec![], vec![]);
+        let mut moves = vec![];
         let mut failed = 0;
         for (index, problem) in problems(&folder, scene, count) {
             let parameters = Parameters {
@@ -62,7 +82,8 @@ fn main() {
             };
             let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
             let started = Instant::now();
-            let simplified = PathSimplifier::new()
+            let simplified = simplifier
+                .clone()
                 .seed(index as u64)
                 .partial_shortcuts(partial)
                 .simplify(
@@ -73,6 +94,7 @@ fn main() {
                 .expect("a path of the problem");
             took.push(started.elapsed().as_secs_f64() * 1e3);
             before.push(simplified.original_cost);
+            moves.push(simplified.smoothing_moves as f64);
             after.push(simplified.cost);
             line.push(problem.space().distance(&path[0], &path[path.len() - 1]));
             let audit = MotionAudit::new(problem.robot(), problem.scene());
@@ -86,13 +108,15 @@ fn main() {
             }
         }
         println!(
-            "| {} | {} | {:.2} | {:.2} | {:.2} | {:.1} | {failed} |",
+            "| {} | {} | {:.2} | {:.2} | {:.3} | {:.2} | {:.1} | {:.0} | {failed} |",
             scene.trim_end_matches("_panda"),
             before.len(),
             median(&mut before),
             median(&mut after),
+            after.iter().sum::<f64>() / after.len() as f64,
             median(&mut line),
-            median(&mut took)
+            median(&mut took),
+            median(&mut moves)
         );
     }
 }

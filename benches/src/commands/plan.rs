@@ -49,8 +49,9 @@ pub struct PlanArgs {
     /// Print the result as JSON instead of text.
     #[arg(long)]
     pub json: bool,
-    /// Simplify the path found (vertex reduction and random shortcuts, every new edge checked
-    /// and certified), validate the result independently, and report and draw it.
+    /// Simplify the path found (vertex reduction, random and per-coordinate shortcuts and,
+    /// unless `--set simplify_smoothing=false`, smoothing; every new edge checked and
+    /// certified), validate the result independently, and report and draw it.
     #[arg(long)]
     pub simplify: bool,
     /// Time for `--simplify`, in seconds (after the planning budget).
@@ -128,7 +129,8 @@ impl PlanArgs {
         else {
             return Ok(CommandOutcome::Interrupted);
         };
-        let simplified = self.simplified(&instance, &record)?;
+        let smoothing = spec.parameters_for_seed(self.seed).simplify_smoothing;
+        let simplified = self.simplified(&instance, &record, smoothing)?;
         let drawn = simplified.as_ref().map_or(&record.path, |(s, _)| &s.path);
         let mut files = Vec::new();
         let stem = format!(
@@ -183,6 +185,7 @@ impl PlanArgs {
                             "vertices_removed": s.vertices_removed,
                             "shortcuts": s.shortcuts,
                             "partial_shortcuts": s.partial_shortcuts,
+                            "smoothing_moves": s.smoothing_moves,
                             "edges_checked": s.edges_checked,
                             "valid": validation.valid,
                             "validation_failure": validation.failure,
@@ -215,8 +218,8 @@ impl PlanArgs {
 }
 
 impl PlanArgs {
-    /// The run's path simplified (`--simplify`) and its independent validation; `None` without
-    /// the flag or a path.
+    /// The run's path simplified (`--simplify`; smoothed too if `smoothing`) and its
+    /// independent validation; `None` without the flag or a path.
     ///
     /// # Errors
     /// A problem that refuses its check step (refused before planning in practice).
@@ -224,6 +227,7 @@ impl PlanArgs {
         &self,
         instance: &ProblemInstance,
         record: &RunRecord,
+        smoothing: bool,
     ) -> Result<Option<(mit_star::Simplified, crate::path_validation::PathValidation)>, HarnessError>
     {
         if !self.simplify || record.path.len() < 2 {
@@ -231,7 +235,7 @@ impl PlanArgs {
         }
         let simplified = instance
             .problem
-            .simplify(&record.path, self.simplify_time, self.seed)
+            .simplify(&record.path, self.simplify_time, self.seed, smoothing)
             .map_err(|source| HarnessError::Build {
                 planner: "path simplifier".to_owned(),
                 source,
@@ -244,12 +248,13 @@ impl PlanArgs {
 /// The report of a simplified path.
 fn print_simplified(s: &mit_star::Simplified, validation: &crate::path_validation::PathValidation) {
     say!(
-        "  simplified: cost {} -> {} ({} states removed, {} shortcuts, {} per-coordinate, {} edges checked{})",
+        "  simplified: cost {} -> {} ({} states removed, {} shortcuts, {} per-coordinate, {} smoothing moves, {} edges checked{})",
         number(s.original_cost),
         number(s.cost),
         s.vertices_removed,
         s.shortcuts,
         s.partial_shortcuts,
+        s.smoothing_moves,
         s.edges_checked,
         if s.stopped {
             ", stopped by --simplify-time"

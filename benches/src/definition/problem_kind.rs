@@ -165,7 +165,8 @@ impl InstanceProblem {
     }
 
     /// `path` made shorter by a [`PathSimplifier`](mit_star::PathSimplifier) with `seed` for
-    /// at most `seconds` (every new edge checked and certified as the problem asks).
+    /// at most `seconds` (every new edge checked and certified as the problem asks), with its
+    /// smoothing rounds if `smoothing` (the `simplify_smoothing` parameter).
     ///
     /// # Errors
     /// As [`PathSimplifier::simplify`](mit_star::PathSimplifier::simplify).
@@ -174,9 +175,13 @@ impl InstanceProblem {
         path: &[Vec<f64>],
         seconds: f64,
         seed: u64,
+        smoothing: bool,
     ) -> Result<mit_star::Simplified, BuildError> {
         let stop = spaces::Deadline::after(std::time::Duration::from_secs_f64(seconds));
-        let simplifier = mit_star::PathSimplifier::new().seed(seed);
+        let mut simplifier = mit_star::PathSimplifier::new().seed(seed);
+        if !smoothing {
+            simplifier = simplifier.smoothing_rounds(0);
+        }
         match self {
             Self::Boxes(p) => simplifier.simplify(p, path, &stop),
             Self::Arm(p) => simplifier.simplify(&**p, path, &stop),

@@ -7,8 +7,8 @@ use validity::StateValidity;
 
 use crate::termination::Wrapped;
 use crate::{
-    Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot, Solution,
-    Termination, TerminationExt, Trace,
+    Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Simplified, Snapshot,
+    Solution, Termination, TerminationExt, Trace,
 };
 
 /// Wraps a planner so that each solution it finds is reported at once and then shortened by
@@ -17,7 +17,10 @@ use crate::{
 /// as without the wrapper. Removing the wrapper is the ablation (`simplify_solutions` in [`Parameters`]).
 ///
 /// The inner planner runs until the caller's termination fires or it improves its own
-/// solution; the simplification then runs under the same termination. Every edge the
+/// solution; the simplification then runs under the same termination: the shortcuts first,
+/// whose path is reported and offered at once, then, if the simplifier smooths
+/// ([`PathSimplifier::smoothing_rounds`]), the smoothing rounds on that path, whose result is
+/// reported and offered in turn. Every edge the
 /// simplifier adds is checked and certified as the planner's are. The shorter path is then
 /// offered to the inner planner ([`Planner::offer_solution`]): the asymptotically optimal
 /// planners of the crate take it as their best solution, so their cost bound, informed set and
@@ -42,6 +45,8 @@ pub struct Simplifying<P, S, V> {
     runs: u64,
     /// Simplified paths the inner planner took as its best solution.
     taken: u64,
+    /// States moved by smoothing.
+    smoothing_moves: u64,
 }
 
 impl<P, S, V> Simplifying<P, S, V>
@@ -69,6 +74,7 @@ where
             elapsed: Duration::ZERO,
             runs: 0,
             taken: 0,
+            smoothing_moves: 0,
         }
     }
 
@@ -78,7 +84,9 @@ where
     }
 
     /// Takes `solution` (the inner planner's newest) if it beats the best so far, at once,
-    /// then simplifies it and takes the result if shorter. The simplification stops when the
+    /// then simplifies it and takes the result if shorter: first the shortcuts, then, if the
+    /// simplifier smooths, the smoothing rounds on the shortcut path, so the shortcut path is
+    /// reported (and offered) while it is smoothed. The simplification stops when the
     /// caller's termination would have fired before this solution (so a first-solution
     /// condition still lets its first path be simplified).
     fn adopt(&mut self, solution: &Solution, termination: &dyn Termination, started: Instant) {
@@ -87,23 +95,54 @@ where
         let stop = || termination.should_terminate(&Progress::new(started.elapsed(), 0, before));
         let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
         self.runs += 1;
-        let simplified =
-            self.simplifier
-                .simplify_in(&self.space, &self.validity, self.checks, &path, &stop);
-        if let Ok(simplified) = simplified {
-            let mut states = States::new(self.space.dimension());
-            for state in &simplified.path {
-                states.push(state);
+        let shortcuts = self.simplifier.clone().smoothing_rounds(0);
+        let checks = self.checks;
+        let simplified = shortcuts.simplify_in(&self.space, &self.validity, checks, &path, &stop);
+        let Ok(simplified) = simplified else {
+            return;
+        };
+        self.take(&simplified, solution.cost, started);
+        // The smoothing rounds one at a time, each result reported and offered.
+        let mut current = simplified;
+        for round in 0..self.simplifier.rounds() {
+            if current.stopped {
+                return;
             }
-            let shorter = Solution {
-                path: states,
-                cost: simplified.cost,
+            let one = self
+                .simplifier
+                .clone()
+                .seed(self.simplifier.seed_value().wrapping_add(round as u64 + 1))
+                .smoothing_rounds(1);
+            let Ok(smoothed) =
+                one.smooth_in(&self.space, &self.validity, checks, &current.path, &stop)
+            else {
+                return;
             };
-            if shorter.cost < solution.cost && self.inner.offer_solution(&shorter) {
-                self.taken += 1;
+            self.smoothing_moves += smoothed.smoothing_moves;
+            self.take(&smoothed, current.cost, started);
+            let gain = current.cost - smoothed.cost;
+            let done = smoothed.smoothing_moves == 0 || gain < 1e-4 * current.cost;
+            current = smoothed;
+            if done {
+                return;
             }
-            self.keep(shorter, started);
         }
+    }
+
+    /// Offers `simplified` to the inner planner if it is shorter than `cost`, and keeps it.
+    fn take(&mut self, simplified: &Simplified, cost: f64, started: Instant) {
+        let mut states = States::new(self.space.dimension());
+        for state in &simplified.path {
+            states.push(state);
+        }
+        let shorter = Solution {
+            path: states,
+            cost: simplified.cost,
+        };
+        if shorter.cost < cost && self.inner.offer_solution(&shorter) {
+            self.taken += 1;
+        }
+        self.keep(shorter, started);
     }
 
     /// Makes `solution` the best one, with a trace point, if it is cheaper.
@@ -169,6 +208,7 @@ where
         self.elapsed = Duration::ZERO;
         self.runs = 0;
         self.taken = 0;
+        self.smoothing_moves = 0;
     }
 
     fn best_cost(&self) -> f64 {
@@ -187,6 +227,7 @@ where
         let mut settings = self.inner.settings();
         settings.push(("simplified_solutions".into(), self.runs.to_string()));
         settings.push(("simplified_taken_by_planner".into(), self.taken.to_string()));
+        settings.push(("smoothing_moves".into(), self.smoothing_moves.to_string()));
         settings
     }
 

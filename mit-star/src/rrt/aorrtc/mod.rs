@@ -137,7 +137,7 @@ where
     }
 
     /// The simplifier AORRTC uses unless [`set_simplifier`](Self::set_simplifier) replaces it:
-    /// whole shortcuts only, ending after 30 failures in a row. Per-joint shortcuts make a
+    /// whole shortcuts only, ending after 30 failures in a row, no smoothing. Per-joint shortcuts make a
     /// simplification of a first RRT-Connect path on the Panda take 10–26 ms instead of 2–3 ms
     /// (`robot/examples/simplify_paths.rs`, with and without `whole`), for paths the following
     /// searches shorten anyway.
@@ -146,6 +146,7 @@ where
             .seed(seed)
             .partial_shortcuts(false)
             .attempts(30)
+            .smoothing_rounds(0)
     }
 
     /// Replaces the simplifier of each solution (`aorrtc_simplify` still turns it off).
