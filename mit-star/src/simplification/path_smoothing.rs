@@ -222,6 +222,10 @@ impl PathSmoothing {
         if moved.partial_cmp(&(now * (1.0 - MINIMUM_GAIN))) != Some(std::cmp::Ordering::Less) {
             return None;
         }
+        // Edge checks test an edge's interior only: the moved state itself first.
+        if !run.state_is_valid(&self.candidate) {
+            return Some(EdgeStatus::Invalid);
+        }
         for (a, b) in [(before, &self.candidate), (&self.candidate, after)] {
             let status = run.edge(a, b);
             if status != EdgeStatus::Valid {

@@ -60,6 +60,12 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
         })
     }
 
+    /// `true` if `x`, a state that was on no checked edge (a smoothing move's), is valid: edge
+    /// checks test an edge's interior, its ends being known valid.
+    pub(super) fn state_is_valid(&self, x: &[f64]) -> bool {
+        self.validity.is_valid(x)
+    }
+
     /// Checks `a → b` on the grid, then certifies it: the one check of every edge a
     /// simplification adds. `Unknown` if the stop fired (polled first, and inside the walks).
     pub(super) fn edge(&mut self, a: &[f64], b: &[f64]) -> EdgeStatus {
