@@ -190,10 +190,12 @@ mod tests {
             .expect("builds");
         let first = planner.solve(&FirstSolution).expect("solves");
         let first = first.solution().expect("a path").clone();
-        // Vertex reduction only: the shorter path keeps a subset of the corners.
+        // Vertex reduction only (no shortcuts, no smoothing): the shorter path keeps a subset
+        // of the corners.
         let rows: Vec<Vec<f64>> = first.path.iter().map(<[f64]>::to_vec).collect();
         let simplified = crate::PathSimplifier::new()
             .attempts(0)
+            .smoothing_rounds(0)
             .simplify(&problem, &rows, &spaces::Never)
             .expect("simplifies");
         assert!(
