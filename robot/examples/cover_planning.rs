@@ -27,15 +27,9 @@ use std::path::Path;
 use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
 use robot::{ArmProblem, RobotSource};
 
-const SCENES: [&str; 7] = [
-    "bookshelf_small",
-    "bookshelf_tall",
-    "bookshelf_thin",
-    "box",
-    "cage",
-    "table_pick",
-    "table_under_pick",
-];
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::SEVEN_SCENES as SCENES;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();

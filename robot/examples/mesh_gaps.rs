@@ -24,15 +24,9 @@ use parry3d_f64::query::distance;
 use parry3d_f64::shape::{SharedShape, TriMesh};
 use robot::{MbmProblem, ParryChecker, RobotModel};
 
-const SCENES: [&str; 7] = [
-    "bookshelf_small",
-    "bookshelf_tall",
-    "bookshelf_thin",
-    "box",
-    "cage",
-    "table_pick",
-    "table_under_pick",
-];
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::SEVEN_SCENES as SCENES;
 
 const LINKS: [(&str, &str); 7] = [
     ("base_link", "base"),

@@ -1,5 +1,5 @@
-//! What the arm examples share: the five MotionBenchMaker scenes shipped with the Panda, their
-//! problems with a valid start and goal, and a median.
+//! What the arm examples share: the MotionBenchMaker scenes (the five shipped with the Panda, the
+//! seven of the UR5 and Fetch sets), the Panda problems with a valid start and goal, and a median.
 #![allow(dead_code)] // each example uses its own part of it
 
 use std::path::Path;
@@ -13,6 +13,18 @@ pub(crate) const SCENES: [&str; 5] = [
     "box_panda",
     "cage_panda",
     "table_pick_panda",
+];
+
+/// The seven scenes of the UR5's (and Fetch's) MotionBenchMaker sets
+/// (`robot/data/ur5/problems.tar.bz2`), without the robot's suffix.
+pub(crate) const SEVEN_SCENES: [&str; 7] = [
+    "bookshelf_small",
+    "bookshelf_tall",
+    "bookshelf_thin",
+    "box",
+    "cage",
+    "table_pick",
+    "table_under_pick",
 ];
 
 /// Problems `1..=count` of `scene` under `folder` that load and have a valid start and goal,
