@@ -524,7 +524,6 @@ where
         if self.ready {
             self.adopt_offer(path, &progress);
         } else {
-            self.best_goal = NONE;
             self.offered = Some((
                 Solution {
                     path: path.clone(),

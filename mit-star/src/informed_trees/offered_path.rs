@@ -89,7 +89,6 @@ where
         self.scratch = stack;
         self.best_goal = goal;
         self.best_cost = self.graph.vertex(goal).g;
-        self.offered = None;
         self.restart_pending = true;
     }
 }
