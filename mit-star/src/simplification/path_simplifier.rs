@@ -5,7 +5,7 @@ use spaces::{StateSpace, Stop};
 use validity::StateValidity;
 
 use super::path_smoothing::{PathSmoothing, SmoothingMoves};
-use super::simplification_run::{SimplificationRun, length};
+use super::simplification_run::{SimplificationRun, last_round, length};
 use crate::BuildError;
 
 /// Smoothing sweeps per smoothing round, before its shortcuts.
@@ -305,7 +305,7 @@ impl PathSimplifier {
             if smoothed.stopped || !run.shortcuts(states, self.attempts, self.partial) {
                 return (moves, true);
             }
-            if smoothed.moves == 0 || total - length(run.space, states) < 1e-4 * total {
+            if last_round(smoothed.moves, total, length(run.space, states)) {
                 break;
             }
         }

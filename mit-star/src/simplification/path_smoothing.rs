@@ -5,10 +5,7 @@ use spaces::StateSpace;
 use spaces::rand::RngExt;
 use validity::{EdgeStatus, StateValidity};
 
-use super::simplification_run::SimplificationRun;
-
-/// A sweep that gains less than this fraction of the path's length ends the sweeps.
-const NEGLIGIBLE: f64 = 1e-4;
+use super::simplification_run::{NEGLIGIBLE_GAIN, SimplificationRun};
 
 /// A move is tried only if it shortens its two edges by more than this fraction of them
 /// (below it, rounding could make a "shorter" move longer).
@@ -112,7 +109,7 @@ impl PathSmoothing {
                 }
             }
             let gained = total - super::simplification_run::length(run.space, states);
-            if gained < NEGLIGIBLE * total {
+            if gained < NEGLIGIBLE_GAIN * total {
                 break;
             }
         }

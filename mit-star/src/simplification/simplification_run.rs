@@ -8,6 +8,17 @@ use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidit
 
 use crate::BuildError;
 
+/// A step of simplification — a shortcut, a sweep of smoothing moves, a smoothing round —
+/// that gains less than this fraction of the path's length is not worth another.
+pub(super) const NEGLIGIBLE_GAIN: f64 = 1e-4;
+
+/// `true` once a smoothing round is not worth another: it made `moves` moves and took the
+/// path from length `before` to `after`, and either moved nothing or gained less than
+/// [`NEGLIGIBLE_GAIN`] of it.
+pub(super) fn last_round(moves: u64, before: f64, after: f64) -> bool {
+    moves == 0 || before - after < NEGLIGIBLE_GAIN * before
+}
+
 /// One simplification of a path: the problem's parts, the stop, the random draws, what was
 /// done, and buffers reused by every shortcut.
 pub(super) struct SimplificationRun<'a, S, V> {
@@ -125,7 +136,7 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
             let total: f64 = self.lengths.iter().sum();
             // A shortcut that gains less than this is taken but counts as a failure: the
             // search ends when shortcuts stop paying.
-            let negligible = 1e-4 * total;
+            let negligible = NEGLIGIBLE_GAIN * total;
             let outcome = if partial && self.rng.random::<bool>() {
                 self.partial_shortcut(states)
             } else {

@@ -120,8 +120,11 @@ where
             };
             self.smoothing_moves += smoothed.smoothing_moves;
             self.take(&smoothed, current.cost, started);
-            let gain = current.cost - smoothed.cost;
-            let done = smoothed.smoothing_moves == 0 || gain < 1e-4 * current.cost;
+            let done = super::simplification_run::last_round(
+                smoothed.smoothing_moves,
+                current.cost,
+                smoothed.cost,
+            );
             current = smoothed;
             if done {
                 return;
