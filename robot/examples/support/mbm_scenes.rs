@@ -1,12 +1,13 @@
-//! What the arm examples share: the MotionBenchMaker scenes (the five shipped with the Panda, the
-//! seven of the UR5 and Fetch sets), the Panda problems with a valid start and goal, and a median.
+//! What the arm examples share: the MotionBenchMaker scenes (the five of the Panda's experiments,
+//! the seven of every robot's set), the Panda problems with a valid start and goal, and a median.
 #![allow(dead_code)] // each example uses its own part of it
 
 use std::path::Path;
 
 use robot::ArmProblem;
 
-/// The scenes of `robot/data/panda/mbm_problems.tar.bz2`, as folder names.
+/// The five Panda scenes of the `panda-mbm` experiment and most arm tables, as folder names
+/// (`robot/data/panda/mbm_problems.tar.bz2` also has `bookshelf_thin` and `table_under_pick`).
 pub(crate) const SCENES: [&str; 5] = [
     "bookshelf_small_panda",
     "bookshelf_tall_panda",
