@@ -127,8 +127,9 @@ pub struct Parameters {
     /// [`Simplifying`](crate::Simplifying)), or reported as the planner found it (`false`, the
     /// default: the paper's planners and their ablations as published). Not in the paper.
     pub simplify_solutions: bool,
-    /// With [`simplify_solutions`](Self::simplify_solutions), each simplification ends with
-    /// smoothing sweeps ([`PathSimplifier::smoothing_rounds`](crate::PathSimplifier::smoothing_rounds):
+    /// With [`simplify_solutions`](Self::simplify_solutions), and in AORRTC's own
+    /// simplification ([`aorrtc_simplify`](Self::aorrtc_simplify)), each simplification ends
+    /// with smoothing sweeps ([`PathSimplifier::smoothing_rounds`](crate::PathSimplifier::smoothing_rounds):
     /// interior states moved off the path where it gets shorter, every new edge checked and
     /// certified) (`true`, the default), or with the shortcuts (`false`, the ablation). Not in
     /// the paper.

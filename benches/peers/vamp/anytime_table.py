@@ -2,7 +2,10 @@
 """Per-scene anytime table: VAMP's AORRTC (vamp_anytime's CSV) beside mit-star's planners
 (anytime_arm's CSV, `csv=FILE`), on the problems both ran.
 
-Usage: python3 anytime_table.py VAMP.csv OURS.csv
+Usage: python3 anytime_table.py VAMP.csv OURS.csv [OURS.csv ...]
+
+Each of our files may be given as `LABEL=OURS.csv`: its planners are then shown as LABEL (for
+runs of one configuration with different parameters, e.g. `"MIT* + warm + simplify=mit.csv"`).
 
 Per scene and planner: problems, median time to the first solution (ms), and median best cost
 (joint-space path length) at 10 ms, 100 ms and 1 s, a run without a path by then counting as
@@ -46,18 +49,20 @@ def vamp_rows(path):
     return out
 
 
-def our_rows(path):
+def our_rows(arguments):
     out = defaultdict(dict)
-    for row in csv.DictReader(open(path)):
-        key = (row["scene"].removesuffix("_panda"), int(row["index"]))
-        values = [float(row[k]) for k in ("first_ms", "cost_10ms", "cost_100ms", "cost_1s")]
-        out[row["planner"]][key] = tuple(values)
+    for argument in arguments:
+        label, _, path = argument.rpartition("=")
+        for row in csv.DictReader(open(path)):
+            key = (row["scene"].removesuffix("_panda"), int(row["index"]))
+            values = [float(row[k]) for k in ("first_ms", "cost_10ms", "cost_100ms", "cost_1s")]
+            out[label or row["planner"]][key] = tuple(values)
     return out
 
 
 def main():
     vamp = vamp_rows(sys.argv[1])
-    ours = our_rows(sys.argv[2])
+    ours = our_rows(sys.argv[2:])
     planners = {"VAMP AORRTC": vamp, **ours}
     common = set(vamp).intersection(*[set(v) for v in ours.values()])
     scenes = sorted({s for s, _ in common})

@@ -182,16 +182,8 @@ where
     /// Records `path` as the solution if it is cheaper than the best one (its cost the sum of
     /// its edges), with the planning time in the trace.
     pub(crate) fn record(&mut self, path: States, stop: &SolveStop<'_>) {
-        let cost = path
-            .iter()
-            .zip(path.iter().skip(1))
-            .map(|(x, y)| self.space.distance(x, y))
-            .sum();
-        if cost < self.best_cost() {
-            let time = (self.elapsed + stop.elapsed()).as_secs_f64();
-            self.trace.push(time, cost);
-            self.solution = Some(Solution { path, cost });
-        }
+        let best = (&mut self.solution, &mut self.trace);
+        record_path(&self.space, best, self.elapsed + stop.elapsed(), path);
     }
 
     /// Takes `solution`, offered from outside ([`Planner::offer_solution`](crate::Planner)), as
@@ -268,5 +260,24 @@ where
             ])
             .map(|(k, v)| (k.to_owned(), v))
             .collect()
+    }
+}
+
+/// Makes `path` the `best` solution, with a point at `time` in its trace, if it is cheaper
+/// (its cost measured in `space`).
+pub(crate) fn record_path<S: StateSpace>(
+    space: &S,
+    (solution, trace): (&mut Option<Solution>, &mut Trace),
+    time: Duration,
+    path: States,
+) {
+    let cost = path
+        .iter()
+        .zip(path.iter().skip(1))
+        .map(|(x, y)| space.distance(x, y))
+        .sum();
+    if solution.as_ref().is_none_or(|s| cost < s.cost) {
+        trace.push(time.as_secs_f64(), cost);
+        *solution = Some(Solution { path, cost });
     }
 }

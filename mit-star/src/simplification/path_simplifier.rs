@@ -118,16 +118,6 @@ impl PathSimplifier {
         self
     }
 
-    /// Its seed.
-    pub(crate) fn seed_value(&self) -> u64 {
-        self.seed
-    }
-
-    /// Its smoothing rounds (0: it does not smooth).
-    pub(crate) fn rounds(&self) -> usize {
-        self.smoothing_rounds
-    }
-
     /// Which moves the smoothing sweeps try ([`SmoothingMoves::Perturb`] by default).
     #[must_use]
     pub fn smoothing_moves(mut self, moves: SmoothingMoves) -> Self {
@@ -190,6 +180,54 @@ impl PathSimplifier {
         stop: &dyn Stop,
     ) -> Result<Simplified, BuildError> {
         self.passes(space, validity, checks, path, stop, true)
+    }
+
+    /// [`simplify_in`](Self::simplify_in) that hands each stage's path to `report` as soon as
+    /// it is ready: the shortcut path first, then the path after each smoothing round (each
+    /// [`Simplified`] starts from the previous stage's path, so its `original_cost` is that
+    /// path's cost). A planner that reports its best path at any time (an anytime planner's
+    /// trace) takes the shortcut path while it is smoothed. The rounds end as
+    /// [`smoothing_rounds`](Self::smoothing_rounds) describes, or when the stop fires.
+    ///
+    /// # Returns
+    /// The last stage's [`Simplified`], as `simplify_in` would return it (the round seeds
+    /// differ, so the path may too).
+    ///
+    /// # Errors
+    /// As [`simplify_in`](Self::simplify_in).
+    pub fn simplify_in_stages<S: StateSpace, V: StateValidity>(
+        &self,
+        space: &S,
+        validity: &V,
+        checks: (f64, u32),
+        path: &[Vec<f64>],
+        stop: &dyn Stop,
+        report: &mut dyn FnMut(&Simplified),
+    ) -> Result<Simplified, BuildError> {
+        let shortcuts = self.clone().smoothing_rounds(0);
+        let mut current = shortcuts.simplify_in(space, validity, checks, path, stop)?;
+        report(&current);
+        for round in 0..self.smoothing_rounds {
+            if current.stopped {
+                break;
+            }
+            let one = self
+                .clone()
+                .seed(self.seed.wrapping_add(round as u64 + 1))
+                .smoothing_rounds(1);
+            let smoothed = one.smooth_in(space, validity, checks, &current.path, stop)?;
+            report(&smoothed);
+            let done = super::simplification_run::last_round(
+                smoothed.smoothing_moves,
+                current.cost,
+                smoothed.cost,
+            );
+            current = smoothed;
+            if done {
+                break;
+            }
+        }
+        Ok(current)
     }
 
     /// The smoothing rounds alone (each followed by shortcuts, as in

@@ -7,8 +7,8 @@ use validity::StateValidity;
 
 use crate::termination::Wrapped;
 use crate::{
-    Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Simplified, Snapshot,
-    Solution, Termination, TerminationExt, Trace,
+    Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot, Solution,
+    Termination, TerminationExt, Trace,
 };
 
 /// Wraps a planner so that each solution it finds is reported at once and then shortened by
@@ -95,66 +95,54 @@ where
         let stop = || termination.should_terminate(&Progress::new(started.elapsed(), 0, before));
         let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
         self.runs += 1;
-        let shortcuts = self.simplifier.clone().smoothing_rounds(0);
-        let checks = self.checks;
-        let simplified = shortcuts.simplify_in(&self.space, &self.validity, checks, &path, &stop);
-        let Ok(simplified) = simplified else {
-            return;
-        };
-        self.take(&simplified, solution.cost, started);
-        // The smoothing rounds one at a time, each result reported and offered.
-        let mut current = simplified;
-        for round in 0..self.simplifier.rounds() {
-            if current.stopped {
-                return;
-            }
-            let one = self
-                .simplifier
-                .clone()
-                .seed(self.simplifier.seed_value().wrapping_add(round as u64 + 1))
-                .smoothing_rounds(1);
-            let Ok(smoothed) =
-                one.smooth_in(&self.space, &self.validity, checks, &current.path, &stop)
-            else {
-                return;
-            };
-            self.smoothing_moves += smoothed.smoothing_moves;
-            self.take(&smoothed, current.cost, started);
-            let done = super::simplification_run::last_round(
-                smoothed.smoothing_moves,
-                current.cost,
-                smoothed.cost,
-            );
-            current = smoothed;
-            if done {
-                return;
-            }
-        }
-    }
-
-    /// Offers `simplified` to the inner planner if it is shorter than `cost`, and keeps it.
-    fn take(&mut self, simplified: &Simplified, cost: f64, started: Instant) {
-        let mut states = States::new(self.space.dimension());
-        for state in &simplified.path {
-            states.push(state);
-        }
-        let shorter = Solution {
-            path: states,
-            cost: simplified.cost,
-        };
-        if shorter.cost < cost && self.inner.offer_solution(&shorter) {
-            self.taken += 1;
-        }
-        self.keep(shorter, started);
+        let Self {
+            inner,
+            space,
+            validity,
+            checks,
+            simplifier,
+            solution: best,
+            trace,
+            elapsed,
+            taken,
+            smoothing_moves,
+            ..
+        } = self;
+        let _ =
+            simplifier.simplify_in_stages(space, validity, *checks, &path, &stop, &mut |stage| {
+                *smoothing_moves += stage.smoothing_moves;
+                // Offered to the inner planner if shorter than the stage's start, and kept.
+                let mut states = States::new(space.dimension());
+                for state in &stage.path {
+                    states.push(state);
+                }
+                let shorter = Solution {
+                    path: states,
+                    cost: stage.cost,
+                };
+                if shorter.cost < stage.original_cost && inner.offer_solution(&shorter) {
+                    *taken += 1;
+                }
+                keep(best, trace, *elapsed + started.elapsed(), shorter);
+            });
     }
 
     /// Makes `solution` the best one, with a trace point, if it is cheaper.
     fn keep(&mut self, solution: Solution, started: Instant) {
-        if solution.cost < self.best_cost() {
-            let time = (self.elapsed + started.elapsed()).as_secs_f64();
-            self.trace.push(time, solution.cost);
-            self.solution = Some(solution);
-        }
+        keep(
+            &mut self.solution,
+            &mut self.trace,
+            self.elapsed + started.elapsed(),
+            solution,
+        );
+    }
+}
+
+/// Makes `solution` the `best` one, with a point at `time` in `trace`, if it is cheaper.
+fn keep(best: &mut Option<Solution>, trace: &mut Trace, time: Duration, solution: Solution) {
+    if best.as_ref().is_none_or(|b| solution.cost < b.cost) {
+        trace.push(time.as_secs_f64(), solution.cost);
+        *best = Some(solution);
     }
 }
 

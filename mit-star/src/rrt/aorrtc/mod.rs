@@ -10,7 +10,7 @@ use spaces::rand::SeedableRng;
 use spaces::{SeededRng, StateSpace, States};
 use validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
-use crate::rrt::rrt_core::problem_parts;
+use crate::rrt::rrt_core::{RrtCore, problem_parts, record_path};
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, RrtConnect,
@@ -39,8 +39,9 @@ const MAX_SEARCH_STATES: usize = 10_000;
 /// per query); the new state then seeks cheaper parents under
 /// redrawn bounds (`aorrtc_resamples`). The other tree is joined, step by step, from the new
 /// state to its nearest state that keeps the path under `c`. A path found is certified, then
-/// shortened by a [`PathSimplifier`] (`aorrtc_simplify`), and the next search starts under its
-/// cost. A search whose trees reach 10 000 states without success starts afresh under the same
+/// shortened by a [`PathSimplifier`] (`aorrtc_simplify`: shortcuts, then smoothing rounds
+/// unless `simplify_smoothing` is off, each stage a point of the trace), and the next search
+/// starts under its cost. A search whose trees reach 10 000 states without success starts afresh under the same
 /// bound. The searches stop when the best cost reaches the straight-line lower bound.
 ///
 /// RRT-Connect's switches (`rrt_dynamic_domain`, `rrt_balance`, `rrt_halton`,
@@ -51,7 +52,7 @@ const MAX_SEARCH_STATES: usize = 10_000;
 /// # Arguments
 /// A query (space, validity checker, start, goals) and [`Parameters`](crate::Parameters):
 /// `resolution`, `range` (as RRT-Connect's), `seed`, `certification`, `aorrtc_simplify`,
-/// `aorrtc_resamples`.
+/// `simplify_smoothing`, `aorrtc_resamples`.
 ///
 /// # Returns
 /// From [`solve`](Planner::solve): the best path so far; the trace has a point for every
@@ -112,7 +113,7 @@ where
         checker: E,
         parameters: crate::Parameters,
     ) -> Result<Self, BuildError> {
-        let seed = parameters.seed;
+        let (seed, smoothing) = (parameters.seed, parameters.simplify_smoothing);
         let n = space.dimension();
         let (start, goals) = (&query.0, &query.1);
         let informed = InformedSampler::new(&space, start, goals, seed)?;
@@ -128,7 +129,7 @@ where
             informed,
             rng: SeededRng::seed_from_u64(seed ^ 0x5eed_a0cc_2025),
             search: AoxTrees::new(n),
-            simplifier: Self::default_simplifier(seed),
+            simplifier: Self::default_simplifier(seed, smoothing),
             minimum,
             ends: (vec![0.0; n], vec![0.0; n]),
             searches: 0,
@@ -136,17 +137,24 @@ where
         })
     }
 
-    /// The simplifier AORRTC uses unless [`set_simplifier`](Self::set_simplifier) replaces it:
-    /// whole shortcuts only, ending after 30 failures in a row, no smoothing. Per-joint shortcuts make a
-    /// simplification of a first RRT-Connect path on the Panda take 10–26 ms instead of 2–3 ms
-    /// (`robot/examples/simplify_paths.rs`, with and without `whole`), for paths the following
-    /// searches shorten anyway.
-    pub fn default_simplifier(seed: u64) -> PathSimplifier {
+    /// The simplifier AORRTC uses unless [`set_simplifier`](Self::set_simplifier) replaces it,
+    /// after its authors' (VAMP's shortcuts, then up to five rounds of B-spline steps): whole
+    /// shortcuts only, ending after 30 failures in a row, then, if `smoothing` (the
+    /// `simplify_smoothing` parameter), up to five smoothing rounds of
+    /// [`SmoothingMoves::Relax`](crate::SmoothingMoves::Relax) moves. Per-joint shortcuts
+    /// make a simplification of a first RRT-Connect path on the Panda take 10–26 ms instead of
+    /// 2–3 ms (`robot/examples/simplify_paths.rs`, with and without `whole`), for paths the
+    /// following searches shorten anyway. The smoothing moves were chosen on the Panda's
+    /// seven MotionBenchMaker scenes (`robot/examples/anytime_arm.rs`): relaxing towards the
+    /// neighbours' midpoint keeps the cost at 10 ms where random perturbations raise it, and
+    /// both end shorter than no smoothing.
+    pub fn default_simplifier(seed: u64, smoothing: bool) -> PathSimplifier {
         PathSimplifier::new()
             .seed(seed)
             .partial_shortcuts(false)
             .attempts(30)
-            .smoothing_rounds(0)
+            .smoothing_rounds(if smoothing { 5 } else { 0 })
+            .smoothing_moves(crate::SmoothingMoves::Relax)
     }
 
     /// Replaces the simplifier of each solution (`aorrtc_simplify` still turns it off).
@@ -194,20 +202,29 @@ where
             termination.should_terminate(&progress)
         };
         self.simplified += 1;
-        let simplified = self.simplifier.simplify_in(
-            &core.space,
-            &core.validity,
+        let RrtCore {
+            space,
+            validity,
+            solution,
+            trace,
+            elapsed,
+            ..
+        } = core;
+        let _ = self.simplifier.simplify_in_stages(
+            space,
+            validity,
             (step, certification),
             &states,
             &halt,
+            &mut |stage| {
+                let mut shorter = States::new(space.dimension());
+                for state in &stage.path {
+                    shorter.push(state);
+                }
+                let best = (&mut *solution, &mut *trace);
+                record_path(space, best, *elapsed + stop.elapsed(), shorter);
+            },
         );
-        if let Ok(simplified) = simplified {
-            let mut shorter = States::new(core.space.dimension());
-            for state in &simplified.path {
-                shorter.push(state);
-            }
-            core.record(shorter, stop);
-        }
     }
 
     /// One iteration: RRT-Connect's until the first solution, then the cost-bounded search's.

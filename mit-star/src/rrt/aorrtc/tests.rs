@@ -108,3 +108,33 @@ fn bad_parameters_are_typed_errors() {
     let error = Aorrtc::for_problem(&problem, &parameters).unwrap_err();
     assert!(error.to_string().contains("range"), "{error}");
 }
+
+#[test]
+fn each_solution_is_shortcut_then_smoothed_and_every_stage_is_a_trace_point() {
+    let problem = problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let costs = |smoothing: bool| {
+        let parameters = Parameters {
+            seed: 1,
+            simplify_smoothing: smoothing,
+            ..Parameters::default()
+        };
+        let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
+        let outcome = planner
+            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+            .unwrap();
+        assert_valid(&problem, &outcome.solution().unwrap().path);
+        let points = planner.trace().points();
+        points.iter().map(|p| p.cost).collect::<Vec<f64>>()
+    };
+    let (on, off) = (costs(true), costs(false));
+    // Without smoothing: the path as found, then shortcut.
+    assert_eq!(off.len(), 2, "{off:?}");
+    // With it: the same two, then each smoothing round that shortened the path.
+    assert_eq!(on[..2], off[..], "{on:?} {off:?}");
+    assert!(on.len() > 2, "{on:?}");
+    assert!(on.windows(2).all(|w| w[1] < w[0]), "{on:?}");
+}
