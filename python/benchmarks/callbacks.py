@@ -101,7 +101,7 @@ def main() -> None:
         f"  vectorised is {per_state['numpy scalar'] / per_state['vectorised']:.1f}x cheaper per "
         f"state than the same numpy code called per state, "
         f"{per_state['scalar'] / per_state['vectorised']:.1f}x cheaper than the pure-Python "
-        f"scalar checker (batches of up to {args.batch}; edge checks hand at most 32)"
+        f"scalar checker (batches of up to {args.batch})"
     )
     print(
         f"  the checkers alone, from Python: scalar {1e6 * alone_scalar:.2f} us per state, "

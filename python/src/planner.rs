@@ -28,7 +28,8 @@ use crate::solve_result::{SolveResult, counters_dict, trace_pairs};
 /// `validity`, a callable on one state (a float array of shape (d,)) returning whether it is
 /// valid, and/or `vectorized`, a callable on states of shape (n, d) returning n booleans,
 /// replace the problem's own checker (the problem still gives the bounds, start, goals and
-/// resolution). Edge checks hand `vectorized` up to `batch` states at once.
+/// resolution). Edge checks hand `vectorized` up to `batch` states at once (1 to 1 024; the
+/// stop condition is polled between batches).
 #[pyclass(module = "mit_star._native", name = "Planner")]
 pub struct PyPlanner {
     /// The planner (locked only by `&mut self` methods, which PyO3 already serialises).
@@ -83,8 +84,11 @@ impl PyPlanner {
                 )));
             }
         }
-        if batch == 0 {
-            return Err(BindingError::Value("batch must be at least 1".into()));
+        if batch == 0 || batch > validity::MAX_BATCH {
+            return Err(BindingError::Value(format!(
+                "batch must be between 1 and {}, not {batch}",
+                validity::MAX_BATCH
+            )));
         }
         let failure = Arc::new(CallbackFailure::default());
         let planner = if validity.is_none() && vectorized.is_none() {

@@ -55,6 +55,20 @@ def test_a_vectorised_checker_gets_batches(walls4: mit_star.Problem) -> None:
     assert max(sizes) > 1 and max(sizes) <= 32
 
 
+def test_a_batch_wider_than_the_poll_period_is_handed_whole(walls4: mit_star.Problem) -> None:
+    sizes = []
+
+    def valid_many(states: np.ndarray) -> np.ndarray:
+        sizes.append(len(states))
+        return np.array([walls4.is_valid(s) for s in states])
+
+    planner = mit_star.MitStar(walls4, seed=3, vectorized=valid_many, batch=100)
+    assert planner.solve(time=2.0, first_solution=True).solved
+    assert max(sizes) > 32 and max(sizes) <= 100
+    with pytest.raises(ValueError, match="batch"):
+        mit_star.MitStar(walls4, vectorized=valid_many, batch=2000)
+
+
 def test_vectorised_and_scalar_agree(walls4: mit_star.Problem) -> None:
     def one(state: np.ndarray) -> bool:
         return walls4.is_valid(state)

@@ -60,7 +60,7 @@ pub use box_world::{
 pub use edge_checking::{
     BisectionOrder, DenseChecker, EdgeChecker, EdgeCounters, EdgeGrid, EdgeProgress, EdgeStatus,
     FixedSparseChecker, GridWalker, LENGTH_BUCKET_BOUNDS, LENGTH_BUCKET_LABELS,
-    LengthAdaptiveChecker, LengthBuckets, MotionProgress, STOP_POLL, canonical_ends,
+    LengthAdaptiveChecker, LengthBuckets, MAX_BATCH, MotionProgress, STOP_POLL, canonical_ends,
 };
 pub use error::ValidityError;
 pub use state_validity::{AllValid, Counted, StateValidity};

@@ -52,6 +52,8 @@ pub struct EdgeCounters {
 pub struct GridWalker {
     step: f64,
     scratch: Vec<f64>,
+    /// The fractions of one batch of points.
+    batch: Vec<f64>,
     segment: Segment,
     accelerated: bool,
     /// An interrupted scan: the edge's ends (`a` then `b`, canonical order) and the first grid
@@ -81,7 +83,22 @@ pub struct GridWalker {
 /// walk tests at most `STOP_POLL` points after it fires. A walk of at most `STOP_POLL` points
 /// never polls (it is over before a poll would be due). A poll only ends a walk when the stop
 /// has fired: a walk the stop lets run always tests at least one point.
+///
+/// A checker whose [`batch_width`](crate::StateValidity::batch_width) is wider than
+/// `STOP_POLL` (a vectorised checker written in another language, where each call costs far
+/// more than a state) is handed whole batches instead: the poll period is then its batch
+/// width rounded up to a multiple of `STOP_POLL` (at most [`MAX_BATCH`]), and the rules above
+/// hold with that period.
 pub const STOP_POLL: u64 = 32;
+
+/// The widest batch a walk hands a checker in one call, and so the longest poll period.
+pub const MAX_BATCH: usize = 1024;
+
+/// The poll period of a walk handing batches of `width` points: `width` rounded up to a
+/// multiple of [`STOP_POLL`].
+fn poll_period(width: usize) -> u64 {
+    (width.clamp(1, MAX_BATCH) as u64).div_ceil(STOP_POLL) * STOP_POLL
+}
 
 /// Full checks of prepared edges with at least this many points left scan the grid in
 /// ascending order after a head of bisection positions (see `GridWalker::advance_scanning`).
@@ -135,6 +152,7 @@ impl GridWalker {
         Ok(Self {
             step,
             scratch: Vec::new(),
+            batch: Vec::new(),
             segment: Segment::default(),
             accelerated: true,
             scan_edge: Vec::new(),
@@ -214,8 +232,7 @@ impl GridWalker {
         // A walk longer than one poll period polls before its first point too (a walk begun
         // after the deadline tests nothing); a shorter walk never polls: it ends within
         // `STOP_POLL` points anyway, and one clock read would cost as much as a few of them.
-        let polls_first = target - start > STOP_POLL;
-        let mut width = validity.batch_width().clamp(1, STOP_POLL as usize);
+        let mut width = validity.batch_width().clamp(1, MAX_BATCH);
         let mut prepared = false;
         if self.accelerated && space.is_euclidean() {
             self.segment.set(a, b);
@@ -234,6 +251,7 @@ impl GridWalker {
                 Preparation::Unprepared => {}
             }
         }
+        let polls_first = target - start > poll_period(width);
         if width > 1 {
             return self.advance_batched(
                 space,
@@ -375,8 +393,9 @@ impl GridWalker {
     /// Tests the states at `fractions` of the edge `a → b` in order, `batches.width` to a call
     /// — [`StateValidity::first_invalid_on`] with the fractions if the walker's segment is
     /// prepared, [`StateValidity::any_invalid`] with interpolated states otherwise — polling
-    /// `stop` every [`STOP_POLL`] points (and before the first if `batches.polls_first`) so that
-    /// no batch straddles a poll. Counts the points tested up to and including the invalid
+    /// `stop` every poll period ([`STOP_POLL`] points, or the batch width rounded up to a
+    /// multiple of it) and before the first point if `batches.polls_first`, so that no batch
+    /// straddles a poll. Counts the points tested up to and including the invalid
     /// one found.
     fn walk_batches<S, V>(
         &mut self,
@@ -392,19 +411,20 @@ impl GridWalker {
         V: StateValidity + ?Sized,
     {
         let dimension = space.dimension();
-        let width = batches.width.clamp(1, STOP_POLL as usize);
+        let width = batches.width.clamp(1, MAX_BATCH);
+        let period = poll_period(width);
         if !batches.prepared {
             self.scratch.resize(dimension * width, 0.0);
         }
-        let mut ts = [0.0; STOP_POLL as usize];
+        self.batch.resize(width, 0.0);
+        let ts = &mut self.batch;
         let mut fractions = fractions.peekable();
         let mut walked = 0_u64;
         while fractions.peek().is_some() {
-            if walked % STOP_POLL == 0 && (walked > 0 || batches.polls_first) && stop.should_stop()
-            {
+            if walked % period == 0 && (walked > 0 || batches.polls_first) && stop.should_stop() {
                 return Walked::Stopped(walked);
             }
-            let n = (width as u64).min(STOP_POLL - walked % STOP_POLL) as usize;
+            let n = (width as u64).min(period - walked % period) as usize;
             let mut filled = 0;
             for (slot, t) in ts.iter_mut().zip(&mut fractions).take(n) {
                 *slot = t;
@@ -525,14 +545,14 @@ impl GridWalker {
         // those are the multiples of `intervals / gcd`, `gcd − 1` of them.
         let on_coarse = |i: u64| u128::from(i) * u128::from(coarse) % u128::from(intervals) == 0;
         let new_points = points - (gcd(coarse, intervals) - 1);
-        let width = validity.batch_width().clamp(1, STOP_POLL as usize);
+        let width = validity.batch_width().clamp(1, MAX_BATCH);
         let fractions = (1..=points)
             .filter(|&i| !on_coarse(i))
             .skip(walked as usize)
             .map(|i| fine.fraction(i));
         let batches = Batches {
             width,
-            polls_first: new_points - walked.min(new_points) > STOP_POLL,
+            polls_first: new_points - walked.min(new_points) > poll_period(width),
             prepared: false,
         };
         let before = self.counters.points_tested;
@@ -663,6 +683,59 @@ mod tests {
             };
             assert_eq!(stop.polls.get(), expected, "{points} points");
         }
+    }
+
+    /// Valid everywhere, `width` states per call, recording how many it is handed each call.
+    struct Wide {
+        width: usize,
+        calls: std::cell::RefCell<Vec<usize>>,
+    }
+
+    impl StateValidity for Wide {
+        fn is_valid(&self, _: &[f64]) -> bool {
+            true
+        }
+
+        fn batch_width(&self) -> usize {
+            self.width
+        }
+
+        fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
+            self.calls.borrow_mut().push(states.len() / dimension);
+            None
+        }
+    }
+
+    #[test]
+    fn a_checker_wider_than_stop_poll_gets_its_whole_batches_and_a_longer_poll_period() {
+        let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
+        let walk = |stop: &Polls| {
+            let mut walker = GridWalker::new(1e-3).unwrap();
+            let validity = Wide {
+                width: 100,
+                calls: Default::default(),
+            };
+            let mut progress = EdgeProgress::default();
+            let grid = EdgeGrid::with_intervals(1000);
+            let ends = (&[0.0][..], &[1.0][..], grid);
+            let status = walker.advance(&space, &validity, ends, u64::MAX, &mut progress, stop);
+            (status, progress.tested(), validity.calls.into_inner())
+        };
+        // 999 points, polled every 128 (100 rounded up to a multiple of 32): before the first
+        // point and after 128, 256, …, 896; each period is a batch of 100 and one of 28.
+        let stop = Polls::firing_at(u64::MAX);
+        let (status, tested, calls) = walk(&stop);
+        assert_eq!((status, tested), (EdgeStatus::Valid, 999));
+        assert_eq!(stop.polls.get(), 8);
+        assert_eq!(calls.iter().sum::<usize>(), 999);
+        assert_eq!(calls.iter().filter(|&&n| n == 100).count(), 8);
+        assert!(calls.iter().all(|&n| n <= 100), "{calls:?}");
+        // Fired at the second poll: one period tested.
+        let (status, tested, calls) = walk(&Polls::firing_at(2));
+        assert_eq!(
+            (status, tested, calls),
+            (EdgeStatus::Unknown, 128, vec![100, 28])
+        );
     }
 
     #[test]

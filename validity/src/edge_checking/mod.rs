@@ -7,7 +7,7 @@
 //!   [`LengthAdaptiveChecker`] (`length_adaptive_checker.rs`, MIT*'s length-related levels).
 //! - [`EdgeGrid`], [`BisectionOrder`] (`bisection_order.rs`): the canonical grid of an edge and
 //!   the one order every check tests its points in.
-//! - [`GridWalker`], [`EdgeCounters`], [`canonical_ends`], [`STOP_POLL`] (`grid_walker.rs`): the
+//! - [`GridWalker`], [`EdgeCounters`], [`canonical_ends`], [`STOP_POLL`], [`MAX_BATCH`] (`grid_walker.rs`): the
 //!   walk shared by every checker, with certification on a finer grid or by the validity
 //!   checker's own motion test.
 //! - [`EdgeProgress`], [`EdgeStatus`] (`edge_progress.rs`): per-edge memory and outcomes;
@@ -35,7 +35,7 @@ pub use dense_checker::DenseChecker;
 pub use edge_checker::EdgeChecker;
 pub use edge_progress::{EdgeProgress, EdgeStatus};
 pub use fixed_sparse_checker::FixedSparseChecker;
-pub use grid_walker::{EdgeCounters, GridWalker, STOP_POLL, canonical_ends};
+pub use grid_walker::{EdgeCounters, GridWalker, MAX_BATCH, STOP_POLL, canonical_ends};
 pub use length_adaptive_checker::LengthAdaptiveChecker;
 pub use length_buckets::{LENGTH_BUCKET_BOUNDS, LENGTH_BUCKET_LABELS, LengthBuckets};
 pub use motion_progress::MotionProgress;
