@@ -112,8 +112,9 @@ pub struct Parameters {
     /// RRT-Connect's dynamic domain (Yershova et al., 2005): a state from which an extension
     /// failed gets a radius (4 ranges, then shrinking by 0.01 % per failure down to one range,
     /// growing as much per success), and draws farther from their nearest state than its
-    /// radius are skipped without a check. `true` (the default, chosen by measurement on the
-    /// Panda) or `false` (plain RRT-Connect, as OMPL's).
+    /// radius are skipped without a check, except by a tree that balancing forces to grow (a
+    /// tree stuck at a goal would otherwise stall the search). `true` (the default, chosen by
+    /// measurement on the Panda) or `false` (plain RRT-Connect, as OMPL's).
     pub rrt_dynamic_domain: bool,
     /// RRT-Connect grows the smaller tree while one tree has at least twice the states of the
     /// other (`true`, the default, chosen by measurement), instead of alternating strictly

@@ -34,6 +34,23 @@ pub enum ArmError {
         /// What it collides with: `itself: links a/b, c/d`, or the scene.
         with: String,
     },
+    /// A start or goal free of collision, but so close to something that no certified motion
+    /// reaches it ([`ArmProblem::check_ends`](crate::ArmProblem::check_ends)): its clearance
+    /// beyond the checker's margin is below [`CERTIFICATION_FLOOR`](crate::CERTIFICATION_FLOOR).
+    #[error(
+        "problem `{problem}`: the {what} configuration is within the certification floor ({floor_um} µm beyond the checker's margin) of {near}, so no certified motion reaches it"
+    )]
+    EndWithinFloor {
+        /// The problem's name.
+        problem: String,
+        /// `"start"` or `"goal"`.
+        what: &'static str,
+        /// The floor, in micrometres.
+        floor_um: f64,
+        /// What it is closest to: the obstacle, the link, the gap and the margin, or a link
+        /// of the robot's own.
+        near: String,
+    },
     /// A collision-check resolution outside `(0, 1)`.
     #[error(
         "collision-check resolution {0} is not in (0, 1): it is a fraction of the maximum extent (the paper uses 5e-3)"

@@ -117,17 +117,40 @@ impl ArmProblem {
     /// taken as the limit ([`mbm`](Self::mbm)): `1e-5` (radians or metres).
     pub const LIMIT_TOLERANCE: f64 = 1e-5;
 
-    /// The start and the goal are free, or which collision makes them invalid: the link
-    /// pairs in self-collision, else the scene.
+    /// The start and the goal are free and can be joined by certified motions, or what makes
+    /// them invalid: the link pairs in self-collision, else the scene; or, with certification
+    /// on, a clearance beyond the checker's margin below the
+    /// [`CERTIFICATION_FLOOR`](crate::CERTIFICATION_FLOOR), which every configuration of a
+    /// certified edge keeps, so no planner could return a path to that end.
     ///
     /// # Errors
-    /// [`ArmError::EndInCollision`] naming the end and what it collides with.
+    /// [`ArmError::EndInCollision`] naming the end and what it collides with;
+    /// [`ArmError::EndWithinFloor`] naming the end and what it is closest to.
     pub fn check_ends(&self) -> Result<(), ArmError> {
         let ends =
             std::iter::once(("start", &self.start)).chain(self.goals.iter().map(|g| ("goal", g)));
         for (what, q) in ends {
             if self.checker.is_valid(q) {
-                continue;
+                if self.joinable(q) {
+                    continue;
+                }
+                let reach = self.checker.margin() + crate::CERTIFICATION_FLOOR;
+                let near = match self.diagnose(q).nearest.filter(|c| c.gap < reach) {
+                    Some(c) => format!(
+                        "obstacle {} (link {}, gap {:.3} mm, margin {:.3} mm)",
+                        c.other,
+                        c.link,
+                        c.gap * 1e3,
+                        self.checker.margin() * 1e3
+                    ),
+                    None => "a link of the robot's own".to_owned(),
+                };
+                return Err(ArmError::EndWithinFloor {
+                    problem: self.name.clone(),
+                    what,
+                    floor_um: crate::CERTIFICATION_FLOOR * 1e6,
+                    near,
+                });
             }
             let names = |(a, b): (usize, usize)| {
                 let links = self.robot.links();
@@ -247,10 +270,27 @@ impl ArmProblem {
         &self.scene
     }
 
-    /// `true` if the start and the goal are collision-free (MotionBenchMaker has a few
-    /// problems where one is not; benchmarks count and skip them).
+    /// `true` if the start and the goal are collision-free and can be joined by certified
+    /// motions ([`check_ends`](Self::check_ends); MotionBenchMaker has a few problems where one
+    /// is not; benchmarks count and skip them).
     pub fn ends_are_valid(&self) -> bool {
-        self.checker.is_valid(&self.start) && self.goals.iter().all(|g| self.checker.is_valid(g))
+        std::iter::once(&self.start)
+            .chain(&self.goals)
+            .all(|q| self.checker.is_valid(q) && self.joinable(q))
+    }
+
+    /// Whether certified motions can reach the valid configuration `q`: always with
+    /// certification off; else if the motion from `q` to itself certifies, that is, if `q`
+    /// keeps the clearance beyond the margin that every configuration of a certified edge
+    /// keeps ([`CERTIFICATION_FLOOR`](crate::CERTIFICATION_FLOOR)).
+    pub fn joinable(&self, q: &[f64]) -> bool {
+        if self.certification <= 1 {
+            return true;
+        }
+        let mut progress = validity::MotionProgress::new(0.0, 0.0);
+        self.checker
+            .certify_motion(self.space(), q, q, &mut progress, &spaces::Never)
+            != Some(validity::EdgeStatus::Invalid)
     }
 }
 

@@ -136,3 +136,56 @@ proptest! {
         }
     }
 }
+
+/// A sphere placed `extra` beyond the checker's margin from the Panda's farthest sphere in `+x`
+/// at `HOME`: the problem from `HOME` to `HOME` in that scene.
+fn home_near_a_sphere(extra: f64) -> robot::ArmProblem {
+    let robot = panda();
+    let fk = robot::Kinematics::new(&robot);
+    let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
+    let mut centers = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+    fk.sphere_centers_f64(&HOME, &mut links, &mut centers);
+    let (c, r) = centers
+        .iter()
+        .copied()
+        .max_by(|a, b| (a.0.x + a.1).total_cmp(&(b.0.x + b.1)))
+        .unwrap();
+    // Every other sphere ends at most where this one does in `x`, so it is the nearest.
+    let radius = 0.05;
+    let build = |gap: f64| {
+        let at = DVec3::new(c.x + r + gap + radius, c.y, c.z);
+        let scene = Scene::new(vec![Obstacle::new(
+            Shape::Sphere { radius },
+            at,
+            DQuat::IDENTITY,
+        )]);
+        robot::ArmProblem::new("floor", robot.clone(), scene, HOME.to_vec(), HOME.to_vec()).unwrap()
+    };
+    // The margin grows with the scene's extent: measured with the sphere nearly in place.
+    let margin = problems::PlanningProblem::validity(&build(extra)).margin();
+    build(margin + extra)
+}
+
+/// A start or goal free of collision but within the certification floor beyond the margin can
+/// be joined by no certified edge, so the problem refuses it (as it refuses one in collision);
+/// a millimetre's clearance more is accepted.
+#[test]
+fn an_end_within_the_certification_floor_is_refused() {
+    let close = home_near_a_sphere(0.5 * robot::CERTIFICATION_FLOOR);
+    let checker = problems::PlanningProblem::validity(&close);
+    assert!(checker.is_valid(&HOME), "free beyond the margin");
+    let (status, _) = certify(checker, &HOME, &HOME, &Never);
+    assert_eq!(
+        status,
+        EdgeStatus::Invalid,
+        "no certified motion reaches it"
+    );
+    assert!(!close.ends_are_valid());
+    assert!(!close.joinable(&HOME));
+    let error = close.check_ends().unwrap_err().to_string();
+    assert!(error.contains("certification floor"), "{error}");
+
+    let clear = home_near_a_sphere(1e-3);
+    assert!(clear.ends_are_valid());
+    assert!(clear.check_ends().is_ok());
+}

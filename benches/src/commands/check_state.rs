@@ -64,8 +64,15 @@ impl CheckStateArgs {
         let mut all_valid = true;
         for (what, q) in &states {
             let diagnosis = arm.diagnose(q);
-            all_valid &= diagnosis.valid;
+            let joinable = !diagnosis.valid || arm.joinable(q);
+            all_valid &= diagnosis.valid && joinable;
             say!("{what}: {diagnosis}");
+            if !joinable {
+                say!(
+                    "  within the certification floor ({} µm beyond the margin): no certified motion reaches it",
+                    robot::CERTIFICATION_FLOOR * 1e6
+                );
+            }
         }
         Ok(if all_valid {
             CommandOutcome::Success

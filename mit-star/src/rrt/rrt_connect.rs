@@ -108,6 +108,20 @@ pub(super) fn dynamic_radius(radius: f64, valid: bool, range: f64) -> f64 {
     }
 }
 
+/// Whether a step towards a sample outside the nearest state's dynamic domain is skipped: with
+/// the dynamic domain on, unless balancing forced the tree (one tree has at least twice the
+/// states of the other, so the smaller grows).
+///
+/// A forced tree is the only one that may grow, so a skipped sample is an iteration that does
+/// nothing. A tree stuck at a state whose every step fails (a goal deep in a shelf) keeps a
+/// domain of at least one range, which a uniform sample in 8 dimensions hits about once in
+/// 10⁴ draws; balancing then never lets the other tree grow, and the search stalls (Fetch,
+/// `bookshelf_thin` #3: 13 million iterations in 1 s, three states). Stepping towards every
+/// sample gives the stuck tree a check per iteration until one step gets out.
+pub(super) fn skips_outside_domain(dynamic_domain: bool, forced: bool) -> bool {
+    dynamic_domain && !forced
+}
+
 /// A state's first dynamic-domain radius, in ranges.
 const DOMAIN_RADIUS: f64 = 4.0;
 
@@ -193,29 +207,39 @@ where
             .flatten()
     }
 
-    /// The tree the next sample grows: the other one than last time, unless balancing is on
-    /// and one tree has at least twice the states of the other, then the smaller.
-    fn tree_to_grow(&self) -> usize {
+    /// The tree the next sample grows, and whether balancing forced it: the other one than
+    /// last time, unless balancing is on and one tree has at least twice the states of the
+    /// other, then the smaller (forced).
+    fn tree_to_grow(&self) -> (usize, bool) {
         let [a, b] = [&self.trees[0], &self.trees[1]].map(|t| t.parents.len());
         if self.core.parameters.rrt_balance {
             if a >= 2 * b {
-                return 1;
+                return (1, true);
             }
             if b >= 2 * a {
-                return 0;
+                return (0, true);
             }
         }
-        self.growing
+        (self.growing, false)
     }
 
     /// Starts a step of tree `t` from its state nearest to `self.core.target` towards it: the
     /// candidate state (at most `range` away) goes to `self.core.candidate` and the motion to
     /// it becomes the pending one ([`finish_motion`](Self::finish_motion) checks both).
-    /// `Stopped` if the stop fired during the nearest-neighbour query.
-    fn start_motion(&mut self, t: usize, grows: bool, stop: &dyn Stop) -> Option<Step> {
+    /// `Stopped` if the stop fired during the nearest-neighbour query. A step towards a sample
+    /// (`grows`) outside the nearest state's dynamic domain is skipped unless balancing
+    /// `forced` this tree (see [`skips_outside_domain`]).
+    fn start_motion(
+        &mut self,
+        t: usize,
+        grows: bool,
+        forced: bool,
+        stop: &dyn Stop,
+    ) -> Option<Step> {
         let target = std::mem::take(&mut self.core.target);
         let near = self.nearest(t, &target, stop);
-        let dynamic = grows && self.core.parameters.rrt_dynamic_domain;
+        let dynamic =
+            grows && skips_outside_domain(self.core.parameters.rrt_dynamic_domain, forced);
         let started = near.map(|near| {
             let from = self.trees[t].state(near);
             if dynamic
@@ -322,10 +346,10 @@ where
                     if drawn.is_err() {
                         return;
                     }
-                    let t = self.tree_to_grow();
+                    let (t, forced) = self.tree_to_grow();
                     // The trees take turns, whatever this step does.
                     self.growing = 1 - t;
-                    match self.start_motion(t, true, stop) {
+                    match self.start_motion(t, true, forced, stop) {
                         Some(step) => step,
                         None => self.finish_motion(stop),
                     }
@@ -333,7 +357,7 @@ where
                 Phase::Connect { from, new } if self.pending.is_none() => {
                     let target = self.trees[from].state(new);
                     self.core.target.copy_from_slice(target);
-                    match self.start_motion(1 - from, false, stop) {
+                    match self.start_motion(1 - from, false, false, stop) {
                         Some(step) => step,
                         None => self.finish_motion(stop),
                     }
@@ -612,6 +636,42 @@ mod tests {
             let sampler_checks = planner.counters().sampler_checks;
             assert_eq!(sampler_checks > 0, valid_samples, "{sampler_checks}");
         }
+    }
+
+    #[test]
+    fn a_tree_balancing_forces_steps_towards_every_sample() {
+        // The goal at the centre of a hollow 0.02 wide in R^8, whose one opening is 0.01 wide:
+        // every step of 0.05 from it fails, so its dynamic domain shrinks to a ball a uniform
+        // sample hits about once in 10^5 draws, and balancing makes the goal tree (one state
+        // against the start tree's two) the only one that may grow.
+        let problem = problems::GoalEnclosure::new(8)
+            .inside(0.02)
+            .gap(0.01)
+            .build()
+            .unwrap()
+            .with_resolution(1e-3)
+            .unwrap();
+        let parameters = Parameters {
+            range: Some(0.05),
+            seed: 1,
+            ..Parameters::default()
+        };
+        let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
+        planner
+            .solve(&crate::IterationLimit::new(4000).or(TimeLimit::seconds(10.0)))
+            .unwrap();
+        let counters = planner.counters();
+        assert!(counters.iterations >= 4000, "{counters:?}");
+        // Skipping samples outside the domain would leave the search stalled, checking nothing.
+        assert!(
+            counters.full_checks >= counters.iterations / 2,
+            "{} motions checked in {} iterations",
+            counters.full_checks,
+            counters.iterations
+        );
+        assert!(skips_outside_domain(true, false));
+        assert!(!skips_outside_domain(true, true));
+        assert!(!skips_outside_domain(false, false));
     }
 
     #[test]

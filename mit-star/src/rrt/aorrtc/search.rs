@@ -72,17 +72,18 @@ impl AoxTrees {
         self.trees[t].add(state, parent)
     }
 
-    /// The tree the next sample grows: alternating, unless one tree has at least twice the
-    /// states of the other (then the smaller), as RRT-Connect with `rrt_balance`.
-    fn tree_to_grow(&mut self, balance: bool) -> usize {
+    /// The tree the next sample grows, and whether balancing forced it: alternating, unless
+    /// one tree has at least twice the states of the other (then the smaller, forced), as
+    /// RRT-Connect with `rrt_balance`.
+    fn tree_to_grow(&mut self, balance: bool) -> (usize, bool) {
         let [a, b] = [&self.trees[0], &self.trees[1]].map(|t| t.parents.len());
-        let t = match (balance, a >= 2 * b, b >= 2 * a) {
-            (true, true, _) => 1,
-            (true, _, true) => 0,
-            _ => self.growing,
+        let (t, forced) = match (balance, a >= 2 * b, b >= 2 * a) {
+            (true, true, _) => (1, true),
+            (true, _, true) => (0, true),
+            _ => (self.growing, false),
         };
         self.growing = 1 - t;
-        t
+        (t, forced)
     }
 
     /// The root of tree `t` nearest to `x` (the start, or the nearest goal) and its distance.
@@ -135,16 +136,17 @@ where
             Err(SampleError::EmptySet { .. }) => return Found::Optimal,
             Err(_) => return Found::Nothing,
         }
-        let t = self.search.tree_to_grow(core.parameters.rrt_balance);
-        let Some((new, new_cost)) = self.grow(t, stop) else {
+        let (t, forced) = self.search.tree_to_grow(core.parameters.rrt_balance);
+        let Some((new, new_cost)) = self.grow(t, forced, stop) else {
             return Found::Nothing;
         };
         self.join(t, new, new_cost, stop)
     }
 
     /// Grows tree `t` toward the sample in `core.target`; the new state and its cost, or `None`
-    /// if nothing was added.
-    fn grow(&mut self, t: usize, stop: &SolveStop<'_>) -> Option<(u32, f64)> {
+    /// if nothing was added. A sample outside the nearest state's dynamic domain is skipped
+    /// unless balancing `forced` the tree, as in RRT-Connect.
+    fn grow(&mut self, t: usize, forced: bool, stop: &SolveStop<'_>) -> Option<(u32, f64)> {
         let bound = self.search.bound;
         let core = &mut self.connect.core;
         let space = &core.space;
@@ -157,7 +159,8 @@ where
         let (mut near, distance) =
             nearest_within_cost(&mut self.search, core, t, root, c_rand, stop)?;
         let dynamic = core.parameters.rrt_dynamic_domain;
-        if dynamic && distance > self.search.trees[t].radii[near as usize] {
+        let skips = crate::rrt::rrt_connect::skips_outside_domain(dynamic, forced);
+        if skips && distance > self.search.trees[t].radii[near as usize] {
             return None;
         }
         let from = self.search.trees[t].state(near);
