@@ -140,6 +140,19 @@ impl<P: Planner + ?Sized> Planner for Box<P> {
     }
 }
 
+/// Makes `solution` the `best` one, with a point at `time` (planning time) in `trace`, if it
+/// is cheaper: how a planner or wrapper that keeps its own best solution records one.
+pub(crate) fn keep_if_cheaper(
+    (best, trace): (&mut Option<Solution>, &mut Trace),
+    time: std::time::Duration,
+    solution: Solution,
+) {
+    if best.as_ref().is_none_or(|b| solution.cost < b.cost) {
+        trace.push(time.as_secs_f64(), solution.cost);
+        *best = Some(solution);
+    }
+}
+
 /// The length of `path` in `space` (the sum of its edges).
 pub(crate) fn path_cost<S: StateSpace>(space: &S, path: &States) -> f64 {
     path.iter()

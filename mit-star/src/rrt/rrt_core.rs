@@ -182,8 +182,13 @@ where
     /// Records `path` as the solution if it is cheaper than the best one (its cost the sum of
     /// its edges), with the planning time in the trace.
     pub(crate) fn record(&mut self, path: States, stop: &SolveStop<'_>) {
+        let cost = crate::planner::path_cost(&self.space, &path);
         let best = (&mut self.solution, &mut self.trace);
-        record_path(&self.space, best, self.elapsed + stop.elapsed(), path);
+        crate::planner::keep_if_cheaper(
+            best,
+            self.elapsed + stop.elapsed(),
+            Solution { path, cost },
+        );
     }
 
     /// Takes `solution`, offered from outside ([`Planner::offer_solution`](crate::Planner)), as
@@ -260,24 +265,5 @@ where
             ])
             .map(|(k, v)| (k.to_owned(), v))
             .collect()
-    }
-}
-
-/// Makes `path` the `best` solution, with a point at `time` in its trace, if it is cheaper
-/// (its cost measured in `space`).
-pub(crate) fn record_path<S: StateSpace>(
-    space: &S,
-    (solution, trace): (&mut Option<Solution>, &mut Trace),
-    time: Duration,
-    path: States,
-) {
-    let cost = path
-        .iter()
-        .zip(path.iter().skip(1))
-        .map(|(x, y)| space.distance(x, y))
-        .sum();
-    if solution.as_ref().is_none_or(|s| cost < s.cost) {
-        trace.push(time.as_secs_f64(), cost);
-        *solution = Some(Solution { path, cost });
     }
 }

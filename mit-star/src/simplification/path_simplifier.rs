@@ -87,6 +87,21 @@ pub struct Simplified {
     pub stopped: bool,
 }
 
+impl Simplified {
+    /// The simplified path as a planner's [`Solution`](crate::Solution) in a space of
+    /// `dimension` coordinates.
+    pub fn solution(&self, dimension: usize) -> crate::Solution {
+        let mut path = spaces::States::with_capacity(dimension, self.path.len());
+        for state in &self.path {
+            path.push(state);
+        }
+        crate::Solution {
+            path,
+            cost: self.cost,
+        }
+    }
+}
+
 impl PathSimplifier {
     /// The smoothing rounds of [`new`](Self::new) (and of `simplify_smoothing`).
     pub const DEFAULT_SMOOTHING_ROUNDS: usize = 10;
@@ -217,11 +232,7 @@ impl PathSimplifier {
                 .smoothing_rounds(1);
             let smoothed = one.smooth_in(space, validity, checks, &current.path, stop)?;
             report(&smoothed);
-            let done = super::simplification_run::last_round(
-                smoothed.smoothing_moves,
-                current.cost,
-                smoothed.cost,
-            );
+            let done = last_round(smoothed.smoothing_moves, current.cost, smoothed.cost);
             current = smoothed;
             if done {
                 break;

@@ -2,9 +2,10 @@
 
 use std::time::{Duration, Instant};
 
-use spaces::{StateSpace, States};
+use spaces::StateSpace;
 use validity::StateValidity;
 
+use crate::planner::keep_if_cheaper;
 use crate::termination::Wrapped;
 use crate::{
     Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot, Solution,
@@ -112,37 +113,18 @@ where
             simplifier.simplify_in_stages(space, validity, *checks, &path, &stop, &mut |stage| {
                 *smoothing_moves += stage.smoothing_moves;
                 // Offered to the inner planner if shorter than the stage's start, and kept.
-                let mut states = States::new(space.dimension());
-                for state in &stage.path {
-                    states.push(state);
-                }
-                let shorter = Solution {
-                    path: states,
-                    cost: stage.cost,
-                };
+                let shorter = stage.solution(space.dimension());
                 if shorter.cost < stage.original_cost && inner.offer_solution(&shorter) {
                     *taken += 1;
                 }
-                keep(best, trace, *elapsed + started.elapsed(), shorter);
+                keep_if_cheaper((best, trace), *elapsed + started.elapsed(), shorter);
             });
     }
 
     /// Makes `solution` the best one, with a trace point, if it is cheaper.
     fn keep(&mut self, solution: Solution, started: Instant) {
-        keep(
-            &mut self.solution,
-            &mut self.trace,
-            self.elapsed + started.elapsed(),
-            solution,
-        );
-    }
-}
-
-/// Makes `solution` the `best` one, with a point at `time` in `trace`, if it is cheaper.
-fn keep(best: &mut Option<Solution>, trace: &mut Trace, time: Duration, solution: Solution) {
-    if best.as_ref().is_none_or(|b| solution.cost < b.cost) {
-        trace.push(time.as_secs_f64(), solution.cost);
-        *best = Some(solution);
+        let best = (&mut self.solution, &mut self.trace);
+        keep_if_cheaper(best, self.elapsed + started.elapsed(), solution);
     }
 }
 

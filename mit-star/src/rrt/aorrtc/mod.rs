@@ -10,7 +10,7 @@ use spaces::rand::SeedableRng;
 use spaces::{SeededRng, StateSpace, States};
 use validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
-use crate::rrt::rrt_core::{RrtCore, problem_parts, record_path};
+use crate::rrt::rrt_core::{RrtCore, problem_parts};
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, RrtConnect,
@@ -41,8 +41,8 @@ const MAX_SEARCH_STATES: usize = 10_000;
 /// state to its nearest state that keeps the path under `c`. A path found is certified, then
 /// shortened by a [`PathSimplifier`] (`aorrtc_simplify`: shortcuts, then smoothing rounds
 /// unless `simplify_smoothing` is off, each stage a point of the trace), and the next search
-/// starts under its cost. A search whose trees reach 10 000 states without success starts afresh under the same
-/// bound. The searches stop when the best cost reaches the straight-line lower bound.
+/// starts under its cost. A search whose trees reach 10 000 states without success starts
+/// afresh under the same bound. The searches stop when the best cost reaches the straight-line lower bound.
 ///
 /// RRT-Connect's switches (`rrt_dynamic_domain`, `rrt_balance`, `rrt_halton`,
 /// `rrt_valid_samples`) apply to the first search, and the first two to the cost-bounded ones.
@@ -217,12 +217,9 @@ where
             &states,
             &halt,
             &mut |stage| {
-                let mut shorter = States::new(space.dimension());
-                for state in &stage.path {
-                    shorter.push(state);
-                }
                 let best = (&mut *solution, &mut *trace);
-                record_path(space, best, *elapsed + stop.elapsed(), shorter);
+                let time = *elapsed + stop.elapsed();
+                crate::planner::keep_if_cheaper(best, time, stage.solution(space.dimension()));
             },
         );
     }
