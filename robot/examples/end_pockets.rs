@@ -18,26 +18,8 @@ use std::path::Path;
 
 use problems::PlanningProblem;
 use spaces::rand::{RngExt, SeedableRng};
-use spaces::{JointKind, SeededRng, StateSpace};
+use spaces::{SeededRng, StateSpace};
 use validity::StateValidity;
-
-/// A uniform number in `[0, 1)`.
-fn unit(rng: &mut SeededRng) -> f64 {
-    rng.random::<f64>()
-}
-
-/// A uniform configuration within the joint limits.
-fn uniform(model: &robot::RobotModel, state: &mut SeededRng, q: &mut [f64]) {
-    for (x, joint) in q.iter_mut().zip(model.joint_space().joints()) {
-        let u = unit(state);
-        *x = match joint.kind {
-            JointKind::Revolute { lower, upper } | JointKind::Prismatic { lower, upper } => {
-                lower + u * (upper - lower)
-            }
-            JointKind::Continuous => std::f64::consts::PI * (2.0 * u - 1.0),
-        };
-    }
-}
 
 /// The share (%) of straight motions of length `length` from `end` in random directions that
 /// stay inside the limits and valid at 40 evenly spaced configurations.
@@ -49,7 +31,7 @@ fn free_share(problem: &robot::ArmProblem, end: &[f64], length: f64, state: &mut
     let mut q = end.to_vec();
     for _ in 0..trials {
         for (t, e) in target.iter_mut().zip(end) {
-            *t = e + (2.0 * unit(state) - 1.0);
+            *t = e + (2.0 * state.random::<f64>() - 1.0);
         }
         let scale = length / space.distance(end, &target);
         for (t, e) in target.iter_mut().zip(end) {
@@ -79,11 +61,12 @@ fn main() {
         .expect("the shipped files load");
     let link = |l: usize| model.links()[l].name.clone();
     let mut state = SeededRng::seed_from_u64(12_345);
-    let mut q = vec![0.0; model.joint_names().len()];
+    let space = model.joint_space();
+    let mut q = vec![0.0; space.dimension()];
     let (samples, mut free) = (20_000, 0);
     let mut pairs: HashMap<(usize, usize), usize> = HashMap::new();
     for _ in 0..samples {
-        uniform(&model, &mut state, &mut q);
+        space.sample_uniform(&mut state, &mut q);
         let colliding = model.colliding_link_pairs(&q);
         free += usize::from(colliding.is_empty());
         for pair in colliding {
@@ -119,7 +102,7 @@ fn main() {
         let trials = 4000;
         let valid = (0..trials)
             .filter(|_| {
-                uniform(&model, &mut state, &mut q);
+                space.sample_uniform(&mut state, &mut q);
                 problem.validity().is_valid(&q)
             })
             .count();
