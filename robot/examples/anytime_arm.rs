@@ -13,13 +13,14 @@
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
 //! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`, `aorrtc_simplify=false`, `batch_size=200`, `rewire_factor=1.5`,
-//! `near_terminals=0.3`, …; `scenes=cage,box` for some scenes only); `csv=FILE` also writes one line per
+//! `near_terminals=0.3`, …; `aorrtc_moves=perturb|relax|relax-then-perturb` for AORRTC's
+//! smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only); `csv=FILE` also writes one line per
 //! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
 //! `benches/peers/vamp/anytime_table.py`.
 
 use std::io::Write;
 
-use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
+use mit_star::{Aorrtc, Configuration, Parameters, SmoothingMoves, TimeLimit, build_planner};
 use problems::PlanningProblem;
 use robot::{AuditVerdict, MotionAudit};
 use spaces::StateSpace;
@@ -41,11 +42,21 @@ fn main() {
     let seconds: f64 = args.next().map_or(1.0, |a| a.parse().expect("seconds"));
     let mut base = Parameters::default();
     let mut csv = None;
+    let mut aorrtc_moves = None;
     let mut scenes: Vec<String> = SCENES.iter().map(|s| (*s).to_owned()).collect();
     for setting in args {
         let (key, value) = setting.split_once('=').expect("key=value");
         if key == "scenes" {
             scenes = value.split(',').map(|v| format!("{v}_panda")).collect();
+            continue;
+        }
+        if key == "aorrtc_moves" {
+            aorrtc_moves = Some(match value {
+                "perturb" => SmoothingMoves::Perturb,
+                "relax" => SmoothingMoves::Relax,
+                "relax-then-perturb" => SmoothingMoves::RelaxThenPerturb,
+                other => panic!("unknown smoothing moves {other}"),
+            });
             continue;
         }
         if key == "csv" {
@@ -98,8 +109,20 @@ fn main() {
                         .then_some(1.0),
                     ..base.clone()
                 };
-                let mut planner =
-                    build_planner(configuration, problem, &parameters).expect("builds");
+                let mut planner = match (configuration, aorrtc_moves) {
+                    (Configuration::Aorrtc, Some(moves)) => {
+                        let mut aorrtc = Aorrtc::for_problem(problem, &parameters).expect("builds");
+                        let smoothing = parameters.simplify_smoothing;
+                        let simplifier =
+                            Aorrtc::<spaces::JointSpace, robot::ArmChecker>::default_simplifier(
+                                parameters.seed,
+                                smoothing,
+                            );
+                        aorrtc.set_simplifier(simplifier.smoothing_moves(moves));
+                        Box::new(aorrtc)
+                    }
+                    _ => build_planner(configuration, problem, &parameters).expect("builds"),
+                };
                 let outcome = planner.solve(&TimeLimit::seconds(seconds)).expect("plans");
                 let trace = planner.trace();
                 first.push(trace.initial().map_or(f64::INFINITY, |p| p.time * 1e3));

@@ -229,9 +229,6 @@ impl GridWalker {
             return progress.status(&grid);
         }
         let start = progress.0;
-        // A walk longer than one poll period polls before its first point too (a walk begun
-        // after the deadline tests nothing); a shorter walk never polls: it ends within
-        // `STOP_POLL` points anyway, and one clock read would cost as much as a few of them.
         let mut width = validity.batch_width().clamp(1, MAX_BATCH);
         let mut prepared = false;
         if self.accelerated && space.is_euclidean() {
@@ -251,6 +248,9 @@ impl GridWalker {
                 Preparation::Unprepared => {}
             }
         }
+        // A walk longer than one poll period polls before its first point too (a walk begun
+        // after the deadline tests nothing); a shorter walk never polls: it ends within a
+        // period anyway, and one clock read would cost as much as a few of its points.
         let polls_first = target - start > poll_period(width);
         if width > 1 {
             return self.advance_batched(
