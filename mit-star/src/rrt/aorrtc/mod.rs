@@ -145,9 +145,10 @@ where
     /// make a simplification of a first RRT-Connect path on the Panda take 10–26 ms instead of
     /// 2–3 ms (`robot/examples/simplify_paths.rs`, with and without `whole`), for paths the
     /// following searches shorten anyway. The smoothing moves were chosen on the Panda's
-    /// seven MotionBenchMaker scenes (`robot/examples/anytime_arm.rs`): relaxing towards the
-    /// neighbours' midpoint keeps the cost at 10 ms where random perturbations raise it, and
-    /// both end shorter than no smoothing.
+    /// seven MotionBenchMaker scenes (`robot/examples/anytime_arm.rs`, `aorrtc_moves=`):
+    /// relaxing towards the neighbours' midpoint keeps the cost at 10 ms where random
+    /// perturbations raise it; after 100 ms the choice, smoothing or none, moves the median
+    /// cost by 0.3 % at most.
     pub fn default_simplifier(seed: u64, smoothing: bool) -> PathSimplifier {
         PathSimplifier::new()
             .seed(seed)
