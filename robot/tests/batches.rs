@@ -4,13 +4,14 @@
 //! batch's first invalid configuration is the one the scalar check finds first, and the one
 //! parry finds first, whenever no configuration of the run lies within the stated tolerance
 //! of touching (see `parry_agreement.rs`); `any_invalid` names an invalid configuration
-//! exactly when there is one.
+//! exactly when there is one. Points of a prepared segment (`first_invalid_on`,
+//! `any_invalid_on`) get the answers of the interpolated configurations, bit for bit.
 
 use glam::DVec3;
 use proptest::prelude::*;
 use robot::{ArmChecker, Obstacle, ParryChecker, Scene, Shape};
 use spaces::StateSpace;
-use validity::StateValidity;
+use validity::{Preparation, Segment, StateValidity};
 
 const TOLERANCE: f64 = 1e-4;
 
@@ -78,6 +79,37 @@ proptest! {
         prop_assert_eq!(any.is_some(), scalar.is_some());
         if let Some(i) = any {
             prop_assert!(!fast.is_valid(configurations[i]), "configuration {} is valid", i);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn prepared_segments_answer_as_interpolated_configurations(
+        obstacles in prop::collection::vec(obstacle(), 0..5),
+        ends in run(),
+        fractions in prop::collection::vec(0.0..=1.0f64, 1..=40),
+    ) {
+        prop_assume!(ends.len() >= 14);
+        let robot = panda();
+        let space = robot.joint_space();
+        let checker = ArmChecker::new(&robot, &Scene::new(obstacles));
+        let (a, b) = (&ends[..7], &ends[7..14]);
+        let mut segment = Segment::default();
+        segment.set(a, b);
+        prop_assert_eq!(checker.prepare_segment(&mut segment), Preparation::Prepared);
+        let mut states = vec![0.0; 7 * fractions.len()];
+        for (state, &t) in states.chunks_exact_mut(7).zip(&fractions) {
+            space.interpolate(a, b, t, state);
+        }
+        let first = checker.first_invalid(&states, 7);
+        prop_assert_eq!(checker.first_invalid_on(&mut segment, &fractions), first);
+        let any = checker.any_invalid_on(&mut segment, &fractions);
+        prop_assert_eq!(any.is_some(), first.is_some());
+        if let Some(i) = any {
+            prop_assert!(!checker.is_valid(&states[7 * i..7 * i + 7]), "point {} is valid", i);
         }
     }
 }

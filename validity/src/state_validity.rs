@@ -130,6 +130,16 @@ pub trait StateValidity {
     fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
         segment.first_invalid_by(fractions, |state| self.is_valid(state))
     }
+
+    /// The index of *an* invalid point among the points at `fractions` of a prepared segment,
+    /// or `None` if all are valid: to [`first_invalid_on`](Self::first_invalid_on) what
+    /// [`any_invalid`](Self::any_invalid) is to [`first_invalid`](Self::first_invalid) (an
+    /// edge check only asks whether its points are free). `None` exactly when
+    /// `first_invalid_on` is `None`. The default is [`first_invalid_on`](Self::first_invalid_on).
+    #[inline]
+    fn any_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        self.first_invalid_on(segment, fractions)
+    }
 }
 
 /// Implements [`StateValidity`] for a pointer type by forwarding every method to the pointee,
@@ -189,6 +199,11 @@ macro_rules! forward_state_validity {
             #[inline]
             fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
                 (**self).first_invalid_on(segment, fractions)
+            }
+
+            #[inline]
+            fn any_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+                (**self).any_invalid_on(segment, fractions)
             }
         }
     )*};
@@ -341,5 +356,12 @@ impl<V: StateValidity> StateValidity for Counted<V> {
     fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
         self.count.set(self.count.get() + fractions.len() as u64);
         self.inner.first_invalid_on(segment, fractions)
+    }
+
+    /// Counts every point of the call, as [`first_invalid_on`](Self::first_invalid_on).
+    #[inline]
+    fn any_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        self.count.set(self.count.get() + fractions.len() as u64);
+        self.inner.any_invalid_on(segment, fractions)
     }
 }

@@ -5,7 +5,7 @@ use std::sync::Arc;
 
 use glam::Vec3A;
 use spaces::{StateSpace, Stop};
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity};
 
 use wide::f32x8;
 
@@ -263,6 +263,25 @@ impl StateValidity for ArmChecker {
     fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
         self.invalid_in(states, dimension, Wanted::Any)
     }
+
+    /// Prepared when the segment has the robot's dimension and finite ends: its points then
+    /// go into the lanes straight from `start + delta · t`, without interpolated states.
+    fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
+        if segment.dimension() == self.shared.lower.len() && segment.is_finite() {
+            Preparation::Prepared
+        } else {
+            Preparation::Unprepared
+        }
+    }
+
+    fn first_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        self.invalid_on(segment, fractions, Wanted::First)
+    }
+
+    /// Ends a batch at its first contact in any lane, as [`any_invalid`](Self::any_invalid).
+    fn any_invalid_on(&self, segment: &mut Segment, fractions: &[f64]) -> Option<usize> {
+        self.invalid_on(segment, fractions, Wanted::Any)
+    }
 }
 
 impl ArmChecker {
@@ -273,6 +292,19 @@ impl ArmChecker {
         let mut guard = self.scratch.lock();
         for (c, chunk) in states.chunks(LANES * dimension).enumerate() {
             let invalid = invalid_lanes(s, &mut guard.lanes, (chunk, dimension), &s.plain, wanted);
+            if invalid != 0 {
+                return Some(c * LANES + invalid.trailing_zeros() as usize);
+            }
+        }
+        None
+    }
+
+    /// [`invalid_in`](Self::invalid_in) for the points at `fractions` of a prepared segment.
+    fn invalid_on(&self, segment: &Segment, fractions: &[f64], wanted: Wanted) -> Option<usize> {
+        let s = &*self.shared;
+        let mut guard = self.scratch.lock();
+        for (c, chunk) in fractions.chunks(LANES).enumerate() {
+            let invalid = invalid_lanes_on(s, &mut guard.lanes, (segment, chunk), &s.plain, wanted);
             if invalid != 0 {
                 return Some(c * LANES + invalid.trailing_zeros() as usize);
             }
@@ -298,6 +330,71 @@ pub(crate) fn invalid_lanes(
     if dimension != s.lower.len() || chunk.len() != count * dimension || count == 0 {
         return live.max(1);
     }
+    let invalid = outside_limits(s, chunk, dimension);
+    if undecided(invalid, live, wanted) == 0 {
+        return invalid;
+    }
+    fill_lanes(&mut scratch.q8, chunk, dimension);
+    invalid_filled(s, scratch, (live, invalid), grow, wanted)
+}
+
+/// Bit `l` set if the point at `fractions[l]` of the prepared `segment` (`start + delta · t`,
+/// as the space's interpolation computes it: the answer of [`invalid_lanes`] for the
+/// interpolated configurations, bit for bit) is invalid; at most [`LANES`] fractions.
+fn invalid_lanes_on(
+    s: &Shared,
+    scratch: &mut LaneScratch,
+    (segment, fractions): (&Segment, &[f64]),
+    grow: &[f32x8],
+    wanted: Wanted,
+) -> u32 {
+    let count = fractions.len().min(LANES);
+    let live: u32 = (1 << count) - 1;
+    if segment.dimension() != s.lower.len() || count == 0 {
+        return live.max(1);
+    }
+    // Joint values by coordinate, straight from the segment (padding lanes repeat the first
+    // point), and the lanes outside the joint limits.
+    let mut outside = 0_u32;
+    let (start, delta) = (segment.start(), segment.delta());
+    for (j, q) in scratch.q8.iter_mut().enumerate() {
+        let (x0, d, lo, hi) = (start[j], delta[j], s.lower[j], s.upper[j]);
+        let lane: [f32; LANES] = std::array::from_fn(|l| {
+            let x = x0 + d * fractions[if l < count { l } else { 0 }];
+            outside |= u32::from(!(lo <= x && x <= hi)) << l;
+            x as f32
+        });
+        *q = f32x8::new(lane);
+    }
+    let invalid = outside & live;
+    if undecided(invalid, live, wanted) == 0 {
+        return invalid;
+    }
+    invalid_filled(s, scratch, (live, invalid), grow, wanted)
+}
+
+/// Lanes still to decide: those before the first invalid one (none once one is found, if any
+/// will do).
+#[inline]
+fn undecided(invalid: u32, live: u32, wanted: Wanted) -> u32 {
+    if invalid == 0 {
+        live
+    } else if wanted == Wanted::Any {
+        0
+    } else {
+        live & ((1 << invalid.trailing_zeros()) - 1)
+    }
+}
+
+/// The sphere tests of [`invalid_lanes`] on joint values already in `scratch.q8`: `live` the
+/// lanes in use, `invalid` those already known invalid (outside the joint limits).
+fn invalid_filled(
+    s: &Shared,
+    scratch: &mut LaneScratch,
+    (live, mut invalid): (u32, u32),
+    grow: &[f32x8],
+    wanted: Wanted,
+) -> u32 {
     let LaneScratch {
         poses8,
         centers8,
@@ -305,23 +402,8 @@ pub(crate) fn invalid_lanes(
         placed,
         q8,
     } = scratch;
-    let mut invalid = outside_limits(s, chunk, dimension);
-    // Lanes still to decide: those before the first invalid one (none once one is found, if
-    // any will do).
-    let undecided = |invalid: u32| {
-        if invalid == 0 {
-            live
-        } else if wanted == Wanted::Any {
-            0
-        } else {
-            live & ((1 << invalid.trailing_zeros()) - 1)
-        }
-    };
+    let undecided = |invalid: u32| undecided(invalid, live, wanted);
     let mut active = undecided(invalid);
-    if active == 0 {
-        return invalid;
-    }
-    fill_lanes(q8, chunk, dimension);
     placed.fill(false);
     // Links are placed as the tests reach them (in tree order), so that a batch found invalid
     // early skips the rest of the walk. `posed`: links placed so far (in tree order);

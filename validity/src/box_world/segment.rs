@@ -112,6 +112,12 @@ impl Segment {
         &self.start
     }
 
+    /// `b − a`, per coordinate: the point at fraction `t` is `start + delta · t`.
+    #[inline]
+    pub fn delta(&self) -> &[f64] {
+        &self.delta
+    }
+
     /// `true` if every coordinate of `a` and `b − a` is finite (so is every point).
     pub fn is_finite(&self) -> bool {
         self.start

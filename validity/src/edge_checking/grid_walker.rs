@@ -391,7 +391,7 @@ impl GridWalker {
     }
 
     /// Tests the states at `fractions` of the edge `a → b` in order, `batches.width` to a call
-    /// — [`StateValidity::first_invalid_on`] with the fractions if the walker's segment is
+    /// — [`StateValidity::any_invalid_on`] with the fractions if the walker's segment is
     /// prepared, [`StateValidity::any_invalid`] with interpolated states otherwise — polling
     /// `stop` every poll period ([`STOP_POLL`] points, or the batch width rounded up to a
     /// multiple of it) and before the first point if `batches.polls_first`, so that no batch
@@ -431,7 +431,7 @@ impl GridWalker {
                 filled += 1;
             }
             let found = if batches.prepared {
-                validity.first_invalid_on(&mut self.segment, &ts[..filled])
+                validity.any_invalid_on(&mut self.segment, &ts[..filled])
             } else {
                 for (slot, &t) in self.scratch.chunks_exact_mut(dimension).zip(&ts[..filled]) {
                     space.interpolate(a, b, t, slot);
