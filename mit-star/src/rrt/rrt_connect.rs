@@ -280,17 +280,12 @@ where
             return Step::Trapped;
         };
         let from = self.trees[motion.tree].state(motion.near);
-        let status = match self
+        // The candidate itself last, in the batch of the motion's last grid points: the grid
+        // points, in bisection order and batches, reject most invalid extensions sooner than
+        // one check of its end.
+        let status = self
             .core
-            .check_full_to_candidate(from, &mut motion.progress, stop)
-        {
-            // The candidate itself last: the motion's grid points, in bisection order and
-            // batches, reject most invalid extensions sooner than one check of its end.
-            EdgeStatus::Valid if !self.core.validity.is_valid(&self.core.candidate) => {
-                EdgeStatus::Invalid
-            }
-            status => status,
-        };
+            .check_motion_and_candidate(from, &mut motion.progress, stop);
         if motion.grows && self.core.parameters.rrt_dynamic_domain && status != EdgeStatus::Unknown
         {
             let radius = &mut self.trees[motion.tree].radii[motion.near as usize];

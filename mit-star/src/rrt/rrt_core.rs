@@ -161,6 +161,20 @@ where
             .check_full(space, validity, from, to, progress, stop)
     }
 
+    /// Checks the motion `from → candidate` at full resolution and the candidate itself
+    /// ([`EdgeChecker::check_full_and_end`]: a batched checker tests the candidate with the
+    /// motion's last grid points), without certification. `progress` belongs to this check.
+    pub(crate) fn check_motion_and_candidate(
+        &mut self,
+        from: &[f64],
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus {
+        let (space, validity, to) = (&self.space, &self.validity, &self.candidate);
+        self.checker
+            .check_full_and_end(space, validity, from, to, progress, stop)
+    }
+
     /// How many times finer than the check step edges are certified (1: not at all).
     pub(crate) fn certification(&self) -> u32 {
         self.parameters.certification.unwrap_or(1)

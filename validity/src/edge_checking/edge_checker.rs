@@ -121,6 +121,37 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         status
     }
 
+    /// Full check of the motion `from → to` and of its end `to` itself
+    /// ([`GridWalker::advance_with_end`]): what a tree planner asks before it adds `to`. A
+    /// batched checker tests the end with the motion's last grid points. `progress` belongs to
+    /// this check (it counts the end as one more position), and is kept when `stop` fires
+    /// first ([`EdgeStatus::Unknown`]), so a later call resumes.
+    fn check_full_and_end(
+        &mut self,
+        space: &S,
+        validity: &V,
+        from: &[f64],
+        to: &[f64],
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus {
+        let walker = self.walker_mut();
+        walker.counters_mut().full_checks += 1;
+        let (u, v) = canonical_ends(from, to);
+        let length = space.distance(u, v);
+        if !is_checkable(u, v, length) {
+            *progress = EdgeProgress::FOUND_INVALID;
+            return EdgeStatus::Invalid;
+        }
+        let grid = EdgeGrid::new(length, walker.step());
+        let before = walker.counters().points_tested;
+        let status = walker.advance_with_end(space, validity, (from, to, grid), progress, stop);
+        let counters = walker.counters_mut();
+        let tested = counters.points_tested - before;
+        counters.by_length.count_full(grid.points(), tested);
+        status
+    }
+
     /// Certifies a whitelisted edge on a grid `factor` times finer than its own
     /// ([`GridWalker::certify`]): [`EdgeStatus::Invalid`] if a point between its grid points
     /// is invalid, [`EdgeStatus::Unknown`] if `stop` fired first.

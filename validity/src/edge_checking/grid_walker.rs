@@ -281,6 +281,119 @@ impl GridWalker {
         progress.status(&grid)
     }
 
+    /// A full check of the motion `a → b` (in the caller's order) on its canonical `grid`,
+    /// then of the motion's end `b` itself, as one more position after the grid's: a batched
+    /// checker tests the end in the batch of the last grid points instead of in a call of its
+    /// own (a planner that adds `b` to a tree needs both). `progress` counts the end as
+    /// position `grid.points()`, so the motion is [`EdgeStatus::Valid`] once `progress` has
+    /// passed it; keep a progress of this walk apart from those of [`advance`](Self::advance).
+    /// The end is tested as the space's interpolation reaches it (`a + (b − a)·1` on a straight
+    /// line: `b`, up to one rounding). Polls as [`advance`](Self::advance) does; a stopped walk
+    /// keeps its progress.
+    pub fn advance_with_end<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b, grid): (&[f64], &[f64], EdgeGrid),
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let points = grid.points();
+        if progress.is_invalid() {
+            return EdgeStatus::Invalid;
+        }
+        if progress.0 > points {
+            return EdgeStatus::Valid;
+        }
+        let (u, v) = canonical_ends(a, b);
+        // The end's fraction on the canonical grid.
+        let end = if std::ptr::eq(v, b) { 1.0 } else { 0.0 };
+        let start = progress.0;
+        let width = validity.batch_width().clamp(1, MAX_BATCH);
+        let mut prepared = false;
+        if self.accelerated && space.is_euclidean() {
+            self.segment.set(u, v);
+            match validity.prepare_segment(&mut self.segment) {
+                Preparation::AllValid => {
+                    let decided = points + 1 - start;
+                    self.counters.points_tested += decided;
+                    self.counters.points_culled += decided;
+                    *progress = EdgeProgress(points + 1);
+                    return EdgeStatus::Valid;
+                }
+                Preparation::Prepared if points - start < SCAN_MIN => prepared = true,
+                Preparation::Prepared => {
+                    return self.grid_then_end(space, validity, (a, b, grid), progress, stop);
+                }
+                Preparation::Unprepared => {}
+            }
+        }
+        if !prepared && width == 1 {
+            return self.grid_then_end(space, validity, (a, b, grid), progress, stop);
+        }
+        let width = if prepared { STOP_POLL as usize } else { width };
+        let fractions = grid
+            .order(start, points)
+            .map(|index| grid.fraction(index))
+            .chain(std::iter::once(end));
+        let batches = Batches {
+            width,
+            polls_first: points + 1 - start > poll_period(width),
+            prepared,
+        };
+        match self.walk_batches(space, validity, (u, v), fractions, batches, stop) {
+            Walked::Invalid => {
+                *progress = EdgeProgress(EdgeProgress::INVALID);
+                EdgeStatus::Invalid
+            }
+            Walked::Done(walked) | Walked::Stopped(walked) => {
+                *progress = EdgeProgress(start + walked);
+                if progress.0 > points {
+                    EdgeStatus::Valid
+                } else {
+                    EdgeStatus::Unknown
+                }
+            }
+        }
+    }
+
+    /// [`advance_with_end`](Self::advance_with_end) as two walks: the grid's
+    /// ([`advance`](Self::advance)), then the end alone (checkers without batches, and long
+    /// prepared edges, which the grid's walk scans).
+    fn grid_then_end<S, V>(
+        &mut self,
+        space: &S,
+        validity: &V,
+        (a, b, grid): (&[f64], &[f64], EdgeGrid),
+        progress: &mut EdgeProgress,
+        stop: &dyn Stop,
+    ) -> EdgeStatus
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let status = self.advance(space, validity, (a, b, grid), u64::MAX, progress, stop);
+        if status != EdgeStatus::Valid {
+            return status;
+        }
+        let (u, v) = canonical_ends(a, b);
+        let end = if std::ptr::eq(v, b) { 1.0 } else { 0.0 };
+        self.scratch.resize(space.dimension(), 0.0);
+        space.interpolate(u, v, end, &mut self.scratch);
+        self.counters.points_tested += 1;
+        if validity.is_valid(&self.scratch) {
+            *progress = EdgeProgress(grid.points() + 1);
+            EdgeStatus::Valid
+        } else {
+            *progress = EdgeProgress(EdgeProgress::INVALID);
+            EdgeStatus::Invalid
+        }
+    }
+
     /// A full check of a long prepared edge: the first [`SCAN_HEAD`] positions of the
     /// bisection order (where a wide obstacle shows at once), then every grid point in
     /// ascending order, [`STOP_POLL`] fractions per call — cheap to generate, and the order

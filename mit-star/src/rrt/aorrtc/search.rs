@@ -352,7 +352,8 @@ where
     }
 }
 
-/// Checks the motion `from → core.candidate` at full resolution, then the candidate itself.
+/// Checks the motion `from → core.candidate` at full resolution and the candidate itself (in
+/// the batch of the motion's last grid points).
 fn motion_status<S, V, Smp, E>(
     core: &mut RrtCore<S, V, Smp, E>,
     from: &[f64],
@@ -365,8 +366,5 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
 {
     let mut progress = EdgeProgress::UNTESTED;
-    match core.check_full_to_candidate(from, &mut progress, stop) {
-        EdgeStatus::Valid if !core.validity.is_valid(&core.candidate) => EdgeStatus::Invalid,
-        status => status,
-    }
+    core.check_motion_and_candidate(from, &mut progress, stop)
 }
