@@ -11,6 +11,7 @@ use wide::f32x8;
 
 use crate::checking::lanes::{LANES, LaneKinematics, Point8, Pose8};
 use crate::checking::local_sweep::LocalSweep;
+use crate::checking::reachable_obstacles::reachable_obstacles;
 use crate::checking::scratch_cell::ScratchCell;
 use crate::{Kinematics, LeverArms, Obstacle, RobotModel, Scene};
 
@@ -24,7 +25,9 @@ pub(crate) struct Shared {
     pub(crate) upper: Vec<f64>,
     /// Per coordinate: the joint wraps around (continuous), so motions go the short way.
     pub(crate) wraps: Vec<bool>,
-    pub(crate) obstacles: Vec<Obstacle>,
+    /// Per entry of `links`: the obstacles it can reach in some configuration
+    /// (`reachable_obstacles.rs`), the only ones its tests look at.
+    pub(crate) reachable: Vec<Vec<Obstacle>>,
     /// Links with spheres, in tree order: link, its sphere range, local bounding sphere.
     pub(crate) links: Vec<(usize, Range<usize>, Vec3A, f32)>,
     /// Local sphere centres and radii.
@@ -182,6 +185,8 @@ impl ArmChecker {
             .iter()
             .flat_map(|&pair| local.relative_levers(pair, &levers, dimension))
             .collect();
+        let bounding: Vec<_> = links.iter().map(|&(l, _, c, r)| (l, c, r)).collect();
+        let reachable = reachable_obstacles(robot, &bounding, scene.obstacles());
         let wraps = space
             .joints()
             .iter()
@@ -194,7 +199,7 @@ impl ArmChecker {
                 lower: space.lower().to_vec(),
                 upper: space.upper().to_vec(),
                 wraps,
-                obstacles: scene.obstacles().to_vec(),
+                reachable,
                 plain: vec![f32x8::splat(margin as f32); links.len()],
                 links,
                 spheres,
@@ -425,7 +430,7 @@ fn invalid_filled(
         }
         let pose = &poses8[*link];
         let bound = f32x8::splat(*radius) + grow[k];
-        for obstacle in &s.obstacles {
+        for obstacle in &s.reachable[k] {
             if obstacle.collides_spheres8(&bounds8[k], bound) & active == 0 {
                 continue;
             }

@@ -90,7 +90,8 @@ pub(crate) fn certified_radii(
         let sweep = edge.sweep[k] as f32;
         let r = f32x8::splat(*bound_radius);
         let mut best = cap(k) + margin;
-        for obstacle in &s.obstacles {
+        // Obstacles out of the link's reach in every configuration cannot limit its radius.
+        for obstacle in &s.reachable[k] {
             // Spheres of the link are no closer than its bounding sphere.
             let limit = best + r;
             if obstacle.may_be_within8(&bounds8[k], limit) & live == 0

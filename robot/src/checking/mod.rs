@@ -10,6 +10,8 @@
 //!   far along the edge each stays clear; `local_sweep.rs` bounds how far spheres move over a
 //!   piece of an edge, from the piece's middle configuration, and how fast the two links of a
 //!   self-collision pair move relative to each other.
+//! - `reachable_obstacles.rs`: per link, the obstacles it can reach in some configuration
+//!   (the only ones its checks and clearances look at).
 //! - [`ParryChecker`] (`parry_checker.rs`): the reference checker, `f64` and parry queries, no
 //!   culling (tests and path re-checks).
 //! - [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] (`motion_audit.rs`): an independent
@@ -29,6 +31,7 @@ mod lanes;
 mod local_sweep;
 mod motion_audit;
 mod parry_checker;
+mod reachable_obstacles;
 mod scratch_cell;
 mod state_diagnosis;
 
