@@ -7,7 +7,7 @@ use glam::Vec3A;
 use spaces::{StateSpace, Stop};
 use validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity};
 
-use wide::f32x8;
+use wide::{f32x8, f64x4};
 
 use crate::checking::lanes::{LANES, LaneKinematics, Point8, Pose8};
 use crate::checking::local_sweep::LocalSweep;
@@ -360,18 +360,28 @@ fn invalid_lanes_on(
     }
     // Joint values by coordinate, straight from the segment (padding lanes repeat the first
     // point), and the lanes outside the joint limits.
-    let mut outside = 0_u32;
+    // Two `f64x4` halves: `x0 + d · t` rounds as the scalar interpolation does (no fused
+    // multiply-add), so the lanes hold the interpolated configurations bit for bit.
+    let mut ts = [fractions[0]; LANES];
+    ts[..count].copy_from_slice(&fractions[..count]);
+    let halves = [
+        f64x4::from([ts[0], ts[1], ts[2], ts[3]]),
+        f64x4::from([ts[4], ts[5], ts[6], ts[7]]),
+    ];
+    let mut inside = u32::MAX;
     let (start, delta) = (segment.start(), segment.delta());
     for (j, q) in scratch.q8.iter_mut().enumerate() {
-        let (x0, d, lo, hi) = (start[j], delta[j], s.lower[j], s.upper[j]);
-        let lane: [f32; LANES] = std::array::from_fn(|l| {
-            let x = x0 + d * fractions[if l < count { l } else { 0 }];
-            outside |= u32::from(!(lo <= x && x <= hi)) << l;
-            x as f32
-        });
-        *q = f32x8::new(lane);
+        let (x0, d) = (f64x4::splat(start[j]), f64x4::splat(delta[j]));
+        let (lo, hi) = (f64x4::splat(s.lower[j]), f64x4::splat(s.upper[j]));
+        let [a, b] = halves.map(|t| x0 + d * t);
+        let within = |x: f64x4| (x.simd_ge(lo) & x.simd_le(hi)).to_bitmask();
+        inside &= within(a) | (within(b) << 4);
+        let (a, b) = (a.to_array(), b.to_array());
+        *q = f32x8::new(std::array::from_fn(|l| {
+            if l < 4 { a[l] as f32 } else { b[l - 4] as f32 }
+        }));
     }
-    let invalid = outside & live;
+    let invalid = !inside & live;
     if undecided(invalid, live, wanted) == 0 {
         return invalid;
     }
