@@ -81,17 +81,22 @@ impl Segment {
     /// computed point `x + (y − x)·t`, `t ∈ [0, 1]`, widened for rounding — what a broad phase
     /// may compare against.
     pub fn set(&mut self, a: &[f64], b: &[f64]) {
+        let n = a.len().min(b.len());
         self.start.clear();
-        self.start.extend_from_slice(a);
-        self.delta.clear();
-        self.delta.extend(a.iter().zip(b).map(|(x, y)| y - x));
-        self.reach.clear();
-        self.slack.clear();
-        for (&x, &y) in a.iter().zip(b) {
-            let slack = ROUNDING * x.abs().max(y.abs()) + f64::MIN_POSITIVE;
-            self.slack.push(slack);
-            self.reach.push(x.min(y) - slack);
-            self.reach.push(x.max(y) + slack);
+        self.start.extend_from_slice(&a[..n]);
+        // Sized once, then written in place: no capacity check per coordinate.
+        self.delta.resize(n, 0.0);
+        self.slack.resize(n, 0.0);
+        self.reach.resize(2 * n, 0.0);
+        let rows = self.delta.iter_mut().zip(&mut self.slack);
+        for (((delta, slack), reach), (&x, &y)) in rows
+            .zip(self.reach.chunks_exact_mut(2))
+            .zip(a.iter().zip(b))
+        {
+            *delta = y - x;
+            *slack = ROUNDING * x.abs().max(y.abs()) + f64::MIN_POSITIVE;
+            reach[0] = x.min(y) - *slack;
+            reach[1] = x.max(y) + *slack;
         }
         self.candidates.clear();
         self.obstacle_crossings.clear();
