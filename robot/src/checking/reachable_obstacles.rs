@@ -71,7 +71,7 @@ pub(crate) fn reachable_obstacles(
             obstacles
                 .iter()
                 .filter(|o| o.distance_f64(p) <= rho)
-                .cloned()
+                .copied()
                 .collect()
         })
         .collect()
@@ -112,7 +112,7 @@ mod tests {
         let links: Vec<_> = (0..robot.links().len())
             .filter_map(|l| bounds[l].map(|(c, r)| (l, c.as_vec3a(), r as f32)))
             .collect();
-        let kept = reachable_obstacles(robot, &links, &[far.clone(), base.clone(), near.clone()]);
+        let kept = reachable_obstacles(robot, &links, &[far, base, near]);
         assert!(
             kept.iter()
                 .all(|k| k.iter().all(|o| o.pose() != far.pose()))
