@@ -43,8 +43,9 @@ pub struct EdgeCounters {
 /// # Acceleration
 /// Unless [turned off](Self::set_accelerated), a walk in a space whose edges are straight
 /// lines first lets the validity checker [prepare](StateValidity::prepare_segment) the edge (a
-/// box world keeps only the boxes near it), then hands it the fractions of up to
-/// [`STOP_POLL`] points at a time ([`StateValidity::first_invalid_on`]); an edge the checker
+/// box world keeps only the boxes near it; an arm's checker fills its lanes from the segment),
+/// then hands it the fractions of up to [`STOP_POLL`] points at a time, or of one batch for a
+/// checker with batches ([`StateValidity::any_invalid_on`]); an edge the checker
 /// proves free is decided without testing a point. The answers, the progress and the points
 /// counted are those of the one-by-one walk; off, every point is interpolated and tested on
 /// its own, as OMPL's discrete motion validator does.
@@ -98,6 +99,13 @@ pub const MAX_BATCH: usize = 1024;
 /// multiple of [`STOP_POLL`].
 fn poll_period(width: usize) -> u64 {
     (width.clamp(1, MAX_BATCH) as u64).div_ceil(STOP_POLL) * STOP_POLL
+}
+
+/// How many fractions of a prepared edge go to one call for a checker of batch `width`: its
+/// batches when it has any (an arm's eight lanes: a call is then one batch, and a counting
+/// wrapper counts the points the checker was handed, no more), else [`STOP_POLL`].
+fn prepared_width(width: usize) -> usize {
+    if width > 1 { width } else { STOP_POLL as usize }
 }
 
 /// Full checks of prepared edges with at least this many points left scan the grid in
@@ -244,7 +252,7 @@ impl GridWalker {
                 Preparation::Prepared if target == grid.points() && target - start >= SCAN_MIN => {
                     return self.advance_scanning(space, validity, (a, b, grid), progress, stop);
                 }
-                Preparation::Prepared => (prepared, width) = (true, STOP_POLL as usize),
+                Preparation::Prepared => (prepared, width) = (true, prepared_width(width)),
                 Preparation::Unprepared => {}
             }
         }
@@ -335,7 +343,11 @@ impl GridWalker {
         if !prepared && width == 1 {
             return self.grid_then_end(space, validity, (a, b, grid), progress, stop);
         }
-        let width = if prepared { STOP_POLL as usize } else { width };
+        let width = if prepared {
+            prepared_width(width)
+        } else {
+            width
+        };
         let fractions = grid
             .order(start, points)
             .map(|index| grid.fraction(index))
