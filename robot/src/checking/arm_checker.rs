@@ -98,7 +98,10 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// bounding sphere against each obstacle's bounding sphere and the obstacle itself (broad
 /// phase), and its small spheres only if that hits; self-collision pairs likewise test the two
 /// links' bounding spheres first. Sphere centres are placed only for links that reach the
-/// narrow phase.
+/// narrow phase. A link is tested only against the obstacles it can reach in some
+/// configuration (found once, when the checker is built, from its lever arms). Edge checks
+/// prepare their segment ([`StateValidity::prepare_segment`]): the lanes are filled from
+/// `a + (b − a)·t` directly, bit for bit the interpolated configurations.
 ///
 /// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width)
 /// 8): a lane drops out of the work once a lane before it is known invalid, and the batch ends
