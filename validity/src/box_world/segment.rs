@@ -13,7 +13,8 @@ pub enum Preparation {
     /// batches of [`StateValidity::batch_width`](crate::StateValidity::batch_width).
     Unprepared,
     /// The segment is prepared: test its points with
-    /// [`StateValidity::first_invalid_on`](crate::StateValidity::first_invalid_on).
+    /// [`StateValidity::first_invalid_on`](crate::StateValidity::first_invalid_on) (or
+    /// [`any_invalid_on`](crate::StateValidity::any_invalid_on), as edge checks do).
     Prepared,
     /// Every point of the segment is valid, proven without testing any (nothing the checker
     /// knows of comes near the segment): there is nothing to test.

@@ -101,6 +101,12 @@ fn poll_period(width: usize) -> u64 {
     (width.clamp(1, MAX_BATCH) as u64).div_ceil(STOP_POLL) * STOP_POLL
 }
 
+/// The fraction, on the canonical grid whose far end is `v`, of the motion's end `b`: 1 if
+/// `b` is that far end, else 0 (`b` is the canonical start).
+fn end_fraction(v: &[f64], b: &[f64]) -> f64 {
+    if std::ptr::eq(v, b) { 1.0 } else { 0.0 }
+}
+
 /// How many fractions of a prepared edge go to one call for a checker of batch `width`: its
 /// batches when it has any (an arm's eight lanes: a call is then one batch, and a counting
 /// wrapper counts the points the checker was handed, no more), else [`STOP_POLL`].
@@ -318,8 +324,7 @@ impl GridWalker {
             return EdgeStatus::Valid;
         }
         let (u, v) = canonical_ends(a, b);
-        // The end's fraction on the canonical grid.
-        let end = if std::ptr::eq(v, b) { 1.0 } else { 0.0 };
+        let end = end_fraction(v, b);
         let start = progress.0;
         let width = validity.batch_width().clamp(1, MAX_BATCH);
         let mut prepared = false;
@@ -393,7 +398,7 @@ impl GridWalker {
             return status;
         }
         let (u, v) = canonical_ends(a, b);
-        let end = if std::ptr::eq(v, b) { 1.0 } else { 0.0 };
+        let end = end_fraction(v, b);
         self.scratch.resize(space.dimension(), 0.0);
         space.interpolate(u, v, end, &mut self.scratch);
         self.counters.points_tested += 1;
