@@ -138,7 +138,10 @@ where
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus {
-        let status = self.check_full_to_candidate(from, progress, stop);
+        let (space, validity, to) = (&self.space, &self.validity, &self.candidate);
+        let status = self
+            .checker
+            .check_full(space, validity, from, to, progress, stop);
         if status != EdgeStatus::Valid {
             return status;
         }
@@ -146,19 +149,6 @@ where
         let status = self.certify(from, &to, stop);
         self.candidate = to;
         status
-    }
-
-    /// Checks the motion `from → candidate` at full resolution only (every grid point not yet
-    /// tested), as [`check_to_candidate`](Self::check_to_candidate) without certification.
-    pub(crate) fn check_full_to_candidate(
-        &mut self,
-        from: &[f64],
-        progress: &mut EdgeProgress,
-        stop: &dyn Stop,
-    ) -> EdgeStatus {
-        let (space, validity, to) = (&self.space, &self.validity, &self.candidate);
-        self.checker
-            .check_full(space, validity, from, to, progress, stop)
     }
 
     /// Checks the motion `from → candidate` at full resolution and the candidate itself

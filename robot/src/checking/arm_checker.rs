@@ -188,8 +188,7 @@ impl ArmChecker {
             .iter()
             .flat_map(|&pair| local.relative_levers(pair, &levers, dimension))
             .collect();
-        let bounding: Vec<_> = links.iter().map(|&(l, _, c, r)| (l, c, r)).collect();
-        let reachable = reachable_obstacles(robot, &bounding, scene.obstacles());
+        let reachable = reachable_obstacles((robot, &fk, &arms), &links, scene.obstacles());
         let wraps = space
             .joints()
             .iter()
@@ -362,9 +361,9 @@ fn invalid_lanes_on(
         return live.max(1);
     }
     // Joint values by coordinate, straight from the segment (padding lanes repeat the first
-    // point), and the lanes outside the joint limits.
-    // Two `f64x4` halves: `x0 + d · t` rounds as the scalar interpolation does (no fused
-    // multiply-add), so the lanes hold the interpolated configurations bit for bit.
+    // point), and the lanes outside the joint limits, in two `f64x4` halves: `x0 + d · t`
+    // rounds as the scalar interpolation does (no fused multiply-add), so the lanes hold the
+    // interpolated configurations bit for bit.
     let mut ts = [fractions[0]; LANES];
     ts[..count].copy_from_slice(&fractions[..count]);
     let halves = [

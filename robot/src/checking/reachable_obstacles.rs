@@ -12,24 +12,26 @@
 //! only the obstacles its bounding sphere meets matter; a link below a prismatic joint keeps
 //! every obstacle.
 
-use glam::DAffine3;
+use std::ops::Range;
+
+use glam::{DAffine3, Vec3A};
 use spaces::StateSpace;
 
-use crate::{Kinematics, Motion, Obstacle, RobotModel};
+use crate::{Kinematics, LeverArms, Motion, Obstacle, RobotModel};
 
 /// Slack added to every reach, in metres: much more than the checks' growth (the `f32`
 /// margin, tens of micrometres) and the rounding of the reach itself.
 const SLACK: f64 = 1e-3;
 
-/// Per entry of `links` (the checker's links with spheres: link index and local bounding
-/// sphere), the obstacles of `obstacles` it can reach, in their original order.
+/// Per entry of `links` (the checker's links with spheres: link index, sphere range, local
+/// bounding sphere), the obstacles of `obstacles` it can reach, in their original order;
+/// `fk` and `levers` are `robot`'s.
 pub(crate) fn reachable_obstacles(
-    robot: &RobotModel,
-    links: &[(usize, glam::Vec3A, f32)],
+    (robot, fk, levers): (&RobotModel, &Kinematics, &LeverArms),
+    links: &[(usize, Range<usize>, Vec3A, f32)],
     obstacles: &[Obstacle],
 ) -> Vec<Vec<Obstacle>> {
     let frames = robot.links();
-    let fk = Kinematics::new(robot);
     // Any configuration places the fixed frames: the middle of the limits.
     let space = robot.joint_space();
     let q: Vec<f64> = space
@@ -48,26 +50,26 @@ pub(crate) fn reachable_obstacles(
     fk.link_poses_f64(&q, &mut poses);
     links
         .iter()
-        .map(|&(link, center, radius)| {
-            let center = center.as_dvec3();
-            let mut reach = center.length() + f64::from(radius);
-            // The topmost revolute joint's frame and the reach from its origin.
+        .map(|&(link, _, center, radius)| {
+            // The topmost revolute joint: its frame and coordinate.
             let mut top = None;
             let mut at = Some(link);
             while let Some(a) = at {
                 match frames[a].motion {
                     Motion::Fixed => {}
-                    Motion::Revolute { .. } => top = Some((a, reach)),
+                    Motion::Revolute { coordinate, .. } => top = Some((a, coordinate)),
                     Motion::Prismatic { .. } => return obstacles.to_vec(),
                 }
-                reach += frames[a].origin.translation.length();
                 at = frames[a].parent;
             }
             let (p, rho) = match top {
-                Some((a, rho)) => (poses[a].translation, rho),
-                None => (poses[link].transform_point3(center), f64::from(radius)),
+                Some((a, coordinate)) => (poses[a].translation, levers.lever(link, coordinate)),
+                None => (
+                    poses[link].transform_point3(center.as_dvec3()),
+                    f64::from(radius),
+                ),
             };
-            let rho = rho * (1.0 + 1e-9) + SLACK;
+            let rho = rho + SLACK;
             obstacles
                 .iter()
                 .filter(|o| o.distance_f64(p) <= rho)
@@ -110,9 +112,10 @@ mod tests {
         );
         let bounds = robot.link_bounding_spheres();
         let links: Vec<_> = (0..robot.links().len())
-            .filter_map(|l| bounds[l].map(|(c, r)| (l, c.as_vec3a(), r as f32)))
+            .filter_map(|l| bounds[l].map(|(c, r)| (l, 0..0, c.as_vec3a(), r as f32)))
             .collect();
-        let kept = reachable_obstacles(robot, &links, &[far, base, near]);
+        let parts = (robot, &Kinematics::new(robot), &LeverArms::new(robot));
+        let kept = reachable_obstacles(parts, &links, &[far, base, near]);
         assert!(
             kept.iter()
                 .all(|k| k.iter().all(|o| o.pose() != far.pose()))

@@ -103,22 +103,15 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus {
-        let walker = self.walker_mut();
-        walker.counters_mut().full_checks += 1;
-        // The walker's own grid, from the canonical end, with the length kept for the guard.
-        let (u, v) = canonical_ends(a, b);
-        let length = space.distance(u, v);
-        if !is_checkable(u, v, length) {
-            *progress = EdgeProgress::FOUND_INVALID;
-            return EdgeStatus::Invalid;
-        }
-        let grid = EdgeGrid::new(length, walker.step());
-        let before = walker.counters().points_tested;
-        let status = walker.advance(space, validity, (a, b, grid), u64::MAX, progress, stop);
-        let counters = walker.counters_mut();
-        let tested = counters.points_tested - before;
-        counters.by_length.count_full(grid.points(), tested);
-        status
+        full_check(
+            self.walker_mut(),
+            space,
+            (a, b),
+            progress,
+            |walker, grid, progress| {
+                walker.advance(space, validity, (a, b, grid), u64::MAX, progress, stop)
+            },
+        )
     }
 
     /// Full check of the motion `from → to` and of its end `to` itself
@@ -135,21 +128,16 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
         progress: &mut EdgeProgress,
         stop: &dyn Stop,
     ) -> EdgeStatus {
-        let walker = self.walker_mut();
-        walker.counters_mut().full_checks += 1;
-        let (u, v) = canonical_ends(from, to);
-        let length = space.distance(u, v);
-        if !is_checkable(u, v, length) {
-            *progress = EdgeProgress::FOUND_INVALID;
-            return EdgeStatus::Invalid;
-        }
-        let grid = EdgeGrid::new(length, walker.step());
-        let before = walker.counters().points_tested;
-        let status = walker.advance_with_end(space, validity, (from, to, grid), progress, stop);
-        let counters = walker.counters_mut();
-        let tested = counters.points_tested - before;
-        counters.by_length.count_full(grid.points(), tested);
-        status
+        let ends = (from, to);
+        full_check(
+            self.walker_mut(),
+            space,
+            ends,
+            progress,
+            |walker, grid, progress| {
+                walker.advance_with_end(space, validity, (from, to, grid), progress, stop)
+            },
+        )
     }
 
     /// Certifies a whitelisted edge on a grid `factor` times finer than its own
@@ -175,6 +163,33 @@ pub trait EdgeChecker<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     fn remaining(&self, space: &S, a: &[f64], b: &[f64], progress: EdgeProgress) -> u64 {
         progress.remaining(&self.walker().grid(space, a, b))
     }
+}
+
+/// What a full check does around its walk (`walk`, given the walker, the edge's canonical grid
+/// and the progress): counts the check, refuses an edge without a grid (see [`is_checkable`]),
+/// and records the points the walk tested by the grid's length.
+fn full_check<S: StateSpace + ?Sized>(
+    walker: &mut GridWalker,
+    space: &S,
+    (a, b): (&[f64], &[f64]),
+    progress: &mut EdgeProgress,
+    walk: impl FnOnce(&mut GridWalker, EdgeGrid, &mut EdgeProgress) -> EdgeStatus,
+) -> EdgeStatus {
+    walker.counters_mut().full_checks += 1;
+    // The walker's own grid, from the canonical end, with the length kept for the guard.
+    let (u, v) = canonical_ends(a, b);
+    let length = space.distance(u, v);
+    if !is_checkable(u, v, length) {
+        *progress = EdgeProgress::FOUND_INVALID;
+        return EdgeStatus::Invalid;
+    }
+    let grid = EdgeGrid::new(length, walker.step());
+    let before = walker.counters().points_tested;
+    let status = walk(walker, grid, progress);
+    let counters = walker.counters_mut();
+    let tested = counters.points_tested - before;
+    counters.by_length.count_full(grid.points(), tested);
+    status
 }
 
 /// `true` if the edge `a — b` of length `length` has a grid to check: every coordinate of
