@@ -4,7 +4,8 @@
 //! batch's first invalid configuration is the one the scalar check finds first, and the one
 //! parry finds first, whenever no configuration of the run lies within the stated tolerance
 //! of touching (see `parry_agreement.rs`); `any_invalid` names an invalid configuration
-//! exactly when there is one. Points of a prepared segment (`first_invalid_on`,
+//! exactly when there is one; `are_valid` decides each configuration as the scalar check and
+//! parry do. Points of a prepared segment (`first_invalid_on`,
 //! `any_invalid_on`) get the answers of the interpolated configurations, bit for bit.
 
 use glam::DVec3;
@@ -80,6 +81,19 @@ proptest! {
         if let Some(i) = any {
             prop_assert!(!fast.is_valid(configurations[i]), "configuration {} is valid", i);
         }
+        // `are_valid` (samplers): every configuration's own answer, into as many answers as
+        // are asked for.
+        let mut valid = vec![false; configurations.len() + 1];
+        fast.are_valid(&states, 7, &mut valid);
+        for (i, q) in configurations.iter().enumerate() {
+            prop_assert_eq!(valid[i], fast.is_valid(q), "configuration {}", i);
+            prop_assert_eq!(valid[i], reference.is_valid(q), "configuration {}", i);
+        }
+        prop_assert!(!valid[configurations.len()], "an answer beyond the states was written");
+        let fewer = configurations.len() / 2;
+        let mut some = vec![false; fewer];
+        fast.are_valid(&states, 7, &mut some);
+        prop_assert_eq!(&some[..], &valid[..fewer]);
     }
 }
 

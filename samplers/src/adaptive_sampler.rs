@@ -127,8 +127,7 @@ where
         let cost = bound.cost();
         // `draw` polls `stop` before every candidate, the segment search before every point.
         loop {
-            self.draws.draw(space, cost, stop, out)?;
-            if self.draws.check(validity, out) {
+            if self.draws.draw_checked(space, validity, cost, stop, out)? {
                 self.draws.own_counters().pre_valid += 1;
                 self.draws.origin = SampleOrigin::Drawn;
                 return self.draws.returned();

@@ -104,8 +104,10 @@ where
         let midpoint = SegmentSearch::midpoint();
         // `draw` polls `stop` before every candidate.
         loop {
-            self.draws.draw(space, cost, stop, &mut self.first)?;
-            if self.draws.check(validity, &self.first) {
+            if self
+                .draws
+                .draw_checked(space, validity, cost, stop, &mut self.first)?
+            {
                 continue;
             }
             self.draws

@@ -97,10 +97,9 @@ where
         let cost = bound.cost();
         // `draw` polls `stop` before every candidate.
         loop {
-            self.draws.draw(space, cost, stop, out)?;
+            let here = self.draws.draw_checked(space, validity, cost, stop, out)?;
             self.draws
                 .perturb(&self.step, space, out, &mut self.neighbour);
-            let here = self.draws.check(validity, out);
             let there = self.draws.check(validity, &self.neighbour);
             match (here, there) {
                 (true, false) => {

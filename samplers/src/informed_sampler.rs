@@ -69,8 +69,10 @@ where
     ) -> Result<(), SampleError> {
         // `draw` polls `stop` before every candidate, so this loop needs no poll of its own.
         loop {
-            self.draws.draw(space, bound.cost(), stop, out)?;
-            if self.draws.check(validity, out) {
+            if self
+                .draws
+                .draw_checked(space, validity, bound.cost(), stop, out)?
+            {
                 return self.draws.returned();
             }
         }

@@ -4,6 +4,7 @@ use rand::SeedableRng;
 use spaces::{SeededRng, StateSpace, Stop};
 use validity::StateValidity;
 
+use crate::sampling_steps::Lookahead;
 use crate::{CostBound, HaltonSequence, SampleError, Sampler, SamplerCounters};
 
 /// Uniform samples of the whole space, invalid ones rejected; the cost bound is ignored.
@@ -36,6 +37,8 @@ pub struct UniformSampler {
     /// That sequence, made for the space's dimension at the first draw.
     sequence: Option<HaltonSequence>,
     counters: SamplerCounters,
+    /// Draws checked ahead, a batch of the checker at a time.
+    ahead: Lookahead,
 }
 
 impl UniformSampler {
@@ -47,6 +50,7 @@ impl UniformSampler {
             halton: false,
             sequence: None,
             counters: SamplerCounters::default(),
+            ahead: Lookahead::default(),
         }
     }
 
@@ -112,18 +116,31 @@ where
         out: &mut [f64],
     ) -> Result<(), SampleError> {
         fits(space, out)?;
-        loop {
-            if stop.should_stop() {
-                return Err(SampleError::Stopped);
+        // Candidates are drawn and checked a batch of the checker at a time, each draw
+        // polling `stop` first.
+        let mut ahead = std::mem::take(&mut self.ahead);
+        let mut checks = 0;
+        let found = loop {
+            let valid = ahead.next(validity, None, &mut checks, out, |x| {
+                if stop.should_stop() {
+                    return Err(SampleError::Stopped);
+                }
+                self.draw(space, x);
+                self.counters.drawn += 1;
+                Ok(())
+            });
+            match valid {
+                Ok(false) => {}
+                Ok(true) => break Ok(()),
+                Err(error) => break Err(error),
             }
-            self.draw(space, out);
-            self.counters.drawn += 1;
-            self.counters.validity_checks += 1;
-            if validity.is_valid(out) {
-                self.counters.returned += 1;
-                return Ok(());
-            }
+        };
+        self.ahead = ahead;
+        self.counters.validity_checks += checks;
+        if found.is_ok() {
+            self.counters.returned += 1;
         }
+        found
     }
 
     fn sampled_measure(&self, space: &S, _bound: CostBound) -> f64 {
@@ -134,6 +151,7 @@ where
         self.rng = SeededRng::seed_from_u64(seed);
         self.seed = seed;
         self.sequence = None;
+        self.ahead.clear();
     }
 
     fn counters(&self) -> SamplerCounters {

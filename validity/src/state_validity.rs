@@ -60,6 +60,30 @@ pub trait StateValidity {
         self.first_invalid(states, dimension)
     }
 
+    /// Decides every state of `states` (laid out as for
+    /// [`first_invalid`](Self::first_invalid)): `valid[i]` becomes whether state `i` is valid,
+    /// for the first `valid.len()` states at most. For callers that need each answer, not only
+    /// the first invalid state — a sampler drawing candidates a batch at a time. A batched
+    /// checker answers up to [`batch_width`](Self::batch_width) states in one pass; the default
+    /// asks [`is_valid`](Self::is_valid) of each in turn.
+    ///
+    /// ```
+    /// use validity::StateValidity;
+    /// struct RightHalf;
+    /// impl StateValidity for RightHalf {
+    ///     fn is_valid(&self, s: &[f64]) -> bool { s[0] >= 0.5 }
+    /// }
+    /// let mut valid = [false; 3];
+    /// RightHalf.are_valid(&[0.9, 0.2, 0.7], 1, &mut valid);
+    /// assert_eq!(valid, [true, false, true]);
+    /// ```
+    #[inline]
+    fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
+        for (state, answer) in states.chunks_exact(dimension.max(1)).zip(valid) {
+            *answer = self.is_valid(state);
+        }
+    }
+
     /// Certifies the motion from `a` to `b` — every state the space's interpolation passes
     /// through, not only grid points — if this checker can (`None`, the default, when it can
     /// only test states; the [`GridWalker`](crate::GridWalker) then certifies on a finer grid).
@@ -165,6 +189,11 @@ macro_rules! forward_state_validity {
             #[inline]
             fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
                 (**self).any_invalid(states, dimension)
+            }
+
+            #[inline]
+            fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
+                (**self).are_valid(states, dimension, valid)
             }
 
             #[inline]
@@ -315,6 +344,14 @@ impl<V: StateValidity> StateValidity for Counted<V> {
     #[inline]
     fn any_invalid(&self, states: &[f64], dimension: usize) -> Option<usize> {
         self.batch(states, dimension, V::any_invalid)
+    }
+
+    /// Counts every state decided.
+    #[inline]
+    fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
+        let n = (states.len() / dimension.max(1)).min(valid.len());
+        self.count.set(self.count.get() + n as u64);
+        self.inner.are_valid(states, dimension, valid);
     }
 
     /// Not counted: a motion certification is no state check (the walker counts the

@@ -55,6 +55,8 @@ pub(crate) enum Wanted {
     First,
     /// Any one: the check ends at the first contact in any lane.
     Any,
+    /// Every one: each lane is decided.
+    All,
 }
 
 /// Per-clone scratch, reused by every check.
@@ -271,6 +273,31 @@ impl StateValidity for ArmChecker {
         self.invalid_in(states, dimension, Wanted::Any)
     }
 
+    /// Eight configurations per pass, each lane decided (it leaves the work once found
+    /// invalid).
+    fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
+        let dimension = dimension.max(1);
+        let s = &*self.shared;
+        let mut guard = self.scratch.lock();
+        let chunks = states
+            .chunks(LANES * dimension)
+            .zip(valid.chunks_mut(LANES));
+        for (chunk, answers) in chunks {
+            let count = (chunk.len() / dimension).min(answers.len());
+            let chunk = &chunk[..count * dimension];
+            let invalid = invalid_lanes(
+                s,
+                &mut guard.lanes,
+                (chunk, dimension),
+                &s.plain,
+                Wanted::All,
+            );
+            for (l, answer) in answers[..count].iter_mut().enumerate() {
+                *answer = invalid & (1 << l) == 0;
+            }
+        }
+    }
+
     /// Prepared when the segment has the robot's dimension and finite ends: its points then
     /// go into the lanes straight from `start + delta · t`, without interpolated states.
     fn prepare_segment(&self, segment: &mut Segment) -> Preparation {
@@ -322,9 +349,10 @@ impl ArmChecker {
 
 /// Bit `l` set if configuration `l` of `chunk` (at most [`LANES`] configurations of
 /// `dimension` values) is invalid with every sphere of the link in entry `k` of
-/// `Shared::links` grown by `grow[k]` (the same in every lane). [`Wanted::First`]: exact for every lane up
-/// to the first invalid one. [`Wanted::Any`]: nonzero exactly when some lane is invalid, and
-/// every bit set is an invalid lane. A chunk of the wrong dimension is invalid in every lane.
+/// `Shared::links` grown by `grow[k]` (the same in every lane). [`Wanted::First`]: exact for
+/// every lane up to the first invalid one. [`Wanted::Any`]: nonzero exactly when some lane is
+/// invalid, and every bit set is an invalid lane. [`Wanted::All`]: exact for every lane. A
+/// chunk of the wrong dimension is invalid in every lane.
 pub(crate) fn invalid_lanes(
     s: &Shared,
     scratch: &mut LaneScratch,
@@ -391,15 +419,14 @@ fn invalid_lanes_on(
 }
 
 /// Lanes still to decide: those before the first invalid one (none once one is found, if any
-/// will do).
+/// will do; every lane not yet found invalid, if all are wanted).
 #[inline]
 fn undecided(invalid: u32, live: u32, wanted: Wanted) -> u32 {
-    if invalid == 0 {
-        live
-    } else if wanted == Wanted::Any {
-        0
-    } else {
-        live & ((1 << invalid.trailing_zeros()) - 1)
+    match wanted {
+        _ if invalid == 0 => live,
+        Wanted::All => live & !invalid,
+        Wanted::Any => 0,
+        Wanted::First => live & ((1 << invalid.trailing_zeros()) - 1),
     }
 }
 

@@ -5,6 +5,7 @@ use rand::SeedableRng;
 use spaces::{SeededRng, StateSpace, Stop};
 use validity::StateValidity;
 
+use super::Lookahead;
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, SamplerCounters, SamplerError,
     SegmentSearch,
@@ -20,6 +21,10 @@ pub(crate) struct InformedDraws {
     counters: SamplerCounters,
     /// Which step produced the last state returned (kept by samplers with several steps).
     pub(crate) origin: SampleOrigin,
+    /// Candidates drawn and checked ahead ([`draw_checked`](Self::draw_checked)).
+    ahead: Lookahead,
+    /// The points of a segment search's batch ([`SegmentSearch::find`]).
+    points: Vec<f64>,
 }
 
 impl InformedDraws {
@@ -42,21 +47,40 @@ impl InformedDraws {
             rng: SeededRng::seed_from_u64(seed),
             counters: SamplerCounters::default(),
             origin: SampleOrigin::Drawn,
+            ahead: Lookahead::default(),
+            points: Vec::new(),
         })
     }
 
-    /// Draws `out` uniformly from the informed set of `cost` ([`InformedSet::draw`]).
+    /// Draws `out` uniformly from the informed set of `cost` ([`InformedSet::draw`], which
+    /// polls `stop`) and returns whether it is valid, counting the check: the candidates are
+    /// drawn and checked a batch of `validity` at a time ([`Lookahead`]).
     ///
     /// # Errors
     /// As [`InformedSet::draw`].
-    pub(crate) fn draw<S: StateSpace + ?Sized>(
+    pub(crate) fn draw_checked<S, V>(
         &mut self,
         space: &S,
+        validity: &V,
         cost: Option<f64>,
         stop: &dyn Stop,
         out: &mut [f64],
-    ) -> Result<(), SampleError> {
-        self.set.draw(space, &mut self.rng, cost, stop, out)
+    ) -> Result<bool, SampleError>
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let Self {
+            set,
+            rng,
+            counters,
+            ahead,
+            ..
+        } = self;
+        let checks = &mut counters.validity_checks;
+        ahead.next(validity, cost, checks, out, |x| {
+            set.draw(space, rng, cost, stop, x)
+        })
     }
 
     /// Writes a Gaussian neighbour of `from` into `to` and counts it as drawn.
@@ -128,11 +152,11 @@ impl InformedDraws {
         let found = search.find(
             space,
             validity,
-            a,
-            b,
+            (a, b),
             |x| set.contains(space, cost, x),
             stop,
             &mut self.counters,
+            &mut self.points,
             out,
         )?;
         if found {
@@ -149,6 +173,7 @@ impl InformedDraws {
     /// Restarts the generator from `seed` ([`Sampler::reseed`](crate::Sampler::reseed)).
     pub(crate) fn reseed(&mut self, seed: u64) {
         self.rng = SeededRng::seed_from_u64(seed);
+        self.ahead.clear();
     }
 
     /// The set's counters and the sampler's own, summed ([`Sampler::counters`](crate::Sampler::counters)).

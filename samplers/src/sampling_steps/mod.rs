@@ -4,6 +4,8 @@
 //! - `informed_draws.rs`: `InformedDraws`, what every informed sampler owns — the informed set,
 //!   the seeded generator and the work counters — and the steps built from them (draw, perturb,
 //!   check, search a segment, count).
+//! - `lookahead.rs`: `Lookahead`, candidates drawn ahead and decided a checker's batch at a
+//!   time (the informed draws' and the uniform sampler's draw-and-check).
 //! - [`GaussianStep`] (`gaussian_step.rs`): the Gaussian perturbation of the Gaussian,
 //!   bridge-test and adaptive samplers and of [`NearTerminals`](crate::NearTerminals).
 //! - [`SegmentSearch`] (`segment_search.rs`): a valid state on a segment, in bisection order —
@@ -16,8 +18,10 @@
 
 mod gaussian_step;
 mod informed_draws;
+mod lookahead;
 mod segment_search;
 
 pub use gaussian_step::GaussianStep;
 pub(crate) use informed_draws::InformedDraws;
+pub(crate) use lookahead::Lookahead;
 pub use segment_search::SegmentSearch;

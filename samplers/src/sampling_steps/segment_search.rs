@@ -6,6 +6,9 @@ use validity::{EdgeGrid, StateValidity};
 
 use crate::{SampleError, SamplerCounters, SamplerError};
 
+/// The most points of a segment decided in one batch, whatever batch width a checker asks for.
+const MOST_BATCHED: usize = 16;
+
 /// Tests up to `checks` states of a segment `a → b` in bisection order — the midpoint, then the
 /// quarter points, then the eighths, … — and returns the first that is accepted and valid.
 ///
@@ -75,18 +78,23 @@ impl SegmentSearch {
     /// point that `accept` admits and `validity` finds valid. Points `accept` turns down are
     /// counted as rejected and not validity-checked. Returns whether a point was found.
     ///
+    /// The admitted points go to `validity` a [batch](StateValidity::batch_width) at a time
+    /// ([`StateValidity::are_valid`], in `points`, a buffer the caller keeps so that a search
+    /// does not allocate): the answer is the first valid point in the order above, as testing
+    /// them one by one finds, though a batched checker may have decided points after it.
+    ///
     /// # Errors
-    /// [`SampleError::Stopped`] if `stop` fires (polled before every point).
+    /// [`SampleError::Stopped`] if `stop` fires (polled before every batch).
     #[allow(clippy::too_many_arguments)]
     pub fn find<S, V, F>(
         &self,
         space: &S,
         validity: &V,
-        a: &[f64],
-        b: &[f64],
+        (a, b): (&[f64], &[f64]),
         mut accept: F,
         stop: &dyn Stop,
         counters: &mut SamplerCounters,
+        points: &mut Vec<f64>,
         out: &mut [f64],
     ) -> Result<bool, SampleError>
     where
@@ -94,22 +102,39 @@ impl SegmentSearch {
         V: StateValidity + ?Sized,
         F: FnMut(&[f64]) -> bool,
     {
-        for t in self.fractions() {
+        let d = out.len();
+        let width = validity.batch_width().clamp(1, MOST_BATCHED);
+        points.resize(width * d.max(1), 0.0);
+        let mut valid = [false; MOST_BATCHED];
+        let mut fractions = self.fractions();
+        loop {
             if stop.should_stop() {
                 return Err(SampleError::Stopped);
             }
-            space.interpolate(a, b, t, out);
-            counters.drawn += 1;
-            if !accept(out) {
-                counters.rejected += 1;
-                continue;
+            let mut admitted = 0;
+            for t in fractions.by_ref() {
+                let point = &mut points[admitted * d..(admitted + 1) * d];
+                space.interpolate(a, b, t, point);
+                counters.drawn += 1;
+                if !accept(point) {
+                    counters.rejected += 1;
+                    continue;
+                }
+                admitted += 1;
+                if admitted == width {
+                    break;
+                }
             }
-            counters.validity_checks += 1;
-            if validity.is_valid(out) {
+            if admitted == 0 {
+                return Ok(false);
+            }
+            validity.are_valid(&points[..admitted * d], d, &mut valid[..admitted]);
+            counters.validity_checks += admitted as u64;
+            if let Some(i) = valid[..admitted].iter().position(|&v| v) {
+                out.copy_from_slice(&points[i * d..(i + 1) * d]);
                 return Ok(true);
             }
         }
-        Ok(false)
     }
 }
 
@@ -142,16 +167,16 @@ mod tests {
         let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
         let search = SegmentSearch::new(8).unwrap();
         let mut counters = SamplerCounters::default();
-        let mut out = [0.0];
+        let (mut points, mut out) = (Vec::new(), [0.0]);
         let found = search
             .find(
                 &space,
                 &Right(valid),
-                &[0.0],
-                &[1.0],
+                (&[0.0], &[1.0]),
                 |_| true,
                 &Never,
                 &mut counters,
+                &mut points,
                 &mut out,
             )
             .unwrap();
@@ -163,11 +188,11 @@ mod tests {
             .find(
                 &space,
                 &Right(valid),
-                &[0.0],
-                &[1.0],
+                (&[0.0], &[1.0]),
                 |s| s[0] < 0.85,
                 &Never,
                 &mut counters,
+                &mut points,
                 &mut out,
             )
             .unwrap();
@@ -178,11 +203,11 @@ mod tests {
             search.find(
                 &space,
                 &Right(valid),
-                &[0.0],
-                &[1.0],
+                (&[0.0], &[1.0]),
                 |_| true,
                 &|| true,
                 &mut counters,
+                &mut points,
                 &mut out
             ),
             Err(SampleError::Stopped)
