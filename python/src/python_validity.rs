@@ -154,6 +154,29 @@ impl StateValidity for PythonValidity {
             None => Some(0),
         })
     }
+
+    /// One call of the vectorised checker for the whole batch (a failed call answers
+    /// "invalid" for every state, as [`first_invalid`](Self::first_invalid) does).
+    fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
+        let Some(f) = &self.vectorised else {
+            for (state, answer) in states.chunks_exact(dimension.max(1)).zip(valid) {
+                *answer = self.is_valid(state);
+            }
+            return;
+        };
+        let n = (states.len() / dimension.max(1)).min(valid.len());
+        let answers = if self.failure.has_failed() {
+            None
+        } else {
+            ArrayView2::from_shape((n, dimension), &states[..n * dimension])
+                .ok()
+                .and_then(|view| Python::attach(|py| self.call_vectorised(py, f, &view)))
+        };
+        match answers {
+            Some(answers) => valid[..n].copy_from_slice(&answers),
+            None => valid[..n].fill(false),
+        }
+    }
 }
 
 /// `reply` as `n` booleans: a numpy bool array as it is, anything else through

@@ -135,7 +135,10 @@ impl SampleOrigin {
 /// Draws valid states for a planner (OMPL's `ValidStateSampler`, made informed).
 ///
 /// A sampler is seeded and owns its random generator: the same seed gives the same sequence of
-/// states. It is told the current [`CostBound`] on every call and returns a state that is valid
+/// states. Samplers that check what they draw may draw a checker's
+/// [batch](StateValidity::batch_width) of candidates ahead and decide them in one call
+/// ([`StateValidity::are_valid`]), so the sequence depends on the checker's batch width too
+/// (its law does not). It is told the current [`CostBound`] on every call and returns a state that is valid
 /// (per `validity`), inside the space's bounds, and — for informed samplers — inside the informed
 /// set of the bound. It polls `stop` in every loop and returns [`SampleError::Stopped`] rather
 /// than loop forever.
