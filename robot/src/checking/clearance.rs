@@ -16,8 +16,9 @@
 //! rounded down.
 //!
 //! Clearances are only computed as far as they matter: the caller names the largest radius
-//! it has a use for, and a link clear by how far it moves over such a piece is not looked at
-//! more closely; a link's bounding
+//! it has a use for, and a link (or pair) clear by how far it moves over such a piece — or over
+//! a piece of the smallest radius the lane has met so far, if that is smaller — is not looked
+//! at more closely, since it cannot lower the lane's radius; a link's bounding
 //! sphere (then its distance to the solid) is tested before its small spheres, which are
 //! placed only if the bound is below what the link has found so far.
 
@@ -77,19 +78,22 @@ pub(crate) fn certified_radii(
     // Rounded up, as the plain checks' margin.
     let margin = f32x8::splat((s.margin * (1.0 + 1e-6)) as f32);
     let floor = f32x8::splat(floor as f32);
-    let useful = useful as f32;
-    // How far link entry `k` moves over a piece of radius `useful`: clear by this (and twice
-    // the floor, safe from rounding), its radius is at least `useful`.
-    let cap = |k: usize| {
-        let (a, q) = (speeds[k], edge.terms.second(k) as f32);
-        let local = f32x8::splat(useful) * a + f32x8::splat(useful * useful * q);
-        local.min(f32x8::splat(useful * edge.sweep[k] as f32)) + floor + floor
-    };
+    let useful = f32x8::splat(useful as f32);
+    // Per lane, the smallest radius so far (unbounded before the first link).
     let mut radius = f32x8::splat(f32::INFINITY);
+    // How far link entry `k` moves over a piece of the radius it would have to undercut, the
+    // smaller of `useful` and the lane's radius so far: clear by this (and twice the floor,
+    // safe from rounding), it limits nothing.
+    let cap = |k: usize, radius: f32x8| {
+        let (a, q) = (speeds[k], edge.terms.second(k) as f32);
+        let h = radius.min(useful);
+        let local = h * a + h * h * f32x8::splat(q);
+        local.min(h * f32x8::splat(edge.sweep[k] as f32)) + floor + floor
+    };
     for (k, (link, range, _, bound_radius)) in s.links.iter().enumerate() {
         let sweep = edge.sweep[k] as f32;
         let r = f32x8::splat(*bound_radius);
-        let mut best = cap(k) + margin;
+        let mut best = cap(k, radius) + margin;
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
         for obstacle in &s.reachable[k] {
             // Spheres of the link are no closer than its bounding sphere.
@@ -122,7 +126,9 @@ pub(crate) fn certified_radii(
         // counts.
         let sweep = edge.pair_sweep[p] as f32;
         let margins = margin + margin;
-        let mut best = f32x8::splat(useful * sweep) + floor + floor + margins;
+        // As for the links: clear by the sweep over a piece of the lane's radius so far, the
+        // pair limits nothing.
+        let mut best = radius.min(useful) * f32x8::splat(sweep) + floor + floor + margins;
         let reach_ab = f32x8::splat(la.3 + lb.3);
         if closer(&bounds8[a], &bounds8[b], best + reach_ab) & live != 0 {
             for (k, l) in [(a, la), (b, lb)] {
