@@ -275,6 +275,11 @@ impl StateSpace for JointSpace {
     fn is_euclidean(&self) -> bool {
         self.euclidean
     }
+
+    /// The joint weights, when no joint wraps around (a weighted Euclidean metric).
+    fn euclidean_scales(&self) -> Option<&[f64]> {
+        (!self.wraps.iter().any(|&w| w)).then_some(self.weights.as_slice())
+    }
 }
 
 #[cfg(test)]

@@ -79,6 +79,14 @@ pub trait StateSpace {
     /// objective is a prolate hyperspheroid in coordinates, so direct informed sampling applies.
     fn is_euclidean(&self) -> bool;
 
+    /// Per-coordinate scales `s` under which the metric is Euclidean, if it is a weighted
+    /// Euclidean one: `distance(a, b) = ‖s ⊙ (b − a)‖` and `interpolate` linear. Nearest-neighbour
+    /// structures then index `s ⊙ x` with kd-trees instead of scanning with `distance`. `None`
+    /// (the default) for any other metric; a Euclidean space may answer either way.
+    fn euclidean_scales(&self) -> Option<&[f64]> {
+        None
+    }
+
     /// Checks that a state has the right length, finite coordinates, and lies in the bounds.
     ///
     /// # Errors
@@ -145,6 +153,9 @@ impl<S: StateSpace + ?Sized> StateSpace for &S {
     }
     fn is_euclidean(&self) -> bool {
         (**self).is_euclidean()
+    }
+    fn euclidean_scales(&self) -> Option<&[f64]> {
+        (**self).euclidean_scales()
     }
 }
 

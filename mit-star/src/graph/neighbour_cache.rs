@@ -15,6 +15,10 @@ const SLACK: usize = 4;
 /// them (a query costs about as much as a few hundred distance computations).
 pub(crate) const MERGE_LIMIT: usize = 400;
 
+/// Neighbours asked of the kd-trees beyond those wanted under a weighted Euclidean metric, so
+/// that a neighbour the scaled coordinates rank a rounding error too far is still among them.
+const WEIGHTED_EXTRA: usize = 2;
+
 impl RandomGeometricGraph {
     /// The number of neighbours of `v` in this batch — entries `0..len` of its list, nearest
     /// first ([`neighbour`](Self::neighbour)) — computing or updating the cached list as needed.
@@ -119,14 +123,25 @@ impl RandomGeometricGraph {
         };
         let query = &self.states[v as usize];
         let alive = Alive::Current(&self.births);
-        let complete = if self.euclidean {
+        // Under a weighted metric the trees hold scaled coordinates, whose distances round
+        // differently from the space's: a little more is asked for, and the space's own
+        // distances decide below.
+        let (extra, grown) = if self.euclidean {
+            (0, 1.0)
+        } else {
+            (WEIGHTED_EXTRA, 1.0 + 1e-9)
+        };
+        let complete = if self.indexed {
             match self.neighbourhood {
                 // One more: the vertex itself is in the set.
                 Neighbourhood::Nearest(_) => {
-                    self.nn
-                        .nearest_alive(query, wanted + 1, &mut found, alive, stop)
+                    let k = wanted + 1 + extra;
+                    self.nn.nearest_alive(query, k, &mut found, alive, stop)
                 }
-                Neighbourhood::Radius(r) => self.nn.within_alive(query, r, &mut found, alive, stop),
+                Neighbourhood::Radius(r) => {
+                    self.nn
+                        .within_alive(query, r * grown, &mut found, alive, stop)
+                }
             }
         } else {
             self.linear_query(v, space, wanted, &mut found, stop)
@@ -138,6 +153,12 @@ impl RandomGeometricGraph {
         for &(_, w) in found.iter() {
             if w != v {
                 out.push(self.entry(v, w, space, heuristic));
+            }
+        }
+        if self.indexed && !self.euclidean {
+            out.sort_unstable_by(|a, b| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id)));
+            if let Neighbourhood::Radius(r) = self.neighbourhood {
+                out.retain(|n| n.distance <= r);
             }
         }
         if let Neighbourhood::Nearest(_) = self.neighbourhood {
@@ -288,13 +309,23 @@ mod tests {
 
     /// The ids of the `k` nearest vertices to `v` (or those within `r`), by brute force.
     fn brute(g: &RandomGeometricGraph, v: u32, rule: Neighbourhood) -> Vec<u32> {
+        brute_with(g, v, rule, euclidean_distance)
+    }
+
+    /// [`brute`] under the metric `distance`.
+    fn brute_with(
+        g: &RandomGeometricGraph,
+        v: u32,
+        rule: Neighbourhood,
+        distance: impl Fn(&[f64], &[f64]) -> f64,
+    ) -> Vec<u32> {
         let x = g.state(v);
         let mut all: Vec<(f64, u32)> = g
             .graph
             .node_indices()
             .map(|n| n.index() as u32)
             .filter(|&w| w != v)
-            .map(|w| (euclidean_distance(x, g.state(w)), w))
+            .map(|w| (distance(x, g.state(w)), w))
             .collect();
         all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         match rule {
@@ -344,5 +375,47 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn weighted_joint_spaces_are_indexed_and_answer_as_a_scan() {
+        use spaces::{Joint, JointSpace, StateSpace};
+        let weights = [1.0, 3.0, 0.5, 1.0, 2.0, 1.0, 0.7];
+        let joints = weights
+            .iter()
+            .enumerate()
+            .map(|(i, &w)| Joint::revolute(format!("j{i}"), -0.5, 0.5).weight(w))
+            .collect();
+        let space = JointSpace::new(joints).unwrap();
+        assert!(!space.is_euclidean());
+        assert_eq!(space.euclidean_scales(), Some(&weights[..]));
+        let mut g = RandomGeometricGraph::for_space(&space);
+        assert!(g.indexed && !g.euclidean);
+        let mut rng = SeededRng::seed_from_u64(11);
+        let mut x = vec![0.0; 7];
+        for batch in 0..12 {
+            let ids: Vec<u32> = (0..120)
+                .map(|_| {
+                    x.iter_mut().for_each(|c| *c = rng.random_range(-0.5..0.5));
+                    g.add_vertex(&x, Vertex::new(VertexKind::Sample, 0.0, 0.0, 0))
+                })
+                .collect();
+            g.commit(&ids);
+            let rule = if batch % 3 == 2 {
+                Neighbourhood::Radius(0.9)
+            } else {
+                Neighbourhood::Nearest(8 + batch)
+            };
+            g.set_neighbourhood(rule);
+            for v in [0u32, 9, 100, ids[5]] {
+                let len = g.neighbours(v, &space, &Euclidean, &Never).unwrap();
+                let got: Vec<u32> = (0..len).map(|i| g.neighbour(v, i).id).collect();
+                let want = brute_with(&g, v, rule, |a, b| space.distance(a, b));
+                assert_eq!(got, want, "batch={batch} v={v}");
+            }
+        }
+        // The kd-trees answered: nothing went to the linear scan.
+        assert_eq!(g.linear_queries, 0);
+        assert!(g.nn.queries() > 0);
     }
 }

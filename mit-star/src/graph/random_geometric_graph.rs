@@ -82,7 +82,11 @@ pub struct RandomGeometricGraph {
     /// Stored edges by their (smaller, larger) vertex pair.
     edges: HashMap<u64, u32, BuildEdgeHasher>,
     pub(crate) nn: NearestNeighbors,
+    /// The metric is the plain Euclidean one (the recent states' distances apply).
     pub(crate) euclidean: bool,
+    /// Neighbours come from `nn`'s kd-trees: a Euclidean metric, plain or weighted
+    /// ([`StateSpace::euclidean_scales`](spaces::StateSpace::euclidean_scales)).
+    pub(crate) indexed: bool,
     /// Cached neighbour list per id, nearest first (`neighbours_len` entries used this batch).
     pub(crate) lists: Chunked<Vec<Neighbour>>,
     /// Batch tag: lists validated with another tag must be brought up to date.
@@ -111,6 +115,23 @@ pub struct RandomGeometricGraph {
 }
 
 impl RandomGeometricGraph {
+    /// An empty graph for the states of `space`: neighbours found with kd-trees under a
+    /// Euclidean metric, plain or weighted, otherwise by a linear scan with the space's metric.
+    pub(crate) fn for_space<S: spaces::StateSpace + ?Sized>(space: &S) -> Self {
+        let n = space.dimension();
+        if space.is_euclidean() {
+            return Self::new(n, true);
+        }
+        match space.euclidean_scales() {
+            Some(scales) if scales.len() == n => Self {
+                nn: NearestNeighbors::with_scales(scales),
+                indexed: true,
+                ..Self::new(n, false)
+            },
+            _ => Self::new(n, false),
+        }
+    }
+
     /// An empty graph for states of `dimension` coordinates. With `euclidean` the neighbours
     /// are found with kd-trees, otherwise by a linear scan with the space's metric.
     pub(crate) fn new(dimension: usize, euclidean: bool) -> Self {
@@ -123,6 +144,7 @@ impl RandomGeometricGraph {
             edges: HashMap::default(),
             nn: NearestNeighbors::new(dimension),
             euclidean,
+            indexed: euclidean,
             lists: Chunked::new(),
             tag: 1,
             log: Chunked::new(),
@@ -168,7 +190,7 @@ impl RandomGeometricGraph {
         self.births.reserve(additional);
         self.lists.reserve(additional);
         self.log.reserve(additional);
-        if self.euclidean {
+        if self.indexed {
             self.nn.reserve_pending(additional);
         }
     }
@@ -176,7 +198,7 @@ impl RandomGeometricGraph {
     /// Makes `ids` visible to neighbour queries and starts a new batch.
     pub(crate) fn commit(&mut self, ids: &[u32]) {
         let (states, births) = (&self.states, &self.births);
-        if self.euclidean {
+        if self.indexed {
             self.nn.insert_born(
                 ids.iter()
                     .map(|&id| (id, births[id as usize], &states[id as usize])),
@@ -196,7 +218,7 @@ impl RandomGeometricGraph {
     /// Builds the committed samples waiting in the nearest-neighbour buffer into trees if the
     /// buffer is large, unless `stop` fires (then they stay in the exact linear buffer).
     pub(crate) fn index_pending(&mut self, stop: &dyn spaces::Stop) {
-        if self.euclidean {
+        if self.indexed {
             self.nn.maintain(Alive::Current(&self.births), stop);
         }
     }

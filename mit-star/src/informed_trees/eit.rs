@@ -170,7 +170,7 @@ where
     ) -> Self {
         let step = <E as EdgeChecker<S, Counted<V>>>::step(&checker);
         let n = space.dimension();
-        let euclidean = space.is_euclidean();
+        let graph = RandomGeometricGraph::for_space(&space);
         Self {
             initial: (sampler.clone(), checker.clone()),
             space,
@@ -187,7 +187,7 @@ where
             start,
             goals,
             step,
-            graph: RandomGeometricGraph::new(n, euclidean),
+            graph,
             forward: ForwardQueue::default(),
             reverse: ReverseQueue::default(),
             reverse_tag: 0,
@@ -287,8 +287,7 @@ where
             return Ok(());
         }
         self.validate_query()?;
-        let n = self.space.dimension();
-        self.graph = RandomGeometricGraph::new(n, self.space.is_euclidean());
+        self.graph = RandomGeometricGraph::for_space(&self.space);
         let start = self.start.clone();
         let vertex = self.new_vertex(VertexKind::Start, &start);
         self.start_id = self.graph.add_vertex(&start, vertex);
@@ -475,7 +474,7 @@ where
         self.sampler = self.initial.0.clone();
         self.checker = self.initial.1.clone();
         self.validity.reset();
-        self.graph = RandomGeometricGraph::new(self.space.dimension(), self.space.is_euclidean());
+        self.graph = RandomGeometricGraph::for_space(&self.space);
         self.forward.clear();
         self.reverse.clear();
         self.reverse_tag = 0;

@@ -55,6 +55,11 @@ pub struct NearestNeighbors {
     queries: u64,
     /// The arrays of the last abandoned build, reused by the next one.
     spare: Spare,
+    /// Per-coordinate scales of a weighted Euclidean metric (empty: plain Euclidean): points
+    /// and queries are indexed as `s ⊙ x` ([`with_scales`](Self::with_scales)).
+    scales: Vec<f64>,
+    /// A point or query scaled, for the call at hand.
+    scaled: Vec<f64>,
 }
 
 impl NearestNeighbors {
@@ -68,7 +73,41 @@ impl NearestNeighbors {
             dead: 0,
             queries: 0,
             spare: Spare::default(),
+            scales: Vec::new(),
+            scaled: Vec::new(),
         }
+    }
+
+    /// An empty set of points under the weighted Euclidean metric `‖s ⊙ (a − b)‖` of
+    /// `scales` (one per coordinate): points and queries are indexed as `s ⊙ x`, so the trees
+    /// answer for the weighted metric (a joint space's weights), up to the rounding of the
+    /// products. Distances in the results are the weighted ones.
+    ///
+    /// ```
+    /// use mit_star::{NearestNeighbors, Neighbours};
+    /// // The second coordinate counts ten times the first.
+    /// let mut nn = NearestNeighbors::with_scales(&[1.0, 10.0]);
+    /// nn.insert([(0u32, &[0.0, 0.1][..]), (1, &[0.5, 0.0][..])]);
+    /// let mut found = Neighbours::new();
+    /// nn.nearest(&[0.0, 0.0], 1, &mut found);
+    /// assert_eq!(found.iter().map(|&(_, id)| id).collect::<Vec<_>>(), [1]);
+    /// ```
+    pub fn with_scales(scales: &[f64]) -> Self {
+        Self {
+            scales: scales.to_vec(),
+            scaled: vec![0.0; scales.len()],
+            ..Self::new(scales.len())
+        }
+    }
+
+    /// `x` scaled into `self.scaled` (taken out: give it back), or `x` itself.
+    fn scale<'a>(scales: &[f64], scaled: &'a mut Vec<f64>, x: &'a [f64]) -> &'a [f64] {
+        if scales.is_empty() {
+            return x;
+        }
+        scaled.clear();
+        scaled.extend(scales.iter().zip(x).map(|(s, v)| s * v));
+        scaled
     }
 
     /// Number of live points.
@@ -106,6 +145,7 @@ impl NearestNeighbors {
     ) {
         for (id, birth, point) in points {
             assert_eq!(point.len(), self.dimension, "point of wrong dimension");
+            let point = Self::scale(&self.scales, &mut self.scaled, point);
             self.pending.push(id, birth, point);
             self.stored += 1;
         }
@@ -241,6 +281,21 @@ impl NearestNeighbors {
         self.queries += 1;
         self.maintain(alive, stop);
         found.reset(k);
+        let mut scaled = std::mem::take(&mut self.scaled);
+        let query = Self::scale(&self.scales, &mut scaled, query);
+        let complete = self.nearest_scaled(query, found, alive, stop);
+        self.scaled = scaled;
+        complete
+    }
+
+    /// [`nearest_alive`](Self::nearest_alive) for a query already scaled, after maintenance.
+    fn nearest_scaled(
+        &self,
+        query: &[f64],
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+        stop: &dyn Stop,
+    ) -> bool {
         let mut poll = Poll::new(stop, self.dimension);
         // Largest tree first: it holds most of the neighbours, so the bound tightens early.
         for tree in &self.trees {
@@ -274,6 +329,22 @@ impl NearestNeighbors {
         self.queries += 1;
         self.maintain(alive, stop);
         found.reset(usize::MAX);
+        let mut scaled = std::mem::take(&mut self.scaled);
+        let query = Self::scale(&self.scales, &mut scaled, query);
+        let complete = self.within_scaled(query, radius, found, alive, stop);
+        self.scaled = scaled;
+        complete
+    }
+
+    /// [`within_alive`](Self::within_alive) for a query already scaled, after maintenance.
+    fn within_scaled(
+        &self,
+        query: &[f64],
+        radius: f64,
+        found: &mut Neighbours,
+        alive: Alive<'_>,
+        stop: &dyn Stop,
+    ) -> bool {
         let radius2 = radius * radius;
         let mut poll = Poll::new(stop, self.dimension);
         for tree in &self.trees {
