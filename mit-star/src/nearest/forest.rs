@@ -100,7 +100,8 @@ impl NearestNeighbors {
         }
     }
 
-    /// `x` scaled into `self.scaled` (taken out: give it back), or `x` itself.
+    /// `x` scaled by `scales` into `scaled`, or `x` itself for a plain Euclidean metric
+    /// (`scales` empty).
     fn scale<'a>(scales: &[f64], scaled: &'a mut Vec<f64>, x: &'a [f64]) -> &'a [f64] {
         if scales.is_empty() {
             return x;
@@ -278,14 +279,10 @@ impl NearestNeighbors {
         alive: Alive<'_>,
         stop: &dyn Stop,
     ) -> bool {
-        self.queries += 1;
-        self.maintain(alive, stop);
         found.reset(k);
-        let mut scaled = std::mem::take(&mut self.scaled);
-        let query = Self::scale(&self.scales, &mut scaled, query);
-        let complete = self.nearest_scaled(query, found, alive, stop);
-        self.scaled = scaled;
-        complete
+        self.query_with(query, alive, stop, |nn, query| {
+            nn.nearest_scaled(query, found, alive, stop)
+        })
     }
 
     /// [`nearest_alive`](Self::nearest_alive) for a query already scaled, after maintenance.
@@ -326,14 +323,27 @@ impl NearestNeighbors {
         alive: Alive<'_>,
         stop: &dyn Stop,
     ) -> bool {
+        found.reset(usize::MAX);
+        self.query_with(query, alive, stop, |nn, query| {
+            nn.within_scaled(query, radius, found, alive, stop)
+        })
+    }
+
+    /// What every query does first — counts it, maintains the trees, scales the query under
+    /// a weighted metric — then `ask` with the query as the trees hold their points.
+    fn query_with<R>(
+        &mut self,
+        query: &[f64],
+        alive: Alive<'_>,
+        stop: &dyn Stop,
+        ask: impl FnOnce(&Self, &[f64]) -> R,
+    ) -> R {
         self.queries += 1;
         self.maintain(alive, stop);
-        found.reset(usize::MAX);
         let mut scaled = std::mem::take(&mut self.scaled);
-        let query = Self::scale(&self.scales, &mut scaled, query);
-        let complete = self.within_scaled(query, radius, found, alive, stop);
+        let answer = ask(self, Self::scale(&self.scales, &mut scaled, query));
         self.scaled = scaled;
-        complete
+        answer
     }
 
     /// [`within_alive`](Self::within_alive) for a query already scaled, after maintenance.

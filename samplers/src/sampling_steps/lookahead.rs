@@ -5,8 +5,9 @@ use validity::StateValidity;
 
 use crate::SampleError;
 
-/// The most candidates drawn ahead at once, whatever batch width a checker asks for.
-const MOST_AHEAD: usize = 16;
+/// The most states a sampler hands a checker in one batch (candidates drawn ahead, points of
+/// a segment search), whatever batch width the checker asks for.
+pub(crate) const MOST_BATCHED: usize = 16;
 
 /// Candidates a sampler drew ahead of need, with their validity, decided together by one
 /// batched call ([`StateValidity::are_valid`]) of up to the checker's
@@ -24,7 +25,7 @@ pub(crate) struct Lookahead {
     /// Candidates drawn, `dimension` coordinates each.
     states: Vec<f64>,
     /// Whether each is valid.
-    valid: [bool; MOST_AHEAD],
+    valid: [bool; MOST_BATCHED],
     /// How many are held; the next to hand out.
     held: usize,
     next: usize,
@@ -64,12 +65,12 @@ impl Lookahead {
         let under = cost.map(f64::to_bits);
         if self.next == self.held
             || self.drawn_under != under
-            || self.states.len() != MOST_AHEAD * dimension
+            || self.states.len() != MOST_BATCHED * dimension
         {
             self.clear();
-            self.states.resize(MOST_AHEAD * dimension, 0.0);
+            self.states.resize(MOST_BATCHED * dimension, 0.0);
             self.drawn_under = under;
-            let width = validity.batch_width().clamp(1, MOST_AHEAD);
+            let width = validity.batch_width().clamp(1, MOST_BATCHED);
             for candidate in self.states.chunks_exact_mut(dimension).take(width) {
                 match draw(candidate) {
                     Ok(()) => self.held += 1,

@@ -4,10 +4,8 @@
 use spaces::{StateSpace, Stop};
 use validity::{EdgeGrid, StateValidity};
 
+use super::lookahead::MOST_BATCHED;
 use crate::{SampleError, SamplerCounters, SamplerError};
-
-/// The most points of a segment decided in one batch, whatever batch width a checker asks for.
-const MOST_BATCHED: usize = 16;
 
 /// Tests up to `checks` states of a segment `a → b` in bisection order — the midpoint, then the
 /// quarter points, then the eighths, … — and returns the first that is accepted and valid.
