@@ -191,18 +191,21 @@ pub fn build_planner<P: PlanningProblem>(
         return Ok(planner);
     }
     let certification = parameters.for_problem(problem)?.certification.unwrap_or(1);
-    Ok(Box::new(crate::Simplifying::new(
-        planner,
-        (problem.space().clone(), problem.validity().clone()),
-        (problem.check_step()?, certification),
-        crate::PathSimplifier::new()
-            .seed(parameters.seed)
-            .smoothing_rounds(if parameters.simplify_smoothing {
-                crate::PathSimplifier::DEFAULT_SMOOTHING_ROUNDS
-            } else {
-                0
-            }),
-    )))
+    Ok(Box::new(
+        crate::Simplifying::new(
+            planner,
+            (problem.space().clone(), problem.validity().clone()),
+            (problem.check_step()?, certification),
+            crate::PathSimplifier::new()
+                .seed(parameters.seed)
+                .smoothing_rounds(if parameters.simplify_smoothing {
+                    crate::PathSimplifier::DEFAULT_SMOOTHING_ROUNDS
+                } else {
+                    0
+                }),
+        )
+        .polish_when_idle(parameters.polish_when_idle.then_some(parameters.seed)),
+    ))
 }
 
 /// [`build_planner`] with another validity checker than the problem's own — a wrapper that

@@ -145,6 +145,15 @@ pub struct Parameters {
     /// cost (`true`, the default, as its authors' planner), or searches under the cost of the
     /// path as found (`false`).
     pub aorrtc_simplify: bool,
+    /// While an anytime planner that simplifies its solutions (AORRTC with
+    /// [`aorrtc_simplify`](Self::aorrtc_simplify); any planner with
+    /// [`simplify_solutions`](Self::simplify_solutions)) finds nothing cheaper for 2 000
+    /// iterations, its best path is polished: shortcuts of whole configurations and of single
+    /// joints, then smoothing rounds of midpoint relaxation and random perturbations, every new
+    /// edge checked and certified, for at most about one edge check per idle iteration. A polish
+    /// that gains nothing doubles the wait before the next (`true`, the default), or nothing is
+    /// done between solutions (`false`: AORRTC as its authors' planner). Not in the papers.
+    pub polish_when_idle: bool,
     /// AORRTC's cost-bound resampling: after a new state joins a tree, up to this many more
     /// parents are sought under redrawn cost bounds, each taken if its edge is valid and
     /// cheaper (1000, as its authors' planner; 0: the first parent stays).
@@ -204,6 +213,7 @@ impl Default for Parameters {
             simplify_smoothing: true,
             warm_start: false,
             aorrtc_simplify: true,
+            polish_when_idle: true,
             aorrtc_resamples: 1000,
             goal_bias: 0.05,
             rrt_rewire_factor: 1.2,
@@ -438,6 +448,7 @@ impl Parameters {
             ("simplify_smoothing", self.simplify_smoothing.to_string()),
             ("warm_start", self.warm_start.to_string()),
             ("aorrtc_simplify", self.aorrtc_simplify.to_string()),
+            ("polish_when_idle", self.polish_when_idle.to_string()),
             ("aorrtc_resamples", self.aorrtc_resamples.to_string()),
             ("goal_bias", self.goal_bias.to_string()),
             ("rrt_rewire_factor", self.rrt_rewire_factor.to_string()),

@@ -7,6 +7,7 @@ use mit_star::{
     BuildError, FirstSolution, Parameters, PathSimplifier, Planner, RrtConnect, TerminationExt,
     TimeLimit,
 };
+use problems::PlanningProblem;
 use spaces::{Deadline, StateSpace};
 
 fn rrt_path(problem: &problems::Problem, seed: u64) -> Vec<Vec<f64>> {
@@ -203,4 +204,91 @@ fn a_simplifying_planner_smooths_unless_told_not_to() {
     assert_eq!(off.0, Some(0));
     // The same first path and shortcuts; smoothing only ever shortens.
     assert!(on.1 <= off.1, "{on:?} {off:?}");
+}
+
+#[test]
+fn stages_report_whole_shortcuts_first_then_per_joint_ones_then_smoothing() {
+    let problem = problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let path = rrt_path(&problem, 5);
+    let checks = (
+        PlanningProblem::check_step(&problem).unwrap(),
+        problem.certification(),
+    );
+    let (space, validity) = (problem.space(), problem.validity());
+    let simplifier = PathSimplifier::new().seed(3).smoothing_rounds(2);
+    let mut stages = Vec::new();
+    let last = simplifier
+        .simplify_in_stages(space, validity, checks, &path, &spaces::Never, &mut |s| {
+            stages.push(s.clone());
+        })
+        .unwrap();
+    // The first stage is what whole shortcuts alone make of the path, so a caller has it
+    // before the slower per-joint shortcuts run.
+    let whole = simplifier
+        .clone()
+        .partial_shortcuts(false)
+        .smoothing_rounds(0)
+        .simplify_in(space, validity, checks, &path, &spaces::Never)
+        .unwrap();
+    assert_eq!(stages[0], whole);
+    assert_eq!(stages[0].partial_shortcuts, 0);
+    // Then per-joint shortcuts on it, then each smoothing round on the stage before.
+    assert!(stages.len() >= 3, "{} stages", stages.len());
+    assert_eq!(stages[1].original_cost, stages[0].cost);
+    assert!(stages[1].partial_shortcuts > 0, "{:?}", stages[1]);
+    for pair in stages.windows(2) {
+        assert_eq!(pair[1].original_cost, pair[0].cost);
+        assert!(pair[1].cost <= pair[0].cost);
+    }
+    assert_eq!(stages.last(), Some(&last));
+    // Without per-joint shortcuts there is no second shortcut stage.
+    let mut count = 0;
+    simplifier
+        .partial_shortcuts(false)
+        .smoothing_rounds(0)
+        .simplify_in_stages(space, validity, checks, &path, &spaces::Never, &mut |_| {
+            count += 1;
+        })
+        .unwrap();
+    assert_eq!(count, 1);
+}
+
+#[test]
+fn a_simplifying_planner_polishes_while_the_inner_planner_finds_nothing_cheaper() {
+    let problem = problems::DividingWalls::new(2)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let run = |polish: bool| {
+        let parameters = Parameters {
+            seed: 4,
+            simplify_solutions: true,
+            polish_when_idle: polish,
+            ..Parameters::default()
+        };
+        let mut planner =
+            mit_star::build_planner(mit_star::Configuration::MitStar, &problem, &parameters)
+                .unwrap();
+        // An iteration limit still ends the call: it counts the inner planner's iterations
+        // since its last cheaper solution, across the stretches that polishes cut.
+        let outcome = planner
+            .solve(&mit_star::IterationLimit::new(30_000))
+            .unwrap();
+        let path: Vec<&[f64]> = outcome.solution().unwrap().path.iter().collect();
+        for w in path.windows(2) {
+            assert!(problem.world().segment_verdict(w[0], w[1]).is_valid());
+        }
+        let costs: Vec<f64> = planner.trace().points().iter().map(|p| p.cost).collect();
+        assert!(costs.windows(2).all(|w| w[1] < w[0]), "{costs:?}");
+        let settings = planner.settings();
+        let polished = &settings.iter().find(|(k, _)| k == "polished_solutions");
+        polished.unwrap().1.parse::<u64>().unwrap()
+    };
+    assert!(run(true) > 0);
+    assert_eq!(run(false), 0);
 }

@@ -12,7 +12,8 @@
 //! (joint-space path length) of the best path at 10 ms, 100 ms and 1 s (a run without a path by
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
-//! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`, `aorrtc_simplify=false`, `batch_size=200`, `rewire_factor=1.5`,
+//! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`, `aorrtc_simplify=false`,
+//! `polish_when_idle=false`, `batch_size=200`, `rewire_factor=1.5`,
 //! `near_terminals=0.3`, …; `aorrtc_moves=perturb|relax|relax-then-perturb` for AORRTC's
 //! smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only); `csv=FILE` also writes one line per
 //! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
@@ -76,6 +77,7 @@ fn main() {
             "simplify_smoothing" => base.simplify_smoothing = on(),
             "warm_start" => base.warm_start = on(),
             "aorrtc_simplify" => base.aorrtc_simplify = on(),
+            "polish_when_idle" => base.polish_when_idle = on(),
             "rrt_dynamic_domain" => base.rrt_dynamic_domain = on(),
             "batch_size" => base.batch_size = number() as usize,
             "rewire_factor" => base.rewire_factor = number(),

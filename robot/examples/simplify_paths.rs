@@ -8,7 +8,8 @@
 //! Plans the named configuration on the first `N` problems of each of the five
 //! MotionBenchMaker scenes (RRT-Connect with range 1 to its first solution, an asymptotically
 //! optimal planner for 1 s), simplifies each path for at most `SECONDS` (`whole` after it:
-//! without per-joint shortcuts; `smooth=N`: `N` smoothing sweeps instead of the default;
+//! without per-joint shortcuts; `attempts=N`: shortcuts end after `N` failures in a row;
+//! `smooth=N`: `N` smoothing sweeps instead of the default;
 //! `moves=relax|perturb|both`: the smoothing moves), and audits every
 //! simplified edge continuously in `f64` with parry. Prints per scene the median path length
 //! before and after, the median straight-line distance (a lower bound), the median time the
@@ -42,6 +43,9 @@ fn main() {
         match option.split_once('=') {
             // Whole-configuration shortcuts only.
             None if option == "whole" => partial = false,
+            Some(("attempts", n)) => {
+                simplifier = simplifier.attempts(n.parse().expect("an attempt count"));
+            }
             Some(("smooth", n)) => {
                 simplifier = simplifier.smoothing_rounds(n.parse().expect("a sweep count"));
             }
@@ -53,7 +57,9 @@ fn main() {
                     other => panic!("unknown smoothing moves {other}"),
                 });
             }
-            _ => panic!("unknown option {option}: whole, smooth=N or moves=relax|perturb|both"),
+            _ => panic!(
+                "unknown option {option}: whole, attempts=N, smooth=N or moves=relax|perturb|both"
+            ),
         }
     }
     let configuration: Configuration = name.parse().expect("a planner configuration");

@@ -11,6 +11,10 @@ use crate::BuildError;
 /// Smoothing sweeps per smoothing round, before its shortcuts.
 const SWEEPS_PER_ROUND: usize = 5;
 
+/// Mixed into the seed of the stage of per-joint shortcuts that follows the whole ones in
+/// [`PathSimplifier::simplify_in_stages`], so it does not repeat their draws.
+const PARTIAL_STAGE_SEED: u64 = 0x6a09_e667_f3bc_c908;
+
 /// Makes a valid path shorter, keeping its ends: OMPL's `PathSimplifier` steps (vertex
 /// reduction, random shortcuts between points anywhere on the path and per-coordinate
 /// shortcuts), then smoothing rounds that move interior states off the path where that
@@ -198,7 +202,9 @@ impl PathSimplifier {
     }
 
     /// [`simplify_in`](Self::simplify_in) that hands each stage's path to `report` as soon as
-    /// it is ready: the shortcut path first, then the path after each smoothing round (each
+    /// it is ready: the path after shortcuts of whole configurations first, then (with
+    /// [`partial_shortcuts`](Self::partial_shortcuts)) after shortcuts of whole
+    /// configurations and single coordinates on it, then the path after each smoothing round (each
     /// [`Simplified`] starts from the previous stage's path, so its `original_cost` is that
     /// path's cost). A planner that reports its best path at any time (an anytime planner's
     /// trace) takes the shortcut path while it is smoothed. The rounds end as
@@ -219,9 +225,20 @@ impl PathSimplifier {
         stop: &dyn Stop,
         report: &mut dyn FnMut(&Simplified),
     ) -> Result<Simplified, BuildError> {
-        let shortcuts = self.clone().smoothing_rounds(0);
-        let mut current = shortcuts.simplify_in(space, validity, checks, path, stop)?;
+        // Whole shortcuts first (a few milliseconds on an arm), then, if asked, per-joint
+        // ones on their result (several times longer), each stage reported when ready.
+        let whole = self.clone().partial_shortcuts(false).smoothing_rounds(0);
+        let mut current = whole.simplify_in(space, validity, checks, path, stop)?;
         report(&current);
+        if self.partial && !current.stopped {
+            let partial = self
+                .clone()
+                .seed(self.seed ^ PARTIAL_STAGE_SEED)
+                .smoothing_rounds(0);
+            let shortened = partial.simplify_in(space, validity, checks, &current.path, stop)?;
+            report(&shortened);
+            current = shortened;
+        }
         for round in 0..self.smoothing_rounds {
             if current.stopped {
                 break;

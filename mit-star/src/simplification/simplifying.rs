@@ -5,11 +5,12 @@ use std::time::{Duration, Instant};
 use spaces::StateSpace;
 use validity::StateValidity;
 
+use super::IdlePolish;
 use crate::planner::keep_if_cheaper;
 use crate::termination::Wrapped;
 use crate::{
-    Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot, Solution,
-    Termination, TerminationExt, Trace,
+    Counters, IterationLimit, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot,
+    Solution, Termination, TerminationExt, Trace,
 };
 
 /// Wraps a planner so that each solution it finds is reported at once and then shortened by
@@ -25,9 +26,12 @@ use crate::{
 /// simplifier adds is checked and certified as the planner's are. The shorter path is then
 /// offered to the inner planner ([`Planner::offer_solution`]): the asymptotically optimal
 /// planners of the crate take it as their best solution, so their cost bound, informed set and
-/// pruning follow the shorter cost; others ignore it. Time limits
-/// and cost thresholds apply to the whole call; an [`IterationLimit`](crate::IterationLimit)
-/// counts the iterations of each stretch of planning between two solutions.
+/// pruning follow the shorter cost; others ignore it. With
+/// [`polish_when_idle`](Self::polish_when_idle), the best path is also polished whenever the
+/// inner planner has found nothing cheaper for a while, and each shorter stage is offered in
+/// the same way. Time limits
+/// and cost thresholds apply to the whole call; an [`IterationLimit`] counts the iterations of
+/// each stretch of planning between two of the inner planner's solutions.
 ///
 /// [`Parameters`]: crate::Parameters
 #[derive(Debug, Clone)]
@@ -48,6 +52,8 @@ pub struct Simplifying<P, S, V> {
     taken: u64,
     /// States moved by smoothing.
     smoothing_moves: u64,
+    /// Polishes of the best path while the inner planner finds nothing cheaper (`None`: off).
+    polish: Option<IdlePolish>,
 }
 
 impl<P, S, V> Simplifying<P, S, V>
@@ -76,7 +82,18 @@ where
             runs: 0,
             taken: 0,
             smoothing_moves: 0,
+            polish: None,
         }
+    }
+
+    /// Polishes the best path whenever the inner planner has found nothing cheaper for a
+    /// while ([`polish_when_idle`](crate::Parameters::polish_when_idle)), with random draws
+    /// seeded by `seed`; each polished path is offered to the inner planner as a simplified one
+    /// is. `None` turns it off (the default).
+    #[must_use]
+    pub fn polish_when_idle(mut self, seed: Option<u64>) -> Self {
+        self.polish = seed.map(IdlePolish::new);
+        self
     }
 
     /// The wrapped planner.
@@ -121,6 +138,48 @@ where
             });
     }
 
+    /// Polishes the best path with at most `budget` polls of the stop (about one per edge
+    /// check), each stage kept and offered to the inner planner if cheaper.
+    fn polish(&mut self, budget: u64, termination: &dyn Termination, started: Instant) {
+        let (Some(polish), Some(best)) = (&mut self.polish, &self.solution) else {
+            return;
+        };
+        let before = best.cost;
+        let path: Vec<Vec<f64>> = best.path.iter().map(<[f64]>::to_vec).collect();
+        let simplifier = polish.next_simplifier();
+        let polls = std::cell::Cell::new(0_u64);
+        let stop = || {
+            polls.set(polls.get() + 1);
+            let progress = Progress::new(started.elapsed(), 0, before);
+            polls.get() > budget || termination.should_terminate(&progress)
+        };
+        let Self {
+            inner,
+            space,
+            validity,
+            checks,
+            solution,
+            trace,
+            elapsed,
+            taken,
+            smoothing_moves,
+            ..
+        } = self;
+        let _ =
+            simplifier.simplify_in_stages(space, validity, *checks, &path, &stop, &mut |stage| {
+                *smoothing_moves += stage.smoothing_moves;
+                let shorter = stage.solution(space.dimension());
+                if shorter.cost < stage.original_cost && inner.offer_solution(&shorter) {
+                    *taken += 1;
+                }
+                keep_if_cheaper((solution, trace), *elapsed + started.elapsed(), shorter);
+            });
+        let paid = self.best_cost() < before;
+        if let Some(polish) = &mut self.polish {
+            polish.polished(paid);
+        }
+    }
+
     /// Makes `solution` the best one, with a trace point, if it is cheaper.
     fn keep(&mut self, solution: Solution, started: Instant) {
         let best = (&mut self.solution, &mut self.trace);
@@ -149,6 +208,9 @@ where
 
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
         let started = Instant::now();
+        // Iterations of the inner planner since its last cheaper solution, over the stretches
+        // that polishes cut.
+        let mut idle = 0;
         loop {
             let before = self.inner.best_cost();
             let outer = Wrapped {
@@ -156,15 +218,36 @@ where
                 started,
                 best: self.best_cost(),
             };
-            // Back as soon as the inner planner improves on `before`.
-            let outcome = self.inner.solve(&(&outer).or(Improved(before)))?;
+            // Back as soon as the inner planner improves on `before`, or, when polishing a
+            // solution, once it has found nothing cheaper for the polish's wait.
+            let wait = match (&self.polish, &self.solution) {
+                (Some(polish), Some(_)) => polish.wait(),
+                _ => u64::MAX,
+            };
+            let counted = self.inner.counters().iterations;
+            let outcome = self
+                .inner
+                .solve(&(&outer).or(Improved(before)).or(IterationLimit::new(wait)))?;
+            let ran = self.inner.counters().iterations.saturating_sub(counted);
             let found = self.inner.best_cost() < before;
             if found && let Outcome::Solved(solution) = &outcome {
+                idle = 0;
+                if let Some(polish) = &mut self.polish {
+                    polish.improved();
+                }
                 self.adopt(solution, termination, started);
             }
-            let progress = Progress::new(started.elapsed(), 0, self.best_cost());
-            if !found || termination.should_terminate(&progress) {
+            let progress = Progress::new(started.elapsed(), idle, self.best_cost());
+            if termination.should_terminate(&progress) {
                 break;
+            }
+            if !found {
+                idle += ran;
+                // The inner planner stopped on its own, or waited long enough to polish.
+                if ran < wait {
+                    break;
+                }
+                self.polish(ran, termination, started);
             }
         }
         self.elapsed += started.elapsed();
@@ -182,6 +265,9 @@ where
         self.runs = 0;
         self.taken = 0;
         self.smoothing_moves = 0;
+        if let Some(polish) = &mut self.polish {
+            polish.reset();
+        }
     }
 
     fn best_cost(&self) -> f64 {
@@ -201,6 +287,8 @@ where
         settings.push(("simplified_solutions".into(), self.runs.to_string()));
         settings.push(("simplified_taken_by_planner".into(), self.taken.to_string()));
         settings.push(("smoothing_moves".into(), self.smoothing_moves.to_string()));
+        let polished = self.polish.as_ref().map_or(0, IdlePolish::count);
+        settings.push(("polished_solutions".into(), polished.to_string()));
         settings
     }
 

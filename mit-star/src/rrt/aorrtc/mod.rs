@@ -11,6 +11,7 @@ use spaces::{SeededRng, StateSpace, States};
 use validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
 use crate::rrt::rrt_core::{RrtCore, problem_parts};
+use crate::simplification::IdlePolish;
 use crate::termination::SolveStop;
 use crate::{
     BuildError, Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, RrtConnect,
@@ -42,7 +43,10 @@ const MAX_SEARCH_STATES: usize = 10_000;
 /// shortened by a [`PathSimplifier`] (`aorrtc_simplify`: shortcuts, then smoothing rounds
 /// unless `simplify_smoothing` is off, each stage a point of the trace), and the next search
 /// starts under its cost. A search whose trees reach 10 000 states without success starts
-/// afresh under the same bound. The searches stop when the best cost reaches the straight-line lower bound.
+/// afresh under the same bound. While the searches find nothing cheaper, the best path is
+/// polished from time to time (`polish_when_idle`, on by default; not in AORRTC's paper: per-joint
+/// shortcuts and random perturbations, for at most about one edge check per idle iteration).
+/// The searches stop when the best cost reaches the straight-line lower bound.
 ///
 /// RRT-Connect's switches (`rrt_dynamic_domain`, `rrt_balance`, `rrt_halton`,
 /// `rrt_valid_samples`) apply to the first search, and the first two to the cost-bounded ones.
@@ -52,7 +56,7 @@ const MAX_SEARCH_STATES: usize = 10_000;
 /// # Arguments
 /// A query (space, validity checker, start, goals) and [`Parameters`](crate::Parameters):
 /// `resolution`, `range` (as RRT-Connect's), `seed`, `certification`, `aorrtc_simplify`,
-/// `simplify_smoothing`, `aorrtc_resamples`.
+/// `simplify_smoothing`, `polish_when_idle`, `aorrtc_resamples`.
 ///
 /// # Returns
 /// From [`solve`](Planner::solve): the best path so far; the trace has a point for every
@@ -92,6 +96,10 @@ pub struct Aorrtc<S, V, E = DenseChecker> {
     /// Cost-bounded searches started, and paths simplified.
     searches: u64,
     simplified: u64,
+    /// When the best path is polished.
+    polish: IdlePolish,
+    /// Search iterations since the best cost last fell or the last polish.
+    idle: u64,
 }
 
 impl<S, V, E> Aorrtc<S, V, E>
@@ -134,6 +142,8 @@ where
             ends: (vec![0.0; n], vec![0.0; n]),
             searches: 0,
             simplified: 0,
+            polish: IdlePolish::new(seed),
+            idle: 0,
         })
     }
 
@@ -189,20 +199,50 @@ where
         stop: &SolveStop<'_>,
     ) {
         let core = &mut self.connect.core;
-        let states: Vec<Vec<f64>> = path.iter().map(<[f64]>::to_vec).collect();
         core.record(path, stop);
         if !core.parameters.aorrtc_simplify || core.best_cost() >= before {
             return;
         }
+        self.simplified += 1;
+        let simplifier = self.simplifier.clone();
+        self.simplify_best(&simplifier, (before, None), termination, stop);
+    }
+
+    /// Polishes the best path after the searches failed to beat it for `budget` iterations
+    /// ([`IdlePolish`]): with per-joint shortcuts and random perturbations, which the
+    /// simplification of a new path leaves out for speed.
+    fn polish(&mut self, budget: u64, termination: &dyn Termination, stop: &SolveStop<'_>) {
+        let before = self.best_cost();
+        let simplifier = self.polish.next_simplifier();
+        self.simplify_best(&simplifier, (before, Some(budget)), termination, stop);
+        self.polish.polished(self.best_cost() < before);
+    }
+
+    /// Runs `simplifier` on the best path in stages, each stage taken if cheaper, under a stop
+    /// that sees the cost `before` and fires after `budget` polls (if any): a count, not a
+    /// time, so that runs under an iteration limit repeat.
+    fn simplify_best(
+        &mut self,
+        simplifier: &PathSimplifier,
+        (before, budget): (f64, Option<u64>),
+        termination: &dyn Termination,
+        stop: &SolveStop<'_>,
+    ) {
+        let core = &mut self.connect.core;
+        let Some(best) = &core.solution else {
+            return;
+        };
+        let states: Vec<Vec<f64>> = best.path.iter().map(<[f64]>::to_vec).collect();
         let step = <E as EdgeChecker<S, Counted<V>>>::step(&core.checker);
         let certification = core.certification();
         let started = std::time::Instant::now();
         let elapsed = stop.elapsed();
+        let polls = std::cell::Cell::new(0_u64);
         let halt = || {
+            polls.set(polls.get() + 1);
             let progress = Progress::new(elapsed + started.elapsed(), 0, before);
-            termination.should_terminate(&progress)
+            termination.should_terminate(&progress) || budget.is_some_and(|b| polls.get() > b)
         };
-        self.simplified += 1;
         let RrtCore {
             space,
             validity,
@@ -211,7 +251,7 @@ where
             elapsed,
             ..
         } = core;
-        let _ = self.simplifier.simplify_in_stages(
+        let _ = simplifier.simplify_in_stages(
             space,
             validity,
             (step, certification),
@@ -241,6 +281,21 @@ where
         }
         self.connect.core.counters.iterations += 1;
         let best = self.best_cost();
+        let p = &self.connect.core.parameters;
+        if self.search.bound != best {
+            self.idle = 0;
+            self.polish.improved();
+        } else if p.aorrtc_simplify && p.polish_when_idle {
+            self.idle += 1;
+            if self.idle >= self.polish.wait() {
+                // The searches have not beaten the best path for a while: polish it.
+                let budget = std::mem::take(&mut self.idle);
+                self.polish(budget, termination, stop);
+                if self.best_cost() < best {
+                    return true;
+                }
+            }
+        }
         if self.search.bound != best || self.search.size() >= MAX_SEARCH_STATES {
             let core = &self.connect.core;
             self.search.restart(&core.start, &core.goals, best);
@@ -288,6 +343,8 @@ where
         self.search = AoxTrees::new(self.connect.core.space.dimension());
         self.searches = 0;
         self.simplified = 0;
+        self.polish.reset();
+        self.idle = 0;
     }
 
     fn offer_solution(&mut self, solution: &crate::Solution) -> bool {
@@ -325,6 +382,7 @@ where
             ("aorrtc_resamples", p.aorrtc_resamples.to_string()),
             ("searches", self.searches.to_string()),
             ("simplified_solutions", self.simplified.to_string()),
+            ("polished_solutions", self.polish.count().to_string()),
         ])
     }
 

@@ -138,3 +138,35 @@ fn each_solution_is_shortcut_then_smoothed_and_every_stage_is_a_trace_point() {
     assert!(on.len() > 2, "{on:?}");
     assert!(on.windows(2).all(|w| w[1] < w[0]), "{on:?}");
 }
+
+#[test]
+fn searches_that_stop_paying_are_followed_by_a_polish_unless_switched_off() {
+    let problem = walls();
+    let run = |polish: bool| {
+        let parameters = Parameters {
+            seed: 3,
+            polish_when_idle: polish,
+            ..Parameters::default()
+        };
+        let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
+        let outcome = planner.solve(&IterationLimit::new(60_000)).unwrap();
+        assert_valid(&problem, &outcome.solution().unwrap().path);
+        let costs: Vec<f64> = planner.trace().points().iter().map(|p| p.cost).collect();
+        assert!(costs.windows(2).all(|w| w[1] < w[0]), "{costs:?}");
+        let settings = planner.settings();
+        let count = |key: &str| {
+            let value = &settings.iter().find(|(k, _)| k == key).unwrap().1;
+            value.parse::<u64>().unwrap()
+        };
+        count("polished_solutions")
+    };
+    // A polish follows at least FIRST_POLISH_AFTER iterations in which the searches found
+    // nothing cheaper.
+    let polished = run(true);
+    assert!(polished > 0);
+    assert!(
+        polished <= 60_000 / crate::simplification::IdlePolish::new(0).wait(),
+        "{polished} polishes"
+    );
+    assert_eq!(run(false), 0);
+}
