@@ -22,8 +22,9 @@ const PARTIAL_STAGE_SEED: u64 = 0x6a09_e667_f3bc_c908;
 /// ([`smoothing_rounds`](Self::smoothing_rounds)), and vertex reduction of the corners left,
 /// with every edge it adds checked on the problem's grid and certified as the problem asks
 /// (for arms, every configuration of the edge proven collision-free), so the path stays as
-/// valid as a planner's. The shortcuts stop after `attempts` in a row fail or gain less than
-/// 10⁻⁴ of the path's length, the smoothing rounds when one gains less than that; everything
+/// valid as a planner's. The shortcuts stop after `attempts` in a row fail or would gain less
+/// than 10⁻⁴ of the path's length (those are not checked), the smoothing rounds when one gains
+/// less than that; everything
 /// stops when the stop fires, which is polled before every edge check and inside it.
 ///
 /// # Arguments

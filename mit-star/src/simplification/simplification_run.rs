@@ -119,8 +119,8 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
     }
 
     /// Random shortcuts between two points on different edges (and, with `partial`, half of
-    /// the time per-coordinate shortcuts) until `attempts` in a row fail or gain less than
-    /// 10⁻⁴ of the path's length. `false` if the stop fired.
+    /// the time per-coordinate shortcuts) until `attempts` in a row fail or would gain less
+    /// than 10⁻⁴ of the path's length (those are not checked). `false` if the stop fired.
     pub(super) fn shortcuts(
         &mut self,
         states: &mut Vec<Vec<f64>>,
@@ -134,18 +134,17 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
             self.lengths
                 .extend(states.windows(2).map(|w| space.distance(&w[0], &w[1])));
             let total: f64 = self.lengths.iter().sum();
-            // A shortcut that gains less than this is taken but counts as a failure: the
-            // search ends when shortcuts stop paying.
+            // A shortcut that would gain less than this is not checked and counts as a
+            // failure: the search ends when shortcuts stop paying, and checks (certification
+            // above all) go to the ones that pay.
             let negligible = NEGLIGIBLE_GAIN * total;
             let outcome = if partial && self.rng.random::<bool>() {
-                self.partial_shortcut(states)
+                self.partial_shortcut(states, negligible)
             } else {
-                self.shortcut(states, total)
+                self.shortcut(states, (total, negligible))
             };
             match outcome {
-                Some((EdgeStatus::Valid, gain)) => {
-                    failures = if gain < negligible { failures + 1 } else { 0 };
-                }
+                Some((EdgeStatus::Valid, _)) => failures = 0,
                 Some((EdgeStatus::Unknown, _)) => return false,
                 Some((EdgeStatus::Invalid, _)) | None => failures += 1,
             }
@@ -155,9 +154,13 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
 
     /// A whole shortcut between two random points on different edges of the path (its
     /// length `total`, its edge lengths in `self.lengths`). `None` if the points were on one
-    /// edge or the shortcut not shorter (nothing checked), else the status of its edge, with
-    /// the length gained when taken.
-    fn shortcut(&mut self, states: &mut Vec<Vec<f64>>, total: f64) -> Option<(EdgeStatus, f64)> {
+    /// edge or the shortcut would gain less than `negligible` (nothing checked), else the
+    /// status of its edge, with the length gained when taken.
+    fn shortcut(
+        &mut self,
+        states: &mut Vec<Vec<f64>>,
+        (total, negligible): (f64, f64),
+    ) -> Option<(EdgeStatus, f64)> {
         let space = self.space;
         let (mut s, mut t) = (
             self.rng.random::<f64>() * total,
@@ -178,7 +181,7 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
         let direct = space.distance(a, b);
         let along =
             (lengths[ea] * (1.0 - fa)) + lengths[ea + 1..eb].iter().sum::<f64>() + lengths[eb] * fb;
-        if direct >= along * (1.0 - 1e-9) {
+        if along - direct < negligible.max(along * 1e-9) {
             return None;
         }
         // The ends are taken out for the check (no allocation) and put back.
@@ -200,9 +203,14 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
     /// A per-coordinate shortcut: between two random states `i < j` of the path, one random
     /// coordinate of every state strictly between them is blended linearly (by arc length)
     /// from its value at `i` to its value at `j`; taken if the stretch gets shorter and all
-    /// its new edges pass. `None` if it was not shorter (nothing checked), else the first
-    /// status that was not `Valid`, or `Valid` when taken, with the length gained.
-    fn partial_shortcut(&mut self, states: &mut [Vec<f64>]) -> Option<(EdgeStatus, f64)> {
+    /// its new edges pass. `None` if it would gain less than `negligible` (nothing checked),
+    /// else the first status that was not `Valid`, or `Valid` when taken, with the length
+    /// gained.
+    fn partial_shortcut(
+        &mut self,
+        states: &mut [Vec<f64>],
+        negligible: f64,
+    ) -> Option<(EdgeStatus, f64)> {
         let n = states.len();
         let i = self.rng.random_range(0..n - 2);
         let j = self.rng.random_range(i + 2..n);
@@ -230,7 +238,7 @@ impl<'a, S: StateSpace, V: StateValidity> SimplificationRun<'a, S, V> {
             state[k] = from + (to - from) * along / total;
         }
         let shorter = length(self.space, stretch);
-        let outcome = if shorter >= total * (1.0 - 1e-9) {
+        let outcome = if total - shorter < negligible.max(total * 1e-9) {
             None
         } else {
             let failed = stretch
@@ -279,6 +287,35 @@ pub(super) fn length<S: StateSpace>(space: &S, path: &[Vec<f64>]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shortcuts_that_would_gain_a_negligible_length_are_not_checked() {
+        let space = spaces::RealVectorSpace::new(vec![0.0; 2], vec![1.0; 2]).unwrap();
+        let validity = validity::AllValid;
+        let stop = spaces::Never;
+        // A path 0.8 long with a bump of 10⁻³: any shortcut gains a few 10⁻⁶, under 10⁻⁴ of
+        // the length.
+        let path = vec![
+            vec![0.1, 0.5],
+            vec![0.3, 0.5],
+            vec![0.5, 0.501],
+            vec![0.7, 0.5],
+            vec![0.9, 0.5],
+        ];
+        let mut run = SimplificationRun::new((&space, &validity), (1e-3, 1), &stop, 1).unwrap();
+        let mut states = path.clone();
+        assert!(run.shortcuts(&mut states, 50, true));
+        assert_eq!(
+            (run.checked, run.shortcuts, run.partial_shortcuts),
+            (0, 0, 0)
+        );
+        assert_eq!(states, path);
+        // A bump of 0.1 pays: shortcuts are checked and taken.
+        let mut states = path.clone();
+        states[2][1] = 0.6;
+        assert!(run.shortcuts(&mut states, 50, true));
+        assert!(run.checked > 0 && run.shortcuts + run.partial_shortcuts > 0);
+    }
 
     #[test]
     fn arc_lengths_locate_their_edge() {
