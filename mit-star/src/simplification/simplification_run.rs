@@ -311,7 +311,7 @@ mod tests {
         );
         assert_eq!(states, path);
         // A bump of 0.1 pays: shortcuts are checked and taken.
-        let mut states = path.clone();
+        let mut states = path;
         states[2][1] = 0.6;
         assert!(run.shortcuts(&mut states, 50, true));
         assert!(run.checked > 0 && run.shortcuts + run.partial_shortcuts > 0);
