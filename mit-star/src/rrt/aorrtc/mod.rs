@@ -152,9 +152,10 @@ where
     /// shortcuts only, ending after 30 failures in a row, then, if `smoothing` (the
     /// `simplify_smoothing` parameter), up to five smoothing rounds of
     /// [`SmoothingMoves::Relax`](crate::SmoothingMoves::Relax) moves. Per-joint shortcuts
-    /// make a simplification of a first RRT-Connect path on the Panda take 10–26 ms instead of
-    /// 2–3 ms (`robot/examples/simplify_paths.rs`, with and without `whole`), for paths the
-    /// following searches shorten anyway. The smoothing moves were chosen on the Panda's
+    /// make the shortcuts of a first RRT-Connect path on the Panda take 1.7–13 ms instead of
+    /// 0.6–2.5 ms (`robot/examples/simplify_paths.rs … smooth=0`, with and without `whole`),
+    /// for paths the following searches shorten anyway; the polishes
+    /// (`polish_when_idle`) use them. The smoothing moves were chosen on the Panda's
     /// seven MotionBenchMaker scenes (`robot/examples/anytime_arm.rs`, `aorrtc_moves=`):
     /// relaxing towards the neighbours' midpoint keeps the cost at 10 ms where random
     /// perturbations raise it; after 100 ms the choice, smoothing or none, moves the median
