@@ -113,12 +113,24 @@ where
         let stop = || termination.should_terminate(&Progress::new(started.elapsed(), 0, before));
         let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
         self.runs += 1;
+        let simplifier = self.simplifier.clone();
+        self.simplify_path(&simplifier, &path, &stop, started);
+    }
+
+    /// Runs `simplifier` on `path` in stages under `stop`: each stage is offered to the inner
+    /// planner if shorter than the stage's start, and kept if cheaper than the best path.
+    fn simplify_path(
+        &mut self,
+        simplifier: &PathSimplifier,
+        path: &[Vec<f64>],
+        stop: &dyn spaces::Stop,
+        started: Instant,
+    ) {
         let Self {
             inner,
             space,
             validity,
             checks,
-            simplifier,
             solution: best,
             trace,
             elapsed,
@@ -126,16 +138,14 @@ where
             smoothing_moves,
             ..
         } = self;
-        let _ =
-            simplifier.simplify_in_stages(space, validity, *checks, &path, &stop, &mut |stage| {
-                *smoothing_moves += stage.smoothing_moves;
-                // Offered to the inner planner if shorter than the stage's start, and kept.
-                let shorter = stage.solution(space.dimension());
-                if shorter.cost < stage.original_cost && inner.offer_solution(&shorter) {
-                    *taken += 1;
-                }
-                keep_if_cheaper((best, trace), *elapsed + started.elapsed(), shorter);
-            });
+        let _ = simplifier.simplify_in_stages(space, validity, *checks, path, stop, &mut |stage| {
+            *smoothing_moves += stage.smoothing_moves;
+            let shorter = stage.solution(space.dimension());
+            if shorter.cost < stage.original_cost && inner.offer_solution(&shorter) {
+                *taken += 1;
+            }
+            keep_if_cheaper((best, trace), *elapsed + started.elapsed(), shorter);
+        });
     }
 
     /// Polishes the best path with at most `budget` polls of the stop (about one per edge
@@ -153,27 +163,7 @@ where
             let progress = Progress::new(started.elapsed(), 0, before);
             polls.get() > budget || termination.should_terminate(&progress)
         };
-        let Self {
-            inner,
-            space,
-            validity,
-            checks,
-            solution,
-            trace,
-            elapsed,
-            taken,
-            smoothing_moves,
-            ..
-        } = self;
-        let _ =
-            simplifier.simplify_in_stages(space, validity, *checks, &path, &stop, &mut |stage| {
-                *smoothing_moves += stage.smoothing_moves;
-                let shorter = stage.solution(space.dimension());
-                if shorter.cost < stage.original_cost && inner.offer_solution(&shorter) {
-                    *taken += 1;
-                }
-                keep_if_cheaper((solution, trace), *elapsed + started.elapsed(), shorter);
-            });
+        self.simplify_path(&simplifier, &path, &stop, started);
         let paid = self.best_cost() < before;
         if let Some(polish) = &mut self.polish {
             polish.polished(paid);
