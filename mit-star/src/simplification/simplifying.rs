@@ -9,8 +9,8 @@ use super::IdlePolish;
 use crate::planner::keep_if_cheaper;
 use crate::termination::Wrapped;
 use crate::{
-    Counters, IterationLimit, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot,
-    Solution, Termination, TerminationExt, Trace,
+    Counters, Outcome, PathSimplifier, Planner, PlannerError, Progress, Snapshot, Solution,
+    Termination, TerminationExt, Trace,
 };
 
 /// Wraps a planner so that each solution it finds is reported at once and then shortened by
@@ -30,7 +30,7 @@ use crate::{
 /// [`polish_when_idle`](Self::polish_when_idle), the best path is also polished whenever the
 /// inner planner has found nothing cheaper for a while, and each shorter stage is offered in
 /// the same way. Time limits
-/// and cost thresholds apply to the whole call; an [`IterationLimit`] counts the iterations of
+/// and cost thresholds apply to the whole call; an [`IterationLimit`](crate::IterationLimit) counts the iterations of
 /// each stretch of planning between two of the inner planner's solutions.
 ///
 /// [`Parameters`]: crate::Parameters
@@ -177,6 +177,31 @@ where
     }
 }
 
+/// Fires after `limit` iterations of the inner planner's call, and remembers that it did.
+struct Waited {
+    limit: u64,
+    fired: std::cell::Cell<bool>,
+}
+
+impl Waited {
+    fn new(limit: u64) -> Self {
+        Self {
+            limit,
+            fired: std::cell::Cell::new(false),
+        }
+    }
+}
+
+impl Termination for Waited {
+    fn should_terminate(&self, progress: &Progress) -> bool {
+        let fired = progress.iterations >= self.limit;
+        if fired {
+            self.fired.set(true);
+        }
+        fired
+    }
+}
+
 /// Fires once the inner planner's best cost is below the given one.
 struct Improved(f64);
 
@@ -210,15 +235,11 @@ where
             };
             // Back as soon as the inner planner improves on `before`, or, when polishing a
             // solution, once it has found nothing cheaper for the polish's wait.
-            let wait = match (&self.polish, &self.solution) {
+            let wait = Waited::new(match (&self.polish, &self.solution) {
                 (Some(polish), Some(_)) => polish.wait(),
                 _ => u64::MAX,
-            };
-            let counted = self.inner.counters().iterations;
-            let outcome = self
-                .inner
-                .solve(&(&outer).or(Improved(before)).or(IterationLimit::new(wait)))?;
-            let ran = self.inner.counters().iterations.saturating_sub(counted);
+            });
+            let outcome = self.inner.solve(&(&outer).or(Improved(before)).or(&wait))?;
             let found = self.inner.best_cost() < before;
             if found && let Outcome::Solved(solution) = &outcome {
                 idle = 0;
@@ -232,12 +253,12 @@ where
                 break;
             }
             if !found {
-                idle += ran;
                 // The inner planner stopped on its own, or waited long enough to polish.
-                if ran < wait {
+                if !wait.fired.get() {
                     break;
                 }
-                self.polish(ran, termination, started);
+                idle += wait.limit;
+                self.polish(wait.limit, termination, started);
             }
         }
         self.elapsed += started.elapsed();
