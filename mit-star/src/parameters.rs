@@ -129,7 +129,8 @@ pub struct Parameters {
     /// default: the paper's planners and their ablations as published). Not in the paper.
     pub simplify_solutions: bool,
     /// With [`simplify_solutions`](Self::simplify_solutions), and in AORRTC's own
-    /// simplification ([`aorrtc_simplify`](Self::aorrtc_simplify)), each simplification ends
+    /// simplification ([`aorrtc_simplify`](Self::aorrtc_simplify)) when
+    /// [`polish_when_idle`](Self::polish_when_idle) is off, each simplification ends
     /// with smoothing sweeps ([`PathSimplifier::smoothing_rounds`](crate::PathSimplifier::smoothing_rounds):
     /// interior states moved off the path where it gets shorter, every new edge checked and
     /// certified) (`true`, the default), or with the shortcuts (`false`, the ablation). Not in
@@ -152,7 +153,9 @@ pub struct Parameters {
     /// joints, then smoothing rounds of midpoint relaxation and random perturbations, every new
     /// edge checked and certified, for at most about one edge check per idle iteration. A polish
     /// that gains nothing doubles the wait before the next (`true`, the default), or nothing is
-    /// done between solutions (`false`: AORRTC as its authors' planner). Not in the papers.
+    /// done between solutions (`false`: AORRTC as its authors' planner). With it on, AORRTC
+    /// leaves the smoothing to the polishes and only shortcuts each new solution
+    /// ([`Aorrtc::smooths_solutions`](crate::Aorrtc::smooths_solutions)). Not in the papers.
     pub polish_when_idle: bool,
     /// AORRTC's cost-bound resampling: after a new state joins a tree, up to this many more
     /// parents are sought under redrawn cost bounds, each taken if its edge is valid and

@@ -13,9 +13,10 @@
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
 //! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`, `aorrtc_simplify=false`,
-//! `polish_when_idle=false`, `batch_size=200`, `rewire_factor=1.5`,
+//! `polish_when_idle=false`, `rrt_balance=false`, `rrt_halton=true`, `batch_size=200`, `rewire_factor=1.5`,
 //! `near_terminals=0.3`, …; `aorrtc_moves=perturb|relax|relax-then-perturb` for AORRTC's
-//! smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only); `csv=FILE` also writes one line per
+//! smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only;
+//! `seed=K` adds `K` to every run's seed, for repeats with other random draws); `csv=FILE` also writes one line per
 //! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
 //! `benches/peers/vamp/anytime_table.py`.
 
@@ -43,10 +44,15 @@ fn main() {
     let seconds: f64 = args.next().map_or(1.0, |a| a.parse().expect("seconds"));
     let mut base = Parameters::default();
     let mut csv = None;
+    let mut seed_offset: u64 = 0;
     let mut aorrtc_moves = None;
     let mut scenes: Vec<String> = SCENES.iter().map(|s| (*s).to_owned()).collect();
     for setting in args {
         let (key, value) = setting.split_once('=').expect("key=value");
+        if key == "seed" {
+            seed_offset = value.parse().expect("a seed offset");
+            continue;
+        }
         if key == "scenes" {
             scenes = value.split(',').map(|v| format!("{v}_panda")).collect();
             continue;
@@ -79,6 +85,8 @@ fn main() {
             "aorrtc_simplify" => base.aorrtc_simplify = on(),
             "polish_when_idle" => base.polish_when_idle = on(),
             "rrt_dynamic_domain" => base.rrt_dynamic_domain = on(),
+            "rrt_balance" => base.rrt_balance = on(),
+            "rrt_halton" => base.rrt_halton = on(),
             "batch_size" => base.batch_size = number() as usize,
             "rewire_factor" => base.rewire_factor = number(),
             "near_terminals" => base.near_terminals = Some(number()),
@@ -102,7 +110,7 @@ fn main() {
             let (mut solved, mut failed) = (0, 0);
             for (index, problem) in &loaded {
                 let parameters = Parameters {
-                    seed: *index as u64,
+                    seed: *index as u64 + seed_offset,
                     // VAMP's range, for RRT-Connect wherever it runs (a warm start's too).
                     range: (matches!(
                         configuration,
@@ -114,7 +122,10 @@ fn main() {
                 let mut planner = match (configuration, aorrtc_moves) {
                     (Configuration::Aorrtc, Some(moves)) => {
                         let mut aorrtc = Aorrtc::for_problem(problem, &parameters).expect("builds");
-                        let smoothing = parameters.simplify_smoothing;
+                        let smoothing =
+                            Aorrtc::<spaces::JointSpace, robot::ArmChecker>::smooths_solutions(
+                                &parameters,
+                            );
                         let simplifier =
                             Aorrtc::<spaces::JointSpace, robot::ArmChecker>::default_simplifier(
                                 parameters.seed,

@@ -109,27 +109,32 @@ fn bad_parameters_are_typed_errors() {
     assert!(error.to_string().contains("range"), "{error}");
 }
 
-#[test]
-fn each_solution_is_shortcut_then_smoothed_and_every_stage_is_a_trace_point() {
+/// The trace of AORRTC's first solution on four dividing walls, with the switches
+/// `(simplify_smoothing, polish_when_idle)`.
+fn first_solution_trace(smoothing: bool, polish: bool) -> Vec<f64> {
     let problem = problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
         .unwrap();
-    let costs = |smoothing: bool| {
-        let parameters = Parameters {
-            seed: 1,
-            simplify_smoothing: smoothing,
-            ..Parameters::default()
-        };
-        let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
-        let outcome = planner
-            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
-            .unwrap();
-        assert_valid(&problem, &outcome.solution().unwrap().path);
-        let points = planner.trace().points();
-        points.iter().map(|p| p.cost).collect::<Vec<f64>>()
+    let parameters = Parameters {
+        seed: 1,
+        simplify_smoothing: smoothing,
+        polish_when_idle: polish,
+        ..Parameters::default()
     };
+    let mut planner = Aorrtc::for_problem(&problem, &parameters).unwrap();
+    let outcome = planner
+        .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+        .unwrap();
+    assert_valid(&problem, &outcome.solution().unwrap().path);
+    let points = planner.trace().points();
+    points.iter().map(|p| p.cost).collect::<Vec<f64>>()
+}
+
+#[test]
+fn each_solution_is_shortcut_then_smoothed_and_every_stage_is_a_trace_point() {
+    let costs = |smoothing: bool| first_solution_trace(smoothing, false);
     let (on, off) = (costs(true), costs(false));
     // Without smoothing: the path as found, then shortcut.
     assert_eq!(off.len(), 2, "{off:?}");
@@ -137,6 +142,16 @@ fn each_solution_is_shortcut_then_smoothed_and_every_stage_is_a_trace_point() {
     assert_eq!(on[..2], off[..], "{on:?} {off:?}");
     assert!(on.len() > 2, "{on:?}");
     assert!(on.windows(2).all(|w| w[1] < w[0]), "{on:?}");
+}
+
+#[test]
+fn with_polishes_on_a_new_solution_is_shortcut_and_the_smoothing_left_to_them() {
+    // Smoothing on (the default) and polishes on (the default): the path as found, then
+    // shortcut, and no smoothing round.
+    let polished = first_solution_trace(true, true);
+    assert_eq!(polished.len(), 2, "{polished:?}");
+    assert_eq!(polished, first_solution_trace(false, false));
+    assert!(first_solution_trace(true, false).len() > 2);
 }
 
 #[test]
