@@ -12,9 +12,14 @@
 //
 // Usage: vamp_anytime PROBLEMS.txt [PER_SCENE=20] [BUDGET_S=1] [PATHS_FILE]
 // Output (stdout), one line per run: scene,index,limit,time_us,cost,solved
+// With the environment variable VAMP_FIRST_PATHS set, it prints instead, per problem, the length
+// of RRT-Connect's first path (range 1, the Halton sequence reset), the length after VAMP's
+// default simplification (the one its AORRTC applies to every solution) and the simplification's
+// time: scene,index,raw_cost,simplified_cost,simplify_us,solved
 // With PATHS_FILE: the final path of the last run of each problem, as lines
 // `scene index` then one configuration per line, then an empty line.
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -32,6 +37,7 @@ static constexpr std::size_t rake = vamp::FloatVectorWidth;
 using EnvIn = vamp::collision::Environment<float>;
 using EnvVec = vamp::collision::Environment<vamp::FloatVector<rake>>;
 using Planner = vamp::planning::AORRTC<Robot, rake, Robot::resolution>;
+using Connect = vamp::planning::RRTC<Robot, rake, Robot::resolution>;
 namespace vf = vamp::collision::factory;
 
 struct Problem
@@ -121,13 +127,37 @@ int main(int argc, char **argv)
     if (argc > 4) paths.open(argv[4]);
     std::map<std::string, int> taken;
     auto rng = std::make_shared<vamp::rng::Halton<Robot>>();
-    std::cout << "scene,index,limit,time_us,cost,solved\n";
+    const bool first_paths = std::getenv("VAMP_FIRST_PATHS") != nullptr;
+    std::cout << (first_paths ? "scene,index,raw_cost,simplified_cost,simplify_us,solved\n"
+                              : "scene,index,limit,time_us,cost,solved\n");
     for (const auto &p : read(argv[1]))
     {
         if (not p.valid or taken[p.scene] >= per_scene) continue;
         ++taken[p.scene];
         EnvVec env(p.env);
         std::vector<Robot::Configuration> goals(p.goals.begin(), p.goals.end());
+        if (first_paths)
+        {
+            vamp::planning::RRTCSettings settings;
+            settings.range = 1.0;
+            rng->reset();
+            auto found = Connect::solve(Robot::Configuration(p.start), goals, env, settings, rng);
+            const bool solved = not found.path.empty();
+            double raw = -1.0, simplified = -1.0, us = 0.0;
+            if (solved)
+            {
+                const auto started = std::chrono::steady_clock::now();
+                auto result = vamp::planning::simplify<Robot, rake, Robot::resolution>(
+                    found.path, env, vamp::planning::SimplifySettings{}, rng);
+                us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started)
+                         .count();
+                raw = found.path.cost();
+                simplified = result.path.cost();
+            }
+            std::cout << p.scene << "," << p.index << "," << raw << "," << simplified << "," << us << ","
+                      << solved << "\n";
+            continue;
+        }
         vamp::planning::PlanningResult<Robot> last;
         // 1, 2, 5, 10, 20, 50, …
         for (std::size_t limit = 1, step = 0;; limit = (step % 3 == 1) ? limit * 5 / 2 : limit * 2, ++step)
