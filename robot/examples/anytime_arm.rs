@@ -13,7 +13,7 @@
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
 //! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`, `aorrtc_simplify=false`,
-//! `polish_when_idle=false`, `rrt_balance=false`, `rrt_halton=true`, `batch_size=200`, `rewire_factor=1.5`,
+//! `polish_when_idle=false`, `rrt_balance=false`, `rrt_halton=true`, `range=2` (RRT-Connect's and AORRTC's, 1 by default as VAMP's scripts), `batch_size=200`, `rewire_factor=1.5`,
 //! `near_terminals=0.3`, …; `aorrtc_moves=perturb|relax|relax-then-perturb` for AORRTC's
 //! smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only;
 //! `seed=K` adds `K` to every run's seed, for repeats with other random draws); `csv=FILE` also writes one line per
@@ -88,6 +88,7 @@ fn main() {
             "rrt_balance" => base.rrt_balance = on(),
             "rrt_halton" => base.rrt_halton = on(),
             "batch_size" => base.batch_size = number() as usize,
+            "range" => base.range = Some(number()),
             "rewire_factor" => base.rewire_factor = number(),
             "near_terminals" => base.near_terminals = Some(number()),
             other => panic!("unknown parameter {other}"),
@@ -111,12 +112,13 @@ fn main() {
             for (index, problem) in &loaded {
                 let parameters = Parameters {
                     seed: *index as u64 + seed_offset,
-                    // VAMP's range, for RRT-Connect wherever it runs (a warm start's too).
-                    range: (matches!(
+                    // VAMP's range, for RRT-Connect wherever it runs (a warm start's too),
+                    // unless `range=` sets another.
+                    range: base.range.or((matches!(
                         configuration,
                         Configuration::RrtConnect | Configuration::Aorrtc
                     ) || base.warm_start)
-                        .then_some(1.0),
+                        .then_some(1.0)),
                     ..base.clone()
                 };
                 let mut planner = match (configuration, aorrtc_moves) {
