@@ -12,13 +12,14 @@
 //! (joint-space path length) of the best path at 10 ms, 100 ms and 1 s (a run without a path by
 //! then counts as infinitely long), the median straight-line lower bound, and how many final
 //! paths fail a continuous audit in `f64` (parry). Extra `key=value` arguments set parameters
-//! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`, `aorrtc_simplify=false`,
-//! `polish_when_idle=false`, `rrt_balance=false`, `rrt_halton=true`, `range=2` (RRT-Connect's and AORRTC's, 1 by default as VAMP's scripts), `batch_size=200`, `rewire_factor=1.5`,
-//! `near_terminals=0.3`, …; `aorrtc_moves=perturb|relax|relax-then-perturb` for AORRTC's
-//! smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only;
-//! `seed=K` adds `K` to every run's seed, for repeats with other random draws); `csv=FILE` also writes one line per
-//! run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
-//! `benches/peers/vamp/anytime_table.py`.
+//! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`,
+//! `aorrtc_simplify=false`, `polish_when_idle=false`, `rrt_balance=false`, `rrt_halton=true`,
+//! `range=2` (RRT-Connect's and AORRTC's; 1 by default, as VAMP's scripts), `batch_size=200`,
+//! `rewire_factor=1.5`, `near_terminals=0.3`, …; `aorrtc_moves=perturb|relax|relax-then-perturb`
+//! for AORRTC's smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only;
+//! `seed=K` adds `K` to every run's seed, for repeats with other random draws); `csv=FILE` also
+//! writes one line per run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
+//! `benches/peers/vamp/anytime_table.py` (and, over several seeds, `seed_spread.py`).
 
 use std::io::Write;
 

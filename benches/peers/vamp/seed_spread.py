@@ -13,7 +13,6 @@ at 10 ms by more than a change does on problems such as cage, where whether the 
 shortened within 10 ms depends on the time the first search took; the spread over seeds does not.
 """
 import glob
-import math
 import sys
 
 from anytime_table import median, our_rows, vamp_rows
