@@ -5,21 +5,26 @@ the second run's path is shorter and longer on, and the median of second / first
 
 Usage: python3 pair_runs.py FIRST.csv SECOND.csv
 """
-import csv
 import statistics
 import sys
 
+from anytime_table import our_rows
+
+MOMENTS = ["cost_10ms", "cost_100ms", "cost_1s"]
+
 
 def load(path):
-    return {(r["scene"], r["index"]): r for r in csv.DictReader(open(path))}
+    """The run's rows of one file: (scene, index) → (first_ms, cost at 10 ms, 100 ms, 1 s)."""
+    (rows,) = our_rows([path]).values()
+    return rows
 
 
 first, second = load(sys.argv[1]), load(sys.argv[2])
-for column in ["cost_10ms", "cost_100ms", "cost_1s"]:
+for m, column in enumerate(MOMENTS, start=1):
     shorter = longer = 0
     ratios = []
     for key in first.keys() & second.keys():
-        a, b = float(first[key][column]), float(second[key][column])
+        a, b = first[key][m], second[key][m]
         shorter += b < a - 1e-9
         longer += b > a + 1e-9
         if a < float("inf") and b < float("inf"):

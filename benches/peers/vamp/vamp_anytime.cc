@@ -146,12 +146,12 @@ int main(int argc, char **argv)
             double raw = -1.0, simplified = -1.0, us = 0.0;
             if (solved)
             {
+                raw = found.path.cost();
                 const auto started = std::chrono::steady_clock::now();
                 auto result = vamp::planning::simplify<Robot, rake, Robot::resolution>(
                     found.path, env, vamp::planning::SimplifySettings{}, rng);
                 us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started)
                          .count();
-                raw = found.path.cost();
                 simplified = result.path.cost();
             }
             std::cout << p.scene << "," << p.index << "," << raw << "," << simplified << "," << us << ","
