@@ -11,7 +11,7 @@
 //! prints per scene the median time to the first solution
 //! (construction excluded) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
-//! nearest-neighbour queries and iterations. Then the cost of one configuration check on the
+//! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one configuration check on the
 //! scenes' first problems: scalar, batched eight at a time (resuming after each invalid one),
 //! batched asking only whether any of the eight is invalid, and batched over valid
 //! configurations only. Run it under `perf record` for
@@ -61,9 +61,9 @@ fn main() {
         .parse::<Configuration>()
         .expect("a planner configuration");
     println!(
-        "| scene | problems | median t_first (µs) | configurations | grid points | certified edges | NN queries | iterations | µs / configuration |"
+        "| scene | problems | median t_first (µs) | configurations | grid points | certified edges | NN queries | iterations | states | µs / configuration |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
     let mut pooled = Vec::new();
     let mut setups = Vec::new();
     let mut first_problems = Vec::new();
@@ -79,7 +79,7 @@ fn main() {
         if let Some(first) = problems.first() {
             first_problems.push((scene, first.clone()));
         }
-        let mut rows: [Vec<f64>; 6] = Default::default();
+        let mut rows: [Vec<f64>; 7] = Default::default();
         for seed in 0..seeds {
             for (i, problem) in problems.iter().enumerate() {
                 let parameters = Parameters {
@@ -112,6 +112,7 @@ fn main() {
                     c.certifications as f64,
                     c.neighbour_queries as f64,
                     c.iterations as f64,
+                    c.samples as f64,
                 ]) {
                     row.push(v);
                 }
@@ -120,9 +121,10 @@ fn main() {
         }
         let per = rows[0].iter().sum::<f64>() / rows[1].iter().sum::<f64>().max(1.0);
         let n = problems.len();
-        let [t, checks, points, certified, queries, iterations] = rows.map(|mut r| median(&mut r));
+        let [t, checks, points, certified, queries, iterations, states] =
+            rows.map(|mut r| median(&mut r));
         println!(
-            "| {} | {n} | {t:.0} | {checks:.0} | {points:.0} | {certified:.0} | {queries:.0} | {iterations:.0} | {per:.3} |",
+            "| {} | {n} | {t:.0} | {checks:.0} | {points:.0} | {certified:.0} | {queries:.0} | {iterations:.0} | {states:.0} | {per:.3} |",
             scene.trim_end_matches("_panda")
         );
     }

@@ -3,7 +3,7 @@
 
 use spaces::{Never, Stop};
 
-use crate::nearest::kd_tree::{Alive, KdTree, Poll, squared_distance};
+use crate::nearest::kd_tree::{Alive, KdTree, Poll};
 use crate::nearest::kd_tree_build::{Parts, Spare, fresh};
 use crate::nearest::neighbours::Neighbours;
 use crate::nearest::pending_points::PendingPoints;
@@ -298,20 +298,42 @@ impl NearestNeighbors {
         for tree in &self.trees {
             tree.nearest_into(query, found, alive, &mut poll);
         }
-        let n = self.dimension;
-        // A block at a time, polling in between.
-        for (ids, births, xs) in self.pending.blocks() {
-            if poll.tick(ids.len() as u32) {
-                return false;
+        if found.k == 1 {
+            // The nearest alone: kept in locals, offered once at the end.
+            let mut best = found
+                .iter()
+                .next()
+                .copied()
+                .unwrap_or((f64::INFINITY, u32::MAX));
+            let complete = self.pending.scan(query, &mut poll, |ids, births, d| {
+                if !d.iter().any(|&d| d <= best.0) {
+                    return;
+                }
+                for ((&id, &birth), &d) in ids.iter().zip(births).zip(&d) {
+                    if d <= best.0 && (d, id) < best && alive.contains(id, birth) {
+                        best = (d, id);
+                    }
+                }
+            });
+            if best.1 != u32::MAX {
+                found.offer(best.0, best.1);
             }
-            for ((&id, &birth), x) in ids.iter().zip(births).zip(xs.chunks_exact(n)) {
-                let d = squared_distance(query, x);
-                if d <= found.worst() && alive.contains(id, birth) {
+            return complete && !poll.stopped;
+        }
+        // Four distances at a time; a group none of whose points would enter is passed over
+        // with one comparison per point.
+        let mut worst = found.worst();
+        self.pending.scan(query, &mut poll, |ids, births, d| {
+            if !d.iter().any(|&d| d <= worst) {
+                return;
+            }
+            for ((&id, &birth), &d) in ids.iter().zip(births).zip(&d) {
+                if d <= worst && alive.contains(id, birth) {
                     found.offer(d, id);
+                    worst = found.worst();
                 }
             }
-        }
-        !poll.stopped
+        }) && !poll.stopped
     }
 
     /// Every live point within `radius`; `false` (and `found` incomplete) if `stop` fired first.
@@ -360,21 +382,15 @@ impl NearestNeighbors {
         for tree in &self.trees {
             tree.within_into(query, radius2, found, alive, &mut poll);
         }
-        let n = self.dimension;
-        // A block at a time, polling in between.
-        for (ids, births, xs) in self.pending.blocks() {
-            if poll.tick(ids.len() as u32) {
-                return false;
-            }
-            for ((&id, &birth), x) in ids.iter().zip(births).zip(xs.chunks_exact(n)) {
-                let d = squared_distance(query, x);
+        let complete = self.pending.scan(query, &mut poll, |ids, births, d| {
+            for ((&id, &birth), &d) in ids.iter().zip(births).zip(&d) {
                 if d <= radius2 && alive.contains(id, birth) {
                     found.push_unordered(d, id);
                 }
             }
-        }
+        });
         found.sort();
-        !poll.stopped
+        complete && !poll.stopped
     }
 }
 
@@ -391,6 +407,7 @@ fn merge(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::nearest::kd_tree::squared_distance;
     use spaces::SeededRng;
     use spaces::rand::{RngExt, SeedableRng};
 
@@ -512,6 +529,57 @@ mod tests {
         }
         assert_eq!(nn.len(), births.iter().filter(|&&b| b != u32::MAX).count());
         assert!(nn.queries() > 0);
+    }
+
+    #[test]
+    fn buffered_points_give_the_distances_and_ties_of_brute_force_in_every_dimension() {
+        // Dimensions with a kernel of their own (3, 7, 16) and without (1, 17); point counts
+        // that leave the last group of four partly empty; every second point dead in the
+        // second half; duplicates, so that ties are broken by id.
+        let mut rng = SeededRng::seed_from_u64(11);
+        for n in [1, 3, 7, 16, 17] {
+            for count in [1, 2, 5, 8, 9, 30] {
+                let mut points: Vec<f64> = (0..count * n)
+                    .map(|_| rng.random_range(-1.0..1.0))
+                    .collect();
+                points.extend_from_within(..n.min(points.len()));
+                let total = points.len() / n;
+                let mut nn = NearestNeighbors::new(n);
+                nn.insert_born(
+                    points
+                        .chunks_exact(n)
+                        .enumerate()
+                        .map(|(i, p)| (i as u32, 0, p)),
+                );
+                let births: Vec<u32> = (0..total)
+                    .map(|i| u32::from(i > total / 2 && i % 2 == 0))
+                    .collect();
+                let stamps: crate::nearest::chunked::Chunked<u32> =
+                    births.iter().copied().collect();
+                let mut found = Neighbours::new();
+                for _ in 0..5 {
+                    let query: Vec<f64> = (0..n).map(|_| rng.random_range(-1.0..1.0)).collect();
+                    for k in [1, 3] {
+                        nn.nearest_alive(&query, k, &mut found, Alive::All, &Never);
+                        let all = brute(&points, n, &query, |_| true);
+                        assert_eq!(
+                            found.iter().copied().collect::<Vec<_>>(),
+                            all[..k.min(total)]
+                        );
+                        // Stamps of 1 no longer match the stored births of 0: dead.
+                        nn.nearest_alive(&query, k, &mut found, Alive::Current(&stamps), &Never);
+                        let live = brute(&points, n, &query, |i| births[i as usize] == 0);
+                        assert_eq!(
+                            found.iter().copied().collect::<Vec<_>>(),
+                            live[..k.min(live.len())]
+                        );
+                    }
+                    // The duplicate of point 0 ties with it; the lower id wins.
+                    nn.nearest_alive(&points[..n], 1, &mut found, Alive::All, &Never);
+                    assert_eq!(found.iter().copied().collect::<Vec<_>>(), [(0.0, 0)]);
+                }
+            }
+        }
     }
 
     #[test]

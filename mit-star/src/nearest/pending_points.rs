@@ -1,15 +1,27 @@
 //! [`PendingPoints`]: the nearest-neighbour structure's buffer of points not yet in a tree, in
 //! fixed-size blocks so that it grows without copying.
 
+use wide::f64x4;
+
+use crate::nearest::kd_tree::Poll;
+
 /// Points per block: also how many points a scan of the buffer checks between two polls.
 const BLOCK: usize = 4096;
+
+/// Points per group of a block's lanes: one `f64x4` register under AVX.
+const GROUP: usize = 4;
 
 /// One block: up to [`BLOCK`] points, allocated once at full size.
 #[derive(Debug, Clone)]
 struct Block {
     ids: Vec<u32>,
     births: Vec<u32>,
+    /// By point: the coordinates of point `i` at `i · dimension ..`, for builds.
     coordinates: Vec<f64>,
+    /// The same coordinates by group of [`GROUP`] points, one row per coordinate (row
+    /// `g · dimension + c` holds coordinate `c` of points `4g .. 4g + 4`), for scans that
+    /// compute four distances at once; the unused places of the last group hold NaN.
+    lanes: Vec<[f64; GROUP]>,
 }
 
 /// Points waiting to be built into a kd-tree, scanned linearly by queries meanwhile.
@@ -59,11 +71,21 @@ impl PendingPoints {
                     ids: Vec::with_capacity(BLOCK),
                     births: Vec::with_capacity(BLOCK),
                     coordinates: Vec::with_capacity(BLOCK * self.dimension),
+                    lanes: Vec::with_capacity(BLOCK / GROUP * self.dimension),
                 });
             }
             self.used += 1;
         }
         let block = &mut self.blocks[self.used - 1];
+        let (group, place) = (block.ids.len() / GROUP, block.ids.len() % GROUP);
+        if place == 0 {
+            block
+                .lanes
+                .resize((group + 1) * self.dimension, [f64::NAN; GROUP]);
+        }
+        for (row, &x) in block.lanes[group * self.dimension..].iter_mut().zip(point) {
+            row[place] = x;
+        }
         block.ids.push(id);
         block.births.push(birth);
         block.coordinates.extend_from_slice(point);
@@ -84,6 +106,7 @@ impl PendingPoints {
             block.ids.clear();
             block.births.clear();
             block.coordinates.clear();
+            block.lanes.clear();
         }
         self.used = 0;
         self.len = 0;
@@ -95,6 +118,101 @@ impl PendingPoints {
             .iter()
             .map(|b| (&b.ids[..], &b.births[..], &b.coordinates[..]))
     }
+}
+
+impl PendingPoints {
+    /// Visits the points a group of up to [`GROUP`] at a time, in insertion order: their ids,
+    /// births and squared Euclidean distances to `query` (unused places: NaN, which compares
+    /// false with everything). Each distance is the one
+    /// [`squared_distance`](crate::nearest::kd_tree::squared_distance) returns, bit for bit:
+    /// coordinate `c` adds to partial sum `c mod 4`, in order, and the sums are added pairwise.
+    /// Polls `poll` once per block; `false` if it fired (the visit is then incomplete).
+    pub(crate) fn scan(
+        &self,
+        query: &[f64],
+        poll: &mut Poll<'_>,
+        visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
+    ) -> bool {
+        debug_assert_eq!(query.len(), self.dimension);
+        // Common dimensions get a kernel whose loops unroll completely.
+        macro_rules! fixed {
+            ($($n:literal)*) => {
+                match self.dimension {
+                    $($n => match <&[f64; $n]>::try_from(query) {
+                        Ok(query) => self.scan_fixed(query, poll, visit),
+                        Err(_) => self.scan_any(query, poll, visit),
+                    },)*
+                    _ => self.scan_any(query, poll, visit),
+                }
+            };
+        }
+        fixed!(2 3 4 5 6 7 8 9 10 11 12 13 14 15 16)
+    }
+
+    /// [`scan`](Self::scan) for points of `N` coordinates: the loops unroll and every sum
+    /// stays in a register.
+    fn scan_fixed<const N: usize>(
+        &self,
+        query: &[f64; N],
+        poll: &mut Poll<'_>,
+        mut visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
+    ) -> bool {
+        for block in &self.blocks[..self.used] {
+            if poll.tick(block.ids.len() as u32) {
+                return false;
+            }
+            for ((ids, births), rows) in block
+                .ids
+                .chunks(GROUP)
+                .zip(block.births.chunks(GROUP))
+                .zip(block.lanes.chunks_exact(N))
+            {
+                let mut sums = [f64x4::ZERO; 4];
+                for c in 0..N {
+                    let t = f64x4::from(rows[c]) - f64x4::splat(query[c]);
+                    sums[c % 4] += t * t;
+                }
+                visit(ids, births, total(sums));
+            }
+        }
+        true
+    }
+
+    /// [`scan`](Self::scan) for any number of coordinates.
+    fn scan_any(
+        &self,
+        query: &[f64],
+        poll: &mut Poll<'_>,
+        mut visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
+    ) -> bool {
+        let n = self.dimension.max(1);
+        for block in &self.blocks[..self.used] {
+            if poll.tick(block.ids.len() as u32) {
+                return false;
+            }
+            for ((ids, births), rows) in block
+                .ids
+                .chunks(GROUP)
+                .zip(block.births.chunks(GROUP))
+                .zip(block.lanes.chunks_exact(n))
+            {
+                let mut sums = [f64x4::ZERO; 4];
+                for (c, (&x, &q)) in rows.iter().zip(query).enumerate() {
+                    let t = f64x4::from(x) - f64x4::splat(q);
+                    sums[c % 4] += t * t;
+                }
+                visit(ids, births, total(sums));
+            }
+        }
+        true
+    }
+}
+
+/// The four squared distances from the partial sums: added pairwise, as
+/// [`squared_distance`](crate::nearest::kd_tree::squared_distance) adds its own.
+#[inline]
+fn total(sums: [f64x4; 4]) -> [f64; GROUP] {
+    ((sums[0] + sums[1]) + (sums[2] + sums[3])).to_array()
 }
 
 #[cfg(test)]
