@@ -4,7 +4,7 @@
 //! batch's first invalid configuration is the one the scalar check finds first, and the one
 //! parry finds first, whenever no configuration of the run lies within the stated tolerance
 //! of touching (see `parry_agreement.rs`); `any_invalid` names an invalid configuration
-//! exactly when there is one; `are_valid` decides each configuration as the scalar check and
+//! exactly when there is one, whichever link met an obstacle in the check before; `are_valid` decides each configuration as the scalar check and
 //! parry do. Points of a prepared segment (`first_invalid_on`,
 //! `any_invalid_on`) get the answers of the interpolated configurations, bit for bit.
 
@@ -80,6 +80,12 @@ proptest! {
         prop_assert_eq!(any.is_some(), scalar.is_some());
         if let Some(i) = any {
             prop_assert!(!fast.is_valid(configurations[i]), "configuration {} is valid", i);
+        }
+        // Each configuration alone, one after the other: a check that may stop at any contact
+        // tests first the link that met an obstacle in the check before, which here is
+        // another configuration's.
+        for (i, q) in configurations.iter().enumerate() {
+            prop_assert_eq!(fast.any_invalid(q, 7).is_some(), !reference.is_valid(q), "configuration {}", i);
         }
         // `are_valid` (samplers): every configuration's own answer, into as many answers as
         // are asked for.

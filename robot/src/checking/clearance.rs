@@ -66,6 +66,7 @@ pub(crate) fn certified_radii(
         bounds8,
         placed,
         q8,
+        ..
     } = lanes;
     fill_lanes(q8, &chunk[..count * n], n);
     s.lanes.link_poses(q8, poses8);
