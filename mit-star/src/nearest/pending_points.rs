@@ -155,27 +155,16 @@ impl PendingPoints {
         &self,
         query: &[f64; N],
         poll: &mut Poll<'_>,
-        mut visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
+        visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
     ) -> bool {
-        for block in &self.blocks[..self.used] {
-            if poll.tick(block.ids.len() as u32) {
-                return false;
+        self.scan_groups(N, poll, visit, |rows| {
+            let mut sums = [f64x4::ZERO; 4];
+            for c in 0..N {
+                let t = f64x4::from(rows[c]) - f64x4::splat(query[c]);
+                sums[c % 4] += t * t;
             }
-            for ((ids, births), rows) in block
-                .ids
-                .chunks(GROUP)
-                .zip(block.births.chunks(GROUP))
-                .zip(block.lanes.chunks_exact(N))
-            {
-                let mut sums = [f64x4::ZERO; 4];
-                for c in 0..N {
-                    let t = f64x4::from(rows[c]) - f64x4::splat(query[c]);
-                    sums[c % 4] += t * t;
-                }
-                visit(ids, births, total(sums));
-            }
-        }
-        true
+            total(sums)
+        })
     }
 
     /// [`scan`](Self::scan) for any number of coordinates.
@@ -183,9 +172,28 @@ impl PendingPoints {
         &self,
         query: &[f64],
         poll: &mut Poll<'_>,
-        mut visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
+        visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
     ) -> bool {
-        let n = self.dimension.max(1);
+        self.scan_groups(self.dimension.max(1), poll, visit, |rows| {
+            let mut sums = [f64x4::ZERO; 4];
+            for (c, (&x, &q)) in rows.iter().zip(query).enumerate() {
+                let t = f64x4::from(x) - f64x4::splat(q);
+                sums[c % 4] += t * t;
+            }
+            total(sums)
+        })
+    }
+
+    /// The walk of [`scan`](Self::scan): per group, its `rows` (one per coordinate, `width` of
+    /// them) to `distances`, then the answer to `visit`; a poll per block.
+    #[inline(always)]
+    fn scan_groups(
+        &self,
+        width: usize,
+        poll: &mut Poll<'_>,
+        mut visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
+        distances: impl Fn(&[[f64; GROUP]]) -> [f64; GROUP],
+    ) -> bool {
         for block in &self.blocks[..self.used] {
             if poll.tick(block.ids.len() as u32) {
                 return false;
@@ -194,14 +202,9 @@ impl PendingPoints {
                 .ids
                 .chunks(GROUP)
                 .zip(block.births.chunks(GROUP))
-                .zip(block.lanes.chunks_exact(n))
+                .zip(block.lanes.chunks_exact(width))
             {
-                let mut sums = [f64x4::ZERO; 4];
-                for (c, (&x, &q)) in rows.iter().zip(query).enumerate() {
-                    let t = f64x4::from(x) - f64x4::splat(q);
-                    sums[c % 4] += t * t;
-                }
-                visit(ids, births, total(sums));
+                visit(ids, births, distances(rows));
             }
         }
         true
