@@ -11,8 +11,8 @@
 //! prints per scene the median time to the first solution
 //! (construction excluded) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
-//! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one configuration check on the
-//! scenes' first problems: scalar, batched eight at a time (resuming after each invalid one),
+//! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one
+//! configuration check on the scenes' first problems: scalar, batched eight at a time (resuming after each invalid one),
 //! batched asking only whether any of the eight is invalid, and batched over valid
 //! configurations only. Run it under `perf record` for
 //! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping

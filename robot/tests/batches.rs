@@ -4,9 +4,10 @@
 //! batch's first invalid configuration is the one the scalar check finds first, and the one
 //! parry finds first, whenever no configuration of the run lies within the stated tolerance
 //! of touching (see `parry_agreement.rs`); `any_invalid` names an invalid configuration
-//! exactly when there is one, whichever link met an obstacle in the check before; `are_valid` decides each configuration as the scalar check and
-//! parry do. Points of a prepared segment (`first_invalid_on`,
-//! `any_invalid_on`) get the answers of the interpolated configurations, bit for bit.
+//! exactly when there is one, whichever link met an obstacle in the check before; `are_valid`
+//! decides each configuration as the scalar check and parry do. Points of a prepared segment
+//! (`first_invalid_on`, `any_invalid_on`) get the answers of the interpolated configurations,
+//! bit for bit.
 
 use glam::DVec3;
 use proptest::prelude::*;
@@ -85,7 +86,12 @@ proptest! {
         // tests first the link that met an obstacle in the check before, which here is
         // another configuration's.
         for (i, q) in configurations.iter().enumerate() {
-            prop_assert_eq!(fast.any_invalid(q, 7).is_some(), !reference.is_valid(q), "configuration {}", i);
+            prop_assert_eq!(
+                fast.any_invalid(q, 7).is_some(),
+                !reference.is_valid(q),
+                "configuration {}",
+                i
+            );
         }
         // `are_valid` (samplers): every configuration's own answer, into as many answers as
         // are asked for.

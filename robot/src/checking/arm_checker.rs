@@ -463,16 +463,16 @@ fn invalid_filled(
     // Links are placed as the tests reach them (in tree order), so that a batch found invalid
     // early skips the rest of the walk. `posed`: links placed so far (in tree order).
     let mut posed = 0;
-    // When any contact will do, the link that met an obstacle last time goes first.
-    let first = if wanted == Wanted::Any && *last_hit < s.links.len() {
-        *last_hit
-    } else {
-        usize::MAX
+    let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
+        for i in range.clone() {
+            centers[i] = pose.point(s.spheres[i].0);
+        }
     };
-    let order = (first < s.links.len())
-        .then_some(first)
+    // When any contact will do, the link that met an obstacle last time goes first.
+    let first = (wanted == Wanted::Any && *last_hit < s.links.len()).then_some(*last_hit);
+    let order = first
         .into_iter()
-        .chain((0..s.links.len()).filter(|&k| k != first));
+        .chain((0..s.links.len()).filter(|&k| Some(k) != first));
     for k in order {
         let (link, range, center, radius) = &s.links[k];
         if *link >= posed {
@@ -487,9 +487,7 @@ fn invalid_filled(
                 continue;
             }
             if !placed[k] {
-                for i in range.clone() {
-                    centers8[i] = pose.point(s.spheres[i].0);
-                }
+                place8(pose, range, centers8);
                 placed[k] = true;
             }
             for i in range.clone() {
@@ -506,11 +504,6 @@ fn invalid_filled(
             }
         }
     }
-    let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
-        for i in range.clone() {
-            centers[i] = pose.point(s.spheres[i].0);
-        }
-    };
     for &(a, b) in &s.pairs {
         let (la, lb) = (&s.links[a], &s.links[b]);
         let grown = grow[a] + grow[b];
