@@ -173,3 +173,63 @@ fn a_planning_group_is_planned_with_the_other_joints_held() {
         "{listed}"
     );
 }
+
+/// A copy of the sample Fetch box folder whose requests name planning group `group`.
+fn fetch_box_naming(group: &str) -> String {
+    let from = Path::new(env!("CARGO_MANIFEST_DIR")).join("../robot/tests/data/mbm/box_fetch");
+    let dir = common::scratch("robots", &format!("box_fetch_{group}"));
+    std::fs::create_dir_all(&dir).unwrap();
+    for entry in std::fs::read_dir(&from).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let name = path.file_name().unwrap();
+        let text = if name.to_string_lossy().starts_with("request") {
+            assert!(text.contains("group_name: arm_with_torso"), "{text}");
+            text.replace(
+                "group_name: arm_with_torso",
+                &format!("group_name: {group}"),
+            )
+        } else {
+            text
+        };
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+    format!("mbm:{}", dir.display())
+}
+
+#[test]
+fn the_requests_planning_group_is_planned_unless_another_is_named() {
+    let state = |problem: &str, group: Option<&str>| {
+        let mut args = vec!["check-state", "--robot", "fetch", "--problem", problem];
+        args.extend(group.iter().flat_map(|g| ["--group", *g]));
+        let out = mit_star(&args);
+        (
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    // Requests naming `arm`: the torso is held, as with `--group arm`.
+    let arm = fetch_box_naming("arm");
+    let (out, err) = state(&arm, None);
+    assert!(out.contains("R^7"), "{out}");
+    assert!(
+        err.contains("planning group `arm` of robot `fetch`, as the requests name it"),
+        "{err}"
+    );
+    // A group named on the command line wins.
+    let (out, err) = state(&arm, Some("arm_with_torso"));
+    assert!(out.contains("R^8"), "{out}");
+    assert!(!err.contains("as the requests name it"), "{err}");
+    // The shipped requests name the whole robot's joints: nothing to say.
+    let (out, err) = state(&fetch_box_naming("arm_with_torso"), None);
+    assert!(out.contains("R^8"), "{out}");
+    assert!(!err.contains("planning group"), "{err}");
+    // A group the SRDF lacks: a warning naming it, and every moving joint planned.
+    let (out, err) = state(&fetch_box_naming("legs"), None);
+    assert!(out.contains("R^8"), "{out}");
+    assert!(
+        err.contains("the requests name planning group `legs`")
+            && err.contains("no planning group `legs`"),
+        "{err}"
+    );
+}

@@ -126,7 +126,9 @@ impl PyProblem {
 
     /// Problem `instance` (1-based; default the folder's first) of a MotionBenchMaker scene
     /// folder, planned for `robot` (a shipped robot name or a folder with a URDF and an SRDF;
-    /// default the Panda) and its SRDF planning group `group` (default every moving joint). The folders of the shipped Panda problems come from
+    /// default the Panda) and its SRDF planning group `group` (default: the group the
+    /// folder's requests name, where the SRDF has it; else every moving joint). The folders of
+    /// the shipped Panda problems come from
     /// `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`.
     #[staticmethod]
     #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None))]

@@ -26,7 +26,8 @@ pub struct ProblemArgs {
     #[arg(long, value_name = "NAME|DIR")]
     pub robot: Option<String>,
     /// Plan only this SRDF planning group of the robot (`right_arm`); the other joints are
-    /// held at the request's start values. Default: every moving joint.
+    /// held at the request's start values. Default: the group the folder's requests name
+    /// (`group_name`) if the SRDF has it, else every moving joint.
     #[arg(long, value_name = "GROUP")]
     pub group: Option<String>,
     /// Refuse SRDF and allowed-collision entries naming links the robot lacks (by default they

@@ -26,20 +26,50 @@ pub struct MbmFolder {
 impl MbmFolder {
     /// Lists the folder's problems and loads the robot model (printing its warnings).
     ///
+    /// Without a group named (`--group`, `group`), the folder's problems are planned for the
+    /// planning group its first request names (`group_name`) when the robot's SRDF has it and
+    /// it moves other joints than the whole robot does (a note on stderr says so); a group the
+    /// SRDF lacks is a warning, and every moving joint is planned.
+    ///
     /// # Errors
-    /// [`HarnessError::Arm`] for a folder without problems, or half of one;
-    /// [`HarnessError::Robot`] for a robot that cannot be loaded.
+    /// [`HarnessError::Arm`] for a folder without problems, or half of one, or an unreadable
+    /// first request; [`HarnessError::Robot`] for a robot that cannot be loaded.
     pub fn read(path: impl Into<PathBuf>, robot: &RobotChoice) -> Result<Self, HarnessError> {
         let path = path.into();
-        let indices = robot::MbmProblem::indices(&path).map_err(|e| HarnessError::Arm {
+        let arm = |e: robot::SceneError| HarnessError::Arm {
             name: path.display().to_string(),
             source: e.into(),
-        })?;
-        let model = robot.load()?;
+        };
+        let indices = robot::MbmProblem::indices(&path).map_err(arm)?;
+        let mut choice = robot.clone();
+        let mut model = robot.load()?;
+        if robot.group().is_none()
+            && let Some(group) = robot::MbmProblem::group_of(&path, indices[0]).map_err(arm)?
+        {
+            match robot.clone().with_group(Some(&group)).load_quiet() {
+                Ok(grouped) if grouped.joint_names() != model.joint_names() => {
+                    eprintln!(
+                        "note: `{}`: planning group `{group}` of robot `{}`, as the requests \
+                         name it (`--group` chooses another)",
+                        path.display(),
+                        robot.label()
+                    );
+                    choice = robot.clone().with_group(Some(&group));
+                    model = grouped;
+                }
+                Ok(_) => {}
+                Err(e) => eprintln!(
+                    "warning: `{}`: the requests name planning group `{group}`; planning every \
+                     moving joint of robot `{}` instead ({e})",
+                    path.display(),
+                    robot.label()
+                ),
+            }
+        }
         Ok(Self {
             path,
             indices,
-            choice: robot.clone(),
+            choice,
             robot: Arc::new(model),
             noted: Arc::default(),
         })

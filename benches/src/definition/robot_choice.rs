@@ -117,10 +117,18 @@ impl RobotChoice {
     /// # Errors
     /// [`HarnessError::Robot`] naming the robot and what is wrong with its files.
     pub fn load(&self) -> Result<RobotModel, HarnessError> {
-        let model = self.source.load_group(self.strict, self.group.as_deref())?;
+        let model = self.load_quiet()?;
         for warning in model.warnings() {
             eprintln!("warning: robot `{}`: {warning}", self.label());
         }
         Ok(model)
+    }
+
+    /// As [`load`](Self::load), printing nothing.
+    ///
+    /// # Errors
+    /// As [`load`](Self::load).
+    pub fn load_quiet(&self) -> Result<RobotModel, HarnessError> {
+        Ok(self.source.load_group(self.strict, self.group.as_deref())?)
     }
 }

@@ -13,7 +13,9 @@ use crate::{Scene, SceneError};
 /// Joint values are kept by name; [`start_for`](Self::start_for) and
 /// [`goal_for`](Self::goal_for) order them as a robot's joint space wants (values of other
 /// joints, the fingers say, are ignored); a joint named twice in the start state or in the goal
-/// is an error, never "the first one wins". The request's `planner_id` and
+/// is an error, never "the first one wins". The request's planning group (`group_name`) is
+/// kept in [`group`](Self::group), for the caller to choose the robot's coordinates with
+/// ([`RobotModel::with_group_str`](crate::RobotModel::with_group_str)); its `planner_id` and
 /// `allowed_planning_time` are ignored.
 ///
 /// ```
@@ -24,6 +26,8 @@ use crate::{Scene, SceneError};
 /// assert_eq!(problem.name, "cage_panda/0001");
 /// let start = problem.start_for(&["panda_joint1", "panda_joint4"])?;
 /// assert_eq!(start.len(), 2);
+/// assert_eq!(problem.group.as_deref(), Some("panda_arm"));
+/// assert_eq!(robot::MbmProblem::group_of(folder.as_ref(), 2)?.as_deref(), Some("panda_arm"));
 /// # Ok::<(), robot::SceneError>(())
 /// ```
 #[derive(Debug, Clone)]
@@ -36,6 +40,8 @@ pub struct MbmProblem {
     pub start: Vec<(String, f64)>,
     /// Goal joint values by name.
     pub goal: Vec<(String, f64)>,
+    /// The planning group the request names (`group_name`), if it names one.
+    pub group: Option<String>,
     request: PathBuf,
 }
 
@@ -43,6 +49,15 @@ pub struct MbmProblem {
 struct RequestFile {
     start_state: StartState,
     goal_constraints: Vec<GoalConstraints>,
+    #[serde(default)]
+    group_name: Option<String>,
+}
+
+/// A request read for its planning group only.
+#[derive(Deserialize)]
+struct RequestGroup {
+    #[serde(default)]
+    group_name: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -66,6 +81,22 @@ struct GoalConstraints {
 struct JointConstraint {
     joint_name: String,
     position: f64,
+}
+
+/// Request `index` of `folder`: its path, the path as text (for messages) and its text.
+fn read_request(folder: &Path, index: usize) -> Result<(PathBuf, String, String), SceneError> {
+    let request = folder.join(format!("request{index:04}.yaml"));
+    let origin = request.display().to_string();
+    let text = std::fs::read_to_string(&request).map_err(|source| SceneError::Io {
+        path: request.clone(),
+        source,
+    })?;
+    Ok((request, origin, text))
+}
+
+/// A group name, trimmed; `None` if blank.
+fn non_empty(group: Option<String>) -> Option<String> {
+    group.map(|g| g.trim().to_owned()).filter(|g| !g.is_empty())
 }
 
 impl MbmProblem {
@@ -126,12 +157,7 @@ impl MbmProblem {
     /// [`Scene`]'s), [`SceneError::DuplicateJoint`] for a request giving a joint two values.
     pub fn load(folder: &Path, index: usize) -> Result<Self, SceneError> {
         let scene = Scene::from_yaml_file(&folder.join(format!("scene{index:04}.yaml")))?;
-        let request = folder.join(format!("request{index:04}.yaml"));
-        let origin = request.display().to_string();
-        let text = std::fs::read_to_string(&request).map_err(|source| SceneError::Io {
-            path: request.clone(),
-            source,
-        })?;
+        let (request, origin, text) = read_request(folder, index)?;
         let file: RequestFile = crate::scenes::yaml_text::read_yaml(&text, &origin)?;
         let state = file.start_state.joint_state;
         if state.name.len() != state.position.len() {
@@ -191,8 +217,20 @@ impl MbmProblem {
             scene,
             start,
             goal,
+            group: non_empty(file.group_name),
             request,
         })
+    }
+
+    /// The planning group request `index` of `folder` names (`group_name`), reading the
+    /// request only: what a folder's problems are planned for, before any scene is read.
+    ///
+    /// # Errors
+    /// [`SceneError::Io`] for a missing request, [`SceneError::Yaml`] for a malformed one.
+    pub fn group_of(folder: &Path, index: usize) -> Result<Option<String>, SceneError> {
+        let (_, origin, text) = read_request(folder, index)?;
+        let file: RequestGroup = crate::scenes::yaml_text::read_yaml(&text, &origin)?;
+        Ok(non_empty(file.group_name))
     }
 
     /// The start values of `joints`, in that order.
