@@ -1,7 +1,7 @@
 //! The `mit-star` binary: input errors are reported with a clear message and a non-zero exit
 //! code before any work; the listings and `plan` work.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 mod common;
 use common::{refused, succeeded};
@@ -222,6 +222,33 @@ fn unwritable_output_folders_are_refused() {
         ],
         &["is not writable"],
     );
+}
+
+#[test]
+fn spherise_refuses_an_output_it_cannot_write_before_covering_meshes() {
+    let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("../robot/data/ur5/meshes/ur5.urdf");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../robot/data/ur5");
+    let missing = scratch("spherise-missing").join("ur5_mesh_spherized.urdf");
+    let folder = scratch("spherise-folder");
+    std::fs::create_dir_all(&folder).unwrap();
+    for (output, needles) in [
+        (&missing, &["does not exist", "spherise-missing"][..]),
+        (&folder, &["is a folder"][..]),
+    ] {
+        // The early refusal's own words: a write after the cover (over a minute for the UR5)
+        // would fail with the system's message instead.
+        refused(
+            &[
+                "spherise",
+                urdf.to_str().unwrap(),
+                "--package-root",
+                root.to_str().unwrap(),
+                "--output",
+                output.to_str().unwrap(),
+            ],
+            needles,
+        );
+    }
 }
 
 #[test]

@@ -42,6 +42,7 @@ impl SpheriseArgs {
     /// meshes without a fallback, a bad tolerance or budget, an unwritable output, or an
     /// output that does not load as a sphere model.
     pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+        self.check_output()?;
         let fallback =
             match &self.fallback {
                 Some(path) => Some(std::fs::read_to_string(path).map_err(|source| {
@@ -87,6 +88,32 @@ impl SpheriseArgs {
             );
         }
         Ok(CommandOutcome::Success)
+    }
+}
+
+impl SpheriseArgs {
+    /// Refuses, before any mesh is read (a cover takes minutes), an output that is a folder
+    /// or lies in a folder that does not exist.
+    fn check_output(&self) -> Result<(), HarnessError> {
+        if self.output.is_dir() {
+            return Err(HarnessError::Usage(format!(
+                "--output `{}` is a folder: name the URDF file to write",
+                self.output.display()
+            )));
+        }
+        let folder = match self.output.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => std::path::Path::new("."),
+        };
+        if !folder.is_dir() {
+            return Err(HarnessError::Usage(format!(
+                "--output `{}`: the folder `{}` does not exist (create it first, with the \
+                 robot's SRDF beside the URDF)",
+                self.output.display(),
+                folder.display()
+            )));
+        }
+        Ok(())
     }
 }
 
