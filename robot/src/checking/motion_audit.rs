@@ -52,7 +52,9 @@ pub enum AuditVerdict {
 /// `dθ` moves a point by at most `dθ` times its distance from the joint's origin, bounded by
 /// summing the joint-origin offsets from that joint down to the sphere's link and the centre's
 /// offset in its link (rotations keep lengths); a prismatic joint moves it by `|axis|·dq` and
-/// adds its longest travel to the reach of the joints above it.
+/// adds its longest travel to the reach of the joints above it. A self-collision pair's gap
+/// closes no faster than the sum of its two spheres' bounds over the joints that move one link
+/// and not the other: the joints above both carry the two rigidly.
 ///
 /// The motion is the joint space's straight line: coordinates interpolated linearly,
 /// continuous joints the short way round.
@@ -76,6 +78,23 @@ pub struct MotionAudit {
     speeds: Vec<f64>,
     /// Per sphere: its link's name (for messages).
     sphere_links: Vec<String>,
+    /// Per checked pair of links `(a, b)`, in the checker's order: the first sphere of each
+    /// link, and per coordinate whether its joint lies above one link and not the other
+    /// (joints above both carry the two rigidly and cannot close their gap).
+    pair_links: Vec<PairLinks>,
+}
+
+/// A checked pair of links, as the audit bounds how fast their spheres close in.
+#[derive(Debug, Clone)]
+struct PairLinks {
+    /// The first sphere and the sphere count of link `a` and of link `b`
+    /// ([`RobotModel::link_sphere_range`]).
+    spheres: ((usize, usize), (usize, usize)),
+    /// Its entries in the checker's [sphere pairs](ParryChecker::sphere_pairs): every sphere
+    /// of `a` with every sphere of `b`.
+    entries: std::ops::Range<usize>,
+    /// Per coordinate: `true` if its joint moves one link relative to the other.
+    between: Vec<bool>,
 }
 
 impl MotionAudit {
@@ -114,12 +133,59 @@ impl MotionAudit {
             .iter()
             .map(|s| links[s.link].name.clone())
             .collect();
+        // The moving joints above `link`, as (coordinate, joint's link), from the link up.
+        let above = |link: usize| {
+            let mut out = Vec::new();
+            let mut at = Some(link);
+            while let Some(l) = at {
+                if let Motion::Revolute { coordinate, .. } | Motion::Prismatic { coordinate, .. } =
+                    links[l].motion
+                {
+                    out.push((coordinate, l));
+                }
+                at = links[l].parent;
+            }
+            out
+        };
+        // A coordinate moves two links relative to each other unless it drives the same
+        // joints above both (their common ancestors' joints, which carry the two rigidly); a
+        // coordinate that also drives a mimic joint below one of them counts in full.
+        let between = |a: usize, b: usize| -> Vec<bool> {
+            let (over_a, over_b) = (above(a), above(b));
+            (0..dimension)
+                .map(|c| {
+                    let driven = |over: &[(usize, usize)]| -> Vec<usize> {
+                        over.iter().filter(|j| j.0 == c).map(|j| j.1).collect()
+                    };
+                    driven(&over_a) != driven(&over_b)
+                })
+                .collect()
+        };
+        let checker = ParryChecker::new(robot, scene);
+        let mut next = 0;
+        let pair_links: Vec<PairLinks> = robot
+            .self_collision_pairs()
+            .iter()
+            .map(|&(a, b)| {
+                let (ra, rb) = (robot.link_sphere_range(a), robot.link_sphere_range(b));
+                let entries = next..next + ra.len() * rb.len();
+                next = entries.end;
+                PairLinks {
+                    spheres: ((ra.start, ra.len()), (rb.start, rb.len())),
+                    entries,
+                    between: between(a, b),
+                }
+            })
+            .collect();
+        // The checker lists the pairs' spheres in the same order, a link pair at a time.
+        debug_assert_eq!(next, checker.sphere_pairs().len());
         Self {
-            checker: ParryChecker::new(robot, scene),
+            checker,
             space,
             dimension,
             speeds,
             sphere_links,
+            pair_links,
         }
     }
 
@@ -173,6 +239,26 @@ impl MotionAudit {
             .map(|row| row.iter().zip(&delta).map(|(v, x)| v * x.abs()).sum())
             .collect();
         let pairs = self.checker.sphere_pairs();
+        // Per sphere pair, how fast its gap can close: only the joints between the two links
+        // move them relative to each other, each sphere at most as fast as those joints move
+        // its centre.
+        let mut closing = vec![0.0; pairs.len()];
+        for pair in &self.pair_links {
+            let relative = |s: usize| -> f64 {
+                let row = &self.speeds[s * d..(s + 1) * d];
+                (0..d)
+                    .filter(|&c| pair.between[c])
+                    .map(|c| row[c] * delta[c].abs())
+                    .sum()
+            };
+            let ((first_a, count_a), (first_b, count_b)) = pair.spheres;
+            let a: Vec<f64> = (first_a..first_a + count_a).map(relative).collect();
+            let b: Vec<f64> = (first_b..first_b + count_b).map(relative).collect();
+            for k in pair.entries.clone() {
+                let (i, j) = pairs[k];
+                closing[k] = a[i - first_a] + b[j - first_b];
+            }
+        }
         let mut obstacle_gaps = vec![0.0; speed.len()];
         let mut pair_gaps = vec![0.0; pairs.len()];
         let mut q = a.to_vec();
@@ -195,7 +281,7 @@ impl MotionAudit {
                 clearance = clearance.min(gap);
                 advance = advance.min(gap / v);
             }
-            for (&gap, &(i, j)) in pair_gaps.iter().zip(pairs) {
+            for (k, (&gap, &(i, j))) in pair_gaps.iter().zip(pairs).enumerate() {
                 if gap <= AUDIT_CONTACT {
                     let contact = format!(
                         "a sphere of `{}` meets a sphere of `{}`",
@@ -204,7 +290,10 @@ impl MotionAudit {
                     return collides(t, q, contact);
                 }
                 clearance = clearance.min(gap);
-                advance = advance.min(gap / (speed[i] + speed[j]));
+                // A pair no joint moves apart keeps its gap (and an empty sum is -0.0).
+                if closing[k] > 0.0 {
+                    advance = advance.min(gap / closing[k]);
+                }
             }
             if t >= 1.0 || t + advance >= 1.0 {
                 if t >= 1.0 {
