@@ -55,6 +55,12 @@ impl MbmFolder {
                         robot.label()
                     );
                     choice = robot.clone().with_group(Some(&group));
+                    // What only the group adds (members naming links the model lacks).
+                    for warning in grouped.warnings() {
+                        if !model.warnings().contains(warning) {
+                            eprintln!("warning: robot `{}`: {warning}", choice.label());
+                        }
+                    }
                     model = grouped;
                 }
                 Ok(_) => {}
