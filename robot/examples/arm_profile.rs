@@ -12,9 +12,9 @@
 //! (construction excluded) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
 //! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one
-//! configuration check on the scenes' first problems: scalar, batched eight at a time (resuming after each invalid one),
-//! batched asking only whether any of the eight is invalid, and batched over valid
-//! configurations only. Run it under `perf record` for
+//! configuration check on the scenes' first problems: scalar, batched eight at a time
+//! (resuming after each invalid one), batched asking only whether any of the eight is invalid,
+//! and batched over valid configurations only. Run it under `perf record` for
 //! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping
 //! (`ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
 //! per-configuration table; `ARM_PROFILE_AUDIT=1` audits every path with parry between runs,

@@ -89,9 +89,7 @@ impl SpheriseArgs {
         }
         Ok(CommandOutcome::Success)
     }
-}
 
-impl SpheriseArgs {
     /// Refuses, before any mesh is read (a cover takes minutes), an output that is a folder
     /// or lies in a folder that does not exist.
     fn check_output(&self) -> Result<(), HarnessError> {

@@ -78,9 +78,8 @@ pub struct MotionAudit {
     speeds: Vec<f64>,
     /// Per sphere: its link's name (for messages).
     sphere_links: Vec<String>,
-    /// Per checked pair of links `(a, b)`, in the checker's order: the first sphere of each
-    /// link, and per coordinate whether its joint lies above one link and not the other
-    /// (joints above both carry the two rigidly and cannot close their gap).
+    /// Per checked pair of links, in the checker's order: what bounds how fast its spheres
+    /// close in.
     pair_links: Vec<PairLinks>,
 }
 
@@ -93,7 +92,8 @@ struct PairLinks {
     /// Its entries in the checker's [sphere pairs](ParryChecker::sphere_pairs): every sphere
     /// of `a` with every sphere of `b`.
     entries: std::ops::Range<usize>,
-    /// Per coordinate: `true` if its joint moves one link relative to the other.
+    /// Per coordinate: `true` if it drives a joint above one link and not the other (joints
+    /// above both carry the two rigidly and cannot close their gap).
     between: Vec<bool>,
 }
 
@@ -147,19 +147,18 @@ impl MotionAudit {
             }
             out
         };
-        // A coordinate moves two links relative to each other unless it drives the same
-        // joints above both (their common ancestors' joints, which carry the two rigidly); a
-        // coordinate that also drives a mimic joint below one of them counts in full.
+        // A coordinate moves two links relative to each other if it drives a joint above one
+        // and not the other. Joints above both (their common ancestors') carry the two
+        // rigidly; a coordinate that also drives a mimic joint below one of them counts.
         let between = |a: usize, b: usize| -> Vec<bool> {
             let (over_a, over_b) = (above(a), above(b));
-            (0..dimension)
-                .map(|c| {
-                    let driven = |over: &[(usize, usize)]| -> Vec<usize> {
-                        over.iter().filter(|j| j.0 == c).map(|j| j.1).collect()
-                    };
-                    driven(&over_a) != driven(&over_b)
-                })
-                .collect()
+            let mut out = vec![false; dimension];
+            for (joints, others) in [(&over_a, &over_b), (&over_b, &over_a)] {
+                for joint in joints.iter().filter(|j| !others.contains(j)) {
+                    out[joint.0] = true;
+                }
+            }
+            out
         };
         let checker = ParryChecker::new(robot, scene);
         let mut next = 0;
@@ -246,10 +245,11 @@ impl MotionAudit {
         for pair in &self.pair_links {
             let relative = |s: usize| -> f64 {
                 let row = &self.speeds[s * d..(s + 1) * d];
+                // From +0.0: a pair no joint moves apart closes at +0 and its gap's advance is
+                // +∞ (an empty `sum` of `f64` is -0.0).
                 (0..d)
                     .filter(|&c| pair.between[c])
-                    .map(|c| row[c] * delta[c].abs())
-                    .sum()
+                    .fold(0.0, |sum, c| sum + row[c] * delta[c].abs())
             };
             let ((first_a, count_a), (first_b, count_b)) = pair.spheres;
             let a: Vec<f64> = (first_a..first_a + count_a).map(relative).collect();
@@ -290,10 +290,7 @@ impl MotionAudit {
                     return collides(t, q, contact);
                 }
                 clearance = clearance.min(gap);
-                // A pair no joint moves apart keeps its gap (and an empty sum is -0.0).
-                if closing[k] > 0.0 {
-                    advance = advance.min(gap / closing[k]);
-                }
+                advance = advance.min(gap / closing[k]);
             }
             if t >= 1.0 || t + advance >= 1.0 {
                 if t >= 1.0 {
