@@ -120,9 +120,13 @@ pub struct Parameters {
     /// other (`true`, the default, chosen by measurement), instead of alternating strictly
     /// (`false`, as OMPL's).
     pub rrt_balance: bool,
-    /// RRT-Connect draws from a Halton sequence shifted by the seed (`true`, as VAMP does)
-    /// instead of independent uniform draws (`false`, the default, chosen by measurement).
+    /// RRT-Connect draws from a Halton sequence (`true`, as VAMP does) instead of independent
+    /// uniform draws (`false`, the default, chosen by measurement).
     pub rrt_halton: bool,
+    /// With `rrt_halton`, the sequence is shifted by the seed (`true`, the default: each seed
+    /// draws other points, equally even) or not (`false`: the plain sequence, the same points
+    /// in every run, as VAMP's; its first search is then the same for every seed).
+    pub rrt_halton_shift: bool,
     /// Every new solution is shortened by a [`PathSimplifier`](crate::PathSimplifier) before it
     /// is reported (`true`; [`build_planner`](crate::build_planner) wraps the planner in
     /// [`Simplifying`](crate::Simplifying)), or reported as the planner found it (`false`, the
@@ -212,6 +216,7 @@ impl Default for Parameters {
             rrt_dynamic_domain: true,
             rrt_balance: true,
             rrt_halton: false,
+            rrt_halton_shift: true,
             simplify_solutions: false,
             simplify_smoothing: true,
             warm_start: false,
@@ -447,6 +452,7 @@ impl Parameters {
             ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),
             ("rrt_balance", self.rrt_balance.to_string()),
             ("rrt_halton", self.rrt_halton.to_string()),
+            ("rrt_halton_shift", self.rrt_halton_shift.to_string()),
             ("simplify_solutions", self.simplify_solutions.to_string()),
             ("simplify_smoothing", self.simplify_smoothing.to_string()),
             ("warm_start", self.warm_start.to_string()),

@@ -88,6 +88,7 @@ fn main() {
             "rrt_dynamic_domain" => base.rrt_dynamic_domain = on(),
             "rrt_balance" => base.rrt_balance = on(),
             "rrt_halton" => base.rrt_halton = on(),
+            "rrt_halton_shift" => base.rrt_halton_shift = on(),
             "batch_size" => base.batch_size = number() as usize,
             "range" => base.range = Some(number()),
             "rewire_factor" => base.rewire_factor = number(),

@@ -54,6 +54,7 @@ fn main() {
             "rrt_dynamic_domain" => base.rrt_dynamic_domain = value,
             "rrt_balance" => base.rrt_balance = value,
             "rrt_halton" => base.rrt_halton = value,
+            "rrt_halton_shift" => base.rrt_halton_shift = value,
             other => panic!("unknown switch {other}"),
         }
     }

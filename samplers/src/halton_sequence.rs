@@ -36,6 +36,18 @@ impl HaltonSequence {
         }
     }
 
+    /// The plain sequence in `dimension` coordinates, without a shift: the same points for
+    /// every seed, starting `(1/2, 1/3, 1/5, …)`. A planner drawing from it takes the same
+    /// steps in every run (VAMP's planners draw this way, from its bases 3, 5, 7, …,
+    /// restarting the sequence before each problem).
+    pub fn unshifted(dimension: usize) -> Self {
+        Self {
+            index: 0,
+            bases: first_primes(dimension),
+            offsets: vec![0.0; dimension],
+        }
+    }
+
     /// Number of coordinates of a point.
     pub fn dimension(&self) -> usize {
         self.bases.len()
@@ -107,5 +119,26 @@ mod tests {
             }
             assert!(cells.iter().all(|&c| (1..=7).contains(&c)), "{cells:?}");
         }
+    }
+
+    #[test]
+    fn the_unshifted_sequence_is_the_radical_inverses_of_the_point_index() {
+        let mut halton = HaltonSequence::unshifted(3);
+        let mut p = [0.0; 3];
+        let expected = [
+            [1.0 / 2.0, 1.0 / 3.0, 1.0 / 5.0],
+            [1.0 / 4.0, 2.0 / 3.0, 2.0 / 5.0],
+            [3.0 / 4.0, 1.0 / 9.0, 3.0 / 5.0],
+        ];
+        for point in expected {
+            halton.next_point(&mut p);
+            for (x, e) in p.iter().zip(point) {
+                assert!((x - e).abs() < 1e-15, "{p:?} against {point:?}");
+            }
+        }
+        // The same points whatever else was built before it.
+        let mut again = HaltonSequence::unshifted(3);
+        again.next_point(&mut p);
+        assert_eq!(p, [0.5, 1.0 / 3.0, 0.2]);
     }
 }

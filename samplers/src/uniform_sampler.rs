@@ -8,8 +8,8 @@ use crate::sampling_steps::Lookahead;
 use crate::{CostBound, HaltonSequence, SampleError, Sampler, SamplerCounters};
 
 /// Uniform samples of the whole space, invalid ones rejected; the cost bound is ignored.
-/// Independent random draws ([`new`](Self::new)) or a shifted Halton sequence
-/// ([`halton`](Self::halton)).
+/// Independent random draws ([`new`](Self::new)), a Halton sequence shifted by the seed
+/// ([`halton`](Self::halton)) or the plain one ([`unshifted_halton`](Self::unshifted_halton)).
 ///
 /// The uninformed baseline (OMPL's `UniformValidStateSampler`). Its
 /// [`sampled_measure`](Sampler::sampled_measure) is always the space's measure.
@@ -32,8 +32,10 @@ use crate::{CostBound, HaltonSequence, SampleError, Sampler, SamplerCounters};
 pub struct UniformSampler {
     rng: SeededRng,
     seed: u64,
-    /// Draws from a shifted Halton sequence instead of `rng`.
+    /// Draws from a Halton sequence instead of `rng`.
     halton: bool,
+    /// That sequence is shifted by the seed (else the plain one).
+    shifted: bool,
     /// That sequence, made for the space's dimension at the first draw.
     sequence: Option<HaltonSequence>,
     counters: SamplerCounters,
@@ -48,6 +50,7 @@ impl UniformSampler {
             rng: SeededRng::seed_from_u64(seed),
             seed,
             halton: false,
+            shifted: true,
             sequence: None,
             counters: SamplerCounters::default(),
             ahead: Lookahead::default(),
@@ -64,6 +67,16 @@ impl UniformSampler {
         }
     }
 
+    /// A sampler drawing from the plain [`HaltonSequence::unshifted`], the same points for
+    /// every seed (`seed` still seeds what else the sampler draws): VAMP's RRT-Connect samples
+    /// this way, from the sequence restarted before each problem.
+    pub fn unshifted_halton(seed: u64) -> Self {
+        Self {
+            shifted: false,
+            ..Self::halton(seed)
+        }
+    }
+
     /// Writes one draw (random or Halton) scaled to the space's bounds into `out`.
     fn draw<S: StateSpace + ?Sized>(&mut self, space: &S, out: &mut [f64]) {
         if !self.halton {
@@ -73,7 +86,8 @@ impl UniformSampler {
         let d = space.dimension();
         let halton = match &mut self.sequence {
             Some(h) if h.dimension() == d => h,
-            slot => slot.insert(HaltonSequence::new(d, self.seed)),
+            slot if self.shifted => slot.insert(HaltonSequence::new(d, self.seed)),
+            slot => slot.insert(HaltonSequence::unshifted(d)),
         };
         halton.next_point(out);
         for ((x, lo), hi) in out.iter_mut().zip(space.lower()).zip(space.upper()) {

@@ -160,8 +160,10 @@ where
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
         let n = space.dimension();
-        let sampler = if parameters.rrt_halton {
+        let sampler = if parameters.rrt_halton && parameters.rrt_halton_shift {
             UniformSampler::halton(parameters.seed)
+        } else if parameters.rrt_halton {
+            UniformSampler::unshifted_halton(parameters.seed)
         } else {
             UniformSampler::new(parameters.seed)
         };
@@ -631,6 +633,50 @@ mod tests {
             let sampler_checks = planner.counters().sampler_checks;
             assert_eq!(sampler_checks > 0, valid_samples, "{sampler_checks}");
         }
+    }
+
+    #[test]
+    fn the_unshifted_halton_sequence_takes_the_same_steps_for_every_seed() {
+        let problem = problems::DividingWalls::new(2)
+            .build()
+            .unwrap()
+            .with_resolution(1e-4)
+            .unwrap();
+        let first_path = |seed: u64, shift: bool| {
+            let parameters = Parameters {
+                range: Some(0.1),
+                seed,
+                rrt_halton: true,
+                rrt_halton_shift: shift,
+                ..Parameters::default()
+            };
+            let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
+            let outcome = planner
+                .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+                .unwrap();
+            let path: Vec<Vec<f64>> = outcome
+                .solution()
+                .unwrap()
+                .path
+                .iter()
+                .map(<[f64]>::to_vec)
+                .collect();
+            for pair in path.windows(2) {
+                assert!(
+                    problem
+                        .world()
+                        .segment_verdict(&pair[0], &pair[1])
+                        .is_valid()
+                );
+            }
+            (path, planner.counters().iterations)
+        };
+        // The plain sequence: one search, whatever the seed.
+        let plain = first_path(3, false);
+        assert_eq!(first_path(4, false), plain);
+        assert_eq!(first_path(11, false), plain);
+        // Shifted by the seed (the default): other points, another search.
+        assert_ne!(first_path(3, true), first_path(4, true));
     }
 
     #[test]
