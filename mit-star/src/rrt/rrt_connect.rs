@@ -642,6 +642,7 @@ mod tests {
             .unwrap()
             .with_resolution(1e-4)
             .unwrap();
+        // The first solution and the work it took (validity: the test above).
         let first_path = |seed: u64, shift: bool| {
             let parameters = Parameters {
                 range: Some(0.1),
@@ -651,25 +652,10 @@ mod tests {
                 ..Parameters::default()
             };
             let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
-            let outcome = planner
-                .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
-                .unwrap();
-            let path: Vec<Vec<f64>> = outcome
-                .solution()
-                .unwrap()
-                .path
-                .iter()
-                .map(<[f64]>::to_vec)
-                .collect();
-            for pair in path.windows(2) {
-                assert!(
-                    problem
-                        .world()
-                        .segment_verdict(&pair[0], &pair[1])
-                        .is_valid()
-                );
-            }
-            (path, planner.counters().iterations)
+            let stop = FirstSolution.or(TimeLimit::seconds(10.0));
+            let outcome = planner.solve(&stop).unwrap();
+            assert!(outcome.is_solved());
+            (outcome, planner.counters().iterations)
         };
         // The plain sequence: one search, whatever the seed.
         let plain = first_path(3, false);
