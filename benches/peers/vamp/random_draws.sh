@@ -9,6 +9,8 @@
 # time under both (Halton: the shared harness as it is), then AORRTC's pooled medians over the
 # keys in SCENES (the time to a first solution and the cost at 10 ms, 100 ms and 1 s, as
 # anytime_table.py reads them). W = the work folder of ../shared/peers/vamp/build_vamp.sh.
+# OUT/w is then a work folder for the shared side_by_side.sh in which VAMP draws at random
+# (XORShift with the first key): W=OUT/w BIN=… MBM=… side_by_side.sh SBS.
 #   W=… [KEYS="2 5 7 11 13"] [SCENES=cage] [PER_SCENE=20] ./random_draws.sh OUT
 set -euo pipefail
 OUT=${1:?usage: random_draws.sh OUT}
@@ -34,6 +36,12 @@ for source in "$W/cpp/vamp_mbm.cc" "$HERE/vamp_anytime.cc"; do
   grep -q XORShift "$OUT/$name.cc" || { echo "no Halton generator to replace in $source" >&2; exit 1; }
   g++ -std=c++17 "${FLAGS[@]}" "${INCLUDES[@]}" "$OUT/$name.cc" "$OUT/simdxorshift.o" -o "$OUT/$name"
 done
+# A work folder for the shared side_by_side.sh whose VAMP draws at random (the first key).
+mkdir -p "$OUT/w/cpp"
+ln -sf "$W/cpp/panda_mbm.txt" "$OUT/w/cpp/panda_mbm.txt"
+printf '#!/usr/bin/env bash\nVAMP_KEY=%s exec %q "$@"\n' "${KEYS%% *}" "$(cd "$OUT" && pwd)/vamp_mbm_random" \
+  > "$OUT/w/cpp/vamp_mbm"
+chmod +x "$OUT/w/cpp/vamp_mbm"
 pinned() { setsid bash -c 'echo -20 > /proc/self/autogroup 2>/dev/null || true; exec nice -n -20 taskset -c 0 "$@"' _ "$@"; }
 pinned "$W/cpp/vamp_mbm" "$W/cpp/panda_mbm.txt" 1 > "$OUT/rrtc.halton.csv"
 for key in $KEYS; do
