@@ -136,7 +136,7 @@ mod tests {
                 assert!((x - e).abs() < 1e-15, "{p:?} against {point:?}");
             }
         }
-        // The same points whatever else was built before it.
+        // No seed and nothing shared: a second sequence starts again from the first point.
         let mut again = HaltonSequence::unshifted(3);
         again.next_point(&mut p);
         assert_eq!(p, [0.5, 1.0 / 3.0, 0.2]);
