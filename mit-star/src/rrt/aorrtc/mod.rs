@@ -51,8 +51,8 @@ const MAX_SEARCH_STATES: usize = 10_000;
 ///
 /// RRT-Connect's switches (`rrt_dynamic_domain`, `rrt_balance`, `rrt_halton`,
 /// `rrt_halton_shift`, `rrt_valid_samples`) apply to the first search, and the first two to
-/// the cost-bounded ones. Certification follows RRT-Connect: only the edges of a path found are certified, and the
-/// simplifier certifies each edge it adds.
+/// the cost-bounded ones. Certification follows RRT-Connect: only the edges of a path found are
+/// certified, and the simplifier certifies each edge it adds.
 ///
 /// # Arguments
 /// A query (space, validity checker, start, goals) and [`Parameters`](crate::Parameters):
