@@ -120,8 +120,8 @@ pub struct Parameters {
     /// other (`true`, the default, chosen by measurement), instead of alternating strictly
     /// (`false`, as OMPL's).
     pub rrt_balance: bool,
-    /// RRT-Connect draws from a Halton sequence (`true`, as VAMP does) instead of independent
-    /// uniform draws (`false`, the default, chosen by measurement).
+    /// RRT-Connect draws from a Halton sequence (`true`; VAMP's planners draw from one too)
+    /// instead of independent uniform draws (`false`, the default, chosen by measurement).
     pub rrt_halton: bool,
     /// With `rrt_halton`, the sequence is shifted by the seed (`true`, the default: each seed
     /// draws other points, equally even) or not (`false`: the plain sequence, the same points

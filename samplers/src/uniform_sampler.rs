@@ -32,15 +32,24 @@ use crate::{CostBound, HaltonSequence, SampleError, Sampler, SamplerCounters};
 pub struct UniformSampler {
     rng: SeededRng,
     seed: u64,
-    /// Draws from a Halton sequence instead of `rng`.
-    halton: bool,
-    /// That sequence is shifted by the seed (else the plain one).
-    shifted: bool,
+    /// Where the draws come from.
+    draws: Draws,
     /// That sequence, made for the space's dimension at the first draw.
     sequence: Option<HaltonSequence>,
     counters: SamplerCounters,
     /// Draws checked ahead, a batch of the checker at a time.
     ahead: Lookahead,
+}
+
+/// Where a [`UniformSampler`]'s draws come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Draws {
+    /// Independent random draws from the seeded generator.
+    Random,
+    /// A [`HaltonSequence`] shifted by the seed.
+    ShiftedHalton,
+    /// The plain [`HaltonSequence::unshifted`].
+    PlainHalton,
 }
 
 impl UniformSampler {
@@ -49,8 +58,7 @@ impl UniformSampler {
         Self {
             rng: SeededRng::seed_from_u64(seed),
             seed,
-            halton: false,
-            shifted: true,
+            draws: Draws::Random,
             sequence: None,
             counters: SamplerCounters::default(),
             ahead: Lookahead::default(),
@@ -62,7 +70,7 @@ impl UniformSampler {
     /// RRT-Connect samples this way).
     pub fn halton(seed: u64) -> Self {
         Self {
-            halton: true,
+            draws: Draws::ShiftedHalton,
             ..Self::new(seed)
         }
     }
@@ -72,21 +80,23 @@ impl UniformSampler {
     /// this way, from the sequence restarted before each problem.
     pub fn unshifted_halton(seed: u64) -> Self {
         Self {
-            shifted: false,
-            ..Self::halton(seed)
+            draws: Draws::PlainHalton,
+            ..Self::new(seed)
         }
     }
 
     /// Writes one draw (random or Halton) scaled to the space's bounds into `out`.
     fn draw<S: StateSpace + ?Sized>(&mut self, space: &S, out: &mut [f64]) {
-        if !self.halton {
+        if self.draws == Draws::Random {
             space.sample_uniform(&mut self.rng, out);
             return;
         }
         let d = space.dimension();
         let halton = match &mut self.sequence {
             Some(h) if h.dimension() == d => h,
-            slot if self.shifted => slot.insert(HaltonSequence::new(d, self.seed)),
+            slot if self.draws == Draws::ShiftedHalton => {
+                slot.insert(HaltonSequence::new(d, self.seed))
+            }
             slot => slot.insert(HaltonSequence::unshifted(d)),
         };
         halton.next_point(out);

@@ -160,12 +160,10 @@ where
         parameters: Parameters,
     ) -> Result<Self, BuildError> {
         let n = space.dimension();
-        let sampler = if parameters.rrt_halton && parameters.rrt_halton_shift {
-            UniformSampler::halton(parameters.seed)
-        } else if parameters.rrt_halton {
-            UniformSampler::unshifted_halton(parameters.seed)
-        } else {
-            UniformSampler::new(parameters.seed)
+        let sampler = match (parameters.rrt_halton, parameters.rrt_halton_shift) {
+            (false, _) => UniformSampler::new(parameters.seed),
+            (true, true) => UniformSampler::halton(parameters.seed),
+            (true, false) => UniformSampler::unshifted_halton(parameters.seed),
         };
         let parts = (sampler, checker);
         let core = RrtCore::new(space, validity, query, parts, parameters, "RRT-Connect")?;
