@@ -72,17 +72,34 @@ impl Stop for Every {
 #[test]
 fn a_stopped_certification_resumes_and_agrees() {
     let robot = panda();
-    let ball = Obstacle::new(
-        Shape::Sphere { radius: 0.2 },
-        DVec3::new(0.45, 0.3, 0.6),
-        DQuat::IDENTITY,
-    );
-    let checker = ArmChecker::new(&robot, &Scene::new(vec![ball]));
+    // A ball on the base's axis, 0.2 mm beyond the margin from the nearest sphere at `HOME`:
+    // turning the first joint keeps every distance to it, so the edge slides along it and
+    // its certification takes many short pieces.
+    let fk = robot::Kinematics::new(&robot);
+    let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
+    let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+    fk.sphere_centers_f64(&HOME, &mut links, &mut centres);
+    let above = DVec3::new(0.0, 0.0, 1.6);
+    let nearest = centres
+        .iter()
+        .map(|(c, r)| c.distance(above) - r)
+        .fold(f64::INFINITY, f64::min);
+    let build = |gap: f64| {
+        Scene::new(vec![Obstacle::new(
+            Shape::Sphere {
+                radius: nearest - gap,
+            },
+            above,
+            DQuat::IDENTITY,
+        )])
+    };
+    let margin = ArmChecker::new(&robot, &build(0.0)).margin();
+    let checker = ArmChecker::new(&robot, &build(margin + 2e-4));
     let (mut a, mut b) = (HOME, HOME);
-    a[0] = -1.2;
-    b[0] = 1.0;
-    b[3] = -1.9;
+    a[0] = -2.5;
+    b[0] = 2.5;
     let (whole, done) = certify(&checker, &a, &b, &Never);
+    assert_eq!(whole, EdgeStatus::Valid);
     // Long enough to be stopped by every stop below: a poll before every fourth batch of
     // eight (batches 1, 5, 9, …), so more than eight batches make three polls.
     assert!(done.evaluations() > 2 * 4 * 8, "{done:?} {whole:?}");
@@ -189,4 +206,54 @@ fn an_end_within_the_certification_floor_is_refused() {
     let clear = home_near_a_sphere(1e-3);
     assert!(clear.ends_are_valid());
     assert!(clear.check_ends().is_ok());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    /// Grazes, where the directional bound matters: a ball beside a sphere's path, across its
+    /// motion at a point of the edge, its surface `depth` beyond the sphere's (negative:
+    /// into it). Certified ⇒ collision-free on the reference's grid of 1e-4 rad; and a ball
+    /// reaching 0.2 mm into the path is never certified.
+    #[test]
+    fn grazing_balls_are_judged_exactly(
+        (a, b) in edge(),
+        at in 0.15..0.85_f64,
+        depth in -1e-3..1e-3_f64,
+        pick in 0..1000_usize,
+        turn in 0.0..std::f64::consts::TAU,
+    ) {
+        let robot = panda();
+        let fk = robot::Kinematics::new(&robot);
+        let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
+        let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+        let q = |t: f64| -> Vec<f64> { a.iter().zip(&b).map(|(x, y)| x + (y - x) * t).collect() };
+        let e = 1e-6;
+        fk.sphere_centers_f64(&q(at + e), &mut links, &mut centres);
+        let ahead = centres.clone();
+        fk.sphere_centers_f64(&q(at), &mut links, &mut centres);
+        let i = pick % centres.len();
+        let (c, r) = centres[i];
+        let velocity = (ahead[i].0 - c) / e;
+        prop_assume!(velocity.length() > 0.05);
+        // A direction across the motion.
+        let u = velocity.normalize();
+        let side = u.any_orthonormal_vector();
+        let across = side * turn.cos() + u.cross(side) * turn.sin();
+        let radius = 0.04;
+        let ball = Obstacle::new(
+            Shape::Sphere { radius },
+            c + across * (r + radius + depth),
+            DQuat::IDENTITY,
+        );
+        let scene = Scene::new(vec![ball]);
+        let checker = ArmChecker::new(&robot, &scene);
+        let reference = ParryChecker::new(&robot, &scene);
+        prop_assume!(checker.is_valid(&a) && checker.is_valid(&b));
+        let (status, _) = certify(&checker, &a, &b, &Never);
+        if status == EdgeStatus::Valid {
+            prop_assert!(depth > -2e-4, "a ball {depth} m into the path was certified");
+            prop_assert_eq!(reference_hit(&reference, &a, &b, 1e-4, 0.0), None);
+        }
+    }
 }

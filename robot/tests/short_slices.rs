@@ -83,7 +83,7 @@ fn every_planner_solves_in_slices_of_a_few_polls() {
     for (name, mut planner) in planners(&problem, 3) {
         let slice = Slice {
             seen: Cell::new(0),
-            polls: 6,
+            polls: 4,
         };
         let mut calls = 0;
         let path: Vec<Vec<f64>> = loop {

@@ -30,7 +30,7 @@ use crate::ArmChecker;
 use crate::checking::arm_checker::Scratch;
 use crate::checking::clearance::{EdgeBounds, certified_radii};
 use crate::checking::lanes::LANES;
-use crate::checking::local_sweep::EdgeTerms;
+use crate::checking::local_sweep::{EdgeTerms, LinkMotion8};
 
 /// The smallest clearance beyond the margin, in metres, of a configuration of a valid edge:
 /// 10 µm. An edge that passes closer than this (plus the margin) to an obstacle or to another
@@ -70,6 +70,8 @@ pub(crate) struct CertifyScratch {
     pair_sweep: Vec<f64>,
     /// Per link with spheres: its speed term in each lane.
     speeds: Vec<f32x8>,
+    /// Per link with spheres: how it moves in each lane.
+    motions: Vec<LinkMotion8>,
     /// The edge's terms of the local sweep bound.
     terms: EdgeTerms,
 }
@@ -82,6 +84,7 @@ impl CertifyScratch {
             sweep: vec![0.0; links],
             pair_sweep: vec![0.0; pairs],
             speeds: vec![f32x8::ZERO; links],
+            motions: vec![LinkMotion8::ZERO; links],
             terms: EdgeTerms::default(),
         }
     }
@@ -117,6 +120,7 @@ impl ArmChecker {
             sweep,
             pair_sweep,
             speeds,
+            motions,
             terms,
         } = certify;
         for (j, d) in delta.iter_mut().enumerate() {
@@ -188,7 +192,7 @@ impl ArmChecker {
             let (radii, refused) = certified_radii(
                 s,
                 lanes,
-                speeds,
+                (speeds, motions),
                 &chunk[..count * n],
                 &edge,
                 (FLOOR, useful),

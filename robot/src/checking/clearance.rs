@@ -8,19 +8,38 @@
 //! radius and the checker's margin. Over the piece `[m − h, m + h]` its spheres move at most
 //! `B_k(h) = min(h · A_k + h² · Q_k, h · S_k)` (the local sweep bound, with `A_k` measured at
 //! `m`, and the lever-arm bound `S_k`: see `local_sweep.rs`). So the piece is clear of the
-//! scene for link `k` while `B_k(h) ≤ c_k`. A self-collision pair `(a, b)` only moves apart
+//! scene for link `k` while `B_k(h) ≤ c_k`.
+//!
+//! That bound ignores the direction of motion, and an edge that slides past an obstacle
+//! (every valid edge does so at its closest approach, where the distance stops falling) pays
+//! for it with pieces as short as the clearance: a graze of a third of a millimetre took 25
+//! batches of the walk. So each sphere `s` is also judged against each obstacle `o` it comes
+//! near by how fast it approaches it. Every obstacle is convex, so its distance is a convex
+//! function of the point, and `dist(x(t)) ≥ dist(x(m)) + n · (x(t) − x(m))`, `n` the unit
+//! direction away from the obstacle at `x(m)`. The centre leaves its tangent line
+//! `x(m) + (t − m) v` (`v` its velocity at `m`, from the link's velocity and turn) by at most
+//! `Acc_k (t − m)² / 2` (the acceleration bound of `local_sweep.rs`), so `s` stays clear of
+//! `o` while `h · |n · v| + h² · Acc_k / 2 ≤ c_so`, its clearance from `o`. The rate `n · v` is
+//! computed in `f32` from centres placed within the margin `δ` of the true ones; it is grown
+//! by what that can hide — the direction's error `4 δ / d` (`d` the centre's distance from
+//! the obstacle) times the speed bound `A_k`, a thousandth of `A_k`, and `4 δ` per unit of
+//! the link's joint rates. The radius of `s` against `o` is the larger of this one and the
+//! one of `B_k` (both hold); at the closest approach of a graze `n · v` is about zero, and the piece is about
+//! `√(2 c / Acc)` long instead of `c / |v|`.
+//!
+//! A self-collision pair `(a, b)` only moves apart
 //! or together through the joints above one link and not the other (those above both carry
 //! the two rigidly): with `S_ab` the lever-arm sweep of those joints over the edge, the piece
 //! is clear for the pair while `h · S_ab ≤ c_ab`, the pair's clearance less two margins. The
-//! lane's radius is the largest `h` meeting all of them, each solved in closed form and
-//! rounded down.
+//! lane's radius is the smallest of its links', its spheres' and its pairs' radii, each
+//! solved in closed form and rounded down.
 //!
 //! Clearances are only computed as far as they matter: the caller names the largest radius
 //! it has a use for, and a link (or pair) clear by how far it moves over such a piece — or over
 //! a piece of the smallest radius the lane has met so far, if that is smaller — is not looked
 //! at more closely, since it cannot lower the lane's radius; a link's bounding
 //! sphere (then its distance to the solid) is tested before its small spheres, which are
-//! placed only if the bound is below what the link has found so far.
+//! placed only if the bounding sphere comes that close.
 
 use wide::f32x8;
 
@@ -28,7 +47,11 @@ use crate::checking::arm_checker::{
     LaneScratch, Shared, distance_squared, fill_lanes, outside_limits,
 };
 use crate::checking::lanes::{LANES, Point8};
-use crate::checking::local_sweep::EdgeTerms;
+use crate::checking::local_sweep::{EdgeTerms, LinkMotion8};
+
+/// The relative rounding allowed for in a computed rate of approach (its `f32` arithmetic,
+/// the direction's and the velocity's), as a share of the link's speed bound.
+const DIRECTION_ROUNDING: f32 = 1e-3;
 
 /// What the radii of an edge's configurations depend on besides the configurations: the
 /// joint displacements, the local sweep bound's terms, per link entry the lever-arm sweep
@@ -45,13 +68,12 @@ pub(crate) struct EdgeBounds<'a> {
 /// edge of `edge`): its certified radius, as a fraction of the edge, and as bit `l` of the
 /// second value whether lane `l` is refused — outside the joint limits, or with a clearance
 /// below `floor` metres (in contact, or within a hair of it). Radii are computed up to
-/// `useful` (a radius at least that large may be returned as `useful` or a little more:
-/// clearances are not sought beyond what it needs). `speeds` is scratch, one entry per link
-/// entry.
+/// `useful` (a larger radius is returned as `useful`: clearances are not sought beyond what
+/// it needs). `speeds` and `motions` are scratch, one entry per link entry.
 pub(crate) fn certified_radii(
     s: &Shared,
     lanes: &mut LaneScratch,
-    speeds: &mut [f32x8],
+    (speeds, motions): (&mut [f32x8], &mut [LinkMotion8]),
     chunk: &[f64],
     edge: &EdgeBounds<'_>,
     (floor, useful): (f64, f64),
@@ -74,33 +96,44 @@ pub(crate) fn certified_radii(
         *bound = poses8[*link].point(*center);
     }
     placed.fill(false);
-    s.local
-        .speeds(poses8, bounds8, (edge.delta, edge.terms), speeds);
+    s.local.speeds(
+        poses8,
+        bounds8,
+        (edge.delta, edge.terms),
+        speeds,
+        Some(&mut *motions),
+    );
     // Rounded up, as the plain checks' margin.
     let margin = f32x8::splat((s.margin * (1.0 + 1e-6)) as f32);
     let floor = f32x8::splat(floor as f32);
-    let useful = f32x8::splat(useful as f32);
-    // Per lane, the smallest radius so far (unbounded before the first link).
-    let mut radius = f32x8::splat(f32::INFINITY);
-    // How far link entry `k` moves over a piece of the radius it would have to undercut, the
-    // smaller of `useful` and the lane's radius so far: clear by this (and twice the floor,
-    // safe from rounding), it limits nothing.
+    // Per lane, the smallest radius so far: no lane's is sought beyond `useful`.
+    let mut radius = f32x8::splat(useful as f32);
+    // How far link entry `k` moves over a piece of the lane's radius so far (by the bounds
+    // that hold whatever the direction of motion): a sphere clear by this (and twice the
+    // floor, safe from rounding) cannot lower the radius.
     let cap = |k: usize, radius: f32x8| {
         let (a, q) = (speeds[k], edge.terms.second(k) as f32);
-        let h = radius.min(useful);
-        let local = h * a + h * h * f32x8::splat(q);
-        local.min(h * f32x8::splat(edge.sweep[k] as f32)) + floor + floor
+        let local = radius * a + radius * radius * f32x8::splat(q);
+        local.min(radius * f32x8::splat(edge.sweep[k] as f32)) + floor + floor
     };
     for (k, (link, range, _, bound_radius)) in s.links.iter().enumerate() {
         let sweep = edge.sweep[k] as f32;
         let r = f32x8::splat(*bound_radius);
-        let mut best = cap(k, radius) + margin;
+        let second = edge.terms.second(k) as f32;
+        let acceleration = f32x8::splat(edge.terms.acceleration(k) as f32);
+        // What the rate of approach computed in `f32` may miss: its relative rounding, and the
+        // error of the link's poses carried through its joint rates.
+        let slack = speeds[k] * f32x8::splat(DIRECTION_ROUNDING)
+            + margin * f32x8::splat(4.0 * edge.terms.rates(k) as f32);
+        let LinkMotion8 { velocity, angular } = &motions[k];
+        let mut nearest = f32x8::splat(f32::INFINITY);
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
         for obstacle in &s.reachable[k] {
+            let limit = cap(k, radius);
             // Spheres of the link are no closer than its bounding sphere.
-            let limit = best + r;
-            if obstacle.may_be_within8(&bounds8[k], limit) & live == 0
-                || obstacle.within8(&bounds8[k], limit) & live == 0
+            let outer = limit + margin + r;
+            if obstacle.may_be_within8(&bounds8[k], outer) & live == 0
+                || obstacle.within8(&bounds8[k], outer) & live == 0
             {
                 continue;
             }
@@ -112,14 +145,35 @@ pub(crate) fn certified_radii(
                 placed[k] = true;
             }
             for i in range.clone() {
-                let gap = obstacle.distances8(&centers8[i]) - f32x8::splat(s.spheres[i].1);
-                best = best.min(gap);
+                let c = &centers8[i];
+                // The sphere centre's velocity: the bounding centre's, plus the link's turn
+                // about it.
+                let arm = [
+                    c[0] - bounds8[k][0],
+                    c[1] - bounds8[k][1],
+                    c[2] - bounds8[k][2],
+                ];
+                let moving = [
+                    velocity[0] + angular[1] * arm[2] - angular[2] * arm[1],
+                    velocity[1] + angular[2] * arm[0] - angular[0] * arm[2],
+                    velocity[2] + angular[0] * arm[1] - angular[1] * arm[0],
+                ];
+                let (distance, rate) = obstacle.approach8(c, &moving);
+                let gap = distance - f32x8::splat(s.spheres[i].1);
+                nearest = nearest.min(gap);
+                let clear = gap - margin;
+                if clear.simd_lt(limit).to_bitmask() & live == 0 {
+                    continue;
+                }
+                // The direction from the solid is known to within `4 δ / d` for a centre `d`
+                // from it placed within `δ` (the margin) of where it is.
+                let aim = margin * f32x8::splat(4.0) / (distance - margin).max(margin);
+                let approach = rate.abs() + slack + aim * speeds[k];
+                let directional = reach_approaching(clear, approach, acceleration);
+                radius = radius.min(reach(clear, speeds[k], second, sweep).max(directional));
             }
         }
-        let clear = best - margin;
-        refused |= clear.simd_lt(floor).to_bitmask() & live;
-        let second = edge.terms.second(k) as f32;
-        radius = radius.min(reach(clear, speeds[k], second, sweep));
+        refused |= (nearest - margin).simd_lt(floor).to_bitmask() & live;
     }
     for (p, &(a, b)) in s.pairs.iter().enumerate() {
         let (la, lb) = (&s.links[a], &s.links[b]);
@@ -129,7 +183,7 @@ pub(crate) fn certified_radii(
         let margins = margin + margin;
         // As for the links: clear by the sweep over a piece of the lane's radius so far, the
         // pair limits nothing.
-        let mut best = radius.min(useful) * f32x8::splat(sweep) + floor + floor + margins;
+        let mut best = radius * f32x8::splat(sweep) + floor + floor + margins;
         let reach_ab = f32x8::splat(la.3 + lb.3);
         if closer(&bounds8[a], &bounds8[b], best + reach_ab) & live != 0 {
             for (k, l) in [(a, la), (b, lb)] {
@@ -182,6 +236,17 @@ fn reach(clear: f32x8, speed: f32x8, second: f32, sweep: f32) -> f32x8 {
     let denominator = speed + (speed * speed + f32x8::splat(4.0) * q * c).sqrt();
     let quadratic = (c + c) / denominator.max(f32x8::splat(f32::MIN_POSITIVE));
     linear.max(quadratic)
+}
+
+/// Per lane, the largest `h` with `h · approach + h² · acceleration / 2 ≤ clear` (0 for a
+/// clearance of 0 or less): how far a sphere approaching a convex solid at `approach` at the
+/// piece's middle, and accelerating at most `acceleration`, can move either way and stay
+/// clear of it.
+#[inline]
+fn reach_approaching(clear: f32x8, approach: f32x8, acceleration: f32x8) -> f32x8 {
+    let c = clear.max(f32x8::ZERO);
+    let denominator = approach + (approach * approach + (acceleration + acceleration) * c).sqrt();
+    (c + c) / denominator.max(f32x8::splat(f32::MIN_POSITIVE))
 }
 
 /// Bit `l` set if lane `l`'s points are closer than `limit[l]` (no square root).

@@ -145,16 +145,9 @@ impl Obstacle {
         near & self.excess8(center).simd_le(radius * radius).to_bitmask()
     }
 
-    /// Per lane, the distance from the point to the solid (0 inside), `f32`: the same
-    /// arithmetic as [`collides_spheres8`](Self::collides_spheres8), square-rooted.
-    #[inline]
-    pub(crate) fn distances8(&self, point: &[f32x8; 3]) -> f32x8 {
-        self.excess8(point).sqrt()
-    }
-
     /// Bit `l` set if lane `l`'s point may be closer than `limit[l]` to the solid: closer
     /// than `limit + bound` to the bounding sphere's centre (no square root; a cheaper, looser
-    /// test than [`distances8`](Self::distances8)).
+    /// test than [`within8`](Self::within8)).
     #[inline]
     pub(crate) fn may_be_within8(&self, point: &[f32x8; 3], limit: f32x8) -> u32 {
         let [x, y, z] = *point;
@@ -179,18 +172,84 @@ impl Obstacle {
         positive & self.excess8(point).simd_lt(limit * limit).to_bitmask()
     }
 
-    /// Per lane, the squared distance from the point to the solid (0 inside), `f32`.
+    /// Per lane, the distance from the point to the solid (0 inside, `f32`: the arithmetic of
+    /// [`collides_spheres8`](Self::collides_spheres8), square-rooted) and how fast it changes when the point moves at
+    /// `velocity`: `n · v`, `n` the unit direction from the solid's nearest point to the
+    /// point (0 inside, where no direction is defined).
+    ///
+    /// Every shape is convex, so the distance is a convex function of the point and
+    /// `dist(y) ≥ dist(x) + n · (y − x)` for every `y`: the rate bounds how fast the point can
+    /// approach the solid to first order, whatever the motion's length (certification's
+    /// directional bound, `clearance.rs`).
     #[inline]
-    fn excess8(&self, &[x, y, z]: &[f32x8; 3]) -> f32x8 {
+    pub(crate) fn approach8(&self, point: &[f32x8; 3], velocity: &[f32x8; 3]) -> (f32x8, f32x8) {
+        let [px, py, pz] = self.local8(point);
+        let m = &self.inverse.matrix3;
+        let [vx, vy, vz] = *velocity;
+        let turn =
+            |a: Vec3A| f32x8::splat(a.x) * vx + f32x8::splat(a.y) * vy + f32x8::splat(a.z) * vz;
+        let (ux, uy, uz) = (
+            turn(Vec3A::new(m.x_axis.x, m.y_axis.x, m.z_axis.x)),
+            turn(Vec3A::new(m.x_axis.y, m.y_axis.y, m.z_axis.y)),
+            turn(Vec3A::new(m.x_axis.z, m.y_axis.z, m.z_axis.z)),
+        );
+        let zero = f32x8::ZERO;
+        // The excess beyond the solid along each of its local directions, and its rate.
+        let (squared, along) = match self.shape {
+            Shape::Cuboid { .. } => {
+                let ex = (px.abs() - f32x8::splat(self.size.x)).max(zero);
+                let ey = (py.abs() - f32x8::splat(self.size.y)).max(zero);
+                let ez = (pz.abs() - f32x8::splat(self.size.z)).max(zero);
+                (
+                    ex * ex + ey * ey + ez * ez,
+                    ex.copysign(px) * ux + ey.copysign(py) * uy + ez.copysign(pz) * uz,
+                )
+            }
+            Shape::Cylinder { .. } => {
+                let planar = (px * px + py * py).sqrt();
+                let radial = (planar - f32x8::splat(self.size.x)).max(zero);
+                let axial = (pz.abs() - f32x8::splat(self.size.y)).max(zero);
+                let outward = (px * ux + py * uy) / planar.max(f32x8::splat(f32::MIN_POSITIVE));
+                (
+                    radial * radial + axial * axial,
+                    radial * outward + axial.copysign(pz) * uz,
+                )
+            }
+            Shape::Sphere { .. } => {
+                let length = (px * px + py * py + pz * pz).sqrt();
+                let d = (length - f32x8::splat(self.size.x)).max(zero);
+                let outward =
+                    (px * ux + py * uy + pz * uz) / length.max(f32x8::splat(f32::MIN_POSITIVE));
+                (d * d, d * outward)
+            }
+        };
+        let distance = squared.sqrt();
+        (
+            distance,
+            along / distance.max(f32x8::splat(f32::MIN_POSITIVE)),
+        )
+    }
+
+    /// The point in the solid's frame.
+    #[inline]
+    fn local8(&self, &[x, y, z]: &[f32x8; 3]) -> [f32x8; 3] {
         let m = &self.inverse.matrix3;
         let t = self.inverse.translation;
         let row = |a: Vec3A, t: f32| {
             f32x8::splat(a.x) * x + f32x8::splat(a.y) * y + f32x8::splat(a.z) * z + f32x8::splat(t)
         };
         // Row i of the rotation is (x_axis[i], y_axis[i], z_axis[i]).
-        let px = row(Vec3A::new(m.x_axis.x, m.y_axis.x, m.z_axis.x), t.x);
-        let py = row(Vec3A::new(m.x_axis.y, m.y_axis.y, m.z_axis.y), t.y);
-        let pz = row(Vec3A::new(m.x_axis.z, m.y_axis.z, m.z_axis.z), t.z);
+        [
+            row(Vec3A::new(m.x_axis.x, m.y_axis.x, m.z_axis.x), t.x),
+            row(Vec3A::new(m.x_axis.y, m.y_axis.y, m.z_axis.y), t.y),
+            row(Vec3A::new(m.x_axis.z, m.y_axis.z, m.z_axis.z), t.z),
+        ]
+    }
+
+    /// Per lane, the squared distance from the point to the solid (0 inside), `f32`.
+    #[inline]
+    fn excess8(&self, point: &[f32x8; 3]) -> f32x8 {
+        let [px, py, pz] = self.local8(point);
         let zero = f32x8::ZERO;
         match self.shape {
             Shape::Cuboid { .. } => {
@@ -259,5 +318,50 @@ mod tests {
         assert!(ball.collides_sphere(Vec3A::new(1.0, 0.29, 0.0), 0.1));
         assert!(!ball.collides_sphere(Vec3A::new(1.0, 0.31, 0.0), 0.1));
         assert_eq!(ball.distance_f64(DVec3::X), 0.0);
+    }
+
+    /// The rate of approach is the derivative of the distance along the velocity (central
+    /// differences in `f64`), for every shape, from points around it in every direction.
+    #[test]
+    fn the_rate_of_approach_is_the_distance_derivative() {
+        let turn = DQuat::from_euler(glam::EulerRot::XYZ, 0.3, -0.7, 1.1);
+        let solids = [
+            Shape::Cuboid {
+                half_extents: DVec3::new(0.1, 0.2, 0.05),
+            },
+            Shape::Cylinder {
+                half_height: 0.15,
+                radius: 0.08,
+            },
+            Shape::Sphere { radius: 0.12 },
+        ];
+        let mut checked = 0;
+        for shape in solids {
+            let solid = Obstacle::new(shape, DVec3::new(0.4, -0.1, 0.3), turn);
+            for i in 0..64 {
+                let f = f64::from(i);
+                let direction =
+                    DVec3::new((f * 0.7).sin(), (f * 1.3).cos(), (f * 0.37).sin()).normalize();
+                let point = DVec3::new(0.4, -0.1, 0.3) + direction * (0.15 + 0.003 * f);
+                let velocity = DVec3::new((f * 2.1).cos(), (f * 0.9).sin(), 0.5 - (f * 0.2).cos());
+                if solid.distance_f64(point) < 1e-3 {
+                    continue;
+                }
+                let e = 1e-6;
+                let expected = (solid.distance_f64(point + velocity * e)
+                    - solid.distance_f64(point - velocity * e))
+                    / (2.0 * e);
+                let splat = |v: DVec3| [v.x, v.y, v.z].map(|x| f32x8::splat(x as f32));
+                let (distance, rate) = solid.approach8(&splat(point), &splat(velocity));
+                let (distance, rate) = (distance.to_array()[0], rate.to_array()[0]);
+                assert!((f64::from(distance) - solid.distance_f64(point)).abs() < 1e-5);
+                assert!(
+                    (f64::from(rate) - expected).abs() < 1e-3 * (1.0 + velocity.length()),
+                    "{shape:?} at {point}: {rate} against {expected}"
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked > 150, "{checked}");
     }
 }
