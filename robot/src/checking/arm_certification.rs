@@ -24,13 +24,12 @@
 
 use spaces::{StateSpace, Stop, wrap_angle};
 use validity::{EdgeStatus, MotionProgress};
-use wide::f32x8;
 
 use crate::ArmChecker;
 use crate::checking::arm_checker::Scratch;
 use crate::checking::clearance::{EdgeBounds, certified_radii};
 use crate::checking::lanes::LANES;
-use crate::checking::local_sweep::{EdgeTerms, LinkMotion8};
+use crate::checking::local_sweep::EdgeTerms;
 
 /// The smallest clearance beyond the margin, in metres, of a configuration of a valid edge:
 /// 10 µm. An edge that passes closer than this (plus the margin) to an obstacle or to another
@@ -68,10 +67,6 @@ pub(crate) struct CertifyScratch {
     /// Per self-collision pair: how far its links move relative to each other over the
     /// whole edge.
     pair_sweep: Vec<f64>,
-    /// Per link with spheres: its speed term in each lane.
-    speeds: Vec<f32x8>,
-    /// Per link with spheres: how it moves in each lane.
-    motions: Vec<LinkMotion8>,
     /// The edge's terms of the local sweep bound.
     terms: EdgeTerms,
 }
@@ -83,8 +78,6 @@ impl CertifyScratch {
             delta: vec![0.0; dimension],
             sweep: vec![0.0; links],
             pair_sweep: vec![0.0; pairs],
-            speeds: vec![f32x8::ZERO; links],
-            motions: vec![LinkMotion8::ZERO; links],
             terms: EdgeTerms::default(),
         }
     }
@@ -119,8 +112,6 @@ impl ArmChecker {
             delta,
             sweep,
             pair_sweep,
-            speeds,
-            motions,
             terms,
         } = certify;
         for (j, d) in delta.iter_mut().enumerate() {
@@ -189,14 +180,8 @@ impl ArmChecker {
             // No piece needs to reach further than the edge, and a batch's pieces need not be
             // more than `USEFUL` spacings wide.
             let useful = (USEFUL * w).min(1.0);
-            let (radii, refused) = certified_radii(
-                s,
-                lanes,
-                (speeds, motions),
-                &chunk[..count * n],
-                &edge,
-                (FLOOR, useful),
-            );
+            let (radii, refused) =
+                certified_radii(s, lanes, &chunk[..count * n], &edge, (FLOOR, useful));
             if refused != 0 {
                 *progress = progress.advanced(t, w);
                 return Some(EdgeStatus::Invalid);

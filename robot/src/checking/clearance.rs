@@ -69,11 +69,10 @@ pub(crate) struct EdgeBounds<'a> {
 /// second value whether lane `l` is refused — outside the joint limits, or with a clearance
 /// below `floor` metres (in contact, or within a hair of it). Radii are computed up to
 /// `useful` (a larger radius is returned as `useful`: clearances are not sought beyond what
-/// it needs). `speeds` and `motions` are scratch, one entry per link entry.
+/// it needs).
 pub(crate) fn certified_radii(
     s: &Shared,
     lanes: &mut LaneScratch,
-    (speeds, motions): (&mut [f32x8], &mut [LinkMotion8]),
     chunk: &[f64],
     edge: &EdgeBounds<'_>,
     (floor, useful): (f64, f64),
@@ -96,40 +95,46 @@ pub(crate) fn certified_radii(
         *bound = poses8[*link].point(*center);
     }
     placed.fill(false);
-    s.local.speeds(
-        poses8,
-        bounds8,
-        (edge.delta, edge.terms),
-        speeds,
-        Some(&mut *motions),
-    );
     // Rounded up, as the plain checks' margin.
     let margin = f32x8::splat((s.margin * (1.0 + 1e-6)) as f32);
     let floor = f32x8::splat(floor as f32);
     // Per lane, the smallest radius so far: no lane's is sought beyond `useful`.
     let mut radius = f32x8::splat(useful as f32);
-    // How far link entry `k` moves over a piece of the lane's radius so far (by the bounds
-    // that hold whatever the direction of motion): a sphere clear by this (and twice the
-    // floor, safe from rounding) cannot lower the radius.
-    let cap = |k: usize, radius: f32x8| {
-        let (a, q) = (speeds[k], edge.terms.second(k) as f32);
-        let local = radius * a + radius * radius * f32x8::splat(q);
-        local.min(radius * f32x8::splat(edge.sweep[k] as f32)) + floor + floor
-    };
     for (k, (link, range, _, bound_radius)) in s.links.iter().enumerate() {
-        let sweep = edge.sweep[k] as f32;
+        let sweep = f32x8::splat(edge.sweep[k] as f32);
         let r = f32x8::splat(*bound_radius);
+        // The obstacles that come within the link's lever-arm sweep over a piece of the lane's
+        // radius so far (and twice the floor, safe from rounding); the others cannot lower
+        // the radius, and a link near none of them needs no more than this.
+        let near = |radius: f32x8, obstacle: &crate::Obstacle| {
+            let outer = radius * sweep + floor + floor + margin + r;
+            obstacle.may_be_within8(&bounds8[k], outer) & live != 0
+                && obstacle.within8(&bounds8[k], outer) & live != 0
+        };
+        if !s.reachable[k].iter().any(|o| near(radius, o)) {
+            continue;
+        }
+        let (speed, motion) = s
+            .local
+            .speed_of(k, poses8, &bounds8[k], (edge.delta, edge.terms));
         let second = edge.terms.second(k) as f32;
         let acceleration = f32x8::splat(edge.terms.acceleration(k) as f32);
+        // How far the link's spheres move over a piece of the lane's radius so far, by the
+        // bounds that hold whatever the direction of motion: a sphere clear by this (and
+        // twice the floor) cannot lower the radius.
+        let cap = |radius: f32x8| {
+            let local = radius * speed + radius * radius * f32x8::splat(second);
+            local.min(radius * sweep) + floor + floor
+        };
         // What the rate of approach computed in `f32` may miss: its relative rounding, and the
         // error of the link's poses carried through its joint rates.
-        let slack = speeds[k] * f32x8::splat(DIRECTION_ROUNDING)
+        let slack = speed * f32x8::splat(DIRECTION_ROUNDING)
             + margin * f32x8::splat(4.0 * edge.terms.rates(k) as f32);
-        let LinkMotion8 { velocity, angular } = &motions[k];
+        let LinkMotion8 { velocity, angular } = motion;
         let mut nearest = f32x8::splat(f32::INFINITY);
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
         for obstacle in &s.reachable[k] {
-            let limit = cap(k, radius);
+            let limit = cap(radius);
             // Spheres of the link are no closer than its bounding sphere.
             let outer = limit + margin + r;
             if obstacle.may_be_within8(&bounds8[k], outer) & live == 0
@@ -146,6 +151,14 @@ pub(crate) fn certified_radii(
             }
             for i in range.clone() {
                 let c = &centers8[i];
+                let local = obstacle.local8(c);
+                let distance = obstacle.distances_local8(&local);
+                let gap = distance - f32x8::splat(s.spheres[i].1);
+                nearest = nearest.min(gap);
+                let clear = gap - margin;
+                if clear.simd_lt(limit).to_bitmask() & live == 0 {
+                    continue;
+                }
                 // The sphere centre's velocity: the bounding centre's, plus the link's turn
                 // about it.
                 let arm = [
@@ -158,19 +171,14 @@ pub(crate) fn certified_radii(
                     velocity[1] + angular[2] * arm[0] - angular[0] * arm[2],
                     velocity[2] + angular[0] * arm[1] - angular[1] * arm[0],
                 ];
-                let (distance, rate) = obstacle.approach8(c, &moving);
-                let gap = distance - f32x8::splat(s.spheres[i].1);
-                nearest = nearest.min(gap);
-                let clear = gap - margin;
-                if clear.simd_lt(limit).to_bitmask() & live == 0 {
-                    continue;
-                }
+                let rate = obstacle.rates_local8(&local, distance, &moving);
                 // The direction from the solid is known to within `4 δ / d` for a centre `d`
                 // from it placed within `δ` (the margin) of where it is.
                 let aim = margin * f32x8::splat(4.0) / (distance - margin).max(margin);
-                let approach = rate.abs() + slack + aim * speeds[k];
+                let approach = rate.abs() + slack + aim * speed;
                 let directional = reach_approaching(clear, approach, acceleration);
-                radius = radius.min(reach(clear, speeds[k], second, sweep).max(directional));
+                radius =
+                    radius.min(reach(clear, speed, second, edge.sweep[k] as f32).max(directional));
             }
         }
         refused |= (nearest - margin).simd_lt(floor).to_bitmask() & live;

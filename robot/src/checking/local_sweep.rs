@@ -172,98 +172,89 @@ impl LocalSweep {
         out.rates.clear();
         for (k, chain) in self.chains.iter().enumerate() {
             let lever = &levers[k * n..(k + 1) * n];
-            let (mut constant, mut second, mut acceleration) = (0.0, 0.0, 0.0);
-            // The revolute rates above the joint at hand.
-            let mut above = 0.0;
-            for (a, joint) in chain.iter().enumerate() {
+            // `after`: `Σ λ_{k,i} |Δq_i|` over the joints below the one at hand, run from the
+            // link up.
+            let (mut constant, mut second, mut after, mut rates) = (0.0, 0.0, 0.0, 0.0);
+            for joint in chain.iter().rev() {
                 let d = delta[joint.coordinate].abs();
+                rates += d * joint.slide.max(1.0);
                 if joint.axis.is_none() {
                     constant += joint.slide * d;
+                } else {
+                    constant += d * (self.spreads[k] + f64::from(DISTANCE_SLACK));
+                    second += d * after;
+                }
+                after += lever[joint.coordinate] * d;
+            }
+            // The acceleration, from the root down: `above` is the revolute rates above the
+            // joint at hand, `after` what is below it.
+            let (mut acceleration, mut above) = (0.0, 0.0);
+            for joint in chain {
+                let d = delta[joint.coordinate].abs();
+                let own = lever[joint.coordinate];
+                after -= own * d;
+                if joint.axis.is_none() {
                     acceleration += d * joint.slide * above;
                     continue;
                 }
-                constant += d * (self.spreads[k] + f64::from(DISTANCE_SLACK));
-                let after: f64 = chain[a + 1..]
-                    .iter()
-                    .map(|i| lever[i.coordinate] * delta[i.coordinate].abs())
-                    .sum();
-                second += d * after;
-                let own = lever[joint.coordinate];
-                acceleration += d * (2.0 * above * own + d * own + after);
+                acceleration += d * (2.0 * above * own + d * own + after.max(0.0));
                 above += d;
             }
             out.constant.push(constant);
             out.second.push(second);
-            // Rounded up, as the lever arms.
-            out.acceleration.push(acceleration * (1.0 + 1e-9));
-            out.rates.push(
-                chain
-                    .iter()
-                    .map(|j| delta[j.coordinate].abs() * j.slide.max(1.0))
-                    .sum(),
-            );
+            // Rounded up, as the lever arms (and for the running sums' rounding).
+            out.acceleration.push(acceleration * (1.0 + 1e-9) + 1e-12);
+            out.rates.push(rates);
         }
     }
 
-    /// Each link entry's speed term in each lane, `A_k = constant_k + Σ_j |Δq_j| d_j` with
-    /// `d_j` measured from the lane's link poses and bounding centres: over a piece of
+    /// Link entry `k`'s speed term in each lane, `A_k = constant_k + Σ_j |Δq_j| d_j` with
+    /// `d_j` measured from the lane's link poses and its bounding centre `p`: over a piece of
     /// half-width `h` around the lane's configuration, the entry's spheres move at most
-    /// `h · A_k + h² · Q_k` ([`EdgeTerms::second`]). Rounded up.
-    ///
-    /// With `motions`, also each entry's [`LinkMotion8`] at the lanes' configurations.
-    pub(crate) fn speeds(
+    /// `h · A_k + h² · Q_k` ([`EdgeTerms::second`]). Rounded up. With it, the entry's
+    /// [`LinkMotion8`] at the lanes' configurations.
+    #[inline]
+    pub(crate) fn speed_of(
         &self,
+        k: usize,
         poses: &[Pose8],
-        bounds: &[Point8],
+        p: &Point8,
         (delta, terms): (&[f64], &EdgeTerms),
-        out: &mut [f32x8],
-        mut motions: Option<&mut [LinkMotion8]>,
-    ) {
-        for (k, chain) in self.chains.iter().enumerate() {
-            let p = &bounds[k];
-            let mut speed = f32x8::splat(terms.constant[k] as f32);
-            let mut motion = LinkMotion8::ZERO;
-            for joint in chain {
-                let pose = &poses[joint.frame];
-                let rate = f32x8::splat(delta[joint.coordinate] as f32);
-                let Some(axis) = joint.axis else {
-                    if motions.is_some() {
-                        let a = pose.rotate(joint.direction);
-                        for (v, a) in motion.velocity.iter_mut().zip(a) {
-                            *v += rate * a;
-                        }
-                    }
-                    continue;
-                };
-                let u = pose.rotate(axis);
-                let o = pose.translation();
-                let r = [p[0] - o[0], p[1] - o[1], p[2] - o[2]];
-                let cross = [
-                    r[1] * u[2] - r[2] * u[1],
-                    r[2] * u[0] - r[0] * u[2],
-                    r[0] * u[1] - r[1] * u[0],
-                ];
-                let distance =
-                    (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
-                speed += distance * f32x8::splat(delta[joint.coordinate].abs() as f32);
-                if motions.is_some() {
-                    // `u × r = −(r × u)`.
-                    for ((v, w), (c, u)) in motion
-                        .velocity
-                        .iter_mut()
-                        .zip(&mut motion.angular)
-                        .zip(cross.iter().zip(u))
-                    {
-                        *v -= rate * *c;
-                        *w += rate * u;
-                    }
+    ) -> (f32x8, LinkMotion8) {
+        let mut speed = f32x8::splat(terms.constant[k] as f32);
+        let mut motion = LinkMotion8::ZERO;
+        for joint in &self.chains[k] {
+            let pose = &poses[joint.frame];
+            let rate = f32x8::splat(delta[joint.coordinate] as f32);
+            let Some(axis) = joint.axis else {
+                let a = pose.rotate(joint.direction);
+                for (v, a) in motion.velocity.iter_mut().zip(a) {
+                    *v += rate * a;
                 }
-            }
-            out[k] = speed * f32x8::splat(1.0 + 1e-5);
-            if let Some(motions) = motions.as_deref_mut() {
-                motions[k] = motion;
+                continue;
+            };
+            let u = pose.rotate(axis);
+            let o = pose.translation();
+            let r = [p[0] - o[0], p[1] - o[1], p[2] - o[2]];
+            let cross = [
+                r[1] * u[2] - r[2] * u[1],
+                r[2] * u[0] - r[0] * u[2],
+                r[0] * u[1] - r[1] * u[0],
+            ];
+            let distance = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
+            speed += distance * f32x8::splat(delta[joint.coordinate].abs() as f32);
+            // `u × r = −(r × u)`.
+            for ((v, w), (c, u)) in motion
+                .velocity
+                .iter_mut()
+                .zip(&mut motion.angular)
+                .zip(cross.iter().zip(u))
+            {
+                *v -= rate * *c;
+                *w += rate * u;
             }
         }
+        (speed * f32x8::splat(1.0 + 1e-5), motion)
     }
 }
 
@@ -354,8 +345,9 @@ mod tests {
             let sweep: Vec<f64> = (0..s.links.len())
                 .map(|k| (0..n).map(|j| s.levers[k * n + j] * delta[j].abs()).sum())
                 .collect();
-            s.local
-                .speeds(&poses, &bounds, (&delta, &terms), &mut speeds, None);
+            for (k, speed) in speeds.iter_mut().enumerate() {
+                *speed = s.local.speed_of(k, &poses, &bounds[k], (&delta, &terms)).0;
+            }
             fk.sphere_centers_f64(&middle, &mut links, &mut at_middle);
             for step in 0..=64 {
                 let t = m - h + 2.0 * h * f64::from(step) / 64.0;
@@ -409,7 +401,6 @@ mod tests {
         );
         let mut poses = vec![Pose8::IDENTITY; fk.link_count()];
         let mut bounds = vec![[f32x8::ZERO; 3]; s.links.len()];
-        let mut speeds = vec![f32x8::ZERO; s.links.len()];
         let mut motions = vec![LinkMotion8::ZERO; s.links.len()];
         let mut terms = EdgeTerms::default();
         let mut rng = Lcg(5);
@@ -426,13 +417,9 @@ mod tests {
                 *bound = poses[*link].point(*center);
             }
             s.local.edge_terms(&delta, &s.levers, &mut terms);
-            s.local.speeds(
-                &poses,
-                &bounds,
-                (&delta, &terms),
-                &mut speeds,
-                Some(&mut motions),
-            );
+            for (k, motion) in motions.iter_mut().enumerate() {
+                *motion = s.local.speed_of(k, &poses, &bounds[k], (&delta, &terms)).1;
+            }
             fk.sphere_centers_f64(&q(m), &mut links, &mut at_middle);
             let e = 1e-6;
             fk.sphere_centers_f64(&q(m + e), &mut links, &mut ahead);

@@ -172,18 +172,31 @@ impl Obstacle {
         positive & self.excess8(point).simd_lt(limit * limit).to_bitmask()
     }
 
-    /// Per lane, the distance from the point to the solid (0 inside, `f32`: the arithmetic of
-    /// [`collides_spheres8`](Self::collides_spheres8), square-rooted) and how fast it changes when the point moves at
-    /// `velocity`: `n · v`, `n` the unit direction from the solid's nearest point to the
-    /// point (0 inside, where no direction is defined).
+    /// Per lane, the distance from the point (given in the solid's frame, [`local8`]
+    /// (Self::local8)) to the solid, 0 inside: the arithmetic of
+    /// [`collides_spheres8`](Self::collides_spheres8), square-rooted.
+    #[inline]
+    pub(crate) fn distances_local8(&self, local: &[f32x8; 3]) -> f32x8 {
+        self.excess_local8(local).sqrt()
+    }
+
+    /// Per lane, how fast the distance from the point (in the solid's frame, at `distance`
+    /// from it) changes when the point moves at `velocity` (in the world frame): `n · v`, `n`
+    /// the unit direction from the solid's nearest point to the point (0 inside, where no
+    /// direction is defined).
     ///
     /// Every shape is convex, so the distance is a convex function of the point and
     /// `dist(y) ≥ dist(x) + n · (y − x)` for every `y`: the rate bounds how fast the point can
     /// approach the solid to first order, whatever the motion's length (certification's
     /// directional bound, `clearance.rs`).
     #[inline]
-    pub(crate) fn approach8(&self, point: &[f32x8; 3], velocity: &[f32x8; 3]) -> (f32x8, f32x8) {
-        let [px, py, pz] = self.local8(point);
+    pub(crate) fn rates_local8(
+        &self,
+        [px, py, pz]: &[f32x8; 3],
+        distance: f32x8,
+        velocity: &[f32x8; 3],
+    ) -> f32x8 {
+        let (px, py, pz) = (*px, *py, *pz);
         let m = &self.inverse.matrix3;
         let [vx, vy, vz] = *velocity;
         let turn =
@@ -194,45 +207,35 @@ impl Obstacle {
             turn(Vec3A::new(m.x_axis.z, m.y_axis.z, m.z_axis.z)),
         );
         let zero = f32x8::ZERO;
-        // The excess beyond the solid along each of its local directions, and its rate.
-        let (squared, along) = match self.shape {
+        // The excess beyond the solid along each of its local directions, times its rate.
+        let along = match self.shape {
             Shape::Cuboid { .. } => {
                 let ex = (px.abs() - f32x8::splat(self.size.x)).max(zero);
                 let ey = (py.abs() - f32x8::splat(self.size.y)).max(zero);
                 let ez = (pz.abs() - f32x8::splat(self.size.z)).max(zero);
-                (
-                    ex * ex + ey * ey + ez * ez,
-                    ex.copysign(px) * ux + ey.copysign(py) * uy + ez.copysign(pz) * uz,
-                )
+                ex.copysign(px) * ux + ey.copysign(py) * uy + ez.copysign(pz) * uz
             }
             Shape::Cylinder { .. } => {
                 let planar = (px * px + py * py).sqrt();
                 let radial = (planar - f32x8::splat(self.size.x)).max(zero);
                 let axial = (pz.abs() - f32x8::splat(self.size.y)).max(zero);
                 let outward = (px * ux + py * uy) / planar.max(f32x8::splat(f32::MIN_POSITIVE));
-                (
-                    radial * radial + axial * axial,
-                    radial * outward + axial.copysign(pz) * uz,
-                )
+                radial * outward + axial.copysign(pz) * uz
             }
             Shape::Sphere { .. } => {
                 let length = (px * px + py * py + pz * pz).sqrt();
                 let d = (length - f32x8::splat(self.size.x)).max(zero);
                 let outward =
                     (px * ux + py * uy + pz * uz) / length.max(f32x8::splat(f32::MIN_POSITIVE));
-                (d * d, d * outward)
+                d * outward
             }
         };
-        let distance = squared.sqrt();
-        (
-            distance,
-            along / distance.max(f32x8::splat(f32::MIN_POSITIVE)),
-        )
+        along / distance.max(f32x8::splat(f32::MIN_POSITIVE))
     }
 
     /// The point in the solid's frame.
     #[inline]
-    fn local8(&self, &[x, y, z]: &[f32x8; 3]) -> [f32x8; 3] {
+    pub(crate) fn local8(&self, &[x, y, z]: &[f32x8; 3]) -> [f32x8; 3] {
         let m = &self.inverse.matrix3;
         let t = self.inverse.translation;
         let row = |a: Vec3A, t: f32| {
@@ -249,7 +252,12 @@ impl Obstacle {
     /// Per lane, the squared distance from the point to the solid (0 inside), `f32`.
     #[inline]
     fn excess8(&self, point: &[f32x8; 3]) -> f32x8 {
-        let [px, py, pz] = self.local8(point);
+        self.excess_local8(&self.local8(point))
+    }
+
+    /// [`excess8`](Self::excess8) of a point given in the solid's frame.
+    #[inline]
+    fn excess_local8(&self, &[px, py, pz]: &[f32x8; 3]) -> f32x8 {
         let zero = f32x8::ZERO;
         match self.shape {
             Shape::Cuboid { .. } => {
@@ -352,7 +360,9 @@ mod tests {
                     - solid.distance_f64(point - velocity * e))
                     / (2.0 * e);
                 let splat = |v: DVec3| [v.x, v.y, v.z].map(|x| f32x8::splat(x as f32));
-                let (distance, rate) = solid.approach8(&splat(point), &splat(velocity));
+                let local = solid.local8(&splat(point));
+                let distance = solid.distances_local8(&local);
+                let rate = solid.rates_local8(&local, distance, &splat(velocity));
                 let (distance, rate) = (distance.to_array()[0], rate.to_array()[0]);
                 assert!((f64::from(distance) - solid.distance_f64(point)).abs() < 1e-5);
                 assert!(
