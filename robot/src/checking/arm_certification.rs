@@ -1,5 +1,6 @@
 //! Certified motion for arms: proving every configuration of an edge collision-free, not only
-//! its grid points ([`ArmChecker`]'s [`StateValidity::certify_motion`]).
+//! its grid points ([`ArmChecker`]'s
+//! [`StateValidity::certify_motion`](validity::StateValidity::certify_motion)).
 //!
 //! # The guarantee
 //! An arm edge certified valid has **every** configuration on it collision-free: the edge is

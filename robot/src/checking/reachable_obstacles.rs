@@ -6,7 +6,7 @@
 //! so that joint's frame origin `p` has one place in the world. If every joint on the chain is
 //! revolute, every point of the link's spheres stays within `ρ` of `p` in every
 //! configuration, `ρ` the lever arm of the link about that joint
-//! ([`LeverArms`](crate::LeverArms): the distance from `p` to the spheres, summed over the
+//! ([`LeverArms`]: the distance from `p` to the spheres, summed over the
 //! chain's offsets, which rotations cannot lengthen). An obstacle farther than `ρ` (plus a
 //! slack) from `p` can never touch the link. A link on no moving joint stays where it is, so
 //! only the obstacles its bounding sphere meets matter; a link below a prismatic joint keeps

@@ -172,8 +172,8 @@ impl Obstacle {
         positive & self.excess8(point).simd_lt(limit * limit).to_bitmask()
     }
 
-    /// Per lane, the distance from the point (given in the solid's frame, [`local8`]
-    /// (Self::local8)) to the solid, 0 inside: the arithmetic of
+    /// Per lane, the distance from the point (given in the solid's frame by
+    /// [`local8`](Self::local8)) to the solid, 0 inside: the arithmetic of
     /// [`collides_spheres8`](Self::collides_spheres8), square-rooted.
     #[inline]
     pub(crate) fn distances_local8(&self, local: &[f32x8; 3]) -> f32x8 {
