@@ -4,7 +4,7 @@ use glam::{DAffine3, DVec3};
 use spaces::StateSpace;
 
 use super::*;
-use crate::{ArmChecker, ArmProblem, Scene};
+use crate::{ArmChecker, ArmProblem, Kinematics, Scene};
 
 /// A small deterministic generator (no dependency for one test).
 struct Lcg(u64);
@@ -67,9 +67,7 @@ fn no_sphere_moves_further_than_the_local_bound() {
             *speed = s.local.speed_of(k, &poses, &bounds[k], (&delta, &terms)).0;
         }
         fk.sphere_centers_f64(&middle, &mut links, &mut at_middle);
-        for step in 0..=64 {
-            let t = m - h + 2.0 * h * f64::from(step) / 64.0;
-            fk.sphere_centers_f64(&q(t), &mut links, &mut at_t);
+        over_piece(fk, &q, (m, h, 64), (&mut links, &mut at_t), |_, at_t| {
             for (k, (_, range, ..)) in s.links.iter().enumerate() {
                 let speed = f64::from(speeds[k].to_array()[0]);
                 let allowed = (h * speed + h * h * terms.second(k)).min(h * sweep[k]);
@@ -79,15 +77,37 @@ fn no_sphere_moves_further_than_the_local_bound() {
                         moved <= allowed + 1e-7,
                         "link entry {k}: {moved} > {allowed}"
                     );
-                    if moved > 1e-3 {
-                        tightest = tightest.min(allowed / moved);
-                    }
+                    tighter(&mut tightest, allowed, moved);
                 }
             }
-        }
+        });
     }
     // The bound is not vacuous: somewhere it is within a factor of 3 of the truth.
     assert!(tightest < 3.0, "{tightest}");
+}
+
+/// Places the sphere centres of `steps + 1` evenly spaced configurations `q(t)` of the piece
+/// `[m − h, m + h]` in `at_t`, one after the other, and hands each with its `t` to `check`.
+fn over_piece(
+    fk: &Kinematics,
+    q: &dyn Fn(f64) -> Vec<f64>,
+    (m, h, steps): (f64, f64, u32),
+    (links, at_t): (&mut [DAffine3], &mut [(DVec3, f64)]),
+    mut check: impl FnMut(f64, &[(DVec3, f64)]),
+) {
+    for step in 0..=steps {
+        let t = m - h + 2.0 * h * f64::from(step) / f64::from(steps);
+        fk.sphere_centers_f64(&q(t), links, at_t);
+        check(t, at_t);
+    }
+}
+
+/// Keeps in `tightest` the smallest ratio of a bound to what it bounds, where that is more
+/// than a millimetre: how close the bound comes to the truth.
+fn tighter(tightest: &mut f64, allowed: f64, seen: f64) {
+    if seen > 1e-3 {
+        *tightest = tightest.min(allowed / seen);
+    }
 }
 
 /// Over random pieces of random edges of the Panda and of the Fetch (whose torso is
@@ -120,6 +140,7 @@ fn leave_the_tangent_within_the_bound(robot: &RobotModel) {
     let mut poses = vec![Pose8::IDENTITY; fk.link_count()];
     let mut bounds = vec![[f32x8::ZERO; 3]; s.links.len()];
     let mut motions = vec![LinkMotion8::ZERO; s.links.len()];
+    let mut velocities = vec![DVec3::ZERO; fk.sphere_count()];
     let mut terms = EdgeTerms::default();
     let mut rng = Lcg(5);
     let mut tightest = f64::INFINITY;
@@ -142,40 +163,40 @@ fn leave_the_tangent_within_the_bound(robot: &RobotModel) {
         let e = 1e-6;
         fk.sphere_centers_f64(&q(m + e), &mut links, &mut ahead);
         fk.sphere_centers_f64(&q(m - e), &mut links, &mut behind);
+        let lane = |p: &Point8| {
+            DVec3::new(
+                f64::from(p[0].to_array()[0]),
+                f64::from(p[1].to_array()[0]),
+                f64::from(p[2].to_array()[0]),
+            )
+        };
+        // Each sphere centre's velocity at the middle, as certification computes it.
         for (k, (link, range, centre, _)) in s.links.iter().enumerate() {
-            let lane = |p: &Point8| {
-                DVec3::new(
-                    f64::from(p[0].to_array()[0]),
-                    f64::from(p[1].to_array()[0]),
-                    f64::from(p[2].to_array()[0]),
-                )
-            };
             let (v, w) = (lane(&motions[k].velocity), lane(&motions[k].angular));
             let p = lane(&poses[*link].point(*centre));
-            let acceleration = terms.acceleration(k);
             for i in range.clone() {
-                let c = at_middle[i].0;
-                let velocity = v + w.cross(c - p);
+                velocities[i] = v + w.cross(at_middle[i].0 - p);
                 let derivative = (ahead[i].0 - behind[i].0) / (2.0 * e);
                 assert!(
-                    (velocity - derivative).length() < 1e-3 * (1.0 + derivative.length()),
-                    "link entry {k}: {velocity} against {derivative}"
+                    (velocities[i] - derivative).length() < 1e-3 * (1.0 + derivative.length()),
+                    "link entry {k}: {} against {derivative}",
+                    velocities[i]
                 );
-                for step in 0..=32 {
-                    let t = m - h + 2.0 * h * f64::from(step) / 32.0;
-                    fk.sphere_centers_f64(&q(t), &mut links, &mut at_t);
-                    let off = (at_t[i].0 - c - velocity * (t - m)).length();
-                    let allowed = acceleration * (t - m) * (t - m) / 2.0;
+            }
+        }
+        over_piece(fk, &q, (m, h, 32), (&mut links, &mut at_t), |t, at_t| {
+            for (k, (_, range, ..)) in s.links.iter().enumerate() {
+                let allowed = terms.acceleration(k) * (t - m) * (t - m) / 2.0;
+                for i in range.clone() {
+                    let off = (at_t[i].0 - at_middle[i].0 - velocities[i] * (t - m)).length();
                     assert!(
                         off <= allowed + 1e-4 * (t - m).abs() + 1e-9,
                         "{k}: {off} > {allowed}"
                     );
-                    if off > 1e-3 {
-                        tightest = tightest.min(allowed / off);
-                    }
+                    tighter(&mut tightest, allowed, off);
                 }
             }
-        }
+        });
     }
     // The bound is not vacuous: somewhere it is within a factor of 10 of the truth.
     assert!(tightest < 10.0, "{tightest}");
