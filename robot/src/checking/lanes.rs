@@ -176,33 +176,35 @@ impl LaneKinematics {
                 &done[step.parent]
             };
             // parent · origin: the translation through the parent's rotation, then the turn.
-            pose.t = base.t;
+            // Computed in locals and stored once: copying a parent's 288-byte rotation into
+            // the link's slot first made a `memmove` call per link.
+            let mut t = base.t;
             for &(axis, value) in &step.shift[..step.shifts] {
                 let value = f32x8::splat(value);
-                for (t, r) in pose.t.iter_mut().zip(base.r[axis]) {
+                for (t, r) in t.iter_mut().zip(base.r[axis]) {
                     *t += r * value;
                 }
             }
-            match step.turn {
-                Turn::Keep => pose.r = base.r,
-                Turn::Permute { from, negate } => {
-                    for (j, column) in pose.r.iter_mut().enumerate() {
-                        *column = base.r[from[j]];
-                        if negate[j] {
-                            *column = column.map(|x| -x);
-                        }
+            let mut r = match step.turn {
+                Turn::Keep => base.r,
+                Turn::Permute { from, negate } => std::array::from_fn(|j| {
+                    let column = base.r[from[j]];
+                    if negate[j] {
+                        column.map(|x| -x)
+                    } else {
+                        column
                     }
-                }
-                Turn::Matrix(columns) => pose.r = columns.map(|c| base.rotate(c)),
-            }
+                }),
+                Turn::Matrix(columns) => columns.map(|c| base.rotate(c)),
+            };
             // Then the joint's own motion.
             match step.motion {
                 JointMotion::Fixed => {}
                 JointMotion::RevoluteZ(c) => {
                     let (s, cos) = q[c].sin_cos();
-                    let [x, y, _] = pose.r;
-                    pose.r[0] = std::array::from_fn(|k| x[k] * cos + y[k] * s);
-                    pose.r[1] = std::array::from_fn(|k| y[k] * cos - x[k] * s);
+                    let [x, y, _] = r;
+                    r[0] = std::array::from_fn(|k| x[k] * cos + y[k] * s);
+                    r[1] = std::array::from_fn(|k| y[k] * cos - x[k] * s);
                 }
                 JointMotion::Revolute(u, c) => {
                     let (s, cos) = q[c].sin_cos();
@@ -218,20 +220,21 @@ impl LaneKinematics {
                                 + one_minus * f32x8::splat(u[i] * u[j])
                         })
                     });
-                    let a = pose.r;
-                    pose.r = std::array::from_fn(|j| {
+                    let a = r;
+                    r = std::array::from_fn(|j| {
                         std::array::from_fn(|k| {
                             a[0][k] * rot[j][0] + a[1][k] * rot[j][1] + a[2][k] * rot[j][2]
                         })
                     });
                 }
                 JointMotion::Prismatic(u, c) => {
-                    let d = pose.rotate(u);
-                    for (t, d) in pose.t.iter_mut().zip(d) {
+                    let d = Pose8 { r, t }.rotate(u);
+                    for (t, d) in t.iter_mut().zip(d) {
                         *t += d * q[c];
                     }
                 }
             }
+            *pose = Pose8 { r, t };
         }
     }
 }
