@@ -46,8 +46,17 @@ pub const FLOOR: f64 = 1e-5;
 const FIRST_SWEEP: f64 = 0.1;
 
 /// The widest piece a batch seeks, in spacings `w`: limits how far clearances are sought, and
-/// so how much of the scene each batch looks at.
+/// so how much of the scene each batch looks at. A wide piece lets the next spacing grow.
 const USEFUL: f64 = 2.5;
+
+/// The widest piece sought by a batch whose pieces reach the edge's end, in spacings `w`.
+/// Such a batch finishes the edge if every piece is at least `w` wide, and if one is not, the
+/// next spacing is set by that narrower piece: a piece wider than `w` only helps where it
+/// covers for a narrow neighbour, so clearances are sought only a little beyond `w` (the
+/// margin is for the radii's rounding down). Most edges of a solve are certified by one such
+/// batch. On the Panda's problems (callgrind, RRT-Connect's and MIT*'s solves) this takes 16 %
+/// of certification's instructions off RRT-Connect and 12 % off MIT*, for 0.7 % more batches.
+const FINAL_USEFUL: f64 = 1.1;
 
 /// The next spacing's share of the smallest radius met.
 const SPACING: f64 = 0.9;
@@ -179,8 +188,9 @@ impl ArmChecker {
             }
             progress.count(count as u64);
             // No piece needs to reach further than the edge, and a batch's pieces need not be
-            // more than `USEFUL` spacings wide.
-            let useful = (USEFUL * w).min(1.0);
+            // more than `USEFUL` spacings wide, or `FINAL_USEFUL` if they reach its end.
+            let reaches_end = middles[count - 1] + w >= 1.0;
+            let useful = (if reaches_end { FINAL_USEFUL } else { USEFUL } * w).min(1.0);
             let (radii, refused) =
                 certified_radii(s, lanes, &chunk[..count * n], &edge, (FLOOR, useful));
             if refused != 0 {
