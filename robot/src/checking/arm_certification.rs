@@ -53,9 +53,10 @@ const USEFUL: f64 = 2.5;
 /// Such a batch finishes the edge if every piece is at least `w` wide, and if one is not, the
 /// next spacing is set by that narrower piece: a piece wider than `w` only helps where it
 /// covers for a narrow neighbour, so clearances are sought only a little beyond `w` (the
-/// margin is for the radii's rounding down). Most edges of a solve are certified by one such
-/// batch. On the Panda's problems (callgrind, RRT-Connect's and MIT*'s solves) this takes 16 %
-/// of certification's instructions off RRT-Connect and 12 % off MIT*, for 0.7 % more batches.
+/// margin is for the radii's rounding down). Every edge ends with such a batch, and many are
+/// certified by it alone. On the Panda's problems this takes 16 % of certification's
+/// instructions off RRT-Connect and 12 % off MIT*, for 0.7 % more batches (callgrind, in the
+/// arm-planning reference: "A Zen 4 machine, and two cheaper certification batches").
 const FINAL_USEFUL: f64 = 1.1;
 
 /// The next spacing's share of the smallest radius met.

@@ -176,8 +176,8 @@ impl LaneKinematics {
                 &done[step.parent]
             };
             // parent · origin: the translation through the parent's rotation, then the turn.
-            // Computed in locals and stored once: copying a parent's 288-byte rotation into
-            // the link's slot first made a `memmove` call per link.
+            // Computed in locals and stored once: copying the parent's 288-byte rotation into
+            // the link's slot to turn it there compiles to a `memmove` call per link.
             let mut t = base.t;
             for &(axis, value) in &step.shift[..step.shifts] {
                 let value = f32x8::splat(value);
