@@ -548,17 +548,22 @@ impl GridWalker {
         }
         self.batch.resize(width, 0.0);
         let ts = &mut self.batch;
-        let mut fractions = fractions.peekable();
+        let mut fractions = fractions;
         let mut walked = 0_u64;
-        while fractions.peek().is_some() {
-            if walked % period == 0 && (walked > 0 || batches.polls_first) && stop.should_stop() {
-                return Walked::Stopped(walked);
-            }
+        loop {
+            // The batch is drawn before the poll, which it does not depend on: a walk with
+            // nothing left ends without polling, and a stopped walk drops what it drew.
             let n = (width as u64).min(period - walked % period) as usize;
             let mut filled = 0;
-            for (slot, t) in ts.iter_mut().zip(&mut fractions).take(n) {
+            for (slot, t) in ts.iter_mut().take(n).zip(&mut fractions) {
                 *slot = t;
                 filled += 1;
+            }
+            if filled == 0 {
+                break;
+            }
+            if walked % period == 0 && (walked > 0 || batches.polls_first) && stop.should_stop() {
+                return Walked::Stopped(walked);
             }
             let found = if batches.prepared {
                 validity.any_invalid_on(&mut self.segment, &ts[..filled])
