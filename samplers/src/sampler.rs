@@ -77,8 +77,12 @@ pub struct SamplerCounters {
     /// Adaptive sampler: repairs that failed (`x_temp` and every segment point invalid or
     /// outside the set), after which it starts over from a new `x_pre`.
     pub repairs_failed: u64,
-    /// [`NearTerminals`](crate::NearTerminals): states returned from near the start or a goal.
+    /// [`NearTerminals`](crate::NearTerminals): states returned from near the start or a goal,
+    /// or a state of the planner's frontier.
     pub near_terminals: u64,
+    /// [`NearTerminals`](crate::NearTerminals): of those, the states returned from near a
+    /// state of the planner's frontier ([`Sampler::observe_frontier`]).
+    pub near_frontier: u64,
     /// Estimated informed set: its first cost `s̃_est = ŝ_adm · e_γ` (`None`: never created).
     pub estimate_initial: Option<f64>,
     /// Estimated informed set: its cost now, after every expansion.
@@ -182,6 +186,13 @@ pub trait Sampler<S: StateSpace + ?Sized, V: StateValidity + ?Sized> {
     /// the next one; `solved` tells whether a valid solution exists.
     fn observe_batch_end(&mut self, _solved: bool) {}
 
+    /// Planner feedback, at the end of a batch: the states its reverse search reached farthest
+    /// from the goals (by cost-to-go), `dimension` coordinates each, farthest first — the edge
+    /// of what the goals are known to connect to — or an empty slice once a solution exists.
+    /// Samplers that draw near the terminals ([`NearTerminals`](crate::NearTerminals)) draw
+    /// near these too; others ignore it.
+    fn observe_frontier(&mut self, _states: &[f64]) {}
+
     /// `true` if the set this sampler draws from has just changed and it asks the planner for a
     /// batch drawn in the new set before searching further (MIT*'s spec §3.1, step 1).
     fn wants_batch(&self) -> bool {
@@ -241,6 +252,9 @@ where
     }
     fn observe_batch_end(&mut self, solved: bool) {
         (**self).observe_batch_end(solved);
+    }
+    fn observe_frontier(&mut self, states: &[f64]) {
+        (**self).observe_frontier(states);
     }
     fn wants_batch(&self) -> bool {
         (**self).wants_batch()

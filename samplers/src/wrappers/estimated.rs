@@ -237,6 +237,10 @@ where
         }
     }
 
+    fn observe_frontier(&mut self, states: &[f64]) {
+        self.inner.observe_frontier(states);
+    }
+
     fn observe_batch_end(&mut self, solved: bool) {
         self.inner.observe_batch_end(solved);
         self.drawn_this_batch = false;

@@ -40,6 +40,15 @@ use crate::{
 /// 0.978 < 1` at `f = 0.15` in 7 dimensions, and less once pruning removes uniform states and
 /// keeps the ones near the terminals.
 ///
+/// A planner with a reverse search (MIT*, EIT*, AIT*) also tells the wrapper, at the end of
+/// every batch without a solution, which states its search from the goals reached farthest
+/// ([`observe_frontier`](Sampler::observe_frontier)). While it has such states, the wrapper
+/// centres [`FRONTIER_SHARE`](Self::FRONTIER_SHARE) of its draws on one of them (uniformly)
+/// instead of on a terminal, at the same scales: a goal in a pocket is then left one batch at
+/// a time, the way RRT-Connect's goal tree grows out of it, where draws around the goal alone
+/// keep filling the pocket. Without frontier states (before the first batch, once solved, or
+/// for a planner that sends none) the draws are exactly those described above.
+///
 /// Removing the wrapper is the ablation; a fraction of 0 draws nothing and leaves the wrapped
 /// sampler's random sequence untouched.
 ///
@@ -81,6 +90,12 @@ pub struct NearTerminals<T> {
     log_scales: (f64, f64),
     /// Whether the last state returned came from here.
     drew_last: bool,
+    /// The planner's frontier states, one after the other (empty: none).
+    frontier: Vec<f64>,
+    /// Whether the last draw near a terminal was centred on a frontier state.
+    from_frontier: bool,
+    /// States returned from near a frontier state.
+    frontier_returned: u64,
 }
 
 impl<T> NearTerminals<T> {
@@ -90,6 +105,10 @@ impl<T> NearTerminals<T> {
     /// 1.3 rad for the Panda). Chosen on the Panda problems MIT* failed without the wrapper
     /// (`docs/guide/src/reference/arm-planning.md`): a smallest `σ` of 0.001–0.002 wasted draws at the terminals.
     pub const DEFAULT_SCALES: (f64, f64) = (0.01, 0.1);
+    /// Share of the draws centred on a frontier state while the planner has sent some (the
+    /// rest stay centred on the terminals). Chosen on the Fetch's bookshelf problems
+    /// (`docs/guide/src/your-own-robot.md`): 0.8 did no better.
+    pub const FRONTIER_SHARE: f64 = 0.5;
 
     /// `inner` with states near `start` and `goals` in `space`, seeded with `seed` (its own
     /// generator; `inner` keeps its own), at the default fraction and scales.
@@ -123,6 +142,9 @@ impl<T> NearTerminals<T> {
             fraction: Self::DEFAULT_FRACTION,
             log_scales: (0.0, 0.0),
             drew_last: false,
+            frontier: Vec::new(),
+            from_frontier: false,
+            frontier_returned: 0,
         }
         .with_scales(small * extent, large * extent)
     }
@@ -186,7 +208,16 @@ impl<T> NearTerminals<T> {
         } else {
             low.exp()
         };
-        let terminal = &self.terminals[index * n..(index + 1) * n];
+        // No draw for the choice without frontier states: the sequence stays the one of a
+        // wrapper that never heard of them.
+        let frontier = self.frontier.len() / n;
+        self.from_frontier = frontier > 0 && rng.random_bool(Self::FRONTIER_SHARE);
+        let terminal = if self.from_frontier {
+            let k = rng.random_range(0..frontier);
+            &self.frontier[k * n..(k + 1) * n]
+        } else {
+            &self.terminals[index * n..(index + 1) * n]
+        };
         let Ok(step) = GaussianStep::new(sigma) else {
             return false;
         };
@@ -241,6 +272,7 @@ where
                 self.draws.reject();
             } else if self.draws.check(validity, out) {
                 self.drew_last = true;
+                self.frontier_returned += u64::from(self.from_frontier);
                 return self.draws.returned();
             }
         }
@@ -255,6 +287,8 @@ where
         self.inner.reseed(seed);
         self.draws.reseed(mixed(seed));
         self.drew_last = false;
+        self.frontier.clear();
+        self.frontier_returned = 0;
     }
 
     fn counters(&self) -> SamplerCounters {
@@ -266,6 +300,7 @@ where
             rejected: inner.rejected + own.rejected,
             validity_checks: inner.validity_checks + own.validity_checks,
             near_terminals: own.returned,
+            near_frontier: self.frontier_returned,
             ..inner
         }
     }
@@ -276,6 +311,16 @@ where
 
     fn observe_batch_end(&mut self, solved: bool) {
         self.inner.observe_batch_end(solved);
+    }
+
+    /// Keeps `states` as the frontier the draws may centre on (replacing the last ones), and
+    /// passes them on.
+    fn observe_frontier(&mut self, states: &[f64]) {
+        let n = self.draws.set.dimension();
+        let whole = states.len() / n.max(1) * n;
+        self.frontier.clear();
+        self.frontier.extend_from_slice(&states[..whole]);
+        self.inner.observe_frontier(states);
     }
 
     fn wants_batch(&self) -> bool {

@@ -1,7 +1,7 @@
 //! Tests of [`NearTerminals`]: its fraction, its fallback to the wrapped sampler, its settings,
 //! and that its draws respect the effective bound and are reflected, not clamped, at the bounds.
 
-use spaces::{Never, RealVectorSpace};
+use spaces::{Never, RealVectorSpace, euclidean_distance};
 use validity::{AxisBox, Counted, World};
 
 use super::*;
@@ -152,4 +152,63 @@ fn near_draws_are_reflected_at_the_bounds_not_piled_onto_them() {
         }
     }
     assert!(near > 300, "{near}");
+}
+
+#[test]
+fn half_of_the_near_draws_centre_on_the_frontier_while_there_is_one() {
+    let (space, start, goal) = square();
+    let world = World::in_space(&space);
+    let mut sampler = NearTerminals::new(UniformSampler::new(8), &space, &start, &[goal], 8)
+        .unwrap()
+        .with_fraction(0.8)
+        .unwrap()
+        .with_scales(0.005, 0.01)
+        .unwrap();
+    let counters = |s: &NearTerminals<UniformSampler>| {
+        let c = Sampler::<RealVectorSpace, World>::counters(s);
+        (c.near_terminals, c.near_frontier)
+    };
+    let frontier = [0.5, 0.9];
+    let mut x = [0.0; 2];
+    let mut draw = |sampler: &mut NearTerminals<UniformSampler>| {
+        sampler
+            .sample(&space, &world, CostBound::Unbounded, &Never, &mut x)
+            .unwrap();
+        let near =
+            Sampler::<RealVectorSpace, World>::last_origin(sampler) == SampleOrigin::NearTerminal;
+        (near, euclidean_distance(&x, &frontier) < 0.05)
+    };
+    // Before any frontier: no draw centres on it.
+    for _ in 0..200 {
+        draw(&mut sampler);
+    }
+    assert_eq!(counters(&sampler).1, 0);
+    Sampler::<RealVectorSpace, World>::observe_frontier(&mut sampler, &frontier);
+    let (before, _) = counters(&sampler);
+    let mut near_frontier = 0;
+    for _ in 0..1000 {
+        let (near, close) = draw(&mut sampler);
+        near_frontier += u64::from(near && close);
+    }
+    let (near_terminals, counted) = counters(&sampler);
+    // 0.8 · 0.5 of 1 000 requests, every one of them valid in an empty world.
+    assert!((330..470).contains(&counted), "{counted}");
+    assert_eq!(counted, near_frontier);
+    assert!(
+        near_terminals - before > counted,
+        "the terminals keep the other half"
+    );
+    // An empty frontier ends them.
+    Sampler::<RealVectorSpace, World>::observe_frontier(&mut sampler, &[]);
+    for _ in 0..300 {
+        draw(&mut sampler);
+    }
+    assert_eq!(counters(&sampler).1, counted);
+    // So does a reseed.
+    Sampler::<RealVectorSpace, World>::observe_frontier(&mut sampler, &frontier);
+    Sampler::<RealVectorSpace, World>::reseed(&mut sampler, 9);
+    for _ in 0..300 {
+        draw(&mut sampler);
+    }
+    assert_eq!(counters(&sampler).1, 0);
 }
