@@ -63,6 +63,9 @@ pub struct Counters {
     /// States the [`NearTerminals`](samplers::NearTerminals) wrapper drew near the start or a
     /// goal.
     pub sampler_near_terminals: u64,
+    /// Of those, the states drawn near the reverse search's frontier
+    /// ([`Parameters::near_frontier`](crate::Parameters::near_frontier)).
+    pub sampler_near_frontier: u64,
     /// Adaptive sampler: failed repairs, after which it drew a new `x_pre`.
     pub sampler_restarts: u64,
     /// Estimated informed set: the cost `s̃_est` it was created with (`None`: never created).
@@ -118,6 +121,7 @@ impl Counters {
             sampler_gaussian,
             sampler_bridge,
             sampler_near_terminals,
+            sampler_near_frontier,
             sampler_restarts,
             estimate_initial,
             estimate_final,
@@ -154,6 +158,7 @@ impl Counters {
         self.sampler_gaussian += sampler_gaussian;
         self.sampler_bridge += sampler_bridge;
         self.sampler_near_terminals += sampler_near_terminals;
+        self.sampler_near_frontier += sampler_near_frontier;
         self.sampler_restarts += sampler_restarts;
         self.estimate_expansions += estimate_expansions;
         self.estimate_batches += estimate_batches;
@@ -216,6 +221,7 @@ impl Counters {
         self.sampler_gaussian = sampler.gaussian_valid;
         self.sampler_bridge = sampler.bridge_found;
         self.sampler_near_terminals = sampler.near_terminals;
+        self.sampler_near_frontier = sampler.near_frontier;
         self.sampler_restarts = sampler.repairs_failed;
         self.estimate_initial = sampler.estimate_initial;
         self.estimate_final = sampler.estimate_current;

@@ -93,6 +93,13 @@ pub struct Parameters {
     /// problems, 0.15 for arms). Not in the paper: it joins starts and goals that sit deep in
     /// pockets (grasps in shelf slots), which uniform samples in 7 dimensions seldom reach.
     pub near_terminals: Option<f64>,
+    /// How many of the states its reverse search reached farthest from the goals the EIT*
+    /// family hands the [`NearTerminals`](samplers::NearTerminals) wrapper at the end of each
+    /// batch without a solution ([`Sampler::observe_frontier`](samplers::Sampler::observe_frontier)),
+    /// half of whose draws then centre on one of them (0: none, every draw centres on a
+    /// terminal). No effect without the wrapper (`near_terminals` 0, the paper's problems).
+    /// Not in the paper: a goal in a pocket is left one batch at a time.
+    pub near_frontier: usize,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge
     /// without a test — and its points go to the checker in batches (SIMD lanes). The answers
@@ -210,6 +217,7 @@ impl Default for Parameters {
             eis_immediate_batch: false,
             certification: None,
             near_terminals: None,
+            near_frontier: 4,
             accelerated_checks: true,
             range: None,
             rrt_valid_samples: false,
@@ -447,6 +455,7 @@ impl Parameters {
                 self.near_terminals
                     .map_or_else(|| "problem's".to_owned(), |f| f.to_string()),
             ),
+            ("near_frontier", self.near_frontier.to_string()),
             ("accelerated_checks", self.accelerated_checks.to_string()),
             ("rrt_valid_samples", self.rrt_valid_samples.to_string()),
             ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),

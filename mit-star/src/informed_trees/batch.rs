@@ -102,6 +102,7 @@ where
         let solved = self.best_cost.is_finite();
         // 1. MIT*: the estimated informed set expands if a batch in it found no solution.
         self.sampler.observe_batch_end(solved);
+        self.send_frontier(solved, stop);
         // 2. Prune with the true solution cost only.
         let mut pruned = 0;
         // Pruning polls the termination condition. If it fires before or during the scan,

@@ -16,6 +16,8 @@
 //!   reverse tree, with its tests.
 //! - `offered_path.rs`: a path offered from outside (a warm start's, a simplified solution)
 //!   grafted into the forward tree as the best solution.
+//! - `frontier.rs`: the states the reverse search reached farthest from the goals, handed to
+//!   the sampler at the end of a batch without a solution.
 //! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches;
 //!   `batch_tests.rs`: the sample count of its connection rules, and where ABIT*'s search of a
 //!   batch ends.
@@ -32,6 +34,9 @@ mod batch_tests;
 mod eit;
 mod forward_queue;
 mod forward_search;
+mod frontier;
+#[cfg(test)]
+mod frontier_tests;
 mod guidance;
 mod offered_path;
 mod reverse_queue;

@@ -1,0 +1,155 @@
+//! Tests of the frontier the EIT* family hands its sampler: the reverse tree's farthest
+//! samples, and nothing once solved.
+
+use samplers::{CostBound, InformedSampler, SampleError, Sampler, SamplerCounters};
+use spaces::{StateSpace, Stop};
+use validity::{FixedSparseChecker, StateValidity, World};
+
+use crate::termination::SolveStop;
+use crate::{Eit, IterationLimit};
+
+/// An informed sampler that records every frontier it is handed.
+#[derive(Debug, Clone)]
+struct Recording {
+    inner: InformedSampler,
+    sent: Vec<Vec<f64>>,
+}
+
+impl<S, V> Sampler<S, V> for Recording
+where
+    S: StateSpace + ?Sized,
+    V: StateValidity + ?Sized,
+{
+    fn sample(
+        &mut self,
+        space: &S,
+        validity: &V,
+        bound: CostBound,
+        stop: &dyn Stop,
+        out: &mut [f64],
+    ) -> Result<(), SampleError> {
+        self.inner.sample(space, validity, bound, stop, out)
+    }
+
+    fn sampled_measure(&self, space: &S, bound: CostBound) -> f64 {
+        Sampler::<S, V>::sampled_measure(&self.inner, space, bound)
+    }
+
+    fn reseed(&mut self, seed: u64) {
+        Sampler::<S, V>::reseed(&mut self.inner, seed);
+    }
+
+    fn counters(&self) -> SamplerCounters {
+        Sampler::<S, V>::counters(&self.inner)
+    }
+
+    fn observe_frontier(&mut self, states: &[f64]) {
+        self.sent.push(states.to_vec());
+    }
+}
+
+impl<S: StateSpace> crate::SamplerPart<S> for Recording {
+    fn part_name() -> String {
+        "recording".into()
+    }
+
+    fn build_part(
+        space: &S,
+        start: &[f64],
+        goals: &[Vec<f64>],
+        parameters: &crate::Parameters,
+    ) -> Result<Self, crate::BuildError> {
+        Ok(Self {
+            inner: InformedSampler::new(space, start, goals, parameters.seed)?,
+            sent: Vec::new(),
+        })
+    }
+}
+
+type RecordingEit = Eit<spaces::RealVectorSpace, World, Recording, FixedSparseChecker>;
+
+fn make(frontier: usize) -> (RecordingEit, problems::Problem) {
+    let problem = problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let (space, start, goals) = (problem.space(), problem.start(), problem.goals());
+    let sampler = Recording {
+        inner: InformedSampler::new(space, start, goals, 5).unwrap(),
+        sent: Vec::new(),
+    };
+    let mut parameters = crate::Parameters {
+        batch_size: 300,
+        ..crate::Parameters::default()
+    };
+    parameters.near_frontier = frontier;
+    let planner = RecordingEit::for_problem(&problem)
+        .sampler(sampler)
+        .parameters(parameters)
+        .build()
+        .unwrap();
+    (planner, problem)
+}
+
+#[test]
+fn the_frontier_is_the_reverse_trees_farthest_samples_farthest_first() {
+    let (mut planner, problem) = make(7);
+    let n = problem.space().dimension();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    planner.setup(&stop).unwrap();
+    planner.add_batch(&stop);
+    for _ in 0..300 {
+        planner.iterate(&stop);
+    }
+    planner.send_frontier(false, &stop);
+    // Every sample the reverse search reached, farthest first, ties by id.
+    let tag = planner.reverse_tag;
+    let graph = &planner.graph;
+    let mut reached: Vec<(f64, u32)> = graph
+        .vertices()
+        .map(|(id, _)| id.0)
+        .filter(|&v| !graph.vertex(v).is_terminal())
+        .map(|v| (graph.vertex(v).h(tag), v))
+        .filter(|(h, _)| h.is_finite())
+        .collect();
+    reached.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    assert!(reached.len() > 7, "only {} samples reached", reached.len());
+    let expected: Vec<f64> = reached[..7]
+        .iter()
+        .flat_map(|&(_, v)| graph.state(v).to_vec())
+        .collect();
+    let sent = planner.sampler.sent.last().unwrap();
+    assert_eq!(sent.len(), 7 * n);
+    assert_eq!(*sent, expected);
+}
+
+#[test]
+fn a_solution_or_a_count_of_zero_sends_no_frontier() {
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    let (mut planner, _) = make(5);
+    planner.setup(&stop).unwrap();
+    planner.add_batch(&stop);
+    for _ in 0..300 {
+        planner.iterate(&stop);
+    }
+    planner.send_frontier(false, &stop);
+    assert!(!planner.sampler.sent.last().unwrap().is_empty());
+    // Solved: one empty frontier, so the sampler drops the last one; then nothing more.
+    planner.send_frontier(true, &stop);
+    assert_eq!(planner.sampler.sent.last().unwrap(), &Vec::<f64>::new());
+    let count = planner.sampler.sent.len();
+    planner.send_frontier(true, &stop);
+    assert_eq!(planner.sampler.sent.len(), count);
+    // A count of 0 never sends one.
+    let (mut off, _) = make(0);
+    off.setup(&stop).unwrap();
+    off.add_batch(&stop);
+    for _ in 0..300 {
+        off.iterate(&stop);
+    }
+    off.send_frontier(false, &stop);
+    assert!(off.sampler.sent.is_empty());
+}
