@@ -131,12 +131,10 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) branch: Vec<u32>,
     pub(crate) batch_ids: Vec<u32>,
     pub(crate) sample: Vec<f64>,
-    /// Scratch of the frontier sent to the sampler (`frontier.rs`): the reverse tree's
-    /// farthest states so far, and their coordinates.
+    /// The frontier handed to the sampler (`frontier.rs`): scratch for the reverse tree's
+    /// farthest vertices, and the coordinates the sampler holds (empty: none).
     pub(crate) frontier: Vec<(f64, u32)>,
     pub(crate) frontier_states: Vec<f64>,
-    /// The sampler holds a frontier this planner sent (so a solution must clear it).
-    pub(crate) frontier_sent: bool,
 }
 
 impl<S, V, Smp, E, H, G> std::fmt::Debug for Eit<S, V, Smp, E, H, G> {
@@ -220,7 +218,6 @@ where
             sample: vec![0.0; n],
             frontier: Vec::new(),
             frontier_states: Vec::new(),
-            frontier_sent: false,
         }
     }
 
@@ -500,7 +497,7 @@ where
         self.inflation = self.parameters.initial_inflation.unwrap_or(1.0);
         self.truncation = 1.0;
         self.final_search = false;
-        self.frontier_sent = false;
+        self.frontier_states.clear();
         self.ready = false;
         self.trace.clear();
         self.counters = Counters::default();

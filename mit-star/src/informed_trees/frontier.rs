@@ -9,7 +9,6 @@ use samplers::Sampler;
 use spaces::{StateSpace, Stop};
 use validity::{Counted, EdgeChecker, StateValidity};
 
-use crate::graph::NONE;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 
@@ -39,16 +38,17 @@ where
     /// Walks the reverse tree from the goals through its child lists, keeping the best
     /// `near_frontier` in a small sorted buffer. Allocates nothing once the buffers have grown.
     /// Polls `stop` every [`FRONTIER_POLL`] vertices; if it fires, the walk is abandoned and
-    /// the sampler keeps the frontier it had.
+    /// the sampler keeps the frontier it had (`frontier_states` is always what it holds).
     ///
     /// Complexity: O(t · f) for a reverse tree of `t` vertices and a frontier of `f` states
     /// (the search that built the tree touched each of them already).
     pub(crate) fn send_frontier(&mut self, solved: bool, stop: &dyn Stop) {
         let wanted = self.parameters.near_frontier;
+        let held = !self.frontier_states.is_empty();
         if solved || wanted == 0 || G::REVERSE == ReverseSearch::None {
-            if self.frontier_sent {
+            if held {
+                self.frontier_states.clear();
                 self.sampler.observe_frontier(&[]);
-                self.frontier_sent = false;
             }
             return;
         }
@@ -71,20 +71,13 @@ where
                 stopped = true;
                 break;
             }
+            self.push_reverse_children(v, &mut walk);
             let vertex = self.graph.vertex(v);
-            let mut child = if vertex.reverse_tag == tag {
-                vertex.reverse_first_child
-            } else {
-                NONE
-            };
-            while child != NONE {
-                walk.push(child);
-                child = self.graph.vertex(child).reverse_next_sibling;
-            }
-            if vertex.is_terminal() {
+            let h = vertex.h(tag);
+            if vertex.is_terminal() || !h.is_finite() {
                 continue;
             }
-            let entry = (vertex.h(tag), v);
+            let entry = (h, v);
             if best.len() == wanted && farther(&entry, &best[wanted - 1]) != Ordering::Less {
                 continue;
             }
@@ -100,9 +93,8 @@ where
             for &(_, v) in &best {
                 self.frontier_states.extend_from_slice(self.graph.state(v));
             }
-            if self.frontier_sent || !best.is_empty() {
+            if held || !best.is_empty() {
                 self.sampler.observe_frontier(&self.frontier_states);
-                self.frontier_sent = !best.is_empty();
             }
         }
         self.frontier = best;

@@ -51,6 +51,16 @@ where
         x.reverse_prev_sibling = NONE;
     }
 
+    /// Appends `v`'s children in the reverse tree to `out` (a vertex current in this reverse
+    /// search has only current children: a new search's first touch empties the lists).
+    pub(crate) fn push_reverse_children(&self, v: u32, out: &mut Vec<u32>) {
+        let mut child = self.graph.vertex(v).reverse_first_child;
+        while child != NONE {
+            out.push(child);
+            child = self.graph.vertex(child).reverse_next_sibling;
+        }
+    }
+
     /// Takes `v` out of its reverse parent's child list (if it has a parent).
     fn unlink_reverse(&mut self, v: u32) {
         let (parent, prev, next) = {
@@ -102,11 +112,7 @@ where
         branch.push(root);
         let mut i = 0;
         while i < branch.len() {
-            let mut child = self.graph.vertex(branch[i]).reverse_first_child;
-            while child != NONE {
-                branch.push(child);
-                child = self.graph.vertex(child).reverse_next_sibling;
-            }
+            self.push_reverse_children(branch[i], &mut branch);
             i += 1;
         }
         let completed = self.invalidate(&branch, tag, stop) && self.reseed(&branch, tag, stop);
