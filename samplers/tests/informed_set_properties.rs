@@ -6,7 +6,9 @@ use rand::{RngExt, SeedableRng};
 use samplers::{
     CostBound, InformedSampler, InformedSet, SampleError, Sampler, prolate_hyperspheroid_measure,
 };
-use spaces::{Never, RealVectorSpace, SeededRng, StateSpace, euclidean_distance};
+use spaces::{
+    Joint, JointSpace, Never, RealVectorSpace, SeededRng, StateSpace, euclidean_distance,
+};
 use validity::AllValid;
 
 /// A state with coordinates in `[lo, hi]`.
@@ -233,4 +235,61 @@ fn overlapping_goals_are_sampled_uniformly_over_the_union() {
     );
     let half = f64::from(right) / f64::from(draws);
     assert!((half - 0.5).abs() < 0.02, "right half {half}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// A weighted Euclidean metric (a joint space with a weighted prismatic joint, as the
+    /// Fetch's torso) is a hyperspheroid in the scaled coordinates: drawn directly, not by
+    /// rejection from the whole space, and uniform there (for the unit ball in `n`
+    /// dimensions, `E[u₁²] = 1/(n+2)` along the axis and `(n−1)/(n+2)` across it).
+    #[test]
+    fn weighted_metrics_are_sampled_directly_and_uniformly(
+        weight in 0.25f64..8.0,
+        start in state(4, -0.5, 0.5),
+        goal in state(4, -0.5, 0.5),
+        stretch in 1.01f64..1.1,
+        seed in any::<u64>(),
+    ) {
+        let space = JointSpace::new(vec![
+            Joint::prismatic("torso", -4.0, 4.0).weight(weight),
+            Joint::revolute("a", -3.0, 3.0),
+            Joint::revolute("b", -3.0, 3.0),
+            Joint::revolute("c", -3.0, 3.0),
+        ])
+        .unwrap();
+        prop_assume!((weight - 1.0).abs() > 1e-3);
+        prop_assert!(!space.is_euclidean());
+        let s_min = space.distance(&start, &goal);
+        prop_assume!(s_min > 0.05);
+        let cost = stretch * s_min;
+        let mut set = InformedSet::new(&space, &start, &[&goal]).unwrap();
+        let mut rng = SeededRng::seed_from_u64(seed);
+        let scale = [weight, 1.0, 1.0, 1.0];
+        let axis: Vec<f64> = (0..4).map(|i| scale[i] * (goal[i] - start[i]) / s_min).collect();
+        let (major, minor) = (cost / 2.0, (cost * cost - s_min * s_min).sqrt() / 2.0);
+        let draws = 3_000;
+        let (mut along, mut across) = (0.0, 0.0);
+        let mut x = [0.0; 4];
+        for _ in 0..draws {
+            set.draw(&space, &mut rng, Some(cost), &Never, &mut x).unwrap();
+            prop_assert!(space.contains(&x));
+            let through = space.distance(&start, &x) + space.distance(&x, &goal);
+            prop_assert!(through < cost * (1.0 + 1e-12), "{} ≥ {}", through, cost);
+            // Offset from the centre in scaled coordinates, split along and across the axis.
+            let y: Vec<f64> = (0..4).map(|i| scale[i] * (x[i] - 0.5 * (start[i] + goal[i]))).collect();
+            let t: f64 = y.iter().zip(&axis).map(|(a, b)| a * b).sum();
+            let perp = y.iter().map(|v| v * v).sum::<f64>() - t * t;
+            along += (t / major).powi(2);
+            across += perp / (minor * minor);
+        }
+        // The set lies inside the bounds, so nothing is rejected (rejection from the whole
+        // space would turn down all but a few per million here).
+        let counters = set.counters();
+        prop_assert_eq!(counters.rejected, 0);
+        let (along, across) = (along / f64::from(draws), across / f64::from(draws));
+        prop_assert!((along - 1.0 / 6.0).abs() < 0.02, "E[t²] = {}", along);
+        prop_assert!((across - 0.5).abs() < 0.04, "E[|perp|²] = {}", across);
+    }
 }

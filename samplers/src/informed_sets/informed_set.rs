@@ -15,7 +15,10 @@ use crate::{SampleError, SamplerCounters, SamplerError, prolate_hyperspheroid_me
 ///
 /// For one goal in a Euclidean space this is a prolate hyperspheroid with foci at the start and
 /// the goal (spec §7, Gammell et al.); for several goals it is the union of one hyperspheroid per
-/// goal. Everything that does not depend on the cost — per goal the minimum cost
+/// goal. Under a weighted Euclidean metric, `d(a, b) = ‖s ⊙ (b − a)‖`
+/// ([`StateSpace::euclidean_scales`]: a joint space with a weighted prismatic joint), it is
+/// the same hyperspheroid in the scaled coordinates `s ⊙ x`, so it is drawn there and scaled
+/// back. Everything that does not depend on the cost — per goal the minimum cost
 /// `s_min = d(start, goal)`, the centre and the rotation `R` taking the first axis onto the
 /// start→goal direction — is computed once at construction. Draws allocate nothing: the scratch
 /// buffers live in the struct, which is why [`draw`](Self::draw) takes `&mut self`.
@@ -41,6 +44,8 @@ pub struct InformedSet {
     goals: Vec<f64>,
     /// `m × n` hyperspheroid centres, `(start + goal) / 2`.
     centres: Vec<f64>,
+    /// Under a weighted metric, the centres in scaled coordinates, `s ⊙ centre` (else empty).
+    scaled_centres: Vec<f64>,
     /// Per goal, `s_min = d(start, goal)`.
     minimum_costs: Vec<f64>,
     /// Per goal, the plane rotation taking `e1` onto the start→goal direction: its unit axis
@@ -49,6 +54,8 @@ pub struct InformedSet {
     turns: Vec<(f64, f64)>,
     /// The smallest `s_min`.
     minimum: f64,
+    /// How the metric relates to the coordinates, which decides how the set is sampled.
+    metric: Metric,
     /// `ln ζ_n`, the log-volume of the unit `n`-ball.
     ln_unit_ball: f64,
     /// Scratch: the unit-ball sample of a draw.
@@ -88,10 +95,12 @@ impl InformedSet {
             start: start.to_vec(),
             goals: Vec::with_capacity(m * n),
             centres: Vec::with_capacity(m * n),
+            scaled_centres: Vec::new(),
             minimum_costs: Vec::with_capacity(m),
             axes: Vec::with_capacity(m * n),
             turns: Vec::with_capacity(m),
             minimum: f64::INFINITY,
+            metric: Metric::of(space),
             ln_unit_ball: ln_unit_ball_measure(n),
             ball: vec![0.0; n],
             weights: vec![0.0; m],
@@ -120,13 +129,18 @@ impl InformedSet {
             set.goals.extend_from_slice(goal);
             set.centres
                 .extend(start.iter().zip(goal).map(|(a, b)| 0.5 * (a + b)));
+            if let Metric::Weighted(scales) = &set.metric {
+                let centre = &set.centres[index * n..];
+                set.scaled_centres
+                    .extend(centre.iter().zip(scales).map(|(m, s)| m * s));
+            }
             set.minimum_costs.push(s_min);
             set.minimum = set.minimum.min(s_min);
-            // The major axis in coordinates (the Euclidean norm, which is the space's metric
-            // whenever direct sampling is used).
+            // The major axis in the coordinates the metric is Euclidean in (scaled ones under
+            // a weighted metric), where direct sampling draws.
             let mut norm = 0.0;
-            for ((d, a), b) in direction.iter_mut().zip(start).zip(goal) {
-                *d = b - a;
+            for (i, ((d, a), b)) in direction.iter_mut().zip(start).zip(goal).enumerate() {
+                *d = set.metric.scale(i) * (b - a);
                 norm += *d * *d;
             }
             let norm = norm.sqrt();
@@ -170,7 +184,8 @@ impl InformedSet {
     }
 
     /// Rotation `R` of goal `index`'s hyperspheroid as a row-major `n × n` matrix (built on
-    /// request, `O(n²)`; draws apply it implicitly in `O(n)`), `None` if out of range.
+    /// request, `O(n²)`; draws apply it implicitly in `O(n)`), `None` if out of range. Under a
+    /// weighted metric it acts in the scaled coordinates `s ⊙ x`.
     ///
     /// `R` turns the plane of `e1` and `k1`, the unit start→goal vector, by their angle and fixes
     /// the orthogonal complement: orthonormal, `det R = +1`, and `R e1 = k1` for `n ≥ 2` (in one
@@ -230,7 +245,9 @@ impl InformedSet {
             .any(|goal| to_start + space.distance(x, goal) < cost)
     }
 
-    /// Lebesgue measure of the informed set of `cost`: `ζ_n · (c/2) · (√(c² − s_min²)/2)^(n−1)`
+    /// Lebesgue measure of the informed set of `cost` (in the metric's units: in scaled
+    /// coordinates under a weighted metric, as [`StateSpace::measure`] is):
+    /// `ζ_n · (c/2) · (√(c² − s_min²)/2)^(n−1)`
     /// for one goal, the sum over goals (an upper bound of the union) for several, capped by the
     /// space's measure. The space's measure for `None` or an infinite cost; 0 for an empty set
     /// (cost at or below [`minimum_cost`](Self::minimum_cost), or NaN).
@@ -255,8 +272,9 @@ impl InformedSet {
     ///
     /// - `None` (or an infinite cost): uniform over the space.
     /// - Cost at or below every goal's `s_min`: [`SampleError::EmptySet`] at once.
-    /// - Euclidean space and hyperspheroids smaller than the space: direct sampling,
-    ///   `x = R L x_ball + centre`, rejecting states outside the bounds. With several goals a
+    /// - Euclidean or weighted Euclidean metric and hyperspheroids smaller than the space: direct
+    ///   sampling, `x = R L x_ball + centre` (divided by the scales `s` under a weighted
+    ///   metric), rejecting states outside the bounds. With several goals a
     ///   hyperspheroid is chosen with probability proportional to its measure and the sample is
     ///   kept with probability `1 / (number of hyperspheroids containing it)`, which makes the
     ///   union uniform.
@@ -296,7 +314,7 @@ impl InformedSet {
             });
         }
         let (active, ln_total) = self.selection_weights(cost);
-        if space.is_euclidean() && ln_total <= space.measure().ln() {
+        if self.metric.direct() && ln_total <= space.measure().ln() {
             self.draw_direct(space, rng, cost, active, stop, out)
         } else {
             self.draw_rejection(space, rng, cost, stop, out)
@@ -386,7 +404,15 @@ impl InformedSet {
             let (c, sin) = self.turns[goal];
             let axis = &self.axes[goal * n..(goal + 1) * n];
             let centre = &self.centres[goal * n..(goal + 1) * n];
-            rotate_about_centre((c, sin, axis), &self.ball, centre, out);
+            match &self.metric {
+                Metric::Weighted(scales) => {
+                    // Drawn in scaled coordinates about the scaled centre, then scaled back.
+                    let scaled = &self.scaled_centres[goal * n..(goal + 1) * n];
+                    rotate_about_centre((c, sin, axis), &self.ball, scaled, out);
+                    out.iter_mut().zip(scales).for_each(|(o, s)| *o /= s);
+                }
+                _ => rotate_about_centre((c, sin, axis), &self.ball, centre, out),
+            }
             self.counters.drawn += 1;
             if !space.contains(out) {
                 self.counters.rejected += 1;
@@ -455,6 +481,49 @@ impl InformedSet {
         }
         // Rounding left `u` a hair above the sum: the last non-empty hyperspheroid.
         last
+    }
+}
+
+/// How a space's metric relates to its coordinates.
+#[derive(Debug, Clone, PartialEq)]
+enum Metric {
+    /// The Euclidean norm of the coordinate difference.
+    Euclidean,
+    /// `‖s ⊙ (b − a)‖` for these per-coordinate scales.
+    Weighted(Vec<f64>),
+    /// Anything else: only rejection sampling applies.
+    Other,
+}
+
+impl Metric {
+    /// The metric of `space`, as it reports it.
+    fn of<S: StateSpace + ?Sized>(space: &S) -> Self {
+        if space.is_euclidean() {
+            Self::Euclidean
+        } else {
+            match space.euclidean_scales() {
+                Some(scales)
+                    if scales.len() == space.dimension()
+                        && scales.iter().all(|s| s.is_finite() && *s > 0.0) =>
+                {
+                    Self::Weighted(scales.to_vec())
+                }
+                _ => Self::Other,
+            }
+        }
+    }
+
+    /// `true` if the set is a hyperspheroid in some coordinates, so it can be drawn directly.
+    fn direct(&self) -> bool {
+        !matches!(self, Self::Other)
+    }
+
+    /// The scale of coordinate `i` (1 but under a weighted metric).
+    fn scale(&self, i: usize) -> f64 {
+        match self {
+            Self::Weighted(scales) => scales[i],
+            _ => 1.0,
+        }
     }
 }
 
