@@ -149,6 +149,12 @@ impl ForwardQueue {
         self.live
     }
 
+    /// `true` if `source → target` is queued.
+    #[cfg(test)]
+    pub(crate) fn contains(&self, source: u32, target: u32) -> bool {
+        self.index.contains_key(&edge_key(source, target))
+    }
+
     /// `true` if no edge is queued.
     pub(crate) fn is_empty(&self) -> bool {
         self.live == 0

@@ -118,6 +118,37 @@ where
         }
     }
 
+    /// Queues the forward edge `v → u` when the reverse search has just made `u` the reverse
+    /// parent of `v`, if `v`'s forward expansion in this batch cannot have queued it: `v` was
+    /// expanded before `u` became its reverse parent (a reverse restart or repair after the
+    /// expansion), and `u` is not among `v`'s cached neighbours (`k`-nearest neighbours are
+    /// not symmetric: the reverse search reached `v` from `u`'s list). Without it the forward
+    /// search never tries the first edge of `v`'s lazy path, and a batch whose lazy paths all
+    /// run through such an edge searches every other edge of the graph instead.
+    pub(crate) fn queue_lazy_edge(&mut self, v: u32, u: u32) {
+        let x = self.graph.vertex(v);
+        if x.forward_expanded != self.graph.tag || x.parent == u || x.is_goal() {
+            return;
+        }
+        if x.neighbours_tag == self.graph.tag {
+            let len = x.neighbours_len as usize;
+            if (0..len).any(|i| self.graph.neighbour(v, i).id == u) {
+                return;
+            }
+        }
+        if self.is_blacklisted(v, u) {
+            return;
+        }
+        let (cost, distance) = self.edge_geometry(v, u, NONE);
+        self.queue_forward(ForwardEdge {
+            source: v,
+            target: u,
+            hint: NONE,
+            cost,
+            distance,
+        });
+    }
+
     /// `true` if the edge `v → w` would rewire the forward tree: `w` is in it, and not as a
     /// child of `v`.
     fn is_rewiring(&self, v: u32, w: u32) -> bool {

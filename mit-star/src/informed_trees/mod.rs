@@ -38,6 +38,8 @@ mod frontier;
 #[cfg(test)]
 mod frontier_tests;
 mod guidance;
+#[cfg(test)]
+mod lazy_edge_tests;
 mod offered_path;
 mod reverse_queue;
 mod reverse_repair;

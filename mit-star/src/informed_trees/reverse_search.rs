@@ -323,6 +323,7 @@ where
         };
         target.effort = target.effort.min(through);
         self.link_reverse(v, u);
+        self.queue_lazy_edge(v, u);
         let (graph, rule) = (&self.graph, self.key_rule());
         self.forward
             .update_incoming(v, |e| forward_keys(graph, rule, e));
