@@ -62,14 +62,13 @@ fn the_suspension_rule_is_the_wrapper_and_the_parameter_alike() {
     // The parameter overrides the guidance's rule both ways.
     assert_eq!(suspending, run(&mut build_eit(Some(true)), iterations));
     assert_eq!(upstream, run(&mut build_sr(Some(false)), iterations));
-    // No solution exists; upstream EIT* exhausts the reverse search of every batch, MIT*-SR
-    // yields and adds the next batch instead.
+    // No solution exists. Whether the two rules part ways here depends on the forward queue
+    // running empty while reverse edges are left: it no longer does in these 3 000 iterations,
+    // because the forward search now tries the start's lazy edge through the wall and the
+    // restart that follows keeps edges into unreached vertices queued. The rule itself is
+    // pinned by `an_empty_forward_queue_suspends_the_reverse_search_by_the_rule_in_force`
+    // (`informed_trees/batch_tests.rs`).
     assert!(suspending.0.is_empty() && upstream.0.is_empty());
-    let (s, u) = (suspending.2, upstream.2);
-    assert!(
-        u.reverse_iterations > s.reverse_iterations && s.batches > u.batches,
-        "suspending {s:?}\nupstream {u:?}"
-    );
     assert_eq!(build_sr(None).name(), "MIT*-SR");
     assert_eq!(build_eit(None).name(), "EIT*");
 }

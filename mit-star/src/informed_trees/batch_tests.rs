@@ -104,3 +104,43 @@ fn abit_star_ends_a_batch_search_at_the_first_truncated_edge() {
         "the search went on after {went_on} of {truncated}"
     );
 }
+
+/// The suspension rule (spec §3.2's decision, `Parameters::suspend_reverse_when_forward_empty`):
+/// with the forward queue empty and reverse edges left, MIT*-SR's guidance (`Suspending`)
+/// hands control back (so the batch ends), EIT*'s (`EffortInformed`) goes on with the reverse
+/// search, and the parameter overrides either guidance.
+#[test]
+fn an_empty_forward_queue_suspends_the_reverse_search_by_the_rule_in_force() {
+    use crate::{EffortInformed, Guidance, Suspending};
+    fn continues<G: Guidance>(suspend: Option<bool>) -> bool {
+        let problem = problems::DividingWalls::new(4)
+            .build()
+            .unwrap()
+            .with_resolution(1e-3)
+            .unwrap();
+        let builder = Eit::<_, _, InformedSampler, FixedSparseChecker, heuristics::Euclidean, G>::for_problem(&problem)
+            .batch_size(200);
+        let builder = match suspend {
+            Some(s) => builder.suspend_reverse_when_forward_empty(s),
+            None => builder,
+        };
+        let mut planner = builder.build().unwrap();
+        let limit = IterationLimit::new(u64::MAX);
+        let stop = SolveStop::new(&limit);
+        planner.setup(&stop).unwrap();
+        planner.add_batch(&stop);
+        for _ in 0..20 {
+            planner.reverse_step(&stop);
+        }
+        assert!(
+            planner.peek_reverse().is_some(),
+            "the reverse queue ran dry"
+        );
+        planner.forward.clear();
+        planner.continue_reverse()
+    }
+    assert!(!continues::<Suspending>(None));
+    assert!(continues::<EffortInformed>(None));
+    assert!(continues::<Suspending>(Some(false)));
+    assert!(!continues::<EffortInformed>(Some(true)));
+}
