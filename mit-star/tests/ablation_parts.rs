@@ -62,11 +62,11 @@ fn the_suspension_rule_is_the_wrapper_and_the_parameter_alike() {
     // The parameter overrides the guidance's rule both ways.
     assert_eq!(suspending, run(&mut build_eit(Some(true)), iterations));
     assert_eq!(upstream, run(&mut build_sr(Some(false)), iterations));
-    // No solution exists. Whether the two rules part ways here depends on the forward queue
-    // running empty while reverse edges are left: it no longer does in these 3 000 iterations,
-    // because the forward search now tries the start's lazy edge through the wall and the
-    // restart that follows keeps edges into unreached vertices queued. The rule itself is
-    // pinned by `an_empty_forward_queue_suspends_the_reverse_search_by_the_rule_in_force`
+    // No solution exists. The two rules part ways only while the forward queue is empty and
+    // reverse edges are left, which these 3 000 iterations never reach: the forward search
+    // tries the start's lazy edge through the wall, and the reverse restart that follows
+    // leaves edges into unreached vertices queued. The rule itself is pinned by
+    // `an_empty_forward_queue_suspends_the_reverse_search_by_the_rule_in_force`
     // (`informed_trees/batch_tests.rs`).
     assert!(suspending.0.is_empty() && upstream.0.is_empty());
     assert_eq!(build_sr(None).name(), "MIT*-SR");

@@ -1,6 +1,7 @@
 //! Tests of a batch: the sample count its connection rules use, and where ABIT*'s search of it
 //! ends.
 
+use heuristics::Euclidean;
 use samplers::{InformedSampler, NearTerminals, SampleOrigin};
 use spaces::StateSpace;
 use validity::{FixedSparseChecker, World};
@@ -112,14 +113,15 @@ fn abit_star_ends_a_batch_search_at_the_first_truncated_edge() {
 #[test]
 fn an_empty_forward_queue_suspends_the_reverse_search_by_the_rule_in_force() {
     use crate::{EffortInformed, Guidance, Suspending};
+    type Guided<G> =
+        Eit<spaces::RealVectorSpace, World, InformedSampler, FixedSparseChecker, Euclidean, G>;
     fn continues<G: Guidance>(suspend: Option<bool>) -> bool {
         let problem = problems::DividingWalls::new(4)
             .build()
             .unwrap()
             .with_resolution(1e-3)
             .unwrap();
-        let builder = Eit::<_, _, InformedSampler, FixedSparseChecker, heuristics::Euclidean, G>::for_problem(&problem)
-            .batch_size(200);
+        let builder = Guided::<G>::for_problem(&problem).batch_size(200);
         let builder = match suspend {
             Some(s) => builder.suspend_reverse_when_forward_empty(s),
             None => builder,
