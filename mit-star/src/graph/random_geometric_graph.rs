@@ -262,6 +262,16 @@ impl RandomGeometricGraph {
         self.lists[v as usize][i]
     }
 
+    /// `true` if `w` is in `v`'s neighbour list of the current batch (`false` while `v` has
+    /// none).
+    pub(crate) fn in_neighbour_list(&self, v: u32, w: u32) -> bool {
+        let x = self.vertex(v);
+        x.neighbours_tag == self.tag
+            && self.lists[v as usize][..x.neighbours_len as usize]
+                .iter()
+                .any(|n| n.id == w)
+    }
+
     /// The `i`-th cached neighbour of `v` if it is `w` (a hint from a queued edge).
     #[inline]
     pub(crate) fn hinted(&self, v: u32, i: u32, w: u32) -> Option<Neighbour> {

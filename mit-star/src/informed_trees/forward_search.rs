@@ -127,16 +127,12 @@ where
     /// run through such an edge searches every other edge of the graph instead.
     pub(crate) fn queue_lazy_edge(&mut self, v: u32, u: u32) {
         let x = self.graph.vertex(v);
-        if x.forward_expanded != self.graph.tag || x.parent == u || x.is_goal() {
-            return;
-        }
-        if x.neighbours_tag == self.graph.tag {
-            let len = x.neighbours_len as usize;
-            if (0..len).any(|i| self.graph.neighbour(v, i).id == u) {
-                return;
-            }
-        }
-        if self.is_blacklisted(v, u) {
+        if x.forward_expanded != self.graph.tag
+            || x.parent == u
+            || x.is_goal()
+            || self.graph.in_neighbour_list(v, u)
+            || self.is_blacklisted(v, u)
+        {
             return;
         }
         let (cost, distance) = self.edge_geometry(v, u, NONE);
