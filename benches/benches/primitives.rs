@@ -8,7 +8,7 @@ use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use problems::Problem;
-use rand::SeedableRng;
+use rand::{RngExt, SeedableRng};
 use samplers::{AdaptiveSampler, CostBound, InformedSampler, Sampler};
 use spaces::{Never, SeededRng, StateSpace, States};
 use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
@@ -172,12 +172,55 @@ fn adaptive_sample(c: &mut Criterion) {
     group.finish();
 }
 
+/// A k-nearest query (k = 34, the EIT* family's k for about 60 000 states in 8 dimensions) over
+/// 60 000 states drawn uniformly in `[-π, π]^n` and inserted 100 at a time, as a planner's
+/// batches arrive (so the structure holds several trees and a buffer, as in a run).
+fn nearest_neighbours(c: &mut Criterion) {
+    let mut group = c.benchmark_group("nearest_k34_of_60000");
+    for n in [7, 8] {
+        let mut rng = SeededRng::seed_from_u64(11);
+        let mut nn = mit_star::NearestNeighbors::new(n);
+        let mut point = vec![0.0; n];
+        let mut batch: Vec<f64> = Vec::with_capacity(100 * n);
+        let mut found = mit_star::Neighbours::new();
+        for b in 0..600_u32 {
+            batch.clear();
+            for _ in 0..100 {
+                for x in &mut point {
+                    *x = rng.random_range(-std::f64::consts::PI..std::f64::consts::PI);
+                }
+                batch.extend_from_slice(&point);
+            }
+            nn.insert(
+                batch
+                    .chunks_exact(n)
+                    .enumerate()
+                    .map(|(i, p)| (b * 100 + i as u32, p)),
+            );
+            // A query per batch, as expansions interleave with batches in a run.
+            nn.nearest(&batch[..n], 34, &mut found);
+        }
+        let queries: Vec<f64> = (0..256 * n)
+            .map(|_| rng.random_range(-std::f64::consts::PI..std::f64::consts::PI))
+            .collect();
+        let mut at = 0;
+        group.bench_function(BenchmarkId::from_parameter(n), |bench| {
+            bench.iter(|| {
+                at = (at + n) % queries.len();
+                nn.nearest(black_box(&queries[at..at + n]), 34, &mut found);
+                black_box(found.len())
+            });
+        });
+    }
+    group.finish();
+}
+
 criterion_group! {
     name = primitives;
     config = Criterion::default()
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_secs(1))
         .sample_size(30);
-    targets = distance, state_validity, full_edge_check, informed_sample, adaptive_sample
+    targets = distance, state_validity, full_edge_check, informed_sample, adaptive_sample, nearest_neighbours
 }
 criterion_main!(primitives);
