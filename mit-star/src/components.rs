@@ -146,7 +146,9 @@ impl<S: StateSpace, T: SamplerPart<S>> SamplerPart<S> for NearTerminals<T> {
         let fraction = p
             .near_terminals
             .unwrap_or(NearTerminals::<T>::DEFAULT_FRACTION);
-        Ok(NearTerminals::new(inner, space, start, goals, p.seed)?.with_fraction(fraction)?)
+        Ok(NearTerminals::new(inner, space, start, goals, p.seed)?
+            .with_fraction(fraction)?
+            .with_frontier_rays(p.frontier_rays))
     }
 }
 

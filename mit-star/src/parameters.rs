@@ -100,6 +100,13 @@ pub struct Parameters {
     /// terminal). No effect without the wrapper (`near_terminals` 0, the paper's problems).
     /// Not in the paper: a goal in a pocket is left one batch at a time.
     pub near_frontier: usize,
+    /// Half of the [`NearTerminals`](samplers::NearTerminals) draws centred on the frontier go
+    /// along straight lines found free over the largest scale, up to
+    /// [`NearTerminals::RAY_TRIES`](samplers::NearTerminals::RAY_TRIES) tried per draw
+    /// ([`NearTerminals::with_frontier_rays`](samplers::NearTerminals::with_frontier_rays)):
+    /// RRT-Connect's extension as a sample. `false` (the default) keeps them Gaussian. No
+    /// effect without the wrapper or without frontier states. Not in the paper.
+    pub frontier_rays: bool,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge
     /// without a test — and its points go to the checker in batches (SIMD lanes). The answers
@@ -218,6 +225,7 @@ impl Default for Parameters {
             certification: None,
             near_terminals: None,
             near_frontier: 4,
+            frontier_rays: false,
             accelerated_checks: true,
             range: None,
             rrt_valid_samples: false,
@@ -456,6 +464,7 @@ impl Parameters {
                     .map_or_else(|| "problem's".to_owned(), |f| f.to_string()),
             ),
             ("near_frontier", self.near_frontier.to_string()),
+            ("frontier_rays", self.frontier_rays.to_string()),
             ("accelerated_checks", self.accelerated_checks.to_string()),
             ("rrt_valid_samples", self.rrt_valid_samples.to_string()),
             ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),

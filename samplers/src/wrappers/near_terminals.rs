@@ -10,6 +10,7 @@ use crate::{
     CostBound, GaussianStep, LazyPathFailure, SampleError, SampleOrigin, Sampler, SamplerCounters,
     SamplerError,
 };
+use rays::RayScratch;
 
 /// Wraps any sampler and draws a fraction of the states from Gaussians around the start and the
 /// goals, with a standard deviation drawn log-uniformly between two scales.
@@ -94,6 +95,10 @@ pub struct NearTerminals<T> {
     frontier: Vec<f64>,
     /// States returned from near a frontier state.
     frontier_returned: u64,
+    /// Whether frontier draws go along free lines first ([`with_frontier_rays`](Self::with_frontier_rays)).
+    rays: bool,
+    /// The line draws' scratch and the states of the last free line.
+    ray: RayScratch,
 }
 
 impl<T> NearTerminals<T> {
@@ -142,6 +147,8 @@ impl<T> NearTerminals<T> {
             drew_last: false,
             frontier: Vec::new(),
             frontier_returned: 0,
+            rays: false,
+            ray: RayScratch::default(),
         }
         .with_scales(small * extent, large * extent)
     }
@@ -176,6 +183,23 @@ impl<T> NearTerminals<T> {
         })?;
         self.log_scales = (smallest.ln(), largest.ln());
         Ok(self)
+    }
+
+    /// Makes half of the draws centred on the planner's frontier go along straight lines
+    /// (`true`; `false`, the default, keeps them Gaussian): a frontier draw first tries up to
+    /// [`RAY_TRIES`](Self::RAY_TRIES) lines from a frontier state towards uniform states, each
+    /// as long as the largest scale, and returns the far end and the midpoint of the first
+    /// line found free at [`RAY_POINTS`](Self::RAY_POINTS) tested states (over two requests);
+    /// if none is free, it draws as without the setting. Without frontier states nothing
+    /// changes, and with `false` the random sequence is exactly the one without rays.
+    ///
+    /// What it buys: a goal deep in a pocket (the Fetch's shelf grasps) is left along the
+    /// few directions that stay free for a full step, as RRT-Connect's goal tree leaves it,
+    /// where Gaussian draws around the frontier keep landing against the pocket's walls.
+    /// Measured in `docs/guide/src/your-own-robot.md`.
+    pub fn with_frontier_rays(mut self, rays: bool) -> Self {
+        self.rays = rays;
+        self
     }
 
     /// The fraction of requests answered near a terminal.
@@ -221,6 +245,29 @@ impl<T> NearTerminals<T> {
         let step = GaussianStep::new(sigma).ok()?.reflecting();
         self.draws.perturb(&step, space, around, out);
         Some(centre)
+    }
+}
+
+impl<T> NearTerminals<T> {
+    /// Writes the next state left from the last free line into `out` if one lies in the
+    /// informed set of `cost` (those outside are dropped, counted as rejected).
+    fn pop_ray<S: StateSpace + ?Sized>(
+        &mut self,
+        space: &S,
+        cost: Option<f64>,
+        out: &mut [f64],
+    ) -> Option<()> {
+        let n = out.len();
+        while self.ray.chain.len() >= n && n > 0 {
+            let at = self.ray.chain.len() - n;
+            out.copy_from_slice(&self.ray.chain[at..]);
+            self.ray.chain.truncate(at);
+            if self.draws.set.contains(space, cost, out) {
+                return Some(());
+            }
+            self.draws.reject();
+        }
+        None
     }
 }
 
@@ -274,6 +321,22 @@ where
                     .estimated_cost()
                     .filter(|&estimate| estimate > minimum)
             });
+            // The rest of the last free line first, then (with rays, on the frontier's share)
+            // a new line.
+            let mut lined = self.pop_ray(space, cost, out);
+            if lined.is_none()
+                && self.rays
+                && !self.frontier.is_empty()
+                && self.draws.rng().random_bool(Self::FRONTIER_SHARE)
+                && self.draw_ray(space, validity)
+            {
+                lined = self.pop_ray(space, cost, out);
+            }
+            if lined.is_some() {
+                self.drew_last = true;
+                self.frontier_returned += 1;
+                return self.draws.returned();
+            }
             match self.draw_near(space, out) {
                 Some(centre) if self.draws.set.contains(space, cost, out) => {
                     if self.draws.check(validity, out) {
@@ -298,6 +361,7 @@ where
         self.drew_last = false;
         self.frontier.clear();
         self.frontier_returned = 0;
+        self.ray.chain.clear();
     }
 
     fn counters(&self) -> SamplerCounters {
@@ -348,6 +412,8 @@ where
         }
     }
 }
+
+mod rays;
 
 #[cfg(test)]
 mod tests;

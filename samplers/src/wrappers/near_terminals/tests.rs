@@ -212,3 +212,106 @@ fn half_of_the_near_draws_centre_on_the_frontier_while_there_is_one() {
     }
     assert_eq!(counters(&sampler).1, 0);
 }
+
+/// A sampler answering 80 % of requests near the terminals or the frontier, at scales 0.05 to
+/// 0.2, with frontier rays `rays`.
+fn ray_sampler(rays: bool) -> NearTerminals<UniformSampler> {
+    let (space, start, goal) = square();
+    NearTerminals::new(UniformSampler::new(5), &space, &start, &[goal], 5)
+        .unwrap()
+        .with_fraction(0.8)
+        .unwrap()
+        .with_scales(0.05, 0.2)
+        .unwrap()
+        .with_frontier_rays(rays)
+}
+
+#[test]
+fn frontier_rays_return_the_midpoint_then_the_far_end_of_a_free_line() {
+    let (space, _, _) = square();
+    let world = World::in_space(&space);
+    let mut sampler = ray_sampler(true);
+    let frontier = [0.5, 0.5];
+    Sampler::<RealVectorSpace, World>::observe_frontier(&mut sampler, &frontier);
+    let mut x = [0.0; 2];
+    let (mut midpoints, mut far_ends) = (0, 0);
+    let mut pending: Option<[f64; 2]> = None;
+    for _ in 0..2000 {
+        sampler
+            .sample(&space, &world, CostBound::Unbounded, &Never, &mut x)
+            .unwrap();
+        if Sampler::<RealVectorSpace, World>::last_origin(&sampler) != SampleOrigin::NearTerminal {
+            continue;
+        }
+        let d = euclidean_distance(&x, &frontier);
+        if let Some(m) = pending.take() {
+            // The line's far end comes next, twice as far along the same line.
+            for i in 0..2 {
+                let expected = frontier[i] + 2.0 * (m[i] - frontier[i]);
+                assert!((x[i] - expected).abs() < 1e-12, "{x:?} after {m:?}");
+            }
+            far_ends += 1;
+        } else if (d - 0.1).abs() < 1e-12 {
+            pending = Some(x);
+            midpoints += 1;
+        }
+    }
+    // Of the 1 600 near requests, those not returning a far end start a line half the time
+    // (`L = 0.5 · (1 600 − L)`, about 530 lines); a target nearer than 0.2 (one in eight)
+    // makes a shorter one.
+    assert!((380..560).contains(&midpoints), "{midpoints}");
+    assert!(far_ends + 1 >= midpoints, "{far_ends} of {midpoints}");
+}
+
+#[test]
+fn blocked_lines_leave_the_gaussian_draws_and_no_frontier_leaves_the_sequence() {
+    let (space, _, _) = square();
+    // A free square of side 0.1 around the frontier state, in a ring of boxes: every line
+    // of length 0.2 from its centre leaves it.
+    let mut world = World::in_space(&space);
+    for (c, w) in [
+        ([0.5, 0.8], [1.0, 0.5]),
+        ([0.5, 0.2], [1.0, 0.5]),
+        ([0.2, 0.5], [0.5, 1.0]),
+        ([0.8, 0.5], [0.5, 1.0]),
+    ] {
+        world = world
+            .with_obstacle(AxisBox::new(c.to_vec(), w.to_vec()))
+            .unwrap();
+    }
+    let world = Counted::new(world);
+    let frontier = [0.5, 0.5];
+    let mut x = [0.0; 2];
+    // No frontier: rays or not, the same states.
+    let (mut with, mut without) = (ray_sampler(true), ray_sampler(false));
+    let mut y = [0.0; 2];
+    for _ in 0..300 {
+        with.sample(&space, &world, CostBound::Unbounded, &Never, &mut x)
+            .unwrap();
+        without
+            .sample(&space, &world, CostBound::Unbounded, &Never, &mut y)
+            .unwrap();
+        assert_eq!(x, y);
+    }
+    // Blocked lines: tested (the checks grow), none returned.
+    Sampler::<RealVectorSpace, Counted<World>>::observe_frontier(&mut with, &frontier);
+    Sampler::<RealVectorSpace, Counted<World>>::observe_frontier(&mut without, &frontier);
+    for _ in 0..600 {
+        with.sample(&space, &world, CostBound::Unbounded, &Never, &mut x)
+            .unwrap();
+        without
+            .sample(&space, &world, CostBound::Unbounded, &Never, &mut y)
+            .unwrap();
+        assert!(world.is_valid(&x), "{x:?}");
+        let d = euclidean_distance(&x, &frontier);
+        assert!((d - 0.2).abs() > 1e-9, "a line's far end: {x:?}");
+    }
+    // The wrapper's own checks (the wrapped sampler's rejections, many in this world, left out).
+    let checks = |s: &NearTerminals<UniformSampler>| s.draws.own().validity_checks;
+    assert!(
+        checks(&with) > checks(&without) + 100,
+        "{} {}",
+        checks(&with),
+        checks(&without)
+    );
+}

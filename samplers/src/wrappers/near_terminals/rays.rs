@@ -1,0 +1,119 @@
+//! Frontier rays: [`NearTerminals`]'s draws along free straight lines out of the planner's
+//! frontier ([`with_frontier_rays`](NearTerminals::with_frontier_rays)).
+
+use rand::RngExt;
+use spaces::StateSpace;
+use validity::StateValidity;
+
+use super::NearTerminals;
+
+impl<T> NearTerminals<T> {
+    /// Lines tried per frontier draw before the draw falls back to a Gaussian one.
+    pub const RAY_TRIES: usize = 8;
+    /// States tested along a line.
+    pub const RAY_POINTS: usize = 32;
+
+    /// Tries up to [`RAY_TRIES`](Self::RAY_TRIES) straight lines from a frontier state (one
+    /// chosen uniformly per line) towards a state drawn uniformly in the space, each over the
+    /// largest scale `σ` (or up to the target, if nearer), tested at
+    /// [`RAY_POINTS`](Self::RAY_POINTS) evenly spaced states in bisection order, a checker's
+    /// batch at a time. The first line whose every tested state is valid leaves its far end
+    /// and its midpoint in `chain` (the midpoint last, so it is returned first); `false` if
+    /// every line met an invalid state, or there is no frontier.
+    ///
+    /// This is RRT-Connect's extension, made a sample: a tree grows out of a pocket along
+    /// the few directions that stay free for a full step, which Gaussian draws around the
+    /// frontier seldom find in 7 or 8 dimensions. The planner still checks every edge it
+    /// builds; the line's test only chooses where the states go.
+    pub(super) fn draw_ray<S, V>(&mut self, space: &S, validity: &V) -> bool
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let n = space.dimension();
+        let frontier = self.frontier.len() / n.max(1);
+        if frontier == 0 {
+            return false;
+        }
+        let m = Self::RAY_POINTS;
+        let width = validity.batch_width().clamp(1, m);
+        self.ray.target.resize(n, 0.0);
+        self.ray.states.resize(m * n, 0.0);
+        let largest = self.log_scales.1.exp();
+        for _ in 0..Self::RAY_TRIES {
+            let from = self.draws.rng().random_range(0..frontier) * n;
+            let centre = &self.frontier[from..from + n];
+            space.sample_uniform(self.draws.rng(), &mut self.ray.target);
+            let distance = space.distance(centre, &self.ray.target);
+            // A target on the centre (or a NaN distance) gives no line.
+            if distance.is_nan() || distance <= 0.0 {
+                continue;
+            }
+            let reach = distance.min(largest) / distance;
+            for (k, state) in self.ray.states.chunks_exact_mut(n).enumerate() {
+                space.interpolate(centre, &self.ray.target, reach * bisection(k, m), state);
+            }
+            let mut free = true;
+            for batch in self.ray.states.chunks(width * n) {
+                self.draws.own_counters().validity_checks += (batch.len() / n) as u64;
+                if validity.any_invalid(batch, n).is_some() {
+                    free = false;
+                    break;
+                }
+            }
+            if free {
+                // The far end is the first state in bisection order's last place; the
+                // midpoint is its first.
+                self.ray.chain.clear();
+                self.ray
+                    .chain
+                    .extend_from_slice(&self.ray.states[(m - 1) * n..m * n]);
+                self.ray.chain.extend_from_slice(&self.ray.states[..n]);
+                return true;
+            }
+        }
+        false
+    }
+}
+
+/// The fraction of the line at which the `k`-th of `m` tested states lies (`m` a power of
+/// two): `1/2, 1/4, 3/4, 1/8, 3/8, …`, the far end (`1`) last, so a checker's first batch
+/// spreads over the whole line and a collision anywhere is met early.
+fn bisection(k: usize, m: usize) -> f64 {
+    if k + 1 == m {
+        return 1.0;
+    }
+    // Position k + 1 in breadth-first order of the midpoints: level ⌊log₂(k + 1)⌋.
+    let i = k + 1;
+    let level = usize::BITS - 1 - i.leading_zeros();
+    let first = 1_usize << level;
+    let numerator = 2 * (i - first) + 1;
+    numerator as f64 / (2 * first) as f64
+}
+
+/// The scratch of the ray draws (kept so a draw allocates nothing once warm).
+#[derive(Debug, Clone, Default)]
+pub(super) struct RayScratch {
+    /// The uniform state a line heads for.
+    target: Vec<f64>,
+    /// The line's tested states, in bisection order.
+    states: Vec<f64>,
+    /// States of the last free line still to be returned, the next one last.
+    pub(super) chain: Vec<f64>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::bisection;
+
+    #[test]
+    fn the_bisection_order_visits_every_point_once_and_the_far_end_last() {
+        let m = 32;
+        let mut seen: Vec<f64> = (0..m).map(|k| bisection(k, m) * m as f64).collect();
+        assert_eq!(&seen[..4], [16.0, 8.0, 24.0, 4.0]);
+        assert_eq!(seen[m - 1], 32.0);
+        seen.sort_by(f64::total_cmp);
+        let expected: Vec<f64> = (1..=m).map(|j| j as f64).collect();
+        assert_eq!(seen, expected);
+    }
+}
