@@ -50,6 +50,10 @@ use rays::RayScratch;
 /// keep filling the pocket. Without frontier states (before the first batch, once solved, or
 /// for a planner that sends none) the draws are exactly those described above.
 ///
+/// With [`with_frontier_rays`](Self::with_frontier_rays), half of the frontier-centred draws
+/// go along the first straight line found free from a frontier state instead, as
+/// RRT-Connect's trees extend.
+///
 /// Removing the wrapper is the ablation; a fraction of 0 draws nothing and leaves the wrapped
 /// sampler's random sequence untouched.
 ///
@@ -188,7 +192,7 @@ impl<T> NearTerminals<T> {
     /// Makes half of the draws centred on the planner's frontier go along straight lines
     /// (`true`; `false`, the default, keeps them Gaussian): a frontier draw first tries up to
     /// [`RAY_TRIES`](Self::RAY_TRIES) lines from a frontier state towards uniform states, each
-    /// as long as the largest scale, and returns the far end and the midpoint of the first
+    /// as long as the largest scale, and returns the midpoint, then the far end, of the first
     /// line found free at [`RAY_POINTS`](Self::RAY_POINTS) tested states (over two requests);
     /// if none is free, it draws as without the setting. Without frontier states nothing
     /// changes, and with `false` the random sequence is exactly the one without rays.
@@ -249,25 +253,26 @@ impl<T> NearTerminals<T> {
 }
 
 impl<T> NearTerminals<T> {
-    /// Writes the next state left from the last free line into `out` if one lies in the
-    /// informed set of `cost` (those outside are dropped, counted as rejected).
+    /// Writes the next state left from the last free line into `out` and returns `true`, if
+    /// one lies in the informed set of `cost` (those outside are dropped, counted as
+    /// rejected).
     fn pop_ray<S: StateSpace + ?Sized>(
         &mut self,
         space: &S,
         cost: Option<f64>,
         out: &mut [f64],
-    ) -> Option<()> {
+    ) -> bool {
         let n = out.len();
         while self.ray.chain.len() >= n && n > 0 {
             let at = self.ray.chain.len() - n;
             out.copy_from_slice(&self.ray.chain[at..]);
             self.ray.chain.truncate(at);
             if self.draws.set.contains(space, cost, out) {
-                return Some(());
+                return true;
             }
             self.draws.reject();
         }
-        None
+        false
     }
 }
 
@@ -324,7 +329,7 @@ where
             // The rest of the last free line first, then (with rays, on the frontier's share)
             // a new line.
             let mut lined = self.pop_ray(space, cost, out);
-            if lined.is_none()
+            if !lined
                 && self.rays
                 && !self.frontier.is_empty()
                 && self.draws.rng().random_bool(Self::FRONTIER_SHARE)
@@ -332,7 +337,7 @@ where
             {
                 lined = self.pop_ray(space, cost, out);
             }
-            if lined.is_some() {
+            if lined {
                 self.drew_last = true;
                 self.frontier_returned += 1;
                 return self.draws.returned();
