@@ -100,12 +100,13 @@ pub struct Parameters {
     /// terminal). No effect without the wrapper (`near_terminals` 0, the paper's problems).
     /// Not in the paper: a goal in a pocket is left one batch at a time.
     pub near_frontier: usize,
-    /// Half of the [`NearTerminals`](samplers::NearTerminals) draws centred on the frontier go
-    /// along straight lines found free over the largest scale, up to
-    /// [`NearTerminals::RAY_TRIES`](samplers::NearTerminals::RAY_TRIES) tried per draw
+    /// While the [`NearTerminals`](samplers::NearTerminals) wrapper has frontier states, half
+    /// of its draws first try straight lines from them over the largest scale, up to
+    /// [`NearTerminals::RAY_TRIES`](samplers::NearTerminals::RAY_TRIES), and take two states
+    /// of the first line found free
     /// ([`NearTerminals::with_frontier_rays`](samplers::NearTerminals::with_frontier_rays)):
-    /// RRT-Connect's extension as a sample. `false` (the default) keeps them Gaussian. No
-    /// effect without the wrapper or without frontier states. Not in the paper.
+    /// RRT-Connect's extension as a sample. `false` (the default) keeps every draw Gaussian.
+    /// No effect without the wrapper or without frontier states. Not in the paper.
     pub frontier_rays: bool,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge

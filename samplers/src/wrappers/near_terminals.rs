@@ -50,9 +50,9 @@ use rays::RayScratch;
 /// keep filling the pocket. Without frontier states (before the first batch, once solved, or
 /// for a planner that sends none) the draws are exactly those described above.
 ///
-/// With [`with_frontier_rays`](Self::with_frontier_rays), half of the frontier-centred draws
-/// go along the first straight line found free from a frontier state instead, as
-/// RRT-Connect's trees extend.
+/// With [`with_frontier_rays`](Self::with_frontier_rays), while it has frontier states, half of
+/// its draws first try straight lines from them and take two states of the first line found
+/// free, as RRT-Connect's trees extend.
 ///
 /// Removing the wrapper is the ablation; a fraction of 0 draws nothing and leaves the wrapped
 /// sampler's random sequence untouched.
@@ -189,9 +189,9 @@ impl<T> NearTerminals<T> {
         Ok(self)
     }
 
-    /// Makes half of the draws centred on the planner's frontier go along straight lines
-    /// (`true`; `false`, the default, keeps them Gaussian): a frontier draw first tries up to
-    /// [`RAY_TRIES`](Self::RAY_TRIES) lines from a frontier state towards uniform states, each
+    /// Makes half of the draws, while there are frontier states, go along straight lines
+    /// (`true`; `false`, the default, keeps every draw Gaussian): such a draw first tries up to
+    /// [`RAY_TRIES`](Self::RAY_TRIES) lines from frontier states towards uniform states, each
     /// as long as the largest scale, and returns the midpoint, then the far end, of the first
     /// line found free at [`RAY_POINTS`](Self::RAY_POINTS) tested states (over two requests);
     /// if none is free, it draws as without the setting. Without frontier states nothing
