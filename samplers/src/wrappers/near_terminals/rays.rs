@@ -62,8 +62,8 @@ impl<T> NearTerminals<T> {
                 }
             }
             if free {
-                // The far end is the first state in bisection order's last place; the
-                // midpoint is its first.
+                // The far end is the last state in bisection order, the midpoint the first;
+                // the midpoint goes last, so it is returned first.
                 self.ray.chain.clear();
                 self.ray
                     .chain
