@@ -3,7 +3,7 @@
 
 use rand::RngExt;
 use spaces::StateSpace;
-use validity::StateValidity;
+use validity::{EdgeGrid, StateValidity};
 
 use super::NearTerminals;
 
@@ -40,6 +40,9 @@ impl<T> NearTerminals<T> {
         self.ray.target.resize(n, 0.0);
         self.ray.states.resize(m * n, 0.0);
         let largest = self.log_scales.1.exp();
+        // The interior points of a line of `m` intervals in the edge checkers' bisection order,
+        // then its far end, so a checker's first batch spreads over the whole line.
+        let grid = EdgeGrid::with_intervals(m as u64);
         for _ in 0..Self::RAY_TRIES {
             let from = self.draws.rng().random_range(0..frontier) * n;
             let centre = &self.frontier[from..from + n];
@@ -51,7 +54,12 @@ impl<T> NearTerminals<T> {
             }
             let reach = distance.min(largest) / distance;
             for (k, state) in self.ray.states.chunks_exact_mut(n).enumerate() {
-                space.interpolate(centre, &self.ray.target, reach * bisection(k, m), state);
+                let along = if k + 1 < m {
+                    grid.fraction(grid.point(k as u64))
+                } else {
+                    1.0
+                };
+                space.interpolate(centre, &self.ray.target, reach * along, state);
             }
             let mut free = true;
             for batch in self.ray.states.chunks(width * n) {
@@ -76,21 +84,6 @@ impl<T> NearTerminals<T> {
     }
 }
 
-/// The fraction of the line at which the `k`-th of `m` tested states lies (`m` a power of
-/// two): `1/2, 1/4, 3/4, 1/8, 3/8, …`, the far end (`1`) last, so a checker's first batch
-/// spreads over the whole line and a collision anywhere is met early.
-fn bisection(k: usize, m: usize) -> f64 {
-    if k + 1 == m {
-        return 1.0;
-    }
-    // Position k + 1 in breadth-first order of the midpoints: level ⌊log₂(k + 1)⌋.
-    let i = k + 1;
-    let level = usize::BITS - 1 - i.leading_zeros();
-    let first = 1_usize << level;
-    let numerator = 2 * (i - first) + 1;
-    numerator as f64 / (2 * first) as f64
-}
-
 /// The scratch of the ray draws (kept so a draw allocates nothing once warm).
 #[derive(Debug, Clone, Default)]
 pub(super) struct RayScratch {
@@ -100,20 +93,4 @@ pub(super) struct RayScratch {
     states: Vec<f64>,
     /// States of the last free line still to be returned, the next one last.
     pub(super) chain: Vec<f64>,
-}
-
-#[cfg(test)]
-mod tests {
-    use super::bisection;
-
-    #[test]
-    fn the_bisection_order_visits_every_point_once_and_the_far_end_last() {
-        let m = 32;
-        let mut seen: Vec<f64> = (0..m).map(|k| bisection(k, m) * m as f64).collect();
-        assert_eq!(&seen[..4], [16.0, 8.0, 24.0, 4.0]);
-        assert_eq!(seen[m - 1], 32.0);
-        seen.sort_by(f64::total_cmp);
-        let expected: Vec<f64> = (1..=m).map(|j| j as f64).collect();
-        assert_eq!(seen, expected);
-    }
 }
