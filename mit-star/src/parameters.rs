@@ -105,8 +105,9 @@ pub struct Parameters {
     /// [`NearTerminals::RAY_TRIES`](samplers::NearTerminals::RAY_TRIES), and take two states
     /// of the first line found free
     /// ([`NearTerminals::with_frontier_rays`](samplers::NearTerminals::with_frontier_rays)):
-    /// RRT-Connect's extension as a sample. `false` (the default) keeps every draw Gaussian.
-    /// No effect without the wrapper or without frontier states. Not in the paper.
+    /// RRT-Connect's extension as a sample. `true` by default (chosen by measurement on the
+    /// Panda, the UR5 and the Fetch); `false` keeps every draw Gaussian. No effect without the
+    /// wrapper or without frontier states. Not in the paper.
     pub frontier_rays: bool,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge
@@ -226,7 +227,7 @@ impl Default for Parameters {
             certification: None,
             near_terminals: None,
             near_frontier: 4,
-            frontier_rays: false,
+            frontier_rays: true,
             accelerated_checks: true,
             range: None,
             rrt_valid_samples: false,

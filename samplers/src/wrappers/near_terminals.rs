@@ -52,7 +52,8 @@ use rays::RayScratch;
 ///
 /// With [`with_frontier_rays`](Self::with_frontier_rays), while it has frontier states, half of
 /// its draws first try straight lines from them and take two states of the first line found
-/// free, as RRT-Connect's trees extend.
+/// free, as RRT-Connect's trees extend. Off unless asked for here; the planners' parameters
+/// (`frontier_rays` in the `mit-star` crate) ask for it by default.
 ///
 /// Removing the wrapper is the ablation; a fraction of 0 draws nothing and leaves the wrapped
 /// sampler's random sequence untouched.
