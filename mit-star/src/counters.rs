@@ -66,6 +66,9 @@ pub struct Counters {
     /// Of those, the states drawn near the reverse search's frontier
     /// ([`Parameters::near_frontier`](crate::Parameters::near_frontier)).
     pub sampler_near_frontier: u64,
+    /// Batches whose frontier came from the start's side of the graph rather than the reverse
+    /// search's ([`Parameters::start_frontier`](crate::Parameters::start_frontier)).
+    pub start_frontiers: u64,
     /// Adaptive sampler: failed repairs, after which it drew a new `x_pre`.
     pub sampler_restarts: u64,
     /// Estimated informed set: the cost `s̃_est` it was created with (`None`: never created).
@@ -122,6 +125,7 @@ impl Counters {
             sampler_bridge,
             sampler_near_terminals,
             sampler_near_frontier,
+            start_frontiers,
             sampler_restarts,
             estimate_initial,
             estimate_final,
@@ -159,6 +163,7 @@ impl Counters {
         self.sampler_bridge += sampler_bridge;
         self.sampler_near_terminals += sampler_near_terminals;
         self.sampler_near_frontier += sampler_near_frontier;
+        self.start_frontiers += start_frontiers;
         self.sampler_restarts += sampler_restarts;
         self.estimate_expansions += estimate_expansions;
         self.estimate_batches += estimate_batches;

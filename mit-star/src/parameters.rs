@@ -109,6 +109,14 @@ pub struct Parameters {
     /// Panda, the UR5 and the Fetch); `false` keeps every draw Gaussian. No effect without the
     /// wrapper or without frontier states. Not in the paper.
     pub frontier_rays: bool,
+    /// With a frontier (`near_frontier` > 0), when the reverse search of MIT* or EIT* ends
+    /// holding more than half of the graph's vertices but not the start, the start is the end
+    /// in a pocket: the planner then searches from the start over the edges that pass the
+    /// sparse checks and hands the sampler the `near_frontier` states that side reached
+    /// farthest, instead of the reverse tree's. A start in a pocket (planning out of a shelf)
+    /// is then left as a goal in one is. `true` by default; `false` keeps every frontier on
+    /// the goals' side. No effect without the wrapper. Not in the paper.
+    pub start_frontier: bool,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge
     /// without a test — and its points go to the checker in batches (SIMD lanes). The answers
@@ -228,6 +236,7 @@ impl Default for Parameters {
             near_terminals: None,
             near_frontier: 4,
             frontier_rays: true,
+            start_frontier: true,
             accelerated_checks: true,
             range: None,
             rrt_valid_samples: false,
@@ -467,6 +476,7 @@ impl Parameters {
             ),
             ("near_frontier", self.near_frontier.to_string()),
             ("frontier_rays", self.frontier_rays.to_string()),
+            ("start_frontier", self.start_frontier.to_string()),
             ("accelerated_checks", self.accelerated_checks.to_string()),
             ("rrt_valid_samples", self.rrt_valid_samples.to_string()),
             ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),

@@ -152,7 +152,7 @@ impl RunRecord {
 }
 
 /// How many integer counters a run records.
-pub(crate) const COUNTERS: usize = 50;
+pub(crate) const COUNTERS: usize = 51;
 
 /// Names of the per-length counters: checks and points of sparse and full checks for each bucket
 /// of [`validity::LENGTH_BUCKET_BOUNDS`], named after [`validity::LENGTH_BUCKET_LABELS`]
@@ -212,6 +212,7 @@ fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
         ("sampler bridge repairs", c.sampler_bridge),
         ("sampler near terminal draws", c.sampler_near_terminals),
         ("sampler near frontier draws", c.sampler_near_frontier),
+        ("start frontiers", c.start_frontiers),
         ("sampler failed repairs", c.sampler_restarts),
         ("estimated informed set expansions", c.estimate_expansions),
         ("estimated informed set batches", c.estimate_batches),

@@ -329,6 +329,12 @@ impl RandomGeometricGraph {
 
     // ----- read-only view -----
 
+    /// One more than the largest vertex id ever handed out (ids of removed vertices included):
+    /// the length of an array indexed by vertex id.
+    pub(crate) fn id_bound(&self) -> usize {
+        self.states.len()
+    }
+
     /// Number of vertices (samples, start and goals).
     pub fn vertex_count(&self) -> usize {
         self.graph.node_count()

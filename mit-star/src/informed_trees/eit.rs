@@ -12,6 +12,7 @@ use crate::graph::{NONE, RandomGeometricGraph, Vertex};
 use crate::informed_trees::forward_queue::ForwardQueue;
 use crate::informed_trees::guidance::{EffortInformed, Guidance};
 use crate::informed_trees::reverse_queue::ReverseQueue;
+use crate::informed_trees::start_reach::StartReach;
 use crate::planner::validate_query;
 use crate::termination::SolveStop;
 use crate::{
@@ -135,6 +136,8 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     /// farthest vertices, and the coordinates the sampler holds (empty: none).
     pub(crate) frontier: Vec<(f64, u32)>,
     pub(crate) frontier_states: Vec<f64>,
+    /// Scratch of the start's search for its side of the frontier (`start_reach.rs`).
+    pub(crate) start_reach: StartReach,
 }
 
 impl<S, V, Smp, E, H, G> std::fmt::Debug for Eit<S, V, Smp, E, H, G> {
@@ -218,6 +221,7 @@ where
             sample: vec![0.0; n],
             frontier: Vec::new(),
             frontier_states: Vec::new(),
+            start_reach: StartReach::default(),
         }
     }
 

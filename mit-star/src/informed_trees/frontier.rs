@@ -2,8 +2,6 @@
 //! sampler at the end of a batch without a solution
 //! ([`Sampler::observe_frontier`](samplers::Sampler::observe_frontier)).
 
-use std::cmp::Ordering;
-
 use heuristics::Heuristic;
 use samplers::Sampler;
 use spaces::{StateSpace, Stop};
@@ -11,15 +9,10 @@ use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
+use crate::informed_trees::start_reach::keep_farthest;
 
 /// Vertices of the reverse tree walked between two polls of the stop condition.
 const FRONTIER_POLL: usize = 4096;
-
-/// Farthest first (largest `ĥ`), ties by id, so the frontier does not depend on the walk's
-/// order.
-fn farther(a: &(f64, u32), b: &(f64, u32)) -> Ordering {
-    b.0.total_cmp(&a.0).then(a.1.cmp(&b.1))
-}
 
 impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
@@ -34,6 +27,12 @@ where
     /// solution, the [`near_frontier`](crate::Parameters::near_frontier) samples of the reverse
     /// tree with the largest cost-to-go `ĥ`, farthest first; with one (or with the count 0, or
     /// without a reverse search), nothing, once, so that the sampler drops what it kept.
+    ///
+    /// If the reverse tree holds more than half of the graph's vertices but not the start
+    /// ([`start_frontier`](crate::Parameters::start_frontier), MIT* and EIT*), the start is
+    /// the end in a pocket: the states the start's side reached farthest are sent instead
+    /// ([`reach_from_start`](Self::reach_from_start), capped at the vertices outside the
+    /// reverse tree).
     ///
     /// Walks the reverse tree from the goals through its child lists, keeping the best
     /// `near_frontier` in a small sorted buffer. Allocates nothing once the buffers have grown.
@@ -77,17 +76,25 @@ where
             if vertex.is_terminal() || !h.is_finite() {
                 continue;
             }
-            let entry = (h, v);
-            if best.len() == wanted && farther(&entry, &best[wanted - 1]) != Ordering::Less {
-                continue;
-            }
-            let at = best.partition_point(|kept| farther(kept, &entry) == Ordering::Less);
-            if best.len() == wanted {
-                best.pop();
-            }
-            best.insert(at, entry);
+            keep_farthest(&mut best, wanted, (h, v));
         }
         self.branch = walk;
+        self.frontier = best;
+        // The reverse tree holds most of the graph but not the start: the goals are not the
+        // ones in a pocket, the start is, and the states its side reached farthest are the
+        // frontier instead.
+        let vertices = self.graph.vertex_count();
+        if !stopped
+            && self.parameters.start_frontier
+            && G::REVERSE == ReverseSearch::SparseChecked
+            && 2 * walked > vertices
+            && !self.graph.vertex(self.start_id).h(tag).is_finite()
+            && self.reach_from_start(vertices - walked, wanted, stop)
+        {
+            std::mem::swap(&mut self.frontier, &mut self.start_reach.farthest);
+            self.counters.start_frontiers += 1;
+        }
+        let best = std::mem::take(&mut self.frontier);
         if !stopped {
             self.frontier_states.clear();
             for &(_, v) in &best {

@@ -8,11 +8,44 @@ use validity::{FixedSparseChecker, StateValidity, World};
 use crate::termination::SolveStop;
 use crate::{Eit, IterationLimit};
 
-/// An informed sampler that records every frontier it is handed.
+/// An informed sampler that records every frontier it is handed, and with a pocket puts every
+/// third sample uniformly in the box of half-side `half` around its centre (the start's
+/// hollow of `start_reach_tests`).
 #[derive(Debug, Clone)]
-struct Recording {
+pub(super) struct Recording {
     inner: InformedSampler,
-    sent: Vec<Vec<f64>>,
+    pub(super) sent: Vec<Vec<f64>>,
+    pocket: Option<(Vec<f64>, f64)>,
+    /// A xorshift state for the draws in the pocket.
+    rng: u64,
+    count: u64,
+}
+
+impl Recording {
+    /// Records around `inner`, drawing nothing of its own.
+    pub(super) fn new(inner: InformedSampler) -> Self {
+        Self {
+            inner,
+            sent: Vec::new(),
+            pocket: None,
+            rng: 0x9e37_79b9_7f4a_7c15,
+            count: 0,
+        }
+    }
+
+    /// Every third sample in the box of half-side `half` around `centre`.
+    pub(super) fn with_pocket(mut self, centre: &[f64], half: f64) -> Self {
+        self.pocket = Some((centre.to_vec(), half));
+        self
+    }
+
+    /// The next uniform number in `[-1, 1)`.
+    fn unit(&mut self) -> f64 {
+        self.rng ^= self.rng << 13;
+        self.rng ^= self.rng >> 7;
+        self.rng ^= self.rng << 17;
+        2.0 * ((self.rng >> 11) as f64 / (1_u64 << 53) as f64) - 1.0
+    }
 }
 
 impl<S, V> Sampler<S, V> for Recording
@@ -28,6 +61,22 @@ where
         stop: &dyn Stop,
         out: &mut [f64],
     ) -> Result<(), SampleError> {
+        self.count += 1;
+        let pocket = if self.count % 3 == 0 {
+            self.pocket.clone()
+        } else {
+            None
+        };
+        if let Some((centre, half)) = pocket {
+            loop {
+                for (x, c) in out.iter_mut().zip(&centre) {
+                    *x = c + half * self.unit();
+                }
+                if validity.is_valid(out) {
+                    return Ok(());
+                }
+            }
+        }
         self.inner.sample(space, validity, bound, stop, out)
     }
 
@@ -59,14 +108,16 @@ impl<S: StateSpace> crate::SamplerPart<S> for Recording {
         goals: &[Vec<f64>],
         parameters: &crate::Parameters,
     ) -> Result<Self, crate::BuildError> {
-        Ok(Self {
-            inner: InformedSampler::new(space, start, goals, parameters.seed)?,
-            sent: Vec::new(),
-        })
+        Ok(Self::new(InformedSampler::new(
+            space,
+            start,
+            goals,
+            parameters.seed,
+        )?))
     }
 }
 
-type RecordingEit = Eit<spaces::RealVectorSpace, World, Recording, FixedSparseChecker>;
+pub(super) type RecordingEit = Eit<spaces::RealVectorSpace, World, Recording, FixedSparseChecker>;
 
 fn make(frontier: usize) -> (RecordingEit, problems::Problem) {
     let problem = problems::DividingWalls::new(4)
@@ -75,10 +126,7 @@ fn make(frontier: usize) -> (RecordingEit, problems::Problem) {
         .with_resolution(1e-3)
         .unwrap();
     let (space, start, goals) = (problem.space(), problem.start(), problem.goals());
-    let sampler = Recording {
-        inner: InformedSampler::new(space, start, goals, 5).unwrap(),
-        sent: Vec::new(),
-    };
+    let sampler = Recording::new(InformedSampler::new(space, start, goals, 5).unwrap());
     let mut parameters = crate::Parameters {
         batch_size: 300,
         ..crate::Parameters::default()

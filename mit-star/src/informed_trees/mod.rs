@@ -18,6 +18,8 @@
 //!   grafted into the forward tree as the best solution.
 //! - `frontier.rs`: the states the reverse search reached farthest from the goals, handed to
 //!   the sampler at the end of a batch without a solution.
+//! - `start_reach.rs`: the start's side of that frontier, for a start in a pocket (outside a
+//!   reverse tree that holds most of the graph); `start_reach_tests.rs`, its tests.
 //! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches;
 //!   `batch_tests.rs`: the sample count of its connection rules, and where ABIT*'s search of a
 //!   batch ends.
@@ -44,6 +46,9 @@ mod offered_path;
 mod reverse_queue;
 mod reverse_repair;
 mod reverse_search;
+mod start_reach;
+#[cfg(test)]
+mod start_reach_tests;
 
 pub use aliases::{
     AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr,

@@ -273,12 +273,51 @@ where
         if h_u + cost >= self.graph.vertex(v).h(tag) {
             return;
         }
+        // AIT*: the reverse search checks nothing.
+        let (status, progress) =
+            self.sparse_check(u, v, G::REVERSE != ReverseSearch::Unchecked, stop);
+        if status == EdgeStatus::Invalid {
+            return;
+        }
+        let remaining = progress.remaining(&EdgeGrid::new(distance, self.step));
+        let (h_est_u, effort_u) = {
+            let x = self.graph.vertex(u);
+            (x.h_estimate, x.effort)
+        };
+        let target = self.graph.vertex_mut(v);
+        target.touch_reverse(tag);
+        target.h = h_u + cost;
+        target.h_estimate = target.h_estimate.min(h_est_u + cost);
+        let through = if effort_u == NO_EFFORT {
+            NO_EFFORT
+        } else {
+            effort_u.saturating_add(remaining)
+        };
+        target.effort = target.effort.min(through);
+        self.link_reverse(v, u);
+        self.queue_lazy_edge(v, u);
+        let (graph, rule) = (&self.graph, self.key_rule());
+        self.forward
+            .update_incoming(v, |e| forward_keys(graph, rule, e));
+        self.expand_reverse(v, u, stop);
+    }
+
+    /// What the sparse check of the current level says of the edge `u — v`, and how far its
+    /// grid is tested: a white- or blacklisted edge's status as stored; otherwise, with
+    /// `check`, the check is run and what it learned stored, and without it the status is
+    /// unknown. A check the stop condition interrupted answers unknown.
+    pub(crate) fn sparse_check(
+        &mut self,
+        u: u32,
+        v: u32,
+        check: bool,
+        stop: &dyn Stop,
+    ) -> (EdgeStatus, EdgeProgress) {
         let record = self.graph.edge(u, v);
         let mut progress = record.map_or(EdgeProgress::UNTESTED, |r| r.progress);
         let status = match record.map(|r| r.status) {
             Some(status @ (EdgeStatus::Valid | EdgeStatus::Invalid)) => status,
-            // AIT*: the reverse search checks nothing.
-            _ if G::REVERSE == ReverseSearch::Unchecked => EdgeStatus::Unknown,
+            _ if !check => EdgeStatus::Unknown,
             _ => {
                 let before = progress;
                 let (a, b) = (self.graph.state(u), self.graph.state(v));
@@ -304,30 +343,7 @@ where
                 status
             }
         };
-        if status == EdgeStatus::Invalid {
-            return;
-        }
-        let remaining = progress.remaining(&EdgeGrid::new(distance, self.step));
-        let (h_est_u, effort_u) = {
-            let x = self.graph.vertex(u);
-            (x.h_estimate, x.effort)
-        };
-        let target = self.graph.vertex_mut(v);
-        target.touch_reverse(tag);
-        target.h = h_u + cost;
-        target.h_estimate = target.h_estimate.min(h_est_u + cost);
-        let through = if effort_u == NO_EFFORT {
-            NO_EFFORT
-        } else {
-            effort_u.saturating_add(remaining)
-        };
-        target.effort = target.effort.min(through);
-        self.link_reverse(v, u);
-        self.queue_lazy_edge(v, u);
-        let (graph, rule) = (&self.graph, self.key_rule());
-        self.forward
-            .update_incoming(v, |e| forward_keys(graph, rule, e));
-        self.expand_reverse(v, u, stop);
+        (status, progress)
     }
 
     /// `ĉ` and the metric distance of `u — v`, from `u`'s cached neighbours when `hint` points
