@@ -89,7 +89,7 @@ where
             && G::REVERSE == ReverseSearch::SparseChecked
             && 2 * walked > vertices
             && !self.graph.vertex(self.start_id).h(tag).is_finite()
-            && self.reach_from_start(vertices - walked, wanted, stop)
+            && self.reach_from_start(vertices.saturating_sub(walked), wanted, stop)
         {
             std::mem::swap(&mut self.frontier, &mut self.start_reach.farthest);
             self.counters.start_frontiers += 1;

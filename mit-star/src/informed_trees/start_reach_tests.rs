@@ -70,9 +70,16 @@ fn a_start_in_a_pocket_hands_over_the_states_the_start_reaches() {
             "{state:?} is outside the pocket"
         );
     }
-    // Farthest first: the costs the search reached them at do not increase.
-    let costs: Vec<f64> = planner.start_reach.farthest.iter().map(|e| e.0).collect();
+    // Farthest first: the costs from the start the search reached them at do not increase,
+    // and they are the states sent.
+    let costs: Vec<f64> = planner.frontier.iter().map(|e| e.0).collect();
     assert!(costs.windows(2).all(|w| w[0] >= w[1]), "{costs:?}");
+    let states: Vec<f64> = planner
+        .frontier
+        .iter()
+        .flat_map(|&(_, v)| planner.graph.state(v).to_vec())
+        .collect();
+    assert_eq!(*sent, states);
 }
 
 #[test]
