@@ -86,7 +86,7 @@ impl Item {
 
 /// Order-preserving bits of a non-negative cost (`+∞` included).
 #[inline]
-fn bits(cost: f64) -> u64 {
+pub(crate) fn bits(cost: f64) -> u64 {
     debug_assert!(cost >= 0.0, "queue keys are non-negative, got {cost}");
     cost.to_bits()
 }

@@ -2,6 +2,8 @@
 //! sampler at the end of a batch without a solution
 //! ([`Sampler::observe_frontier`](samplers::Sampler::observe_frontier)).
 
+use std::cmp::Ordering;
+
 use heuristics::Heuristic;
 use samplers::Sampler;
 use spaces::{StateSpace, Stop};
@@ -9,10 +11,23 @@ use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
-use crate::informed_trees::start_reach::keep_farthest;
 
 /// Vertices of the reverse tree walked between two polls of the stop condition.
 const FRONTIER_POLL: usize = 4096;
+
+/// Keeps `entry` in `best`, the at most `wanted` entries with the largest cost, farthest
+/// first, ties by id (so the result does not depend on the order entries come in).
+pub(crate) fn keep_farthest(best: &mut Vec<(f64, u32)>, wanted: usize, entry: (f64, u32)) {
+    let farther = |a: &(f64, u32), b: &(f64, u32)| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1));
+    if best.len() == wanted && farther(&entry, &best[wanted - 1]) != Ordering::Less {
+        return;
+    }
+    let at = best.partition_point(|kept| farther(kept, &entry) == Ordering::Less);
+    if best.len() == wanted {
+        best.pop();
+    }
+    best.insert(at, entry);
+}
 
 impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
 where
@@ -79,7 +94,6 @@ where
             keep_farthest(&mut best, wanted, (h, v));
         }
         self.branch = walk;
-        self.frontier = best;
         // The reverse tree holds most of the graph but not the start: the goals are not the
         // ones in a pocket, the start is, and the states its side reached farthest are the
         // frontier instead.
@@ -91,10 +105,9 @@ where
             && !self.graph.vertex(self.start_id).h(tag).is_finite()
             && self.reach_from_start(vertices.saturating_sub(walked), wanted, stop)
         {
-            std::mem::swap(&mut self.frontier, &mut self.start_reach.farthest);
+            std::mem::swap(&mut best, &mut self.start_reach.farthest);
             self.counters.start_frontiers += 1;
         }
-        let best = std::mem::take(&mut self.frontier);
         if !stopped {
             self.frontier_states.clear();
             for &(_, v) in &best {
