@@ -117,6 +117,17 @@ pub struct Parameters {
     /// is then left as a goal in one is. `true` by default; `false` keeps every frontier on
     /// the goals' side. No effect without the wrapper. Not in the paper.
     pub start_frontier: bool,
+    /// With a frontier (`near_frontier` > 0), the goals' frontier is taken from the part of
+    /// the reverse tree that full checks confirm: MIT*, EIT* and AIT* walk their reverse tree
+    /// from the goals, nearest first, fully checking each tree edge before going through it
+    /// (at most [`VALIDATED_FRONTIER_CHECKS`](Self::VALIDATED_FRONTIER_CHECKS) new checks
+    /// per batch; what they learn is stored, an invalid edge is blacklisted), and send the
+    /// farthest states reached so. The reverse tree's edges pass only sparse checks, and from
+    /// a goal in a pocket its long edges out (a midpoint tested) are mostly invalid, so its
+    /// farthest states lie far outside the pocket, where no valid path goes yet. `true` by
+    /// default; `false` takes the farthest states of the whole reverse tree. No effect without
+    /// the wrapper. Not in the paper.
+    pub validated_frontier: bool,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge
     /// without a test — and its points go to the checker in batches (SIMD lanes). The answers
@@ -237,6 +248,7 @@ impl Default for Parameters {
             near_frontier: 4,
             frontier_rays: true,
             start_frontier: true,
+            validated_frontier: true,
             accelerated_checks: true,
             range: None,
             rrt_valid_samples: false,
@@ -280,6 +292,10 @@ fn positive(name: &'static str, value: f64) -> Result<(), BuildError> {
 }
 
 impl Parameters {
+    /// New full checks a [`validated_frontier`](Self::validated_frontier) walk makes at most
+    /// per batch (edges already decided cost nothing). Untuned.
+    pub const VALIDATED_FRONTIER_CHECKS: usize = 64;
+
     /// These parameters for `problem`: its resolution replaces `resolution`, and its
     /// certification applies unless `certification` is set.
     ///
@@ -477,6 +493,7 @@ impl Parameters {
             ("near_frontier", self.near_frontier.to_string()),
             ("frontier_rays", self.frontier_rays.to_string()),
             ("start_frontier", self.start_frontier.to_string()),
+            ("validated_frontier", self.validated_frontier.to_string()),
             ("accelerated_checks", self.accelerated_checks.to_string()),
             ("rrt_valid_samples", self.rrt_valid_samples.to_string()),
             ("rrt_dynamic_domain", self.rrt_dynamic_domain.to_string()),

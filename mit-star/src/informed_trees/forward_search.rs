@@ -159,6 +159,36 @@ where
             .is_some_and(|r| r.status == EdgeStatus::Invalid)
     }
 
+    /// Full check of the edge `u — v` (spec §3.3), reusing what earlier checks tested and
+    /// storing what this one learns; a known status is returned without a check.
+    /// [`EdgeStatus::Unknown`] only if `stop` fired mid-check (the progress is kept).
+    pub(crate) fn full_check(&mut self, u: u32, v: u32, stop: &dyn Stop) -> EdgeStatus {
+        let record = self.graph.edge(u, v);
+        match record.map(|r| r.status) {
+            Some(status @ (EdgeStatus::Valid | EdgeStatus::Invalid)) => status,
+            _ => {
+                let mut progress = record.map_or(EdgeProgress::UNTESTED, |r| r.progress);
+                let before = progress;
+                let (a, b) = (self.graph.state(u), self.graph.state(v));
+                let status =
+                    self.checker
+                        .check_full(&self.space, &self.validity, a, b, &mut progress, stop);
+                if progress != before || record.is_none() {
+                    self.graph.store_edge(
+                        u,
+                        v,
+                        EdgeRecord {
+                            progress,
+                            status,
+                            certified: false,
+                        },
+                    );
+                }
+                status
+            }
+        }
+    }
+
     /// One forward-search step.
     pub(crate) fn forward_step(&mut self, stop: &SolveStop<'_>) {
         self.counters.forward_iterations += 1;
@@ -189,30 +219,7 @@ where
         if g_u + edge.cost >= g_v {
             return;
         }
-        let record = self.graph.edge(u, v);
-        let status = match record.map(|r| r.status) {
-            Some(status @ (EdgeStatus::Valid | EdgeStatus::Invalid)) => status,
-            _ => {
-                let mut progress = record.map_or(EdgeProgress::UNTESTED, |r| r.progress);
-                let before = progress;
-                let (a, b) = (self.graph.state(u), self.graph.state(v));
-                let status =
-                    self.checker
-                        .check_full(&self.space, &self.validity, a, b, &mut progress, stop);
-                if progress != before || record.is_none() {
-                    self.graph.store_edge(
-                        u,
-                        v,
-                        EdgeRecord {
-                            progress,
-                            status,
-                            certified: false,
-                        },
-                    );
-                }
-                status
-            }
-        };
+        let status = self.full_check(u, v, stop);
         match status {
             EdgeStatus::Valid => {
                 let new_g = g_u + edge.distance;

@@ -2,14 +2,16 @@
 //! sampler at the end of a batch without a solution
 //! ([`Sampler::observe_frontier`](samplers::Sampler::observe_frontier)).
 
-use std::cmp::Ordering;
+use std::cmp::{Ordering, Reverse};
 
 use heuristics::Heuristic;
 use samplers::Sampler;
 use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, StateValidity};
+use validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
 
+use crate::Parameters;
 use crate::informed_trees::eit::Eit;
+use crate::informed_trees::forward_queue::bits;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 
 /// Vertices of the reverse tree walked between two polls of the stop condition.
@@ -107,6 +109,8 @@ where
         {
             std::mem::swap(&mut best, &mut self.start_reach.farthest);
             self.counters.start_frontiers += 1;
+        } else if !stopped && self.parameters.validated_frontier {
+            stopped = !self.validated_farthest(wanted, &mut best, stop);
         }
         if !stopped {
             self.frontier_states.clear();
@@ -118,5 +122,74 @@ where
             }
         }
         self.frontier = best;
+    }
+
+    /// Keeps in `best` the `wanted` vertices farthest from the goals (largest `ĥ`, farthest
+    /// first) among those the goals reach through reverse-tree edges that pass a full check
+    /// ([`validated_frontier`](crate::Parameters::validated_frontier)). The walk goes nearest
+    /// first; a tree edge not yet decided is fully checked (what the check learns is stored,
+    /// so an invalid edge is blacklisted for the searches too) while fewer than
+    /// [`VALIDATED_FRONTIER_CHECKS`](Parameters::VALIDATED_FRONTIER_CHECKS) checks were made,
+    /// and left unwalked after. Returns `false` if the stop condition fired (polled every
+    /// [`FRONTIER_POLL`] vertices and inside the checks).
+    ///
+    /// Complexity: O(t log t) for the `t` tree vertices walked, plus the checks.
+    fn validated_farthest(
+        &mut self,
+        wanted: usize,
+        best: &mut Vec<(f64, u32)>,
+        stop: &dyn Stop,
+    ) -> bool {
+        let tag = self.reverse_tag;
+        best.clear();
+        // The start's search is not running: its heap is free scratch here.
+        let mut heap = std::mem::take(&mut self.start_reach.heap);
+        heap.clear();
+        for &g in &self.goal_ids {
+            let h = self.graph.vertex(g).h(tag);
+            if h.is_finite() {
+                heap.push(Reverse((bits(h), g)));
+            }
+        }
+        let mut children = std::mem::take(&mut self.branch);
+        let (mut checks, mut settled, mut complete) = (0_usize, 0_usize, true);
+        'walk: while let Some(Reverse((_, v))) = heap.pop() {
+            settled += 1;
+            if settled % FRONTIER_POLL == 0 && stop.should_stop() {
+                complete = false;
+                break;
+            }
+            let vertex = self.graph.vertex(v);
+            if !vertex.is_terminal() {
+                keep_farthest(best, wanted, (vertex.h(tag), v));
+            }
+            children.clear();
+            self.push_reverse_children(v, &mut children);
+            for &w in &children {
+                let h = self.graph.vertex(w).h(tag);
+                if !h.is_finite() {
+                    continue;
+                }
+                let status = match self.graph.edge(v, w).map(|r| r.status) {
+                    Some(known @ (EdgeStatus::Valid | EdgeStatus::Invalid)) => known,
+                    _ if checks >= Parameters::VALIDATED_FRONTIER_CHECKS => continue,
+                    _ => {
+                        checks += 1;
+                        self.full_check(v, w, stop)
+                    }
+                };
+                match status {
+                    EdgeStatus::Valid => heap.push(Reverse((bits(h), w))),
+                    EdgeStatus::Invalid => {}
+                    EdgeStatus::Unknown => {
+                        complete = false;
+                        break 'walk;
+                    }
+                }
+            }
+        }
+        self.branch = children;
+        self.start_reach.heap = heap;
+        complete
     }
 }

@@ -119,7 +119,14 @@ impl<S: StateSpace> crate::SamplerPart<S> for Recording {
 
 pub(super) type RecordingEit = Eit<spaces::RealVectorSpace, World, Recording, FixedSparseChecker>;
 
+/// The planner of these tests, with the whole reverse tree's frontier.
 fn make(frontier: usize) -> (RecordingEit, problems::Problem) {
+    make_with(frontier, false)
+}
+
+/// The planner of these tests; `validated` sets
+/// [`validated_frontier`](crate::Parameters::validated_frontier).
+fn make_with(frontier: usize, validated: bool) -> (RecordingEit, problems::Problem) {
     let problem = problems::DividingWalls::new(4)
         .build()
         .unwrap()
@@ -132,6 +139,7 @@ fn make(frontier: usize) -> (RecordingEit, problems::Problem) {
         ..crate::Parameters::default()
     };
     parameters.near_frontier = frontier;
+    parameters.validated_frontier = validated;
     let planner = RecordingEit::for_problem(&problem)
         .sampler(sampler)
         .parameters(parameters)
@@ -200,4 +208,75 @@ fn a_solution_or_a_count_of_zero_sends_no_frontier() {
     }
     off.send_frontier(false, &stop);
     assert!(off.sampler.sent.is_empty());
+}
+
+/// Runs the planner of these tests through one batch and 300 iterations, then ends the batch
+/// unsolved.
+fn send_after_one_batch(planner: &mut RecordingEit) {
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    planner.setup(&stop).unwrap();
+    planner.add_batch(&stop);
+    for _ in 0..300 {
+        planner.iterate(&stop);
+    }
+    planner.send_frontier(false, &stop);
+}
+
+/// Whether every edge of the reverse tree from the vertex at `state` up to a goal is free,
+/// decided exactly (segment against boxes, no grid).
+fn confirmed(planner: &RecordingEit, problem: &problems::Problem, state: &[f64]) -> bool {
+    let graph = &planner.graph;
+    let mut v = graph
+        .vertices()
+        .find(|(_, s)| *s == state)
+        .map(|(id, _)| id.0)
+        .expect("a sent state is a vertex");
+    while !graph.vertex(v).is_goal() {
+        let parent = graph.vertex(v).reverse_parent;
+        if !problem
+            .world()
+            .segment_verdict(graph.state(parent), graph.state(v))
+            .is_valid()
+        {
+            return false;
+        }
+        v = parent;
+    }
+    true
+}
+
+#[test]
+fn a_validated_frontier_lies_beyond_no_invalid_edge() {
+    // The same seed and the same steps build the same reverse tree in both planners.
+    let (mut whole, problem) = make_with(12, false);
+    let (mut validated, _) = make_with(12, true);
+    send_after_one_batch(&mut whole);
+    send_after_one_batch(&mut validated);
+    let n = problem.space().dimension();
+    let sent = validated.sampler.sent.last().unwrap();
+    assert!(!sent.is_empty());
+    for state in sent.chunks_exact(n) {
+        assert!(confirmed(&validated, &problem, state), "{state:?}");
+    }
+    // Farthest first.
+    let tag = validated.reverse_tag;
+    let h: Vec<f64> = sent
+        .chunks_exact(n)
+        .map(|s| {
+            let graph = &validated.graph;
+            let v = graph.vertices().find(|(_, x)| *x == s).unwrap().0.0;
+            graph.vertex(v).h(tag)
+        })
+        .collect();
+    assert!(h.windows(2).all(|w| w[0] >= w[1]), "{h:?}");
+    // Not vacuous: the whole tree's farthest states include one beyond an invalid edge
+    // (an edge whose midpoint alone was tested at the first sparse level).
+    let beyond = whole.sampler.sent.last().unwrap();
+    assert!(
+        beyond
+            .chunks_exact(n)
+            .any(|state| !confirmed(&whole, &problem, state)),
+        "every farthest state of the whole tree is confirmed: the test proves nothing"
+    );
 }

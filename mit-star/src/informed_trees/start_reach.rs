@@ -24,7 +24,7 @@ pub(crate) struct StartReach {
     /// Best cost from the start found so far, per vertex id (∞: not reached).
     cost: Vec<f64>,
     /// Vertices waiting, cheapest first (costs as order-preserving bits), ties by id.
-    heap: BinaryHeap<Reverse<(u64, u32)>>,
+    pub(crate) heap: BinaryHeap<Reverse<(u64, u32)>>,
     /// The farthest vertices reached, farthest first, as `(cost from the start, id)`.
     pub(crate) farthest: Vec<(f64, u32)>,
 }
