@@ -124,9 +124,10 @@ pub struct Parameters {
     /// per batch; what they learn is stored, an invalid edge is blacklisted), and send the
     /// farthest states reached so. The reverse tree's edges pass only sparse checks, and from
     /// a goal in a pocket its long edges out (a midpoint tested) are mostly invalid, so its
-    /// farthest states lie far outside the pocket, where no valid path goes yet. `true` by
-    /// default; `false` takes the farthest states of the whole reverse tree. No effect without
-    /// the wrapper. Not in the paper.
+    /// farthest states lie far outside the pocket, where no valid path goes yet. `false` by
+    /// default (the farthest states of the whole reverse tree): on the Fetch it helps goals in
+    /// pockets a little and hurts starts in pockets more (`docs/guide/src/performance-switches.md`).
+    /// No effect without the wrapper. Not in the paper.
     pub validated_frontier: bool,
     /// Accelerated point checks (`true`, the default): each edge is first prepared by the
     /// validity checker — a box world keeps only the boxes near it and decides a free edge
@@ -248,7 +249,7 @@ impl Default for Parameters {
             near_frontier: 4,
             frontier_rays: true,
             start_frontier: true,
-            validated_frontier: true,
+            validated_frontier: false,
             accelerated_checks: true,
             range: None,
             rrt_valid_samples: false,

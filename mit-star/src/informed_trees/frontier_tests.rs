@@ -119,7 +119,7 @@ impl<S: StateSpace> crate::SamplerPart<S> for Recording {
 
 pub(super) type RecordingEit = Eit<spaces::RealVectorSpace, World, Recording, FixedSparseChecker>;
 
-/// The planner of these tests, with the whole reverse tree's frontier.
+/// The planner of these tests, with the whole reverse tree's frontier (the default).
 fn make(frontier: usize) -> (RecordingEit, problems::Problem) {
     make_with(frontier, false)
 }
