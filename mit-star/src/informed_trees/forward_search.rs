@@ -174,15 +174,7 @@ where
                     self.checker
                         .check_full(&self.space, &self.validity, a, b, &mut progress, stop);
                 if progress != before || record.is_none() {
-                    self.graph.store_edge(
-                        u,
-                        v,
-                        EdgeRecord {
-                            progress,
-                            status,
-                            certified: false,
-                        },
-                    );
+                    self.store_checked(u, v, progress, status);
                 }
                 status
             }

@@ -152,14 +152,7 @@ fn make_with(frontier: usize, validated: bool) -> (RecordingEit, problems::Probl
 fn the_frontier_is_the_reverse_trees_farthest_samples_farthest_first() {
     let (mut planner, problem) = make(7);
     let n = problem.space().dimension();
-    let limit = IterationLimit::new(u64::MAX);
-    let stop = SolveStop::new(&limit);
-    planner.setup(&stop).unwrap();
-    planner.add_batch(&stop);
-    for _ in 0..300 {
-        planner.iterate(&stop);
-    }
-    planner.send_frontier(false, &stop);
+    send_after_one_batch(&mut planner);
     // Every sample the reverse search reached, farthest first, ties by id.
     let tag = planner.reverse_tag;
     let graph = &planner.graph;
@@ -186,12 +179,7 @@ fn a_solution_or_a_count_of_zero_sends_no_frontier() {
     let limit = IterationLimit::new(u64::MAX);
     let stop = SolveStop::new(&limit);
     let (mut planner, _) = make(5);
-    planner.setup(&stop).unwrap();
-    planner.add_batch(&stop);
-    for _ in 0..300 {
-        planner.iterate(&stop);
-    }
-    planner.send_frontier(false, &stop);
+    send_after_one_batch(&mut planner);
     assert!(!planner.sampler.sent.last().unwrap().is_empty());
     // Solved: one empty frontier, so the sampler drops the last one; then nothing more.
     planner.send_frontier(true, &stop);
@@ -201,12 +189,7 @@ fn a_solution_or_a_count_of_zero_sends_no_frontier() {
     assert_eq!(planner.sampler.sent.len(), count);
     // A count of 0 never sends one.
     let (mut off, _) = make(0);
-    off.setup(&stop).unwrap();
-    off.add_batch(&stop);
-    for _ in 0..300 {
-        off.iterate(&stop);
-    }
-    off.send_frontier(false, &stop);
+    send_after_one_batch(&mut off);
     assert!(off.sampler.sent.is_empty());
 }
 

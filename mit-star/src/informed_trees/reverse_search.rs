@@ -330,20 +330,28 @@ where
                     stop,
                 );
                 if progress != before {
-                    self.graph.store_edge(
-                        u,
-                        v,
-                        EdgeRecord {
-                            progress,
-                            status,
-                            certified: false,
-                        },
-                    );
+                    self.store_checked(u, v, progress, status);
                 }
                 status
             }
         };
         (status, progress)
+    }
+
+    /// Stores what a sparse or full check of `u — v` learnt (the edge is not certified).
+    pub(crate) fn store_checked(
+        &mut self,
+        u: u32,
+        v: u32,
+        progress: EdgeProgress,
+        status: EdgeStatus,
+    ) {
+        let record = EdgeRecord {
+            progress,
+            status,
+            certified: false,
+        };
+        self.graph.store_edge(u, v, record);
     }
 
     /// `ĉ` and the metric distance of `u — v`, from `u`'s cached neighbours when `hint` points
