@@ -49,7 +49,10 @@ where
     /// ([`start_frontier`](crate::Parameters::start_frontier), MIT* and EIT*), the start is
     /// the end in a pocket: the states the start's side reached farthest are sent instead
     /// ([`reach_from_start`](Self::reach_from_start), capped at the vertices outside the
-    /// reverse tree).
+    /// reverse tree). Otherwise, with
+    /// [`validated_frontier`](crate::Parameters::validated_frontier), the farthest states of
+    /// the part of the reverse tree that full checks confirm are sent
+    /// ([`validated_farthest`](Self::validated_farthest)).
     ///
     /// Walks the reverse tree from the goals through its child lists, keeping the best
     /// `near_frontier` in a small sorted buffer. Allocates nothing once the buffers have grown.
@@ -142,7 +145,8 @@ where
     ) -> bool {
         let tag = self.reverse_tag;
         best.clear();
-        // The start's search is not running: its heap is free scratch here.
+        // The start's search is not running: its heap is free scratch here (a cheapest-first
+        // queue of vertex ids, as this walk needs).
         let mut heap = std::mem::take(&mut self.start_reach.heap);
         heap.clear();
         for &g in &self.goal_ids {

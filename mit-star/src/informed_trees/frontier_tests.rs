@@ -62,19 +62,18 @@ where
         out: &mut [f64],
     ) -> Result<(), SampleError> {
         self.count += 1;
-        let pocket = if self.count % 3 == 0 {
-            self.pocket.clone()
-        } else {
-            None
-        };
-        if let Some((centre, half)) = pocket {
-            loop {
-                for (x, c) in out.iter_mut().zip(&centre) {
-                    *x = c + half * self.unit();
+        if self.count % 3 == 0 {
+            if let Some((centre, half)) = self.pocket.take() {
+                loop {
+                    for (x, c) in out.iter_mut().zip(&centre) {
+                        *x = c + half * self.unit();
+                    }
+                    if validity.is_valid(out) {
+                        break;
+                    }
                 }
-                if validity.is_valid(out) {
-                    return Ok(());
-                }
+                self.pocket = Some((centre, half));
+                return Ok(());
             }
         }
         self.inner.sample(space, validity, bound, stop, out)
@@ -206,15 +205,17 @@ fn send_after_one_batch(planner: &mut RecordingEit) {
     planner.send_frontier(false, &stop);
 }
 
+/// The id of the vertex at `state` (a state the planner sent).
+fn vertex_at(planner: &RecordingEit, state: &[f64]) -> u32 {
+    let found = planner.graph.vertices().find(|(_, s)| *s == state);
+    found.expect("a sent state is a vertex").0.0
+}
+
 /// Whether every edge of the reverse tree from the vertex at `state` up to a goal is free,
 /// decided exactly (segment against boxes, no grid).
 fn confirmed(planner: &RecordingEit, problem: &problems::Problem, state: &[f64]) -> bool {
     let graph = &planner.graph;
-    let mut v = graph
-        .vertices()
-        .find(|(_, s)| *s == state)
-        .map(|(id, _)| id.0)
-        .expect("a sent state is a vertex");
+    let mut v = vertex_at(planner, state);
     while !graph.vertex(v).is_goal() {
         let parent = graph.vertex(v).reverse_parent;
         if !problem
@@ -246,11 +247,7 @@ fn a_validated_frontier_lies_beyond_no_invalid_edge() {
     let tag = validated.reverse_tag;
     let h: Vec<f64> = sent
         .chunks_exact(n)
-        .map(|s| {
-            let graph = &validated.graph;
-            let v = graph.vertices().find(|(_, x)| *x == s).unwrap().0.0;
-            graph.vertex(v).h(tag)
-        })
+        .map(|s| validated.graph.vertex(vertex_at(&validated, s)).h(tag))
         .collect();
     assert!(h.windows(2).all(|w| w[0] >= w[1]), "{h:?}");
     // Not vacuous: the whole tree's farthest states include one beyond an invalid edge

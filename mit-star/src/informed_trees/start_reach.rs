@@ -23,7 +23,8 @@ const REACH_POLL: usize = 256;
 pub(crate) struct StartReach {
     /// Best cost from the start found so far, per vertex id (∞: not reached).
     cost: Vec<f64>,
-    /// Vertices waiting, cheapest first (costs as order-preserving bits), ties by id.
+    /// Vertices waiting, cheapest first (costs as order-preserving bits), ties by id. Also the
+    /// scratch of the confirmed frontier's walk (`frontier.rs`), which never runs at once.
     pub(crate) heap: BinaryHeap<Reverse<(u64, u32)>>,
     /// The farthest vertices reached, farthest first, as `(cost from the start, id)`.
     pub(crate) farthest: Vec<(f64, u32)>,
