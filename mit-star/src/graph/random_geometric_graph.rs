@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 
 use petgraph::Undirected;
-use petgraph::graph::{EdgeIndex, NodeIndex};
+use petgraph::graph::NodeIndex;
 use petgraph::stable_graph::StableGraph;
 use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 
@@ -21,7 +21,8 @@ fn pair(u: u32, v: u32) -> u64 {
     edge_key(u.min(v), u.max(v))
 }
 
-/// What the planner knows about an edge it has checked (the weight of a stored edge).
+/// What the planner knows about an edge it has checked (the value of a stored edge in the
+/// graph's edge index).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct EdgeRecord {
     /// Grid points tested so far, or "invalid".
@@ -65,22 +66,23 @@ pub(crate) const DEAD: u32 = u32::MAX;
 /// [`NearestNeighbors`] — are computed when it is first expanded and cached with their `ĉ` and
 /// distance; in later batches the cached list is brought up to date by dropping pruned vertices
 /// and merging in the samples added since (exactly the list a fresh query would give). Only
-/// edges the planner has checked are stored, as petgraph edges carrying their checking progress
-/// and white/black status, with a hash index for constant-time lookup.
+/// edges the planner has checked are stored: as petgraph edges, so that removing a vertex finds
+/// its edges, and with their checking progress and white/black status in a hash index keyed
+/// by the vertex pair, so that a lookup touches one table entry.
 ///
 /// The planner owns one; [`Eit::graph`](crate::Eit::graph) exposes it read-only for inspection
 /// (tests, plots).
 #[derive(Debug, Clone)]
 pub struct RandomGeometricGraph {
-    pub(crate) graph: StableGraph<(), EdgeRecord, Undirected, u32>,
+    pub(crate) graph: StableGraph<(), (), Undirected, u32>,
     pub(crate) states: StateChunks,
     /// Search data per id (stale for ids not in use).
     vertices: Chunked<Vertex>,
     /// Birth stamp per id (`DEAD` once removed); a new vertex gets a fresh stamp.
     pub(crate) births: Chunked<u32>,
     next_birth: u32,
-    /// Stored edges by their (smaller, larger) vertex pair.
-    edges: HashMap<u64, u32, BuildEdgeHasher>,
+    /// What is known about each stored edge, by its (smaller, larger) vertex pair.
+    edges: HashMap<u64, EdgeRecord, BuildEdgeHasher>,
     pub(crate) nn: NearestNeighbors,
     /// The metric is the plain Euclidean one (the recent states' distances apply).
     pub(crate) euclidean: bool,
@@ -284,9 +286,7 @@ impl RandomGeometricGraph {
     /// What is known about the edge `u — v`: its record if it was checked before.
     #[inline]
     pub(crate) fn edge(&self, u: u32, v: u32) -> Option<EdgeRecord> {
-        self.edges
-            .get(&pair(u, v))
-            .map(|&e| self.graph[EdgeIndex::new(e as usize)])
+        self.edges.get(&pair(u, v)).copied()
     }
 
     /// Progress of the edge `u — v` (untested if never checked).
@@ -298,17 +298,10 @@ impl RandomGeometricGraph {
 
     /// Stores what a check learned about the edge `u — v`.
     pub(crate) fn store_edge(&mut self, u: u32, v: u32, record: EdgeRecord) {
-        let key = pair(u, v);
-        if let Some(&e) = self.edges.get(&key) {
-            self.graph[EdgeIndex::new(e as usize)] = record;
-            return;
+        if self.edges.insert(pair(u, v), record).is_none() {
+            self.graph
+                .add_edge(NodeIndex::new(u as usize), NodeIndex::new(v as usize), ());
         }
-        let e = self.graph.add_edge(
-            NodeIndex::new(u as usize),
-            NodeIndex::new(v as usize),
-            record,
-        );
-        self.edges.insert(key, e.index() as u32);
     }
 
     /// Removes vertex `v` and its stored edges.
