@@ -109,7 +109,8 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
             problem.goals().to_vec(),
         )
         .resolution(problem.resolution())
-        .certification(problem.certification());
+        .certification(problem.certification())
+        .repair_reverse_search(problem.repair_reverse_search());
         builder.problem_error = problem.check_step().err();
         builder
     }
@@ -167,9 +168,10 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
     }
 
     /// Whether an invalid edge of the reverse tree is repaired in place (LPA*-style, OMPL's AIT*
-    /// default) or restarts the reverse search (default; [`Parameters::repair_reverse_search`]).
+    /// default) or restarts the reverse search (default: the problem's choice, restarting
+    /// without one; [`Parameters::repair_reverse_search`]).
     pub fn repair_reverse_search(mut self, repair: bool) -> Self {
-        self.parameters.repair_reverse_search = repair;
+        self.parameters.repair_reverse_search = Some(repair);
         self
     }
 

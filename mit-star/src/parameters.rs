@@ -57,10 +57,13 @@ pub struct Parameters {
     pub suspend_reverse_when_forward_empty: Option<bool>,
     /// When the forward search finds an edge of the reverse tree invalid, repair the reverse
     /// search in place (`true`: LPA*-style, only the branch below the edge is searched again,
-    /// OMPL's AIT* default) or restart it from the goals (`false`, the default: EIT*'s rule, and
-    /// the faster one for our AIT*, `docs/guide/src/reference/faithfulness-map.md` §6). Without a reverse search (BIT*)
-    /// there is nothing to repair. Not in the paper.
-    pub repair_reverse_search: bool,
+    /// OMPL's AIT* default) or restart it from the goals (`false`: EIT*'s rule, the paper's,
+    /// and the faster one for our AIT* in the box worlds,
+    /// `docs/guide/src/reference/faithfulness-map.md` §6). `None` (the default): the problem
+    /// decides ([`PlanningProblem::repair_reverse_search`](problems::PlanningProblem::repair_reverse_search):
+    /// arms repair, the paper's problems restart); a planner built without a problem restarts.
+    /// Without a reverse search (BIT*) there is nothing to repair. Not in the paper.
+    pub repair_reverse_search: Option<bool>,
     /// Standard deviation `δ` of the adaptive sampler, as a fraction of the maximum extent.
     pub gaussian_std_fraction: f64,
     /// Segment points the adaptive sampler tests per repair.
@@ -234,7 +237,7 @@ impl Default for Parameters {
             resolution: 5e-6,
             seed: 0,
             suspend_reverse_when_forward_empty: None,
-            repair_reverse_search: false,
+            repair_reverse_search: None,
             gaussian_std_fraction: 0.1,
             bridge_checks: 8,
             sparse_initial_steps: 2000.0,
@@ -312,6 +315,9 @@ impl Parameters {
         parameters.certification = self.certification.or(Some(problem.certification()));
         problem.check_certification(parameters.certification.unwrap_or(1).max(1))?;
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
+        parameters.repair_reverse_search = self
+            .repair_reverse_search
+            .or(Some(problem.repair_reverse_search()));
         Ok(parameters)
     }
 
@@ -455,7 +461,8 @@ impl Parameters {
             ),
             (
                 "repair_reverse_search",
-                self.repair_reverse_search.to_string(),
+                self.repair_reverse_search
+                    .map_or_else(|| "problem's".to_owned(), |v| v.to_string()),
             ),
             (
                 "gaussian_std_fraction",

@@ -85,6 +85,14 @@ pub trait PlanningProblem {
     fn near_terminals(&self) -> f64 {
         0.0
     }
+
+    /// Whether planners with a lazy reverse search (MIT*, EIT*, AIT*) should repair it in
+    /// place when the forward search finds one of its edges invalid, instead of restarting it
+    /// from the goals (false: the paper's rule). A problem whose lazy paths fail often and far
+    /// from the goals (an arm in a cage) asks for repairs.
+    fn repair_reverse_search(&self) -> bool {
+        false
+    }
 }
 
 impl PlanningProblem for Problem {
@@ -158,5 +166,8 @@ impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
     }
     fn near_terminals(&self) -> f64 {
         (**self).near_terminals()
+    }
+    fn repair_reverse_search(&self) -> bool {
+        (**self).repair_reverse_search()
     }
 }

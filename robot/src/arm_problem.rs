@@ -191,6 +191,14 @@ impl ArmProblem {
     /// most of the MotionBenchMaker problems it missed (`docs/guide/src/reference/arm-planning.md`).
     pub const NEAR_TERMINALS: f64 = 0.15;
 
+    /// Whether MIT*, EIT* and AIT* repair their reverse search in place on arm problems
+    /// instead of restarting it from the goal (a planner's `repair_reverse_search` parameter
+    /// overrides it). An arm's lazy paths fail often, in cages far from the goal; repairing
+    /// only the branch below the invalid edge keeps the rest of the reverse tree. On the
+    /// Panda's cage MIT*'s median first solution comes about a quarter sooner and its 95th
+    /// percentile in half the time or less (`docs/guide/src/planning-for-an-arm.md`).
+    pub const REPAIR_REVERSE_SEARCH: bool = true;
+
     /// The Panda sphere model shipped with this crate (VAMP's spherised URDF, 59 spheres),
     /// its SRDF applied.
     ///
@@ -344,6 +352,10 @@ impl PlanningProblem for ArmProblem {
 
     fn near_terminals(&self) -> f64 {
         Self::NEAR_TERMINALS
+    }
+
+    fn repair_reverse_search(&self) -> bool {
+        Self::REPAIR_REVERSE_SEARCH
     }
 }
 

@@ -199,6 +199,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         certification: Some(1),
         near_terminals: Some(0.0),
         suspend_reverse_when_forward_empty: Some(true),
+        repair_reverse_search: Some(false),
         eis_batch_size: Some(100),
         range: Some(1.0),
         initial_inflation: Some(1.0),

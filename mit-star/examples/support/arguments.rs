@@ -39,7 +39,7 @@ pub(crate) fn take_switches(args: &mut Vec<String>, parameters: &mut Parameters)
             std::process::exit(2)
         };
         match name {
-            "repair_reverse_search" => parameters.repair_reverse_search = on,
+            "repair_reverse_search" => parameters.repair_reverse_search = Some(on),
             "cascading_rewirings" => parameters.cascading_rewirings = Some(on),
             "accelerated_checks" => parameters.accelerated_checks = on,
             "pruning" => parameters.pruning = on,

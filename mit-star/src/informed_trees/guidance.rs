@@ -67,8 +67,9 @@ impl Guidance for EffortInformed {
 /// the forward search finds an edge of the reverse tree invalid, the reverse search restarts
 /// from the goals (OMPL's AIT* with `repair_reverse_search = false`). OMPL's default repairs
 /// only the branch below that edge, LPA*-style; here that is the parameter
-/// [`repair_reverse_search`](crate::Parameters), off by default because it led our AIT* to
-/// check more edges (`docs/guide/src/reference/faithfulness-map.md` §6).
+/// [`repair_reverse_search`](crate::Parameters), off by default on the paper's problems because
+/// it led our AIT* to check more edges there (`docs/guide/src/reference/faithfulness-map.md`
+/// §6), on for arms, where the problem asks for it.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct CostInformed;
 

@@ -30,7 +30,7 @@ where
     /// `true` if an invalid reverse-tree edge is repaired in place rather than restarting the
     /// reverse search ([`Parameters::repair_reverse_search`](crate::Parameters)).
     pub(crate) fn repairs_reverse(&self) -> bool {
-        G::REVERSE != ReverseSearch::None && self.parameters.repair_reverse_search
+        G::REVERSE != ReverseSearch::None && self.parameters.repair_reverse_search == Some(true)
     }
 
     /// Makes `parent` the reverse parent of `v` (both current in this reverse search), moving
