@@ -1,6 +1,7 @@
 //! [`KdTree`]: a static, bucketed kd-tree over points of any dimension, with exact k-nearest and
 //! radius queries that never allocate once their buffers are warm.
 
+use crate::nearest::lanes::{GROUP, group_distances};
 use crate::nearest::neighbours::Neighbours;
 
 /// Points per leaf bucket. Small enough that leaves are scanned quickly, large enough that the
@@ -86,6 +87,10 @@ pub struct KdTree {
     /// Birth stamp of each point: a query skips points whose stamp is no longer current.
     pub(crate) births: Vec<u32>,
     pub(crate) coordinates: Vec<f64>,
+    /// The same coordinates by group of four positions, one row per coordinate (row
+    /// `g · dimension + c` holds coordinate `c` of positions `4g .. 4g + 4`; unused places
+    /// NaN), so that a leaf scan computes four distances at once.
+    pub(crate) lanes: Vec<[f64; GROUP]>,
     pub(crate) nodes: Vec<Node>,
     pub(crate) lower: Vec<f64>,
     pub(crate) upper: Vec<f64>,
@@ -144,6 +149,7 @@ impl KdTree {
             ids: Vec::new(),
             births: Vec::new(),
             coordinates: Vec::new(),
+            lanes: Vec::new(),
             nodes: Vec::new(),
             lower: vec![f64::INFINITY; dimension],
             upper: vec![f64::NEG_INFINITY; dimension],
@@ -244,12 +250,17 @@ impl KdTree {
     ) {
         let n = self.dimension;
         let mut worst = found.worst();
-        let rows = self.coordinates[range.start * n..range.end * n].chunks_exact(n);
-        for ((point, &id), &birth) in rows.zip(&self.ids[range.clone()]).zip(&self.births[range]) {
-            let d = squared_distance(query, point);
-            if d <= worst && alive.contains(id, birth) {
-                found.offer(d, id);
-                worst = found.worst();
+        for group in range.start / GROUP..range.end.div_ceil(GROUP) {
+            let distances = group_distances(&self.lanes[group * n..(group + 1) * n], query);
+            for (place, &d) in distances.iter().enumerate() {
+                let position = group * GROUP + place;
+                if d <= worst && range.contains(&position) {
+                    let (id, birth) = (self.ids[position], self.births[position]);
+                    if alive.contains(id, birth) {
+                        found.offer(d, id);
+                        worst = found.worst();
+                    }
+                }
             }
         }
     }

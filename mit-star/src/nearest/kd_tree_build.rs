@@ -4,6 +4,7 @@
 use spaces::Stop;
 
 use crate::nearest::kd_tree::{BUCKET, KdTree, LEAF, Node};
+use crate::nearest::lanes::{GROUP, push_point};
 
 /// Cells larger than this take their split value from an evenly spaced sample of this size.
 const SAMPLED_MEDIAN: usize = 1023;
@@ -31,6 +32,7 @@ pub(crate) struct Spare {
     ids: Vec<u32>,
     births: Vec<u32>,
     coordinates: Vec<f64>,
+    lanes: Vec<[f64; GROUP]>,
 }
 
 impl Spare {
@@ -108,6 +110,9 @@ impl KdTree {
         tree.ids = ids;
         tree.births = births;
         tree.coordinates = coordinates;
+        // The leaves' lanes are written as the split emits them, in storage order.
+        tree.lanes = std::mem::take(&mut spare.lanes);
+        fresh(&mut tree.lanes, count.div_ceil(GROUP) * dimension);
         tree.nodes.reserve(2 * count / BUCKET + 1);
         let mut stopped = false;
         for chunk in tree
@@ -140,6 +145,9 @@ impl KdTree {
             }
         }
         spare.keep(tree.ids, tree.births, tree.coordinates);
+        if tree.lanes.capacity() >= spare.lanes.capacity() {
+            spare.lanes = tree.lanes;
+        }
         None
     }
 
@@ -195,6 +203,11 @@ impl KdTree {
             right: 0,
         };
         if m <= BUCKET || spread <= 0.0 {
+            // Leaves come in storage order (left subtrees first), and their points are final.
+            debug_assert_eq!(self.lanes.len(), start.div_ceil(GROUP) * n);
+            for p in start..end {
+                push_point(&mut self.lanes, p, &self.coordinates[p * n..(p + 1) * n]);
+            }
             self.nodes.push(leaf);
             return Some(index);
         }

@@ -7,6 +7,8 @@
 //!   `kd_tree_build.rs` builds one (median splits, stop condition polled).
 //! - [`Neighbours`] (`neighbours.rs`): the reusable result buffer of a query.
 //! - `pending_points.rs`: the forest's buffer of points not yet in a tree.
+//! - `lanes.rs`: coordinates by groups of four points and the kernels that compute four
+//!   distances at once, for the trees' leaves and the pending points.
 //! - `chunked.rs`: [`Chunked`], a growable array in fixed-size chunks (never moves what it
 //!   holds), used for the birth stamps here and for the graph's per-vertex data.
 //!
@@ -17,6 +19,7 @@ mod chunked;
 mod forest;
 mod kd_tree;
 mod kd_tree_build;
+mod lanes;
 mod neighbours;
 mod pending_points;
 

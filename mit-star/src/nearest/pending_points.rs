@@ -1,9 +1,8 @@
 //! [`PendingPoints`]: the nearest-neighbour structure's buffer of points not yet in a tree, in
 //! blocks of bounded size so that it grows without copying more than one block's half.
 
-use wide::f64x4;
-
 use crate::nearest::kd_tree::Poll;
+use crate::nearest::lanes::{GROUP, distances_any, distances_fixed, push_point};
 
 /// Points per block: also how many points a scan of the buffer checks between two polls.
 const BLOCK: usize = 4096;
@@ -15,9 +14,6 @@ const BLOCK: usize = 4096;
 /// solves from 220 to 170 µs (pooled medians, 30 alternated runs of `arm_profile target 20
 /// rrt-connect 3`), with the same instructions.
 const FIRST: usize = 64;
-
-/// Points per group of a block's lanes: one `f64x4` register under AVX.
-const GROUP: usize = 4;
 
 /// One block: up to [`BLOCK`] points, its arrays doubling from room for [`FIRST`].
 #[derive(Debug, Clone)]
@@ -86,15 +82,7 @@ impl PendingPoints {
             self.used += 1;
         }
         let block = &mut self.blocks[self.used - 1];
-        let (group, place) = (block.ids.len() / GROUP, block.ids.len() % GROUP);
-        if place == 0 {
-            block
-                .lanes
-                .resize((group + 1) * self.dimension, [f64::NAN; GROUP]);
-        }
-        for (row, &x) in block.lanes[group * self.dimension..].iter_mut().zip(point) {
-            row[place] = x;
-        }
+        push_point(&mut block.lanes, block.ids.len(), point);
         block.ids.push(id);
         block.births.push(birth);
         block.coordinates.extend_from_slice(point);
@@ -166,14 +154,7 @@ impl PendingPoints {
         poll: &mut Poll<'_>,
         visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
     ) -> bool {
-        self.scan_groups(N, poll, visit, |rows| {
-            let mut sums = [f64x4::ZERO; 4];
-            for c in 0..N {
-                let t = f64x4::from(rows[c]) - f64x4::splat(query[c]);
-                sums[c % 4] += t * t;
-            }
-            total(sums)
-        })
+        self.scan_groups(N, poll, visit, |rows| distances_fixed(rows, query))
     }
 
     /// [`scan`](Self::scan) for any number of coordinates.
@@ -184,12 +165,7 @@ impl PendingPoints {
         visit: impl FnMut(&[u32], &[u32], [f64; GROUP]),
     ) -> bool {
         self.scan_groups(self.dimension.max(1), poll, visit, |rows| {
-            let mut sums = [f64x4::ZERO; 4];
-            for (c, (&x, &q)) in rows.iter().zip(query).enumerate() {
-                let t = f64x4::from(x) - f64x4::splat(q);
-                sums[c % 4] += t * t;
-            }
-            total(sums)
+            distances_any(rows, query)
         })
     }
 
@@ -218,13 +194,6 @@ impl PendingPoints {
         }
         true
     }
-}
-
-/// The four squared distances from the partial sums: added pairwise, as
-/// [`squared_distance`](crate::nearest::kd_tree::squared_distance) adds its own.
-#[inline]
-fn total(sums: [f64x4; 4]) -> [f64; GROUP] {
-    ((sums[0] + sums[1]) + (sums[2] + sums[3])).to_array()
 }
 
 #[cfg(test)]
