@@ -215,44 +215,23 @@ impl Termination for Wrapped<'_> {
     }
 }
 
-/// Polls at most this many in a row reuse the last clock reading ([`SolveStop`]).
-const MAX_SKIPPED_READS: u32 = 7;
-
-/// Polls that come faster than this each may skip reading the clock ([`SolveStop`]).
-const FAST_POLL: Duration = Duration::from_micros(1);
-
 /// The [`Stop`] view of a termination condition that building blocks poll during one
 /// iteration: time moves on, the iteration count and best cost are those of the iteration.
-///
-/// Reading the clock costs tens of nanoseconds, as much as a step of some inner loops, so
-/// while polls come faster than one per [`FAST_POLL`], up to [`MAX_SKIPPED_READS`] polls in a
-/// row reuse the last reading (doubling the run while polls stay fast, back to none at the
-/// first slow one). The condition is still evaluated at every poll: conditions on iterations
-/// or cost see every change at once, and a time limit is seen at most a few microseconds late.
 pub(crate) struct SolveStop<'a> {
     termination: &'a dyn Termination,
     started: Instant,
     iterations: Cell<u64>,
     best_cost: Cell<f64>,
-    /// The last clock reading.
-    now: Cell<Instant>,
-    /// Polls that reuse a reading before the next is taken, and how many are left.
-    skip: Cell<u32>,
-    left: Cell<u32>,
 }
 
 impl<'a> SolveStop<'a> {
     /// Starts the clock of a `solve` call.
     pub(crate) fn new(termination: &'a dyn Termination) -> Self {
-        let started = Instant::now();
         Self {
             termination,
-            started,
+            started: Instant::now(),
             iterations: Cell::new(0),
             best_cost: Cell::new(f64::INFINITY),
-            now: Cell::new(started),
-            skip: Cell::new(0),
-            left: Cell::new(0),
         }
     }
 
@@ -266,34 +245,12 @@ impl<'a> SolveStop<'a> {
     pub(crate) fn elapsed(&self) -> Duration {
         self.started.elapsed()
     }
-
-    /// The clock, read now or, while polls come fast, as last read.
-    #[inline]
-    fn clock(&self) -> Instant {
-        let left = self.left.get();
-        if left > 0 {
-            self.left.set(left - 1);
-            return self.now.get();
-        }
-        let now = Instant::now();
-        let skip = self.skip.get();
-        let gap = now.saturating_duration_since(self.now.get());
-        let skip = if gap < FAST_POLL * (skip + 1) {
-            (2 * skip + 1).min(MAX_SKIPPED_READS)
-        } else {
-            0
-        };
-        self.skip.set(skip);
-        self.left.set(skip);
-        self.now.set(now);
-        now
-    }
 }
 
 impl Stop for SolveStop<'_> {
     #[inline]
     fn should_stop(&self) -> bool {
-        let now = self.clock();
+        let now = Instant::now();
         self.termination.should_terminate(&Progress {
             now,
             elapsed: now.saturating_duration_since(self.started),
@@ -343,24 +300,5 @@ mod tests {
         assert!(!stop.should_stop());
         stop.update(1, 0.5);
         assert!(stop.should_stop());
-    }
-
-    #[test]
-    fn fast_polls_see_other_progress_at_once_and_time_within_a_few_polls() {
-        let limit = TimeLimit::new(Duration::from_millis(200)).or(IterationLimit::new(10));
-        let stop = SolveStop::new(&limit);
-        // Fast polls: the run of polls that reuse a clock reading grows to its cap.
-        for _ in 0..1000 {
-            assert!(!stop.should_stop());
-        }
-        // An iteration count that ends the solve is seen at the next poll, read or not.
-        stop.update(10, f64::INFINITY);
-        assert!(stop.should_stop());
-        stop.update(9, f64::INFINITY);
-        assert!(!stop.should_stop());
-        // Past the time limit, a reading is taken within MAX_SKIPPED_READS + 1 polls.
-        std::thread::sleep(Duration::from_millis(210));
-        let polls = (1..=MAX_SKIPPED_READS + 1).find(|_| stop.should_stop());
-        assert!(polls.is_some(), "the time limit was not seen");
     }
 }
