@@ -98,8 +98,9 @@ pub struct KdTree {
 
 /// Squared Euclidean distance of two coordinate slices, summed in four independent lanes
 /// (coordinates `i`, `i + 4`, … in lane `i mod 4`), which in high dimensions cuts the chain of
-/// dependent additions that bounds a leaf scan to a quarter. Every structure that ranks points
-/// by distance (trees, the pending buffer) uses this one function, so their rankings agree.
+/// dependent additions that bounds a scan to a quarter. Every structure that ranks points by
+/// distance (the trees' leaves, the pending buffer, radius queries) uses this function or the
+/// four-point kernels of `lanes.rs`, which return the same bits, so their rankings agree.
 #[inline]
 pub(crate) fn squared_distance(a: &[f64], b: &[f64]) -> f64 {
     let mut sums = [0.0_f64; 4];
