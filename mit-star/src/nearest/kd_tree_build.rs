@@ -49,6 +49,20 @@ impl Spare {
         (ids, births, coordinates)
     }
 
+    /// The spare lanes (`KdTree::lanes`), emptied, with room for `capacity` rows.
+    pub(crate) fn take_lanes(&mut self, capacity: usize) -> Vec<[f64; GROUP]> {
+        let mut lanes = std::mem::take(&mut self.lanes);
+        fresh(&mut lanes, capacity);
+        lanes
+    }
+
+    /// Keeps the lanes of an abandoned build (the larger array, as [`keep`](Self::keep) does).
+    pub(crate) fn keep_lanes(&mut self, lanes: Vec<[f64; GROUP]>) {
+        if lanes.capacity() >= self.lanes.capacity() {
+            self.lanes = lanes;
+        }
+    }
+
     /// Keeps the arrays of an abandoned build (the larger of each pair, should the spare still
     /// hold some: the smaller one is freed, so keep the spare empty while building).
     pub(crate) fn keep(&mut self, ids: Vec<u32>, births: Vec<u32>, coordinates: Vec<f64>) {
@@ -111,8 +125,7 @@ impl KdTree {
         tree.births = births;
         tree.coordinates = coordinates;
         // The leaves' lanes are written as the split emits them, in storage order.
-        tree.lanes = std::mem::take(&mut spare.lanes);
-        fresh(&mut tree.lanes, count.div_ceil(GROUP) * dimension);
+        tree.lanes = spare.take_lanes(count.div_ceil(GROUP) * dimension);
         tree.nodes.reserve(2 * count / BUCKET + 1);
         let mut stopped = false;
         for chunk in tree
@@ -145,9 +158,7 @@ impl KdTree {
             }
         }
         spare.keep(tree.ids, tree.births, tree.coordinates);
-        if tree.lanes.capacity() >= spare.lanes.capacity() {
-            spare.lanes = tree.lanes;
-        }
+        spare.keep_lanes(tree.lanes);
         None
     }
 

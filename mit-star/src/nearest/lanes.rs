@@ -11,7 +11,10 @@ pub(crate) const GROUP: usize = 4;
 /// places of a group hold NaN, whose distance is NaN and compares false with everything).
 /// Bit for bit what [`squared_distance`](crate::nearest::kd_tree::squared_distance) returns
 /// for each point: coordinate `c` adds to partial sum `c mod 4`, in order, and the sums are
-/// added pairwise. Common dimensions get a kernel whose loops unroll completely.
+/// added pairwise. Common dimensions get a kernel whose loops unroll completely. This chooses
+/// the kernel at every call, as a tree's leaf scan needs; the pending buffer's scan chooses
+/// once per scan and calls [`distances_fixed`] and [`distances_any`] itself (choosing per
+/// group there cost RRT-Connect 1.7 % more instructions on the Panda).
 #[inline]
 pub(crate) fn group_distances(rows: &[[f64; GROUP]], query: &[f64]) -> [f64; GROUP] {
     macro_rules! fixed {
