@@ -188,6 +188,14 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
+    /// With certification, certify an edge bringing a new vertex into the forward tree only
+    /// once a solution's path uses it (`true`, the default) or before it joins (`false`);
+    /// [`Parameters::lazy_certification`].
+    pub fn lazy_certification(mut self, lazy: bool) -> Self {
+        self.parameters.lazy_certification = lazy;
+        self
+    }
+
     /// The adaptive sampler's segment checks per repair (default 8).
     pub fn bridge_checks(mut self, checks: usize) -> Self {
         self.parameters.bridge_checks = checks;

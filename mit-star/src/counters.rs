@@ -27,7 +27,9 @@ pub struct Counters {
     pub points_tested: u64,
     /// Of those, the points decided without a test ([`validity::Preparation::AllValid`]).
     pub points_culled: u64,
-    /// Edges certified on the finer grid before joining the forward tree.
+    /// Edges certified on the finer grid (the informed-trees family: a solution's path's edges
+    /// and the edges that move a vertex of the forward tree; every edge that joins the tree
+    /// without [`lazy_certification`](crate::Parameters::lazy_certification)).
     pub certifications: u64,
     /// Certifications that found the edge invalid between its grid points.
     pub certification_failures: u64,

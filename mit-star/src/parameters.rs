@@ -84,11 +84,20 @@ pub struct Parameters {
     /// authors' code, spec §3.1 step 1), or bounds the next batch the search asks for
     /// (`false`, the default: the paper's Alg. 1; `docs/guide/src/reference/ablation-study.md` has the evidence).
     pub eis_immediate_batch: bool,
-    /// Certify every edge on a grid this many times finer than the check step before it joins
-    /// the forward tree (1: no certification; `None`: the problem's
-    /// [`certification`](problems::PlanningProblem::certification), 4 for arms). Not in the
+    /// Certify the forward tree's edges on a grid this many times finer than the check step,
+    /// when [`lazy_certification`](Self::lazy_certification) says (1: no certification;
+    /// `None`: the problem's [`certification`](problems::PlanningProblem::certification), 4
+    /// for arms). Not in the
     /// paper: it makes returned paths hold at the finer grid too, for a few edges' work.
     pub certification: Option<u32>,
+    /// With certification, an edge that brings a new vertex into the forward tree joins it
+    /// uncertified, and is certified when a solution's path first goes through it, before
+    /// that solution is recorded (`true`, the default): most tree edges never lie on a
+    /// solution, and a failure detaches the edge's subtree and restarts both searches. An
+    /// edge that moves a vertex already in the tree is certified before it does, so the best
+    /// solution's path is certified at every moment. `false` certifies every edge before it
+    /// joins the tree. The paths returned are certified either way. Not in the paper.
+    pub lazy_certification: bool,
     /// Fraction of the samples the EIT* family (MIT*, EIT*, AIT*, BIT*, ABIT*) draws near the
     /// start and the goals, at every scale, through the [`NearTerminals`](samplers::NearTerminals)
     /// wrapper (0: no wrapper; `None`: the problem's
@@ -248,6 +257,7 @@ impl Default for Parameters {
             eis_batch_size: None,
             eis_immediate_batch: false,
             certification: None,
+            lazy_certification: true,
             near_terminals: None,
             near_frontier: 4,
             frontier_rays: true,
@@ -493,6 +503,7 @@ impl Parameters {
                 self.certification
                     .map_or_else(|| "problem's".to_owned(), |k| k.to_string()),
             ),
+            ("lazy_certification", self.lazy_certification.to_string()),
             (
                 "near_terminals",
                 self.near_terminals

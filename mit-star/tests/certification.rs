@@ -1,5 +1,6 @@
 //! Certification (`Parameters::certification`): edges are certified on a finer grid before
-//! they join the forward tree, so a wall thinner than the check step but thicker than the
+//! they join the forward tree or, with `Parameters::lazy_certification` (the default), before a
+//! solution through them is recorded, so a wall thinner than the check step but thicker than the
 //! certification step never lies across a returned path.
 
 use mit_star::{EitStar, FirstSolution, MitStar, Planner, TerminationExt, TimeLimit};
@@ -33,6 +34,11 @@ fn crosses_the_wall(world: &World, path: &[Vec<f64>]) -> bool {
 }
 
 fn solve(certification: u32, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64) {
+    solve_with(certification, true, seed, mit)
+}
+
+/// [`solve`] with lazy certification on or off.
+fn solve_with(certification: u32, lazy: bool, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64) {
     let (space, world) = thin_wall();
     let resolution = STEP / space_extent();
     let (start, goal) = (vec![0.1, 0.5], vec![0.9, 0.5]);
@@ -42,6 +48,7 @@ fn solve(certification: u32, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64)
             MitStar::builder(space, world, start, vec![goal])
                 .resolution(resolution)
                 .certification(certification)
+                .lazy_certification(lazy)
                 .seed(seed)
                 .build()
                 .unwrap(),
@@ -51,6 +58,7 @@ fn solve(certification: u32, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64)
             EitStar::builder(space, world, start, vec![goal])
                 .resolution(resolution)
                 .certification(certification)
+                .lazy_certification(lazy)
                 .seed(seed)
                 .build()
                 .unwrap(),
@@ -90,22 +98,81 @@ fn without_certification_the_straight_line_crosses_the_thin_wall() {
 #[test]
 fn certified_planners_never_cross_the_thin_wall() {
     let (_, world) = thin_wall();
-    let mut solved_runs = Vec::new();
-    for mit in [true, false] {
-        for seed in 0..6 {
-            let (solved, path, failures) = solve(4, seed, mit);
-            // Whatever happens, no returned path crosses the wall.
-            assert!(!crosses_the_wall(&world, &path), "seed {seed}: {path:?}");
-            // The straight line was whitelisted on the planning grid and refused by the
-            // certification.
-            assert!(failures >= 1, "seed {seed}");
-            if solved {
-                solved_runs.push((mit, seed));
+    for lazy in [true, false] {
+        let mut solved_runs = Vec::new();
+        for mit in [true, false] {
+            for seed in 0..6 {
+                let (solved, path, failures) = solve_with(4, lazy, seed, mit);
+                // Whatever happens, no returned path crosses the wall.
+                assert!(!crosses_the_wall(&world, &path), "seed {seed}: {path:?}");
+                // The straight line was whitelisted on the planning grid and refused by the
+                // certification.
+                assert!(failures >= 1, "seed {seed}");
+                if solved {
+                    solved_runs.push((mit, seed));
+                }
             }
         }
+        // Most runs find the way around within the budget (see `thin_wall` for why not all
+        // must).
+        assert!(
+            solved_runs.len() >= 9,
+            "lazy {lazy}, solved: {solved_runs:?}"
+        );
     }
-    // Most runs find the way around within the budget (see `thin_wall` for why not all must).
-    assert!(solved_runs.len() >= 9, "solved: {solved_runs:?}");
+}
+
+/// MIT* with certification 4 on a world of boxes no edge grazes, run for `iterations`:
+/// its certifications and every solution's path, in the order found.
+fn anytime_in_boxes(lazy: bool, iterations: u64) -> (u64, Vec<Vec<Vec<f64>>>) {
+    let space = RealVectorSpace::cube(2, 0.0, 1.0).unwrap();
+    let world = World::new(vec![0.0; 2], vec![1.0; 2])
+        .with_obstacle(AxisBox::new(vec![0.5, 0.3], vec![0.1, 0.6]))
+        .and_then(|w| w.with_obstacle(AxisBox::new(vec![0.3, 0.8], vec![0.1, 0.2])))
+        .unwrap();
+    let mut planner = MitStar::builder(space, world, vec![0.1, 0.1], vec![vec![0.9, 0.1]])
+        .resolution(STEP / space_extent())
+        .certification(4)
+        .lazy_certification(lazy)
+        .batch_size(50)
+        .seed(3)
+        .build()
+        .unwrap();
+    let mut paths = Vec::new();
+    if iterations == 0 {
+        let outcome = planner
+            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+            .unwrap();
+        if let Some(solution) = outcome.solution() {
+            paths.push(solution.path.iter().map(<[f64]>::to_vec).collect());
+        }
+    }
+    for _ in 0..iterations / 100 {
+        let outcome = planner.solve(&mit_star::IterationLimit::new(100)).unwrap();
+        if let Some(solution) = outcome.solution() {
+            paths.push(solution.path.iter().map(<[f64]>::to_vec).collect());
+        }
+    }
+    (planner.counters().certifications, paths)
+}
+
+#[test]
+fn lazy_certification_certifies_only_what_solutions_use() {
+    let (eager, eager_paths) = anytime_in_boxes(false, 20_000);
+    let (lazy, lazy_paths) = anytime_in_boxes(true, 20_000);
+    // No certification fails here, so both runs make the same decisions and find the same
+    // solutions, every one returned (the planner refuses to return an uncertified edge).
+    assert!(!lazy_paths.is_empty());
+    assert_eq!(lazy_paths, eager_paths);
+    // The lazy run certified only the edges its solutions' paths went through.
+    assert!(lazy < eager, "lazy {lazy}, eager {eager}");
+    // To the first solution: the lazy run certified that path's edges and nothing else.
+    let (eager, eager_paths) = anytime_in_boxes(false, 0);
+    let (lazy, lazy_paths) = anytime_in_boxes(true, 0);
+    assert_eq!(lazy_paths, eager_paths);
+    let edges = lazy_paths[0].len() as u64 - 1;
+    assert!(lazy <= edges, "lazy {lazy}, path edges {edges}");
+    assert!(lazy < eager, "lazy {lazy}, eager {eager}");
 }
 
 /// RRT-Connect on the thin wall with `certification`: solved, the path, certification

@@ -18,7 +18,8 @@
 //! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping
 //! (`ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
 //! per-configuration table; `ARM_PROFILE_AUDIT=1` audits every path with parry between runs,
-//! as the benchmark harness does) (the
+//! as the benchmark harness does; `ARM_PROFILE_TIME=30` gives each solve 30 s instead of 1 s,
+//! so that under valgrind no solve is cut short by its deadline) (the
 //! arm-planning reference page, "Where an arm solve's time goes").
 
 use std::hint::black_box;
@@ -44,6 +45,10 @@ fn main() {
         .map_or(100, |a| a.parse().expect("a problem count"));
     let name = args.next().unwrap_or_else(|| "rrt-connect".into());
     let seeds: u64 = args.next().map_or(3, |a| a.parse().expect("a seed count"));
+    // Seconds per solve (1 by default; longer under valgrind, so that no solve is cut short and
+    // two builds' instruction counts compare the same decisions).
+    let budget: f64 = std::env::var("ARM_PROFILE_TIME")
+        .map_or(1.0, |t| t.parse().expect("ARM_PROFILE_TIME in seconds"));
     // Then RRT-Connect's switches as `name=true|false`.
     let mut base = Parameters::default();
     for setting in args {
@@ -93,7 +98,7 @@ fn main() {
                     build_planner(configuration, problem, &parameters).expect("builds");
                 setups.push(built.elapsed().as_secs_f64() * 1e6);
                 let run = Instant::now();
-                let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)));
+                let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(budget)));
                 let t = run.elapsed().as_secs_f64() * 1e6;
                 // As the benchmark harness does between runs: audit the path with parry.
                 if std::env::var_os("ARM_PROFILE_AUDIT").is_some()

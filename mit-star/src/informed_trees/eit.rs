@@ -127,6 +127,11 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) elapsed: Duration,
     pub(crate) observer: Option<Box<dyn Observer>>,
     pub(crate) scratch: Vec<u32>,
+    /// Goals reached whose solutions wait for their paths' certification
+    /// (`solution_certification.rs`).
+    pub(crate) solution_candidates: Vec<u32>,
+    /// Scratch: a solution's path, goal first.
+    pub(crate) path_scratch: Vec<u32>,
     pub(crate) extras: Vec<u32>,
     /// Scratch: the reverse-tree branch a repair invalidates.
     pub(crate) branch: Vec<u32>,
@@ -215,6 +220,8 @@ where
             elapsed: Duration::ZERO,
             observer: None,
             scratch: Vec::new(),
+            solution_candidates: Vec::new(),
+            path_scratch: Vec::new(),
             extras: Vec::new(),
             branch: Vec::new(),
             batch_ids: Vec::new(),
@@ -347,6 +354,9 @@ where
             // First: the restart discards the reverse expansions deferred before it.
             self.reverse_restart_pending = false;
             self.restart_reverse(stop);
+        } else if !self.solution_candidates.is_empty() {
+            // A solution whose certification the termination condition interrupted.
+            self.settle_solutions(stop);
         } else if !self.deferred.is_empty() {
             self.run_deferred(stop);
         } else if self.restart_pending {
@@ -497,6 +507,7 @@ where
         self.exhausted = false;
         self.restart_pending = false;
         self.deferred.clear();
+        self.solution_candidates.clear();
         self.reverse_restart_pending = false;
         self.inflation = self.parameters.initial_inflation.unwrap_or(1.0);
         self.truncation = 1.0;

@@ -216,7 +216,16 @@ where
             EdgeStatus::Valid => {
                 let new_g = g_u + edge.distance;
                 if new_g < g_v && (!self.best_cost.is_finite() || new_g + h_v < self.best_cost) {
-                    match self.certify(u, v, stop) {
+                    // A vertex new to the tree may join through an uncertified edge, certified
+                    // once a solution's path uses it (`settle_solutions`); one already in the
+                    // tree moves only through a certified edge, so that the best solution's
+                    // path stays certified.
+                    let status = if g_v.is_finite() || !self.certifies_lazily() {
+                        self.certify(u, v, stop)
+                    } else {
+                        EdgeStatus::Valid
+                    };
+                    match status {
                         EdgeStatus::Valid => self.rewire(v, u, edge.distance, stop),
                         EdgeStatus::Invalid => self.invalid_edge(u, v, (g_u, edge.cost, h_v), stop),
                         EdgeStatus::Unknown => self.queue_forward(edge),
@@ -254,11 +263,12 @@ where
         }
     }
 
-    /// Certifies the whitelisted edge `u — v` before it joins the forward tree, on the grid
+    /// Certifies the whitelisted edge `u — v` (before it joins the forward tree, or when a
+    /// solution's path first uses it: `solution_certification.rs`), on the grid
     /// [`Parameters::certification`](crate::Parameters) times finer than the check step
     /// (at once `Valid` without certification or if done before). A failure blacklists the
     /// edge; a stop mid-way leaves it uncertified (a later call starts over).
-    fn certify(&mut self, u: u32, v: u32, stop: &SolveStop<'_>) -> EdgeStatus {
+    pub(crate) fn certify(&mut self, u: u32, v: u32, stop: &SolveStop<'_>) -> EdgeStatus {
         let factor = self.parameters.certification.unwrap_or(1);
         // An edge shorter than the step has no grid points and perhaps no record yet.
         let record = self.graph.edge(u, v).unwrap_or(EdgeRecord {
@@ -319,16 +329,21 @@ where
                 child = self.graph.vertex(child).next_sibling;
             }
             if self.graph.vertex(d).is_goal() {
-                self.record_solution(d, stop);
+                self.solution_candidates.push(d);
             } else if self.graph.vertex(d).forward_expanded == batch {
                 self.refresh_outgoing(d);
             }
         }
         self.scratch = stack;
         if self.graph.vertex(v).is_goal() {
-            self.record_solution(v, stop);
+            self.solution_candidates.push(v);
+            self.settle_solutions(stop);
         } else {
-            self.expand_forward(v, u, stop);
+            self.settle_solutions(stop);
+            // A solution's certification may have cut `v` out of the tree again.
+            if self.graph.vertex(v).g.is_finite() {
+                self.expand_forward(v, u, stop);
+            }
         }
     }
 

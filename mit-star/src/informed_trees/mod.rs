@@ -46,6 +46,7 @@ mod offered_path;
 mod reverse_queue;
 mod reverse_repair;
 mod reverse_search;
+mod solution_certification;
 mod start_reach;
 #[cfg(test)]
 mod start_reach_tests;
