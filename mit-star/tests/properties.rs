@@ -24,10 +24,12 @@ fn brute_force(points: &[Vec<f64>], query: &[f64], k: usize) -> Vec<u32> {
     all.into_iter().take(k).map(|(_, i)| i).collect()
 }
 
+/// Up to 3 000 points: past the 1 024 a forest keeps in its linear buffer, so its trees are
+/// exercised too.
 fn cloud() -> impl Strategy<Value = (Vec<Vec<f64>>, Vec<f64>, usize)> {
     (2usize..=32).prop_flat_map(|n| {
         (
-            prop::collection::vec(prop::collection::vec(-1.0f64..1.0, n), 1..400),
+            prop::collection::vec(prop::collection::vec(-1.0f64..1.0, n), 1..3000),
             prop::collection::vec(-1.2f64..1.2, n),
             1usize..40,
         )
