@@ -53,16 +53,19 @@ impl<T> NearTerminals<T> {
                 continue;
             }
             let reach = distance.min(largest) / distance;
-            for (k, state) in self.ray.states.chunks_exact_mut(n).enumerate() {
-                let along = if k + 1 < m {
-                    grid.fraction(grid.point(k as u64))
-                } else {
-                    1.0
-                };
-                space.interpolate(centre, &self.ray.target, reach * along, state);
-            }
+            // A batch's states are placed just before it is tested: most lines end at their
+            // first batch.
             let mut free = true;
-            for batch in self.ray.states.chunks(width * n) {
+            for (b, batch) in self.ray.states.chunks_mut(width * n).enumerate() {
+                for (j, state) in batch.chunks_exact_mut(n).enumerate() {
+                    let k = b * width + j;
+                    let along = if k + 1 < m {
+                        grid.fraction(grid.point(k as u64))
+                    } else {
+                        1.0
+                    };
+                    space.interpolate(centre, &self.ray.target, reach * along, state);
+                }
                 self.draws.own_counters().validity_checks += (batch.len() / n) as u64;
                 if validity.any_invalid(batch, n).is_some() {
                     free = false;
