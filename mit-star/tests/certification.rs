@@ -211,3 +211,69 @@ fn rrt_connect_certifies_its_connection_and_cuts_the_edge_that_fails() {
         "no connection was refused: the test proves nothing"
     );
 }
+
+/// MIT* or EIT* on the thin wall, lazily certified, run in slices of `iterations` up to
+/// `total`: every solution returned on the way.
+fn anytime_on_the_thin_wall(
+    mit: bool,
+    seed: u64,
+    iterations: u64,
+    total: u64,
+) -> Vec<Vec<Vec<f64>>> {
+    let (space, world) = thin_wall();
+    let (start, goal) = (vec![0.1, 0.5], vec![0.9, 0.5]);
+    let resolution = STEP / space_extent();
+    let mut planner: Box<dyn Planner> = if mit {
+        Box::new(
+            MitStar::builder(space, world, start, vec![goal])
+                .resolution(resolution)
+                .certification(4)
+                .batch_size(20)
+                .seed(seed)
+                .build()
+                .unwrap(),
+        )
+    } else {
+        Box::new(
+            EitStar::builder(space, world, start, vec![goal])
+                .resolution(resolution)
+                .certification(4)
+                .batch_size(20)
+                .seed(seed)
+                .build()
+                .unwrap(),
+        )
+    };
+    let mut paths = Vec::new();
+    for _ in 0..total / iterations {
+        let outcome = planner
+            .solve(&mit_star::IterationLimit::new(iterations))
+            .unwrap();
+        if let Some(solution) = outcome.solution() {
+            paths.push(solution.path.iter().map(<[f64]>::to_vec).collect());
+        }
+    }
+    paths
+}
+
+#[test]
+fn every_solution_of_a_lazily_certified_anytime_run_is_whole_and_clear() {
+    // Rewirings after the first solution move vertices of the best path; with lazy
+    // certification they must not move it under an edge whose certification fails later.
+    let (_, world) = thin_wall();
+    let mut solutions = 0;
+    for mit in [true, false] {
+        for seed in 0..8 {
+            for path in anytime_on_the_thin_wall(mit, seed, 50, 5_000) {
+                assert_eq!(path[0], [0.1, 0.5], "seed {seed}: {path:?}");
+                assert_eq!(path[path.len() - 1], [0.9, 0.5], "seed {seed}: {path:?}");
+                assert!(!crosses_the_wall(&world, &path), "seed {seed}: {path:?}");
+                solutions += 1;
+            }
+        }
+    }
+    assert!(
+        solutions > 100,
+        "{solutions} solutions: the test proves little"
+    );
+}

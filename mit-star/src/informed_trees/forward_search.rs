@@ -218,8 +218,19 @@ where
                 if new_g < g_v && (!self.best_cost.is_finite() || new_g + h_v < self.best_cost) {
                     // A vertex new to the tree may join through an uncertified edge, certified
                     // once a solution's path uses it (`settle_solutions`); one already in the
-                    // tree moves only through a certified edge, so that the best solution's
-                    // path stays certified.
+                    // tree moves only under a certified path, `u`'s and the edge, so that the
+                    // best solution's path stays certified (`solution_certification.rs`).
+                    if g_v.is_finite() && self.certifies_lazily() {
+                        match self.certify_path(u, stop) {
+                            EdgeStatus::Valid => {}
+                            // `u` was cut out of the tree; the searches restart.
+                            EdgeStatus::Invalid => return,
+                            EdgeStatus::Unknown => {
+                                self.queue_forward(edge);
+                                return;
+                            }
+                        }
+                    }
                     let status = if g_v.is_finite() || !self.certifies_lazily() {
                         self.certify(u, v, stop)
                     } else {

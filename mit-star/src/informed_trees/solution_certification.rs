@@ -8,11 +8,12 @@
 //! ten times as many on `cage`. So an edge that brings a *new* vertex into the tree joins it
 //! uncertified, and a solution is recorded only once every edge of its path is certified.
 //!
-//! The best solution's path stays certified at every moment: its edges were certified when it
-//! was recorded, and a vertex already in the tree moves to a new parent only through a
-//! certified edge (`forward_step`). Uncertified edges are therefore always the edges by which
-//! their child first joined the tree, and the subtree below one never holds a vertex of the
-//! best path (that path would run through the edge). A failed certification blacklists the
+//! The best solution's path stays certified at every moment. Its edges were certified when it
+//! was recorded. A vertex joining the tree fresh has no subtree, so its uncertified edge is on
+//! no recorded path. A vertex already in the tree moves to a new parent only once the new
+//! parent's path and the edge are certified (`forward_step`), so a certified path stays
+//! certified under it. Hence every vertex of the best path has a certified path to the start,
+//! and the subtree below an uncertified edge never holds one. A failed certification blacklists the
 //! edge, cuts its child's subtree out of the tree and restarts both searches (edges into the
 //! cut vertices may have been dropped from the forward queue while those vertices were
 //! cheaper to reach): rare, as failures are — an edge valid at every check point and invalid
@@ -64,17 +65,18 @@ where
         self.solution_candidates = candidates;
     }
 
-    /// Certifies the uncertified edges of the forward-tree path from the start to `goal`,
-    /// from the start on. `Invalid` once one fails: that edge is blacklisted, its child's
-    /// subtree cut out of the forward tree and both searches restart at the next iteration.
-    /// `Unknown` if the termination condition fired first.
-    fn certify_path(&mut self, goal: u32, stop: &SolveStop<'_>) -> EdgeStatus {
+    /// Certifies the uncertified edges of the forward-tree path from the start to `end`, from
+    /// the start on (at once `Valid` without lazy certification). `Invalid` once one fails:
+    /// that edge is blacklisted, its child's subtree (with `end`) cut out of the forward tree
+    /// and both searches restart at the next iteration. `Unknown` if the termination condition
+    /// fired first.
+    pub(crate) fn certify_path(&mut self, end: u32, stop: &SolveStop<'_>) -> EdgeStatus {
         if !self.certifies_lazily() {
             return EdgeStatus::Valid;
         }
         let mut path = std::mem::take(&mut self.path_scratch);
         path.clear();
-        let mut v = goal;
+        let mut v = end;
         while v != NONE {
             path.push(v);
             v = self.graph.vertex(v).parent;
