@@ -39,16 +39,29 @@ fn solve(certification: u32, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64)
 
 /// [`solve`] with lazy certification on or off.
 fn solve_with(certification: u32, lazy: bool, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64) {
+    let batch = mit_star::Parameters::default().batch_size;
+    let mut planner = thin_wall_planner(mit, certification, lazy, seed, batch);
+    run(planner.as_mut(), &FirstSolution.or(TimeLimit::seconds(2.0)))
+}
+
+/// MIT* or EIT* from (0.1, 0.5) to (0.9, 0.5) across the thin wall.
+fn thin_wall_planner(
+    mit: bool,
+    certification: u32,
+    lazy: bool,
+    seed: u64,
+    batch: usize,
+) -> Box<dyn Planner> {
     let (space, world) = thin_wall();
     let resolution = STEP / space_extent();
     let (start, goal) = (vec![0.1, 0.5], vec![0.9, 0.5]);
-    let stop = FirstSolution.or(TimeLimit::seconds(2.0));
-    let mut planner: Box<dyn Planner> = if mit {
+    if mit {
         Box::new(
             MitStar::builder(space, world, start, vec![goal])
                 .resolution(resolution)
                 .certification(certification)
                 .lazy_certification(lazy)
+                .batch_size(batch)
                 .seed(seed)
                 .build()
                 .unwrap(),
@@ -59,12 +72,12 @@ fn solve_with(certification: u32, lazy: bool, seed: u64, mit: bool) -> (bool, Ve
                 .resolution(resolution)
                 .certification(certification)
                 .lazy_certification(lazy)
+                .batch_size(batch)
                 .seed(seed)
                 .build()
                 .unwrap(),
         )
-    };
-    run(planner.as_mut(), &stop)
+    }
 }
 
 /// Solves with `planner` until `stop`: solved, the path, certification failures.
@@ -220,30 +233,7 @@ fn anytime_on_the_thin_wall(
     iterations: u64,
     total: u64,
 ) -> Vec<Vec<Vec<f64>>> {
-    let (space, world) = thin_wall();
-    let (start, goal) = (vec![0.1, 0.5], vec![0.9, 0.5]);
-    let resolution = STEP / space_extent();
-    let mut planner: Box<dyn Planner> = if mit {
-        Box::new(
-            MitStar::builder(space, world, start, vec![goal])
-                .resolution(resolution)
-                .certification(4)
-                .batch_size(20)
-                .seed(seed)
-                .build()
-                .unwrap(),
-        )
-    } else {
-        Box::new(
-            EitStar::builder(space, world, start, vec![goal])
-                .resolution(resolution)
-                .certification(4)
-                .batch_size(20)
-                .seed(seed)
-                .build()
-                .unwrap(),
-        )
-    };
+    let mut planner = thin_wall_planner(mit, 4, true, seed, 20);
     let mut paths = Vec::new();
     for _ in 0..total / iterations {
         let outcome = planner

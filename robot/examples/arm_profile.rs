@@ -7,7 +7,7 @@
 //!
 //! Plans the named configuration (`rrt-connect` with range 1, `mit-star`, `eit-star`, …) to
 //! its first solution on the first `N` problems of each of the five scenes under `FOLDER`,
-//! `SEEDS` seeds each, one thread (then RRT-Connect's switches, e.g. `rrt_balance=false`), and
+//! `SEEDS` seeds each, one thread (then RRT-Connect's switches, e.g. `rrt_balance=false`, or `lazy_certification=false`), and
 //! prints per scene the median time to the first solution
 //! (construction excluded) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
@@ -49,7 +49,7 @@ fn main() {
     // two builds' instruction counts compare the same decisions).
     let budget: f64 = std::env::var("ARM_PROFILE_TIME")
         .map_or(1.0, |t| t.parse().expect("ARM_PROFILE_TIME in seconds"));
-    // Then RRT-Connect's switches as `name=true|false`.
+    // Then RRT-Connect's switches and `lazy_certification` as `name=true|false`.
     let mut base = Parameters::default();
     for setting in args {
         let (name, value) = setting.split_once('=').expect("name=value");
@@ -60,6 +60,7 @@ fn main() {
             "rrt_balance" => base.rrt_balance = value,
             "rrt_halton" => base.rrt_halton = value,
             "rrt_halton_shift" => base.rrt_halton_shift = value,
+            "lazy_certification" => base.lazy_certification = value,
             other => panic!("unknown switch {other}"),
         }
     }
