@@ -93,9 +93,9 @@ pub struct Parameters {
     /// With certification, an edge that brings a new vertex into the forward tree joins it
     /// uncertified, and is certified when a solution's path first goes through it, before
     /// that solution is recorded (`true`, the default): most tree edges never lie on a
-    /// solution, and a failure detaches the edge's subtree and restarts both searches. An
-    /// edge that moves a vertex already in the tree is certified before it does, so the best
-    /// solution's path is certified at every moment. `false` certifies every edge before it
+    /// solution, and a failure detaches the edge's subtree and restarts both searches. A
+    /// vertex already in the tree moves to a new parent only once that edge and the parent's
+    /// path are certified, so the best solution's path is certified at every moment. `false` certifies every edge before it
     /// joins the tree. The paths returned are certified either way. Not in the paper.
     pub lazy_certification: bool,
     /// Fraction of the samples the EIT* family (MIT*, EIT*, AIT*, BIT*, ABIT*) draws near the

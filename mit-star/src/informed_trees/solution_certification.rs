@@ -13,11 +13,12 @@
 //! no recorded path. A vertex already in the tree moves to a new parent only once the new
 //! parent's path and the edge are certified (`forward_step`), so a certified path stays
 //! certified under it. Hence every vertex of the best path has a certified path to the start,
-//! and the subtree below an uncertified edge never holds one. A failed certification blacklists the
-//! edge, cuts its child's subtree out of the tree and restarts both searches (edges into the
-//! cut vertices may have been dropped from the forward queue while those vertices were
-//! cheaper to reach): rare, as failures are — an edge valid at every check point and invalid
-//! between them.
+//! and the subtree below an uncertified edge never holds one. (Certifying only the edge is not
+//! enough: the new parent's own path may hold an uncertified edge, and its failure would cut
+//! the best goal out of the tree.) A failed certification blacklists the edge, cuts its
+//! child's subtree out of the tree and restarts both searches (edges into the cut vertices
+//! may have been dropped from the forward queue while those vertices were cheaper to reach):
+//! rare, as failures are — an edge valid at every check point and invalid between them.
 
 use heuristics::Heuristic;
 use samplers::Sampler;
