@@ -423,6 +423,14 @@ where
         if vertices.is_empty() {
             return Ok(self.offered.as_ref().map(|(solution, _)| solution.clone()));
         }
+        // The best goal must still hang from the start (a tree edge cut out under it would
+        // leave a path that begins elsewhere).
+        if vertices[0].0 != self.start_id {
+            return Err(PlannerError::Internal(format!(
+                "the best solution's path begins at vertex {}, not at the start",
+                vertices[0].0
+            )));
+        }
         let mut path = States::with_capacity(self.space.dimension(), vertices.len());
         for (i, v) in vertices.iter().enumerate() {
             let x = self.graph.state(v.0);
