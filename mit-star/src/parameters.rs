@@ -87,16 +87,17 @@ pub struct Parameters {
     /// Certify the forward tree's edges on a grid this many times finer than the check step,
     /// when [`lazy_certification`](Self::lazy_certification) says (1: no certification;
     /// `None`: the problem's [`certification`](problems::PlanningProblem::certification), 4
-    /// for arms). Not in the
-    /// paper: it makes returned paths hold at the finer grid too, for a few edges' work.
+    /// for arms). Not in the paper: it makes returned paths hold at the finer grid too, for a
+    /// few edges' work.
     pub certification: Option<u32>,
     /// With certification, an edge that brings a new vertex into the forward tree joins it
     /// uncertified, and is certified when a solution's path first goes through it, before
     /// that solution is recorded (`true`, the default): most tree edges never lie on a
     /// solution, and a failure detaches the edge's subtree and restarts both searches. A
     /// vertex already in the tree moves to a new parent only once that edge and the parent's
-    /// path are certified, so the best solution's path is certified at every moment. `false` certifies every edge before it
-    /// joins the tree. The paths returned are certified either way. Not in the paper.
+    /// path are certified, so the best solution's path is certified at every moment. `false`
+    /// certifies every edge before it joins the tree. The paths returned are certified either
+    /// way. Not in the paper.
     pub lazy_certification: bool,
     /// Fraction of the samples the EIT* family (MIT*, EIT*, AIT*, BIT*, ABIT*) draws near the
     /// start and the goals, at every scale, through the [`NearTerminals`](samplers::NearTerminals)

@@ -83,15 +83,30 @@ fn thin_wall_planner(
 /// Solves with `planner` until `stop`: solved, the path, certification failures.
 fn run(planner: &mut dyn Planner, stop: &dyn mit_star::Termination) -> (bool, Vec<Vec<f64>>, u64) {
     let outcome = planner.solve(stop).unwrap();
-    let path = outcome
-        .solution()
-        .map(|s| s.path.iter().map(<[f64]>::to_vec).collect())
-        .unwrap_or_default();
     (
         outcome.is_solved(),
-        path,
+        path_of(&outcome).unwrap_or_default(),
         planner.counters().certification_failures,
     )
+}
+
+/// The path of an outcome's solution, one state per row.
+fn path_of(outcome: &mit_star::Outcome) -> Option<Vec<Vec<f64>>> {
+    outcome
+        .solution()
+        .map(|s| s.path.iter().map(<[f64]>::to_vec).collect())
+}
+
+/// `calls` solve calls of `planner`, each until `stop`: the solution returned by each call
+/// that had one, in order.
+fn paths_of_calls(
+    planner: &mut dyn Planner,
+    stop: &dyn mit_star::Termination,
+    calls: u64,
+) -> Vec<Vec<Vec<f64>>> {
+    (0..calls)
+        .filter_map(|_| path_of(&planner.solve(stop).unwrap()))
+        .collect()
 }
 
 fn space_extent() -> f64 {
@@ -135,44 +150,42 @@ fn certified_planners_never_cross_the_thin_wall() {
     }
 }
 
-/// MIT* with certification 4 on a world of boxes no edge grazes, run for `iterations`:
-/// its certifications and every solution's path, in the order found.
-fn anytime_in_boxes(lazy: bool, iterations: u64) -> (u64, Vec<Vec<Vec<f64>>>) {
+/// MIT* with certification 4 on a world of boxes no edge grazes, from (0.1, 0.1) to
+/// (0.9, 0.1).
+fn boxes_planner(lazy: bool) -> impl Planner {
     let space = RealVectorSpace::cube(2, 0.0, 1.0).unwrap();
     let world = World::new(vec![0.0; 2], vec![1.0; 2])
         .with_obstacle(AxisBox::new(vec![0.5, 0.3], vec![0.1, 0.6]))
         .and_then(|w| w.with_obstacle(AxisBox::new(vec![0.3, 0.8], vec![0.1, 0.2])))
         .unwrap();
-    let mut planner = MitStar::builder(space, world, vec![0.1, 0.1], vec![vec![0.9, 0.1]])
+    MitStar::builder(space, world, vec![0.1, 0.1], vec![vec![0.9, 0.1]])
         .resolution(STEP / space_extent())
         .certification(4)
         .lazy_certification(lazy)
         .batch_size(50)
         .seed(3)
         .build()
-        .unwrap();
-    let mut paths = Vec::new();
-    if iterations == 0 {
-        let outcome = planner
-            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
-            .unwrap();
-        if let Some(solution) = outcome.solution() {
-            paths.push(solution.path.iter().map(<[f64]>::to_vec).collect());
-        }
-    }
-    for _ in 0..iterations / 100 {
-        let outcome = planner.solve(&mit_star::IterationLimit::new(100)).unwrap();
-        if let Some(solution) = outcome.solution() {
-            paths.push(solution.path.iter().map(<[f64]>::to_vec).collect());
-        }
-    }
+        .unwrap()
+}
+
+/// [`boxes_planner`] after `calls` solve calls until `stop`: its certifications and the
+/// solution of every call.
+fn certified_in_boxes(
+    lazy: bool,
+    stop: &dyn mit_star::Termination,
+    calls: u64,
+) -> (u64, Vec<Vec<Vec<f64>>>) {
+    let mut planner = boxes_planner(lazy);
+    let paths = paths_of_calls(&mut planner, stop, calls);
     (planner.counters().certifications, paths)
 }
 
 #[test]
 fn lazy_certification_certifies_only_what_solutions_use() {
-    let (eager, eager_paths) = anytime_in_boxes(false, 20_000);
-    let (lazy, lazy_paths) = anytime_in_boxes(true, 20_000);
+    // 200 calls of 100 iterations each.
+    let slice = mit_star::IterationLimit::new(100);
+    let (eager, eager_paths) = certified_in_boxes(false, &slice, 200);
+    let (lazy, lazy_paths) = certified_in_boxes(true, &slice, 200);
     // No certification fails here, so both runs make the same decisions and find the same
     // solutions, every one returned (the planner refuses to return an uncertified edge).
     assert!(!lazy_paths.is_empty());
@@ -180,8 +193,9 @@ fn lazy_certification_certifies_only_what_solutions_use() {
     // The lazy run certified only the edges its solutions' paths went through.
     assert!(lazy < eager, "lazy {lazy}, eager {eager}");
     // To the first solution: the lazy run certified that path's edges and nothing else.
-    let (eager, eager_paths) = anytime_in_boxes(false, 0);
-    let (lazy, lazy_paths) = anytime_in_boxes(true, 0);
+    let first = FirstSolution.or(TimeLimit::seconds(10.0));
+    let (eager, eager_paths) = certified_in_boxes(false, &first, 1);
+    let (lazy, lazy_paths) = certified_in_boxes(true, &first, 1);
     assert_eq!(lazy_paths, eager_paths);
     let edges = lazy_paths[0].len() as u64 - 1;
     assert!(lazy <= edges, "lazy {lazy}, path edges {edges}");
@@ -234,16 +248,8 @@ fn anytime_on_the_thin_wall(
     total: u64,
 ) -> Vec<Vec<Vec<f64>>> {
     let mut planner = thin_wall_planner(mit, 4, true, seed, 20);
-    let mut paths = Vec::new();
-    for _ in 0..total / iterations {
-        let outcome = planner
-            .solve(&mit_star::IterationLimit::new(iterations))
-            .unwrap();
-        if let Some(solution) = outcome.solution() {
-            paths.push(solution.path.iter().map(<[f64]>::to_vec).collect());
-        }
-    }
-    paths
+    let slice = mit_star::IterationLimit::new(iterations);
+    paths_of_calls(planner.as_mut(), &slice, total / iterations)
 }
 
 #[test]

@@ -7,8 +7,8 @@
 //!
 //! Plans the named configuration (`rrt-connect` with range 1, `mit-star`, `eit-star`, …) to
 //! its first solution on the first `N` problems of each of the five scenes under `FOLDER`,
-//! `SEEDS` seeds each, one thread (then RRT-Connect's switches, e.g. `rrt_balance=false`, or `lazy_certification=false`), and
-//! prints per scene the median time to the first solution
+//! `SEEDS` seeds each, one thread (then RRT-Connect's switches, e.g. `rrt_balance=false`, or
+//! `lazy_certification=false`), and prints per scene the median time to the first solution
 //! (construction excluded) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
 //! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one

@@ -220,9 +220,12 @@ where
                     // once a solution's path uses it (`settle_solutions`); one already in the
                     // tree moves only under a certified path, `u`'s and the edge, so that the
                     // best solution's path stays certified (`solution_certification.rs`).
-                    if g_v.is_finite() && self.certifies_lazily() {
+                    // Without lazy certification `certify_path` has nothing to do.
+                    let status = if !g_v.is_finite() && self.certifies_lazily() {
+                        EdgeStatus::Valid
+                    } else {
                         match self.certify_path(u, stop) {
-                            EdgeStatus::Valid => {}
+                            EdgeStatus::Valid => self.certify(u, v, stop),
                             // `u` was cut out of the tree; the searches restart.
                             EdgeStatus::Invalid => return,
                             EdgeStatus::Unknown => {
@@ -230,11 +233,6 @@ where
                                 return;
                             }
                         }
-                    }
-                    let status = if g_v.is_finite() || !self.certifies_lazily() {
-                        self.certify(u, v, stop)
-                    } else {
-                        EdgeStatus::Valid
                     };
                     match status {
                         EdgeStatus::Valid => self.rewire(v, u, edge.distance, stop),
@@ -346,15 +344,14 @@ where
             }
         }
         self.scratch = stack;
-        if self.graph.vertex(v).is_goal() {
+        let reached_goal = self.graph.vertex(v).is_goal();
+        if reached_goal {
             self.solution_candidates.push(v);
-            self.settle_solutions(stop);
-        } else {
-            self.settle_solutions(stop);
-            // A solution's certification may have cut `v` out of the tree again.
-            if self.graph.vertex(v).g.is_finite() {
-                self.expand_forward(v, u, stop);
-            }
+        }
+        self.settle_solutions(stop);
+        // A solution's certification may have cut `v` out of the tree again.
+        if !reached_goal && self.graph.vertex(v).g.is_finite() {
+            self.expand_forward(v, u, stop);
         }
     }
 

@@ -67,7 +67,8 @@ where
     }
 
     /// Certifies the uncertified edges of the forward-tree path from the start to `end`, from
-    /// the start on (at once `Valid` without lazy certification). `Invalid` once one fails:
+    /// the start on (at once `Valid` without lazy certification; [`certify`](Self::certify)
+    /// passes over an edge certified before). `Invalid` once one fails:
     /// that edge is blacklisted, its child's subtree (with `end`) cut out of the forward tree
     /// and both searches restart at the next iteration. `Unknown` if the termination condition
     /// fired first.
@@ -85,9 +86,6 @@ where
         let mut status = EdgeStatus::Valid;
         for pair in path.windows(2).rev() {
             let (child, parent) = (pair[0], pair[1]);
-            if self.graph.edge(parent, child).is_some_and(|r| r.certified) {
-                continue;
-            }
             status = self.certify(parent, child, stop);
             match status {
                 EdgeStatus::Valid => {}

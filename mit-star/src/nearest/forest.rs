@@ -13,8 +13,8 @@ use crate::nearest::pending_points::PendingPoints;
 /// nearest of a few thousand points in 7 dimensions, a scan four points at a time costs about
 /// what a kd-tree's query does, and the trees' builds come on top: MIT* on the Panda's `cage`
 /// (callgrind, `ARM_PROFILE_TIME=60 ARM_PROFILE_SCENES=cage arm_profile target 20 mit-star 1`)
-/// takes 3.2 % fewer instructions per median solve at 1 024 than at 256, and none more; the
-/// same at 2 048. RRT-Connect's trees stay below either.
+/// takes 3.2 % fewer instructions per solve at 1 024 than at 256 (median of the per-solve
+/// ratios), and no solve more; the same at 2 048. RRT-Connect's trees stay below either.
 const PENDING_LIMIT: usize = 1024;
 
 /// Points gathered between two polls of the stop condition when rebuilding.
