@@ -11,7 +11,7 @@ const SAMPLED_MEDIAN: usize = 1023;
 
 /// Work between two polls of the stop condition while building, in coordinates (points
 /// partitioned × dimension): tens of microseconds in any dimension.
-const POLL_WORK: usize = 32_768;
+pub(crate) const POLL_WORK: usize = 32_768;
 
 /// The stop condition of a build, the work done since it was last polled, and scratch space.
 struct Budget<'a> {
@@ -187,7 +187,8 @@ impl KdTree {
         budget: &mut Budget<'_>,
     ) -> Option<u32> {
         let m = end - start;
-        budget.work += m * self.dimension.max(1);
+        // Each point of the cell is read once and moved once below.
+        budget.work += 2 * m * self.dimension.max(1);
         if budget.work >= POLL_WORK {
             budget.work = 0;
             if budget.stop.should_stop() {
@@ -224,11 +225,25 @@ impl KdTree {
         }
         // Median along `dim`, then a three-way partition of the points around it (less,
         // equal, greater); the median position falls among the equal ones.
+        // Large cells poll while their points are read and moved (below): near the root that
+        // is millions of coordinates, milliseconds of work. An abandoned build discards the
+        // half-partitioned arrays.
+        let poll_every = (POLL_WORK / n.max(1)).max(1);
         let scratch = &mut budget.scratch;
         scratch.column.clear();
-        scratch
-            .column
-            .extend((start..end).map(|p| self.coordinates[p * n + dim]));
+        let mut from = start;
+        while from < end {
+            let to = (from + poll_every).min(end);
+            scratch
+                .column
+                .extend((from..to).map(|p| self.coordinates[p * n + dim]));
+            #[cfg(test)]
+            crate::nearest::kd_tree_build_tests::visited(to - from);
+            from = to;
+            if from < end && budget.stop.should_stop() {
+                return None;
+            }
+        }
         // The split value: the exact median of small cells, the median of an evenly spaced
         // sample of large ones (the tree stays balanced to within a few percent).
         scratch.select.clear();
@@ -247,7 +262,17 @@ impl KdTree {
             .1;
         let mut column = std::mem::take(&mut budget.scratch.column);
         let (mut less, mut i, mut greater) = (0, 0, m);
+        let mut next_poll = poll_every;
         while i < greater {
+            if (i + (m - greater)) >= next_poll {
+                next_poll += poll_every;
+                if budget.stop.should_stop() {
+                    budget.scratch.column = column;
+                    return None;
+                }
+            }
+            #[cfg(test)]
+            crate::nearest::kd_tree_build_tests::visited(1);
             if column[i] < median {
                 column.swap(less, i);
                 self.swap_points(start + less, start + i);

@@ -4,7 +4,8 @@
 //!   held as a few static kd-trees of doubling sizes plus a linear buffer of pending points
 //!   (Bentley and Saxe's logarithmic method); exact k-nearest and radius queries.
 //! - [`KdTree`] (`kd_tree.rs`): one static, bucketed kd-tree and its queries;
-//!   `kd_tree_build.rs` builds one (median splits, stop condition polled).
+//!   `kd_tree_build.rs` builds one (median splits, stop condition polled);
+//!   `kd_tree_build_tests.rs`, its tests.
 //! - [`Neighbours`] (`neighbours.rs`): the reusable result buffer of a query.
 //! - `pending_points.rs`: the forest's buffer of points not yet in a tree.
 //! - `lanes.rs`: coordinates by groups of four points and the kernels that compute four
@@ -19,6 +20,8 @@ mod chunked;
 mod forest;
 mod kd_tree;
 mod kd_tree_build;
+#[cfg(test)]
+mod kd_tree_build_tests;
 mod lanes;
 mod neighbours;
 mod pending_points;
