@@ -84,7 +84,8 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
 impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
     /// [`Problem`](problems::Problem), a robot-arm problem, or your own: its space, validity
-    /// checker, start, goals and resolution. [`build`](Builder::build) refuses a problem that
+    /// checker, start, goals and resolution, and the certification, reverse-search repair and
+    /// sparse spacing it asks for. [`build`](Builder::build) refuses a problem that
     /// refuses its collision-check step ([`PlanningProblem::check_step`]: a box world whose
     /// step is coarser than its thinnest obstacle, unless the problem allows it).
     ///
@@ -111,6 +112,9 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
         .resolution(problem.resolution())
         .certification(problem.certification())
         .repair_reverse_search(problem.repair_reverse_search());
+        let (initial, finest) = problem.sparse_spacing();
+        builder.parameters.sparse_initial_steps = Some(initial);
+        builder.parameters.sparse_min_steps = Some(finest);
         builder.problem_error = problem.check_step().err();
         builder
     }
@@ -202,12 +206,12 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
-    /// The length-related checker's `Δ₀` and floor (in steps `L`) and `Ω` (defaults 2000, 10,
-    /// 0.5).
+    /// The length-related checker's `Δ₀` and floor (in steps `L`) and `Ω` (defaults: the
+    /// problem's spacing — 2000 and 10 for the paper's problems, 4 and 2 for arms — and 0.5).
     pub fn sparse_spacing(mut self, initial_steps: f64, factor: f64, min_steps: f64) -> Self {
-        self.parameters.sparse_initial_steps = initial_steps;
+        self.parameters.sparse_initial_steps = Some(initial_steps);
         self.parameters.sparse_factor = factor;
-        self.parameters.sparse_min_steps = min_steps;
+        self.parameters.sparse_min_steps = Some(min_steps);
         self
     }
 

@@ -166,9 +166,13 @@ impl<S: StateSpace> CheckerPart<S> for LengthAdaptiveChecker {
         let step = step_from_resolution(space, p.resolution)?;
         Ok(LengthAdaptiveChecker::with_parameters(
             step,
-            p.sparse_initial_steps * step,
+            p.sparse_initial_steps
+                .unwrap_or(problems::PAPER_SPARSE_SPACING.0)
+                * step,
             p.sparse_factor,
-            p.sparse_min_steps * step,
+            p.sparse_min_steps
+                .unwrap_or(problems::PAPER_SPARSE_SPACING.1)
+                * step,
         )?
         .with_acceleration(p.accelerated_checks))
     }

@@ -68,12 +68,18 @@ pub struct Parameters {
     pub gaussian_std_fraction: f64,
     /// Segment points the adaptive sampler tests per repair.
     pub bridge_checks: usize,
-    /// Initial sparse spacing `Δ₀` of the length-related checker, in steps `L`.
-    pub sparse_initial_steps: f64,
+    /// Initial sparse spacing `Δ₀` of the length-related checker (MIT*'s sparse checks), in
+    /// steps `L` (`None`: the problem's
+    /// [`sparse_spacing`](problems::PlanningProblem::sparse_spacing) — 2000, the MIT* authors'
+    /// constant, for the paper's problems; 4 for arms; 2000 for a planner built without a
+    /// problem).
+    pub sparse_initial_steps: Option<f64>,
     /// Refinement factor `Ω ∈ (0, 1)` of the length-related checker.
     pub sparse_factor: f64,
-    /// Finest sparse spacing of the length-related checker, in steps `L`.
-    pub sparse_min_steps: f64,
+    /// Finest sparse spacing of the length-related checker, in steps `L` (`None`: the
+    /// problem's [`sparse_spacing`](problems::PlanningProblem::sparse_spacing) — 10 for the
+    /// paper's problems, 2 for arms; 10 without a problem).
+    pub sparse_min_steps: Option<f64>,
     /// How the estimated informed set computes `e_γ`.
     pub eis_expansion_form: EisExpansionForm,
     /// When the estimated informed set expands.
@@ -250,9 +256,9 @@ impl Default for Parameters {
             repair_reverse_search: None,
             gaussian_std_fraction: 0.1,
             bridge_checks: 8,
-            sparse_initial_steps: 2000.0,
+            sparse_initial_steps: None,
             sparse_factor: 0.5,
-            sparse_min_steps: 10.0,
+            sparse_min_steps: None,
             eis_expansion_form: EisExpansionForm::Paper,
             eis_expansion_rule: EisExpansionRule::PerBatch,
             eis_batch_size: None,
@@ -326,6 +332,9 @@ impl Parameters {
         parameters.certification = self.certification.or(Some(problem.certification()));
         problem.check_certification(parameters.certification.unwrap_or(1).max(1))?;
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
+        let (initial, finest) = problem.sparse_spacing();
+        parameters.sparse_initial_steps = self.sparse_initial_steps.or(Some(initial));
+        parameters.sparse_min_steps = self.sparse_min_steps.or(Some(finest));
         parameters.repair_reverse_search = self
             .repair_reverse_search
             .or(Some(problem.repair_reverse_search()));
@@ -431,8 +440,12 @@ impl Parameters {
             });
         }
         positive("gaussian_std_fraction", self.gaussian_std_fraction)?;
-        positive("sparse_initial_steps", self.sparse_initial_steps)?;
-        positive("sparse_min_steps", self.sparse_min_steps)?;
+        if let Some(steps) = self.sparse_initial_steps {
+            positive("sparse_initial_steps", steps)?;
+        }
+        if let Some(steps) = self.sparse_min_steps {
+            positive("sparse_min_steps", steps)?;
+        }
         if !(self.sparse_factor > 0.0 && self.sparse_factor < 1.0) {
             return Err(BuildError::Parameter {
                 name: "sparse_factor",
@@ -482,10 +495,15 @@ impl Parameters {
             ("bridge_checks", self.bridge_checks.to_string()),
             (
                 "sparse_initial_steps",
-                self.sparse_initial_steps.to_string(),
+                self.sparse_initial_steps
+                    .map_or_else(|| "problem's".to_owned(), |s| s.to_string()),
             ),
             ("sparse_factor", self.sparse_factor.to_string()),
-            ("sparse_min_steps", self.sparse_min_steps.to_string()),
+            (
+                "sparse_min_steps",
+                self.sparse_min_steps
+                    .map_or_else(|| "problem's".to_owned(), |s| s.to_string()),
+            ),
             ("eis_expansion_form", form.to_string()),
             ("eis_expansion_rule", rule.to_string()),
             (
@@ -636,7 +654,7 @@ mod tests {
             ),
             (
                 Parameters {
-                    sparse_min_steps: f64::INFINITY,
+                    sparse_min_steps: Some(f64::INFINITY),
                     ..Default::default()
                 },
                 "sparse_min_steps",

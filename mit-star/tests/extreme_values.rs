@@ -41,9 +41,9 @@ fn with_field(field: usize, float: f64, count: usize, seed: u64) -> Parameters {
         2 => p.resolution = float,
         3 => p.gaussian_std_fraction = float,
         4 => p.bridge_checks = count,
-        5 => p.sparse_initial_steps = float,
+        5 => p.sparse_initial_steps = Some(float),
         6 => p.sparse_factor = float,
-        _ => p.sparse_min_steps = float,
+        _ => p.sparse_min_steps = Some(float),
     }
     p
 }

@@ -93,7 +93,22 @@ pub trait PlanningProblem {
     fn repair_reverse_search(&self) -> bool {
         false
     }
+
+    /// The initial spacing `Δ₀` and the finest spacing of MIT*'s length-related sparse checks,
+    /// in check steps `L` ([`PAPER_SPARSE_SPACING`], the MIT* authors' constants, by default).
+    /// A sparse check tests an edge every `Δ` (at least its midpoint), so these decide how
+    /// much of an edge the lazy reverse search sees before the forward search checks it fully.
+    /// A problem whose edges are only tens of steps long (an arm: 16 steps per radian) and
+    /// mostly invalid asks for denser checks, which the authors' 2000 and 10 would reduce to
+    /// one or two points per edge.
+    fn sparse_spacing(&self) -> (f64, f64) {
+        PAPER_SPARSE_SPACING
+    }
 }
+
+/// The MIT* authors' sparse spacing, in check steps `L`: `Δ₀ = 2000 L`, never finer than
+/// `10 L` ([`PlanningProblem::sparse_spacing`]'s default).
+pub const PAPER_SPARSE_SPACING: (f64, f64) = (2000.0, 10.0);
 
 impl PlanningProblem for Problem {
     type Space = spaces::RealVectorSpace;
@@ -169,5 +184,8 @@ impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
     }
     fn repair_reverse_search(&self) -> bool {
         (**self).repair_reverse_search()
+    }
+    fn sparse_spacing(&self) -> (f64, f64) {
+        (**self).sparse_spacing()
     }
 }

@@ -49,10 +49,24 @@ fn main() {
     // two builds' instruction counts compare the same decisions).
     let budget: f64 = std::env::var("ARM_PROFILE_TIME")
         .map_or(1.0, |t| t.parse().expect("ARM_PROFILE_TIME in seconds"));
-    // Then RRT-Connect's switches and `lazy_certification` as `name=true|false`.
+    // Then RRT-Connect's switches and `lazy_certification` as `name=true|false`, and MIT*'s
+    // sparse spacing as `sparse_initial_steps=4`, `sparse_min_steps=2`.
     let mut base = Parameters::default();
     for setting in args {
         let (name, value) = setting.split_once('=').expect("name=value");
+        // MIT*'s sparse spacing takes numbers; every other switch is a boolean.
+        match name {
+            "sparse_initial_steps" | "sparse_min_steps" => {
+                let steps: f64 = value.parse().expect("a number of check steps");
+                if name == "sparse_initial_steps" {
+                    base.sparse_initial_steps = Some(steps);
+                } else {
+                    base.sparse_min_steps = Some(steps);
+                }
+                continue;
+            }
+            _ => {}
+        }
         let value: bool = value.parse().expect("true or false");
         match name {
             "rrt_valid_samples" => base.rrt_valid_samples = value,

@@ -199,6 +199,14 @@ impl ArmProblem {
     /// percentile in half the time or less (`docs/guide/src/planning-for-an-arm.md`).
     pub const REPAIR_REVERSE_SEARCH: bool = true;
 
+    /// MIT*'s sparse spacing on arm problems, in check steps (`Δ₀`, finest; a planner's
+    /// `sparse_initial_steps` and `sparse_min_steps` override it): an edge's every fourth grid
+    /// point at the first level, every second at the finest. An arm's edges are tens of steps
+    /// long, so the authors' constants (2000, 10) test one or two points of each, and the lazy
+    /// reverse search keeps offering paths the forward search finds invalid
+    /// (`docs/guide/src/performance-switches.md`).
+    pub const SPARSE_SPACING: (f64, f64) = (4.0, 2.0);
+
     /// The Panda sphere model shipped with this crate (VAMP's spherised URDF, 59 spheres),
     /// its SRDF applied.
     ///
@@ -356,6 +364,10 @@ impl PlanningProblem for ArmProblem {
 
     fn repair_reverse_search(&self) -> bool {
         Self::REPAIR_REVERSE_SEARCH
+    }
+
+    fn sparse_spacing(&self) -> (f64, f64) {
+        Self::SPARSE_SPACING
     }
 }
 

@@ -201,6 +201,8 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         suspend_reverse_when_forward_empty: Some(true),
         repair_reverse_search: Some(false),
         eis_batch_size: Some(100),
+        sparse_initial_steps: Some(2000.0),
+        sparse_min_steps: Some(10.0),
         range: Some(1.0),
         initial_inflation: Some(1.0),
         inflation_scaling: Some(0.0),
