@@ -54,27 +54,17 @@ fn main() {
     let mut base = Parameters::default();
     for setting in args {
         let (name, value) = setting.split_once('=').expect("name=value");
-        // MIT*'s sparse spacing takes numbers; every other switch is a boolean.
+        let flag = || value.parse::<bool>().expect("true or false");
+        let steps = || Some(value.parse::<f64>().expect("a number of check steps"));
         match name {
-            "sparse_initial_steps" | "sparse_min_steps" => {
-                let steps: f64 = value.parse().expect("a number of check steps");
-                if name == "sparse_initial_steps" {
-                    base.sparse_initial_steps = Some(steps);
-                } else {
-                    base.sparse_min_steps = Some(steps);
-                }
-                continue;
-            }
-            _ => {}
-        }
-        let value: bool = value.parse().expect("true or false");
-        match name {
-            "rrt_valid_samples" => base.rrt_valid_samples = value,
-            "rrt_dynamic_domain" => base.rrt_dynamic_domain = value,
-            "rrt_balance" => base.rrt_balance = value,
-            "rrt_halton" => base.rrt_halton = value,
-            "rrt_halton_shift" => base.rrt_halton_shift = value,
-            "lazy_certification" => base.lazy_certification = value,
+            "rrt_valid_samples" => base.rrt_valid_samples = flag(),
+            "rrt_dynamic_domain" => base.rrt_dynamic_domain = flag(),
+            "rrt_balance" => base.rrt_balance = flag(),
+            "rrt_halton" => base.rrt_halton = flag(),
+            "rrt_halton_shift" => base.rrt_halton_shift = flag(),
+            "lazy_certification" => base.lazy_certification = flag(),
+            "sparse_initial_steps" => base.sparse_initial_steps = steps(),
+            "sparse_min_steps" => base.sparse_min_steps = steps(),
             other => panic!("unknown switch {other}"),
         }
     }
