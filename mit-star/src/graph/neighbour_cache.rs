@@ -208,12 +208,18 @@ impl RandomGeometricGraph {
                 list.insert(at, n);
             }
         };
-        // In a Euclidean space squared distances to the recent states, column by column, rule
-        // out most samples before their log entries are even read; the margin covers the
-        // rounding of the space's own distance, which decides every sample that passes, so the
-        // list is exactly the one it would give.
-        if self.euclidean && self.recent.squared_distances(from, x, &mut squared) {
-            let squared_bound = bound * bound * (1.0 + 1e-9);
+        // In a Euclidean space, plain or weighted, squared distances to the recent states,
+        // column by column, rule out most samples before their log entries are even read; the
+        // margins cover the rounding of both measures, and the space's own distance decides
+        // every sample that passes, so the list is exactly the one it would give.
+        let measured = if self.indexed {
+            self.recent.squared_distances(from, x, &mut squared)
+        } else {
+            None
+        };
+        if let Some(slack) = measured {
+            let limit = bound * (1.0 + 1e-9) + slack;
+            let squared_bound = limit * limit;
             for (p, &d) in (from..).zip(&squared) {
                 if d <= squared_bound {
                     let (w, birth) = self.log[p];

@@ -84,7 +84,7 @@ pub struct RandomGeometricGraph {
     /// What is known about each stored edge, by its (smaller, larger) vertex pair.
     edges: HashMap<u64, EdgeRecord, BuildEdgeHasher>,
     pub(crate) nn: NearestNeighbors,
-    /// The metric is the plain Euclidean one (the recent states' distances apply).
+    /// The metric is the plain Euclidean one (no scales).
     pub(crate) euclidean: bool,
     /// Neighbours come from `nn`'s kd-trees: a Euclidean metric, plain or weighted
     /// ([`StateSpace::euclidean_scales`](spaces::StateSpace::euclidean_scales)).
@@ -95,7 +95,8 @@ pub struct RandomGeometricGraph {
     pub(crate) tag: u32,
     /// Every vertex ever committed, in order: a list covering `log[..p]` misses `log[p..]`.
     pub(crate) log: Chunked<(u32, u32)>,
-    /// The states of the last [`MERGE_LIMIT`] log entries, contiguous in log order.
+    /// The states of the last [`MERGE_LIMIT`] log entries, contiguous in log order (scaled
+    /// like the kd-trees' under a weighted metric).
     pub(crate) recent: RecentStates,
     /// Scratch for [`RecentStates::squared_distances`] (at most [`MERGE_LIMIT`] values).
     pub(crate) merge_distances: Vec<f64>,
@@ -127,6 +128,7 @@ impl RandomGeometricGraph {
         match space.euclidean_scales() {
             Some(scales) if scales.len() == n => Self {
                 nn: NearestNeighbors::with_scales(scales),
+                recent: RecentStates::with_scales(scales, MERGE_LIMIT),
                 indexed: true,
                 ..Self::new(n, false)
             },

@@ -4,6 +4,10 @@
 /// A ring of the states of the last `capacity` entries of the graph's commit log, stored by
 /// coordinate (all first coordinates, then all second ones, …).
 ///
+/// Under a weighted Euclidean metric ([`with_scales`](Self::with_scales)) the ring holds the
+/// scaled coordinates, as the kd-trees do, so the same column pass measures the weighted
+/// distance (a Fetch's prismatic torso among its revolute joints).
+///
 /// Every reverse-search restart brings the neighbour list of each vertex it expands up to date
 /// by measuring its distance to each sample committed since the list was made (at most
 /// `capacity` of them; beyond that a fresh tree query is made instead). That is most of the
@@ -22,6 +26,10 @@ pub(crate) struct RecentStates {
     held: usize,
     /// Column `d` is `columns[d * capacity..(d + 1) * capacity]`.
     columns: Vec<f64>,
+    /// Per-coordinate weights of the metric; empty for the plain Euclidean one.
+    scales: Vec<f64>,
+    /// The largest magnitude of a scaled coordinate pushed so far (0 without scales).
+    magnitude: f64,
 }
 
 impl RecentStates {
@@ -33,6 +41,17 @@ impl RecentStates {
             end: 0,
             held: 0,
             columns: Vec::new(),
+            scales: Vec::new(),
+            magnitude: 0.0,
+        }
+    }
+
+    /// An empty ring for the last `capacity` states under the metric
+    /// `√Σ (scales[d] · Δ_d)²`.
+    pub(crate) fn with_scales(scales: &[f64], capacity: usize) -> Self {
+        Self {
+            scales: scales.to_vec(),
+            ..Self::new(scales.len(), capacity)
         }
     }
 
@@ -48,6 +67,14 @@ impl RecentStates {
         }
         let slot = self.end % self.capacity;
         for (d, &x) in state.iter().enumerate() {
+            let x = match self.scales.get(d) {
+                Some(&s) => {
+                    let x = s * x;
+                    self.magnitude = self.magnitude.max(x.abs());
+                    x
+                }
+                None => x,
+            };
             self.columns[d * self.capacity + slot] = x;
         }
         self.end += 1;
@@ -64,26 +91,42 @@ impl RecentStates {
         }
     }
 
-    /// Writes to `out` the squared Euclidean distances from `query` to the states of log
-    /// positions `from..` (the newest entries), in log order; `false` (and `out` untouched) if
-    /// `from` is older than the ring holds. (The sums run over the coordinates in order, so
-    /// they may differ from those of the kd-tree's `squared_distance` in the last bits: callers
-    /// filter with a margin.)
-    pub(crate) fn squared_distances(&self, from: usize, query: &[f64], out: &mut Vec<f64>) -> bool {
+    /// Writes to `out` the squared (weighted) Euclidean distances from `query` to the states of
+    /// log positions `from..` (the newest entries), in log order, and returns how far the root
+    /// of any of them may lie from the exact distance beyond a relative rounding of
+    /// `dimension · 2⁻⁵²`: 0 for the plain metric (each difference is rounded once), a bound
+    /// from the largest scaled coordinate under weights (each coordinate is scaled, rounded,
+    /// then subtracted). `None` (and `out` untouched) if `from` is older than the ring holds.
+    /// Callers filter with both margins, so a state the space's own metric puts within a bound
+    /// always passes.
+    pub(crate) fn squared_distances(
+        &self,
+        from: usize,
+        query: &[f64],
+        out: &mut Vec<f64>,
+    ) -> Option<f64> {
         if from > self.end || from < self.end - self.held {
-            return false;
+            return None;
         }
         let count = self.end - from;
         out.clear();
         out.resize(count, 0.0);
+        let mut magnitude = self.magnitude;
         if count == 0 {
-            return true;
+            return Some(0.0);
         }
         // At most two runs of slots: up to the end of the ring, then from its start.
         let first = from % self.capacity;
         let head = count.min(self.capacity - first);
         let runs = [(first, 0, head), (0, head, count - head)];
         for (d, &q) in query.iter().enumerate() {
+            let q = match self.scales.get(d) {
+                Some(&s) => {
+                    magnitude = magnitude.max((s * q).abs());
+                    s * q
+                }
+                None => q,
+            };
             let column = &self.columns[d * self.capacity..(d + 1) * self.capacity];
             for &(slot, at, len) in &runs {
                 for (sum, &y) in out[at..at + len].iter_mut().zip(&column[slot..slot + len]) {
@@ -92,7 +135,10 @@ impl RecentStates {
                 }
             }
         }
-        true
+        // Each scaled difference is off by at most 2⁻⁵² · 2 · magnitude (two scalings and a
+        // subtraction, each rounded to half an ulp), so the root by at most √n times that;
+        // 1e-12 · magnitude covers it for any dimension up to millions.
+        Some(1e-12 * magnitude)
     }
 }
 
@@ -102,7 +148,7 @@ mod tests {
 
     fn distances(r: &RecentStates, from: usize, query: &[f64]) -> Option<Vec<f64>> {
         let mut out = vec![-1.0];
-        r.squared_distances(from, query, &mut out).then_some(out)
+        r.squared_distances(from, query, &mut out).map(|_| out)
     }
 
     #[test]
@@ -140,6 +186,35 @@ mod tests {
         assert_eq!(distances(&r, 5, &[0.0]), Some(vec![]));
         r.push(&[5.0]);
         assert_eq!(distances(&r, 5, &[1.0]), Some(vec![16.0]));
+    }
+
+    #[test]
+    fn weighted_rings_measure_the_weighted_metric_within_their_slack() {
+        let scales = [2.0, 0.3, 1.0];
+        let mut r = RecentStates::with_scales(&scales, 8);
+        let states = [[0.1, 3.0, -2.0], [1e6, -0.7, 0.25], [0.1 + 1e-9, 3.0, -2.0]];
+        for s in &states {
+            r.push(s);
+        }
+        let q = [0.1, 3.0 - 1e-12, -2.0];
+        let mut out = Vec::new();
+        let slack = r.squared_distances(0, &q, &mut out).unwrap();
+        assert!(slack >= 1e-12 * 2e6, "slack {slack} covers the largest scaled coordinate");
+        for (s, got) in states.iter().zip(&out) {
+            let exact: f64 = s
+                .iter()
+                .zip(&q)
+                .zip(&scales)
+                .map(|((a, b), w)| (w * (a - b)) * (w * (a - b)))
+                .sum::<f64>()
+                .sqrt();
+            let tolerance = exact * 3.0 * f64::EPSILON + slack;
+            assert!((got.sqrt() - exact).abs() <= tolerance, "{got} against {exact}");
+        }
+        // The plain ring adds no slack.
+        let mut plain = RecentStates::new(3, 8);
+        plain.push(&states[1]);
+        assert_eq!(plain.squared_distances(0, &q, &mut out), Some(0.0));
     }
 
     #[test]
