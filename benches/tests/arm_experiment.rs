@@ -90,4 +90,21 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
             assert!(kpi.contains(&row), "{row}\n{kpi}");
         }
     }
+    // The logs record the values that ran: the arm's sparse spacing, certification and
+    // near-terminal fraction, and MIT*'s suspension rule, not "the problem's".
+    let log = std::fs::read_to_string(
+        dir.join("logs")
+            .join(format!("{}.log", results.instances[0].id)),
+    )
+    .unwrap();
+    assert!(!log.contains("problem's"), "{log}");
+    let mit = &log[log.find("MIT*").unwrap()..];
+    for setting in [
+        "sparse_initial_steps = 4\n",
+        "sparse_min_steps = 2\n",
+        "near_terminals = 0.15\n",
+        "suspend_reverse_when_forward_empty = true\n",
+    ] {
+        assert!(mit.contains(setting), "{setting}{mit}");
+    }
 }

@@ -234,7 +234,7 @@ where
     P: PlanningProblem,
     V: StateValidity + Send + 'static,
 {
-    let parameters = parameters.for_problem(problem)?;
+    let parameters = configuration.effective_parameters(problem, parameters)?;
     let space = problem.space().clone();
     let (start, goals) = (problem.start().to_vec(), problem.goals().to_vec());
     let label = configuration.label();
@@ -247,9 +247,7 @@ where
         Configuration::MitStarSc => MitStarSc::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::MitStarSr => MitStarSr::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::BitStar => BitStar::<P::Space, V>::boxed(query, parameters, label)?,
-        Configuration::AbitStar => {
-            BitStar::<P::Space, V>::boxed(query, parameters.abit_star(), label)?
-        }
+        Configuration::AbitStar => BitStar::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::AitStar => AitStar::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::RrtConnect => {
             let (space, validity, start, goals) = query;

@@ -72,6 +72,7 @@ mod builder;
 mod components;
 mod configuration;
 mod counters;
+mod effective_parameters;
 mod error;
 mod graph;
 mod informed_trees;

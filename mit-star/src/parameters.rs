@@ -318,10 +318,12 @@ impl Parameters {
     pub const VALIDATED_FRONTIER_CHECKS: usize = 64;
 
     /// These parameters for `problem`: its resolution replaces `resolution`, and its
-    /// certification applies unless `certification` is set.
+    /// certification, near-terminal fraction, sparse spacing and reverse-search repair apply
+    /// wherever unset ([`Configuration::effective_parameters`](crate::Configuration::effective_parameters)
+    /// also decides the planner's own defaults).
     ///
     /// # Errors
-    /// [`BuildError::Problem`] if the problem refuses its check step.
+    /// [`BuildError::Problem`] if the problem refuses its check step or certification.
     pub(crate) fn for_problem<P: problems::PlanningProblem>(
         &self,
         problem: &P,

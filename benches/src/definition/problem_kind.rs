@@ -149,6 +149,22 @@ impl InstanceProblem {
         }
     }
 
+    /// The parameters `configuration` runs with on this problem
+    /// ([`Configuration::effective_parameters`]): every default decided.
+    ///
+    /// # Errors
+    /// As [`Configuration::effective_parameters`].
+    pub fn effective_parameters(
+        &self,
+        configuration: Configuration,
+        parameters: &Parameters,
+    ) -> Result<Parameters, BuildError> {
+        match self {
+            Self::Boxes(p) => configuration.effective_parameters(p, parameters),
+            Self::Arm(p) => configuration.effective_parameters(&**p, parameters),
+        }
+    }
+
     /// Builds `configuration` for this problem with `parameters`.
     ///
     /// # Errors

@@ -199,7 +199,10 @@ mod tests {
         let q = [0.1, 3.0 - 1e-12, -2.0];
         let mut out = Vec::new();
         let slack = r.squared_distances(0, &q, &mut out).unwrap();
-        assert!(slack >= 1e-12 * 2e6, "slack {slack} covers the largest scaled coordinate");
+        assert!(
+            slack >= 1e-12 * 2e6,
+            "slack {slack} covers the largest scaled coordinate"
+        );
         for (s, got) in states.iter().zip(&out) {
             let exact: f64 = s
                 .iter()
@@ -209,7 +212,10 @@ mod tests {
                 .sum::<f64>()
                 .sqrt();
             let tolerance = exact * 3.0 * f64::EPSILON + slack;
-            assert!((got.sqrt() - exact).abs() <= tolerance, "{got} against {exact}");
+            assert!(
+                (got.sqrt() - exact).abs() <= tolerance,
+                "{got} against {exact}"
+            );
         }
         // The plain ring adds no slack.
         let mut plain = RecentStates::new(3, 8);

@@ -165,6 +165,12 @@ where
     H: Heuristic<S>,
     G: Guidance,
 {
+    /// Whether this planner's reverse search yields while the forward queue is empty when
+    /// [`suspend_reverse_when_forward_empty`](Parameters::suspend_reverse_when_forward_empty)
+    /// is unset (its guidance's rule).
+    #[cfg(test)]
+    pub(crate) const SUSPENDS: bool = G::SUSPEND_WHEN_FORWARD_EMPTY;
+
     /// A planner from ready-made parts. Prefer [`Eit::builder`], which builds the parts from
     /// validated [`Parameters`]; here `parameters` only sets the search's own options (batch
     /// size, η, connection, pruning, suspension rule) and is reported by

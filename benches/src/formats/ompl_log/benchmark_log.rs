@@ -186,8 +186,14 @@ impl BenchmarkLog {
             .map(|spec| {
                 let runs: Vec<&RunRecord> =
                     runs.iter().filter(|r| r.planner == spec.name()).collect();
-                let mut common: Vec<(String, String)> = spec
-                    .parameters_for_seed(experiment.seed)
+                // The values that ran: defaults left to the problem or the planner decided
+                // for this instance (a problem that refuses them ran nothing either).
+                let parameters = spec.parameters_for_seed(experiment.seed);
+                let parameters = instance
+                    .problem
+                    .effective_parameters(spec.configuration(), &parameters)
+                    .unwrap_or(parameters);
+                let mut common: Vec<(String, String)> = parameters
                     .settings()
                     .into_iter()
                     .map(|(k, v)| match k.as_str() {
