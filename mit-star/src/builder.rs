@@ -115,6 +115,11 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
         let (initial, finest) = problem.sparse_spacing();
         builder.parameters.sparse_initial_steps = Some(initial);
         builder.parameters.sparse_min_steps = Some(finest);
+        builder.parameters.connection = Some(if problem.radius_connection() {
+            crate::Connection::RDisc
+        } else {
+            crate::Connection::KNearest
+        });
         builder.problem_error = problem.check_step().err();
         builder
     }
@@ -139,9 +144,9 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
-    /// k-nearest (default) or r-disc connection.
+    /// k-nearest or r-disc connection (default: the problem's with [`for_problem`](Eit::for_problem), r-disc on arms; else k-nearest).
     pub fn connection(mut self, connection: Connection) -> Self {
-        self.parameters.connection = connection;
+        self.parameters.connection = Some(connection);
         self
     }
 

@@ -13,8 +13,8 @@ impl Configuration {
     /// The parameters the planner of this configuration, built by
     /// [`build_planner`](crate::build_planner) for `problem` with `parameters`, runs with:
     /// those set in `parameters` as they are, and every default decided — the problem's
-    /// resolution, certification, near-terminal fraction, sparse spacing and reverse-search
-    /// repair wherever unset ([`PlanningProblem`]); the planner's suspension rule, inflation,
+    /// resolution, certification, near-terminal fraction, sparse spacing, reverse-search
+    /// repair and connection rule wherever unset ([`PlanningProblem`]); the planner's suspension rule, inflation,
     /// truncation and cascading rewirings (ABIT*'s for `abit-star`, none for the rest of the
     /// EIT* family); RRT-Connect's, AORRTC's and Informed RRT*'s range
     /// ([`default_range`]). Parameters a configuration does not use stay as they are.

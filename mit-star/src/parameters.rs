@@ -43,8 +43,11 @@ pub struct Parameters {
     pub batch_size: usize,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
-    /// k-nearest or r-disc connection.
-    pub connection: Connection,
+    /// k-nearest or r-disc connection (`None`: the problem's,
+    /// [`PlanningProblem::radius_connection`](problems::PlanningProblem::radius_connection) —
+    /// r-disc on arms; k-nearest, the paper's, for box worlds and a planner built without a
+    /// problem).
+    pub connection: Option<Connection>,
     /// Remove samples that cannot improve the solution at each new batch.
     pub pruning: bool,
     /// Collision-check resolution, a fraction of the space's maximum extent (`L = r · extent`).
@@ -248,7 +251,7 @@ impl Default for Parameters {
         Self {
             batch_size: 100,
             rewire_factor: 1.001,
-            connection: Connection::KNearest,
+            connection: None,
             pruning: true,
             resolution: 5e-6,
             seed: 0,
@@ -318,7 +321,8 @@ impl Parameters {
     pub const VALIDATED_FRONTIER_CHECKS: usize = 64;
 
     /// These parameters for `problem`: its resolution replaces `resolution`, and its
-    /// certification, near-terminal fraction, sparse spacing and reverse-search repair apply
+    /// certification, near-terminal fraction, sparse spacing, reverse-search repair and
+    /// connection rule apply
     /// wherever unset ([`Configuration::effective_parameters`](crate::Configuration::effective_parameters)
     /// also decides the planner's own defaults).
     ///
@@ -340,6 +344,11 @@ impl Parameters {
         parameters.repair_reverse_search = self
             .repair_reverse_search
             .or(Some(problem.repair_reverse_search()));
+        parameters.connection = self.connection.or(Some(if problem.radius_connection() {
+            Connection::RDisc
+        } else {
+            Connection::KNearest
+        }));
         Ok(parameters)
     }
 
@@ -462,8 +471,9 @@ impl Parameters {
     /// properties").
     pub fn settings(&self) -> Vec<(String, String)> {
         let connection = match self.connection {
-            Connection::KNearest => "k-nearest",
-            Connection::RDisc => "r-disc",
+            Some(Connection::KNearest) => "k-nearest",
+            Some(Connection::RDisc) => "r-disc",
+            None => "problem's",
         };
         let form = match self.eis_expansion_form {
             EisExpansionForm::Paper => "paper",
@@ -685,11 +695,22 @@ mod tests {
         // The radius shrinks as samples accumulate and grows with the measure.
         assert!(r_disc(1000, 4, 1.001, 1.0) < r_disc(100, 4, 1.001, 1.0));
         assert!(r_disc(100, 4, 1.001, 2.0) > r_disc(100, 4, 1.001, 1.0));
-        let settings = Parameters::default().settings();
-        assert!(
-            settings
-                .iter()
-                .any(|(k, v)| k == "connection" && v == "k-nearest")
+        // Unset, the rule is the problem's; set, it is named.
+        let shown = |connection| {
+            Parameters {
+                connection,
+                ..Parameters::default()
+            }
+            .settings()
+            .into_iter()
+            .find(|(k, _)| k == "connection")
+            .map(|(_, v)| v)
+        };
+        assert_eq!(shown(None).as_deref(), Some("problem's"));
+        assert_eq!(
+            shown(Some(Connection::KNearest)).as_deref(),
+            Some("k-nearest")
         );
+        assert_eq!(shown(Some(Connection::RDisc)).as_deref(), Some("r-disc"));
     }
 }

@@ -432,7 +432,10 @@ fn r_disc_connection_finds_valid_paths() {
     let solution = outcome.solution().expect("r-disc MIT* solves DW R^2");
     assert_solution_sound(&planner, solution, problem.start(), problem.goals());
     assert_trace_monotone(&planner);
-    assert_eq!(planner.parameters().connection, mit_star::Connection::RDisc);
+    assert_eq!(
+        planner.parameters().connection,
+        Some(mit_star::Connection::RDisc)
+    );
 }
 
 /// A two-joint arm whose first joint wraps: the short way from −3 to 3 rad crosses ±π. An

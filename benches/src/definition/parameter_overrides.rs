@@ -33,7 +33,7 @@ const RESERVED: [(&str, &str); 2] = [
 /// o.push_assignment("connection=r-disc")?;
 /// let p = o.apply(&mit_star::Parameters::default())?;
 /// assert_eq!(p.batch_size, 200);
-/// assert_eq!(p.connection, mit_star::Connection::RDisc);
+/// assert_eq!(p.connection, Some(mit_star::Connection::RDisc));
 /// assert!(o.clone().with_assignment("batch_sise=3").is_err());
 /// # Ok::<(), mit_star_benches::HarnessError>(())
 /// ```
@@ -208,6 +208,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         inflation_scaling: Some(0.0),
         truncation_scaling: Some(0.0),
         cascading_rewirings: Some(false),
+        connection: Some(mit_star::Connection::KNearest),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {
@@ -279,6 +280,33 @@ mod tests {
         assert!(!p.pruning);
         assert_eq!(p.eis_expansion_form, mit_star::EisExpansionForm::Authors);
         assert_eq!(o.entries().count(), 3);
+    }
+
+    /// Every parameter `mit-star planners` lists (the settings of the defaults) can be set,
+    /// optional ones included: the sample values above must name each of them.
+    #[test]
+    fn every_listed_parameter_can_be_overridden() {
+        for (key, _) in Parameters::default().settings() {
+            if RESERVED.iter().any(|(k, _)| *k == key) {
+                continue;
+            }
+            let defaults = defaults_table(&Parameters::default());
+            let sample = checked(&key, toml::Value::Boolean(true));
+            // A known key with a boolean of the wrong type is refused for its type, never as
+            // unknown.
+            if let Err(e) = sample {
+                assert!(!e.to_string().contains("unknown parameter"), "{key}: {e}");
+            }
+            if let Some(default) = defaults.get(&key) {
+                assert!(checked(&key, default.clone()).is_ok(), "{key}");
+            }
+        }
+        let p = ParameterOverrides::default()
+            .with_assignment("connection=k-nearest")
+            .unwrap()
+            .apply(&Parameters::default())
+            .unwrap();
+        assert_eq!(p.connection, Some(mit_star::Connection::KNearest));
     }
 
     #[test]

@@ -44,7 +44,7 @@ where
         let q = self.graph.density_count();
         let n = self.space.dimension();
         let eta = self.parameters.rewire_factor;
-        match self.parameters.connection {
+        match self.parameters.connection.unwrap_or(Connection::KNearest) {
             Connection::KNearest => {
                 let k = k_nearest(q, n, eta);
                 self.graph.set_neighbourhood(Neighbourhood::Nearest(k));
