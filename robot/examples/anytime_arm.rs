@@ -15,7 +15,7 @@
 //! (`simplify_solutions=true`, `simplify_smoothing=false`, `warm_start=true`,
 //! `aorrtc_simplify=false`, `polish_when_idle=false`, `rrt_balance=false`, `rrt_halton=true`,
 //! `range=2` (RRT-Connect's and AORRTC's; 1 by default, as VAMP's scripts), `batch_size=200`,
-//! `rewire_factor=1.5`, `near_terminals=0.3`, …; `aorrtc_moves=perturb|relax|relax-then-perturb`
+//! `rewire_factor=1.5`, `near_terminals=0.3`, `connection=k-nearest`, …; `aorrtc_moves=perturb|relax|relax-then-perturb`
 //! for AORRTC's smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only;
 //! `seed=K` adds `K` to every run's seed, for repeats with other random draws); `csv=FILE` also
 //! writes one line per run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
@@ -30,7 +30,10 @@ use spaces::StateSpace;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
+#[path = "support/parameter_switches.rs"]
+mod parameter_switches;
 use mbm_scenes::{SCENES, median, problems};
+use parameter_switches::set_parameter;
 
 /// The times at which the best cost is read, in seconds.
 const MOMENTS: [f64; 3] = [0.01, 0.1, 1.0];
@@ -77,24 +80,10 @@ fn main() {
             csv = Some(file);
             continue;
         }
-        let on = || value.parse::<bool>().expect("true or false");
-        let number = || value.parse::<f64>().expect("a number");
-        match key {
-            "simplify_solutions" => base.simplify_solutions = on(),
-            "simplify_smoothing" => base.simplify_smoothing = on(),
-            "warm_start" => base.warm_start = on(),
-            "aorrtc_simplify" => base.aorrtc_simplify = on(),
-            "polish_when_idle" => base.polish_when_idle = on(),
-            "rrt_dynamic_domain" => base.rrt_dynamic_domain = on(),
-            "rrt_balance" => base.rrt_balance = on(),
-            "rrt_halton" => base.rrt_halton = on(),
-            "rrt_halton_shift" => base.rrt_halton_shift = on(),
-            "batch_size" => base.batch_size = number() as usize,
-            "range" => base.range = Some(number()),
-            "rewire_factor" => base.rewire_factor = number(),
-            "near_terminals" => base.near_terminals = Some(number()),
-            other => panic!("unknown parameter {other}"),
-        }
+        assert!(
+            set_parameter(&mut base, key, value),
+            "unknown parameter {key}"
+        );
     }
     let configurations: Vec<Configuration> = names
         .split(',')

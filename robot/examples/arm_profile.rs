@@ -7,8 +7,9 @@
 //!
 //! Plans the named configuration (`rrt-connect` with range 1, `mit-star`, `eit-star`, …) to
 //! its first solution on the first `N` problems of each of the five scenes under `FOLDER`,
-//! `SEEDS` seeds each, one thread (then RRT-Connect's switches, e.g. `rrt_balance=false`, or
-//! `lazy_certification=false`), and prints per scene the median time to the first solution
+//! `SEEDS` seeds each, one thread (then parameters as `name=value`, as `anytime_arm` takes
+//! them: `rrt_balance=false`, `lazy_certification=false`, `connection=k-nearest`, …), and
+//! prints per scene the median time to the first solution
 //! (construction excluded) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
 //! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one
@@ -36,6 +37,9 @@ use validity::StateValidity;
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
 use mbm_scenes::{SCENES, median, problems};
+#[path = "support/parameter_switches.rs"]
+mod parameter_switches;
+use parameter_switches::set_parameter;
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -49,24 +53,15 @@ fn main() {
     // two builds' instruction counts compare the same decisions).
     let budget: f64 = std::env::var("ARM_PROFILE_TIME")
         .map_or(1.0, |t| t.parse().expect("ARM_PROFILE_TIME in seconds"));
-    // Then RRT-Connect's switches and `lazy_certification` as `name=true|false`, and MIT*'s
-    // sparse spacing as `sparse_initial_steps=4`, `sparse_min_steps=2`.
+    // Then parameters as `name=value` (`rrt_balance=false`, `lazy_certification=false`,
+    // `sparse_initial_steps=4`, `connection=k-nearest`, …).
     let mut base = Parameters::default();
     for setting in args {
         let (name, value) = setting.split_once('=').expect("name=value");
-        let flag = || value.parse::<bool>().expect("true or false");
-        let steps = || Some(value.parse::<f64>().expect("a number of check steps"));
-        match name {
-            "rrt_valid_samples" => base.rrt_valid_samples = flag(),
-            "rrt_dynamic_domain" => base.rrt_dynamic_domain = flag(),
-            "rrt_balance" => base.rrt_balance = flag(),
-            "rrt_halton" => base.rrt_halton = flag(),
-            "rrt_halton_shift" => base.rrt_halton_shift = flag(),
-            "lazy_certification" => base.lazy_certification = flag(),
-            "sparse_initial_steps" => base.sparse_initial_steps = steps(),
-            "sparse_min_steps" => base.sparse_min_steps = steps(),
-            other => panic!("unknown switch {other}"),
-        }
+        assert!(
+            set_parameter(&mut base, name, value),
+            "unknown parameter {name}"
+        );
     }
     let configuration = name
         .parse::<Configuration>()

@@ -1,0 +1,41 @@
+//! What the arm examples take after their positional arguments: `name=value` switches setting
+//! the planners' [`Parameters`], parsed one way for all of them.
+
+use mit_star::{Connection, Parameters};
+
+/// Sets the parameter `name` of `parameters` to `value` (`true`/`false` for a switch, a number,
+/// or `k-nearest`/`r-disc` for `connection`); `false` if no parameter has that name, so an
+/// example can read its own options first. Panics on a value that does not parse: these are
+/// measurement scripts, and a typo must not run the default silently.
+pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str) -> bool {
+    let on = || value.parse::<bool>().expect("true or false");
+    let number = || value.parse::<f64>().expect("a number");
+    match name {
+        "rrt_valid_samples" => parameters.rrt_valid_samples = on(),
+        "rrt_dynamic_domain" => parameters.rrt_dynamic_domain = on(),
+        "rrt_balance" => parameters.rrt_balance = on(),
+        "rrt_halton" => parameters.rrt_halton = on(),
+        "rrt_halton_shift" => parameters.rrt_halton_shift = on(),
+        "lazy_certification" => parameters.lazy_certification = on(),
+        "simplify_solutions" => parameters.simplify_solutions = on(),
+        "simplify_smoothing" => parameters.simplify_smoothing = on(),
+        "warm_start" => parameters.warm_start = on(),
+        "aorrtc_simplify" => parameters.aorrtc_simplify = on(),
+        "polish_when_idle" => parameters.polish_when_idle = on(),
+        "batch_size" => parameters.batch_size = number() as usize,
+        "range" => parameters.range = Some(number()),
+        "rewire_factor" => parameters.rewire_factor = number(),
+        "near_terminals" => parameters.near_terminals = Some(number()),
+        "sparse_initial_steps" => parameters.sparse_initial_steps = Some(number()),
+        "sparse_min_steps" => parameters.sparse_min_steps = Some(number()),
+        "connection" => {
+            parameters.connection = Some(match value {
+                "k-nearest" => Connection::KNearest,
+                "r-disc" => Connection::RDisc,
+                other => panic!("connection is k-nearest or r-disc, not {other}"),
+            });
+        }
+        _ => return false,
+    }
+    true
+}
