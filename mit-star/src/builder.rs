@@ -52,7 +52,7 @@ pub struct Builder<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     observer: Option<Box<dyn Observer>>,
     name: Option<String>,
     /// What was wrong with the problem given to [`Eit::for_problem`], reported by `build`.
-    problem_error: Option<problems::ProblemError>,
+    problem_error: Option<BuildError>,
     guidance: std::marker::PhantomData<fn() -> G>,
 }
 
@@ -84,9 +84,9 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
 impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
     /// [`Problem`](problems::Problem), a robot-arm problem, or your own: its space, validity
-    /// checker, start, goals and resolution, and the certification, reverse-search repair and
-    /// sparse spacing it asks for. [`build`](Builder::build) refuses a problem that
-    /// refuses its collision-check step ([`PlanningProblem::check_step`]: a box world whose
+    /// checker, start, goals and resolution, and the certification, reverse-search repair,
+    /// sparse spacing and connection rule it asks for. [`build`](Builder::build) refuses a
+    /// problem that refuses its collision-check step or its certification ([`PlanningProblem::check_step`]: a box world whose
     /// step is coarser than its thinnest obstacle, unless the problem allows it).
     ///
     /// ```
@@ -108,19 +108,18 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
             problem.validity().clone(),
             problem.start().to_vec(),
             problem.goals().to_vec(),
-        )
-        .resolution(problem.resolution())
-        .certification(problem.certification())
-        .repair_reverse_search(problem.repair_reverse_search());
-        let (initial, finest) = problem.sparse_spacing();
-        builder.parameters.sparse_initial_steps = Some(initial);
-        builder.parameters.sparse_min_steps = Some(finest);
-        builder.parameters.connection = Some(if problem.radius_connection() {
-            crate::Connection::RDisc
-        } else {
-            crate::Connection::KNearest
-        });
-        builder.problem_error = problem.check_step().err();
+        );
+        // The problem's defaults, decided as `build_planner` decides them, except the
+        // near-terminal fraction: the sampler here is the type's own, and no wrapper reads it.
+        match Parameters::default().for_problem(problem) {
+            Ok(parameters) => {
+                builder.parameters = Parameters {
+                    near_terminals: None,
+                    ..parameters
+                };
+            }
+            Err(error) => builder.problem_error = Some(error),
+        }
         builder
     }
 }
@@ -308,7 +307,7 @@ where
     /// [`BuildError::Validity`]).
     pub fn build(self) -> Result<Eit<S, V, Smp, E, H, G>, BuildError> {
         if let Some(error) = self.problem_error {
-            return Err(BuildError::Problem(error));
+            return Err(error);
         }
         self.parameters.validate()?;
         let largest_batch = self

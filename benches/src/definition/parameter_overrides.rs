@@ -286,11 +286,11 @@ mod tests {
     /// optional ones included: the sample values above must name each of them.
     #[test]
     fn every_listed_parameter_can_be_overridden() {
+        let defaults = defaults_table(&Parameters::default());
         for (key, _) in Parameters::default().settings() {
             if RESERVED.iter().any(|(k, _)| *k == key) {
                 continue;
             }
-            let defaults = defaults_table(&Parameters::default());
             let sample = checked(&key, toml::Value::Boolean(true));
             // A known key with a boolean of the wrong type is refused for its type, never as
             // unknown.
