@@ -124,7 +124,7 @@ fn main() {
                 for &budget in &budgets {
                     for seed in 0..seeds {
                         let parameters = Parameters {
-                            batch_size: batch,
+                            batch_size: Some(batch),
                             seed,
                             ..Parameters::default()
                         };

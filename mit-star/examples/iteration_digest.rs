@@ -34,7 +34,7 @@ fn main() {
                     let problem = problems::builtin(family, n, 0).unwrap();
                     let parameters = Parameters {
                         seed,
-                        batch_size: batch,
+                        batch_size: Some(batch),
                         ..Parameters::default()
                     };
                     let mut p = build_planner(configuration, &problem, &parameters).unwrap();

@@ -38,7 +38,7 @@ fn main() {
     };
     let problem = problems::builtin("goal-enclosure", dimension, 0).unwrap();
     let parameters = Parameters {
-        batch_size: batch,
+        batch_size: Some(batch),
         seed,
         ..Parameters::default()
     };

@@ -29,7 +29,7 @@ use crate::{
 ///     .rewire_factor(1.2)
 ///     .seed(42)
 ///     .build()?;
-/// assert_eq!(planner.parameters().batch_size, 50);
+/// assert_eq!(planner.parameters().batch_size, Some(50));
 ///
 /// // Bad parameters are refused with a typed error naming them.
 /// let space = RealVectorSpace::cube(2, -0.5, 0.5)?;
@@ -85,7 +85,7 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
     /// [`Problem`](problems::Problem), a robot-arm problem, or your own: its space, validity
     /// checker, start, goals and resolution, and the certification, reverse-search repair,
-    /// sparse spacing and connection rule it asks for. [`build`](Builder::build) refuses a
+    /// sparse spacing, connection rule and batch size it asks for. [`build`](Builder::build) refuses a
     /// problem that refuses its collision-check step or its certification ([`PlanningProblem::check_step`]: a box world whose
     /// step is coarser than its thinnest obstacle, unless the problem allows it).
     ///
@@ -131,9 +131,9 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
-    /// Samples per batch (default 100).
+    /// Samples per batch (default: the problem's, 50 on arms, else 100).
     pub fn batch_size(mut self, batch_size: usize) -> Self {
-        self.parameters.batch_size = batch_size;
+        self.parameters.batch_size = Some(batch_size);
         self
     }
 
@@ -312,7 +312,7 @@ where
         self.parameters.validate()?;
         let largest_batch = self
             .parameters
-            .batch_size
+            .samples_per_batch()
             .max(self.parameters.eis_batch_size.unwrap_or(0));
         check_batch_memory(largest_batch, self.space.dimension())?;
         validate_query(&self.space, &self.validity, &self.start, &self.goals)?;

@@ -30,17 +30,20 @@ pub use samplers::ExpansionRule as EisExpansionRule;
 /// ```
 /// use mit_star::Parameters;
 /// let p = Parameters::default();
-/// assert_eq!((p.batch_size, p.rewire_factor), (100, 1.001));
+/// assert_eq!((p.samples_per_batch(), p.rewire_factor), (100, 1.001));
 /// assert!(p.validate().is_ok());
-/// let bad = Parameters { batch_size: 0, ..Parameters::default() };
+/// let bad = Parameters { batch_size: Some(0), ..Parameters::default() };
 /// assert_eq!(bad.validate().unwrap_err().to_string(),
 ///            "parameter `batch_size` is 0; it must be at least 1");
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Parameters {
-    /// Samples per batch.
-    pub batch_size: usize,
+    /// Samples per batch (`None`: the problem's,
+    /// [`PlanningProblem::batch_size`](problems::PlanningProblem::batch_size) — 50 on arms;
+    /// the papers' 100 for box worlds and a planner built without a problem;
+    /// [`samples_per_batch`](Self::samples_per_batch) reads it).
+    pub batch_size: Option<usize>,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
     /// k-nearest or r-disc connection (`None`: the problem's,
@@ -249,7 +252,7 @@ pub struct Parameters {
 impl Default for Parameters {
     fn default() -> Self {
         Self {
-            batch_size: 100,
+            batch_size: None,
             rewire_factor: 1.001,
             connection: None,
             pruning: true,
@@ -321,8 +324,8 @@ impl Parameters {
     pub const VALIDATED_FRONTIER_CHECKS: usize = 64;
 
     /// These parameters for `problem`: its resolution replaces `resolution`, and its
-    /// certification, near-terminal fraction, sparse spacing, reverse-search repair and
-    /// connection rule apply
+    /// certification, near-terminal fraction, sparse spacing, reverse-search repair,
+    /// connection rule and batch size apply
     /// wherever unset ([`Configuration::effective_parameters`](crate::Configuration::effective_parameters)
     /// also decides the planner's own defaults).
     ///
@@ -338,6 +341,7 @@ impl Parameters {
         parameters.certification = self.certification.or(Some(problem.certification()));
         problem.check_certification(parameters.certification.unwrap_or(1).max(1))?;
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
+        parameters.batch_size = self.batch_size.or(Some(problem.batch_size()));
         let (initial, finest) = problem.sparse_spacing();
         parameters.sparse_initial_steps = self.sparse_initial_steps.or(Some(initial));
         parameters.sparse_min_steps = self.sparse_min_steps.or(Some(finest));
@@ -350,6 +354,12 @@ impl Parameters {
             Connection::KNearest
         }));
         Ok(parameters)
+    }
+
+    /// Samples per batch: [`batch_size`](Self::batch_size), or the papers' 100
+    /// ([`problems::PAPER_BATCH_SIZE`]) where unset and no problem decided it.
+    pub fn samples_per_batch(&self) -> usize {
+        self.batch_size.unwrap_or(problems::PAPER_BATCH_SIZE)
     }
 
     /// These parameters with ABIT*'s inflation, truncation and rewirings (Strub and Gammell,
@@ -371,7 +381,7 @@ impl Parameters {
     /// count of 0, a non-positive or non-finite `η`, resolution, `δ` or sparse spacing, or `Ω`
     /// outside `(0, 1)`.
     pub fn validate(&self) -> Result<(), BuildError> {
-        if self.batch_size == 0 {
+        if self.batch_size == Some(0) {
             return Err(BuildError::Parameter {
                 name: "batch_size",
                 value: 0.0,
@@ -484,7 +494,11 @@ impl Parameters {
             EisExpansionRule::PerInvalidEdge => "per-invalid-edge",
         };
         [
-            ("batch_size", self.batch_size.to_string()),
+            (
+                "batch_size",
+                self.batch_size
+                    .map_or_else(|| "problem's".to_owned(), |b| b.to_string()),
+            ),
             ("rewire_factor", self.rewire_factor.to_string()),
             ("connection", connection.to_string()),
             ("pruning", self.pruning.to_string()),

@@ -39,7 +39,7 @@ fn solve(certification: u32, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64)
 
 /// [`solve`] with lazy certification on or off.
 fn solve_with(certification: u32, lazy: bool, seed: u64, mit: bool) -> (bool, Vec<Vec<f64>>, u64) {
-    let batch = mit_star::Parameters::default().batch_size;
+    let batch = mit_star::Parameters::default().samples_per_batch();
     let mut planner = thin_wall_planner(mit, certification, lazy, seed, batch);
     run(planner.as_mut(), &FirstSolution.or(TimeLimit::seconds(2.0)))
 }

@@ -36,7 +36,7 @@ fn with_field(field: usize, float: f64, count: usize, seed: u64) -> Parameters {
         ..Parameters::default()
     };
     match field {
-        0 => p.batch_size = count,
+        0 => p.batch_size = Some(count),
         1 => p.rewire_factor = float,
         2 => p.resolution = float,
         3 => p.gaussian_std_fraction = float,

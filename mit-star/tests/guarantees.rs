@@ -111,7 +111,7 @@ fn every_configuration_returns_near_its_deadline_at_any_size() {
         for configuration in Configuration::ALL {
             for batch_size in [1, 10_000, 1_000_000] {
                 let parameters = Parameters {
-                    batch_size,
+                    batch_size: Some(batch_size),
                     ..Parameters::default()
                 };
                 let started = Instant::now();

@@ -72,6 +72,6 @@ pub use families::{
     FlankingGap, GoalEnclosed, GoalEnclosure, NarrowPassage, ObstacleFree, RandomRectangles,
     RepeatingRectangles, StartEnclosed, StartEnclosure, WallGap,
 };
-pub use planning_problem::{PAPER_SPARSE_SPACING, PlanningProblem};
+pub use planning_problem::{PAPER_BATCH_SIZE, PAPER_SPARSE_SPACING, PlanningProblem};
 pub use problem::Problem;
 pub use problem_file::humanise;

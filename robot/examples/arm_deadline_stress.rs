@@ -153,7 +153,7 @@ fn main() {
                                     ..Parameters::default()
                                 };
                                 if let Some(batch) = batch {
-                                    parameters.batch_size = batch;
+                                    parameters.batch_size = Some(batch);
                                 }
                                 let (solved, mut late, gaps) =
                                     measure(configuration, &problem, &parameters, budget, trace);

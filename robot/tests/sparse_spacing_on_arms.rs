@@ -28,15 +28,17 @@ fn points_per_sparse_check(planner: &mut dyn Planner) -> f64 {
     points as f64 / checks as f64
 }
 
-/// The tool's MIT* on the Panda's first `cage` problem with the given spacing (k-nearest, so
-/// that only the spacing differs from the build these figures were first taken with; the
-/// arm's default radius makes edges longer, and every spacing tests more of each).
+/// The tool's MIT* on the Panda's first `cage` problem with the given spacing (k-nearest and
+/// batches of 100, so that only the spacing differs from the build these figures were first
+/// taken with; the arm's default radius makes edges longer, and every spacing tests more of
+/// each).
 fn tool_mit_star(spacing: Option<(f64, f64)>) -> f64 {
     let parameters = Parameters {
         seed: 1,
         sparse_initial_steps: spacing.map(|s| s.0),
         sparse_min_steps: spacing.map(|s| s.1),
         connection: Some(Connection::KNearest),
+        batch_size: Some(problems::PAPER_BATCH_SIZE),
         ..Parameters::default()
     };
     let mut planner = build_planner(Configuration::MitStar, &cage(), &parameters).unwrap();
@@ -63,6 +65,7 @@ fn arm_problems_check_sparsely_every_few_steps_unless_told_otherwise() {
     let mut planner = MitStar::for_problem(&cage())
         .seed(1)
         .connection(Connection::KNearest)
+        .batch_size(problems::PAPER_BATCH_SIZE)
         .build()
         .unwrap();
     let built = points_per_sparse_check(&mut planner);

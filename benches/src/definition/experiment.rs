@@ -444,7 +444,7 @@ mod tests {
         assert!(
             e.planners
                 .iter()
-                .all(|p| p.parameters_for_seed(0).batch_size == 7)
+                .all(|p| p.parameters_for_seed(0).batch_size == Some(7))
         );
         let mut bad = e.clone();
         bad.confidence = 1.0;

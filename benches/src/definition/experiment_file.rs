@@ -424,9 +424,9 @@ mod tests {
         assert_eq!(e.runs, 3);
         assert_eq!((e.seed, e.confidence), (0, 0.99));
         assert_eq!(e.planners[0].name(), "EIT*");
-        assert_eq!(e.planners[0].parameters_for_seed(0).batch_size, 50);
+        assert_eq!(e.planners[0].parameters_for_seed(0).batch_size, Some(50));
         assert_eq!(e.planners[1].name(), "M");
-        assert_eq!(e.planners[1].parameters_for_seed(0).batch_size, 20);
+        assert_eq!(e.planners[1].parameters_for_seed(0).batch_size, Some(20));
         assert_eq!(e.problems[0].budgets, vec![1.0, 1.0]);
         assert_eq!(e.problems[1].instances, vec![0, 1]);
         assert_eq!(e.instances().unwrap().len(), 4);

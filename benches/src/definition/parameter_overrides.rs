@@ -32,7 +32,7 @@ const RESERVED: [(&str, &str); 2] = [
 /// o.push_assignment("batch_size=200")?;
 /// o.push_assignment("connection=r-disc")?;
 /// let p = o.apply(&mit_star::Parameters::default())?;
-/// assert_eq!(p.batch_size, 200);
+/// assert_eq!(p.batch_size, Some(200));
 /// assert_eq!(p.connection, Some(mit_star::Connection::RDisc));
 /// assert!(o.clone().with_assignment("batch_sise=3").is_err());
 /// # Ok::<(), mit_star_benches::HarnessError>(())
@@ -209,6 +209,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         truncation_scaling: Some(0.0),
         cascading_rewirings: Some(false),
         connection: Some(mit_star::Connection::KNearest),
+        batch_size: Some(problems::PAPER_BATCH_SIZE),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {
@@ -375,10 +376,10 @@ mod tests {
             .with_assignment("batch_size=20")
             .unwrap();
         let p = a.then(&b).apply(&Parameters::default()).unwrap();
-        assert_eq!(p.batch_size, 20);
+        assert_eq!(p.batch_size, Some(20));
         assert!(ParameterOverrides::default().is_empty());
         let t: toml::Table = "batch_size = 7".parse().unwrap();
         let c = ParameterOverrides::from_table(t).unwrap();
-        assert_eq!(c.apply(&Parameters::default()).unwrap().batch_size, 7);
+        assert_eq!(c.apply(&Parameters::default()).unwrap().batch_size, Some(7));
     }
 }

@@ -45,7 +45,7 @@ pub fn parse_configuration(name: &str) -> Result<Configuration, HarnessError> {
 /// let spec = PlannerSpec::new(mit_star::Configuration::MitStar, None, &overrides)?;
 /// assert_eq!(spec.name(), "MIT*");
 /// assert_eq!(spec.parameters_for_seed(7).seed, 7);
-/// assert_eq!(spec.parameters_for_seed(7).batch_size, 50);
+/// assert_eq!(spec.parameters_for_seed(7).batch_size, Some(50));
 /// # Ok::<(), mit_star_benches::HarnessError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]

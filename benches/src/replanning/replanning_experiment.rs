@@ -116,7 +116,7 @@ mod tests {
         let names = ["aorrtc".to_owned(), "mit-star".to_owned()];
         let planners = ReplanningExperiment::planners(&names, &overrides).unwrap();
         assert_eq!(planners[0].parameters_for_seed(0).range, Some(1.0));
-        assert_eq!(planners[1].parameters_for_seed(0).batch_size, 50);
+        assert_eq!(planners[1].parameters_for_seed(0).batch_size, Some(50));
         assert!(ReplanningExperiment::planners(&[], &overrides).is_err());
         assert!(ReplanningExperiment::planners(&["rrt".to_owned()], &overrides).is_err());
         let experiment = ReplanningExperiment {

@@ -153,8 +153,8 @@ where
             CostBound::Estimated(_) => self
                 .parameters
                 .eis_batch_size
-                .unwrap_or(self.parameters.batch_size),
-            _ => self.parameters.batch_size,
+                .unwrap_or_else(|| self.parameters.samples_per_batch()),
+            _ => self.parameters.samples_per_batch(),
         };
         let mut ids = std::mem::take(&mut self.batch_ids);
         ids.clear();

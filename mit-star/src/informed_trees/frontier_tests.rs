@@ -134,7 +134,7 @@ fn make_with(frontier: usize, validated: bool) -> (RecordingEit, problems::Probl
     let (space, start, goals) = (problem.space(), problem.start(), problem.goals());
     let sampler = Recording::new(InformedSampler::new(space, start, goals, 5).unwrap());
     let mut parameters = crate::Parameters {
-        batch_size: 300,
+        batch_size: Some(300),
         ..crate::Parameters::default()
     };
     parameters.near_frontier = frontier;

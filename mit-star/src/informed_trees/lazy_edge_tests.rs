@@ -18,7 +18,7 @@ macro_rules! lazy_edges_are_offered {
         fn $name() {
             let problem = $problem.build().unwrap().with_resolution(1e-3).unwrap();
             let parameters = Parameters {
-                batch_size: 200,
+                batch_size: Some(200),
                 ..Parameters::default()
             };
             let mut planner = <$planner>::for_problem(&problem)

@@ -24,7 +24,7 @@ fn searched(start_frontier: bool) -> RecordingEit {
     let sampler = Recording::new(InformedSampler::new(space, start, goals, 3).unwrap())
         .with_pocket(start, HOLLOW);
     let parameters = crate::Parameters {
-        batch_size: 60,
+        batch_size: Some(60),
         start_frontier,
         ..crate::Parameters::default()
     };

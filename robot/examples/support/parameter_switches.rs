@@ -22,7 +22,7 @@ pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str
         "warm_start" => parameters.warm_start = on(),
         "aorrtc_simplify" => parameters.aorrtc_simplify = on(),
         "polish_when_idle" => parameters.polish_when_idle = on(),
-        "batch_size" => parameters.batch_size = number() as usize,
+        "batch_size" => parameters.batch_size = Some(number() as usize),
         "range" => parameters.range = Some(number()),
         "rewire_factor" => parameters.rewire_factor = number(),
         "near_terminals" => parameters.near_terminals = Some(number()),
