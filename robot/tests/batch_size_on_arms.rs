@@ -1,48 +1,20 @@
 //! Arm problems ask the EIT* family for batches of [`ArmProblem::BATCH_SIZE`] samples; box
 //! worlds keep the papers' 100, and a set `batch_size` wins over either.
 
-use std::path::Path;
-use std::sync::{Arc, Mutex};
-
-use mit_star::{
-    BatchEvent, Configuration, FirstSolution, MitStar, Observer, Parameters, Planner,
-    TerminationExt, TimeLimit,
-};
+use mit_star::{Configuration, Parameters};
 use problems::{PAPER_BATCH_SIZE, PlanningProblem};
 use robot::ArmProblem;
 
-fn cage() -> ArmProblem {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm/cage_panda");
-    ArmProblem::panda_mbm(&folder, 1).unwrap()
-}
+#[path = "support/cage_batches.rs"]
+mod cage_batches;
+use cage_batches::cage;
 
-/// Records each batch's number of new samples.
-struct Batches(Arc<Mutex<Vec<usize>>>);
-
-impl Observer for Batches {
-    fn on_batch(&mut self, event: &BatchEvent) {
-        self.0.lock().unwrap().push(event.samples);
-    }
-}
-
-/// The sizes of the batches MIT* (the library's builder for the cage, seed 1) samples until
-/// its first solution, with `batch_size` set or not.
+/// The sizes of the batches MIT* samples on the cage until its first solution.
 fn batches(batch_size: Option<usize>) -> Vec<usize> {
-    let seen = Arc::new(Mutex::new(Vec::new()));
-    let mut builder = MitStar::for_problem(&cage())
-        .seed(1)
-        .observer(Box::new(Batches(Arc::clone(&seen))));
-    if let Some(batch_size) = batch_size {
-        builder = builder.batch_size(batch_size);
-    }
-    let mut planner = builder.build().unwrap();
-    let outcome = planner
-        .solve(&FirstSolution.or(TimeLimit::seconds(20.0)))
-        .unwrap();
-    assert!(outcome.solution().is_some(), "cage #1 unsolved in 20 s");
-    let seen = seen.lock().unwrap().clone();
-    assert!(!seen.is_empty(), "no batch before the first solution");
-    seen
+    cage_batches::batches(None, batch_size)
+        .iter()
+        .map(|b| b.samples)
+        .collect()
 }
 
 #[test]

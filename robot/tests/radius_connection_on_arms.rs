@@ -2,49 +2,20 @@
 //! ([`ArmProblem::RADIUS_CONNECTION`]); box worlds keep the paper's k-nearest, and a set
 //! `connection` wins over either.
 
-use std::path::Path;
-use std::sync::{Arc, Mutex};
-
-use mit_star::{
-    BatchEvent, Configuration, Connection, FirstSolution, MitStar, Observer, Parameters, Planner,
-    TerminationExt, TimeLimit,
-};
+use mit_star::{Configuration, Connection, Parameters};
 use problems::PlanningProblem;
-use robot::ArmProblem;
 use spaces::StateSpace;
 
-fn cage() -> ArmProblem {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm/cage_panda");
-    ArmProblem::panda_mbm(&folder, 1).unwrap()
-}
+#[path = "support/cage_batches.rs"]
+mod cage_batches;
+use cage_batches::cage;
 
-/// Records each batch's connection parameter.
-struct Batches(Arc<Mutex<Vec<f64>>>);
-
-impl Observer for Batches {
-    fn on_batch(&mut self, event: &BatchEvent) {
-        self.0.lock().unwrap().push(event.connection);
-    }
-}
-
-/// The connection parameters of the batches of MIT* (the library's builder for the cage)
-/// with `connection`, until its first solution.
+/// The connection parameters of MIT*'s batches on the cage until its first solution.
 fn batches(connection: Option<Connection>) -> Vec<f64> {
-    let seen = Arc::new(Mutex::new(Vec::new()));
-    let mut builder = MitStar::for_problem(&cage())
-        .seed(1)
-        .observer(Box::new(Batches(Arc::clone(&seen))));
-    if let Some(connection) = connection {
-        builder = builder.connection(connection);
-    }
-    let mut planner = builder.build().unwrap();
-    let outcome = planner
-        .solve(&FirstSolution.or(TimeLimit::seconds(20.0)))
-        .unwrap();
-    assert!(outcome.solution().is_some(), "cage #1 unsolved in 20 s");
-    let seen = seen.lock().unwrap().clone();
-    assert!(!seen.is_empty(), "no batch before the first solution");
-    seen
+    cage_batches::batches(connection, None)
+        .iter()
+        .map(|b| b.connection)
+        .collect()
 }
 
 #[test]

@@ -1,18 +1,14 @@
 //! Arm problems ask MIT* to repair its reverse search in place
 //! ([`ArmProblem::REPAIR_REVERSE_SEARCH`]); the paper's restart stays one parameter away.
 
-use std::path::Path;
-
 use mit_star::{
     Configuration, Connection, FirstSolution, MitStar, Parameters, Planner, TerminationExt,
     TimeLimit, build_planner,
 };
-use robot::ArmProblem;
 
-fn cage() -> ArmProblem {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm/cage_panda");
-    ArmProblem::panda_mbm(&folder, 1).unwrap()
-}
+#[path = "support/cage_batches.rs"]
+mod cage_batches;
+use cage_batches::cage;
 
 /// Solves to the first solution and returns the planner's (restarts, repairs).
 fn restarts_and_repairs(planner: &mut dyn Planner) -> (u64, u64) {

@@ -1,8 +1,6 @@
 //! Arm problems ask MIT* for denser sparse checks than the authors' constants
 //! ([`ArmProblem::SPARSE_SPACING`]); the authors' spacing stays two parameters away.
 
-use std::path::Path;
-
 use mit_star::{
     Configuration, Connection, Counters, FirstSolution, MitStar, Parameters, Planner,
     TerminationExt, TimeLimit, build_planner,
@@ -10,10 +8,9 @@ use mit_star::{
 use problems::{PAPER_SPARSE_SPACING, PlanningProblem};
 use robot::ArmProblem;
 
-fn cage() -> ArmProblem {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm/cage_panda");
-    ArmProblem::panda_mbm(&folder, 1).unwrap()
-}
+#[path = "support/cage_batches.rs"]
+mod cage_batches;
+use cage_batches::cage;
 
 /// Grid points a sparse check tested, on average, solving to the first solution.
 fn points_per_sparse_check(planner: &mut dyn Planner) -> f64 {
