@@ -8,15 +8,7 @@ use spaces::StateSpace;
 
 #[path = "support/cage_batches.rs"]
 mod cage_batches;
-use cage_batches::cage;
-
-/// The connection parameters of MIT*'s batches on the cage until its first solution.
-fn batches(connection: Option<Connection>) -> Vec<f64> {
-    cage_batches::batches(connection, None)
-        .iter()
-        .map(|b| b.connection)
-        .collect()
-}
+use cage_batches::{batches, cage};
 
 #[test]
 fn arm_problems_connect_by_radius_unless_told_otherwise() {
@@ -55,11 +47,14 @@ fn arm_problems_connect_by_radius_unless_told_otherwise() {
     // The planner built for the arm joins by radius: each batch's connection parameter is a
     // radius below the space's extent, not the k of k-nearest; told otherwise, it is that k.
     let extent = arm.space().maximum_extent();
-    for radius in batches(None) {
+    for radius in batches(None, None).iter().map(|b| b.connection) {
         assert!(radius > 0.0 && radius < extent, "radius {radius}");
         assert!(radius.fract() != 0.0, "radius {radius} looks like a k");
     }
-    for k in batches(Some(Connection::KNearest)) {
+    for k in batches(Some(Connection::KNearest), None)
+        .iter()
+        .map(|b| b.connection)
+    {
         assert!(k >= 1.0 && k.fract() == 0.0, "k {k}");
     }
 }
