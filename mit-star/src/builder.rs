@@ -138,6 +138,13 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
+    /// The fraction of the graph's vertices a batch holds at least (default: the problem's,
+    /// 0.05 on arms, else 0: fixed batches).
+    pub fn batch_growth(mut self, growth: f64) -> Self {
+        self.parameters.batch_growth = Some(growth);
+        self
+    }
+
     /// The RGG constant `η` (default 1.001).
     pub fn rewire_factor(mut self, eta: f64) -> Self {
         self.parameters.rewire_factor = eta;

@@ -14,7 +14,7 @@ impl Configuration {
     /// [`build_planner`](crate::build_planner) for `problem` with `parameters`, runs with:
     /// those set in `parameters` as they are, and every default decided — the problem's
     /// resolution, certification, near-terminal fraction, sparse spacing, reverse-search
-    /// repair, connection rule and batch size wherever unset ([`PlanningProblem`]); the planner's suspension rule, inflation,
+    /// repair, connection rule, batch size and batch growth wherever unset ([`PlanningProblem`]); the planner's suspension rule, inflation,
     /// truncation and cascading rewirings (ABIT*'s for `abit-star`, none for the rest of the
     /// EIT* family); RRT-Connect's, AORRTC's and Informed RRT*'s range
     /// ([`default_range`]). Parameters a configuration does not use stay as they are.

@@ -44,6 +44,13 @@ pub struct Parameters {
     /// the papers' 100 for box worlds and a planner built without a problem;
     /// [`samples_per_batch`](Self::samples_per_batch) reads it).
     pub batch_size: Option<usize>,
+    /// A batch holds at least this fraction of the vertices already in the graph, so batches
+    /// grow geometrically once the graph holds `batch_size / batch_growth` vertices and a
+    /// search restarted every batch costs a bounded number of passes over the graph (`None`:
+    /// the problem's, [`PlanningProblem::batch_growth`](problems::PlanningProblem::batch_growth)
+    /// — 0, fixed batches as in the papers, for box worlds and a planner built without a
+    /// problem). Not in the paper.
+    pub batch_growth: Option<f64>,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
     /// k-nearest or r-disc connection (`None`: the problem's,
@@ -253,6 +260,7 @@ impl Default for Parameters {
     fn default() -> Self {
         Self {
             batch_size: None,
+            batch_growth: None,
             rewire_factor: 1.001,
             connection: None,
             pruning: true,
@@ -325,7 +333,7 @@ impl Parameters {
 
     /// These parameters for `problem`: its resolution replaces `resolution`, and its
     /// certification, near-terminal fraction, sparse spacing, reverse-search repair,
-    /// connection rule and batch size apply
+    /// connection rule, batch size and batch growth apply
     /// wherever unset ([`Configuration::effective_parameters`](crate::Configuration::effective_parameters)
     /// also decides the planner's own defaults).
     ///
@@ -342,6 +350,7 @@ impl Parameters {
         problem.check_certification(parameters.certification.unwrap_or(1).max(1))?;
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
         parameters.batch_size = self.batch_size.or(Some(problem.batch_size()));
+        parameters.batch_growth = self.batch_growth.or(Some(problem.batch_growth()));
         let (initial, finest) = problem.sparse_spacing();
         parameters.sparse_initial_steps = self.sparse_initial_steps.or(Some(initial));
         parameters.sparse_min_steps = self.sparse_min_steps.or(Some(finest));
@@ -362,6 +371,24 @@ impl Parameters {
         self.batch_size.unwrap_or(problems::PAPER_BATCH_SIZE)
     }
 
+    /// The samples [`batch_growth`](Self::batch_growth) asks of a batch added to a graph of
+    /// `vertices` vertices: `⌈batch_growth · vertices⌉` (0 where unset). A batch holds this or
+    /// the batch size, whichever is more.
+    ///
+    /// ```
+    /// use mit_star::Parameters;
+    /// let p = Parameters { batch_growth: Some(0.25), ..Parameters::default() };
+    /// assert_eq!((p.grown_batch(100), p.grown_batch(999)), (25, 250));
+    /// assert_eq!(Parameters::default().grown_batch(1_000_000), 0);
+    /// let bad = Parameters { batch_growth: Some(1.5), ..Parameters::default() };
+    /// assert_eq!(bad.validate().unwrap_err().to_string(),
+    ///            "parameter `batch_growth` is 1.5; it must lie in [0, 1] (a fraction of the graph's vertices)");
+    /// ```
+    pub fn grown_batch(&self, vertices: usize) -> usize {
+        let growth = self.batch_growth.unwrap_or(0.0);
+        (growth * vertices as f64).ceil() as usize
+    }
+
     /// These parameters with ABIT*'s inflation, truncation and rewirings (Strub and Gammell,
     /// ICRA 2020, as OMPL 2.0 sets them: initial inflation 10⁶, inflation scaling 10, truncation
     /// scaling 5, cascading rewirings) wherever they are not set: [`BitStar`](crate::BitStar) with them is ABIT*.
@@ -378,7 +405,7 @@ impl Parameters {
     ///
     /// # Errors
     /// [`BuildError::Parameter`] naming the first parameter out of range: a batch size or bridge
-    /// count of 0, a non-positive or non-finite `η`, resolution, `δ` or sparse spacing, or `Ω`
+    /// count of 0, a batch growth outside `[0, 1]`, a non-positive or non-finite `η`, resolution, `δ` or sparse spacing, or `Ω`
     /// outside `(0, 1)`.
     pub fn validate(&self) -> Result<(), BuildError> {
         if self.batch_size == Some(0) {
@@ -386,6 +413,15 @@ impl Parameters {
                 name: "batch_size",
                 value: 0.0,
                 requirement: "it must be at least 1",
+            });
+        }
+        if let Some(growth) = self.batch_growth
+            && !(0.0..=1.0).contains(&growth)
+        {
+            return Err(BuildError::Parameter {
+                name: "batch_growth",
+                value: growth,
+                requirement: "it must lie in [0, 1] (a fraction of the graph's vertices)",
             });
         }
         if self.eis_batch_size == Some(0) {
@@ -498,6 +534,11 @@ impl Parameters {
                 "batch_size",
                 self.batch_size
                     .map_or_else(|| "problem's".to_owned(), |b| b.to_string()),
+            ),
+            (
+                "batch_growth",
+                self.batch_growth
+                    .map_or_else(|| "problem's".to_owned(), |g| g.to_string()),
             ),
             ("rewire_factor", self.rewire_factor.to_string()),
             ("connection", connection.to_string()),

@@ -122,6 +122,16 @@ pub trait PlanningProblem {
     fn batch_size(&self) -> usize {
         PAPER_BATCH_SIZE
     }
+
+    /// The fraction of the graph's vertices below which a batch of the EIT* family does not
+    /// fall (0 by default: every batch holds [`batch_size`](Self::batch_size) samples, as in
+    /// the papers). Each batch restarts the searches over the whole graph, so on a query that
+    /// fixed batches leave unsolved for tens of thousands of samples the restarts cost a number
+    /// of passes over the graph that grows with it; batches growing with the graph bound that
+    /// number, and a problem whose hard queries run so long (an arm) asks for them.
+    fn batch_growth(&self) -> f64 {
+        0.0
+    }
 }
 
 /// The batch size of the MIT* and EIT* papers' experiments, 100 samples
@@ -215,5 +225,8 @@ impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
     }
     fn batch_size(&self) -> usize {
         (**self).batch_size()
+    }
+    fn batch_growth(&self) -> f64 {
+        (**self).batch_growth()
     }
 }

@@ -1,7 +1,8 @@
-//! Arm problems ask the EIT* family for batches of [`ArmProblem::BATCH_SIZE`] samples; box
-//! worlds keep the papers' 100, and a set `batch_size` wins over either.
+//! Arm problems ask the EIT* family for batches of [`ArmProblem::BATCH_SIZE`] samples, growing
+//! with the graph by [`ArmProblem::BATCH_GROWTH`]; box worlds keep the papers' fixed 100, and a
+//! set `batch_size` or `batch_growth` wins over either.
 
-use mit_star::{Configuration, Parameters};
+use mit_star::{BatchEvent, Configuration, Parameters};
 use problems::{PAPER_BATCH_SIZE, PlanningProblem};
 use robot::ArmProblem;
 
@@ -50,14 +51,76 @@ fn arm_problems_sample_smaller_batches_unless_told_otherwise() {
 }
 
 #[test]
+fn arm_problems_grow_their_batches_with_the_graph_unless_told_otherwise() {
+    let arm = cage();
+    assert_eq!(arm.batch_growth(), ArmProblem::BATCH_GROWTH);
+    const { assert!(ArmProblem::BATCH_GROWTH > 0.0) };
+    let boxes = problems::DividingWalls::new(2).build().unwrap();
+    assert_eq!(boxes.batch_growth(), 0.0);
+    let defaults = Parameters::default();
+    assert_eq!(defaults.batch_growth, None);
+    assert_eq!(defaults.grown_batch(1_000_000), 0);
+    for configuration in [
+        Configuration::MitStar,
+        Configuration::EitStar,
+        Configuration::AitStar,
+        Configuration::BitStar,
+    ] {
+        let on_arm = configuration.effective_parameters(&arm, &defaults).unwrap();
+        assert_eq!(
+            on_arm.batch_growth,
+            Some(ArmProblem::BATCH_GROWTH),
+            "{configuration}"
+        );
+        let in_boxes = configuration
+            .effective_parameters(&boxes, &defaults)
+            .unwrap();
+        assert_eq!(in_boxes.batch_growth, Some(0.0), "{configuration}");
+        let set = Parameters {
+            batch_growth: Some(0.0),
+            ..Parameters::default()
+        };
+        let kept = configuration.effective_parameters(&arm, &set).unwrap();
+        assert_eq!(kept.batch_growth, Some(0.0), "{configuration}");
+    }
+}
+
+/// `true` if every batch of `events` holds `base` samples or `growth` of the vertices the
+/// graph had before it, whichever is more.
+fn sized_by(events: &[BatchEvent], base: usize, growth: f64) -> bool {
+    events.iter().all(|b| {
+        let before = b.vertices - b.samples;
+        b.samples == base.max((growth * before as f64).ceil() as usize)
+    })
+}
+
+#[test]
 fn the_planner_samples_the_problems_batch_size_or_the_one_it_is_given() {
     // Every batch before the first solution is a full one (the sampler never runs dry on
     // the cage), so the counts are exactly the batch sizes.
-    let default = batches(None, None);
+    let default = batches(None, None, None);
     assert!(
-        default.iter().all(|b| b.samples == ArmProblem::BATCH_SIZE),
+        sized_by(&default, ArmProblem::BATCH_SIZE, ArmProblem::BATCH_GROWTH),
         "{default:?}"
     );
-    let set = batches(None, Some(PAPER_BATCH_SIZE));
+    let set = batches(None, Some(PAPER_BATCH_SIZE), Some(0.0));
     assert!(set.iter().all(|b| b.samples == PAPER_BATCH_SIZE), "{set:?}");
+}
+
+#[test]
+fn the_planner_grows_its_batches_by_the_fraction_it_is_given() {
+    // With half the graph, batches grow from the third on (a graph of 100 vertices); the
+    // cage's first solution takes more batches than that.
+    let grown = batches(None, None, Some(0.5));
+    assert!(sized_by(&grown, ArmProblem::BATCH_SIZE, 0.5), "{grown:?}");
+    assert!(
+        grown.iter().any(|b| b.samples > ArmProblem::BATCH_SIZE),
+        "{grown:?}"
+    );
+    // No growth: every batch holds the batch size.
+    let fixed = batches(None, None, Some(0.0));
+    assert!(
+        fixed.iter().all(|b| b.samples == ArmProblem::BATCH_SIZE),
+        "{fixed:?}"
+    );
 }

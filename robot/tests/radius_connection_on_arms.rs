@@ -47,11 +47,11 @@ fn arm_problems_connect_by_radius_unless_told_otherwise() {
     // The planner built for the arm joins by radius: each batch's connection parameter is a
     // radius below the space's extent, not the k of k-nearest; told otherwise, it is that k.
     let extent = arm.space().maximum_extent();
-    for radius in batches(None, None).iter().map(|b| b.connection) {
+    for radius in batches(None, None, None).iter().map(|b| b.connection) {
         assert!(radius > 0.0 && radius < extent, "radius {radius}");
         assert!(radius.fract() != 0.0, "radius {radius} looks like a k");
     }
-    for k in batches(Some(Connection::KNearest), None)
+    for k in batches(Some(Connection::KNearest), None, None)
         .iter()
         .map(|b| b.connection)
     {

@@ -210,6 +210,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         cascading_rewirings: Some(false),
         connection: Some(mit_star::Connection::KNearest),
         batch_size: Some(problems::PAPER_BATCH_SIZE),
+        batch_growth: Some(0.0),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {

@@ -156,6 +156,7 @@ where
                 .unwrap_or_else(|| self.parameters.samples_per_batch()),
             _ => self.parameters.samples_per_batch(),
         };
+        let size = size.max(self.parameters.grown_batch(self.graph.vertex_count()));
         let mut ids = std::mem::take(&mut self.batch_ids);
         ids.clear();
         // Grow the per-vertex arrays once, here, rather than by copies mid-batch — but by at

@@ -28,10 +28,11 @@ impl Observer for Batches {
 }
 
 /// The batches of MIT* (the library's builder for the cage, seed 1) until its first solution,
-/// with the connection rule and the batch size set where given.
+/// with the connection rule, the batch size and the batch growth set where given.
 pub(crate) fn batches(
     connection: Option<Connection>,
     batch_size: Option<usize>,
+    batch_growth: Option<f64>,
 ) -> Vec<BatchEvent> {
     let seen = Arc::new(Mutex::new(Vec::new()));
     let mut builder = MitStar::for_problem(&cage())
@@ -42,6 +43,9 @@ pub(crate) fn batches(
     }
     if let Some(batch_size) = batch_size {
         builder = builder.batch_size(batch_size);
+    }
+    if let Some(growth) = batch_growth {
+        builder = builder.batch_growth(growth);
     }
     let mut planner = builder.build().unwrap();
     let outcome = planner
