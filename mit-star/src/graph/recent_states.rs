@@ -15,16 +15,19 @@
 /// its last expansion at each update, and tree pruning cannot cut that down in high dimensions. Read through vertex ids
 /// those states are scattered over the graph's storage; here one coordinate of every recent
 /// sample is a contiguous column, so the squared distances of a query to all of them are
-/// accumulated column by column in loops the compiler vectorises. The ring is allocated once
-/// at its full size: committing never grows it, whatever the batch size.
+/// accumulated column by column in loops the compiler vectorises. The ring starts with room for
+/// [`FIRST_ROOM`](Self::FIRST_ROOM) states and doubles while the log outgrows it, up to its
+/// capacity: a search solved within a few batches never allocates (and zeroes) the full ring.
 #[derive(Debug, Clone)]
 pub(crate) struct RecentStates {
     dimension: usize,
     capacity: usize,
-    /// Log positions `end - held .. end` are held; position `p` is in slot `p % capacity`.
+    /// Slots allocated per column (at most `capacity`); position `p` is in slot `p % room`.
+    room: usize,
+    /// Log positions `end - held .. end` are held.
     end: usize,
     held: usize,
-    /// Column `d` is `columns[d * capacity..(d + 1) * capacity]`.
+    /// Column `d` is `columns[d * room..(d + 1) * room]`.
     columns: Vec<f64>,
     /// Per-coordinate weights of the metric; empty for the plain Euclidean one.
     scales: Vec<f64>,
@@ -33,11 +36,15 @@ pub(crate) struct RecentStates {
 }
 
 impl RecentStates {
+    /// The states a ring first makes room for (or its capacity, if smaller).
+    pub(crate) const FIRST_ROOM: usize = 512;
+
     /// An empty ring for the last `capacity` states of `dimension` coordinates.
     pub(crate) fn new(dimension: usize, capacity: usize) -> Self {
         Self {
             dimension,
             capacity,
+            room: 0,
             end: 0,
             held: 0,
             columns: Vec::new(),
@@ -62,10 +69,10 @@ impl RecentStates {
             self.end += 1;
             return;
         }
-        if self.columns.is_empty() {
-            self.columns = vec![0.0; self.capacity * self.dimension];
+        if self.held == self.room && self.room < self.capacity {
+            self.grow();
         }
-        let slot = self.end % self.capacity;
+        let slot = self.end % self.room;
         for (d, &x) in state.iter().enumerate() {
             let x = match self.scales.get(d) {
                 Some(&s) => {
@@ -75,10 +82,25 @@ impl RecentStates {
                 }
                 None => x,
             };
-            self.columns[d * self.capacity + slot] = x;
+            self.columns[d * self.room + slot] = x;
         }
         self.end += 1;
-        self.held = (self.held + 1).min(self.capacity);
+        self.held = (self.held + 1).min(self.room);
+    }
+
+    /// Doubles the room (to [`FIRST_ROOM`](Self::FIRST_ROOM) at first, never beyond the
+    /// capacity), moving the held states to their slots in the larger columns.
+    fn grow(&mut self) {
+        let room = (2 * self.room).clamp(Self::FIRST_ROOM.min(self.capacity), self.capacity);
+        let mut columns = vec![0.0; room * self.dimension];
+        for p in self.end - self.held..self.end {
+            let (from, to) = (p % self.room, p % room);
+            for d in 0..self.dimension {
+                columns[d * room + to] = self.columns[d * self.room + from];
+            }
+        }
+        self.columns = columns;
+        self.room = room;
     }
 
     /// Skips `count` log entries without their states (the head of a batch larger than the
@@ -116,8 +138,8 @@ impl RecentStates {
             return Some(0.0);
         }
         // At most two runs of slots: up to the end of the ring, then from its start.
-        let first = from % self.capacity;
-        let head = count.min(self.capacity - first);
+        let first = from % self.room;
+        let head = count.min(self.room - first);
         let runs = [(first, 0, head), (0, head, count - head)];
         for (d, &q) in query.iter().enumerate() {
             let q = match self.scales.get(d) {
@@ -127,7 +149,7 @@ impl RecentStates {
                 }
                 None => q,
             };
-            let column = &self.columns[d * self.capacity..(d + 1) * self.capacity];
+            let column = &self.columns[d * self.room..(d + 1) * self.room];
             for &(slot, at, len) in &runs {
                 for (sum, &y) in out[at..at + len].iter_mut().zip(&column[slot..slot + len]) {
                     let t = q - y;
@@ -221,6 +243,36 @@ mod tests {
         let mut plain = RecentStates::new(3, 8);
         plain.push(&states[1]);
         assert_eq!(plain.squared_distances(0, &q, &mut out), Some(0.0));
+    }
+
+    #[test]
+    fn a_growing_ring_keeps_every_held_state_in_log_order() {
+        // Room for 512, then 1 024 (the capacity), then the oldest fall out.
+        let capacity = 2 * RecentStates::FIRST_ROOM;
+        let mut r = RecentStates::new(2, capacity);
+        let states: Vec<[f64; 2]> = (0..1_300_u32)
+            .map(|p| [f64::from(p), f64::from(p % 7) - 3.0])
+            .collect();
+        let q = [10.5, 1.0];
+        let squared =
+            |s: &[f64; 2]| -> f64 { s.iter().zip(&q).map(|(x, y)| (x - y) * (x - y)).sum() };
+        for (p, s) in states.iter().enumerate() {
+            r.push(s);
+            let end = p + 1;
+            let oldest = end.saturating_sub(capacity);
+            for from in [oldest, (oldest + end) / 2, end - 1] {
+                let want: Vec<f64> = states[from..end].iter().map(squared).collect();
+                assert_eq!(
+                    distances(&r, from, &q),
+                    Some(want),
+                    "end {end}, from {from}"
+                );
+            }
+            if oldest > 0 {
+                assert_eq!(distances(&r, oldest - 1, &q), None, "end {end}");
+            }
+        }
+        assert_eq!(r.room, capacity);
     }
 
     #[test]
