@@ -317,7 +317,7 @@ mod tests {
         let m = message(o.clone().with_assignment("batch_sise=3"));
         assert!(
             m.starts_with(
-                "parameter `batch_sise`: unknown parameter; valid parameters: accelerated_checks, aorrtc_resamples, aorrtc_simplify, batch_size"
+                "parameter `batch_sise`: unknown parameter; valid parameters: accelerated_checks, aorrtc_resamples, aorrtc_simplify, batch_growth, batch_size"
             ),
             "{m}"
         );
@@ -339,9 +339,15 @@ mod tests {
         let m = message(o.clone().with_assignment("batch_size"));
         assert!(m.contains("expected `key=value`"), "{m}");
         // Range errors come from Parameters::validate, naming the parameter.
-        let zero = o.with_assignment("batch_size=0").unwrap();
+        let zero = o.clone().with_assignment("batch_size=0").unwrap();
         let m = zero.apply(&Parameters::default()).unwrap_err().to_string();
         assert_eq!(m, "parameter `batch_size`: is 0; it must be at least 1");
+        let twice = o.with_assignment("batch_growth=2").unwrap();
+        let m = twice.apply(&Parameters::default()).unwrap_err().to_string();
+        assert_eq!(
+            m,
+            "parameter `batch_growth`: is 2; it must lie in [0, 1] (a fraction of the graph's vertices)"
+        );
     }
 
     #[test]
