@@ -258,7 +258,7 @@ fn the_database_has_planner_arenas_schema_and_appends() {
         .unwrap();
     assert!(
         settings.starts_with(
-            "accelerated_checks = true\n;aorrtc_resamples = 1000\n;aorrtc_simplify = true\n;batch_size = 50\n;"
+            "accelerated_checks = true\n;aorrtc_resamples = 1000\n;aorrtc_simplify = true\n;batch_growth = 0\n;batch_size = 50\n;"
         ),
         "{settings:?}"
     );
