@@ -21,13 +21,15 @@ fn restarts_and_repairs(planner: &mut dyn Planner) -> (u64, u64) {
 }
 
 /// The tool's MIT* on the Panda's first `cage` problem: its (restarts, repairs). With
-/// k-nearest connections, under which this problem's lazy paths fail on the way (with the
-/// arm's default r-disc, seed 1 finds its first path without an invalid lazy edge).
+/// k-nearest connections and fixed batches, under which this problem's lazy paths fail on the
+/// way (with the arm's default r-disc, or with its growing batches, seed 1 finds its first
+/// path without an invalid lazy edge).
 fn tool_mit_star(repair: Option<bool>) -> (u64, u64) {
     let parameters = Parameters {
         seed: 1,
         repair_reverse_search: repair,
         connection: Some(Connection::KNearest),
+        batch_growth: Some(0.0),
         ..Parameters::default()
     };
     let mut planner = build_planner(Configuration::MitStar, &cage(), &parameters).unwrap();
@@ -46,6 +48,7 @@ fn arm_problems_repair_the_reverse_search_unless_told_to_restart() {
     let mut planner = MitStar::for_problem(&cage())
         .seed(1)
         .connection(Connection::KNearest)
+        .batch_growth(0.0)
         .build()
         .unwrap();
     let (restarts, repairs) = restarts_and_repairs(&mut planner);
