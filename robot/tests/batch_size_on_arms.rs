@@ -11,78 +11,53 @@ mod cage_batches;
 use cage_batches::{batches, cage};
 
 #[test]
-fn arm_problems_sample_smaller_batches_unless_told_otherwise() {
+fn arm_problems_sample_smaller_growing_batches_unless_told_otherwise() {
     let arm = cage();
     assert_eq!(arm.batch_size(), ArmProblem::BATCH_SIZE);
-    const { assert!(ArmProblem::BATCH_SIZE < PAPER_BATCH_SIZE) };
+    assert_eq!(arm.batch_growth(), ArmProblem::BATCH_GROWTH);
+    const { assert!(ArmProblem::BATCH_SIZE < PAPER_BATCH_SIZE && ArmProblem::BATCH_GROWTH > 0.0) };
     let boxes = problems::DividingWalls::new(2).build().unwrap();
-    assert_eq!(boxes.batch_size(), PAPER_BATCH_SIZE);
+    assert_eq!(
+        (boxes.batch_size(), boxes.batch_growth()),
+        (PAPER_BATCH_SIZE, 0.0)
+    );
     let defaults = Parameters::default();
-    assert_eq!(defaults.batch_size, None);
+    assert_eq!((defaults.batch_size, defaults.batch_growth), (None, None));
     assert_eq!(defaults.samples_per_batch(), PAPER_BATCH_SIZE);
+    assert_eq!(defaults.grown_batch(1_000_000), 0);
+    // Set values are kept on either problem, the papers' included.
+    let set = Parameters {
+        batch_size: Some(PAPER_BATCH_SIZE),
+        batch_growth: Some(0.0),
+        ..Parameters::default()
+    };
     for configuration in [
         Configuration::MitStar,
         Configuration::EitStar,
         Configuration::AitStar,
         Configuration::BitStar,
     ] {
-        let on_arm = configuration.effective_parameters(&arm, &defaults).unwrap();
-        assert_eq!(
-            on_arm.batch_size,
-            Some(ArmProblem::BATCH_SIZE),
-            "{configuration}"
-        );
-        let in_boxes = configuration
-            .effective_parameters(&boxes, &defaults)
-            .unwrap();
-        assert_eq!(
-            in_boxes.batch_size,
-            Some(PAPER_BATCH_SIZE),
-            "{configuration}"
-        );
-        // A set batch size is kept on either problem, the papers' value included.
-        let set = Parameters {
-            batch_size: Some(PAPER_BATCH_SIZE),
-            ..Parameters::default()
-        };
-        let kept = configuration.effective_parameters(&arm, &set).unwrap();
-        assert_eq!(kept.batch_size, Some(PAPER_BATCH_SIZE), "{configuration}");
+        let arm_batches = (Some(ArmProblem::BATCH_SIZE), Some(ArmProblem::BATCH_GROWTH));
+        let on_arm = batch_rule(configuration, &arm, &defaults);
+        assert_eq!(on_arm, arm_batches, "{configuration}");
+        let papers = (Some(PAPER_BATCH_SIZE), Some(0.0));
+        let in_boxes = batch_rule(configuration, &boxes, &defaults);
+        assert_eq!(in_boxes, papers, "{configuration}");
+        let kept = batch_rule(configuration, &arm, &set);
+        assert_eq!(kept, papers, "{configuration}");
     }
 }
 
-#[test]
-fn arm_problems_grow_their_batches_with_the_graph_unless_told_otherwise() {
-    let arm = cage();
-    assert_eq!(arm.batch_growth(), ArmProblem::BATCH_GROWTH);
-    const { assert!(ArmProblem::BATCH_GROWTH > 0.0) };
-    let boxes = problems::DividingWalls::new(2).build().unwrap();
-    assert_eq!(boxes.batch_growth(), 0.0);
-    let defaults = Parameters::default();
-    assert_eq!(defaults.batch_growth, None);
-    assert_eq!(defaults.grown_batch(1_000_000), 0);
-    for configuration in [
-        Configuration::MitStar,
-        Configuration::EitStar,
-        Configuration::AitStar,
-        Configuration::BitStar,
-    ] {
-        let on_arm = configuration.effective_parameters(&arm, &defaults).unwrap();
-        assert_eq!(
-            on_arm.batch_growth,
-            Some(ArmProblem::BATCH_GROWTH),
-            "{configuration}"
-        );
-        let in_boxes = configuration
-            .effective_parameters(&boxes, &defaults)
-            .unwrap();
-        assert_eq!(in_boxes.batch_growth, Some(0.0), "{configuration}");
-        let set = Parameters {
-            batch_growth: Some(0.0),
-            ..Parameters::default()
-        };
-        let kept = configuration.effective_parameters(&arm, &set).unwrap();
-        assert_eq!(kept.batch_growth, Some(0.0), "{configuration}");
-    }
+/// The batch size and growth `configuration` runs with on `problem` given `parameters`.
+fn batch_rule<P: PlanningProblem>(
+    configuration: Configuration,
+    problem: &P,
+    parameters: &Parameters,
+) -> (Option<usize>, Option<f64>) {
+    let effective = configuration
+        .effective_parameters(problem, parameters)
+        .unwrap();
+    (effective.batch_size, effective.batch_growth)
 }
 
 /// `true` if every batch of `events` holds `base` samples or `growth` of the vertices the
