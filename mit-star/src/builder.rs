@@ -85,7 +85,7 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
     /// [`Problem`](problems::Problem), a robot-arm problem, or your own: its space, validity
     /// checker, start, goals and resolution, and the certification, reverse-search repair,
-    /// sparse spacing, connection rule and batch size it asks for. [`build`](Builder::build)
+    /// sparse spacing, connection rule, batch size and batch growth it asks for. [`build`](Builder::build)
     /// refuses a problem that refuses its collision-check step or its certification
     /// ([`PlanningProblem::check_step`]: a box world whose
     /// step is coarser than its thinnest obstacle, unless the problem allows it).
