@@ -141,10 +141,11 @@ impl ArmChecker {
             *out = levers.iter().zip(&*delta).map(|(l, d)| l * d.abs()).sum();
         }
         let fastest = sweep.iter().copied().fold(0.0, f64::max);
-        s.local.edge_terms(delta, &s.levers, terms);
+        // Each link's terms of the local sweep bound are computed when a batch first needs
+        // them (a link far from everything never does).
+        terms.reset(s.links.len());
         let edge = EdgeBounds {
             delta,
-            terms,
             sweep,
             pair_sweep,
         };
@@ -193,7 +194,7 @@ impl ArmChecker {
             let reaches_end = middles[count - 1] + w >= 1.0;
             let useful = (if reaches_end { FINAL_USEFUL } else { USEFUL } * w).min(1.0);
             let (radii, refused) =
-                certified_radii(s, lanes, &chunk[..count * n], &edge, (FLOOR, useful));
+                certified_radii(s, lanes, &chunk[..count * n], &edge, terms, (FLOOR, useful));
             if refused != 0 {
                 *progress = progress.advanced(t, w);
                 return Some(EdgeStatus::Invalid);

@@ -464,8 +464,11 @@ fn invalid_filled(
     // early skips the rest of the walk. `posed`: links placed so far (in tree order).
     let mut posed = 0;
     let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
-        for i in range.clone() {
-            centers[i] = pose.point(s.spheres[i].0);
+        for (c, sphere) in centers[range.clone()]
+            .iter_mut()
+            .zip(&s.spheres[range.clone()])
+        {
+            *c = pose.point(sphere.0);
         }
     };
     // When any contact will do, the link that met an obstacle last time goes first.
@@ -479,20 +482,23 @@ fn invalid_filled(
             s.lanes.link_poses_in(q8, poses8, posed..*link + 1);
             posed = *link + 1;
         }
-        bounds8[k] = poses8[*link].point(*center);
         let pose = &poses8[*link];
-        let bound = f32x8::splat(*radius) + grow[k];
+        let bounding = pose.point(*center);
+        bounds8[k] = bounding;
+        let grown = grow[k];
+        let bound = f32x8::splat(*radius) + grown;
+        let spheres = &s.spheres[range.clone()];
         for obstacle in &s.reachable[k] {
-            if obstacle.collides_spheres8(&bounds8[k], bound) & active == 0 {
+            if obstacle.collides_spheres8(&bounding, bound) & active == 0 {
                 continue;
             }
             if !placed[k] {
                 place8(pose, range, centers8);
                 placed[k] = true;
             }
-            for i in range.clone() {
-                let radius = f32x8::splat(s.spheres[i].1) + grow[k];
-                let hit = obstacle.collides_spheres8(&centers8[i], radius);
+            for (c, sphere) in centers8[range.clone()].iter().zip(spheres) {
+                let radius = f32x8::splat(sphere.1) + grown;
+                let hit = obstacle.collides_spheres8(c, radius);
                 if hit & active != 0 {
                     invalid |= hit & active;
                     active = undecided(invalid);
@@ -508,7 +514,8 @@ fn invalid_filled(
         let (la, lb) = (&s.links[a], &s.links[b]);
         let grown = grow[a] + grow[b];
         let reach = f32x8::splat(la.3 + lb.3) + grown;
-        if distance_squared(&bounds8[a], &bounds8[b])
+        let bound_b = bounds8[b];
+        if distance_squared(&bounds8[a], &bound_b)
             .simd_le(reach * reach)
             .to_bitmask()
             & active
@@ -522,11 +529,13 @@ fn invalid_filled(
                 placed[k] = true;
             }
         }
+        let (spheres_a, spheres_b) = (&s.spheres[la.1.clone()], &s.spheres[lb.1.clone()]);
+        let (centers_a, centers_b) = (&centers8[la.1.clone()], &centers8[lb.1.clone()]);
         // Each sphere of the first link against the second's bounding sphere, then its
         // spheres.
-        for i in la.1.clone() {
-            let near = f32x8::splat(s.spheres[i].1 + lb.3) + grown;
-            if distance_squared(&centers8[i], &bounds8[b])
+        for (ca, sa) in centers_a.iter().zip(spheres_a) {
+            let near = f32x8::splat(sa.1 + lb.3) + grown;
+            if distance_squared(ca, &bound_b)
                 .simd_le(near * near)
                 .to_bitmask()
                 & active
@@ -534,11 +543,9 @@ fn invalid_filled(
             {
                 continue;
             }
-            for j in lb.1.clone() {
-                let r = f32x8::splat(s.spheres[i].1 + s.spheres[j].1) + grown;
-                let hit = distance_squared(&centers8[i], &centers8[j])
-                    .simd_le(r * r)
-                    .to_bitmask();
+            for (cb, sb) in centers_b.iter().zip(spheres_b) {
+                let r = f32x8::splat(sa.1 + sb.1) + grown;
+                let hit = distance_squared(ca, cb).simd_le(r * r).to_bitmask();
                 if hit & active != 0 {
                     invalid |= hit & active;
                     active = undecided(invalid);

@@ -53,19 +53,18 @@ use crate::checking::local_sweep::{EdgeTerms, LinkMotion8};
 /// the direction's and the velocity's), as a share of the link's speed bound.
 const DIRECTION_ROUNDING: f32 = 1e-3;
 
-/// What the radii of an edge's configurations depend on besides the configurations: the
-/// joint displacements, the local sweep bound's terms, per link entry the lever-arm sweep
+/// What the radii of an edge's configurations depend on besides the configurations and the
+/// local sweep bound's terms: the joint displacements, per link entry the lever-arm sweep
 /// over the whole edge, and per self-collision pair the links' sweep relative to each other.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct EdgeBounds<'a> {
     pub(crate) delta: &'a [f64],
-    pub(crate) terms: &'a EdgeTerms,
     pub(crate) sweep: &'a [f64],
     pub(crate) pair_sweep: &'a [f64],
 }
 
 /// Per lane of `chunk` (at most [`LANES`] configurations of the robot's dimension, on the
-/// edge of `edge`): its certified radius, as a fraction of the edge, and as bit `l` of the
+/// edge of `edge`, whose local sweep terms `terms` computes as the links need them): its certified radius, as a fraction of the edge, and as bit `l` of the
 /// second value whether lane `l` is refused — outside the joint limits, or with a clearance
 /// below `floor` metres (in contact, or within a hair of it). Radii are computed up to
 /// `useful` (a larger radius is returned as `useful`: clearances are not sought beyond what
@@ -75,6 +74,7 @@ pub(crate) fn certified_radii(
     lanes: &mut LaneScratch,
     chunk: &[f64],
     edge: &EdgeBounds<'_>,
+    terms: &mut EdgeTerms,
     (floor, useful): (f64, f64),
 ) -> ([f64; LANES], u32) {
     let n = s.lower.len();
@@ -114,11 +114,12 @@ pub(crate) fn certified_radii(
         if !s.reachable[k].iter().any(|o| near(radius, o)) {
             continue;
         }
+        s.local.link_terms(k, edge.delta, &s.levers, terms);
         let (speed, motion) = s
             .local
-            .speed_of(k, poses8, &bounds8[k], (edge.delta, edge.terms));
-        let second = edge.terms.second(k) as f32;
-        let acceleration = f32x8::splat(edge.terms.acceleration(k) as f32);
+            .speed_of(k, poses8, &bounds8[k], (edge.delta, terms));
+        let second = terms.second(k) as f32;
+        let acceleration = f32x8::splat(terms.acceleration(k) as f32);
         // How far the link's spheres move over a piece of the lane's radius so far, by the
         // bounds that hold whatever the direction of motion: a sphere clear by this (and
         // twice the floor) cannot lower the radius.
@@ -129,7 +130,7 @@ pub(crate) fn certified_radii(
         // What the rate of approach computed in `f32` may miss: its relative rounding, and the
         // error of the link's poses carried through its joint rates.
         let slack = speed * f32x8::splat(DIRECTION_ROUNDING)
-            + margin * f32x8::splat(4.0 * edge.terms.rates(k) as f32);
+            + margin * f32x8::splat(4.0 * terms.rates(k) as f32);
         let LinkMotion8 { velocity, angular } = motion;
         let mut nearest = f32x8::splat(f32::INFINITY);
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
@@ -142,18 +143,18 @@ pub(crate) fn certified_radii(
             {
                 continue;
             }
+            let spheres = &s.spheres[range.clone()];
             if !placed[k] {
                 let pose = &poses8[*link];
-                for i in range.clone() {
-                    centers8[i] = pose.point(s.spheres[i].0);
+                for (c, sphere) in centers8[range.clone()].iter_mut().zip(spheres) {
+                    *c = pose.point(sphere.0);
                 }
                 placed[k] = true;
             }
-            for i in range.clone() {
-                let c = &centers8[i];
+            for (c, sphere) in centers8[range.clone()].iter().zip(spheres) {
                 let local = obstacle.local8(c);
                 let distance = obstacle.distances_local8(&local);
-                let gap = distance - f32x8::splat(s.spheres[i].1);
+                let gap = distance - f32x8::splat(sphere.1);
                 nearest = nearest.min(gap);
                 let clear = gap - margin;
                 if clear.simd_lt(limit).to_bitmask() & live == 0 {
@@ -197,20 +198,25 @@ pub(crate) fn certified_radii(
             for (k, l) in [(a, la), (b, lb)] {
                 if !placed[k] {
                     let pose = &poses8[l.0];
-                    for i in l.1.clone() {
-                        centers8[i] = pose.point(s.spheres[i].0);
+                    for (c, sphere) in centers8[l.1.clone()]
+                        .iter_mut()
+                        .zip(&s.spheres[l.1.clone()])
+                    {
+                        *c = pose.point(sphere.0);
                     }
                     placed[k] = true;
                 }
             }
-            for i in la.1.clone() {
-                let ri = s.spheres[i].1;
-                if closer(&centers8[i], &bounds8[b], best + f32x8::splat(ri + lb.3)) & live == 0 {
+            let (spheres_a, spheres_b) = (&s.spheres[la.1.clone()], &s.spheres[lb.1.clone()]);
+            let (centers_a, centers_b) = (&centers8[la.1.clone()], &centers8[lb.1.clone()]);
+            let bound_b = &bounds8[b];
+            for (ca, sa) in centers_a.iter().zip(spheres_a) {
+                let ri = sa.1;
+                if closer(ca, bound_b, best + f32x8::splat(ri + lb.3)) & live == 0 {
                     continue;
                 }
-                for j in lb.1.clone() {
-                    let gap = distance_squared(&centers8[i], &centers8[j]).sqrt()
-                        - f32x8::splat(ri + s.spheres[j].1);
+                for (cb, sb) in centers_b.iter().zip(spheres_b) {
+                    let gap = distance_squared(ca, cb).sqrt() - f32x8::splat(ri + sb.1);
                     best = best.min(gap);
                 }
             }

@@ -51,13 +51,16 @@ pub(crate) struct LocalSweep {
 
 /// The parts of the bound fixed by the edge: per link entry, the constant speed (prismatic
 /// joints and the spread), `Q_k`, and `Acc_k`, a bound on the acceleration of its sphere
-/// centres anywhere on the edge (see [`LocalSweep::edge_terms`]).
+/// centres anywhere on the edge (see [`LocalSweep::link_terms`]), each computed when first
+/// needed.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct EdgeTerms {
     constant: Vec<f64>,
     second: Vec<f64>,
     acceleration: Vec<f64>,
     rates: Vec<f64>,
+    /// Per link entry: its terms are computed for the edge at hand.
+    ready: Vec<bool>,
 }
 
 /// Per link entry and lane, how its spheres move at the lane's configuration, per unit of
@@ -150,8 +153,20 @@ impl LocalSweep {
         out
     }
 
-    /// The terms of the edge with joint displacements `delta`; `levers` holds the checker's
-    /// lever arms per link entry and coordinate.
+    /// Every link entry's terms of the edge with joint displacements `delta` (see
+    /// [`link_terms`](Self::link_terms)).
+    #[cfg(test)]
+    pub(crate) fn edge_terms(&self, delta: &[f64], levers: &[f64], out: &mut EdgeTerms) {
+        out.reset(self.chains.len());
+        for k in 0..self.chains.len() {
+            self.link_terms(k, delta, levers, out);
+        }
+    }
+
+    /// Link entry `k`'s terms of the edge with joint displacements `delta`, unless `out`
+    /// (reset for the edge with [`EdgeTerms::reset`]) holds them already: certification
+    /// computes them only for the links that come near something. `levers` holds the
+    /// checker's lever arms per link entry and coordinate.
     ///
     /// # The acceleration bound
     /// Along the edge the joints move at the constant rates `Δq`, so a point `x` of link `k`
@@ -164,48 +179,48 @@ impl LocalSweep {
     /// (the lever arm bounds the distance to the joint's origin), every sphere centre of `k`
     /// accelerates at most `Acc_k = Σ_{j revolute} |Δq_j| (2 W_j λ_{k,j} + Σ_{i from j on}
     /// |Δq_i| λ_{k,i}) + Σ_{j prismatic} |Δq_j| |a_j| W_j`, anywhere on the edge.
-    pub(crate) fn edge_terms(&self, delta: &[f64], levers: &[f64], out: &mut EdgeTerms) {
-        let n = delta.len();
-        out.constant.clear();
-        out.second.clear();
-        out.acceleration.clear();
-        out.rates.clear();
-        for (k, chain) in self.chains.iter().enumerate() {
-            let lever = &levers[k * n..(k + 1) * n];
-            // `after`: `Σ λ_{k,i} |Δq_i|` over the joints below the one at hand, run from the
-            // link up.
-            let (mut constant, mut second, mut after, mut rates) = (0.0, 0.0, 0.0, 0.0);
-            for joint in chain.iter().rev() {
-                let d = delta[joint.coordinate].abs();
-                rates += d * joint.slide.max(1.0);
-                if joint.axis.is_none() {
-                    constant += joint.slide * d;
-                } else {
-                    constant += d * (self.spreads[k] + f64::from(DISTANCE_SLACK));
-                    second += d * after;
-                }
-                after += lever[joint.coordinate] * d;
-            }
-            // The acceleration, from the root down: `above` is the revolute rates above the
-            // joint at hand, `after` what is below it.
-            let (mut acceleration, mut above) = (0.0, 0.0);
-            for joint in chain {
-                let d = delta[joint.coordinate].abs();
-                let own = lever[joint.coordinate];
-                after -= own * d;
-                if joint.axis.is_none() {
-                    acceleration += d * joint.slide * above;
-                    continue;
-                }
-                acceleration += d * (2.0 * above * own + d * own + after.max(0.0));
-                above += d;
-            }
-            out.constant.push(constant);
-            out.second.push(second);
-            // Rounded up, as the lever arms (and for the running sums' rounding).
-            out.acceleration.push(acceleration * (1.0 + 1e-9) + 1e-12);
-            out.rates.push(rates);
+    #[inline]
+    pub(crate) fn link_terms(&self, k: usize, delta: &[f64], levers: &[f64], out: &mut EdgeTerms) {
+        if out.ready[k] {
+            return;
         }
+        let n = delta.len();
+        let chain = &self.chains[k];
+        let lever = &levers[k * n..(k + 1) * n];
+        // `after`: `Σ λ_{k,i} |Δq_i|` over the joints below the one at hand, run from the
+        // link up.
+        let (mut constant, mut second, mut after, mut rates) = (0.0, 0.0, 0.0, 0.0);
+        for joint in chain.iter().rev() {
+            let d = delta[joint.coordinate].abs();
+            rates += d * joint.slide.max(1.0);
+            if joint.axis.is_none() {
+                constant += joint.slide * d;
+            } else {
+                constant += d * (self.spreads[k] + f64::from(DISTANCE_SLACK));
+                second += d * after;
+            }
+            after += lever[joint.coordinate] * d;
+        }
+        // The acceleration, from the root down: `above` is the revolute rates above the
+        // joint at hand, `after` what is below it.
+        let (mut acceleration, mut above) = (0.0, 0.0);
+        for joint in chain {
+            let d = delta[joint.coordinate].abs();
+            let own = lever[joint.coordinate];
+            after -= own * d;
+            if joint.axis.is_none() {
+                acceleration += d * joint.slide * above;
+                continue;
+            }
+            acceleration += d * (2.0 * above * own + d * own + after.max(0.0));
+            above += d;
+        }
+        out.constant[k] = constant;
+        out.second[k] = second;
+        // Rounded up, as the lever arms (and for the running sums' rounding).
+        out.acceleration[k] = acceleration * (1.0 + 1e-9) + 1e-12;
+        out.rates[k] = rates;
+        out.ready[k] = true;
     }
 
     /// Link entry `k`'s speed term in each lane, `A_k = constant_k + Σ_j |Δq_j| d_j` with
@@ -259,6 +274,20 @@ impl LocalSweep {
 }
 
 impl EdgeTerms {
+    /// Forgets every link's terms: a new edge, `links` link entries.
+    pub(crate) fn reset(&mut self, links: usize) {
+        for v in [
+            &mut self.constant,
+            &mut self.second,
+            &mut self.acceleration,
+            &mut self.rates,
+        ] {
+            v.resize(links, 0.0);
+        }
+        self.ready.clear();
+        self.ready.resize(links, false);
+    }
+
     /// Link entry `k`'s second-order term `Q_k`.
     #[inline]
     pub(crate) fn second(&self, k: usize) -> f64 {
