@@ -83,6 +83,50 @@ impl InformedDraws {
         })
     }
 
+    /// Writes the next candidate of `draw` (given the generator; each counted as drawn) into
+    /// `out` and returns whether it is valid, counting the check: as
+    /// [`draw_checked`](Self::draw_checked), a batch of `validity` drawn and checked at a time.
+    /// The candidates' law must not depend on anything that changes between the calls (or
+    /// [`clear_ahead`](Self::clear_ahead) drops them when it does); their index in their batch
+    /// is [`last_index`](Self::last_index).
+    ///
+    /// # Errors
+    /// The first error of `draw`, as [`Lookahead::next`].
+    pub(crate) fn next_checked<V: StateValidity + ?Sized>(
+        &mut self,
+        validity: &V,
+        out: &mut [f64],
+        mut draw: impl FnMut(&mut SeededRng, &mut [f64]) -> Result<(), SampleError>,
+    ) -> Result<bool, SampleError> {
+        let Self {
+            rng,
+            counters,
+            ahead,
+            ..
+        } = self;
+        let SamplerCounters {
+            validity_checks,
+            drawn,
+            ..
+        } = counters;
+        ahead.next(validity, None, validity_checks, out, |x| {
+            draw(rng, x)?;
+            *drawn += 1;
+            Ok(())
+        })
+    }
+
+    /// The index, in the order of its batch's draws, of the candidate
+    /// [`next_checked`](Self::next_checked) returned last.
+    pub(crate) fn last_index(&self) -> usize {
+        self.ahead.last_index()
+    }
+
+    /// Drops the candidates drawn ahead (what they were drawn from changed).
+    pub(crate) fn clear_ahead(&mut self) {
+        self.ahead.clear();
+    }
+
     /// Writes a Gaussian neighbour of `from` into `to` and counts it as drawn.
     pub(crate) fn perturb<S: StateSpace + ?Sized>(
         &mut self,

@@ -87,6 +87,13 @@ impl Lookahead {
         out.copy_from_slice(&self.states[i * dimension..(i + 1) * dimension]);
         Ok(self.valid[i])
     }
+
+    /// Where the candidate [`next`](Self::next) handed out last was in the order of its batch's
+    /// draws (0 for the first drawn): a sampler that keeps something about each draw (where it
+    /// was centred) finds it there.
+    pub(crate) fn last_index(&self) -> usize {
+        self.next.saturating_sub(1)
+    }
 }
 
 #[cfg(test)]
@@ -136,6 +143,8 @@ mod tests {
         assert_eq!(seen, want);
         assert_eq!(*checker.0.borrow(), [4, 4]);
         assert_eq!(checks, 8);
+        // The sixth candidate handed out was the second of the second batch's draws.
+        assert_eq!(ahead.last_index(), 1);
     }
 
     #[test]

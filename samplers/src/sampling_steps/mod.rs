@@ -23,5 +23,5 @@ mod segment_search;
 
 pub use gaussian_step::GaussianStep;
 pub(crate) use informed_draws::InformedDraws;
-pub(crate) use lookahead::Lookahead;
+pub(crate) use lookahead::{Lookahead, MOST_BATCHED};
 pub use segment_search::SegmentSearch;

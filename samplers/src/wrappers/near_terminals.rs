@@ -2,10 +2,10 @@
 //! goals, at every scale.
 
 use rand::RngExt;
-use spaces::{StateSpace, Stop};
+use spaces::{SeededRng, StateSpace, Stop};
 use validity::StateValidity;
 
-use crate::sampling_steps::InformedDraws;
+use crate::sampling_steps::{InformedDraws, MOST_BATCHED};
 use crate::{
     CostBound, GaussianStep, LazyPathFailure, SampleError, SampleOrigin, Sampler, SamplerCounters,
     SamplerError,
@@ -30,7 +30,10 @@ use rays::RayScratch;
 /// it; otherwise — and with probability `1 − fraction` — the wrapped sampler answers. Each
 /// request therefore costs at most one extra draw and one validity check before the wrapped
 /// sampler's own work, and the wrapped sampler still covers the whole set, so an
-/// asymptotically optimal planner stays so.
+/// asymptotically optimal planner stays so. The draws near the terminals are made ahead, a
+/// batch of the checker at a time, and decided in one call (an arm's eight lanes cost about
+/// what one state does); a checker that tests one state at a time sees exactly the sequence
+/// of draws and checks made one by one.
 ///
 /// The connection rules see only the wrapped sampler's density: the r-disc measure is the
 /// wrapped sampler's, and the states drawn here, marked [`SampleOrigin::NearTerminal`], are
@@ -98,6 +101,9 @@ pub struct NearTerminals<T> {
     drew_last: bool,
     /// The planner's frontier states, one after the other (empty: none).
     frontier: Vec<f64>,
+    /// What each candidate drawn ahead was centred on, in the order of its batch's draws
+    /// (`None`: no candidate).
+    centres: [Option<Centre>; MOST_BATCHED],
     /// States returned from near a frontier state.
     frontier_returned: u64,
     /// Whether frontier draws go along free lines first ([`with_frontier_rays`](Self::with_frontier_rays)).
@@ -116,7 +122,7 @@ impl<T> NearTerminals<T> {
     /// Share of the draws centred on a frontier state while the planner has sent some (the
     /// rest stay centred on the terminals, which they must still join).
     /// A constant, not tuned by any shipped measurement.
-    pub const FRONTIER_SHARE: f64 = 0.5;
+    pub const FRONTIER_SHARE: f64 = NEAR_FRONTIER_SHARE;
 
     /// `inner` with states near `start` and `goals` in `space`, seeded with `seed` (its own
     /// generator; `inner` keeps its own), at the default fraction and scales.
@@ -151,6 +157,7 @@ impl<T> NearTerminals<T> {
             log_scales: (0.0, 0.0),
             drew_last: false,
             frontier: Vec::new(),
+            centres: [None; MOST_BATCHED],
             frontier_returned: 0,
             rays: false,
             ray: RayScratch::default(),
@@ -216,41 +223,43 @@ impl<T> NearTerminals<T> {
     pub fn inner(&self) -> &T {
         &self.inner
     }
+}
 
-    /// Draws one candidate near a terminal or a frontier state into `out`, and says which;
-    /// `None` if it could not (a scale that rounds to no valid `σ`, which the checks in
-    /// [`with_scales`](Self::with_scales) rule out).
-    fn draw_near<S: StateSpace + ?Sized>(&mut self, space: &S, out: &mut [f64]) -> Option<Centre> {
-        let n = out.len();
-        let count = self.terminals.len() / n;
-        let rng = self.draws.rng();
-        let index = if count == 1 || rng.random_bool(0.5) {
-            0
-        } else {
-            rng.random_range(1..count)
-        };
-        let (low, high) = self.log_scales;
-        let sigma = if high > low {
-            rng.random_range(low..high).exp()
-        } else {
-            low.exp()
-        };
-        // No draw for the choice without frontier states: the sequence stays the one of a
-        // wrapper that never heard of them.
-        let frontier = self.frontier.len() / n;
-        let (centre, around) = if frontier > 0 && rng.random_bool(Self::FRONTIER_SHARE) {
-            let k = rng.random_range(0..frontier);
-            (Centre::Frontier, &self.frontier[k * n..(k + 1) * n])
-        } else {
-            (
-                Centre::Terminal,
-                &self.terminals[index * n..(index + 1) * n],
-            )
-        };
-        let step = GaussianStep::new(sigma).ok()?.reflecting();
-        self.draws.perturb(&step, space, around, out);
-        Some(centre)
-    }
+/// Draws one candidate near a terminal (`terminals`, one after the other) or a frontier state
+/// (`frontier`, likewise) into `out` with `rng`, at a scale `σ` with `ln σ` uniform in
+/// `log_scales`, and says which; `None` if it could not (a scale that rounds to no valid `σ`,
+/// which the checks in [`NearTerminals::with_scales`] rule out).
+fn draw_near<S: StateSpace + ?Sized>(
+    (terminals, frontier, log_scales): (&[f64], &[f64], (f64, f64)),
+    space: &S,
+    rng: &mut SeededRng,
+    out: &mut [f64],
+) -> Option<Centre> {
+    let n = out.len();
+    let count = terminals.len() / n;
+    let index = if count == 1 || rng.random_bool(0.5) {
+        0
+    } else {
+        rng.random_range(1..count)
+    };
+    let (low, high) = log_scales;
+    let sigma = if high > low {
+        rng.random_range(low..high).exp()
+    } else {
+        low.exp()
+    };
+    // No draw for the choice without frontier states: the sequence stays the one of a
+    // wrapper that never heard of them.
+    let states = frontier.len() / n;
+    let (centre, around) = if states > 0 && rng.random_bool(NEAR_FRONTIER_SHARE) {
+        let k = rng.random_range(0..states);
+        (Centre::Frontier, &frontier[k * n..(k + 1) * n])
+    } else {
+        (Centre::Terminal, &terminals[index * n..(index + 1) * n])
+    };
+    let step = GaussianStep::new(sigma).ok()?.reflecting();
+    step.perturb(space, rng, around, out);
+    Some(centre)
 }
 
 impl<T> NearTerminals<T> {
@@ -276,6 +285,9 @@ impl<T> NearTerminals<T> {
         false
     }
 }
+
+/// [`NearTerminals::FRONTIER_SHARE`], for the draws.
+const NEAR_FRONTIER_SHARE: f64 = 0.5;
 
 /// What a draw of [`NearTerminals`] was centred on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -343,9 +355,29 @@ where
                 self.frontier_returned += 1;
                 return self.draws.returned();
             }
-            match self.draw_near(space, out) {
+            // Drawn and checked a batch of the checker at a time: a draw's law does not depend
+            // on the bound (the informed set is tested when it is handed out), only on the
+            // frontier, whose change drops the draws held.
+            let Self {
+                draws,
+                terminals,
+                frontier,
+                log_scales,
+                centres,
+                ..
+            } = self;
+            let parts = (terminals.as_slice(), frontier.as_slice(), *log_scales);
+            let mut drawn = 0;
+            let valid = draws.next_checked(validity, out, |rng, x| {
+                if let Some(slot) = centres.get_mut(drawn) {
+                    *slot = draw_near(parts, space, rng, x);
+                }
+                drawn += 1;
+                Ok(())
+            })?;
+            match centres.get(draws.last_index()).copied().flatten() {
                 Some(centre) if self.draws.set.contains(space, cost, out) => {
-                    if self.draws.check(validity, out) {
+                    if valid {
                         self.drew_last = true;
                         self.frontier_returned += u64::from(centre == Centre::Frontier);
                         return self.draws.returned();
@@ -399,6 +431,8 @@ where
         let whole = states.len() / n.max(1) * n;
         self.frontier.clear();
         self.frontier.extend_from_slice(&states[..whole]);
+        // Candidates drawn ahead around the old frontier are dropped.
+        self.draws.clear_ahead();
         self.inner.observe_frontier(states);
     }
 

@@ -315,3 +315,62 @@ fn blocked_lines_leave_the_gaussian_draws_and_no_frontier_leaves_the_sequence() 
         checks(&without)
     );
 }
+
+/// A world of batch width eight that records the sizes of the batches it decides.
+struct EightWide(World, std::cell::RefCell<Vec<usize>>);
+
+impl StateValidity for EightWide {
+    fn is_valid(&self, s: &[f64]) -> bool {
+        self.1.borrow_mut().push(1);
+        self.0.is_valid(s)
+    }
+    fn batch_width(&self) -> usize {
+        8
+    }
+    fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
+        self.1.borrow_mut().push(states.len() / dimension);
+        for (s, v) in states.chunks_exact(dimension).zip(valid) {
+            *v = self.0.is_valid(s);
+        }
+    }
+}
+
+#[test]
+fn a_batched_checker_decides_the_near_draws_eight_at_a_time() {
+    let (space, start, goal) = square();
+    // A box over the goal (x from 0.6): draws near it are invalid, near the start valid.
+    let blocked = || {
+        World::in_space(&space)
+            .with_obstacle(AxisBox::new(vec![0.9, 0.5], vec![0.6, 1.0]))
+            .unwrap()
+    };
+    let checker = EightWide(blocked(), Default::default());
+    let mut near = NearTerminals::new(UniformSampler::new(2), &space, &start, &[goal], 2)
+        .unwrap()
+        .with_fraction(0.5)
+        .unwrap()
+        .with_scales(0.01, 0.05)
+        .unwrap();
+    let mut x = [0.0; 2];
+    let mut returned_near = 0;
+    for _ in 0..400 {
+        near.sample(&space, &checker, CostBound::Unbounded, &Never, &mut x)
+            .unwrap();
+        if Sampler::<RealVectorSpace, EightWide>::last_origin(&near) == SampleOrigin::NearTerminal {
+            returned_near += 1;
+            // Handed out only when valid: near the start, never in the blocked half.
+            assert!(x[0] < 0.6, "{x:?}");
+        }
+    }
+    // The wrapper's draws were all decided in calls of eight; no state was tested alone.
+    let sizes = checker.1.borrow();
+    assert!(
+        !sizes.is_empty() && sizes.iter().all(|&n| n == 8),
+        "{sizes:?}"
+    );
+    let c = Sampler::<RealVectorSpace, EightWide>::counters(&near);
+    assert_eq!(c.validity_checks, 8 * sizes.len() as u64);
+    assert_eq!(c.near_terminals, returned_near);
+    // About half of the half of the requests answered near a terminal are near the start.
+    assert!((60..140).contains(&returned_near), "{returned_near}");
+}
