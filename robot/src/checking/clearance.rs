@@ -64,8 +64,9 @@ pub(crate) struct EdgeBounds<'a> {
 }
 
 /// Per lane of `chunk` (at most [`LANES`] configurations of the robot's dimension, on the
-/// edge of `edge`, whose local sweep terms `terms` computes as the links need them): its certified radius, as a fraction of the edge, and as bit `l` of the
-/// second value whether lane `l` is refused — outside the joint limits, or with a clearance
+/// edge of `edge`, whose local sweep terms `terms` computes as the links need them): its
+/// certified radius, as a fraction of the edge, and as bit `l` of the second value whether
+/// lane `l` is refused — outside the joint limits, or with a clearance
 /// below `floor` metres (in contact, or within a hair of it). Radii are computed up to
 /// `useful` (a larger radius is returned as `useful`: clearances are not sought beyond what
 /// it needs).

@@ -30,10 +30,11 @@ use rays::RayScratch;
 /// it; otherwise — and with probability `1 − fraction` — the wrapped sampler answers. Each
 /// request therefore costs at most one extra draw and one validity check before the wrapped
 /// sampler's own work, and the wrapped sampler still covers the whole set, so an
-/// asymptotically optimal planner stays so. The draws near the terminals are made ahead, a
-/// batch of the checker at a time, and decided in one call (an arm's eight lanes cost about
-/// what one state does); a checker that tests one state at a time sees exactly the sequence
-/// of draws and checks made one by one.
+/// asymptotically optimal planner stays so. For a checker that decides states in batches
+/// ([`batch_width`](StateValidity::batch_width) above 1, an arm's eight lanes for about the
+/// price of one state), the draws near the terminals are made ahead, a batch at a time, and
+/// decided in one call; one that tests a state at a time sees the draws and checks one by one,
+/// as before (a draw outside the informed set is then not checked at all).
 ///
 /// The connection rules see only the wrapped sampler's density: the r-disc measure is the
 /// wrapped sampler's, and the states drawn here, marked [`SampleOrigin::NearTerminal`], are
@@ -355,9 +356,6 @@ where
                 self.frontier_returned += 1;
                 return self.draws.returned();
             }
-            // Drawn and checked a batch of the checker at a time: a draw's law does not depend
-            // on the bound (the informed set is tested when it is handed out), only on the
-            // frontier, whose change drops the draws held.
             let Self {
                 draws,
                 terminals,
@@ -367,16 +365,31 @@ where
                 ..
             } = self;
             let parts = (terminals.as_slice(), frontier.as_slice(), *log_scales);
-            let mut drawn = 0;
-            let valid = draws.next_checked(validity, out, |rng, x| {
-                if let Some(slot) = centres.get_mut(drawn) {
-                    *slot = draw_near(parts, space, rng, x);
-                }
-                drawn += 1;
-                Ok(())
-            })?;
-            match centres.get(draws.last_index()).copied().flatten() {
-                Some(centre) if self.draws.set.contains(space, cost, out) => {
+            let (centre, inside, valid) = if validity.batch_width() <= 1 {
+                // One at a time: checked only inside the informed set, since a draw outside
+                // it is turned down anyway.
+                let centre = draw_near(parts, space, draws.rng(), out);
+                draws.own_counters().drawn += 1;
+                let inside = centre.is_some() && draws.set.contains(space, cost, out);
+                (centre, inside, inside && draws.check(validity, out))
+            } else {
+                // Drawn and checked a batch of the checker at a time: a draw's law does not
+                // depend on the bound (the informed set is tested when it is handed out), only
+                // on the frontier, whose change drops the draws held.
+                let mut drawn = 0;
+                let valid = draws.next_checked(validity, out, |rng, x| {
+                    if let Some(slot) = centres.get_mut(drawn) {
+                        *slot = draw_near(parts, space, rng, x);
+                    }
+                    drawn += 1;
+                    Ok(())
+                })?;
+                let centre = centres.get(draws.last_index()).copied().flatten();
+                let inside = centre.is_some() && draws.set.contains(space, cost, out);
+                (centre, inside, valid)
+            };
+            match centre {
+                Some(centre) if inside => {
                     if valid {
                         self.drew_last = true;
                         self.frontier_returned += u64::from(centre == Centre::Frontier);

@@ -316,35 +316,43 @@ fn blocked_lines_leave_the_gaussian_draws_and_no_frontier_leaves_the_sequence() 
     );
 }
 
-/// A world of batch width eight that records the sizes of the batches it decides.
-struct EightWide(World, std::cell::RefCell<Vec<usize>>);
+/// A world of the given batch width that records the sizes of the batches it decides (1 for
+/// a state tested alone).
+struct Recording {
+    world: World,
+    width: usize,
+    sizes: std::cell::RefCell<Vec<usize>>,
+}
 
-impl StateValidity for EightWide {
+impl StateValidity for Recording {
     fn is_valid(&self, s: &[f64]) -> bool {
-        self.1.borrow_mut().push(1);
-        self.0.is_valid(s)
+        self.sizes.borrow_mut().push(1);
+        self.world.is_valid(s)
     }
     fn batch_width(&self) -> usize {
-        8
+        self.width
     }
     fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
-        self.1.borrow_mut().push(states.len() / dimension);
+        self.sizes.borrow_mut().push(states.len() / dimension);
         for (s, v) in states.chunks_exact(dimension).zip(valid) {
-            *v = self.0.is_valid(s);
+            *v = self.world.is_valid(s);
         }
     }
 }
 
-#[test]
-fn a_batched_checker_decides_the_near_draws_eight_at_a_time() {
+/// The near-terminal draws of 400 requests (half of them near a terminal) with a box over the
+/// goal, against a checker of batch width `width`: the sizes of the checker's calls, the
+/// wrapper's validity checks, and the states it returned near a terminal.
+fn near_draws_with_width(width: usize) -> (Vec<usize>, u64, u64) {
     let (space, start, goal) = square();
-    // A box over the goal (x from 0.6): draws near it are invalid, near the start valid.
-    let blocked = || {
-        World::in_space(&space)
-            .with_obstacle(AxisBox::new(vec![0.9, 0.5], vec![0.6, 1.0]))
-            .unwrap()
+    let world = World::in_space(&space)
+        .with_obstacle(AxisBox::new(vec![0.9, 0.5], vec![0.6, 1.0]))
+        .unwrap();
+    let checker = Recording {
+        world,
+        width,
+        sizes: Default::default(),
     };
-    let checker = EightWide(blocked(), Default::default());
     let mut near = NearTerminals::new(UniformSampler::new(2), &space, &start, &[goal], 2)
         .unwrap()
         .with_fraction(0.5)
@@ -356,21 +364,37 @@ fn a_batched_checker_decides_the_near_draws_eight_at_a_time() {
     for _ in 0..400 {
         near.sample(&space, &checker, CostBound::Unbounded, &Never, &mut x)
             .unwrap();
-        if Sampler::<RealVectorSpace, EightWide>::last_origin(&near) == SampleOrigin::NearTerminal {
+        if Sampler::<RealVectorSpace, Recording>::last_origin(&near) == SampleOrigin::NearTerminal {
             returned_near += 1;
-            // Handed out only when valid: near the start, never in the blocked half.
+            // Handed out only when valid: near the start, never in the box (x from 0.6).
             assert!(x[0] < 0.6, "{x:?}");
         }
     }
+    let c = Sampler::<RealVectorSpace, Recording>::counters(&near);
+    assert_eq!(c.near_terminals, returned_near);
+    (checker.sizes.into_inner(), c.validity_checks, returned_near)
+}
+
+#[test]
+fn a_batched_checker_decides_the_near_draws_eight_at_a_time() {
+    let (sizes, checks, returned_near) = near_draws_with_width(8);
     // The wrapper's draws were all decided in calls of eight; no state was tested alone.
-    let sizes = checker.1.borrow();
     assert!(
         !sizes.is_empty() && sizes.iter().all(|&n| n == 8),
         "{sizes:?}"
     );
-    let c = Sampler::<RealVectorSpace, EightWide>::counters(&near);
-    assert_eq!(c.validity_checks, 8 * sizes.len() as u64);
-    assert_eq!(c.near_terminals, returned_near);
+    assert_eq!(checks, 8 * sizes.len() as u64);
     // About half of the half of the requests answered near a terminal are near the start.
+    assert!((60..140).contains(&returned_near), "{returned_near}");
+}
+
+#[test]
+fn a_checker_of_width_one_tests_the_near_draws_one_by_one() {
+    let (sizes, checks, returned_near) = near_draws_with_width(1);
+    assert!(
+        !sizes.is_empty() && sizes.iter().all(|&n| n == 1),
+        "{sizes:?}"
+    );
+    assert_eq!(checks, sizes.len() as u64);
     assert!((60..140).contains(&returned_near), "{returned_near}");
 }
