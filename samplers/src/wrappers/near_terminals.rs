@@ -123,7 +123,7 @@ impl<T> NearTerminals<T> {
     /// Share of the draws centred on a frontier state while the planner has sent some (the
     /// rest stay centred on the terminals, which they must still join).
     /// A constant, not tuned by any shipped measurement.
-    pub const FRONTIER_SHARE: f64 = NEAR_FRONTIER_SHARE;
+    pub const FRONTIER_SHARE: f64 = 0.5;
 
     /// `inner` with states near `start` and `goals` in `space`, seeded with `seed` (its own
     /// generator; `inner` keeps its own), at the default fraction and scales.
@@ -252,7 +252,7 @@ fn draw_near<S: StateSpace + ?Sized>(
     // No draw for the choice without frontier states: the sequence stays the one of a
     // wrapper that never heard of them.
     let states = frontier.len() / n;
-    let (centre, around) = if states > 0 && rng.random_bool(NEAR_FRONTIER_SHARE) {
+    let (centre, around) = if states > 0 && rng.random_bool(NearTerminals::<()>::FRONTIER_SHARE) {
         let k = rng.random_range(0..states);
         (Centre::Frontier, &frontier[k * n..(k + 1) * n])
     } else {
@@ -286,9 +286,6 @@ impl<T> NearTerminals<T> {
         false
     }
 }
-
-/// [`NearTerminals::FRONTIER_SHARE`], for the draws.
-const NEAR_FRONTIER_SHARE: f64 = 0.5;
 
 /// What a draw of [`NearTerminals`] was centred on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
