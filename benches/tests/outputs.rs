@@ -173,6 +173,17 @@ fn the_log_follows_the_grammar_and_holds_every_run() {
                 .iter()
                 .any(|(k, v)| k == "batch_size" && v == "50")
         );
+        // Each planner lists its own parameters, as OMPL's logs do: none of RRT-Connect's or
+        // AORRTC's for EIT*, and none of the estimated informed set's (MIT*'s).
+        let foreign = |k: &str| k == "range" || k.starts_with("rrt_") || k.starts_with("aorrtc_");
+        assert!(
+            eit.common.iter().all(|(k, _)| !foreign(k)),
+            "{:?}",
+            eit.common
+        );
+        assert!(eit.common.iter().all(|(k, _)| !k.starts_with("eis_")));
+        let mit = &log.planners[0];
+        assert!(mit.common.iter().any(|(k, _)| k == "eis_expansion_rule"));
     }
 }
 
@@ -257,9 +268,7 @@ fn the_database_has_planner_arenas_schema_and_appends() {
         )
         .unwrap();
     assert!(
-        settings.starts_with(
-            "accelerated_checks = true\n;aorrtc_resamples = 1000\n;aorrtc_simplify = true\n;batch_growth = 0\n;batch_size = 50\n;"
-        ),
+        settings.starts_with("accelerated_checks = true\n;batch_growth = 0\n;batch_size = 50\n;"),
         "{settings:?}"
     );
     drop(db);

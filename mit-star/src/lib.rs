@@ -71,6 +71,7 @@
 mod builder;
 mod components;
 mod configuration;
+mod configuration_settings;
 mod counters;
 mod effective_parameters;
 mod error;

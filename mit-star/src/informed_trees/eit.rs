@@ -588,8 +588,16 @@ where
         c
     }
 
+    /// The parameters this planner reads: those of its configuration when its name is one's
+    /// label ([`Configuration::settings`](crate::Configuration::settings)), else every one.
     fn settings(&self) -> Vec<(String, String)> {
-        self.parameters.settings()
+        match crate::Configuration::ALL
+            .into_iter()
+            .find(|c| c.label() == self.name)
+        {
+            Some(configuration) => configuration.settings(&self.parameters),
+            None => self.parameters.settings(),
+        }
     }
 
     fn snapshot(&self) -> Option<crate::Snapshot> {

@@ -494,7 +494,7 @@ where
     }
 
     fn settings(&self) -> Vec<(String, String)> {
-        self.core.settings(Vec::new())
+        self.core.settings(self.core.connect_switches())
     }
 
     fn snapshot(&self) -> Option<Snapshot> {

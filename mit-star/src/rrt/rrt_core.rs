@@ -222,6 +222,19 @@ where
         true
     }
 
+    /// RRT-Connect's switches (`rrt_*`), for the settings of RRT-Connect and of the planners
+    /// built on it.
+    pub(crate) fn connect_switches(&self) -> Vec<(&'static str, String)> {
+        let p = &self.parameters;
+        vec![
+            ("rrt_valid_samples", p.rrt_valid_samples.to_string()),
+            ("rrt_dynamic_domain", p.rrt_dynamic_domain.to_string()),
+            ("rrt_balance", p.rrt_balance.to_string()),
+            ("rrt_halton", p.rrt_halton.to_string()),
+            ("rrt_halton_shift", p.rrt_halton_shift.to_string()),
+        ]
+    }
+
     /// Cost of the best solution (`∞` if none).
     pub(crate) fn best_cost(&self) -> f64 {
         self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)
@@ -256,7 +269,8 @@ where
         )
     }
 
-    /// The settings: the range, then `extra`, then the resolution, seed and certification.
+    /// The settings: the range, then `extra`, then the resolution, seed, certification and
+    /// prepared checks.
     pub(crate) fn settings(&self, extra: Vec<(&str, String)>) -> Vec<(String, String)> {
         let p = &self.parameters;
         let certification = p.certification.unwrap_or(1);
@@ -266,6 +280,7 @@ where
                 ("resolution", p.resolution.to_string()),
                 ("seed", p.seed.to_string()),
                 ("certification", certification.to_string()),
+                ("accelerated_checks", p.accelerated_checks.to_string()),
             ])
             .map(|(k, v)| (k.to_owned(), v))
             .collect()

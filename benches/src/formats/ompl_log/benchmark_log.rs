@@ -193,8 +193,10 @@ impl BenchmarkLog {
                     .problem
                     .effective_parameters(spec.configuration(), &parameters)
                     .unwrap_or(parameters);
-                let mut common: Vec<(String, String)> = parameters
-                    .settings()
+                // The planner's own parameters, as OMPL lists each planner's properties.
+                let mut common: Vec<(String, String)> = spec
+                    .configuration()
+                    .settings(&parameters)
                     .into_iter()
                     .map(|(k, v)| match k.as_str() {
                         "seed" => (k, format!("{}+i", experiment.seed)),
