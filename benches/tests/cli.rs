@@ -266,6 +266,21 @@ fn listings() {
     assert!(text.contains("wall_width"));
     let text = succeeded(&["planners"]);
     assert!(text.contains("mit-star-eis") && text.contains("batch_size"));
+    // Each parameter names the planners that read it.
+    let line = |name: &str| {
+        text.lines()
+            .find(|l| l.trim_start().starts_with(&format!("{name} ")))
+            .unwrap_or_else(|| panic!("no line for {name}"))
+            .to_owned()
+    };
+    assert!(
+        line("rrt_balance").ends_with("rrt-connect, aorrtc"),
+        "{}",
+        line("rrt_balance")
+    );
+    assert!(line("batch_size").ends_with("the EIT* family"));
+    assert!(line("seed").ends_with("every planner"));
+    assert!(line("eis_expansion_rule").ends_with("mit-star, mit-star-eis"));
     assert!(succeeded(&["experiments", "--print", "smoke"]).contains("[[problems]]"));
 }
 

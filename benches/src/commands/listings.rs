@@ -97,7 +97,7 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
             "EIT* with MIT*'s suspension rule (reverse search yields while the forward queue is empty); not in the paper"
         }
         Configuration::RrtConnect => {
-            "bidirectional trees, extensions of at most `range`, first solution (parameters: range, resolution, seed, certification)"
+            "bidirectional trees, extensions of at most `range`, first solution (parameters: range and the rrt_* switches)"
         }
         Configuration::Aorrtc => {
             "RRT-Connect's first solution, then cost-bounded bidirectional searches with informed samples, each path simplified (parameters: range, aorrtc_simplify, aorrtc_resamples)"
@@ -119,12 +119,54 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
         say!("  {:<14} {:<12} {}", c.name(), c.label(), parts(c));
     }
     say!(
-        "\nParameters (override with `--set key=value`; `seed` and `resolution` are set by the harness):\n"
+        "\nParameters (override with `--set key=value`; `seed` and `resolution` are set by the harness), their defaults and the planners that read them:\n"
     );
     for (k, v) in Parameters::default().settings() {
-        say!("  {k:<36} {v}");
+        say!("  {k:<36} {v:<12} {}", readers(&k));
     }
     Ok(CommandOutcome::Success)
+}
+
+/// The configurations that read parameter `name`
+/// ([`Configuration::reads`](mit_star::Configuration::reads)), named shortly: `every planner`,
+/// or `the EIT* family` (MIT*, EIT*, their ablations, BIT*, ABIT*, AIT*) with the others that
+/// read it or the members that do not, or their names.
+fn readers(name: &str) -> String {
+    let readers: Vec<Configuration> = Configuration::ALL
+        .into_iter()
+        .filter(|c| c.reads(name))
+        .collect();
+    let rrt = [
+        Configuration::RrtConnect,
+        Configuration::Aorrtc,
+        Configuration::InformedRrtStar,
+    ];
+    let family: Vec<Configuration> = Configuration::ALL
+        .into_iter()
+        .filter(|c| !rrt.contains(c))
+        .collect();
+    let names = |cs: &mut dyn Iterator<Item = Configuration>| -> String {
+        cs.map(|c| c.name()).collect::<Vec<_>>().join(", ")
+    };
+    let missing: Vec<Configuration> = family
+        .iter()
+        .copied()
+        .filter(|c| !readers.contains(c))
+        .collect();
+    if readers.len() == Configuration::ALL.len() {
+        "every planner".into()
+    } else if missing.is_empty() {
+        let others = names(&mut readers.iter().copied().filter(|c| rrt.contains(c)));
+        if others.is_empty() {
+            "the EIT* family".into()
+        } else {
+            format!("the EIT* family, {others}")
+        }
+    } else if missing.len() <= 2 && readers.iter().all(|c| family.contains(c)) {
+        format!("the EIT* family but {}", names(&mut missing.into_iter()))
+    } else {
+        names(&mut readers.into_iter())
+    }
 }
 
 /// Options of `mit-star experiments`.
