@@ -152,13 +152,18 @@ impl Configuration {
 mod tests {
     use super::*;
 
-    #[test]
-    fn every_name_is_a_parameter_and_every_parameter_is_read() {
-        let names: Vec<String> = Parameters::default()
+    /// Every parameter's name.
+    fn parameter_names() -> Vec<String> {
+        Parameters::default()
             .settings()
             .into_iter()
             .map(|(k, _)| k)
-            .collect();
+            .collect()
+    }
+
+    #[test]
+    fn every_name_is_a_parameter_and_every_parameter_is_read() {
+        let names = parameter_names();
         for c in Configuration::ALL {
             for group in c.parameter_groups() {
                 for name in group {
@@ -181,11 +186,7 @@ mod tests {
     #[test]
     fn planners_report_only_parameters_they_read() {
         let problem = problems::ObstacleFree::new(2).build().unwrap();
-        let names: Vec<String> = Parameters::default()
-            .settings()
-            .into_iter()
-            .map(|(k, _)| k)
-            .collect();
+        let names = parameter_names();
         for c in Configuration::ALL {
             let planner = crate::build_planner(c, &problem, &Parameters::default()).unwrap();
             let reported = planner.settings();
