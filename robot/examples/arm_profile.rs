@@ -5,7 +5,8 @@
 //! cargo run --release -p robot --example arm_profile -- target 100 rrt-connect 3
 //! ```
 //!
-//! Plans the named configuration (`rrt-connect` with range 1, `mit-star`, `eit-star`, …) to
+//! Plans the named configuration (`rrt-connect` and `aorrtc` with range 1 unless `range=` is
+//! given, `mit-star`, `eit-star`, …) to
 //! its first solution on the first `N` problems of each of the five scenes under `FOLDER`,
 //! `SEEDS` seeds each, one thread (then parameters as `name=value`, as `anytime_arm` takes
 //! them: `rrt_balance=false`, `lazy_certification=false`, `connection=k-nearest`, …), and
@@ -90,7 +91,14 @@ fn main() {
             for (i, problem) in problems.iter().enumerate() {
                 let parameters = Parameters {
                     seed: seed * 1000 + i as u64,
-                    range: (configuration == Configuration::RrtConnect).then_some(1.0),
+                    // VAMP's range for RRT-Connect wherever it runs (AORRTC's first search, a
+                    // warm start), as `anytime_arm` and the `panda-mbm` experiment give it,
+                    // unless `range=` sets another.
+                    range: base.range.or((matches!(
+                        configuration,
+                        Configuration::RrtConnect | Configuration::Aorrtc
+                    ) || base.warm_start)
+                        .then_some(1.0)),
                     ..base.clone()
                 };
                 let built = Instant::now();
