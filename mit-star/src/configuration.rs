@@ -106,6 +106,16 @@ impl Configuration {
         self != Self::RrtConnect
     }
 
+    /// `true` for the planners of the EIT* family — MIT*, EIT*, their ablations, BIT*, ABIT*
+    /// and AIT*, the [`Eit`] skeleton's batches and searches — and `false` for the tree
+    /// planners RRT-Connect, AORRTC and Informed RRT*.
+    pub fn is_informed_tree(self) -> bool {
+        !matches!(
+            self,
+            Self::RrtConnect | Self::Aorrtc | Self::InformedRrtStar
+        )
+    }
+
     /// The paper's label (`MIT*`, `EIT*`, `MIT*-AS`, …).
     pub fn label(self) -> &'static str {
         match self {

@@ -87,14 +87,7 @@ impl Configuration {
             Self::InformedRrtStar => groups.push(INFORMED_RRT_STAR),
             _ => groups.push(INFORMED_TREES),
         }
-        if !matches!(
-            self,
-            Self::RrtConnect
-                | Self::Aorrtc
-                | Self::InformedRrtStar
-                | Self::BitStar
-                | Self::AbitStar
-        ) {
+        if self.is_informed_tree() && !matches!(self, Self::BitStar | Self::AbitStar) {
             groups.push(REVERSE_SEARCH);
         }
         if matches!(self, Self::MitStar | Self::MitStarAs) {

@@ -132,40 +132,24 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
 /// or `the EIT* family` (MIT*, EIT*, their ablations, BIT*, ABIT*, AIT*) with the others that
 /// read it or the members that do not, or their names.
 fn readers(name: &str) -> String {
-    let readers: Vec<Configuration> = Configuration::ALL
-        .into_iter()
-        .filter(|c| c.reads(name))
-        .collect();
-    let rrt = [
-        Configuration::RrtConnect,
-        Configuration::Aorrtc,
-        Configuration::InformedRrtStar,
-    ];
-    let family: Vec<Configuration> = Configuration::ALL
-        .into_iter()
-        .filter(|c| !rrt.contains(c))
-        .collect();
-    let names = |cs: &mut dyn Iterator<Item = Configuration>| -> String {
-        cs.map(|c| c.name()).collect::<Vec<_>>().join(", ")
+    let names = |family: bool, reading: bool| {
+        let cs = Configuration::ALL
+            .into_iter()
+            .filter(|c| c.is_informed_tree() == family && c.reads(name) == reading);
+        cs.map(Configuration::name).collect::<Vec<_>>()
     };
-    let missing: Vec<Configuration> = family
+    // The family's members that do not read it, and the other planners that do.
+    let (missing, others) = (names(true, false), names(false, true));
+    let outside = Configuration::ALL
         .iter()
-        .copied()
-        .filter(|c| !readers.contains(c))
-        .collect();
-    if readers.len() == Configuration::ALL.len() {
-        "every planner".into()
-    } else if missing.is_empty() {
-        let others = names(&mut readers.iter().copied().filter(|c| rrt.contains(c)));
-        if others.is_empty() {
-            "the EIT* family".into()
-        } else {
-            format!("the EIT* family, {others}")
-        }
-    } else if missing.len() <= 2 && readers.iter().all(|c| family.contains(c)) {
-        format!("the EIT* family but {}", names(&mut missing.into_iter()))
-    } else {
-        names(&mut readers.into_iter())
+        .filter(|c| !c.is_informed_tree())
+        .count();
+    match (missing.len(), others.len()) {
+        (0, 0) => "the EIT* family".into(),
+        (0, n) if n == outside => "every planner".into(),
+        (0, _) => format!("the EIT* family, {}", others.join(", ")),
+        (1..=2, 0) => format!("the EIT* family but {}", missing.join(", ")),
+        _ => [names(true, true), others].concat().join(", "),
     }
 }
 
