@@ -494,7 +494,8 @@ where
     }
 
     fn settings(&self) -> Vec<(String, String)> {
-        self.core.settings(self.core.connect_switches())
+        self.core
+            .settings(crate::Configuration::RrtConnect, Vec::new())
     }
 
     fn snapshot(&self) -> Option<Snapshot> {

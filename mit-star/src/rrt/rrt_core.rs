@@ -222,19 +222,6 @@ where
         true
     }
 
-    /// RRT-Connect's switches (`rrt_*`), for the settings of RRT-Connect and of the planners
-    /// built on it.
-    pub(crate) fn connect_switches(&self) -> Vec<(&'static str, String)> {
-        let p = &self.parameters;
-        vec![
-            ("rrt_valid_samples", p.rrt_valid_samples.to_string()),
-            ("rrt_dynamic_domain", p.rrt_dynamic_domain.to_string()),
-            ("rrt_balance", p.rrt_balance.to_string()),
-            ("rrt_halton", p.rrt_halton.to_string()),
-            ("rrt_halton_shift", p.rrt_halton_shift.to_string()),
-        ]
-    }
-
     /// Cost of the best solution (`∞` if none).
     pub(crate) fn best_cost(&self) -> f64 {
         self.solution.as_ref().map_or(f64::INFINITY, |s| s.cost)
@@ -269,20 +256,23 @@ where
         )
     }
 
-    /// The settings: the range, then `extra`, then the resolution, seed, certification and
-    /// prepared checks.
-    pub(crate) fn settings(&self, extra: Vec<(&str, String)>) -> Vec<(String, String)> {
-        let p = &self.parameters;
-        let certification = p.certification.unwrap_or(1);
-        std::iter::once(("range", self.range.to_string()))
-            .chain(extra)
-            .chain([
-                ("resolution", p.resolution.to_string()),
-                ("seed", p.seed.to_string()),
-                ("certification", certification.to_string()),
-                ("accelerated_checks", p.accelerated_checks.to_string()),
-            ])
-            .map(|(k, v)| (k.to_owned(), v))
-            .collect()
+    /// The settings of the planner of `configuration` built on this core: the parameters it
+    /// reads ([`Configuration::settings`](crate::Configuration::settings)), with the range and certification as they run,
+    /// then `extra` (the planner's own counts).
+    pub(crate) fn settings(
+        &self,
+        configuration: crate::Configuration,
+        extra: Vec<(&str, String)>,
+    ) -> Vec<(String, String)> {
+        let mut settings = configuration.settings(&self.parameters);
+        for (name, value) in &mut settings {
+            match name.as_str() {
+                "range" => *value = self.range.to_string(),
+                "certification" => *value = self.certification().to_string(),
+                _ => {}
+            }
+        }
+        settings.extend(extra.into_iter().map(|(k, v)| (k.to_owned(), v)));
+        settings
     }
 }

@@ -389,16 +389,14 @@ where
     }
 
     fn settings(&self) -> Vec<(String, String)> {
-        let p = &self.connect.core.parameters;
-        let mut settings = self.connect.core.connect_switches();
-        settings.extend([
-            ("aorrtc_simplify", p.aorrtc_simplify.to_string()),
-            ("aorrtc_resamples", p.aorrtc_resamples.to_string()),
-            ("searches", self.searches.to_string()),
-            ("simplified_solutions", self.simplified.to_string()),
-            ("polished_solutions", self.polish.count().to_string()),
-        ]);
-        self.connect.core.settings(settings)
+        self.connect.core.settings(
+            crate::Configuration::Aorrtc,
+            vec![
+                ("searches", self.searches.to_string()),
+                ("simplified_solutions", self.simplified.to_string()),
+                ("polished_solutions", self.polish.count().to_string()),
+            ],
+        )
     }
 
     fn snapshot(&self) -> Option<Snapshot> {

@@ -223,12 +223,8 @@ where
     }
 
     fn settings(&self) -> Vec<(String, String)> {
-        let p = &self.core.parameters;
-        self.core.settings(vec![
-            ("goal_bias", p.goal_bias.to_string()),
-            ("rrt_rewire_factor", p.rrt_rewire_factor.to_string()),
-            ("pruning", p.pruning.to_string()),
-        ])
+        self.core
+            .settings(crate::Configuration::InformedRrtStar, Vec::new())
     }
 
     fn snapshot(&self) -> Option<Snapshot> {
