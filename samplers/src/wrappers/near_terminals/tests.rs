@@ -341,9 +341,11 @@ impl StateValidity for Recording {
 }
 
 /// The near-terminal draws of 400 requests (half of them near a terminal) with a box over the
-/// goal, against a checker of batch width `width`: the sizes of the checker's calls, the
-/// wrapper's validity checks, and the states it returned near a terminal.
-fn near_draws_with_width(width: usize) -> (Vec<usize>, u64, u64) {
+/// goal, against a checker of batch width `width`: checks that every call the checker got was
+/// of `width` states and that the wrapper counted each state checked, and returns how many
+/// states it handed out near a terminal — about half of the half of the requests answered
+/// near a terminal are near the start, and only those are valid.
+fn near_draws_with_width(width: usize) -> u64 {
     let (space, start, goal) = square();
     let world = World::in_space(&space)
         .with_obstacle(AxisBox::new(vec![0.9, 0.5], vec![0.6, 1.0]))
@@ -372,29 +374,23 @@ fn near_draws_with_width(width: usize) -> (Vec<usize>, u64, u64) {
     }
     let c = Sampler::<RealVectorSpace, Recording>::counters(&near);
     assert_eq!(c.near_terminals, returned_near);
-    (checker.sizes.into_inner(), c.validity_checks, returned_near)
+    let sizes = checker.sizes.into_inner();
+    assert!(
+        !sizes.is_empty() && sizes.iter().all(|&n| n == width),
+        "{sizes:?}"
+    );
+    assert_eq!(c.validity_checks, (width * sizes.len()) as u64);
+    assert!((60..140).contains(&returned_near), "{returned_near}");
+    returned_near
 }
 
 #[test]
 fn a_batched_checker_decides_the_near_draws_eight_at_a_time() {
-    let (sizes, checks, returned_near) = near_draws_with_width(8);
-    // The wrapper's draws were all decided in calls of eight; no state was tested alone.
-    assert!(
-        !sizes.is_empty() && sizes.iter().all(|&n| n == 8),
-        "{sizes:?}"
-    );
-    assert_eq!(checks, 8 * sizes.len() as u64);
-    // About half of the half of the requests answered near a terminal are near the start.
-    assert!((60..140).contains(&returned_near), "{returned_near}");
+    // All in calls of eight: no state was tested alone.
+    near_draws_with_width(8);
 }
 
 #[test]
 fn a_checker_of_width_one_tests_the_near_draws_one_by_one() {
-    let (sizes, checks, returned_near) = near_draws_with_width(1);
-    assert!(
-        !sizes.is_empty() && sizes.iter().all(|&n| n == 1),
-        "{sizes:?}"
-    );
-    assert_eq!(checks, sizes.len() as u64);
-    assert!((60..140).contains(&returned_near), "{returned_near}");
+    near_draws_with_width(1);
 }
