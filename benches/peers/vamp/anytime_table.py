@@ -2,7 +2,7 @@
 """Per-scene anytime table: VAMP's AORRTC (vamp_anytime's CSV) beside mit-star's planners
 (anytime_arm's CSV, `csv=FILE`), on the problems both ran.
 
-Usage: python3 anytime_table.py VAMP.csv OURS.csv [OURS.csv ...]
+Usage: python3 anytime_table.py [--digits=N] [--first-paths=FIRST.csv] VAMP.csv OURS.csv [OURS.csv ...]
 
 Each of our files may be given as `LABEL=OURS.csv`: its planners are then shown as LABEL (for
 runs of one configuration with different parameters, e.g. `"MIT* + warm + simplify=mit.csv"`).
@@ -12,6 +12,13 @@ Per scene and planner: problems, median time to the first solution (ms), and med
 infinitely long. VAMP's cost at time T is the cost of its run with the largest iteration limit
 that ended within T (see vamp_anytime.cc); its first-solution time is that of the smallest
 iteration limit that solved.
+
+`--digits=N` prints the costs with N decimals (2 by default). `--first-paths=FIRST.csv`
+(vamp_anytime's output with `VAMP_FIRST_PATHS=1`: the time VAMP's default simplification takes
+on RRT-Connect's first path, per problem) adds, per scene, VAMP's median first-solution time,
+the median of that simplification, and the median per problem of the first-solution time less
+the simplification: VAMP's AORRTC simplifies a path before returning it, so its first-solution
+time includes that simplification.
 """
 import csv
 import math
@@ -60,9 +67,37 @@ def our_rows(arguments):
     return out
 
 
+def first_paths(path, vamp, scenes):
+    """Per scene: VAMP's first-solution time, its simplification's, and the first less it."""
+    simplify = {}
+    for row in csv.DictReader(open(path)):
+        key = (row["scene"].removesuffix("_panda"), int(row["index"]))
+        simplify[key] = float(row["simplify_us"]) / 1e3
+    keys = [k for k in vamp if k in simplify and math.isfinite(vamp[k][0])]
+    print("\n| scene | VAMP AORRTC t_first (ms) | its simplification (ms) | t_first less it (ms) |")
+    print("|---|---|---|---|")
+    for scene in scenes + ["all"]:
+        ks = [k for k in keys if scene in ("all", k[0])]
+        cols = (
+            median([vamp[k][0] for k in ks]),
+            median([simplify[k] for k in ks]),
+            median([vamp[k][0] - simplify[k] for k in ks]),
+        )
+        print(f"| {scene} | " + " | ".join(f"{c:.2f}" for c in cols) + " |")
+
+
 def main():
-    vamp = vamp_rows(sys.argv[1])
-    ours = our_rows(sys.argv[2:])
+    options = {}
+    arguments = []
+    for argument in sys.argv[1:]:
+        name, _, value = argument.partition("=")
+        if name in ("--digits", "--first-paths"):
+            options[name] = value
+        else:
+            arguments.append(argument)
+    digits = int(options.get("--digits", 2))
+    vamp = vamp_rows(arguments[0])
+    ours = our_rows(arguments[1:])
     planners = {"VAMP AORRTC": vamp, **ours}
     common = set(vamp).intersection(*[set(v) for v in ours.values()])
     scenes = sorted({s for s, _ in common})
@@ -74,7 +109,7 @@ def main():
             cols = [median([rows[k][i] for k in keys]) for i in range(4)]
             print(
                 f"| {scene} | {name} | {len(keys)} | {cols[0]:.2f} | "
-                + " | ".join(f"{c:.2f}" for c in cols[1:])
+                + " | ".join(f"{c:.{digits}f}" for c in cols[1:])
                 + " |"
             )
     # Paired: per problem, ours / VAMP's cost at each moment, for each of our planners.
@@ -90,6 +125,8 @@ def main():
             + ", ".join(f"{r:.3f}" for r in ratios)
             + f"; at 1 s better on {better[0]}, worse on {better[1]} of {len(common)}"
         )
+    if "--first-paths" in options:
+        first_paths(options["--first-paths"], vamp, scenes)
 
 
 if __name__ == "__main__":
