@@ -6,12 +6,12 @@
 //! ```
 //!
 //! Plans the named configuration (`rrt-connect` and `aorrtc` with range 1 unless `range=` is
-//! given, `mit-star`, `eit-star`, …) to
-//! its first solution on the first `N` problems of each of the five scenes under `FOLDER`,
-//! `SEEDS` seeds each, one thread (then parameters as `name=value`, as `anytime_arm` takes
-//! them: `rrt_balance=false`, `lazy_certification=false`, `connection=k-nearest`, …), and
-//! prints per scene the median time to the first solution
-//! (construction excluded) with the medians of the planner's counters: configurations tested
+//! given, `mit-star`, `eit-star`, …) to its first solution on the first `N` problems of each
+//! of the five scenes under `FOLDER`, `SEEDS` seeds each, one thread (then parameters as
+//! `name=value`, as `anytime_arm` takes them: `rrt_balance=false`, `lazy_certification=false`,
+//! `connection=k-nearest`, …), and prints per scene the median time to the first solution (the
+//! `solve` call's, construction excluded: AORRTC's includes the shortcuts it makes to its first
+//! path before returning) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
 //! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one
 //! configuration check on the scenes' first problems: scalar, batched eight at a time
