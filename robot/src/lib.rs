@@ -42,6 +42,7 @@
 mod arm_error;
 mod arm_problem;
 mod checking;
+mod lane_f32;
 mod model;
 mod robots;
 mod scenes;

@@ -10,8 +10,8 @@
 //! middle configuration.
 //!
 //! # The walk
-//! Conservative advancement along the edge from its first end. Each batch evaluates eight
-//! configurations ahead of the certified prefix `t`, spaced `2w` apart (`t + w`, `t + 3w`,
+//! Conservative advancement along the edge from its first end. Each batch evaluates a lane's
+//! worth ([`LANES`]: eight, or sixteen with AVX-512) of configurations ahead of the certified prefix `t`, spaced `2w` apart (`t + w`, `t + 3w`,
 //! …); each lane's clearance gives its *certified radius* (`clearance.rs`): how far along the
 //! edge the configuration can move before any sphere could reach an obstacle or another
 //! link. The prefix then runs on through every lane whose piece touches it, and the next
@@ -38,8 +38,8 @@ use crate::checking::local_sweep::EdgeTerms;
 pub const FLOOR: f64 = 1e-5;
 
 /// How far (metres) the fastest sphere may sweep over half a piece of an edge's first batch:
-/// 10 cm, so that on most edges the first eight pieces spread over the whole edge (they are
-/// never wider than a sixteenth of it): a clear edge is certified in a batch or two, and an
+/// 10 cm, so that on most edges the first batch's pieces spread over the whole edge (they are
+/// never wider than `1 / LANES` of it): a clear edge is certified in a batch or two, and an
 /// edge near obstacles learns its clearances all along it at once. Measured on the Panda's
 /// MotionBenchMaker problems against 1 and 3 cm (callgrind instruction counts of RRT-Connect's
 /// and MIT*'s solves: 2–3 % fewer for RRT-Connect, a fifth fewer per certified edge for MIT*).
@@ -62,8 +62,9 @@ const FINAL_USEFUL: f64 = 1.1;
 /// The next spacing's share of the smallest radius met.
 const SPACING: f64 = 0.9;
 
-/// Batches between two polls of the stop condition (a batch is eight configurations: about
-/// the [`STOP_POLL`](validity::STOP_POLL) state checks the grid walks poll after).
+/// Batches between two polls of the stop condition (a batch is eight or sixteen
+/// configurations: about the [`STOP_POLL`](validity::STOP_POLL) state checks the grid walks poll
+/// after, or twice that).
 const POLL_BATCHES: u32 = 4;
 
 /// Buffers of the walk, per clone of the checker.
@@ -151,7 +152,7 @@ impl ArmChecker {
         };
         let (mut t, mut w) = (progress.certified(), progress.cursor());
         // First pieces: the fastest sphere sweeping at most `FIRST_SWEEP` over a half piece,
-        // eight of them spanning at most the edge.
+        // a batch of them spanning at most the edge.
         if !(w > 0.0 && w <= 1.0) {
             w = (FIRST_SWEEP / fastest.max(1e-12)).min(0.5 / LANES as f64);
         }

@@ -7,9 +7,11 @@ use glam::Vec3A;
 use spaces::{StateSpace, Stop};
 use validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity};
 
-use wide::{f32x8, f64x4};
+use wide::f64x4;
 
-use crate::checking::lanes::{LANES, LaneKinematics, Point8, Pose8};
+use crate::checking::lanes::LaneF32;
+
+use crate::checking::lanes::{LANES, LaneKinematics, LanePoint, LanePose};
 use crate::checking::local_sweep::LocalSweep;
 use crate::checking::reachable_obstacles::reachable_obstacles;
 use crate::checking::scratch_cell::ScratchCell;
@@ -38,7 +40,7 @@ pub(crate) struct Shared {
     /// kinematics and of the contact tests (see [`ArmChecker::margin`]).
     pub(crate) margin: f64,
     /// The margin per entry of `links`, in every lane: the growth of a plain check.
-    plain: Vec<f32x8>,
+    plain: Vec<LaneF32>,
     /// Per entry of `links`, per coordinate: the link's lever arm ([`LeverArms`]).
     pub(crate) levers: Vec<f64>,
     /// Per entry of `pairs`, per coordinate: how fast the pair's links can move relative to
@@ -66,16 +68,16 @@ pub(crate) struct Scratch {
     pub(crate) certify: crate::checking::arm_certification::CertifyScratch,
 }
 
-/// The eight-lane checks' buffers: link poses, sphere centres, link bounding-sphere centres
+/// The lane checks' buffers: link poses, sphere centres, link bounding-sphere centres
 /// (and whether a link's sphere centres are placed for the current batch), joint values by
 /// coordinate.
 #[derive(Debug, Clone)]
 pub(crate) struct LaneScratch {
-    pub(crate) poses8: Vec<Pose8>,
-    pub(crate) centers8: Vec<Point8>,
-    pub(crate) bounds8: Vec<Point8>,
+    pub(crate) lane_poses: Vec<LanePose>,
+    pub(crate) lane_centers: Vec<LanePoint>,
+    pub(crate) lane_bounds: Vec<LanePoint>,
     pub(crate) placed: Vec<bool>,
-    pub(crate) q8: Vec<f32x8>,
+    pub(crate) lane_q: Vec<LaneF32>,
     /// The entry of `Shared::links` whose spheres met an obstacle in the last batch that ended
     /// at a contact (`usize::MAX`: none yet): a check that may stop at any contact tests it
     /// first, since consecutive batches (the points of one edge, the extensions of one
@@ -99,8 +101,8 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// that covers the rounding of the `f32` arithmetic, so that a configuration this checker
 /// calls valid is valid in exact arithmetic too (one-sided).
 ///
-/// Forward kinematics places the links in `f32x8` lanes, eight configurations at once (as
-/// VAMP lays out its checks; one configuration uses one lane of the same code, so a single
+/// Forward kinematics places the links in `LaneF32` lanes, [`LANES`] configurations at once (eight,
+/// or sixteen where the CPU has AVX-512: `lane_f32.rs`; as VAMP lays out its checks; one configuration uses one lane of the same code, so a single
 /// check and a batch share one arithmetic); each link with spheres is first tested as one
 /// bounding sphere against each obstacle's bounding sphere and the obstacle itself (broad
 /// phase), and its small spheres only if that hits; self-collision pairs likewise test the two
@@ -111,7 +113,7 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// `a + (b − a)·t` directly, bit for bit the interpolated configurations.
 ///
 /// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width)
-/// 8): a lane drops out of the work once a lane before it is known invalid, and the batch ends
+/// [`LANES`]): a lane drops out of the work once a lane before it is known invalid, and the batch ends
 /// when no lane before the first invalid one is left to decide, so the answer is exactly the
 /// first invalid configuration — the one testing them one by one finds. A check that may end
 /// at any contact ([`StateValidity::any_invalid`], the edge checks) tests first the link that
@@ -182,11 +184,11 @@ impl ArmChecker {
         let margin = MARGIN_FLOOR + MARGIN_PER_METRE * (reach + far);
         let scratch = Scratch {
             lanes: LaneScratch {
-                poses8: vec![Pose8::IDENTITY; fk.link_count()],
-                centers8: vec![[f32x8::ZERO; 3]; fk.sphere_count()],
-                bounds8: vec![[f32x8::ZERO; 3]; links.len()],
+                lane_poses: vec![LanePose::IDENTITY; fk.link_count()],
+                lane_centers: vec![[LaneF32::ZERO; 3]; fk.sphere_count()],
+                lane_bounds: vec![[LaneF32::ZERO; 3]; links.len()],
                 placed: vec![false; links.len()],
-                q8: vec![f32x8::ZERO; dimension],
+                lane_q: vec![LaneF32::ZERO; dimension],
                 last_hit: usize::MAX,
             },
             certify: crate::checking::arm_certification::CertifyScratch::new(
@@ -214,7 +216,7 @@ impl ArmChecker {
                 upper: space.upper().to_vec(),
                 wraps,
                 reachable,
-                plain: vec![f32x8::splat(margin as f32); links.len()],
+                plain: vec![LaneF32::splat(margin as f32); links.len()],
                 links,
                 spheres,
                 pairs,
@@ -283,7 +285,7 @@ impl StateValidity for ArmChecker {
         self.invalid_in(states, dimension, Wanted::Any)
     }
 
-    /// Eight configurations per pass, each lane decided (it leaves the work once found
+    /// [`LANES`] configurations per pass, each lane decided (it leaves the work once found
     /// invalid).
     fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
         let dimension = dimension.max(1);
@@ -329,7 +331,8 @@ impl StateValidity for ArmChecker {
 }
 
 impl ArmChecker {
-    /// An invalid configuration of `states` (the first, or any, as `wanted`), eight at a time.
+    /// An invalid configuration of `states` (the first, or any, as `wanted`), a batch of
+    /// [`LANES`] at a time.
     fn invalid_in(&self, states: &[f64], dimension: usize, wanted: Wanted) -> Option<usize> {
         let dimension = dimension.max(1);
         let s = &*self.shared;
@@ -367,7 +370,7 @@ pub(crate) fn invalid_lanes(
     s: &Shared,
     scratch: &mut LaneScratch,
     (chunk, dimension): (&[f64], usize),
-    grow: &[f32x8],
+    grow: &[LaneF32],
     wanted: Wanted,
 ) -> u32 {
     let count = (chunk.len() / dimension).min(LANES);
@@ -379,7 +382,7 @@ pub(crate) fn invalid_lanes(
     if undecided(invalid, live, wanted) == 0 {
         return invalid;
     }
-    fill_lanes(&mut scratch.q8, chunk, dimension);
+    fill_lanes(&mut scratch.lane_q, chunk, dimension);
     invalid_filled(s, scratch, (live, invalid), grow, wanted)
 }
 
@@ -390,7 +393,7 @@ fn invalid_lanes_on(
     s: &Shared,
     scratch: &mut LaneScratch,
     (segment, fractions): (&Segment, &[f64]),
-    grow: &[f32x8],
+    grow: &[LaneF32],
     wanted: Wanted,
 ) -> u32 {
     let count = fractions.len().min(LANES);
@@ -404,22 +407,23 @@ fn invalid_lanes_on(
     // interpolated configurations bit for bit.
     let mut ts = [fractions[0]; LANES];
     ts[..count].copy_from_slice(&fractions[..count]);
-    let halves = [
-        f64x4::from([ts[0], ts[1], ts[2], ts[3]]),
-        f64x4::from([ts[4], ts[5], ts[6], ts[7]]),
-    ];
+    let quarters: [f64x4; LANES / 4] = std::array::from_fn(|h| {
+        f64x4::from([ts[4 * h], ts[4 * h + 1], ts[4 * h + 2], ts[4 * h + 3]])
+    });
     let mut inside = u32::MAX;
     let (start, delta) = (segment.start(), segment.delta());
-    for (j, q) in scratch.q8.iter_mut().enumerate() {
+    for (j, q) in scratch.lane_q.iter_mut().enumerate() {
         let (x0, d) = (f64x4::splat(start[j]), f64x4::splat(delta[j]));
         let (lo, hi) = (f64x4::splat(s.lower[j]), f64x4::splat(s.upper[j]));
-        let [a, b] = halves.map(|t| x0 + d * t);
-        let within = |x: f64x4| (x.simd_ge(lo) & x.simd_le(hi)).to_bitmask();
-        inside &= within(a) | (within(b) << 4);
-        let (a, b) = (a.to_array(), b.to_array());
-        *q = f32x8::new(std::array::from_fn(|l| {
-            if l < 4 { a[l] as f32 } else { b[l - 4] as f32 }
-        }));
+        let mut values = [0.0_f32; LANES];
+        for (h, t) in quarters.iter().enumerate() {
+            let x = x0 + d * *t;
+            inside &= !(0xf << (4 * h)) | ((x.simd_ge(lo) & x.simd_le(hi)).to_bitmask() << (4 * h));
+            for (v, x) in values[4 * h..4 * h + 4].iter_mut().zip(x.to_array()) {
+                *v = x as f32;
+            }
+        }
+        *q = LaneF32::new(values);
     }
     let invalid = !inside & live;
     if undecided(invalid, live, wanted) == 0 {
@@ -440,21 +444,21 @@ fn undecided(invalid: u32, live: u32, wanted: Wanted) -> u32 {
     }
 }
 
-/// The sphere tests of [`invalid_lanes`] on joint values already in `scratch.q8`: `live` the
+/// The sphere tests of [`invalid_lanes`] on joint values already in `scratch.lane_q`: `live` the
 /// lanes in use, `invalid` those already known invalid (outside the joint limits).
 fn invalid_filled(
     s: &Shared,
     scratch: &mut LaneScratch,
     (live, mut invalid): (u32, u32),
-    grow: &[f32x8],
+    grow: &[LaneF32],
     wanted: Wanted,
 ) -> u32 {
     let LaneScratch {
-        poses8,
-        centers8,
-        bounds8,
+        lane_poses,
+        lane_centers,
+        lane_bounds,
         placed,
-        q8,
+        lane_q,
         last_hit,
     } = scratch;
     let undecided = |invalid: u32| undecided(invalid, live, wanted);
@@ -463,7 +467,7 @@ fn invalid_filled(
     // Links are placed as the tests reach them (in tree order), so that a batch found invalid
     // early skips the rest of the walk. `posed`: links placed so far (in tree order).
     let mut posed = 0;
-    let place8 = |pose: &Pose8, range: &Range<usize>, centers: &mut [Point8]| {
+    let place_lanes = |pose: &LanePose, range: &Range<usize>, centers: &mut [LanePoint]| {
         for (c, sphere) in centers[range.clone()]
             .iter_mut()
             .zip(&s.spheres[range.clone()])
@@ -479,26 +483,26 @@ fn invalid_filled(
     for k in order {
         let (link, range, center, radius) = &s.links[k];
         if *link >= posed {
-            s.lanes.link_poses_in(q8, poses8, posed..*link + 1);
+            s.lanes.link_poses_in(lane_q, lane_poses, posed..*link + 1);
             posed = *link + 1;
         }
-        let pose = &poses8[*link];
+        let pose = &lane_poses[*link];
         let bounding = pose.point(*center);
-        bounds8[k] = bounding;
+        lane_bounds[k] = bounding;
         let grown = grow[k];
-        let bound = f32x8::splat(*radius) + grown;
+        let bound = LaneF32::splat(*radius) + grown;
         let spheres = &s.spheres[range.clone()];
         for obstacle in &s.reachable[k] {
-            if obstacle.collides_spheres8(&bounding, bound) & active == 0 {
+            if obstacle.collides_spheres_lanes(&bounding, bound) & active == 0 {
                 continue;
             }
             if !placed[k] {
-                place8(pose, range, centers8);
+                place_lanes(pose, range, lane_centers);
                 placed[k] = true;
             }
-            for (c, sphere) in centers8[range.clone()].iter().zip(spheres) {
-                let radius = f32x8::splat(sphere.1) + grown;
-                let hit = obstacle.collides_spheres8(c, radius);
+            for (c, sphere) in lane_centers[range.clone()].iter().zip(spheres) {
+                let radius = LaneF32::splat(sphere.1) + grown;
+                let hit = obstacle.collides_spheres_lanes(c, radius);
                 if hit & active != 0 {
                     invalid |= hit & active;
                     active = undecided(invalid);
@@ -513,9 +517,9 @@ fn invalid_filled(
     for &(a, b) in &s.pairs {
         let (la, lb) = (&s.links[a], &s.links[b]);
         let grown = grow[a] + grow[b];
-        let reach = f32x8::splat(la.3 + lb.3) + grown;
-        let bound_b = bounds8[b];
-        if distance_squared(&bounds8[a], &bound_b)
+        let reach = LaneF32::splat(la.3 + lb.3) + grown;
+        let bound_b = lane_bounds[b];
+        if distance_squared(&lane_bounds[a], &bound_b)
             .simd_le(reach * reach)
             .to_bitmask()
             & active
@@ -525,16 +529,16 @@ fn invalid_filled(
         }
         for (k, l) in [(a, la), (b, lb)] {
             if !placed[k] {
-                place8(&poses8[l.0], &l.1, centers8);
+                place_lanes(&lane_poses[l.0], &l.1, lane_centers);
                 placed[k] = true;
             }
         }
         let (spheres_a, spheres_b) = (&s.spheres[la.1.clone()], &s.spheres[lb.1.clone()]);
-        let (centers_a, centers_b) = (&centers8[la.1.clone()], &centers8[lb.1.clone()]);
+        let (centers_a, centers_b) = (&lane_centers[la.1.clone()], &lane_centers[lb.1.clone()]);
         // Each sphere of the first link against the second's bounding sphere, then its
         // spheres.
         for (ca, sa) in centers_a.iter().zip(spheres_a) {
-            let near = f32x8::splat(sa.1 + lb.3) + grown;
+            let near = LaneF32::splat(sa.1 + lb.3) + grown;
             if distance_squared(ca, &bound_b)
                 .simd_le(near * near)
                 .to_bitmask()
@@ -544,7 +548,7 @@ fn invalid_filled(
                 continue;
             }
             for (cb, sb) in centers_b.iter().zip(spheres_b) {
-                let r = f32x8::splat(sa.1 + sb.1) + grown;
+                let r = LaneF32::splat(sa.1 + sb.1) + grown;
                 let hit = distance_squared(ca, cb).simd_le(r * r).to_bitmask();
                 if hit & active != 0 {
                     invalid |= hit & active;
@@ -561,7 +565,7 @@ fn invalid_filled(
 
 /// Per lane, the squared distance between the two points.
 #[inline]
-pub(crate) fn distance_squared(a: &Point8, b: &Point8) -> f32x8 {
+pub(crate) fn distance_squared(a: &LanePoint, b: &LanePoint) -> LaneF32 {
     let (x, y, z) = (a[0] - b[0], a[1] - b[1], a[2] - b[2]);
     x * x + y * y + z * z
 }
@@ -581,11 +585,11 @@ pub(crate) fn outside_limits(s: &Shared, chunk: &[f64], dimension: usize) -> u32
 }
 
 /// Writes the joint values of `chunk`'s configurations (at most [`LANES`], `dimension` values
-/// each) into `q8` by coordinate; padding lanes repeat configuration 0.
-pub(crate) fn fill_lanes(q8: &mut [f32x8], chunk: &[f64], dimension: usize) {
+/// each) into `lane_q` by coordinate; padding lanes repeat configuration 0.
+pub(crate) fn fill_lanes(lane_q: &mut [LaneF32], chunk: &[f64], dimension: usize) {
     let count = (chunk.len() / dimension).min(LANES);
-    for (c, v) in q8.iter_mut().enumerate() {
-        *v = f32x8::new(std::array::from_fn(|l| {
+    for (c, v) in lane_q.iter_mut().enumerate() {
+        *v = LaneF32::new(std::array::from_fn(|l| {
             chunk[if l < count { l } else { 0 } * dimension + c] as f32
         }));
     }

@@ -1,5 +1,5 @@
-//! Certified radii: from the clearance of eight configurations of an edge, how far along the
-//! edge each one can move and stay collision-free — conservative advancement, one `f32x8`
+//! Certified radii: from the clearance of a batch of configurations of an edge, how far along the
+//! edge each one can move and stay collision-free — conservative advancement, one `LaneF32`
 //! lane per configuration.
 //!
 //! # The radius
@@ -41,13 +41,13 @@
 //! sphere (then its distance to the solid) is tested before its small spheres, which are
 //! placed only if the bounding sphere comes that close.
 
-use wide::f32x8;
+use crate::checking::lanes::LaneF32;
 
 use crate::checking::arm_checker::{
     LaneScratch, Shared, distance_squared, fill_lanes, outside_limits,
 };
-use crate::checking::lanes::{LANES, Point8};
-use crate::checking::local_sweep::{EdgeTerms, LinkMotion8};
+use crate::checking::lanes::{LANES, LanePoint};
+use crate::checking::local_sweep::{EdgeTerms, LaneMotion};
 
 /// The relative rounding allowed for in a computed rate of approach (its `f32` arithmetic,
 /// the direction's and the velocity's), as a share of the link's speed bound.
@@ -83,34 +83,34 @@ pub(crate) fn certified_radii(
     let live: u32 = (1 << count) - 1;
     let mut refused = outside_limits(s, chunk, n) & live;
     let LaneScratch {
-        poses8,
-        centers8,
-        bounds8,
+        lane_poses,
+        lane_centers,
+        lane_bounds,
         placed,
-        q8,
+        lane_q,
         ..
     } = lanes;
-    fill_lanes(q8, &chunk[..count * n], n);
-    s.lanes.link_poses(q8, poses8);
-    for (bound, (link, _, center, _)) in bounds8.iter_mut().zip(&s.links) {
-        *bound = poses8[*link].point(*center);
+    fill_lanes(lane_q, &chunk[..count * n], n);
+    s.lanes.link_poses(lane_q, lane_poses);
+    for (bound, (link, _, center, _)) in lane_bounds.iter_mut().zip(&s.links) {
+        *bound = lane_poses[*link].point(*center);
     }
     placed.fill(false);
     // Rounded up, as the plain checks' margin.
-    let margin = f32x8::splat((s.margin * (1.0 + 1e-6)) as f32);
-    let floor = f32x8::splat(floor as f32);
+    let margin = LaneF32::splat((s.margin * (1.0 + 1e-6)) as f32);
+    let floor = LaneF32::splat(floor as f32);
     // Per lane, the smallest radius so far: no lane's is sought beyond `useful`.
-    let mut radius = f32x8::splat(useful as f32);
+    let mut radius = LaneF32::splat(useful as f32);
     for (k, (link, range, _, bound_radius)) in s.links.iter().enumerate() {
-        let sweep = f32x8::splat(edge.sweep[k] as f32);
-        let r = f32x8::splat(*bound_radius);
+        let sweep = LaneF32::splat(edge.sweep[k] as f32);
+        let r = LaneF32::splat(*bound_radius);
         // The obstacles that come within the link's lever-arm sweep over a piece of the lane's
         // radius so far (and twice the floor, safe from rounding); the others cannot lower
         // the radius, and a link near none of them needs no more than this.
-        let near = |radius: f32x8, obstacle: &crate::Obstacle| {
+        let near = |radius: LaneF32, obstacle: &crate::Obstacle| {
             let outer = radius * sweep + floor + floor + margin + r;
-            obstacle.may_be_within8(&bounds8[k], outer) & live != 0
-                && obstacle.within8(&bounds8[k], outer) & live != 0
+            obstacle.may_be_within_lanes(&lane_bounds[k], outer) & live != 0
+                && obstacle.within_lanes(&lane_bounds[k], outer) & live != 0
         };
         if !s.reachable[k].iter().any(|o| near(radius, o)) {
             continue;
@@ -118,44 +118,44 @@ pub(crate) fn certified_radii(
         s.local.link_terms(k, edge.delta, &s.levers, terms);
         let (speed, motion) = s
             .local
-            .speed_of(k, poses8, &bounds8[k], (edge.delta, terms));
+            .speed_of(k, lane_poses, &lane_bounds[k], (edge.delta, terms));
         let second = terms.second(k) as f32;
-        let acceleration = f32x8::splat(terms.acceleration(k) as f32);
+        let acceleration = LaneF32::splat(terms.acceleration(k) as f32);
         // How far the link's spheres move over a piece of the lane's radius so far, by the
         // bounds that hold whatever the direction of motion: a sphere clear by this (and
         // twice the floor) cannot lower the radius.
-        let cap = |radius: f32x8| {
-            let local = radius * speed + radius * radius * f32x8::splat(second);
+        let cap = |radius: LaneF32| {
+            let local = radius * speed + radius * radius * LaneF32::splat(second);
             local.min(radius * sweep) + floor + floor
         };
         // What the rate of approach computed in `f32` may miss: its relative rounding, and the
         // error of the link's poses carried through its joint rates.
-        let slack = speed * f32x8::splat(DIRECTION_ROUNDING)
-            + margin * f32x8::splat(4.0 * terms.rates(k) as f32);
-        let LinkMotion8 { velocity, angular } = motion;
-        let mut nearest = f32x8::splat(f32::INFINITY);
+        let slack = speed * LaneF32::splat(DIRECTION_ROUNDING)
+            + margin * LaneF32::splat(4.0 * terms.rates(k) as f32);
+        let LaneMotion { velocity, angular } = motion;
+        let mut nearest = LaneF32::splat(f32::INFINITY);
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
         for obstacle in &s.reachable[k] {
             let limit = cap(radius);
             // Spheres of the link are no closer than its bounding sphere.
             let outer = limit + margin + r;
-            if obstacle.may_be_within8(&bounds8[k], outer) & live == 0
-                || obstacle.within8(&bounds8[k], outer) & live == 0
+            if obstacle.may_be_within_lanes(&lane_bounds[k], outer) & live == 0
+                || obstacle.within_lanes(&lane_bounds[k], outer) & live == 0
             {
                 continue;
             }
             let spheres = &s.spheres[range.clone()];
             if !placed[k] {
-                let pose = &poses8[*link];
-                for (c, sphere) in centers8[range.clone()].iter_mut().zip(spheres) {
+                let pose = &lane_poses[*link];
+                for (c, sphere) in lane_centers[range.clone()].iter_mut().zip(spheres) {
                     *c = pose.point(sphere.0);
                 }
                 placed[k] = true;
             }
-            for (c, sphere) in centers8[range.clone()].iter().zip(spheres) {
-                let local = obstacle.local8(c);
-                let distance = obstacle.distances_local8(&local);
-                let gap = distance - f32x8::splat(sphere.1);
+            for (c, sphere) in lane_centers[range.clone()].iter().zip(spheres) {
+                let local = obstacle.local_lanes(c);
+                let distance = obstacle.distances_local_lanes(&local);
+                let gap = distance - LaneF32::splat(sphere.1);
                 nearest = nearest.min(gap);
                 let clear = gap - margin;
                 if clear.simd_lt(limit).to_bitmask() & live == 0 {
@@ -164,19 +164,19 @@ pub(crate) fn certified_radii(
                 // The sphere centre's velocity: the bounding centre's, plus the link's turn
                 // about it.
                 let arm = [
-                    c[0] - bounds8[k][0],
-                    c[1] - bounds8[k][1],
-                    c[2] - bounds8[k][2],
+                    c[0] - lane_bounds[k][0],
+                    c[1] - lane_bounds[k][1],
+                    c[2] - lane_bounds[k][2],
                 ];
                 let moving = [
                     velocity[0] + angular[1] * arm[2] - angular[2] * arm[1],
                     velocity[1] + angular[2] * arm[0] - angular[0] * arm[2],
                     velocity[2] + angular[0] * arm[1] - angular[1] * arm[0],
                 ];
-                let rate = obstacle.rates_local8(&local, distance, &moving);
+                let rate = obstacle.rates_local_lanes(&local, distance, &moving);
                 // The direction from the solid is known to within `4 δ / d` for a centre `d`
                 // from it placed within `δ` (the margin) of where it is.
-                let aim = margin * f32x8::splat(4.0) / (distance - margin).max(margin);
+                let aim = margin * LaneF32::splat(4.0) / (distance - margin).max(margin);
                 let approach = rate.abs() + slack + aim * speed;
                 let directional = reach_approaching(clear, approach, acceleration);
                 radius =
@@ -193,13 +193,13 @@ pub(crate) fn certified_radii(
         let margins = margin + margin;
         // As for the links: clear by the sweep over a piece of the lane's radius so far, the
         // pair limits nothing.
-        let mut best = radius * f32x8::splat(sweep) + floor + floor + margins;
-        let reach_ab = f32x8::splat(la.3 + lb.3);
-        if closer(&bounds8[a], &bounds8[b], best + reach_ab) & live != 0 {
+        let mut best = radius * LaneF32::splat(sweep) + floor + floor + margins;
+        let reach_ab = LaneF32::splat(la.3 + lb.3);
+        if closer(&lane_bounds[a], &lane_bounds[b], best + reach_ab) & live != 0 {
             for (k, l) in [(a, la), (b, lb)] {
                 if !placed[k] {
-                    let pose = &poses8[l.0];
-                    for (c, sphere) in centers8[l.1.clone()]
+                    let pose = &lane_poses[l.0];
+                    for (c, sphere) in lane_centers[l.1.clone()]
                         .iter_mut()
                         .zip(&s.spheres[l.1.clone()])
                     {
@@ -209,15 +209,15 @@ pub(crate) fn certified_radii(
                 }
             }
             let (spheres_a, spheres_b) = (&s.spheres[la.1.clone()], &s.spheres[lb.1.clone()]);
-            let (centers_a, centers_b) = (&centers8[la.1.clone()], &centers8[lb.1.clone()]);
-            let bound_b = &bounds8[b];
+            let (centers_a, centers_b) = (&lane_centers[la.1.clone()], &lane_centers[lb.1.clone()]);
+            let bound_b = &lane_bounds[b];
             for (ca, sa) in centers_a.iter().zip(spheres_a) {
                 let ri = sa.1;
-                if closer(ca, bound_b, best + f32x8::splat(ri + lb.3)) & live == 0 {
+                if closer(ca, bound_b, best + LaneF32::splat(ri + lb.3)) & live == 0 {
                     continue;
                 }
                 for (cb, sb) in centers_b.iter().zip(spheres_b) {
-                    let gap = distance_squared(ca, cb).sqrt() - f32x8::splat(ri + sb.1);
+                    let gap = distance_squared(ca, cb).sqrt() - LaneF32::splat(ri + sb.1);
                     best = best.min(gap);
                 }
             }
@@ -225,9 +225,9 @@ pub(crate) fn certified_radii(
         let clear = best - margins;
         refused |= clear.simd_lt(floor).to_bitmask() & live;
         let linear = if sweep > 0.0 {
-            clear.max(f32x8::ZERO) / f32x8::splat(sweep)
+            clear.max(LaneF32::ZERO) / LaneF32::splat(sweep)
         } else {
-            f32x8::splat(f32::INFINITY)
+            LaneF32::splat(f32::INFINITY)
         };
         radius = radius.min(linear);
     }
@@ -239,17 +239,17 @@ pub(crate) fn certified_radii(
 /// Per lane, the largest `h` with `min(h · speed + h² · second, h · sweep) ≤ clear` (0 for a
 /// clearance of 0 or less; unbounded for what does not move).
 #[inline]
-fn reach(clear: f32x8, speed: f32x8, second: f32, sweep: f32) -> f32x8 {
-    let c = clear.max(f32x8::ZERO);
+fn reach(clear: LaneF32, speed: LaneF32, second: f32, sweep: f32) -> LaneF32 {
+    let c = clear.max(LaneF32::ZERO);
     let linear = if sweep > 0.0 {
-        c / f32x8::splat(sweep)
+        c / LaneF32::splat(sweep)
     } else {
-        f32x8::splat(f32::INFINITY)
+        LaneF32::splat(f32::INFINITY)
     };
-    let q = f32x8::splat(second);
+    let q = LaneF32::splat(second);
     // The root of h² · q + h · speed = c, in the form that stays exact as q → 0.
-    let denominator = speed + (speed * speed + f32x8::splat(4.0) * q * c).sqrt();
-    let quadratic = (c + c) / denominator.max(f32x8::splat(f32::MIN_POSITIVE));
+    let denominator = speed + (speed * speed + LaneF32::splat(4.0) * q * c).sqrt();
+    let quadratic = (c + c) / denominator.max(LaneF32::splat(f32::MIN_POSITIVE));
     linear.max(quadratic)
 }
 
@@ -258,16 +258,16 @@ fn reach(clear: f32x8, speed: f32x8, second: f32, sweep: f32) -> f32x8 {
 /// piece's middle, and accelerating at most `acceleration`, can move either way and stay
 /// clear of it.
 #[inline]
-fn reach_approaching(clear: f32x8, approach: f32x8, acceleration: f32x8) -> f32x8 {
-    let c = clear.max(f32x8::ZERO);
+fn reach_approaching(clear: LaneF32, approach: LaneF32, acceleration: LaneF32) -> LaneF32 {
+    let c = clear.max(LaneF32::ZERO);
     let denominator = approach + (approach * approach + (acceleration + acceleration) * c).sqrt();
-    (c + c) / denominator.max(f32x8::splat(f32::MIN_POSITIVE))
+    (c + c) / denominator.max(LaneF32::splat(f32::MIN_POSITIVE))
 }
 
 /// Bit `l` set if lane `l`'s points are closer than `limit[l]` (no square root).
 #[inline]
-fn closer(a: &Point8, b: &Point8, limit: f32x8) -> u32 {
-    let positive = limit.simd_gt(f32x8::ZERO).to_bitmask();
+fn closer(a: &LanePoint, b: &LanePoint, limit: LaneF32) -> u32 {
+    let positive = limit.simd_gt(LaneF32::ZERO).to_bitmask();
     positive & distance_squared(a, b).simd_lt(limit * limit).to_bitmask()
 }
 
@@ -279,17 +279,18 @@ mod tests {
     fn the_radius_meets_the_bound_with_equality() {
         let (speed, second, sweep) = (0.8_f32, 0.5_f32, 2.0_f32);
         for clear in [1e-4_f32, 1e-2, 0.3] {
-            let h = reach(f32x8::splat(clear), f32x8::splat(speed), second, sweep).to_array()[0];
+            let h =
+                reach(LaneF32::splat(clear), LaneF32::splat(speed), second, sweep).to_array()[0];
             let bound = (h * speed + h * h * second).min(h * sweep);
             assert!((bound - clear).abs() <= 1e-5 * clear, "{clear}: {bound}");
         }
         // The lever-arm bound wins when it is the tighter one.
-        let h = reach(f32x8::splat(0.5), f32x8::splat(3.0), 10.0, 1.0).to_array()[0];
+        let h = reach(LaneF32::splat(0.5), LaneF32::splat(3.0), 10.0, 1.0).to_array()[0];
         assert!((h - 0.5).abs() < 1e-6, "{h}");
         // Nothing moves: unbounded; no clearance: nothing.
-        let h = reach(f32x8::splat(0.1), f32x8::ZERO, 0.0, 0.0).to_array()[0];
+        let h = reach(LaneF32::splat(0.1), LaneF32::ZERO, 0.0, 0.0).to_array()[0];
         assert!(h > 1e6, "{h}");
-        let h = reach(f32x8::splat(-0.1), f32x8::splat(1.0), 1.0, 1.0).to_array()[0];
+        let h = reach(LaneF32::splat(-0.1), LaneF32::splat(1.0), 1.0, 1.0).to_array()[0];
         assert_eq!(h, 0.0);
     }
 }

@@ -1,35 +1,35 @@
-//! Eight configurations at once: forward kinematics in structure-of-arrays form over `f32x8`
-//! lanes (the `wide` crate, safe code), as VAMP lays out its checks.
+//! A batch of configurations at once ([`LANES`]: eight, or sixteen with AVX-512): forward
+//! kinematics in structure-of-arrays form over [`LaneF32`] lanes (the `wide` crate, safe
+//! code), as VAMP lays out its checks.
 //!
 //! Lane `l` of every vector belongs to configuration `l` of the batch. A pose is nine rotation
 //! vectors and three translation vectors; the walk down the tree is the scalar walk of
-//! [`Kinematics::link_poses`](crate::Kinematics::link_poses) with every number replaced by
-//! eight. Constants (joint origins, local sphere centres, obstacle transforms) are splatted.
+//! [`Kinematics::link_poses`](crate::Kinematics::link_poses) with every number replaced by a
+//! vector of lanes. Constants (joint origins, local sphere centres, obstacle transforms) are
+//! splatted.
 
 use std::ops::Range;
 
 use glam::Vec3A;
-use wide::f32x8;
 
 use crate::Kinematics;
 use crate::model::JointMotion;
 
-/// Lanes per batch.
-pub(crate) const LANES: usize = 8;
+pub(crate) use crate::lane_f32::{LANES, LaneF32};
 
-/// Three coordinates, eight lanes each.
-pub(crate) type Point8 = [f32x8; 3];
+/// Three coordinates, a vector of lanes each.
+pub(crate) type LanePoint = [LaneF32; 3];
 
 /// A rigid transform per lane: rotation columns `r[column][row]` and translation `t`.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Pose8 {
-    r: [[f32x8; 3]; 3],
-    t: [f32x8; 3],
+pub(crate) struct LanePose {
+    r: [[LaneF32; 3]; 3],
+    t: [LaneF32; 3],
 }
 
-impl Pose8 {
+impl LanePose {
     pub(crate) const IDENTITY: Self = {
-        let (o, l) = (f32x8::ZERO, f32x8::ONE);
+        let (o, l) = (LaneF32::ZERO, LaneF32::ONE);
         Self {
             r: [[l, o, o], [o, l, o], [o, o, l]],
             t: [o, o, o],
@@ -38,20 +38,24 @@ impl Pose8 {
 
     /// The rotation applied to a constant vector.
     #[inline]
-    pub(crate) fn rotate(&self, v: Vec3A) -> Point8 {
-        let (x, y, z) = (f32x8::splat(v.x), f32x8::splat(v.y), f32x8::splat(v.z));
+    pub(crate) fn rotate(&self, v: Vec3A) -> LanePoint {
+        let (x, y, z) = (
+            LaneF32::splat(v.x),
+            LaneF32::splat(v.y),
+            LaneF32::splat(v.z),
+        );
         std::array::from_fn(|i| self.r[0][i] * x + self.r[1][i] * y + self.r[2][i] * z)
     }
 
     /// The translation: where the frame's origin is.
     #[inline]
-    pub(crate) fn translation(&self) -> Point8 {
+    pub(crate) fn translation(&self) -> LanePoint {
         self.t
     }
 
     /// The transform applied to a constant point (a local sphere centre).
     #[inline]
-    pub(crate) fn point(&self, p: Vec3A) -> Point8 {
+    pub(crate) fn point(&self, p: Vec3A) -> LanePoint {
         let [x, y, z] = self.rotate(p);
         [x + self.t[0], y + self.t[1], z + self.t[2]]
     }
@@ -120,7 +124,7 @@ struct LaneStep {
     motion: JointMotion,
 }
 
-/// The tree walk of a [`Kinematics`], eight configurations at a time, with each joint
+/// The tree walk of a [`Kinematics`], a batch of configurations at a time, with each joint
 /// origin's constant transform applied by only the arithmetic it needs (a generic robot's
 /// constants folded at load time: see [`Turn`]).
 #[derive(Debug, Clone)]
@@ -156,7 +160,7 @@ impl LaneKinematics {
     /// Writes every link's world pose, per lane, for joint values `q[coordinate]` (one vector
     /// per coordinate) into `out` (one pose per link).
     #[inline]
-    pub(crate) fn link_poses(&self, q: &[f32x8], out: &mut [Pose8]) {
+    pub(crate) fn link_poses(&self, q: &[LaneF32], out: &mut [LanePose]) {
         self.link_poses_in(q, out, 0..self.steps.len());
     }
 
@@ -164,14 +168,14 @@ impl LaneKinematics {
     /// (the walk of [`link_poses`](Self::link_poses) a stretch at a time, so that a check can
     /// stop before placing the links it no longer needs).
     #[inline]
-    pub(crate) fn link_poses_in(&self, q: &[f32x8], out: &mut [Pose8], links: Range<usize>) {
+    pub(crate) fn link_poses_in(&self, q: &[LaneF32], out: &mut [LanePose], links: Range<usize>) {
         for i in links {
             let step = &self.steps[i];
             // In place: the parent comes before the link in tree order.
             let (done, rest) = out.split_at_mut(i);
             let pose = &mut rest[0];
             let base = if step.parent == usize::MAX {
-                &Pose8::IDENTITY
+                &LanePose::IDENTITY
             } else {
                 &done[step.parent]
             };
@@ -180,7 +184,7 @@ impl LaneKinematics {
             // the link's slot to turn it there compiles to a `memmove` call per link.
             let mut t = base.t;
             for &(axis, value) in &step.shift[..step.shifts] {
-                let value = f32x8::splat(value);
+                let value = LaneF32::splat(value);
                 for (t, r) in t.iter_mut().zip(base.r[axis]) {
                     *t += r * value;
                 }
@@ -208,16 +212,16 @@ impl LaneKinematics {
                 }
                 JointMotion::Revolute(u, c) => {
                     let (s, cos) = q[c].sin_cos();
-                    let one_minus = f32x8::ONE - cos;
+                    let one_minus = LaneF32::ONE - cos;
                     let u = [u.x, u.y, u.z];
                     // Rodrigues: R = cos·I + sin·[u]× + (1 − cos)·u uᵀ, column j row i.
                     let cross = [[0.0, u[2], -u[1]], [-u[2], 0.0, u[0]], [u[1], -u[0], 0.0]];
-                    let rot: [[f32x8; 3]; 3] = std::array::from_fn(|j| {
+                    let rot: [[LaneF32; 3]; 3] = std::array::from_fn(|j| {
                         std::array::from_fn(|i| {
-                            let diagonal = if i == j { cos } else { f32x8::ZERO };
+                            let diagonal = if i == j { cos } else { LaneF32::ZERO };
                             diagonal
-                                + s * f32x8::splat(cross[j][i])
-                                + one_minus * f32x8::splat(u[i] * u[j])
+                                + s * LaneF32::splat(cross[j][i])
+                                + one_minus * LaneF32::splat(u[i] * u[j])
                         })
                     });
                     let a = r;
@@ -228,13 +232,13 @@ impl LaneKinematics {
                     });
                 }
                 JointMotion::Prismatic(u, c) => {
-                    let d = Pose8 { r, t }.rotate(u);
+                    let d = LanePose { r, t }.rotate(u);
                     for (t, d) in t.iter_mut().zip(d) {
                         *t += d * q[c];
                     }
                 }
             }
-            *pose = Pose8 { r, t };
+            *pose = LanePose { r, t };
         }
     }
 }
@@ -288,10 +292,10 @@ mod tests {
         let configurations: Vec<[f64; 7]> = (0..LANES)
             .map(|l| std::array::from_fn(|j| ((l * 7 + j) as f64 * 0.37).sin() * 1.5))
             .collect();
-        let q: Vec<f32x8> = (0..7)
-            .map(|j| f32x8::new(std::array::from_fn(|l| configurations[l][j] as f32)))
+        let q: Vec<LaneF32> = (0..7)
+            .map(|j| LaneF32::new(std::array::from_fn(|l| configurations[l][j] as f32)))
             .collect();
-        let mut poses = vec![Pose8::IDENTITY; fk.link_count()];
+        let mut poses = vec![LanePose::IDENTITY; fk.link_count()];
         lanes.link_poses(&q, &mut poses);
         let mut scalar = vec![Affine3A::IDENTITY; fk.link_count()];
         for (l, c) in configurations.iter().enumerate() {

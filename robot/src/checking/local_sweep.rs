@@ -2,10 +2,10 @@
 //! configuration at the piece's middle — much tighter than the lever arms that hold for every
 //! configuration, so certification needs fewer, longer pieces.
 
+use crate::checking::lanes::LaneF32;
 use glam::Vec3A;
-use wide::f32x8;
 
-use crate::checking::lanes::{Point8, Pose8};
+use crate::checking::lanes::{LanePoint, LanePose};
 use crate::{Motion, RobotModel};
 
 /// Added to every computed axis distance, in metres: covers the `f32` error of the distance
@@ -67,16 +67,16 @@ pub(crate) struct EdgeTerms {
 /// the edge's fraction: the velocity of its bounding centre and its angular velocity (a
 /// sphere centre `c` moves at `velocity + angular × (c − bounding centre)`).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct LinkMotion8 {
-    pub(crate) velocity: Point8,
-    pub(crate) angular: Point8,
+pub(crate) struct LaneMotion {
+    pub(crate) velocity: LanePoint,
+    pub(crate) angular: LanePoint,
 }
 
-impl LinkMotion8 {
+impl LaneMotion {
     /// At rest.
     pub(crate) const ZERO: Self = Self {
-        velocity: [f32x8::ZERO; 3],
-        angular: [f32x8::ZERO; 3],
+        velocity: [LaneF32::ZERO; 3],
+        angular: [LaneF32::ZERO; 3],
     };
 }
 
@@ -227,20 +227,20 @@ impl LocalSweep {
     /// `d_j` measured from the lane's link poses and its bounding centre `p`: over a piece of
     /// half-width `h` around the lane's configuration, the entry's spheres move at most
     /// `h · A_k + h² · Q_k` ([`EdgeTerms::second`]). Rounded up. With it, the entry's
-    /// [`LinkMotion8`] at the lanes' configurations.
+    /// [`LaneMotion`] at the lanes' configurations.
     #[inline]
     pub(crate) fn speed_of(
         &self,
         k: usize,
-        poses: &[Pose8],
-        p: &Point8,
+        poses: &[LanePose],
+        p: &LanePoint,
         (delta, terms): (&[f64], &EdgeTerms),
-    ) -> (f32x8, LinkMotion8) {
-        let mut speed = f32x8::splat(terms.constant[k] as f32);
-        let mut motion = LinkMotion8::ZERO;
+    ) -> (LaneF32, LaneMotion) {
+        let mut speed = LaneF32::splat(terms.constant[k] as f32);
+        let mut motion = LaneMotion::ZERO;
         for joint in &self.chains[k] {
             let pose = &poses[joint.frame];
-            let rate = f32x8::splat(delta[joint.coordinate] as f32);
+            let rate = LaneF32::splat(delta[joint.coordinate] as f32);
             let Some(axis) = joint.axis else {
                 let a = pose.rotate(joint.direction);
                 for (v, a) in motion.velocity.iter_mut().zip(a) {
@@ -257,7 +257,7 @@ impl LocalSweep {
                 r[0] * u[1] - r[1] * u[0],
             ];
             let distance = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
-            speed += distance * f32x8::splat(delta[joint.coordinate].abs() as f32);
+            speed += distance * LaneF32::splat(delta[joint.coordinate].abs() as f32);
             // `u × r = −(r × u)`.
             for ((v, w), (c, u)) in motion
                 .velocity
@@ -269,7 +269,7 @@ impl LocalSweep {
                 *w += rate * u;
             }
         }
-        (speed * f32x8::splat(1.0 + 1e-5), motion)
+        (speed * LaneF32::splat(1.0 + 1e-5), motion)
     }
 }
 

@@ -3,10 +3,11 @@
 //!
 //! - [`ArmChecker`] (`arm_checker.rs`): the checker planners use — joint limits, scene and
 //!   self-collision with broad phases, one-sided (a margin covers `f32` rounding); `lanes.rs`
-//!   runs its forward kinematics on eight configurations at once (`f32x8`).
+//!   runs its forward kinematics on a batch of configurations at once (`LaneF32`: eight
+//!   lanes, or sixteen with AVX-512).
 //! - `arm_certification.rs`: certified motion, every configuration of an edge proven clear
 //!   (not only grid points) by conservative advancement, with its floor
-//!   [`CERTIFICATION_FLOOR`]; `clearance.rs` turns eight configurations' clearances into how
+//!   [`CERTIFICATION_FLOOR`]; `clearance.rs` turns a batch of configurations' clearances into how
 //!   far along the edge each stays clear; `local_sweep.rs` bounds how far spheres move over a
 //!   piece of an edge, from the piece's middle configuration, and how fast the two links of a
 //!   self-collision pair move relative to each other.

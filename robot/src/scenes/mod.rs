@@ -14,8 +14,9 @@
 //!   the file and field.
 //!
 //! May use: the `glam`, `wide`, `serde`, `serde-saphyr` and `thiserror` crates, and of this
-//! crate only the `f32` pose conversion of `model`. Knows nothing of checking. Used by `model`
-//! (the shared length limit), `checking` and [`ArmProblem`](crate::ArmProblem).
+//! crate only the `f32` pose conversion of `model` and the SIMD lane type (`lane_f32.rs`).
+//! Knows nothing of checking. Used by `model` (the shared length limit), `checking` and
+//! [`ArmProblem`](crate::ArmProblem).
 
 mod mbm_problem;
 mod moving_obstacle;

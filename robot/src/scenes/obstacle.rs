@@ -1,7 +1,7 @@
 //! [`Obstacle`]: a box, cylinder or sphere placed in the world, and exact sphere tests.
 
+use crate::lane_f32::LaneF32;
 use glam::{Affine3A, DAffine3, DQuat, DVec3, Vec3A};
-use wide::f32x8;
 
 /// The shape of an obstacle, in its own frame (centred at the origin).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -126,38 +126,41 @@ impl Obstacle {
 
     /// The SIMD twin of [`collides_sphere`](Self::collides_sphere): bit `l` of the result is
     /// set if lane `l`'s ball (centre `center[..][l]`, radius `radius[l]`) meets the obstacle.
-    /// The same arithmetic in the same order, eight balls at a time.
+    /// The same arithmetic in the same order, a lane's worth of balls at a time.
     #[inline]
-    pub(crate) fn collides_spheres8(&self, center: &[f32x8; 3], radius: f32x8) -> u32 {
+    pub(crate) fn collides_spheres_lanes(&self, center: &[LaneF32; 3], radius: LaneF32) -> u32 {
         let [x, y, z] = *center;
         let (dx, dy, dz) = (
-            x - f32x8::splat(self.center.x),
-            y - f32x8::splat(self.center.y),
-            z - f32x8::splat(self.center.z),
+            x - LaneF32::splat(self.center.x),
+            y - LaneF32::splat(self.center.y),
+            z - LaneF32::splat(self.center.z),
         );
-        let reach = f32x8::splat(self.bound) + radius;
+        let reach = LaneF32::splat(self.bound) + radius;
         let near = (dx * dx + dy * dy + dz * dz)
             .simd_le(reach * reach)
             .to_bitmask();
         if near == 0 {
             return 0;
         }
-        near & self.excess8(center).simd_le(radius * radius).to_bitmask()
+        near & self
+            .excess_lanes(center)
+            .simd_le(radius * radius)
+            .to_bitmask()
     }
 
     /// Bit `l` set if lane `l`'s point may be closer than `limit[l]` to the solid: closer
     /// than `limit + bound` to the bounding sphere's centre (no square root; a cheaper, looser
-    /// test than [`within8`](Self::within8)).
+    /// test than [`within_lanes`](Self::within_lanes)).
     #[inline]
-    pub(crate) fn may_be_within8(&self, point: &[f32x8; 3], limit: f32x8) -> u32 {
+    pub(crate) fn may_be_within_lanes(&self, point: &[LaneF32; 3], limit: LaneF32) -> u32 {
         let [x, y, z] = *point;
         let (dx, dy, dz) = (
-            x - f32x8::splat(self.center.x),
-            y - f32x8::splat(self.center.y),
-            z - f32x8::splat(self.center.z),
+            x - LaneF32::splat(self.center.x),
+            y - LaneF32::splat(self.center.y),
+            z - LaneF32::splat(self.center.z),
         );
-        let reach = limit + f32x8::splat(self.bound);
-        let positive = limit.simd_gt(f32x8::ZERO).to_bitmask();
+        let reach = limit + LaneF32::splat(self.bound);
+        let positive = limit.simd_gt(LaneF32::ZERO).to_bitmask();
         positive
             & (dx * dx + dy * dy + dz * dz)
                 .simd_lt(reach * reach)
@@ -167,17 +170,17 @@ impl Obstacle {
     /// Bit `l` set if lane `l`'s point is closer than `limit[l]` to the solid (no square
     /// root).
     #[inline]
-    pub(crate) fn within8(&self, point: &[f32x8; 3], limit: f32x8) -> u32 {
-        let positive = limit.simd_gt(f32x8::ZERO).to_bitmask();
-        positive & self.excess8(point).simd_lt(limit * limit).to_bitmask()
+    pub(crate) fn within_lanes(&self, point: &[LaneF32; 3], limit: LaneF32) -> u32 {
+        let positive = limit.simd_gt(LaneF32::ZERO).to_bitmask();
+        positive & self.excess_lanes(point).simd_lt(limit * limit).to_bitmask()
     }
 
     /// Per lane, the distance from the point (given in the solid's frame by
-    /// [`local8`](Self::local8)) to the solid, 0 inside: the arithmetic of
-    /// [`collides_spheres8`](Self::collides_spheres8), square-rooted.
+    /// [`local_lanes`](Self::local_lanes)) to the solid, 0 inside: the arithmetic of
+    /// [`collides_spheres_lanes`](Self::collides_spheres_lanes), square-rooted.
     #[inline]
-    pub(crate) fn distances_local8(&self, local: &[f32x8; 3]) -> f32x8 {
-        self.excess_local8(local).sqrt()
+    pub(crate) fn distances_local_lanes(&self, local: &[LaneF32; 3]) -> LaneF32 {
+        self.excess_local_lanes(local).sqrt()
     }
 
     /// Per lane, how fast the distance from the point (in the solid's frame, at `distance`
@@ -190,56 +193,60 @@ impl Obstacle {
     /// approach the solid to first order, whatever the motion's length (certification's
     /// directional bound, `clearance.rs`).
     #[inline]
-    pub(crate) fn rates_local8(
+    pub(crate) fn rates_local_lanes(
         &self,
-        [px, py, pz]: &[f32x8; 3],
-        distance: f32x8,
-        velocity: &[f32x8; 3],
-    ) -> f32x8 {
+        [px, py, pz]: &[LaneF32; 3],
+        distance: LaneF32,
+        velocity: &[LaneF32; 3],
+    ) -> LaneF32 {
         let (px, py, pz) = (*px, *py, *pz);
         let m = &self.inverse.matrix3;
         let [vx, vy, vz] = *velocity;
-        let turn =
-            |a: Vec3A| f32x8::splat(a.x) * vx + f32x8::splat(a.y) * vy + f32x8::splat(a.z) * vz;
+        let turn = |a: Vec3A| {
+            LaneF32::splat(a.x) * vx + LaneF32::splat(a.y) * vy + LaneF32::splat(a.z) * vz
+        };
         let (ux, uy, uz) = (
             turn(Vec3A::new(m.x_axis.x, m.y_axis.x, m.z_axis.x)),
             turn(Vec3A::new(m.x_axis.y, m.y_axis.y, m.z_axis.y)),
             turn(Vec3A::new(m.x_axis.z, m.y_axis.z, m.z_axis.z)),
         );
-        let zero = f32x8::ZERO;
+        let zero = LaneF32::ZERO;
         // The excess beyond the solid along each of its local directions, times its rate.
         let along = match self.shape {
             Shape::Cuboid { .. } => {
-                let ex = (px.abs() - f32x8::splat(self.size.x)).max(zero);
-                let ey = (py.abs() - f32x8::splat(self.size.y)).max(zero);
-                let ez = (pz.abs() - f32x8::splat(self.size.z)).max(zero);
+                let ex = (px.abs() - LaneF32::splat(self.size.x)).max(zero);
+                let ey = (py.abs() - LaneF32::splat(self.size.y)).max(zero);
+                let ez = (pz.abs() - LaneF32::splat(self.size.z)).max(zero);
                 ex.copysign(px) * ux + ey.copysign(py) * uy + ez.copysign(pz) * uz
             }
             Shape::Cylinder { .. } => {
                 let planar = (px * px + py * py).sqrt();
-                let radial = (planar - f32x8::splat(self.size.x)).max(zero);
-                let axial = (pz.abs() - f32x8::splat(self.size.y)).max(zero);
-                let outward = (px * ux + py * uy) / planar.max(f32x8::splat(f32::MIN_POSITIVE));
+                let radial = (planar - LaneF32::splat(self.size.x)).max(zero);
+                let axial = (pz.abs() - LaneF32::splat(self.size.y)).max(zero);
+                let outward = (px * ux + py * uy) / planar.max(LaneF32::splat(f32::MIN_POSITIVE));
                 radial * outward + axial.copysign(pz) * uz
             }
             Shape::Sphere { .. } => {
                 let length = (px * px + py * py + pz * pz).sqrt();
-                let d = (length - f32x8::splat(self.size.x)).max(zero);
+                let d = (length - LaneF32::splat(self.size.x)).max(zero);
                 let outward =
-                    (px * ux + py * uy + pz * uz) / length.max(f32x8::splat(f32::MIN_POSITIVE));
+                    (px * ux + py * uy + pz * uz) / length.max(LaneF32::splat(f32::MIN_POSITIVE));
                 d * outward
             }
         };
-        along / distance.max(f32x8::splat(f32::MIN_POSITIVE))
+        along / distance.max(LaneF32::splat(f32::MIN_POSITIVE))
     }
 
     /// The point in the solid's frame.
     #[inline]
-    pub(crate) fn local8(&self, &[x, y, z]: &[f32x8; 3]) -> [f32x8; 3] {
+    pub(crate) fn local_lanes(&self, &[x, y, z]: &[LaneF32; 3]) -> [LaneF32; 3] {
         let m = &self.inverse.matrix3;
         let t = self.inverse.translation;
         let row = |a: Vec3A, t: f32| {
-            f32x8::splat(a.x) * x + f32x8::splat(a.y) * y + f32x8::splat(a.z) * z + f32x8::splat(t)
+            LaneF32::splat(a.x) * x
+                + LaneF32::splat(a.y) * y
+                + LaneF32::splat(a.z) * z
+                + LaneF32::splat(t)
         };
         // Row i of the rotation is (x_axis[i], y_axis[i], z_axis[i]).
         [
@@ -251,29 +258,29 @@ impl Obstacle {
 
     /// Per lane, the squared distance from the point to the solid (0 inside), `f32`.
     #[inline]
-    fn excess8(&self, point: &[f32x8; 3]) -> f32x8 {
-        self.excess_local8(&self.local8(point))
+    fn excess_lanes(&self, point: &[LaneF32; 3]) -> LaneF32 {
+        self.excess_local_lanes(&self.local_lanes(point))
     }
 
-    /// [`excess8`](Self::excess8) of a point given in the solid's frame.
+    /// [`excess_lanes`](Self::excess_lanes) of a point given in the solid's frame.
     #[inline]
-    fn excess_local8(&self, &[px, py, pz]: &[f32x8; 3]) -> f32x8 {
-        let zero = f32x8::ZERO;
+    fn excess_local_lanes(&self, &[px, py, pz]: &[LaneF32; 3]) -> LaneF32 {
+        let zero = LaneF32::ZERO;
         match self.shape {
             Shape::Cuboid { .. } => {
-                let ex = (px.abs() - f32x8::splat(self.size.x)).max(zero);
-                let ey = (py.abs() - f32x8::splat(self.size.y)).max(zero);
-                let ez = (pz.abs() - f32x8::splat(self.size.z)).max(zero);
+                let ex = (px.abs() - LaneF32::splat(self.size.x)).max(zero);
+                let ey = (py.abs() - LaneF32::splat(self.size.y)).max(zero);
+                let ez = (pz.abs() - LaneF32::splat(self.size.z)).max(zero);
                 ex * ex + ey * ey + ez * ez
             }
             Shape::Cylinder { .. } => {
-                let radial = ((px * px + py * py).sqrt() - f32x8::splat(self.size.x)).max(zero);
-                let axial = (pz.abs() - f32x8::splat(self.size.y)).max(zero);
+                let radial = ((px * px + py * py).sqrt() - LaneF32::splat(self.size.x)).max(zero);
+                let axial = (pz.abs() - LaneF32::splat(self.size.y)).max(zero);
                 radial * radial + axial * axial
             }
             Shape::Sphere { .. } => {
                 let d =
-                    ((px * px + py * py + pz * pz).sqrt() - f32x8::splat(self.size.x)).max(zero);
+                    ((px * px + py * py + pz * pz).sqrt() - LaneF32::splat(self.size.x)).max(zero);
                 d * d
             }
         }
@@ -359,10 +366,10 @@ mod tests {
                 let expected = (solid.distance_f64(point + velocity * e)
                     - solid.distance_f64(point - velocity * e))
                     / (2.0 * e);
-                let splat = |v: DVec3| [v.x, v.y, v.z].map(|x| f32x8::splat(x as f32));
-                let local = solid.local8(&splat(point));
-                let distance = solid.distances_local8(&local);
-                let rate = solid.rates_local8(&local, distance, &splat(velocity));
+                let splat = |v: DVec3| [v.x, v.y, v.z].map(|x| LaneF32::splat(x as f32));
+                let local = solid.local_lanes(&splat(point));
+                let distance = solid.distances_local_lanes(&local);
+                let rate = solid.rates_local_lanes(&local, distance, &splat(velocity));
                 let (distance, rate) = (distance.to_array()[0], rate.to_array()[0]);
                 assert!((f64::from(distance) - solid.distance_f64(point)).abs() < 1e-5);
                 assert!(

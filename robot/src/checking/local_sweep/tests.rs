@@ -41,9 +41,9 @@ fn no_sphere_moves_further_than_the_local_bound() {
         vec![(DVec3::ZERO, 0.0); fk.sphere_count()],
         vec![(DVec3::ZERO, 0.0); fk.sphere_count()],
     );
-    let mut poses = vec![Pose8::IDENTITY; fk.link_count()];
-    let mut bounds = vec![[f32x8::ZERO; 3]; s.links.len()];
-    let mut speeds = vec![f32x8::ZERO; s.links.len()];
+    let mut poses = vec![LanePose::IDENTITY; fk.link_count()];
+    let mut bounds = vec![[LaneF32::ZERO; 3]; s.links.len()];
+    let mut speeds = vec![LaneF32::ZERO; s.links.len()];
     let mut terms = EdgeTerms::default();
     let mut rng = Lcg(7);
     let mut tightest = f64::INFINITY;
@@ -54,8 +54,8 @@ fn no_sphere_moves_further_than_the_local_bound() {
         let m = h + rng.unit() * (1.0 - 2.0 * h);
         let q = |t: f64| -> Vec<f64> { a.iter().zip(&delta).map(|(x, d)| x + d * t).collect() };
         let middle = q(m);
-        let q8: Vec<f32x8> = middle.iter().map(|&x| f32x8::splat(x as f32)).collect();
-        s.lanes.link_poses(&q8, &mut poses);
+        let lane_q: Vec<LaneF32> = middle.iter().map(|&x| LaneF32::splat(x as f32)).collect();
+        s.lanes.link_poses(&lane_q, &mut poses);
         for (bound, (link, _, center, _)) in bounds.iter_mut().zip(&s.links) {
             *bound = poses[*link].point(*center);
         }
@@ -137,9 +137,9 @@ fn leave_the_tangent_within_the_bound(robot: &RobotModel) {
         vec![(DVec3::ZERO, 0.0); fk.sphere_count()],
         vec![(DVec3::ZERO, 0.0); fk.sphere_count()],
     );
-    let mut poses = vec![Pose8::IDENTITY; fk.link_count()];
-    let mut bounds = vec![[f32x8::ZERO; 3]; s.links.len()];
-    let mut motions = vec![LinkMotion8::ZERO; s.links.len()];
+    let mut poses = vec![LanePose::IDENTITY; fk.link_count()];
+    let mut bounds = vec![[LaneF32::ZERO; 3]; s.links.len()];
+    let mut motions = vec![LaneMotion::ZERO; s.links.len()];
     let mut velocities = vec![DVec3::ZERO; fk.sphere_count()];
     let mut terms = EdgeTerms::default();
     let mut rng = Lcg(5);
@@ -150,8 +150,8 @@ fn leave_the_tangent_within_the_bound(robot: &RobotModel) {
         let q = |t: f64| -> Vec<f64> { a.iter().zip(&delta).map(|(x, d)| x + d * t).collect() };
         let h = 0.5 * rng.unit().powi(2);
         let m = h + rng.unit() * (1.0 - 2.0 * h);
-        let q8: Vec<f32x8> = q(m).iter().map(|&x| f32x8::splat(x as f32)).collect();
-        s.lanes.link_poses(&q8, &mut poses);
+        let lane_q: Vec<LaneF32> = q(m).iter().map(|&x| LaneF32::splat(x as f32)).collect();
+        s.lanes.link_poses(&lane_q, &mut poses);
         for (bound, (link, _, center, _)) in bounds.iter_mut().zip(&s.links) {
             *bound = poses[*link].point(*center);
         }
@@ -163,7 +163,7 @@ fn leave_the_tangent_within_the_bound(robot: &RobotModel) {
         let e = 1e-6;
         fk.sphere_centers_f64(&q(m + e), &mut links, &mut ahead);
         fk.sphere_centers_f64(&q(m - e), &mut links, &mut behind);
-        let lane = |p: &Point8| {
+        let lane = |p: &LanePoint| {
             DVec3::new(
                 f64::from(p[0].to_array()[0]),
                 f64::from(p[1].to_array()[0]),
