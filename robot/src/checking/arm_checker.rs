@@ -101,7 +101,7 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// that covers the rounding of the `f32` arithmetic, so that a configuration this checker
 /// calls valid is valid in exact arithmetic too (one-sided).
 ///
-/// Forward kinematics places the links in `LaneF32` lanes, [`LANES`] configurations at once (eight,
+/// Forward kinematics places the links in `LaneF32` lanes, a batch of configurations at once (eight,
 /// or sixteen where the CPU has AVX-512: `lane_f32.rs`; as VAMP lays out its checks; one configuration uses one lane of the same code, so a single
 /// check and a batch share one arithmetic); each link with spheres is first tested as one
 /// bounding sphere against each obstacle's bounding sphere and the obstacle itself (broad
@@ -113,7 +113,7 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// `a + (b − a)·t` directly, bit for bit the interpolated configurations.
 ///
 /// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width)
-/// [`LANES`]): a lane drops out of the work once a lane before it is known invalid, and the batch ends
+/// 8 or 16): a lane drops out of the work once a lane before it is known invalid, and the batch ends
 /// when no lane before the first invalid one is left to decide, so the answer is exactly the
 /// first invalid configuration — the one testing them one by one finds. A check that may end
 /// at any contact ([`StateValidity::any_invalid`], the edge checks) tests first the link that
@@ -285,7 +285,7 @@ impl StateValidity for ArmChecker {
         self.invalid_in(states, dimension, Wanted::Any)
     }
 
-    /// [`LANES`] configurations per pass, each lane decided (it leaves the work once found
+    /// A batch of configurations per pass (eight or sixteen), each lane decided (it leaves the work once found
     /// invalid).
     fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
         let dimension = dimension.max(1);
@@ -332,7 +332,7 @@ impl StateValidity for ArmChecker {
 
 impl ArmChecker {
     /// An invalid configuration of `states` (the first, or any, as `wanted`), a batch of
-    /// [`LANES`] at a time.
+    /// `LANES` at a time.
     fn invalid_in(&self, states: &[f64], dimension: usize, wanted: Wanted) -> Option<usize> {
         let dimension = dimension.max(1);
         let s = &*self.shared;
