@@ -285,8 +285,8 @@ impl StateValidity for ArmChecker {
         self.invalid_in(states, dimension, Wanted::Any)
     }
 
-    /// A batch of configurations per pass (eight or sixteen), each lane decided (it leaves the work once found
-    /// invalid).
+    /// A batch of configurations per pass (eight or sixteen), each lane decided (it leaves the
+    /// work once found invalid).
     fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
         let dimension = dimension.max(1);
         let s = &*self.shared;
