@@ -101,9 +101,10 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// that covers the rounding of the `f32` arithmetic, so that a configuration this checker
 /// calls valid is valid in exact arithmetic too (one-sided).
 ///
-/// Forward kinematics places the links in `LaneF32` lanes, a batch of configurations at once (eight,
-/// or sixteen where the CPU has AVX-512: `lane_f32.rs`; as VAMP lays out its checks; one configuration uses one lane of the same code, so a single
-/// check and a batch share one arithmetic); each link with spheres is first tested as one
+/// Forward kinematics places the links in `LaneF32` lanes, a batch of configurations at once
+/// (eight, or sixteen where the CPU has AVX-512: `lane_f32.rs`), as VAMP lays out its checks;
+/// one configuration uses one lane of the same code, so a single check and a batch share one
+/// arithmetic; each link with spheres is first tested as one
 /// bounding sphere against each obstacle's bounding sphere and the obstacle itself (broad
 /// phase), and its small spheres only if that hits; self-collision pairs likewise test the two
 /// links' bounding spheres first. Sphere centres are placed only for links that reach the
@@ -113,9 +114,9 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// `a + (b − a)·t` directly, bit for bit the interpolated configurations.
 ///
 /// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width)
-/// 8 or 16): a lane drops out of the work once a lane before it is known invalid, and the batch ends
-/// when no lane before the first invalid one is left to decide, so the answer is exactly the
-/// first invalid configuration — the one testing them one by one finds. A check that may end
+/// 8 or 16): a lane drops out of the work once a lane before it is known invalid, and the
+/// batch ends when no lane before the first invalid one is left to decide, so the answer is
+/// exactly the first invalid configuration — the one testing them one by one finds. A check that may end
 /// at any contact ([`StateValidity::any_invalid`], the edge checks) tests first the link that
 /// met an obstacle in the last batch that ended at a contact: the points of one edge and the
 /// extensions of one search tend to hit the same thing (on RRT-Connect's Panda solves, 12 %
