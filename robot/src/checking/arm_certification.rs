@@ -10,14 +10,14 @@
 //! middle configuration.
 //!
 //! # The walk
-//! Conservative advancement along the edge from its first end. Each batch evaluates a lane's
-//! worth ([`LANES`]: eight, or sixteen with AVX-512) of configurations ahead of the certified
-//! prefix `t`, spaced `2w` apart (`t + w`, `t + 3w`, …); each lane's clearance gives its
-//! *certified radius* (`clearance.rs`): how far along the edge the configuration can move
-//! before any sphere could reach an obstacle or another link. The prefix then runs on through every lane whose piece touches it, and the next
-//! spacing is the smallest radius seen — so free space is crossed in one or two batches
-//! whatever the edge's length, and the pieces shrink only where the edge passes close to
-//! something. A configuration whose clearance is below [`FLOOR`] (in contact, or within a
+//! Conservative advancement along the edge from its first end. Each batch evaluates a lane's worth
+//! ([`LANES`]: eight, or sixteen with AVX-512) of configurations ahead of the certified prefix `t`,
+//! spaced `2w` apart (`t + w`, `t + 3w`, …); each lane's clearance gives its *certified radius*
+//! (`clearance.rs`): how far along the edge the configuration can move before any sphere could
+//! reach an obstacle or another link. The prefix then runs on through every lane whose piece
+//! touches it, and the next spacing is the smallest radius seen — so free space is crossed in one
+//! or two batches whatever the edge's length, and the pieces shrink only where the edge passes
+//! close to something. A configuration whose clearance is below [`FLOOR`] (in contact, or within a
 //! hair of it) makes the edge invalid.
 //!
 //! The prefix and `w` are the whole state of the walk: a stopped certification keeps them in

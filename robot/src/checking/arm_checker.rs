@@ -113,13 +113,13 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// prepare their segment ([`StateValidity::prepare_segment`]): the lanes are filled from
 /// `a + (b − a)·t` directly, bit for bit the interpolated configurations.
 ///
-/// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width)
-/// 8 or 16): a lane drops out of the work once a lane before it is known invalid, and the
-/// batch ends when no lane before the first invalid one is left to decide, so the answer is
-/// exactly the first invalid configuration — the one testing them one by one finds. A check that may end
-/// at any contact ([`StateValidity::any_invalid`], the edge checks) tests first the link that
-/// met an obstacle in the last batch that ended at a contact: the points of one edge and the
-/// extensions of one search tend to hit the same thing (on RRT-Connect's Panda solves, 12 %
+/// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width) 8
+/// or 16): a lane drops out of the work once a lane before it is known invalid, and the batch
+/// ends when no lane before the first invalid one is left to decide, so the answer is exactly
+/// the first invalid configuration — the one testing them one by one finds. A check that may
+/// end at any contact ([`StateValidity::any_invalid`], the edge checks) tests first the link
+/// that met an obstacle in the last batch that ended at a contact: the points of one edge and
+/// the extensions of one search tend to hit the same thing (on RRT-Connect's Panda solves, 12 %
 /// fewer instructions). The answer does not depend on the order.
 ///
 /// **Certified motion** ([`StateValidity::certify_motion`]): every configuration of an edge
