@@ -9,9 +9,7 @@ use validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity};
 
 use wide::f64x4;
 
-use crate::checking::lanes::LaneF32;
-
-use crate::checking::lanes::{LANES, LaneKinematics, LanePoint, LanePose};
+use crate::checking::lanes::{LANES, LaneF32, LaneKinematics, LanePoint, LanePose};
 use crate::checking::local_sweep::LocalSweep;
 use crate::checking::reachable_obstacles::reachable_obstacles;
 use crate::checking::scratch_cell::ScratchCell;
@@ -104,14 +102,14 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// Forward kinematics places the links in `LaneF32` lanes, a batch of configurations at once
 /// (eight, or sixteen where the CPU has AVX-512: `lane_f32.rs`), as VAMP lays out its checks;
 /// one configuration uses one lane of the same code, so a single check and a batch share one
-/// arithmetic; each link with spheres is first tested as one
-/// bounding sphere against each obstacle's bounding sphere and the obstacle itself (broad
-/// phase), and its small spheres only if that hits; self-collision pairs likewise test the two
-/// links' bounding spheres first. Sphere centres are placed only for links that reach the
-/// narrow phase. A link is tested only against the obstacles it can reach in some
-/// configuration (found once, when the checker is built, from its lever arms). Edge checks
-/// prepare their segment ([`StateValidity::prepare_segment`]): the lanes are filled from
-/// `a + (b − a)·t` directly, bit for bit the interpolated configurations.
+/// arithmetic; each link with spheres is first tested as one bounding sphere against each
+/// obstacle's bounding sphere and the obstacle itself (broad phase), and its small spheres only
+/// if that hits; self-collision pairs likewise test the two links' bounding spheres first.
+/// Sphere centres are placed only for links that reach the narrow phase. A link is tested only
+/// against the obstacles it can reach in some configuration (found once, when the checker is
+/// built, from its lever arms). Edge checks prepare their segment
+/// ([`StateValidity::prepare_segment`]): the lanes are filled from `a + (b − a)·t` directly,
+/// bit for bit the interpolated configurations.
 ///
 /// **Batches** ([`StateValidity::first_invalid`], [`batch_width`](StateValidity::batch_width) 8
 /// or 16): a lane drops out of the work once a lane before it is known invalid, and the batch

@@ -41,12 +41,10 @@
 //! sphere (then its distance to the solid) is tested before its small spheres, which are
 //! placed only if the bounding sphere comes that close.
 
-use crate::checking::lanes::LaneF32;
-
 use crate::checking::arm_checker::{
     LaneScratch, Shared, distance_squared, fill_lanes, outside_limits,
 };
-use crate::checking::lanes::{LANES, LanePoint};
+use crate::checking::lanes::{LANES, LaneF32, LanePoint};
 use crate::checking::local_sweep::{EdgeTerms, LaneMotion};
 
 /// The relative rounding allowed for in a computed rate of approach (its `f32` arithmetic,

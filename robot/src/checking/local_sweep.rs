@@ -2,10 +2,9 @@
 //! configuration at the piece's middle — much tighter than the lever arms that hold for every
 //! configuration, so certification needs fewer, longer pieces.
 
-use crate::checking::lanes::LaneF32;
 use glam::Vec3A;
 
-use crate::checking::lanes::{LanePoint, LanePose};
+use crate::checking::lanes::{LaneF32, LanePoint, LanePose};
 use crate::{Motion, RobotModel};
 
 /// Added to every computed axis distance, in metres: covers the `f32` error of the distance
