@@ -3,8 +3,10 @@
 //!
 //! Run: `cargo bench -p mit-star-benches --bench arm`. Reports, per configuration: forward
 //! kinematics plus the full collision check (scene and self) one configuration at a time, and
-//! in batches of eight lanes (finding the first invalid one, or any); and one full edge check of
-//! 1 rad, raked (its grid points in bisection order, eight per batch) and one by one. Figures are recorded in `docs/guide/src/reference/arm-planning.md`.
+//! in batches of the checker's lanes (eight, or sixteen with AVX-512; finding the first invalid
+//! one, or any); and one full edge check of 1 rad, raked (its grid points in bisection order, a
+//! batch at a time) and one by one. Figures are recorded in
+//! `docs/guide/src/reference/arm-planning.md`.
 
 use std::hint::black_box;
 use std::path::Path;
