@@ -401,12 +401,12 @@ fn invalid_lanes_on(
         return live.max(1);
     }
     // Joint values by coordinate, straight from the segment (padding lanes repeat the first
-    // point), and the lanes outside the joint limits, in two `f64x4` halves: `x0 + d · t`
-    // rounds as the scalar interpolation does (no fused multiply-add), so the lanes hold the
-    // interpolated configurations bit for bit.
+    // point), and the lanes outside the joint limits, four lanes at a time in `f64x4`:
+    // `x0 + d · t` rounds as the scalar interpolation does (no fused multiply-add), so the lanes
+    // hold the interpolated configurations bit for bit.
     let mut ts = [fractions[0]; LANES];
     ts[..count].copy_from_slice(&fractions[..count]);
-    let quarters: [f64x4; LANES / 4] = std::array::from_fn(|h| {
+    let fours: [f64x4; LANES / 4] = std::array::from_fn(|h| {
         f64x4::from([ts[4 * h], ts[4 * h + 1], ts[4 * h + 2], ts[4 * h + 3]])
     });
     let mut inside = u32::MAX;
@@ -415,9 +415,11 @@ fn invalid_lanes_on(
         let (x0, d) = (f64x4::splat(start[j]), f64x4::splat(delta[j]));
         let (lo, hi) = (f64x4::splat(s.lower[j]), f64x4::splat(s.upper[j]));
         let mut values = [0.0_f32; LANES];
-        for (h, t) in quarters.iter().enumerate() {
+        for (h, t) in fours.iter().enumerate() {
             let x = x0 + d * *t;
-            inside &= !(0xf << (4 * h)) | ((x.simd_ge(lo) & x.simd_le(hi)).to_bitmask() << (4 * h));
+            // Lanes `4h … 4h + 3`: cleared where outside the limits, the others kept.
+            let within = (x.simd_ge(lo) & x.simd_le(hi)).to_bitmask();
+            inside &= !(0xf << (4 * h)) | (within << (4 * h));
             for (v, x) in values[4 * h..4 * h + 4].iter_mut().zip(x.to_array()) {
                 *v = x as f32;
             }
