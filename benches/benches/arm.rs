@@ -63,6 +63,8 @@ fn configuration_check(c: &mut Criterion) {
     for scene in SCENES {
         let problem = problem(scene);
         let checker = problem.validity();
+        // One call per batch of the checker's lanes (8, or 16 with AVX-512).
+        let width = checker.batch_width();
         let (any, valid) = configurations(&problem);
         for (set, states) in [("uniform", &any), ("valid", &valid)] {
             let name = format!("{scene}/{set}");
@@ -74,13 +76,13 @@ fn configuration_check(c: &mut Criterion) {
                         .count()
                 });
             });
-            // Every configuration tested: batches of 8 resumed after each invalid one.
+            // Every configuration tested: batches resumed after each invalid one.
             group.bench_function(BenchmarkId::new("batched", &name), |b| {
                 b.iter(|| {
                     let mut rest = &states[..];
                     let mut invalid = 0;
                     while !rest.is_empty() {
-                        let take = rest.len().min(8 * 7);
+                        let take = rest.len().min(width * 7);
                         match checker.first_invalid(black_box(&rest[..take]), 7) {
                             Some(i) => {
                                 invalid += 1;
@@ -92,12 +94,12 @@ fn configuration_check(c: &mut Criterion) {
                     invalid
                 });
             });
-            // Batches of 8 that only ask whether any is invalid (an edge check's question, and
+            // Batches that only ask whether any is invalid (an edge check's question, and
             // VAMP's): a batch ends at its first contact in any lane, and the next batch follows.
             group.bench_function(BenchmarkId::new("batched_any", &name), |b| {
                 b.iter(|| {
                     states
-                        .chunks(8 * 7)
+                        .chunks(width * 7)
                         .filter(|batch| checker.any_invalid(black_box(batch), 7).is_some())
                         .count()
                 });

@@ -14,8 +14,9 @@
 //! path before returning) with the medians of the planner's counters: configurations tested
 //! (sampler and edges, certification included), edge grid points, edges certified,
 //! nearest-neighbour queries, iterations and states added (samples kept). Then the cost of one
-//! configuration check on the scenes' first problems: scalar, batched eight at a time
-//! (resuming after each invalid one), batched asking only whether any of the eight is invalid,
+//! configuration check on the scenes' first problems: scalar, batched a batch of the checker's
+//! lanes at a time (eight, or sixteen with AVX-512; resuming after each invalid one), batched
+//! asking only whether any of the batch is invalid,
 //! and batched over valid configurations only. Run it under `perf record` for
 //! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping
 //! (`ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
@@ -158,6 +159,7 @@ fn main() {
     for (scene, problem) in first_problems {
         let space = problem.space();
         let checker = problem.validity();
+        let width = checker.batch_width();
         let d = space.dimension();
         let mut rng = 0x9e37_79b9_7f4a_7c15_u64;
         let mut states = vec![0.0; 4096 * d];
@@ -182,33 +184,33 @@ fn main() {
             while at < 4096 {
                 let rest = &states[at * d..];
                 at += checker
-                    .first_invalid(black_box(&rest[..rest.len().min(8 * d)]), d)
-                    .map_or(8, |i| i + 1);
+                    .first_invalid(black_box(&rest[..rest.len().min(width * d)]), d)
+                    .map_or(width, |i| i + 1);
             }
         }
         let batched = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
-        // Eight per call, asking only whether any is invalid (an edge check's question).
+        // A batch per call, asking only whether any is invalid (an edge check's question).
         let started = Instant::now();
         for _ in 0..5 {
             black_box(
                 states
-                    .chunks(8 * d)
+                    .chunks(width * d)
                     .filter(|batch| checker.any_invalid(black_box(batch), d).is_some())
                     .count(),
             );
         }
         let any = started.elapsed().as_secs_f64() * 1e9 / (5.0 * 4096.0);
-        // Valid configurations only, eight per call: nothing ends a batch early.
+        // Valid configurations only, a batch per call: nothing ends a batch early.
         let valid_states: Vec<f64> = states
             .chunks(d)
             .filter(|q| checker.is_valid(q))
             .flatten()
             .copied()
             .collect();
-        let count = valid_states.len() / d / 8 * 8;
+        let count = valid_states.len() / d / width * width;
         let started = Instant::now();
         for _ in 0..5 {
-            for batch in valid_states[..count * d].chunks(8 * d) {
+            for batch in valid_states[..count * d].chunks(width * d) {
                 assert!(checker.first_invalid(batch, d).is_none());
             }
         }

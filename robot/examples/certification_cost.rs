@@ -9,7 +9,7 @@
 //! solutions, planned with certification off, on the first `N` problems of each of the five
 //! MotionBenchMaker scenes under `FOLDER` — and then, on exactly those edges, times (1) the
 //! continuous certification (`certify_motion`) and (2) the grid a quarter of the check step
-//! apart that certification used to test (its points off the planning grid, eight per batch).
+//! apart that certification used to test (its points off the planning grid, a batch of the checker's lanes at a time).
 //! Prints configurations evaluated and nanoseconds per edge for both, per scene; the ratio is
 //! what the certification's cost target is judged by.
 
@@ -95,7 +95,7 @@ fn main() {
                         .interpolate(a, b, k as f64 / n as f64, &mut q);
                     batch.extend_from_slice(&q);
                     points += 1;
-                    if batch.len() == 8 * a.len() {
+                    if batch.len() == problem.validity().batch_width() * a.len() {
                         invalid |= problem.validity().first_invalid(&batch, a.len()).is_some();
                         batch.clear();
                     }
