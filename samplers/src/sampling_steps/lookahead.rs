@@ -8,9 +8,9 @@ use crate::SampleError;
 /// The most states a sampler hands a checker in one batch (candidates drawn ahead, points of
 /// a segment search), whatever batch width the checker asks for: eight, so that a sampler
 /// draws the same random sequence whether the arm checker runs eight lanes or sixteen (with
-/// AVX-512). Sixteen draws ahead also made MIT*'s first solutions on the Panda's cage scene
-/// later (median iterations 2 176 → 3 006 over problems 1–20, three seeds: `arm_profile target
-/// 20 mit-star 3`).
+/// AVX-512). Sixteen gained nothing on the Panda: MIT*'s pooled median time to a first solution
+/// was 109–114 µs either way (`arm_profile target 20 mit-star 10`, two runs each), and its median
+/// iterations on cage rose from 2 136 to 2 288.
 pub(crate) const MOST_BATCHED: usize = 8;
 
 /// Candidates a sampler drew ahead of need, with their validity, decided together by one
