@@ -9,9 +9,9 @@
 //! solutions, planned with certification off, on the first `N` problems of each of the five
 //! MotionBenchMaker scenes under `FOLDER` — and then, on exactly those edges, times (1) the
 //! continuous certification (`certify_motion`) and (2) the grid a quarter of the check step
-//! apart that certification used to test (its points off the planning grid, a batch of the checker's lanes at a time).
-//! Prints configurations evaluated and nanoseconds per edge for both, per scene; the ratio is
-//! what the certification's cost target is judged by.
+//! apart that certification used to test (its points off the planning grid, a batch of the
+//! checker's lanes at a time). Prints configurations evaluated and nanoseconds per edge for
+//! both, per scene; the ratio is what the certification's cost target is judged by.
 
 use std::time::Instant;
 
@@ -87,6 +87,7 @@ fn main() {
                 let n = ((problem.space().distance(a, b) / step).ceil() as usize).max(1);
                 batch.clear();
                 let mut q = vec![0.0; a.len()];
+                let batch_len = problem.validity().batch_width() * a.len();
                 let mut invalid = false;
                 // The points of the finer grid not on the planning grid (every fourth is).
                 for k in (1..n).filter(|k| k % 4 != 0) {
@@ -95,7 +96,7 @@ fn main() {
                         .interpolate(a, b, k as f64 / n as f64, &mut q);
                     batch.extend_from_slice(&q);
                     points += 1;
-                    if batch.len() == problem.validity().batch_width() * a.len() {
+                    if batch.len() == batch_len {
                         invalid |= problem.validity().first_invalid(&batch, a.len()).is_some();
                         batch.clear();
                     }

@@ -257,8 +257,8 @@ where
     }
 
     /// The settings of the planner of `configuration` built on this core: the parameters it
-    /// reads ([`Configuration::settings`](crate::Configuration::settings)), with the range and certification as they run,
-    /// then `extra` (the planner's own counts).
+    /// reads ([`Configuration::settings`](crate::Configuration::settings)), with the range and
+    /// certification as they run, then `extra` (the planner's own counts).
     pub(crate) fn settings(
         &self,
         configuration: crate::Configuration,
