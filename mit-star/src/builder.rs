@@ -361,11 +361,10 @@ fn bytes_per_sample(n: usize) -> u64 {
 
 /// Refuses a batch size whose one batch of samples could not fit in this machine's memory.
 fn check_batch_memory(batch_size: usize, n: usize) -> Result<(), BuildError> {
-    let budget = spaces::MemoryBudget::of_machine();
     let bytes = spaces::MemoryBudget::bytes_for(&[batch_size as u64, bytes_per_sample(n)]);
-    if bytes.is_some_and(|b| budget.fits(b)) {
+    let Err(budget) = spaces::MemoryBudget::check_on_machine(bytes) else {
         return Ok(());
-    }
+    };
     Err(BuildError::TooLarge {
         what: format!("a batch of {batch_size} samples in {n} dimensions"),
         needed: bytes.map_or_else(

@@ -28,6 +28,37 @@ impl MemoryBudget {
         Self(available_bytes().unwrap_or(Self::FALLBACK))
     }
 
+    /// Checks `bytes` (a size from [`bytes_for`](Self::bytes_for); `None` when it overflowed)
+    /// against this machine's available memory: `Ok` if it fits, else the budget it exceeds.
+    /// Sizes up to [`SURELY_FITS`](Self::SURELY_FITS) are accepted without asking the
+    /// operating system, so that a check made at every planner's construction costs nothing
+    /// (reading `/proc/meminfo` took about two thirds of MIT*'s construction on the Panda).
+    ///
+    /// ```
+    /// use spaces::MemoryBudget;
+    /// assert!(MemoryBudget::check_on_machine(Some(4096)).is_ok());
+    /// assert!(MemoryBudget::check_on_machine(None).is_err());
+    /// assert!(MemoryBudget::check_on_machine(Some(u64::MAX)).is_err());
+    /// ```
+    pub fn check_on_machine(bytes: Option<u64>) -> Result<(), Self> {
+        match bytes {
+            Some(b) if b <= Self::SURELY_FITS => Ok(()),
+            _ => {
+                let budget = Self::of_machine();
+                if bytes.is_some_and(|b| budget.fits(b)) {
+                    Ok(())
+                } else {
+                    Err(budget)
+                }
+            }
+        }
+    }
+
+    /// Sizes that fit on any machine a planner runs on (64 MiB):
+    /// [`check_on_machine`](Self::check_on_machine) accepts them without reading the machine's
+    /// memory.
+    pub const SURELY_FITS: u64 = 64 << 20;
+
     /// A fixed budget (for tests and embedded use).
     pub fn new(bytes: u64) -> Self {
         Self(bytes)
