@@ -13,6 +13,7 @@ use std::path::Path;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use mit_star::{Configuration, Parameters, build_planner};
 use problems::PlanningProblem;
 use rand::{RngExt, SeedableRng};
 use robot::ArmProblem;
@@ -158,12 +159,27 @@ fn edge_check(c: &mut Criterion) {
     group.finish();
 }
 
+fn construction(c: &mut Criterion) {
+    let mut group = c.benchmark_group("arm_construction");
+    let problem = problem("bookshelf_small_panda");
+    for configuration in [Configuration::RrtConnect, Configuration::MitStar] {
+        let parameters = Parameters {
+            range: (configuration == Configuration::RrtConnect).then_some(1.0),
+            ..Parameters::default()
+        };
+        group.bench_function(configuration.name(), |bench| {
+            bench.iter(|| build_planner(configuration, &problem, &parameters).expect("builds"));
+        });
+    }
+    group.finish();
+}
+
 criterion_group! {
     name = arm;
     config = Criterion::default()
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_secs(1))
         .sample_size(30);
-    targets = configuration_check, edge_check
+    targets = configuration_check, edge_check, construction
 }
 criterion_main!(arm);
