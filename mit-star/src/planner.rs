@@ -235,8 +235,7 @@ where
             .map_err(|source| PlannerError::State { endpoint, source })?;
     }
     // Every endpoint in one call: a batched checker decides the start and the goals in one
-    // pass of its lanes (on the Panda that halved the checks' share of a planner's
-    // construction).
+    // pass of its lanes instead of one pass each. The first in collision is reported.
     let states: Vec<f64> = endpoints()
         .flat_map(|(_, state)| state.iter().copied())
         .collect();

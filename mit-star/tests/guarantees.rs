@@ -375,6 +375,13 @@ fn bad_queries_are_typed_errors_naming_the_state() {
         }
     ));
     assert!(matches!(
+        query(vec![-0.4, 0.0], vec![vec![0.4, 0.0], vec![0.0, 0.0]]),
+        PlannerError::InCollision {
+            endpoint: Endpoint::Goal(1),
+            ..
+        }
+    ));
+    assert!(matches!(
         query(vec![-0.4, 0.0], vec![vec![0.4, 0.0], vec![0.9, 0.0]]),
         PlannerError::State {
             endpoint: Endpoint::Goal(1),

@@ -32,7 +32,7 @@ impl MemoryBudget {
     /// against this machine's available memory: `Ok` if it fits, else the budget it exceeds.
     /// Sizes up to [`SURELY_FITS`](Self::SURELY_FITS) are accepted without asking the
     /// operating system, so that a check made at every planner's construction costs nothing
-    /// (reading `/proc/meminfo` took about two thirds of MIT*'s construction on the Panda).
+    /// (reading `/proc/meminfo` took three quarters of MIT*'s construction on the Panda).
     ///
     /// ```
     /// use spaces::MemoryBudget;
