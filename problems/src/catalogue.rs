@@ -97,9 +97,8 @@ impl Family {
     /// family holds more than `4n` boxes of `n` dimensions, so `n²` sets the size: `R^100000`
     /// would need over a terabyte; the bound allows `4·max(n, 64)` boxes).
     pub fn build(&self, n: usize, seed: u64) -> Result<Problem, ProblemError> {
-        let budget = MemoryBudget::of_machine();
         let bytes = Self::estimated_bytes(n);
-        if !bytes.is_some_and(|b| budget.fits(b)) {
+        if let Err(budget) = MemoryBudget::check_on_machine(bytes) {
             return Err(ProblemError::TooLarge {
                 what: format!("{} in {n} dimensions", self.name),
                 needed: bytes.map_or_else(|| "more than 16 EiB".to_owned(), MemoryBudget::describe),

@@ -31,8 +31,10 @@ impl MemoryBudget {
     /// Checks `bytes` (a size from [`bytes_for`](Self::bytes_for); `None` when it overflowed)
     /// against this machine's available memory: `Ok` if it fits, else the budget it exceeds.
     /// Sizes up to [`SURELY_FITS`](Self::SURELY_FITS) are accepted without asking the
-    /// operating system, so that a check made at every planner's construction costs nothing
-    /// (reading `/proc/meminfo` took three quarters of MIT*'s construction on the Panda).
+    /// operating system, so that a check made at every planner's or problem's construction
+    /// costs nothing (reading `/proc/meminfo` took three quarters of MIT*'s construction on the
+    /// Panda). The planner builder's batch check, the problem catalogue and the experiment
+    /// definitions all check their sizes through it.
     ///
     /// ```
     /// use spaces::MemoryBudget;

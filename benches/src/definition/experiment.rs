@@ -141,7 +141,6 @@ impl Experiment {
         }
         // Every run's record is kept until the results are written: refuse, before allocating
         // the schedule, what could not fit (`runs = 1e12` aborted on allocation).
-        let budget = spaces::MemoryBudget::of_machine();
         let runs = self.runs as u64;
         let bytes = spaces::MemoryBudget::bytes_for(&[
             runs,
@@ -149,7 +148,7 @@ impl Experiment {
             self.problems.len() as u64,
             crate::RUN_RECORD_BYTES,
         ]);
-        if !bytes.is_some_and(|b| budget.fits(b)) {
+        if let Err(budget) = spaces::MemoryBudget::check_on_machine(bytes) {
             return Err(bad(
                 "runs",
                 format!(
