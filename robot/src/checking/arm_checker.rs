@@ -32,6 +32,13 @@ pub(crate) struct Shared {
     pub(crate) links: Vec<(usize, Range<usize>, Vec3A, f32)>,
     /// Local sphere centres and radii.
     pub(crate) spheres: Vec<(Vec3A, f32)>,
+    /// Per sphere: how far its ball reaches from its link's bounding-sphere centre, plus two
+    /// margins (rounded up). A sphere is no nearer an obstacle than that centre less this
+    /// (less its radius), so when the centre is further than this and the test's growth, the
+    /// sphere's test cannot find a contact and is skipped. The two margins cover the `f32`
+    /// rounding of the two points' placement and distances, so the skip never changes an
+    /// answer.
+    pub(crate) reaches: Vec<f32>,
     /// Self-collision pairs as indices into `links`.
     pub(crate) pairs: Vec<(usize, usize)>,
     /// How much every sphere is grown in every test, covering the `f32` rounding of the
@@ -155,7 +162,7 @@ impl ArmChecker {
             .iter()
             .filter_map(|&(a, b)| Some((slot(a)?, slot(b)?)))
             .collect();
-        let spheres = robot
+        let spheres: Vec<(Vec3A, f32)> = robot
             .spheres()
             .iter()
             .map(|s| (s.center.as_vec3a(), s.radius as f32))
@@ -181,6 +188,16 @@ impl ArmChecker {
             })
             .fold(0.0, f64::max);
         let margin = MARGIN_FLOOR + MARGIN_PER_METRE * (reach + far);
+        let mut reaches = vec![0.0_f32; spheres.len()];
+        for (_, range, center, _) in &links {
+            for (out, sphere) in reaches[range.clone()]
+                .iter_mut()
+                .zip(&spheres[range.clone()])
+            {
+                let reach = f64::from((sphere.0 - *center).length()) + f64::from(sphere.1);
+                *out = ((reach + 2.0 * margin) * (1.0 + 1e-6) + 1e-6) as f32;
+            }
+        }
         let scratch = Scratch {
             lanes: LaneScratch {
                 lane_poses: vec![LanePose::IDENTITY; fk.link_count()],
@@ -218,6 +235,7 @@ impl ArmChecker {
                 plain: vec![LaneF32::splat(margin as f32); links.len()],
                 links,
                 spheres,
+                reaches,
                 pairs,
                 margin,
                 levers,
@@ -492,16 +510,27 @@ fn invalid_filled(
         lane_bounds[k] = bounding;
         let grown = grow[k];
         let bound = LaneF32::splat(*radius) + grown;
-        let spheres = &s.spheres[range.clone()];
+        let spheres = s.spheres[range.clone()]
+            .iter()
+            .zip(&s.reaches[range.clone()]);
         for obstacle in &s.reachable[k] {
-            if obstacle.collides_spheres_lanes(&bounding, bound) & active == 0 {
+            let Some((hit, excess)) = obstacle.contacts_lanes(&bounding, bound) else {
+                continue;
+            };
+            if hit & active == 0 {
                 continue;
             }
             if !placed[k] {
                 place_lanes(pose, range, lane_centers);
                 placed[k] = true;
             }
-            for (c, sphere) in lane_centers[range.clone()].iter().zip(spheres) {
+            for (c, (sphere, &reach)) in lane_centers[range.clone()].iter().zip(spheres.clone()) {
+                // The bounding centre too far for this sphere to touch, in every lane that
+                // counts.
+                let reach = LaneF32::splat(reach) + grown;
+                if excess.simd_le(reach * reach).to_bitmask() & active == 0 {
+                    continue;
+                }
                 let radius = LaneF32::splat(sphere.1) + grown;
                 let hit = obstacle.collides_spheres_lanes(c, radius);
                 if hit & active != 0 {

@@ -137,9 +137,11 @@ pub(crate) fn certified_radii(
             let limit = cap(radius);
             // Spheres of the link are no closer than its bounding sphere.
             let outer = limit + margin + r;
-            if obstacle.may_be_within_lanes(&lane_bounds[k], outer) & live == 0
-                || obstacle.within_lanes(&lane_bounds[k], outer) & live == 0
-            {
+            if obstacle.may_be_within_lanes(&lane_bounds[k], outer) & live == 0 {
+                continue;
+            }
+            let excess = obstacle.excess_lanes(&lane_bounds[k]);
+            if excess.simd_lt(outer * outer).to_bitmask() & live == 0 {
                 continue;
             }
             let spheres = &s.spheres[range.clone()];
@@ -150,7 +152,17 @@ pub(crate) fn certified_radii(
                 }
                 placed[k] = true;
             }
-            for (c, sphere) in lane_centers[range.clone()].iter().zip(spheres) {
+            let reaches = &s.reaches[range.clone()];
+            for (c, (sphere, &extent)) in lane_centers[range.clone()]
+                .iter()
+                .zip(spheres.iter().zip(reaches))
+            {
+                // A sphere whose link's bounding centre is far enough that the sphere is clear
+                // by `limit` in every lane cannot lower the radius (nor is it near the floor).
+                let far = limit + margin + LaneF32::splat(extent);
+                if excess.simd_lt(far * far).to_bitmask() & live == 0 {
+                    continue;
+                }
                 let local = obstacle.local_lanes(c);
                 let distance = obstacle.distances_local_lanes(&local);
                 let gap = distance - LaneF32::splat(sphere.1);

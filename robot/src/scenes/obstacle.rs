@@ -148,6 +148,34 @@ impl Obstacle {
             .to_bitmask()
     }
 
+    /// [`collides_spheres_lanes`](Self::collides_spheres_lanes) that also hands back, where
+    /// some lane's ball meets the solid, every lane's squared distance from its centre to the
+    /// solid (as [`excess_lanes`](Self::excess_lanes) computes it): `None` if no lane's ball
+    /// meets it.
+    #[inline]
+    pub(crate) fn contacts_lanes(
+        &self,
+        center: &[LaneF32; 3],
+        radius: LaneF32,
+    ) -> Option<(u32, LaneF32)> {
+        let [x, y, z] = *center;
+        let (dx, dy, dz) = (
+            x - LaneF32::splat(self.center.x),
+            y - LaneF32::splat(self.center.y),
+            z - LaneF32::splat(self.center.z),
+        );
+        let reach = LaneF32::splat(self.bound) + radius;
+        let near = (dx * dx + dy * dy + dz * dz)
+            .simd_le(reach * reach)
+            .to_bitmask();
+        if near == 0 {
+            return None;
+        }
+        let excess = self.excess_lanes(center);
+        let hit = near & excess.simd_le(radius * radius).to_bitmask();
+        (hit != 0).then_some((hit, excess))
+    }
+
     /// Bit `l` set if lane `l`'s point may be closer than `limit[l]` to the solid: closer
     /// than `limit + bound` to the bounding sphere's centre (no square root; a cheaper, looser
     /// test than [`within_lanes`](Self::within_lanes)).
@@ -258,7 +286,7 @@ impl Obstacle {
 
     /// Per lane, the squared distance from the point to the solid (0 inside), `f32`.
     #[inline]
-    fn excess_lanes(&self, point: &[LaneF32; 3]) -> LaneF32 {
+    pub(crate) fn excess_lanes(&self, point: &[LaneF32; 3]) -> LaneF32 {
         self.excess_local_lanes(&self.local_lanes(point))
     }
 
