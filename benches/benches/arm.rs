@@ -4,8 +4,10 @@
 //! Run: `cargo bench -p mit-star-benches --bench arm`. Reports, per configuration: forward
 //! kinematics plus the full collision check (scene and self) one configuration at a time, and
 //! in batches of the checker's lanes (eight, or sixteen with AVX-512; finding the first invalid
-//! one, or any); and one full edge check of 1 rad, raked (its grid points in bisection order, a
-//! batch at a time) and one by one. Figures are recorded in
+//! one, or any); one full edge check of 1 rad, raked (its grid points in bisection order, a
+//! batch at a time) and one by one; the certification of the edges of RRT-Connect's first
+//! paths (twenty seeds on each scene's first problem, per edge); and a planner's construction.
+//! Figures are recorded in
 //! `docs/guide/src/reference/arm-planning.md`.
 
 use std::hint::black_box;
@@ -13,12 +15,16 @@ use std::path::Path;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use mit_star::{Configuration, Parameters, build_planner};
+use mit_star::{
+    Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
+};
 use problems::PlanningProblem;
 use rand::{RngExt, SeedableRng};
 use robot::ArmProblem;
 use spaces::{Never, SeededRng, StateSpace};
-use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use validity::{
+    DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, MotionProgress, StateValidity,
+};
 
 const SCENES: [&str; 3] = ["bookshelf_small_panda", "cage_panda", "table_pick_panda"];
 const COUNT: usize = 1024;
@@ -159,6 +165,58 @@ fn edge_check(c: &mut Criterion) {
     group.finish();
 }
 
+/// The edges of RRT-Connect's first paths on `problem` (range 1, certification off), one path
+/// per seed: the motions a solve certifies.
+fn path_edges(problem: &ArmProblem, seeds: u64) -> Vec<(Vec<f64>, Vec<f64>)> {
+    let uncertified = problem.clone().allowing_uncertified_motion(true);
+    let mut edges = Vec::new();
+    for seed in 0..seeds {
+        let parameters = Parameters {
+            seed,
+            certification: Some(1),
+            range: Some(1.0),
+            ..Parameters::default()
+        };
+        let mut planner =
+            build_planner(Configuration::RrtConnect, &uncertified, &parameters).expect("builds");
+        let outcome = planner
+            .solve(&FirstSolution.or(TimeLimit::seconds(1.0)))
+            .expect("plans");
+        if let Some(solution) = outcome.solution() {
+            let path: Vec<&[f64]> = solution.path.iter().collect();
+            for pair in path.windows(2) {
+                edges.push((pair[0].to_vec(), pair[1].to_vec()));
+            }
+        }
+    }
+    edges
+}
+
+fn certification(c: &mut Criterion) {
+    let mut group = c.benchmark_group("arm_certify");
+    for scene in SCENES {
+        let problem = problem(scene);
+        let edges = path_edges(&problem, 20);
+        let name = scene.trim_end_matches("_panda");
+        group.throughput(Throughput::Elements(edges.len() as u64));
+        group.bench_function(BenchmarkId::new("rrt_connect_paths", name), |bench| {
+            bench.iter(|| {
+                let mut valid = 0;
+                for (a, b) in &edges {
+                    let mut progress = MotionProgress::default();
+                    let status = problem
+                        .validity()
+                        .certify_motion(problem.space(), a, b, &mut progress, &Never)
+                        .expect("arms certify motions");
+                    valid += usize::from(status == EdgeStatus::Valid);
+                }
+                black_box(valid)
+            });
+        });
+    }
+    group.finish();
+}
+
 fn construction(c: &mut Criterion) {
     let mut group = c.benchmark_group("arm_construction");
     let problem = problem("bookshelf_small_panda");
@@ -180,6 +238,6 @@ criterion_group! {
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_secs(1))
         .sample_size(30);
-    targets = configuration_check, edge_check, construction
+    targets = configuration_check, edge_check, certification, construction
 }
 criterion_main!(arm);

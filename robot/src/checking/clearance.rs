@@ -102,45 +102,54 @@ pub(crate) fn certified_radii(
     for (k, (link, range, _, bound_radius)) in s.links.iter().enumerate() {
         let sweep = LaneF32::splat(edge.sweep[k] as f32);
         let r = LaneF32::splat(*bound_radius);
-        // The obstacles that come within the link's lever-arm sweep over a piece of the lane's
-        // radius so far (and twice the floor, safe from rounding); the others cannot lower
-        // the radius, and a link near none of them needs no more than this.
-        let near = |radius: LaneF32, obstacle: &crate::Obstacle| {
-            let outer = radius * sweep + floor + floor + margin + r;
-            obstacle.may_be_within_lanes(&lane_bounds[k], outer) & live != 0
-                && obstacle.within_lanes(&lane_bounds[k], outer) & live != 0
-        };
-        if !s.reachable[k].iter().any(|o| near(radius, o)) {
-            continue;
-        }
-        s.local.link_terms(k, edge.delta, &s.levers, terms);
-        let (speed, motion) = s
-            .local
-            .speed_of(k, lane_poses, &lane_bounds[k], (edge.delta, terms));
-        let second = terms.second(k) as f32;
-        let acceleration = LaneF32::splat(terms.acceleration(k) as f32);
-        // How far the link's spheres move over a piece of the lane's radius so far, by the
-        // bounds that hold whatever the direction of motion: a sphere clear by this (and
-        // twice the floor) cannot lower the radius.
-        let cap = |radius: LaneF32| {
-            let local = radius * speed + radius * radius * LaneF32::splat(second);
-            local.min(radius * sweep) + floor + floor
-        };
-        // What the rate of approach computed in `f32` may miss: its relative rounding, and the
-        // error of the link's poses carried through its joint rates.
-        let slack = speed * LaneF32::splat(DIRECTION_ROUNDING)
-            + margin * LaneF32::splat(4.0 * terms.rates(k) as f32);
-        let LaneMotion { velocity, angular } = motion;
+        // The link's motion at the lanes' configurations, computed when a first obstacle
+        // comes near enough to need it (a link near none needs no more than the tests below).
+        let mut moving: Option<LinkMotion> = None;
         let mut nearest = LaneF32::splat(f32::INFINITY);
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
         for obstacle in &s.reachable[k] {
-            let limit = cap(radius);
-            // Spheres of the link are no closer than its bounding sphere.
-            let outer = limit + margin + r;
-            if obstacle.may_be_within_lanes(&lane_bounds[k], outer) & live == 0 {
+            // First the obstacles that come within the link's lever-arm sweep over a piece of
+            // the lane's radius so far (and twice the floor, safe from rounding): the others
+            // cannot lower the radius. Spheres of the link are no closer than its bounding
+            // sphere.
+            let loose = radius * sweep + floor + floor + margin + r;
+            if obstacle.may_be_within_lanes(&lane_bounds[k], loose) & live == 0 {
                 continue;
             }
             let excess = obstacle.excess_lanes(&lane_bounds[k]);
+            if excess.simd_lt(loose * loose).to_bitmask() & live == 0 {
+                continue;
+            }
+            let m = *moving.get_or_insert_with(|| {
+                s.local.link_terms(k, edge.delta, &s.levers, terms);
+                let (speed, motion) =
+                    s.local
+                        .speed_of(k, lane_poses, &lane_bounds[k], (edge.delta, terms));
+                LinkMotion {
+                    speed,
+                    motion,
+                    second: LaneF32::splat(terms.second(k) as f32),
+                    acceleration: LaneF32::splat(terms.acceleration(k) as f32),
+                    // What the rate of approach computed in `f32` may miss: its relative
+                    // rounding, and the error of the link's poses carried through its joint
+                    // rates.
+                    slack: speed * LaneF32::splat(DIRECTION_ROUNDING)
+                        + margin * LaneF32::splat(4.0 * terms.rates(k) as f32),
+                }
+            });
+            let LinkMotion {
+                speed,
+                motion: LaneMotion { velocity, angular },
+                second,
+                acceleration,
+                slack,
+            } = m;
+            // How far the link's spheres move over a piece of the lane's radius so far, by the
+            // bounds that hold whatever the direction of motion: a sphere clear by this (and
+            // twice the floor) cannot lower the radius.
+            let limit =
+                (radius * speed + radius * radius * second).min(radius * sweep) + floor + floor;
+            let outer = limit + margin + r;
             if excess.simd_lt(outer * outer).to_bitmask() & live == 0 {
                 continue;
             }
@@ -246,17 +255,30 @@ pub(crate) fn certified_radii(
     (radii, refused)
 }
 
+/// A link's motion at a batch's configurations, as certification bounds it: its speed bound
+/// (the local sweep's first-order term), how its bounding centre moves and turns, the
+/// second-order term and acceleration bound of the edge, and the rounding a computed rate of
+/// approach may miss.
+#[derive(Clone, Copy)]
+struct LinkMotion {
+    speed: LaneF32,
+    motion: LaneMotion,
+    second: LaneF32,
+    acceleration: LaneF32,
+    slack: LaneF32,
+}
+
 /// Per lane, the largest `h` with `min(h · speed + h² · second, h · sweep) ≤ clear` (0 for a
 /// clearance of 0 or less; unbounded for what does not move).
 #[inline]
-fn reach(clear: LaneF32, speed: LaneF32, second: f32, sweep: f32) -> LaneF32 {
+fn reach(clear: LaneF32, speed: LaneF32, second: LaneF32, sweep: f32) -> LaneF32 {
     let c = clear.max(LaneF32::ZERO);
     let linear = if sweep > 0.0 {
         c / LaneF32::splat(sweep)
     } else {
         LaneF32::splat(f32::INFINITY)
     };
-    let q = LaneF32::splat(second);
+    let q = second;
     // The root of h² · q + h · speed = c, in the form that stays exact as q → 0.
     let denominator = speed + (speed * speed + LaneF32::splat(4.0) * q * c).sqrt();
     let quadratic = (c + c) / denominator.max(LaneF32::splat(f32::MIN_POSITIVE));
@@ -289,18 +311,35 @@ mod tests {
     fn the_radius_meets_the_bound_with_equality() {
         let (speed, second, sweep) = (0.8_f32, 0.5_f32, 2.0_f32);
         for clear in [1e-4_f32, 1e-2, 0.3] {
-            let h =
-                reach(LaneF32::splat(clear), LaneF32::splat(speed), second, sweep).to_array()[0];
+            let h = reach(
+                LaneF32::splat(clear),
+                LaneF32::splat(speed),
+                LaneF32::splat(second),
+                sweep,
+            )
+            .to_array()[0];
             let bound = (h * speed + h * h * second).min(h * sweep);
             assert!((bound - clear).abs() <= 1e-5 * clear, "{clear}: {bound}");
         }
         // The lever-arm bound wins when it is the tighter one.
-        let h = reach(LaneF32::splat(0.5), LaneF32::splat(3.0), 10.0, 1.0).to_array()[0];
+        let h = reach(
+            LaneF32::splat(0.5),
+            LaneF32::splat(3.0),
+            LaneF32::splat(10.0),
+            1.0,
+        )
+        .to_array()[0];
         assert!((h - 0.5).abs() < 1e-6, "{h}");
         // Nothing moves: unbounded; no clearance: nothing.
-        let h = reach(LaneF32::splat(0.1), LaneF32::ZERO, 0.0, 0.0).to_array()[0];
+        let h = reach(LaneF32::splat(0.1), LaneF32::ZERO, LaneF32::ZERO, 0.0).to_array()[0];
         assert!(h > 1e6, "{h}");
-        let h = reach(LaneF32::splat(-0.1), LaneF32::splat(1.0), 1.0, 1.0).to_array()[0];
+        let h = reach(
+            LaneF32::splat(-0.1),
+            LaneF32::splat(1.0),
+            LaneF32::splat(1.0),
+            1.0,
+        )
+        .to_array()[0];
         assert_eq!(h, 0.0);
     }
 }

@@ -178,7 +178,7 @@ impl Obstacle {
 
     /// Bit `l` set if lane `l`'s point may be closer than `limit[l]` to the solid: closer
     /// than `limit + bound` to the bounding sphere's centre (no square root; a cheaper, looser
-    /// test than [`within_lanes`](Self::within_lanes)).
+    /// test than comparing [`excess_lanes`](Self::excess_lanes) with `limit²`).
     #[inline]
     pub(crate) fn may_be_within_lanes(&self, point: &[LaneF32; 3], limit: LaneF32) -> u32 {
         let [x, y, z] = *point;
@@ -193,14 +193,6 @@ impl Obstacle {
             & (dx * dx + dy * dy + dz * dz)
                 .simd_lt(reach * reach)
                 .to_bitmask()
-    }
-
-    /// Bit `l` set if lane `l`'s point is closer than `limit[l]` to the solid (no square
-    /// root).
-    #[inline]
-    pub(crate) fn within_lanes(&self, point: &[LaneF32; 3], limit: LaneF32) -> u32 {
-        let positive = limit.simd_gt(LaneF32::ZERO).to_bitmask();
-        positive & self.excess_lanes(point).simd_lt(limit * limit).to_bitmask()
     }
 
     /// Per lane, the distance from the point (given in the solid's frame by
