@@ -27,7 +27,7 @@ use spaces::{StateSpace, Stop, wrap_angle};
 use validity::{EdgeStatus, MotionProgress};
 
 use crate::ArmChecker;
-use crate::checking::arm_checker::Scratch;
+use crate::checking::arm_checker::{Coordinate, Scratch, fill_on_line};
 use crate::checking::clearance::{EdgeBounds, certified_radii};
 use crate::checking::lanes::LANES;
 use crate::checking::local_sweep::EdgeTerms;
@@ -70,8 +70,6 @@ const POLL_BATCHES: u32 = 4;
 /// Buffers of the walk, per clone of the checker.
 #[derive(Debug, Clone)]
 pub(crate) struct CertifyScratch {
-    /// The middle configurations of a batch's pieces.
-    chunk: Vec<f64>,
     /// The edge's joint displacements (the short way round for wrapping joints).
     delta: Vec<f64>,
     /// Per link with spheres: how far its spheres move over the whole edge.
@@ -86,7 +84,6 @@ pub(crate) struct CertifyScratch {
 impl CertifyScratch {
     pub(crate) fn new(dimension: usize, links: usize, pairs: usize) -> Self {
         Self {
-            chunk: vec![0.0; LANES * dimension],
             delta: vec![0.0; dimension],
             sweep: vec![0.0; links],
             pair_sweep: vec![0.0; pairs],
@@ -120,7 +117,6 @@ impl ArmChecker {
         let mut guard = self.scratch.lock();
         let Scratch { lanes, certify } = &mut *guard;
         let CertifyScratch {
-            chunk,
             delta,
             sweep,
             pair_sweep,
@@ -173,29 +169,28 @@ impl ArmChecker {
             let mut middles = [0.0_f64; LANES];
             for (l, middle) in middles.iter_mut().enumerate() {
                 *middle = (t + (2 * l + 1) as f64 * w).min(1.0);
-                let q = &mut chunk[l * n..(l + 1) * n];
-                for (j, x) in q.iter_mut().enumerate() {
-                    let v = a[j] + delta[j] * *middle;
-                    // Kept between the ends, which rounding could leave by an ulp (past a
-                    // joint limit that an end sits on).
-                    *x = if s.wraps[j] {
-                        wrap_angle(v)
-                    } else {
-                        v.clamp(a[j].min(b[j]), a[j].max(b[j]))
-                    };
-                }
                 count += 1;
                 if *middle + w >= 1.0 {
                     break;
                 }
             }
             progress.count(count as u64);
+            // Their joint values, kept between the ends, which rounding could leave by an ulp
+            // (past a joint limit that an end sits on), or wrapped for a wrapping joint.
+            let keep = |j: usize| {
+                if s.wraps[j] {
+                    Coordinate::Wrapped
+                } else {
+                    Coordinate::Between(a[j].min(b[j]), a[j].max(b[j]))
+                }
+            };
+            let outside = fill_on_line(s, &mut lanes.lane_q, (a, delta), &middles[..count], keep);
             // No piece needs to reach further than the edge, and a batch's pieces need not be
             // more than `USEFUL` spacings wide, or `FINAL_USEFUL` if they reach its end.
             let reaches_end = middles[count - 1] + w >= 1.0;
             let useful = (if reaches_end { FINAL_USEFUL } else { USEFUL } * w).min(1.0);
             let (radii, refused) =
-                certified_radii(s, lanes, &chunk[..count * n], &edge, terms, (FLOOR, useful));
+                certified_radii(s, lanes, (count, outside), &edge, terms, (FLOOR, useful));
             if refused != 0 {
                 *progress = progress.advanced(t, w);
                 return Some(EdgeStatus::Invalid);

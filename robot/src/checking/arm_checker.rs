@@ -418,23 +418,60 @@ fn invalid_lanes_on(
     if segment.dimension() != s.lower.len() || count == 0 {
         return live.max(1);
     }
-    // Joint values by coordinate, straight from the segment (padding lanes repeat the first
-    // point), and the lanes outside the joint limits, four lanes at a time in `f64x4`:
-    // `x0 + d · t` rounds as the scalar interpolation does (no fused multiply-add), so the lanes
-    // hold the interpolated configurations bit for bit.
+    // Joint values by coordinate, straight from the segment, as the scalar interpolation
+    // rounds them: the lanes hold the interpolated configurations bit for bit.
+    let ends = (segment.start(), segment.delta());
+    let invalid = fill_on_line(s, &mut scratch.lane_q, ends, fractions, |_| {
+        Coordinate::AsIs
+    });
+    if undecided(invalid, live, wanted) == 0 {
+        return invalid;
+    }
+    invalid_filled(s, scratch, (live, invalid), grow, wanted)
+}
+
+/// What [`fill_on_line`] does with a coordinate `start + delta · t`.
+#[derive(Clone, Copy)]
+pub(crate) enum Coordinate {
+    /// Kept as it is.
+    AsIs,
+    /// Kept between two values (the edge's ends, which rounding could leave by an ulp).
+    Between(f64, f64),
+    /// Wrapped into `[-π, π)` (a wrapping joint).
+    Wrapped,
+}
+
+/// Writes into `lane_q`, by coordinate, the configurations `start + delta · t` at the first
+/// [`LANES`] fractions `t` of `fractions` (padding lanes repeat the first), coordinate `j` as
+/// `coordinate(j)` says, and returns the lanes outside the joint limits. Four lanes at a time
+/// in `f64x4`: `start + delta · t` rounds as the scalar interpolation does (no fused
+/// multiply-add).
+pub(crate) fn fill_on_line(
+    s: &Shared,
+    lane_q: &mut [LaneF32],
+    (start, delta): (&[f64], &[f64]),
+    fractions: &[f64],
+    coordinate: impl Fn(usize) -> Coordinate,
+) -> u32 {
+    let count = fractions.len().min(LANES);
     let mut ts = [fractions[0]; LANES];
     ts[..count].copy_from_slice(&fractions[..count]);
     let fours: [f64x4; LANES / 4] = std::array::from_fn(|h| {
         f64x4::from([ts[4 * h], ts[4 * h + 1], ts[4 * h + 2], ts[4 * h + 3]])
     });
     let mut inside = u32::MAX;
-    let (start, delta) = (segment.start(), segment.delta());
-    for (j, q) in scratch.lane_q.iter_mut().enumerate() {
+    for (j, q) in lane_q.iter_mut().enumerate() {
         let (x0, d) = (f64x4::splat(start[j]), f64x4::splat(delta[j]));
         let (lo, hi) = (f64x4::splat(s.lower[j]), f64x4::splat(s.upper[j]));
         let mut values = [0.0_f32; LANES];
+        let kind = coordinate(j);
         for (h, t) in fours.iter().enumerate() {
             let x = x0 + d * *t;
+            let x = match kind {
+                Coordinate::AsIs => x,
+                Coordinate::Between(low, high) => x.max(f64x4::splat(low)).min(f64x4::splat(high)),
+                Coordinate::Wrapped => f64x4::from(x.to_array().map(spaces::wrap_angle)),
+            };
             // Lanes `4h … 4h + 3`: cleared where outside the limits, the others kept.
             let within = (x.simd_ge(lo) & x.simd_le(hi)).to_bitmask();
             inside &= !(0xf << (4 * h)) | (within << (4 * h));
@@ -444,11 +481,8 @@ fn invalid_lanes_on(
         }
         *q = LaneF32::new(values);
     }
-    let invalid = !inside & live;
-    if undecided(invalid, live, wanted) == 0 {
-        return invalid;
-    }
-    invalid_filled(s, scratch, (live, invalid), grow, wanted)
+    let live: u32 = (1 << count) - 1;
+    !inside & live
 }
 
 /// Lanes still to decide: those before the first invalid one (none once one is found, if any

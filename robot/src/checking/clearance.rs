@@ -41,9 +41,7 @@
 //! sphere (then its distance to the solid) is tested before its small spheres, which are
 //! placed only if the bounding sphere comes that close.
 
-use crate::checking::arm_checker::{
-    LaneScratch, Shared, distance_squared, fill_lanes, outside_limits,
-};
+use crate::checking::arm_checker::{LaneScratch, Shared, distance_squared};
 use crate::checking::lanes::{LANES, LaneF32, LanePoint};
 use crate::checking::local_sweep::{EdgeTerms, LaneMotion};
 
@@ -61,25 +59,24 @@ pub(crate) struct EdgeBounds<'a> {
     pub(crate) pair_sweep: &'a [f64],
 }
 
-/// Per lane of `chunk` (at most [`LANES`] configurations of the robot's dimension, on the
-/// edge of `edge`, whose local sweep terms `terms` computes as the links need them): its
-/// certified radius, as a fraction of the edge, and as bit `l` of the second value whether
-/// lane `l` is refused — outside the joint limits, or with a clearance
-/// below `floor` metres (in contact, or within a hair of it). Radii are computed up to
-/// `useful` (a larger radius is returned as `useful`: clearances are not sought beyond what
-/// it needs).
+/// Per lane of the first `count` of `lanes.lane_q` (at most [`LANES`] configurations of the
+/// robot, on the edge of `edge`, whose local sweep terms `terms` computes as the links need
+/// them; `outside` the lanes outside the joint limits): its certified radius, as a fraction of
+/// the edge, and as bit `l` of the second value whether lane `l` is refused — outside the
+/// joint limits, or with a clearance below `floor` metres (in contact, or within a hair of
+/// it). Radii are computed up to `useful` (a larger radius is returned as `useful`:
+/// clearances are not sought beyond what it needs).
 pub(crate) fn certified_radii(
     s: &Shared,
     lanes: &mut LaneScratch,
-    chunk: &[f64],
+    (count, outside): (usize, u32),
     edge: &EdgeBounds<'_>,
     terms: &mut EdgeTerms,
     (floor, useful): (f64, f64),
 ) -> ([f64; LANES], u32) {
-    let n = s.lower.len();
-    let count = (chunk.len() / n).min(LANES);
+    let count = count.min(LANES);
     let live: u32 = (1 << count) - 1;
-    let mut refused = outside_limits(s, chunk, n) & live;
+    let mut refused = outside & live;
     let LaneScratch {
         lane_poses,
         lane_centers,
@@ -88,7 +85,6 @@ pub(crate) fn certified_radii(
         lane_q,
         ..
     } = lanes;
-    fill_lanes(lane_q, &chunk[..count * n], n);
     s.lanes.link_poses(lane_q, lane_poses);
     for (bound, (link, _, center, _)) in lane_bounds.iter_mut().zip(&s.links) {
         *bound = lane_poses[*link].point(*center);
