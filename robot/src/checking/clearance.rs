@@ -210,7 +210,12 @@ pub(crate) fn certified_radii(
         // pair limits nothing.
         let mut best = radius * LaneF32::splat(sweep) + floor + floor + margins;
         let reach_ab = LaneF32::splat(la.3 + lb.3);
-        if closer(&lane_bounds[a], &lane_bounds[b], best + reach_ab) & live != 0 {
+        if closer(&lane_bounds[a], &lane_bounds[b], best + reach_ab) & live == 0 {
+            // Clear by more than that in every lane (twice the floor more): neither the
+            // radius nor a refusal can come from this pair.
+            continue;
+        }
+        {
             for (k, l) in [(a, la), (b, lb)] {
                 if !placed[k] {
                     let pose = &lane_poses[l.0];
@@ -232,8 +237,19 @@ pub(crate) fn certified_radii(
                     continue;
                 }
                 for (cb, sb) in centers_b.iter().zip(spheres_b) {
-                    let gap = distance_squared(ca, cb).sqrt() - LaneF32::splat(ri + sb.1);
-                    best = best.min(gap);
+                    let reach = LaneF32::splat(ri + sb.1);
+                    let squared = distance_squared(ca, cb);
+                    // No square root where no lane's gap could be below the best so far.
+                    if squared
+                        .simd_lt((best + reach) * (best + reach))
+                        .to_bitmask()
+                        & live
+                        == 0
+                        && (best + reach).simd_gt(LaneF32::ZERO).to_bitmask() & live == live
+                    {
+                        continue;
+                    }
+                    best = best.min(squared.sqrt() - reach);
                 }
             }
         }
