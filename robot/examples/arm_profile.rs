@@ -22,10 +22,13 @@
 //! (`ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
 //! per-configuration table; `ARM_PROFILE_AUDIT=1` audits every path with parry between runs,
 //! as the benchmark harness does; `ARM_PROFILE_TIME=30` gives each solve 30 s instead of 1 s,
-//! so that under valgrind no solve is cut short by its deadline) (the
-//! arm-planning reference page, "Where an arm solve's time goes").
+//! so that under valgrind no solve is cut short by its deadline; `ARM_PROFILE_CSV=FILE` writes
+//! each solve's scene, problem, seed, time in µs and whether it solved, for
+//! `benches/peers/vamp/summarize_loops.py`) (the arm-planning reference page, "Where an arm
+//! solve's time goes").
 
 use std::hint::black_box;
+use std::io::Write;
 use std::time::Instant;
 
 use mit_star::{
@@ -72,6 +75,12 @@ fn main() {
         "| scene | problems | median t_first (µs) | configurations | grid points | certified edges | NN queries | iterations | states | µs / configuration |"
     );
     println!("|---|---|---|---|---|---|---|---|---|---|");
+    // One line per solve, for a comparison run by run (`benches/peers/vamp/summarize_loops.py`).
+    let mut csv = std::env::var_os("ARM_PROFILE_CSV").map(|path| {
+        let mut file = std::io::BufWriter::new(std::fs::File::create(path).expect("a CSV file"));
+        writeln!(file, "scene,index,seed,solve_us,solved").expect("writes the CSV");
+        file
+    });
     let mut pooled = Vec::new();
     let mut setups = Vec::new();
     let mut first_problems = Vec::new();
@@ -80,10 +89,8 @@ fn main() {
         if !only.is_empty() && !only.split(',').any(|s| scene.starts_with(s)) {
             continue;
         }
-        let problems: Vec<ArmProblem> = problems(&folder, scene, count)
-            .into_iter()
-            .map(|(_, problem)| problem)
-            .collect();
+        let indexed = problems(&folder, scene, count);
+        let problems: Vec<ArmProblem> = indexed.iter().map(|(_, p)| p.clone()).collect();
         if let Some(first) = problems.first() {
             first_problems.push((scene, first.clone()));
         }
@@ -109,6 +116,18 @@ fn main() {
                 let run = Instant::now();
                 let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(budget)));
                 let t = run.elapsed().as_secs_f64() * 1e6;
+                if let Some(file) = csv.as_mut() {
+                    let solved = outcome.as_ref().is_ok_and(|o| o.solution().is_some());
+                    let name = scene.trim_end_matches("_panda");
+                    let index = indexed[i].0;
+                    writeln!(
+                        file,
+                        "{name},{index},{},{t:.3},{}",
+                        parameters.seed,
+                        u8::from(solved)
+                    )
+                    .expect("writes the CSV");
+                }
                 // As the benchmark harness does between runs: audit the path with parry.
                 if std::env::var_os("ARM_PROFILE_AUDIT").is_some()
                     && let Some(solution) = outcome.ok().and_then(|o| o.solution().cloned())
