@@ -179,15 +179,13 @@ fn path_edges(problem: &ArmProblem, seeds: u64) -> Vec<(Vec<f64>, Vec<f64>)> {
         };
         let mut planner =
             build_planner(Configuration::RrtConnect, &uncertified, &parameters).expect("builds");
-        let outcome = planner
-            .solve(&FirstSolution.or(TimeLimit::seconds(1.0)))
-            .expect("plans");
-        if let Some(solution) = outcome.solution() {
-            let path: Vec<&[f64]> = solution.path.iter().collect();
-            for pair in path.windows(2) {
-                edges.push((pair[0].to_vec(), pair[1].to_vec()));
-            }
-        }
+        let stop = FirstSolution.or(TimeLimit::seconds(1.0));
+        let outcome = planner.solve(&stop).expect("plans");
+        let path: Vec<&[f64]> = outcome
+            .solution()
+            .map(|solution| solution.path.iter().collect())
+            .unwrap_or_default();
+        edges.extend(path.windows(2).map(|w| (w[0].to_vec(), w[1].to_vec())));
     }
     edges
 }

@@ -127,8 +127,22 @@ impl Obstacle {
     /// The SIMD twin of [`collides_sphere`](Self::collides_sphere): bit `l` of the result is
     /// set if lane `l`'s ball (centre `center[..][l]`, radius `radius[l]`) meets the obstacle.
     /// The same arithmetic in the same order, a lane's worth of balls at a time.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn collides_spheres_lanes(&self, center: &[LaneF32; 3], radius: LaneF32) -> u32 {
+        let near = self.bound_meets_lanes(center, radius);
+        if near == 0 {
+            return 0;
+        }
+        near & self
+            .excess_lanes(center)
+            .simd_le(radius * radius)
+            .to_bitmask()
+    }
+
+    /// Bit `l` set if lane `l`'s ball meets the solid's bounding sphere (no square root): the
+    /// cheap first test of [`collides_spheres_lanes`](Self::collides_spheres_lanes).
+    #[inline(always)]
+    fn bound_meets_lanes(&self, center: &[LaneF32; 3], radius: LaneF32) -> u32 {
         let [x, y, z] = *center;
         let (dx, dy, dz) = (
             x - LaneF32::splat(self.center.x),
@@ -136,15 +150,8 @@ impl Obstacle {
             z - LaneF32::splat(self.center.z),
         );
         let reach = LaneF32::splat(self.bound) + radius;
-        let near = (dx * dx + dy * dy + dz * dz)
+        (dx * dx + dy * dy + dz * dz)
             .simd_le(reach * reach)
-            .to_bitmask();
-        if near == 0 {
-            return 0;
-        }
-        near & self
-            .excess_lanes(center)
-            .simd_le(radius * radius)
             .to_bitmask()
     }
 
@@ -158,16 +165,7 @@ impl Obstacle {
         center: &[LaneF32; 3],
         radius: LaneF32,
     ) -> Option<(u32, LaneF32)> {
-        let [x, y, z] = *center;
-        let (dx, dy, dz) = (
-            x - LaneF32::splat(self.center.x),
-            y - LaneF32::splat(self.center.y),
-            z - LaneF32::splat(self.center.z),
-        );
-        let reach = LaneF32::splat(self.bound) + radius;
-        let near = (dx * dx + dy * dy + dz * dz)
-            .simd_le(reach * reach)
-            .to_bitmask();
+        let near = self.bound_meets_lanes(center, radius);
         if near == 0 {
             return None;
         }
