@@ -35,7 +35,6 @@ use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
 use problems::PlanningProblem;
-use robot::ArmProblem;
 use spaces::StateSpace;
 use validity::StateValidity;
 
@@ -89,14 +88,13 @@ fn main() {
         if !only.is_empty() && !only.split(',').any(|s| scene.starts_with(s)) {
             continue;
         }
-        let indexed = problems(&folder, scene, count);
-        let problems: Vec<ArmProblem> = indexed.iter().map(|(_, p)| p.clone()).collect();
-        if let Some(first) = problems.first() {
+        let problems = problems(&folder, scene, count);
+        if let Some((_, first)) = problems.first() {
             first_problems.push((scene, first.clone()));
         }
         let mut rows: [Vec<f64>; 7] = Default::default();
         for seed in 0..seeds {
-            for (i, problem) in problems.iter().enumerate() {
+            for (i, (index, problem)) in problems.iter().enumerate() {
                 let parameters = Parameters {
                     seed: seed * 1000 + i as u64,
                     // VAMP's range for RRT-Connect wherever it runs (AORRTC's first search, a
@@ -119,7 +117,6 @@ fn main() {
                 if let Some(file) = csv.as_mut() {
                     let solved = outcome.as_ref().is_ok_and(|o| o.solution().is_some());
                     let name = scene.trim_end_matches("_panda");
-                    let index = indexed[i].0;
                     writeln!(
                         file,
                         "{name},{index},{},{t:.3},{}",

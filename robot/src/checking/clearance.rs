@@ -41,7 +41,7 @@
 //! sphere (then its distance to the solid) is tested before its small spheres, which are
 //! placed only if the bounding sphere comes that close.
 
-use crate::checking::arm_checker::{LaneScratch, Shared, distance_squared};
+use crate::checking::arm_checker::{LaneScratch, Shared, distance_squared, place_link};
 use crate::checking::lanes::{LANES, LaneF32, LanePoint};
 use crate::checking::local_sweep::{EdgeTerms, LaneMotion};
 
@@ -95,7 +95,7 @@ pub(crate) fn certified_radii(
     let floor = LaneF32::splat(floor as f32);
     // Per lane, the smallest radius so far: no lane's is sought beyond `useful`.
     let mut radius = LaneF32::splat(useful as f32);
-    for (k, (link, range, _, bound_radius)) in s.links.iter().enumerate() {
+    for (k, (_, range, _, bound_radius)) in s.links.iter().enumerate() {
         let sweep = LaneF32::splat(edge.sweep[k] as f32);
         let r = LaneF32::splat(*bound_radius);
         // The link's motion at the lanes' configurations, computed when a first obstacle
@@ -150,13 +150,7 @@ pub(crate) fn certified_radii(
                 continue;
             }
             let spheres = &s.spheres[range.clone()];
-            if !placed[k] {
-                let pose = &lane_poses[*link];
-                for (c, sphere) in lane_centers[range.clone()].iter_mut().zip(spheres) {
-                    *c = pose.point(sphere.0);
-                }
-                placed[k] = true;
-            }
+            place_link(s, k, lane_poses, lane_centers, placed);
             let reaches = &s.reaches[range.clone()];
             for (c, (sphere, &extent)) in lane_centers[range.clone()]
                 .iter()
@@ -215,42 +209,24 @@ pub(crate) fn certified_radii(
             // radius nor a refusal can come from this pair.
             continue;
         }
-        {
-            for (k, l) in [(a, la), (b, lb)] {
-                if !placed[k] {
-                    let pose = &lane_poses[l.0];
-                    for (c, sphere) in lane_centers[l.1.clone()]
-                        .iter_mut()
-                        .zip(&s.spheres[l.1.clone()])
-                    {
-                        *c = pose.point(sphere.0);
-                    }
-                    placed[k] = true;
-                }
+        for k in [a, b] {
+            place_link(s, k, lane_poses, lane_centers, placed);
+        }
+        let (spheres_a, spheres_b) = (&s.spheres[la.1.clone()], &s.spheres[lb.1.clone()]);
+        let (centers_a, centers_b) = (&lane_centers[la.1.clone()], &lane_centers[lb.1.clone()]);
+        let bound_b = &lane_bounds[b];
+        for (ca, sa) in centers_a.iter().zip(spheres_a) {
+            let ri = sa.1;
+            if closer(ca, bound_b, best + LaneF32::splat(ri + lb.3)) & live == 0 {
+                continue;
             }
-            let (spheres_a, spheres_b) = (&s.spheres[la.1.clone()], &s.spheres[lb.1.clone()]);
-            let (centers_a, centers_b) = (&lane_centers[la.1.clone()], &lane_centers[lb.1.clone()]);
-            let bound_b = &lane_bounds[b];
-            for (ca, sa) in centers_a.iter().zip(spheres_a) {
-                let ri = sa.1;
-                if closer(ca, bound_b, best + LaneF32::splat(ri + lb.3)) & live == 0 {
+            for (cb, sb) in centers_b.iter().zip(spheres_b) {
+                let reach = LaneF32::splat(ri + sb.1);
+                // No square root where no lane's gap could be below the best so far.
+                if closer(ca, cb, best + reach) & live == 0 {
                     continue;
                 }
-                for (cb, sb) in centers_b.iter().zip(spheres_b) {
-                    let reach = LaneF32::splat(ri + sb.1);
-                    let squared = distance_squared(ca, cb);
-                    // No square root where no lane's gap could be below the best so far.
-                    if squared
-                        .simd_lt((best + reach) * (best + reach))
-                        .to_bitmask()
-                        & live
-                        == 0
-                        && (best + reach).simd_gt(LaneF32::ZERO).to_bitmask() & live == live
-                    {
-                        continue;
-                    }
-                    best = best.min(squared.sqrt() - reach);
-                }
+                best = best.min(distance_squared(ca, cb).sqrt() - reach);
             }
         }
         let clear = best - margins;

@@ -143,16 +143,22 @@ impl Obstacle {
     /// cheap first test of [`collides_spheres_lanes`](Self::collides_spheres_lanes).
     #[inline(always)]
     fn bound_meets_lanes(&self, center: &[LaneF32; 3], radius: LaneF32) -> u32 {
-        let [x, y, z] = *center;
+        let reach = LaneF32::splat(self.bound) + radius;
+        self.centre_distance_squared(center)
+            .simd_le(reach * reach)
+            .to_bitmask()
+    }
+
+    /// Per lane, the squared distance from the point to the centre of the solid's bounding
+    /// sphere.
+    #[inline(always)]
+    fn centre_distance_squared(&self, &[x, y, z]: &[LaneF32; 3]) -> LaneF32 {
         let (dx, dy, dz) = (
             x - LaneF32::splat(self.center.x),
             y - LaneF32::splat(self.center.y),
             z - LaneF32::splat(self.center.z),
         );
-        let reach = LaneF32::splat(self.bound) + radius;
-        (dx * dx + dy * dy + dz * dz)
-            .simd_le(reach * reach)
-            .to_bitmask()
+        dx * dx + dy * dy + dz * dz
     }
 
     /// [`collides_spheres_lanes`](Self::collides_spheres_lanes) that also hands back, where
@@ -179,16 +185,11 @@ impl Obstacle {
     /// test than comparing [`excess_lanes`](Self::excess_lanes) with `limit²`).
     #[inline]
     pub(crate) fn may_be_within_lanes(&self, point: &[LaneF32; 3], limit: LaneF32) -> u32 {
-        let [x, y, z] = *point;
-        let (dx, dy, dz) = (
-            x - LaneF32::splat(self.center.x),
-            y - LaneF32::splat(self.center.y),
-            z - LaneF32::splat(self.center.z),
-        );
         let reach = limit + LaneF32::splat(self.bound);
         let positive = limit.simd_gt(LaneF32::ZERO).to_bitmask();
         positive
-            & (dx * dx + dy * dy + dz * dz)
+            & self
+                .centre_distance_squared(point)
                 .simd_lt(reach * reach)
                 .to_bitmask()
     }
