@@ -55,7 +55,7 @@
 //! | [`ProblemSpec`], [`ProblemSource`], [`ProblemInstance`] | a problem over dimensions and layouts; built-in or file; one concrete instance with its budget |
 //! | [`MbmFolder`], [`RobotChoice`] | a MotionBenchMaker folder and the robot planned for (`--robot`, shipped or a folder) |
 //! | [`RunJob`], [`Executor`], [`ExecutionOptions`], [`Interrupt`] | the shuffled, seeded schedule of runs; parallel execution with progress; SIGINT/SIGTERM |
-//! | [`RunJournal`], [`results_from_records`] | every finished run appended to the raw files and committed to the database at once; reading them back |
+//! | [`RunJournal`], [`results_from_records`] | every finished run appended to the raw files at once and committed to the database in batches; reading them back |
 //! | [`RunRecord`], [`RunStatus`], [`PathValidation`], [`ValidationMethod`] | what one run measured; how it ended; the independent path check (exact for box worlds) |
 //! | [`ExperimentResults`], [`MachineInfo`], [`iso_timestamp`] | every finished run, with how, when and where it ran |
 //! | [`statistics`] | medians and their confidence intervals, Clopper–Pearson, anytime series |
@@ -104,7 +104,7 @@ pub use execution::executor::{ExecutionOptions, Executor, RecordSink, RunKey};
 pub use execution::interrupt::Interrupt;
 pub use execution::results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
 pub use execution::run_job::{RUN_RECORD_BYTES, RunJob};
-pub use execution::run_journal::{RunJournal, results_from_records};
+pub use execution::run_journal::{DATABASE_COMMIT_INTERVAL, RunJournal, results_from_records};
 pub use execution::shard::{SHARD_FILE, Shard};
 pub use execution::shard_merge::{MergeReport, merge_parts};
 pub use formats::campaign_comparison::{CampaignComparison, Change, ComparedRow};

@@ -333,9 +333,9 @@ impl BenchArgs {
         let mut folder = ResultsFolder::prepare(&output)?;
         folder.claim(&experiment)?;
         folder.claim_shard(self.shard)?;
-        // Every finished run goes to disk (raw files and database) before its worker starts
-        // the next one: SIGTERM, SIGKILL or a crash lose at most the runs in flight. Runs
-        // recorded by an earlier bench of this experiment are not rerun.
+        // Every finished run goes to the raw files before its worker starts the next one
+        // (the database follows in batches): SIGTERM, SIGKILL or a crash lose at most the runs
+        // in flight. Runs recorded by an earlier bench of this experiment are not rerun.
         let journal = RunJournal::open(folder.path(), &instances)?;
         if journal.healed() > 0 {
             eprintln!(

@@ -269,7 +269,8 @@ impl PlannerArenaDatabase {
     }
 
     /// Appends the runs of `log` to the existing experiment `experiment` in one transaction
-    /// and sets its `runcount` and `totaltime` — how a run is committed the moment it finishes.
+    /// and sets its `runcount` and `totaltime` — how a results folder's journal commits a batch
+    /// of finished runs.
     ///
     /// # Errors
     /// [`HarnessError::Database`] if SQLite refuses (nothing is written then).
