@@ -6,8 +6,8 @@
 //! - [`executor`]: the jobs run in parallel with progress, each finished run handed to a sink.
 //! - [`interrupt`]: SIGINT and SIGTERM, handled alike (finished runs are kept).
 //! - [`run_journal`] (with `run_journal/repair.rs`): every finished run appended to
-//!   `runs.jsonl`/`runs.csv` and committed to the database before the next starts; reading them
-//!   back, repairing a torn last line and runs recorded twice.
+//!   `runs.jsonl`/`runs.csv` before the next starts and committed to the database in batches;
+//!   reading them back, repairing a torn last line and runs recorded twice.
 //! - [`results_folder`] (with `results_folder/folder_lock.rs`, one writer per folder, and
 //!   `results_folder/agreement.rs`, whether journal, CSV and database agree): where the outputs
 //!   go, checked before work starts, and rebuilt from the journal at the end.

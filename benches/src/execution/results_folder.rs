@@ -29,7 +29,7 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 /// | `runs.csv` | one row per run (one line each), appended the moment the run finishes: every per-run figure, counters, the trace |
 /// | `runs.jsonl` | one JSON object per run, appended likewise, with the trace, the path and the validation: the journal every summary is rebuilt from |
 /// | `logs/<instance>.log` | one OMPL benchmark log per problem instance, rebuilt from every recorded run |
-/// | `benchmark.db` | the Planner Arena database: each run committed as it finishes, then rebuilt from every recorded run |
+/// | `benchmark.db` | the Planner Arena database: runs committed in batches while they finish (at most 10 s behind), then rebuilt from every recorded run |
 /// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
 /// | `kpi.md` | the KPI tables |
 /// | `shard.toml` | which part of the experiment's runs the folder holds (`bench --shard K/N` only) |

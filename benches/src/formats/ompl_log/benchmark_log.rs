@@ -170,7 +170,7 @@ impl BenchmarkLog {
     }
 
     /// The log of instance `index` of `results` holding `runs` (runs of that instance, in
-    /// place of `results.runs[index]`) and total time `total_time`: how a single finished run
+    /// place of `results.runs[index]`) and total time `total_time`: how a batch of finished runs
     /// is committed to the database without copying the experiment's results.
     pub(crate) fn from_runs(
         results: &ExperimentResults,
