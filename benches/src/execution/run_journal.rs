@@ -567,7 +567,10 @@ mod tests {
     #[test]
     fn the_database_follows_in_batches() {
         let (folder, results) = setup("batches");
-        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        // An interval no test outlasts (the default, 10 s, could pass on a stalled machine).
+        let mut journal = RunJournal::open(&folder, &results.instances)
+            .unwrap()
+            .commit_every(Duration::MAX);
         for (planner, run) in [(0, 0), (1, 0), (0, 1)] {
             journal
                 .append(&results, 0, &record(&results, planner, run))
@@ -592,7 +595,9 @@ mod tests {
             .unwrap();
         drop(journal);
         assert_eq!(runs_in_database(&folder), (1, 3, 2));
-        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        let mut journal = RunJournal::open(&folder, &results.instances)
+            .unwrap()
+            .commit_every(Duration::MAX);
         assert_eq!(journal.recorded().len(), 4);
         journal
             .append(&results, 0, &record(&results, 1, 2))
