@@ -494,6 +494,17 @@ mod tests {
             .collect()
     }
 
+    /// A journal of `folder` committing to its database every `interval`.
+    fn journal_committing_every(
+        folder: &Path,
+        results: &ExperimentResults,
+        interval: Duration,
+    ) -> RunJournal {
+        RunJournal::open(folder, &results.instances)
+            .unwrap()
+            .commit_every(interval)
+    }
+
     fn runs_in_database(folder: &Path) -> (i64, i64, i64) {
         let db = PlannerArenaDatabase::open(&folder.join(DATABASE_FILE)).unwrap();
         let runcount = db
@@ -514,9 +525,7 @@ mod tests {
     #[test]
     fn appends_one_line_per_run_and_continues_across_journals() {
         let (folder, results) = setup("append");
-        let mut journal = RunJournal::open(&folder, &results.instances)
-            .unwrap()
-            .commit_every(Duration::ZERO);
+        let mut journal = journal_committing_every(&folder, &results, Duration::ZERO);
         assert!(journal.recorded().is_empty());
         journal
             .append(&results, 0, &record(&results, 0, 0))
@@ -540,9 +549,7 @@ mod tests {
         drop(journal);
 
         // A second journal (a resumed bench) knows the runs and continues the same row.
-        let mut journal = RunJournal::open(&folder, &results.instances)
-            .unwrap()
-            .commit_every(Duration::ZERO);
+        let mut journal = journal_committing_every(&folder, &results, Duration::ZERO);
         assert_eq!(journal.recorded().len(), 3);
         assert!(
             journal
@@ -568,9 +575,7 @@ mod tests {
     fn the_database_follows_in_batches() {
         let (folder, results) = setup("batches");
         // An interval no test outlasts (the default, 10 s, could pass on a stalled machine).
-        let mut journal = RunJournal::open(&folder, &results.instances)
-            .unwrap()
-            .commit_every(Duration::MAX);
+        let mut journal = journal_committing_every(&folder, &results, Duration::MAX);
         for (planner, run) in [(0, 0), (1, 0), (0, 1)] {
             journal
                 .append(&results, 0, &record(&results, planner, run))
@@ -595,9 +600,7 @@ mod tests {
             .unwrap();
         drop(journal);
         assert_eq!(runs_in_database(&folder), (1, 3, 2));
-        let mut journal = RunJournal::open(&folder, &results.instances)
-            .unwrap()
-            .commit_every(Duration::MAX);
+        let mut journal = journal_committing_every(&folder, &results, Duration::MAX);
         assert_eq!(journal.recorded().len(), 4);
         journal
             .append(&results, 0, &record(&results, 1, 2))
@@ -662,9 +665,7 @@ mod tests {
     #[test]
     fn runs_recorded_twice_are_healed() {
         let (folder, results) = setup("heal");
-        let mut journal = RunJournal::open(&folder, &results.instances)
-            .unwrap()
-            .commit_every(Duration::ZERO);
+        let mut journal = journal_committing_every(&folder, &results, Duration::ZERO);
         for run in 0..2 {
             journal
                 .append(&results, 0, &record(&results, 0, run))
