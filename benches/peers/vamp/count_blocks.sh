@@ -5,6 +5,8 @@
 set -euo pipefail
 OUT=${1:?usage: count_blocks.sh OUT}
 : "${W:?set W to the VAMP work folder}"
+HERE=$(cd "$(dirname "$0")" && pwd)
+source "$HERE/common.sh"
 mkdir -p "$OUT"
 rm -rf "$OUT/impl" && cp -r "$W/src/src/impl" "$OUT/impl"
 python3 - "$OUT/impl/vamp/planning/validate.hh" <<'PY'
@@ -17,12 +19,8 @@ open(p, "w").write(s)
 PY
 sed 's|auto result = RRTC::solve(Robot::Configuration(p.start), goals, env_v, settings, rng);|vamp::planning::measured_blocks = 0; auto result = RRTC::solve(Robot::Configuration(p.start), goals, env_v, settings, rng); auto blocks = vamp::planning::measured_blocks;|; s|std::cout << p.scene << "," << p.index << "," << result.nanoseconds|std::cout << p.scene << "," << p.index << "," << blocks << "," << result.nanoseconds|; s|std::cout << "scene,index,plan_us|std::cout << "scene,index,blocks,plan_us|' \
   "$W/cpp/vamp_mbm.cc" > "$OUT/vamp_count.cc"
-g++ -std=c++17 -O3 -DNDEBUG -march=native -mavx2 -fno-math-errno -fno-signed-zeros -fno-trapping-math \
-  -fno-rounding-math -ffp-contract=fast -fassociative-math -Wno-ignored-attributes \
-  -I"$OUT/impl" -isystem /usr/include/eigen3 -isystem "$W/deps/nigh/src" -isystem "$W/deps/pdqsort" \
-  -I"$W/deps/SIMDxorshift/include" "$OUT/vamp_count.cc" -o "$OUT/vamp_count"
-setsid bash -c 'echo -20 > /proc/self/autogroup 2>/dev/null || true; exec nice -n -20 taskset -c 0 "$@"' _ \
-  "$OUT/vamp_count" "$W/cpp/panda_mbm.txt" 1 > "$OUT/blocks.csv"
+vamp_compile "$OUT/impl" "$OUT/vamp_count" "$OUT/vamp_count.cc"
+pinned "$OUT/vamp_count" "$W/cpp/panda_mbm.txt" 1 > "$OUT/blocks.csv"
 python3 - "$OUT/blocks.csv" <<'PY'
 import csv, statistics as st, sys, collections
 rows = collections.defaultdict(list)

@@ -11,18 +11,14 @@ set -euo pipefail
 OUT=${1:?usage: halton_variants.sh OUT}
 : "${W:?set W to the VAMP work folder}"
 VARIANTS=${VARIANTS:-"0:0 100:0 1000:0 0:1 0:2 0:3"}
+source "$(cd "$(dirname "$0")" && pwd)/common.sh"
 mkdir -p "$OUT"
-FLAGS=(-O3 -DNDEBUG -march=native -mavx2 -fno-math-errno -fno-signed-zeros -fno-trapping-math
-  -fno-rounding-math -ffp-contract=fast -fassociative-math -Wno-ignored-attributes)
-INCLUDES=(-I"$W/src/src/impl" -isystem /usr/include/eigen3 -isystem "$W/deps/nigh/src"
-  -isystem "$W/deps/pdqsort" -I"$W/deps/SIMDxorshift/include")
 # The one change: after each reset, rotate the bases and drop points as the switches say.
 AFTER_RESET='rng->reset(); for (long k = 0; k < std::atol(std::getenv("VAMP_HALTON_ROTATE")); ++k) rng->rotate_bases(); for (long k = 0; k < std::atol(std::getenv("VAMP_HALTON_SKIP")); ++k) rng->next();'
 sed -e "s|rng->reset();|$AFTER_RESET|" -e 's|#include <vamp/random/halton.hh>|#include <vamp/random/halton.hh>\n#include <cstdlib>|' \
   "$W/cpp/vamp_mbm.cc" > "$OUT/vamp_mbm_halton.cc"
 grep -q VAMP_HALTON_SKIP "$OUT/vamp_mbm_halton.cc" || { echo "no reset to patch in $W/cpp/vamp_mbm.cc" >&2; exit 1; }
-g++ -std=c++17 "${FLAGS[@]}" "${INCLUDES[@]}" "$OUT/vamp_mbm_halton.cc" -o "$OUT/vamp_mbm_halton"
-pinned() { setsid bash -c 'echo -20 > /proc/self/autogroup 2>/dev/null || true; exec nice -n -20 taskset -c 0 "$@"' _ "$@"; }
+vamp_compile "$W/src/src/impl" "$OUT/vamp_mbm_halton" "$OUT/vamp_mbm_halton.cc"
 for v in $VARIANTS; do
   VAMP_HALTON_SKIP=${v%%:*} VAMP_HALTON_ROTATE=${v##*:} pinned "$OUT/vamp_mbm_halton" \
     "$W/cpp/panda_mbm.txt" 1 > "$OUT/rrtc.$v.csv"

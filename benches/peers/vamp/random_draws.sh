@@ -19,11 +19,8 @@ KEYS=${KEYS:-2 5 7 11 13}
 SCENES=${SCENES:-cage}
 PER_SCENE=${PER_SCENE:-20}
 HERE=$(cd "$(dirname "$0")" && pwd)
+source "$HERE/common.sh"
 mkdir -p "$OUT"
-FLAGS=(-O3 -DNDEBUG -march=native -mavx2 -fno-math-errno -fno-signed-zeros -fno-trapping-math
-  -fno-rounding-math -ffp-contract=fast -fassociative-math -Wno-ignored-attributes)
-INCLUDES=(-I"$W/src/src/impl" -isystem /usr/include/eigen3 -isystem "$W/deps/nigh/src"
-  -isystem "$W/deps/pdqsort" -I"$W/deps/SIMDxorshift/include")
 gcc -O3 -march=native -mavx2 -I"$W/deps/SIMDxorshift/include" \
   -c "$W/deps/SIMDxorshift/src/simdxorshift128plus.c" -o "$OUT/simdxorshift.o"
 # The one change: the Halton generator becomes XORShift(VAMP_KEY, 3).
@@ -34,7 +31,7 @@ for source in "$W/cpp/vamp_mbm.cc" "$HERE/vamp_anytime.cc"; do
     -e 's|#include <vamp/random/halton.hh>|#include <vamp/random/halton.hh>\n#include <vamp/random/xorshift.hh>\n#include <cstdlib>|' \
     "$source" > "$OUT/$name.cc"
   grep -q XORShift "$OUT/$name.cc" || { echo "no Halton generator to replace in $source" >&2; exit 1; }
-  g++ -std=c++17 "${FLAGS[@]}" "${INCLUDES[@]}" "$OUT/$name.cc" "$OUT/simdxorshift.o" -o "$OUT/$name"
+  vamp_compile "$W/src/src/impl" "$OUT/$name" "$OUT/$name.cc" "$OUT/simdxorshift.o"
 done
 # A work folder for the shared side_by_side.sh whose VAMP draws at random (the first key).
 mkdir -p "$OUT/w/cpp"
@@ -42,7 +39,6 @@ ln -sf "$W/cpp/panda_mbm.txt" "$OUT/w/cpp/panda_mbm.txt"
 printf '#!/usr/bin/env bash\nVAMP_KEY=%s exec %q "$@"\n' "${KEYS%% *}" "$(cd "$OUT" && pwd)/vamp_mbm_random" \
   > "$OUT/w/cpp/vamp_mbm"
 chmod +x "$OUT/w/cpp/vamp_mbm"
-pinned() { setsid bash -c 'echo -20 > /proc/self/autogroup 2>/dev/null || true; exec nice -n -20 taskset -c 0 "$@"' _ "$@"; }
 pinned "$W/cpp/vamp_mbm" "$W/cpp/panda_mbm.txt" 1 > "$OUT/rrtc.halton.csv"
 for key in $KEYS; do
   VAMP_KEY=$key pinned "$OUT/vamp_mbm_random" "$W/cpp/panda_mbm.txt" 1 > "$OUT/rrtc.random.$key.csv"

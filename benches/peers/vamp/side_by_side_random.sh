@@ -11,20 +11,20 @@
 set -euo pipefail
 OUT=${1:?usage: side_by_side_random.sh OUT}
 : "${W:?set W}" "${RD:?set RD}" "${BIN:?set BIN}" "${MBM:?set MBM}"
-KEYS=${KEYS:-2 5 7}; CPU=${CPU:-0}
+KEYS=${KEYS:-2 5 7}
 SCENES=${SCENES:-"bookshelf_small bookshelf_tall box cage table_pick"}
 HERE=$(cd "$(dirname "$0")" && pwd)
+source "$HERE/common.sh"
 mkdir -p "$OUT"
 [ -x "$RD/vamp_mbm_random" ] || { echo "no $RD/vamp_mbm_random: run random_draws.sh first" >&2; exit 2; }
-prio() { setsid bash -c 'echo -20 > /proc/self/autogroup 2>/dev/null || true; exec nice -n -20 taskset -c "$0" "$@"' "$CPU" "$@"; }
 i=0
 for key in $KEYS; do
   i=$((i + 1))
   echo "round $i (key $key), load $(cut -d' ' -f1-3 /proc/loadavg)" >&2
-  VAMP_KEY=$key prio "$RD/vamp_mbm_random" "$W/cpp/panda_mbm.txt" 1 > "$OUT/vamp_$i.csv"
+  VAMP_KEY=$key pinned "$RD/vamp_mbm_random" "$W/cpp/panda_mbm.txt" 1 > "$OUT/vamp_$i.csv"
   mkdir -p "$OUT/ours_$i"
   for s in $SCENES; do
-    prio "$BIN" bench --planners rrt-connect --problem "mbm:$MBM/${s}_panda" --instances 1-100 \
+    pinned "$BIN" bench --planners rrt-connect --problem "mbm:$MBM/${s}_panda" --instances 1-100 \
       --time 1 --runs 1 --threads 1 --first-solution --set range=1.0 --seed "$key" --no-plots -q \
       --output "$OUT/ours_$i/$s" > "$OUT/ours_$i/$s.log" 2>&1
   done
