@@ -2,10 +2,10 @@
 """VAMP and mit-star each timed in its own loop of solves, nothing else run between them.
 
 VAMP's harness (`vamp_mbm`) solves the problems one after another, with only its simplifier (the
-same collision code) between two solves. mit-star's benchmark harness audits each path with
-parry and writes its logs between two runs, so each of its solves starts cold (the arm-planning
-reference, "Two loops, two temperatures"). `arm_profile` with `ARM_PROFILE_CSV` is a loop like
-VAMP's: build, solve, next. This reads OUT/ours_K.csv files written that way and the
+same collision code) between two solves. mit-star's benchmark harness audits, validates and
+records each run between two solves (before f62d831 it also committed a database transaction
+per run, which left the next solve cold: the arm-planning reference, "The harness's
+database"). `arm_profile` with `ARM_PROFILE_CSV` is a loop like VAMP's: build, solve, next. This reads OUT/ours_K.csv files written that way and the
 OUT/vamp_K.csv files of `vamp_mbm`, lays them out as `../shared/peers/vamp/side_by_side.sh`
 does, and runs the shared `summarize.py` (path in $SUMMARIZE, else beside the repository):
 
