@@ -103,7 +103,7 @@ pub use error::HarnessError;
 pub use execution::executor::{ExecutionOptions, Executor, RecordSink, RunKey};
 pub use execution::interrupt::Interrupt;
 pub use execution::results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
-pub use execution::run_job::{RUN_RECORD_BYTES, RunJob};
+pub use execution::run_job::{INSTANCE_SEED_STRIDE, RUN_RECORD_BYTES, RunJob};
 pub use execution::run_journal::{DATABASE_COMMIT_INTERVAL, RunJournal, results_from_records};
 pub use execution::shard::{SHARD_FILE, Shard};
 pub use execution::shard_merge::{MergeReport, merge_parts};

@@ -7,8 +7,8 @@ use std::process::Command;
 use std::sync::OnceLock;
 
 use mit_star_benches::{
-    BenchmarkLog, ExecutionOptions, Executor, Experiment, ExperimentResults, LogValue,
-    PathValidation, PlannerArenaDatabase, ResultsFolder, RunStatus,
+    BenchmarkLog, ExecutionOptions, Executor, Experiment, ExperimentResults, INSTANCE_SEED_STRIDE,
+    LogValue, PathValidation, PlannerArenaDatabase, ResultsFolder, RunStatus,
 };
 
 const TINY: &str = r#"
@@ -61,15 +61,18 @@ fn every_run_is_recorded_with_its_seed() {
     assert_eq!(results.run_count(), 2 * 2 * 2);
     assert_eq!(results.concurrency, 2);
     assert!(!results.interrupted);
-    for runs in &results.runs {
+    // Run i on the k-th instance: the base seed 5, plus k · INSTANCE_SEED_STRIDE, plus i.
+    assert_eq!(results.runs.len(), 2);
+    for (k, runs) in results.runs.iter().enumerate() {
         let seeds: Vec<(String, u64)> = runs.iter().map(|r| (r.planner.clone(), r.seed)).collect();
+        let first = 5 + k as u64 * INSTANCE_SEED_STRIDE;
         assert_eq!(
             seeds,
             [
-                ("MIT*".to_owned(), 5),
-                ("MIT*".to_owned(), 6),
-                ("EIT* (batch 50)".to_owned(), 5),
-                ("EIT* (batch 50)".to_owned(), 6)
+                ("MIT*".to_owned(), first),
+                ("MIT*".to_owned(), first + 1),
+                ("EIT* (batch 50)".to_owned(), first),
+                ("EIT* (batch 50)".to_owned(), first + 1)
             ]
         );
     }

@@ -82,7 +82,8 @@ pub struct BenchArgs {
     /// Runs per planner and problem instance (default: the experiment's, or 100).
     #[arg(long)]
     pub runs: Option<usize>,
-    /// Base seed: run i uses seed + i (default: the experiment's, or 0).
+    /// Base seed: run i on the k-th instance uses seed + k·100000 + i (default: the experiment's,
+    /// or 0).
     #[arg(long)]
     pub seed: Option<u64>,
     /// Confidence of the medians' and success rates' intervals (default 0.99).

@@ -13,7 +13,8 @@ use crate::definition::shipped_experiment::ShippedExperiment;
 use crate::error::HarnessError;
 
 /// An experiment: every planner runs `runs` times on every problem instance; run `i` of every
-/// planner uses seed `seed + i`.
+/// planner on the `k`-th instance (from 0) uses seed `seed + k · 100 000 + i`
+/// ([`INSTANCE_SEED_STRIDE`](crate::INSTANCE_SEED_STRIDE)).
 ///
 /// Load one from a TOML [experiment file](crate::experiment_file), a
 /// [shipped experiment](ShippedExperiment), or build it directly.
@@ -38,7 +39,7 @@ pub struct Experiment {
     pub problems: Vec<ProblemSpec>,
     /// Runs per planner and problem instance.
     pub runs: usize,
-    /// Base seed: run `i` uses `seed + i`.
+    /// Base seed: run `i` on the `k`-th instance uses `seed + k · 100 000 + i`.
     pub seed: u64,
     /// Confidence of the medians' and success rates' intervals, in `(0, 1)`.
     pub confidence: f64,

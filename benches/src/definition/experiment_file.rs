@@ -5,7 +5,7 @@
 //! name = "dw4"                        # default: the file's stem
 //! description = "MIT* against EIT*"  # optional
 //! runs = 100                          # runs per planner and problem instance (default 100)
-//! seed = 0                            # run i uses seed + i (default 0)
+//! seed = 0                            # run i on instance k: seed + k·100000 + i (default 0)
 //! confidence = 0.99                   # of medians' and success rates' intervals (default 0.99)
 //! first_solution = false              # stop each run at its first solution (default false)
 //! planners = ["eit-star", "mit-star"] # configuration names, or tables:

@@ -10,7 +10,7 @@ use crate::error::HarnessError;
 const RESERVED: [(&str, &str); 2] = [
     (
         "seed",
-        "is set by the harness (run i uses base seed + i); use `--seed` or the experiment's `seed`",
+        "is set by the harness (run i on instance k uses base seed + k·100000 + i); use `--seed` or the experiment's `seed`",
     ),
     (
         "resolution",

@@ -336,15 +336,16 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
     let planned = results.instances.len() * e.planners.len() * e.runs;
     let _ = writeln!(
         s,
-        "Started {} UTC on `{}` ({}); {} runs per planner and instance, seeds {}..{}; \
-         {} of {planned} runs recorded; the last `bench` took {:.1} s with **{} runs executing \
-         concurrently**.{}\n",
+        "Started {} UTC on `{}` ({}); {} runs per planner and instance, seeds {}..{} on the first \
+         instance and {} higher on each next one; {} of {planned} runs recorded; the last \
+         `bench` took {:.1} s with **{} runs executing concurrently**.{}\n",
         results.started_at,
         results.machine.hostname,
         results.machine.cpu,
         e.runs,
         e.seed,
         e.seed.saturating_add(e.runs as u64).saturating_sub(1),
+        crate::INSTANCE_SEED_STRIDE,
         results.run_count(),
         results.total_time,
         results.concurrency,

@@ -23,6 +23,14 @@ pub const RUN_RECORD_BYTES: u64 = 4096;
 /// Decorrelates the planner-order shuffle from the planners' own seeds.
 const SHUFFLE_SALT: u64 = 0x5eed_0f0b_de5a_1700;
 
+/// How far apart the seeds of consecutive instances start: run `i` on the experiment's `k`-th
+/// instance (from 0) uses seed `base_seed + k · INSTANCE_SEED_STRIDE + i`. Every planner of one
+/// run still draws from the same seed (paired runs), but no two instances share their draws: a
+/// seed whose first draws suit one problem of a scene suits every problem that shares the
+/// scene's start, and one seed for all would make a scene's runs one sample of that luck, not
+/// a hundred.
+pub const INSTANCE_SEED_STRIDE: u64 = 100_000;
+
 /// One unit of work: run `run` (seed `seed`) of planner `planner` on instance `instance`
 /// (indices into the experiment's planners and instances).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -33,7 +41,8 @@ pub struct RunJob {
     pub planner: usize,
     /// Run index `i`.
     pub run: usize,
-    /// The planner's seed, `base_seed + i`.
+    /// The planner's seed, `base_seed + k · INSTANCE_SEED_STRIDE + i` on the `k`-th instance
+    /// ([`INSTANCE_SEED_STRIDE`]).
     pub seed: u64,
     /// Stop at the first solution ([`Experiment::first_solution`](crate::Experiment)).
     pub first_solution: bool,
@@ -65,25 +74,35 @@ impl RunJob {
     /// The schedule of an experiment: instance after instance; within an instance run index
     /// after run index; within a run index every planner once, in an order shuffled with a
     /// generator seeded by the run index (PDT's protocol, spreading machine drift evenly over
-    /// the planners). The same inputs always give the same schedule.
+    /// the planners). Run `i` on instance `k` (from 0) is seeded `base_seed + k ·`
+    /// [`INSTANCE_SEED_STRIDE`] `+ i` for every planner. The same inputs always give the same
+    /// schedule.
     ///
     /// ```
     /// use mit_star_benches::RunJob;
-    /// let jobs = RunJob::schedule(1, 3, 2, 10);
-    /// assert_eq!(jobs.len(), 6);
-    /// assert!(jobs[..3].iter().all(|j| j.run == 0 && j.seed == 10));
+    /// // Two instances, three planners, two runs each, base seed 10.
+    /// let jobs = RunJob::schedule(2, 3, 2, 10);
+    /// assert_eq!(jobs.len(), 12);
+    /// assert!(jobs[..3].iter().all(|j| j.instance == 0 && j.run == 0 && j.seed == 10));
+    /// assert!(jobs[3..6].iter().all(|j| j.run == 1 && j.seed == 11));
+    /// assert!(jobs[6..9].iter().all(|j| j.instance == 1 && j.run == 0 && j.seed == 100_010));
     /// let mut planners: Vec<usize> = jobs[..3].iter().map(|j| j.planner).collect();
     /// planners.sort();
     /// assert_eq!(planners, [0, 1, 2]);
-    /// assert_eq!(jobs, RunJob::schedule(1, 3, 2, 10));
+    /// assert_eq!(jobs, RunJob::schedule(2, 3, 2, 10));
     /// ```
     pub fn schedule(instances: usize, planners: usize, runs: usize, base_seed: u64) -> Vec<Self> {
         let mut jobs = Vec::with_capacity(instances * planners * runs);
         for instance in 0..instances {
+            let first =
+                base_seed.wrapping_add((instance as u64).wrapping_mul(INSTANCE_SEED_STRIDE));
             for run in 0..runs {
-                let seed = base_seed.wrapping_add(run as u64);
+                let seed = first.wrapping_add(run as u64);
+                // The order by run index alone: every instance runs its planners in one order
+                // per run index.
+                let order_seed = base_seed.wrapping_add(run as u64) ^ SHUFFLE_SALT;
                 let mut order: Vec<usize> = (0..planners).collect();
-                order.shuffle(&mut SeededRng::seed_from_u64(seed ^ SHUFFLE_SALT));
+                order.shuffle(&mut SeededRng::seed_from_u64(order_seed));
                 jobs.extend(order.into_iter().map(|planner| Self {
                     instance,
                     planner,
@@ -284,9 +303,11 @@ mod tests {
             s.sort_unstable();
             assert_eq!(s, [0, 1, 2, 3, 4]);
         }
-        // Instance 1 repeats instance 0's orders (same run indices, same seeds).
+        // Instance 1 repeats instance 0's orders (same run indices), with its own seeds.
         assert_eq!(orders[..20], orders[20..]);
-        assert_eq!(jobs[199].seed, 19);
+        assert_eq!(jobs[0].seed, 0);
+        assert_eq!(jobs[100].seed, INSTANCE_SEED_STRIDE);
+        assert_eq!(jobs[199].seed, INSTANCE_SEED_STRIDE + 19);
     }
 
     /// The R^2 instance of built-in problem `name` with one budget and resolution, and a

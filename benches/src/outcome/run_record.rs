@@ -60,7 +60,7 @@ pub struct RunRecord {
     pub configuration: Configuration,
     /// The run index `i` (0-based).
     pub run: usize,
-    /// The planner's seed (`base seed + i`).
+    /// The planner's seed (`base seed + k · 100 000 + i` on the `k`-th instance).
     pub seed: u64,
     /// The budget in seconds.
     pub budget: f64,
