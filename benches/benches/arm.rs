@@ -146,7 +146,8 @@ fn edge_check(c: &mut Criterion) {
     let problem = problem("bookshelf_small_panda");
     let space = problem.space();
     let checker = problem.validity();
-    // A typical RGG edge for the Panda: about 1 rad (32 grid points at VAMP's density).
+    // A typical RGG edge for the Panda: about 1 rad (15 grid points at our 16 checks per unit;
+    // VAMP checks 32 per unit).
     let (a, b) = free_edge(&problem, 1.0);
     let mut edges = DenseChecker::new(problem.check_step().unwrap()).unwrap();
     group.bench_function("one_by_one/1rad", |bench| {

@@ -175,7 +175,7 @@ pub struct Parameters {
     /// every draw costs a state check and invalid draws are redrawn) or towards any state of
     /// the space (`false`, the default, as OMPL's RRT-Connect with its plain state sampler and
     /// VAMP do): an extension towards an invalid draw stops where its motion does. Chosen by
-    /// measurement on the Panda (the arm-planning reference page, "RRT-Connect's parts").
+    /// measurement on the Panda (the arm-planning reference page, "RRT-Connect's switches").
     pub rrt_valid_samples: bool,
     /// RRT-Connect's dynamic domain (Yershova et al., 2005): a state from which an extension
     /// failed gets a radius (4 ranges, then shrinking by 0.01 % per failure down to one range,

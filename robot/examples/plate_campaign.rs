@@ -16,7 +16,7 @@
 //! of the list below (the default 1/16 rad per unit, and 0.01, 0.05, 0.1, 0.2, 0.5, 0.999 of
 //! the maximum extent), with certification on (the default). Then, as the control
 //! that shows the audit has teeth, RRT-Connect plans the same problem with certification off
-//! (`allowing_uncertified_motion`) at the coarsest resolution.
+//! (`allowing_uncertified_motion`) at resolution 0.5 of the maximum extent.
 //!
 //! Prints the counts per resolution and planner; exits with code 1 if any certified path
 //! failed the audit.

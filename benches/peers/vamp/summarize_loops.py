@@ -4,8 +4,8 @@
 VAMP's harness (`vamp_mbm`) solves the problems one after another, with only its simplifier (the
 same collision code) between two solves. mit-star's benchmark harness audits, validates and
 records each run between two solves (before f62d831 it also committed a database transaction
-per run, which left the next solve cold: the arm-planning reference, "The harness's
-database"). `arm_profile` with `ARM_PROFILE_CSV` is a loop like VAMP's: build, solve, next. This reads OUT/ours_K.csv files written that way and the
+per run, which left the next solve cold: the guide's page "Arm planning beside VAMP", "The
+harness's database, its audit and the two loops"). `arm_profile` with `ARM_PROFILE_CSV` is a loop like VAMP's: build, solve, next. This reads OUT/ours_K.csv files written that way and the
 OUT/vamp_K.csv files of `vamp_mbm`, lays them out as `../shared/peers/vamp/side_by_side.sh`
 does, and runs the shared `summarize.py` (path in $SUMMARIZE, else beside the repository):
 

@@ -55,8 +55,9 @@ const USEFUL: f64 = 2.5;
 /// covers for a narrow neighbour, so clearances are sought only a little beyond `w` (the
 /// margin is for the radii's rounding down). Every edge ends with such a batch, and many are
 /// certified by it alone. On the Panda's problems this takes 16 % of certification's
-/// instructions off RRT-Connect and 12 % off MIT*, for 0.7 % more batches (callgrind, in the
-/// arm-planning reference: "A Zen 4 machine, and two cheaper certification batches").
+/// instructions off RRT-Connect and 12 % off MIT*, for 0.7 % more batches (callgrind, measured
+/// with the commit that brought this rule; the arm-planning reference, "Certified arm motion",
+/// describes the batches).
 const FINAL_USEFUL: f64 = 1.1;
 
 /// The next spacing's share of the smallest radius met.

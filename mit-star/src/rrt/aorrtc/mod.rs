@@ -153,8 +153,8 @@ where
     /// smoothing is left to them: on the Panda's cage problems, smoothing every new path kept
     /// the cost at 10 ms at a median of 7.0 over 100 runs (20 problems, 5 seeds), against 5.8
     /// without it, for the same cost at 100 ms (`robot/examples/anytime_arm.rs … seed=K`, this
-    /// rule's commit against the one before it; the guide's arm-planning reference, "Repeated
-    /// runs").
+    /// rule's commit against the one before it; the guide's page "Arm planning beside VAMP",
+    /// "Repeated runs").
     pub fn smooths_solutions(parameters: &crate::Parameters) -> bool {
         parameters.simplify_smoothing && !parameters.polish_when_idle
     }
