@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The shared side-by-side comparison with both sides drawing at random: in round i, VAMP's
-# RRT-Connect with its XORShift generator under key K_i (the `vamp_mbm_random` that
-# random_draws.sh builds) and ours with `--seed K_i`, so that each side follows one fixed
-# random sequence per round, as VAMP's harness follows its Halton sequence. Otherwise the
+# RRT-Connect with its XORShift generator (the `vamp_mbm_random` that random_draws.sh builds)
+# keyed K_i + 100000 · (index − 1) on problem `index` (VAMP_PER_PROBLEM=1), and ours with
+# `--seed K_i`, which seeds the k-th problem K_i + 100000 · k: every problem draws its own
+# random sequence on both sides, and no fixed sequence's luck is shared by a scene. Otherwise the
 # shared script's protocol: problems 1–100 of each scene, range 1, first solution, one thread,
 # both sides pinned to one CPU at top priority, alternated. Then the shared summary, with our
 # time to the first solution taken without construction (summarize_solve.py).
@@ -21,7 +22,7 @@ i=0
 for key in $KEYS; do
   i=$((i + 1))
   echo "round $i (key $key), load $(cut -d' ' -f1-3 /proc/loadavg)" >&2
-  VAMP_KEY=$key pinned "$RD/vamp_mbm_random" "$W/cpp/panda_mbm.txt" 1 > "$OUT/vamp_$i.csv"
+  VAMP_KEY=$key VAMP_PER_PROBLEM=1 pinned "$RD/vamp_mbm_random" "$W/cpp/panda_mbm.txt" 1 > "$OUT/vamp_$i.csv"
   mkdir -p "$OUT/ours_$i"
   for s in $SCENES; do
     pinned "$BIN" bench --planners rrt-connect --problem "mbm:$MBM/${s}_panda" --instances 1-100 \
