@@ -196,7 +196,7 @@ impl ArmProblem {
     /// overrides it). An arm's lazy paths fail often, in cages far from the goal; repairing
     /// only the branch below the invalid edge keeps the rest of the reverse tree. On the
     /// Panda's cage MIT*'s median first solution comes about a quarter sooner and its 95th
-    /// percentile in half the time or less (`docs/guide/src/planning-for-an-arm.md`).
+    /// percentile 60 % lower (`docs/guide/src/reference/arm-planning.md`, "MIT*'s arm settings").
     pub const REPAIR_REVERSE_SEARCH: bool = true;
 
     /// MIT*'s sparse spacing on arm problems, in check steps (`Δ₀`, finest; a planner's
