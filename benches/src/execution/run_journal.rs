@@ -2,6 +2,7 @@
 
 mod repair;
 
+use std::collections::hash_map::Entry;
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::fs::File;
 use std::io::Write as _;
@@ -36,7 +37,8 @@ pub const DATABASE_COMMIT_INTERVAL: Duration = Duration::from_secs(10);
 /// recorded), when [`DATABASE_COMMIT_INTERVAL`] has passed since the last commit (or the
 /// interval [`commit_every`](Self::commit_every) sets). A transaction between two runs leaves
 /// the next run's caches and branch predictors cold: measured on the Panda's RRT-Connect
-/// (about 40 µs per solve), committing after every run added 9–10 µs to the next solve. The
+/// (about 40 µs per solve), committing after every run added 8–12 µs to the next solve
+/// (`benches/peers/vamp/harness_probe.patch` restores it as a switch). The
 /// database is rebuilt from the raw files whenever a `bench` ends, and after a crash it lags
 /// them by at most the interval, which readers report and a resume repairs.
 ///
@@ -313,24 +315,21 @@ impl RunJournal {
                 self.experiments.insert(instance.id.clone(), found);
             }
         }
-        match self.experiments.get_mut(&instance.id) {
-            None => {
-                let experiment = self.database.insert(&log)?;
-                let mut counts = HashMap::new();
-                for record in records {
-                    *counts.entry(record.planner.clone()).or_insert(0) += 1;
-                }
-                self.experiments
-                    .insert(instance.id.clone(), (experiment, counts));
-            }
-            Some((experiment, counts)) => {
-                for record in records {
-                    *counts.entry(record.planner.clone()).or_insert(0) += 1;
-                }
-                let run_count = counts.values().copied().max().unwrap_or(0);
-                self.database
-                    .append_runs(*experiment, &log, run_count, total_time)?;
-            }
+        // A new row is inserted with its runs; a row found or made earlier gets them appended.
+        let ((experiment, counts), continued) = match self.experiments.entry(instance.id.clone()) {
+            Entry::Occupied(row) => (row.into_mut(), true),
+            Entry::Vacant(slot) => (
+                slot.insert((self.database.insert(&log)?, HashMap::new())),
+                false,
+            ),
+        };
+        for record in records {
+            *counts.entry(record.planner.clone()).or_insert(0) += 1;
+        }
+        if continued {
+            let run_count = counts.values().copied().max().unwrap_or(0);
+            self.database
+                .append_runs(*experiment, &log, run_count, total_time)?;
         }
         Ok(())
     }
