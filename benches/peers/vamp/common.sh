@@ -5,6 +5,10 @@
 #   build, as ../shared/peers/vamp/build_vamp.sh compiles `vamp_mbm`; needs W.
 # pinned COMMAND… — runs COMMAND in its own session at the highest priority, pinned to CPU
 #   ${CPU:-0} (plain `nice` does nothing across sessions when the kernel groups by session).
+# ours_scene BINARY OUT SCENE [ARGUMENT…] — our side of the shared side_by_side.sh for one
+#   scene, pinned: `BINARY bench` with RRT-Connect on problems 1–100 of `$MBM/SCENE_panda`,
+#   range 1, to the first solution, one thread, the extra ARGUMENTs added; results in OUT/SCENE,
+#   its output in OUT/SCENE.log; needs MBM.
 
 vamp_compile() {
   local impl=$1 binary=$2
@@ -18,4 +22,12 @@ vamp_compile() {
 pinned() {
   setsid bash -c 'echo -20 > /proc/self/autogroup 2>/dev/null || true; exec nice -n -20 taskset -c "$0" "$@"' \
     "${CPU:-0}" "$@"
+}
+
+ours_scene() {
+  local binary=$1 out=$2 scene=$3
+  shift 3
+  pinned "$binary" bench --planners rrt-connect --problem "mbm:$MBM/${scene}_panda" --instances 1-100 \
+    --time 1 --runs 1 --threads 1 --first-solution --set range=1.0 --no-plots -q "$@" \
+    --output "$out/$scene" > "$out/$scene.log" 2>&1
 }

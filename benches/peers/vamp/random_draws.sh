@@ -27,8 +27,9 @@ gcc -O3 -march=native -mavx2 -I"$W/deps/SIMDxorshift/include" \
 # problem as the Halton one is; with VAMP_PER_PROBLEM=1 at run time, each problem's generator
 # is keyed VAMP_KEY + 100000 · (index − 1) instead, so that no two problems of a scene share
 # their draws (as our harness seeds its instances).
-RANDOM_RNG='std::shared_ptr<vamp::rng::RNG<Robot>> rng = std::make_shared<vamp::rng::XORShift<Robot>>(std::strtoul(std::getenv("VAMP_KEY"), nullptr, 10), 3UL);'
-RESEED='if (const char *per = std::getenv("VAMP_PER_PROBLEM"); per \&\& *per == '"'1'"') rng = std::make_shared<vamp::rng::XORShift<Robot>>(std::strtoul(std::getenv("VAMP_KEY"), nullptr, 10) + 100000UL * (p.index - 1), 3UL); else rng->reset();'
+KEY='std::strtoul(std::getenv("VAMP_KEY"), nullptr, 10)'
+RANDOM_RNG="std::shared_ptr<vamp::rng::RNG<Robot>> rng = std::make_shared<vamp::rng::XORShift<Robot>>($KEY, 3UL);"
+RESEED="if (const char *per = std::getenv(\"VAMP_PER_PROBLEM\"); per \\&\\& *per == '1') rng = std::make_shared<vamp::rng::XORShift<Robot>>($KEY + 100000UL * (p.index - 1), 3UL); else rng->reset();"
 for source in "$W/cpp/vamp_mbm.cc" "$HERE/vamp_anytime.cc"; do
   name=$(basename "$source" .cc)_random
   sed -e "s|auto rng = std::make_shared<vamp::rng::Halton<Robot>>();|$RANDOM_RNG|" \

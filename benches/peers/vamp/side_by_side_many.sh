@@ -28,9 +28,7 @@ for i in $(seq 1 "$ROUNDS"); do
     mkdir -p "$OUT/$name/ours_$i"
     cp "$OUT/vamp_$i.csv" "$OUT/$name/vamp_$i.csv"
     for s in $SCENES; do
-      pinned "$binary" bench --planners rrt-connect --problem "mbm:$MBM/${s}_panda" --instances 1-100 \
-        --time 1 --runs 1 --threads 1 --first-solution --set range=1.0 --no-plots -q "${extra[@]}" \
-        --output "$OUT/$name/ours_$i/$s" > "$OUT/$name/ours_$i/$s.log" 2>&1
+      ours_scene "$binary" "$OUT/$name/ours_$i" "$s" "${extra[@]}"
     done
   done
 done

@@ -25,9 +25,7 @@ for key in $KEYS; do
   VAMP_KEY=$key VAMP_PER_PROBLEM=1 pinned "$RD/vamp_mbm_random" "$W/cpp/panda_mbm.txt" 1 > "$OUT/vamp_$i.csv"
   mkdir -p "$OUT/ours_$i"
   for s in $SCENES; do
-    pinned "$BIN" bench --planners rrt-connect --problem "mbm:$MBM/${s}_panda" --instances 1-100 \
-      --time 1 --runs 1 --threads 1 --first-solution --set range=1.0 --seed "$key" --no-plots -q \
-      --output "$OUT/ours_$i/$s" > "$OUT/ours_$i/$s.log" 2>&1
+    ours_scene "$BIN" "$OUT/ours_$i" "$s" --seed "$key"
   done
 done
 python3 "$HERE/summarize_solve.py" "$OUT" $SCENES
