@@ -62,6 +62,7 @@ const RRT_CONNECT: &[&str] = &[
     "range",
     "rrt_valid_samples",
     "rrt_dynamic_domain",
+    "rrt_forced_redraws",
     "rrt_balance",
     "rrt_halton",
     "rrt_halton_shift",

@@ -23,7 +23,7 @@
 //! per-configuration table; `ARM_PROFILE_AUDIT=1` audits every path with parry between runs,
 //! as the benchmark harness does; `ARM_PROFILE_TIME=30` gives each solve 30 s instead of 1 s,
 //! so that under valgrind no solve is cut short by its deadline; `ARM_PROFILE_CSV=FILE` writes
-//! each solve's scene, problem, seed, time in µs and whether it solved, for
+//! each solve's scene, problem, seed, time in µs, whether it solved and its counters, for
 //! `benches/peers/vamp/summarize_loops.py`) (the arm-planning reference page, "Where an arm
 //! solve's time goes").
 
@@ -77,7 +77,11 @@ fn main() {
     // One line per solve, for a comparison run by run (`benches/peers/vamp/summarize_loops.py`).
     let mut csv = std::env::var_os("ARM_PROFILE_CSV").map(|path| {
         let mut file = std::io::BufWriter::new(std::fs::File::create(path).expect("a CSV file"));
-        writeln!(file, "scene,index,seed,solve_us,solved").expect("writes the CSV");
+        writeln!(
+            file,
+            "scene,index,seed,solve_us,solved,configurations,iterations,neighbour_queries,states"
+        )
+        .expect("writes the CSV");
         file
     });
     let mut pooled = Vec::new();
@@ -114,14 +118,19 @@ fn main() {
                 let run = Instant::now();
                 let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(budget)));
                 let t = run.elapsed().as_secs_f64() * 1e6;
+                let c = planner.counters();
                 if let Some(file) = csv.as_mut() {
                     let solved = outcome.as_ref().is_ok_and(|o| o.solution().is_some());
                     let name = scene.trim_end_matches("_panda");
                     writeln!(
                         file,
-                        "{name},{index},{},{t:.3},{}",
+                        "{name},{index},{},{t:.3},{},{},{},{},{}",
                         parameters.seed,
-                        u8::from(solved)
+                        u8::from(solved),
+                        c.validity_checks,
+                        c.iterations,
+                        c.neighbour_queries,
+                        c.samples
                     )
                     .expect("writes the CSV");
                 }
@@ -135,7 +144,6 @@ fn main() {
                         let _ = audit.audit(w[0], w[1], 2_000_000);
                     }
                 }
-                let c = planner.counters();
                 for (row, v) in rows.iter_mut().zip([
                     t,
                     c.validity_checks as f64,

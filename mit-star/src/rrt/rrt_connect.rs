@@ -108,19 +108,26 @@ pub(super) fn dynamic_radius(radius: f64, valid: bool, range: f64) -> f64 {
     }
 }
 
-/// Whether a step towards a sample outside the nearest state's dynamic domain is skipped: with
-/// the dynamic domain on, unless balancing forced the tree (one tree has at least twice the
-/// states of the other, so the smaller grows).
+/// Whether a step towards a sample outside the nearest state's dynamic domain is skipped (the
+/// iteration ends): with the dynamic domain on, unless balancing forced the tree (one tree
+/// has at least twice the states of the other, so the smaller grows).
 ///
 /// A forced tree is the only one that may grow, so a skipped sample is an iteration that does
 /// nothing. A tree stuck at a state whose every step fails (a goal deep in a shelf) keeps a
 /// domain of at least one range, which a uniform sample in 8 dimensions hits about once in
 /// 10⁴ draws; balancing then never lets the other tree grow, and the search stalls (Fetch,
-/// `bookshelf_thin` #3: 13 million iterations in 1 s, three states). Stepping towards every
-/// sample gives the stuck tree a check per iteration until one step gets out.
+/// `bookshelf_thin` #3: 13 million iterations in 1 s, three states). A forced tree instead
+/// redraws a sample outside the domain up to
+/// [`rrt_forced_redraws`](crate::Parameters::rrt_forced_redraws) times within the iteration,
+/// and then steps towards the last draw, inside the domain or not.
 pub(super) fn skips_outside_domain(dynamic_domain: bool, forced: bool) -> bool {
     dynamic_domain && !forced
 }
+
+/// Redraws between two polls of the stop condition while a forced tree redraws samples
+/// outside its domain (a redraw is a draw and a nearest-neighbour query: well under a
+/// microsecond).
+const REDRAW_POLL: u32 = 64;
 
 /// A state's first dynamic-domain radius, in ranges.
 const DOMAIN_RADIUS: f64 = 4.0;
@@ -223,12 +230,36 @@ where
         (self.growing, false)
     }
 
+    /// Draws the next sample into `self.core.target` (a valid state with
+    /// [`rrt_valid_samples`](crate::Parameters::rrt_valid_samples), else any state); `false`
+    /// if the stop fired first.
+    fn draw_target(&mut self, stop: &dyn Stop) -> bool {
+        let mut sample = std::mem::take(&mut self.core.target);
+        let drawn = if self.core.parameters.rrt_valid_samples {
+            self.core.sampler.sample(
+                &self.core.space,
+                &self.core.validity,
+                CostBound::Unbounded,
+                stop,
+                &mut sample,
+            )
+        } else {
+            self.core.sampler.draw_any(&self.core.space, &mut sample)
+        };
+        self.core.target = sample;
+        // A uniform sampler fails only when stopped (the query was validated, so the
+        // dimensions agree).
+        drawn.is_ok()
+    }
+
     /// Starts a step of tree `t` from its state nearest to `self.core.target` towards it: the
     /// candidate state (at most `range` away) goes to `self.core.candidate` and the motion to
     /// it becomes the pending one ([`finish_motion`](Self::finish_motion) checks both).
-    /// `Stopped` if the stop fired during the nearest-neighbour query. A step towards a sample
-    /// (`grows`) outside the nearest state's dynamic domain is skipped unless balancing
-    /// `forced` this tree (see [`skips_outside_domain`]).
+    /// `Stopped` if the stop fired during the nearest-neighbour query or a redraw. A step
+    /// towards a sample (`grows`) outside the nearest state's dynamic domain is skipped,
+    /// unless balancing `forced` this tree: that tree redraws instead, up to
+    /// [`rrt_forced_redraws`](crate::Parameters::rrt_forced_redraws) times, then steps towards
+    /// the last draw (see [`skips_outside_domain`]).
     fn start_motion(
         &mut self,
         t: usize,
@@ -236,24 +267,39 @@ where
         forced: bool,
         stop: &dyn Stop,
     ) -> Option<Step> {
-        let target = std::mem::take(&mut self.core.target);
-        let near = self.nearest(t, &target, stop);
-        let dynamic =
-            grows && skips_outside_domain(self.core.parameters.rrt_dynamic_domain, forced);
-        let started = near.map(|near| {
+        let dynamic = grows && self.core.parameters.rrt_dynamic_domain;
+        let mut redraws = 0_u32;
+        loop {
+            let target = std::mem::take(&mut self.core.target);
+            let near = self.nearest(t, &target, stop);
+            self.core.target = target;
+            let Some(near) = near else {
+                return Some(Step::Stopped);
+            };
             let from = self.trees[t].state(near);
-            if dynamic
-                && self.core.space.distance(from, &target) > self.trees[t].radii[near as usize]
-            {
+            let outside = dynamic
+                && self.core.space.distance(from, &self.core.target)
+                    > self.trees[t].radii[near as usize];
+            if outside && skips_outside_domain(dynamic, forced) {
                 // Outside the nearest state's dynamic domain: skipped, nothing checked.
-                return false;
+                return Some(Step::Trapped);
             }
+            if outside && redraws < self.core.parameters.rrt_forced_redraws {
+                redraws += 1;
+                if redraws % REDRAW_POLL == 0 && stop.should_stop() || !self.draw_target(stop) {
+                    return Some(Step::Stopped);
+                }
+                continue;
+            }
+            let target = std::mem::take(&mut self.core.target);
+            let from = self.trees[t].state(near);
             let reached = steer(
                 &self.core.space,
                 (from, &target),
                 self.core.range,
                 &mut self.core.candidate,
             );
+            self.core.target = target;
             self.pending = Some(Motion {
                 tree: t,
                 near,
@@ -261,13 +307,7 @@ where
                 reached,
                 progress: EdgeProgress::UNTESTED,
             });
-            true
-        });
-        self.core.target = target;
-        match started {
-            Some(true) => None,
-            Some(false) => Some(Step::Trapped),
-            None => Some(Step::Stopped),
+            return None;
         }
     }
 
@@ -323,22 +363,7 @@ where
         loop {
             let step = match self.phase {
                 Phase::Grow if self.pending.is_none() => {
-                    let mut sample = std::mem::take(&mut self.core.target);
-                    let drawn = if self.core.parameters.rrt_valid_samples {
-                        self.core.sampler.sample(
-                            &self.core.space,
-                            &self.core.validity,
-                            CostBound::Unbounded,
-                            stop,
-                            &mut sample,
-                        )
-                    } else {
-                        self.core.sampler.draw_any(&self.core.space, &mut sample)
-                    };
-                    self.core.target = sample;
-                    // A uniform sampler fails only when stopped (the query was validated, so the
-                    // dimensions agree).
-                    if drawn.is_err() {
+                    if !self.draw_target(stop) {
                         return;
                     }
                     let (t, forced) = self.tree_to_grow();
@@ -665,7 +690,7 @@ mod tests {
     }
 
     #[test]
-    fn a_tree_balancing_forces_steps_towards_every_sample() {
+    fn a_tree_balancing_forces_redraws_a_few_times_then_steps() {
         // The goal at the centre of a hollow 0.02 wide in R^8, whose one opening is 0.01 wide:
         // every step of 0.05 from it fails, so its dynamic domain shrinks to a ball a uniform
         // sample hits about once in 10^5 draws, and balancing makes the goal tree (one state
@@ -677,23 +702,45 @@ mod tests {
             .unwrap()
             .with_resolution(1e-3)
             .unwrap();
-        let parameters = Parameters {
-            range: Some(0.05),
-            seed: 1,
-            ..Parameters::default()
+        let counters = |redraws: u32, seconds: f64| {
+            let parameters = Parameters {
+                range: Some(0.05),
+                seed: 1,
+                rrt_forced_redraws: redraws,
+                ..Parameters::default()
+            };
+            let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
+            planner
+                .solve(&crate::IterationLimit::new(4000).or(TimeLimit::seconds(seconds)))
+                .unwrap();
+            planner.counters()
         };
-        let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
-        planner
-            .solve(&crate::IterationLimit::new(4000).or(TimeLimit::seconds(10.0)))
-            .unwrap();
-        let counters = planner.counters();
-        assert!(counters.iterations >= 4000, "{counters:?}");
-        // Skipping samples outside the domain would leave the search stalled, checking nothing.
+        // The default: each iteration of the stuck goal tree redraws four times, all outside
+        // its domain, then checks a step towards the last draw.
+        let default = counters(Parameters::default().rrt_forced_redraws, 10.0);
+        assert!(default.iterations >= 4000, "{default:?}");
         assert!(
-            counters.full_checks >= counters.iterations / 2,
+            default.full_checks >= default.iterations / 2,
             "{} motions checked in {} iterations",
-            counters.full_checks,
-            counters.iterations
+            default.full_checks,
+            default.iterations
+        );
+        assert!(
+            default.samples_drawn >= 4 * default.iterations,
+            "{default:?}"
+        );
+        // None: a step towards every draw, one draw an iteration.
+        let none = counters(0, 10.0);
+        assert!(none.iterations >= 4000, "{none:?}");
+        assert!(none.full_checks >= none.iterations / 2, "{none:?}");
+        assert!(none.samples_drawn <= none.iterations + 1, "{none:?}");
+        // Without a bound the forced tree redraws until a draw falls inside its domain, as
+        // VAMP's skips do: the search stalls, drawing thousands of samples per motion checked
+        // (and the time limit still ends it, within the redraws).
+        let unbounded = counters(u32::MAX, 0.2);
+        assert!(
+            unbounded.iterations < 4000 && unbounded.full_checks * 1000 < unbounded.samples_drawn,
+            "{unbounded:?}"
         );
         assert!(skips_outside_domain(true, false));
         assert!(!skips_outside_domain(true, true));

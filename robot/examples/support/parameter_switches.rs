@@ -13,6 +13,9 @@ pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str
     match name {
         "rrt_valid_samples" => parameters.rrt_valid_samples = on(),
         "rrt_dynamic_domain" => parameters.rrt_dynamic_domain = on(),
+        "rrt_forced_redraws" => {
+            parameters.rrt_forced_redraws = value.parse().expect("a whole number");
+        }
         "rrt_balance" => parameters.rrt_balance = on(),
         "rrt_halton" => parameters.rrt_halton = on(),
         "rrt_halton_shift" => parameters.rrt_halton_shift = on(),

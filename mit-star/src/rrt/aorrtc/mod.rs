@@ -49,9 +49,10 @@ const MAX_SEARCH_STATES: usize = 10_000;
 /// shortcuts and random perturbations, for at most about one edge check per idle iteration).
 /// The searches stop when the best cost reaches the straight-line lower bound.
 ///
-/// RRT-Connect's switches (`rrt_dynamic_domain`, `rrt_balance`, `rrt_halton`,
-/// `rrt_halton_shift`, `rrt_valid_samples`) apply to the first search, and the first two to
-/// the cost-bounded ones. Certification follows RRT-Connect: only the edges of a path found are
+/// RRT-Connect's switches (`rrt_dynamic_domain`, `rrt_balance`, `rrt_forced_redraws`,
+/// `rrt_halton`, `rrt_halton_shift`, `rrt_valid_samples`) apply to the first search, and the
+/// first two to the cost-bounded ones (where a tree that balancing forces to grow steps
+/// towards every draw). Certification follows RRT-Connect: only the edges of a path found are
 /// certified, and the simplifier certifies each edge it adds.
 ///
 /// # Arguments
