@@ -60,7 +60,7 @@ pub struct RrtConnect<S, V, E = DenseChecker> {
     /// A connection found (its state in the start tree, its state in the goal tree) whose
     /// edges are being certified; the stop interrupted the certification.
     connection: Option<(u32, u32)>,
-    /// Per tree, the recent share of the draws it grew towards that fell inside the nearest
+    /// Per tree, the recent share of its draws (forced or not) that fell inside the nearest
     /// state's dynamic domain (which decides whether a forced tree redraws, see
     /// [`skips_outside_domain`]): an average over about [`LANDING_MEMORY`] draws, from 1.
     landing: [f64; 2],
@@ -131,11 +131,12 @@ pub(super) fn skips_outside_domain(dynamic_domain: bool, forced: bool) -> bool {
     dynamic_domain && !forced
 }
 
-/// How many recent forced draws the landing share of a tree averages over (the weight of one
-/// draw is its inverse).
+/// How many of a tree's recent draws its landing share averages over (the weight of one draw
+/// is its inverse).
 const LANDING_MEMORY: f64 = 32.0;
 
-/// The least share of a forced tree's recent draws inside the domain with which it redraws.
+/// The least share of a tree's recent draws inside its domain with which it redraws when
+/// forced.
 const MIN_LANDING: f64 = 1.0 / 16.0;
 
 /// Redraws between two polls of the stop condition while a forced tree redraws samples
@@ -295,13 +296,13 @@ where
             let outside = dynamic
                 && self.core.space.distance(from, &self.core.target)
                     > self.trees[t].radii[near as usize];
-            if outside && skips_outside_domain(dynamic, forced) {
-                // Outside the nearest state's dynamic domain: skipped, nothing checked.
-                return Some(Step::Trapped);
-            }
             if dynamic {
                 let landed = if outside { 0.0 } else { 1.0 };
                 self.landing[t] += (landed - self.landing[t]) / LANDING_MEMORY;
+            }
+            if outside && skips_outside_domain(dynamic, forced) {
+                // Outside the nearest state's dynamic domain: skipped, nothing checked.
+                return Some(Step::Trapped);
             }
             if outside
                 && redraws < self.core.parameters.rrt_forced_redraws
@@ -712,12 +713,12 @@ mod tests {
         assert_ne!(first_path(3, true), first_path(4, true));
     }
 
-    /// RRT-Connect's counters after up to 4 000 iterations (or `seconds`) on a goal at the
+    /// RRT-Connect's counters after up to 4 000 iterations (or 10 s) on a goal at the
     /// centre of a hollow 0.02 wide in R^`n` whose one opening is 0.01 wide, with range 0.05:
     /// every step from the goal fails, its dynamic domain shrinks towards one range, and
     /// balancing makes the goal tree (one state against the start tree's two) the only one
     /// that may grow.
-    fn enclosed_goal_counters(n: usize, redraws: u32, seconds: f64) -> crate::Counters {
+    fn enclosed_goal_counters(n: usize, redraws: u32) -> crate::Counters {
         let problem = problems::GoalEnclosure::new(n)
             .inside(0.02)
             .gap(0.01)
@@ -733,7 +734,7 @@ mod tests {
         };
         let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
         planner
-            .solve(&crate::IterationLimit::new(4000).or(TimeLimit::seconds(seconds)))
+            .solve(&crate::IterationLimit::new(4000).or(TimeLimit::seconds(10.0)))
             .unwrap();
         planner.counters()
     }
@@ -743,19 +744,19 @@ mod tests {
         let default = Parameters::default().rrt_forced_redraws;
         // In R^2 the goal's domain (a disc of radius 0.05 to 0.2) holds a few per cent of the
         // draws: the stuck goal tree redraws, still steps every iteration, and gets out.
-        let plane = enclosed_goal_counters(2, default, 10.0);
+        let plane = enclosed_goal_counters(2, default);
         assert!(plane.full_checks >= plane.iterations / 2, "{plane:?}");
         assert!(plane.samples_drawn > 2 * plane.iterations, "{plane:?}");
         // In R^8 it holds about one draw in 10^5: after a few dozen draws the tree stops
         // redrawing, even without a bound on the redraws, and steps towards each draw.
         for redraws in [default, u32::MAX] {
-            let space = enclosed_goal_counters(8, redraws, 10.0);
+            let space = enclosed_goal_counters(8, redraws);
             assert!(space.iterations >= 4000, "{space:?}");
             assert!(space.full_checks >= space.iterations / 2, "{space:?}");
             assert!(space.samples_drawn < space.iterations + 1000, "{space:?}");
         }
         // With no redraws, one draw an iteration.
-        let none = enclosed_goal_counters(2, 0, 10.0);
+        let none = enclosed_goal_counters(2, 0);
         assert!(none.samples_drawn <= none.iterations + 1, "{none:?}");
         assert!(skips_outside_domain(true, false));
         assert!(!skips_outside_domain(true, true));
