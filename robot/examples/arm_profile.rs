@@ -24,8 +24,8 @@
 //! as the benchmark harness does; `ARM_PROFILE_TIME=30` gives each solve 30 s instead of 1 s,
 //! so that under valgrind no solve is cut short by its deadline; `ARM_PROFILE_CSV=FILE` writes
 //! each solve's scene, problem, seed, time in µs, whether it solved and its counters, for
-//! `benches/peers/vamp/summarize_loops.py`) (the arm-planning reference page, "Where an arm
-//! solve's time goes").
+//! `benches/tools/arm_profile_table.py` and `benches/peers/vamp/summarize_loops.py`) (the
+//! arm-planning reference page, "Where an arm solve's time goes").
 
 use std::hint::black_box;
 use std::io::Write;
@@ -74,7 +74,8 @@ fn main() {
         "| scene | problems | median t_first (µs) | configurations | grid points | certified edges | NN queries | iterations | states | µs / configuration |"
     );
     println!("|---|---|---|---|---|---|---|---|---|---|");
-    // One line per solve, for a comparison run by run (`benches/peers/vamp/summarize_loops.py`).
+    // One line per solve, for a comparison run by run (`benches/tools/arm_profile_table.py`,
+    // `benches/peers/vamp/summarize_loops.py`).
     let mut csv = std::env::var_os("ARM_PROFILE_CSV").map(|path| {
         let mut file = std::io::BufWriter::new(std::fs::File::create(path).expect("a CSV file"));
         writeln!(
