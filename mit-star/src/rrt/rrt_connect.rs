@@ -314,15 +314,12 @@ where
                 }
                 continue;
             }
-            let target = std::mem::take(&mut self.core.target);
-            let from = self.trees[t].state(near);
             let reached = steer(
                 &self.core.space,
-                (from, &target),
+                (from, &self.core.target),
                 self.core.range,
                 &mut self.core.candidate,
             );
-            self.core.target = target;
             self.pending = Some(Motion {
                 tree: t,
                 near,
