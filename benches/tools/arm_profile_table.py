@@ -5,7 +5,9 @@
 µs, solved, counters). This takes, per problem, the median time over its seeds (an unsolved
 solve counts as infinite), then per scene and over all scenes ("all") the median, the 95th
 percentile and the mean of those per-problem medians, and prints them as `median / p95 / mean`
-in µs, one column per CSV (the tables of the guide's "RRT-Connect's switches").
+in µs, one column per CSV (the tables of the guide's "RRT-Connect's switches"). The 95th
+percentile is the nearest rank, as the shared side-by-side summary takes it
+(`pooled_rounds.py` takes the value at index ⌊0.95 n⌋, one rank higher for 100 problems).
 
 Usage:
     ARM_PROFILE_CSV=k0.csv ARM_PROFILE_NO_CHECKS=1 arm_profile target 100 rrt-connect 5 \\
