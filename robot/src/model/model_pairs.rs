@@ -42,40 +42,65 @@ impl RobotModel {
             .collect()
     }
 
-    /// The adjacent link pairs among links with spheres, `i < j`: links joined by a joint, or
-    /// by a chain of links without spheres (MoveIt's rule: a link without geometry joins its
-    /// neighbours).
+    /// The adjacent link pairs among links with spheres, `i < j`: pairs the sphere model
+    /// cannot check meaningfully because the links are joined as by one joint. Two links with
+    /// spheres are adjacent if every link strictly between them on the tree path has no
+    /// spheres, and
+    /// - one is an ancestor of the other (a serial chain: MoveIt's setup assistant collapses a
+    ///   geometry-less wrist the same way), or
+    /// - at most one moving joint lies on the path (siblings on a fixed mount, say).
+    ///
+    /// Links in two branches with two or more moving joints between them (the shoulders of
+    /// two arms on geometry-less bases) are not adjacent: their pair stays checked unless the
+    /// SRDF disables it. A joint moves if it is a coordinate or follows one (a mimic joint);
+    /// held joints count as fixed.
     pub fn adjacent_link_pairs(&self) -> Vec<(usize, usize)> {
         let links = self.links();
-        let mut neighbours = vec![Vec::new(); links.len()];
-        for (i, link) in links.iter().enumerate() {
+        let has_spheres = |l: usize| !self.link_sphere_range(l).is_empty();
+        let moving = |l: usize| !matches!(links[l].motion, crate::Motion::Fixed);
+        let mut children = vec![Vec::new(); links.len()];
+        for (c, link) in links.iter().enumerate() {
             if let Some(p) = link.parent {
-                neighbours[i].push(p);
-                neighbours[p].push(i);
+                children[p].push(c);
             }
         }
-        let has_spheres = |l: usize| !self.link_sphere_range(l).is_empty();
         let mut pairs = Vec::new();
-        for start in (0..links.len()).filter(|&l| has_spheres(l)) {
-            // Through links without spheres, to the first links with spheres.
-            let (mut seen, mut stack) = (vec![false; links.len()], vec![start]);
-            seen[start] = true;
-            while let Some(l) = stack.pop() {
-                for &n in &neighbours[l] {
-                    if std::mem::replace(&mut seen[n], true) {
+        for a in (0..links.len()).filter(|&l| has_spheres(l)) {
+            // Up from `a` through links without spheres: each ancestor reached is adjacent
+            // (a serial chain); from each, down into the other branches.
+            let (mut below, mut joints) = (a, usize::from(moving(a)));
+            while let Some(up) = links[below].parent {
+                if has_spheres(up) {
+                    pairs.push((up.min(a), up.max(a)));
+                    break;
+                }
+                // Down from `up` into its other children, through links without spheres,
+                // while at most one moving joint lies on the path.
+                let mut stack: Vec<(usize, usize)> = children[up]
+                    .iter()
+                    .filter(|&&c| c != below)
+                    .map(|&c| (c, joints + usize::from(moving(c))))
+                    .collect();
+                while let Some((l, count)) = stack.pop() {
+                    if count > 1 {
                         continue;
                     }
-                    if has_spheres(n) {
-                        if start < n {
-                            pairs.push((start, n));
-                        }
-                    } else {
-                        stack.push(n);
+                    if has_spheres(l) {
+                        pairs.push((l.min(a), l.max(a)));
+                        continue;
                     }
+                    stack.extend(
+                        children[l]
+                            .iter()
+                            .map(|&c| (c, count + usize::from(moving(c)))),
+                    );
                 }
+                below = up;
+                joints += usize::from(moving(up));
             }
         }
         pairs.sort_unstable();
+        pairs.dedup();
         pairs
     }
 
