@@ -11,7 +11,8 @@ use spaces::{JointKind, StateSpace};
 /// A base; `turn` (revolute about z) carries `arm` with a sphere 0.5 m out along x;
 /// `spin` (continuous about x) carries `wrist`; `lift` (prismatic along z) carries `tray`;
 /// `left` (prismatic along y) a finger, and `right` mimics it (multiplier -2, offset 0.01);
-/// `twin` mimics `turn` turned the other way (multiplier -1, offset 0.5).
+/// `twin` mimics `turn` turned the other way (multiplier -1, offset 0.5). The followers' own
+/// limits hold over their leaders' whole ranges (`tests/mimic_limits.rs` shrinks ranges).
 const ROBOT: &str = r#"<?xml version="1.0"?>
 <robot name="kinds">
   <link name="base"><collision><geometry><sphere radius="0.05"/></geometry></collision></link>
@@ -38,12 +39,12 @@ const ROBOT: &str = r#"<?xml version="1.0"?>
   </joint>
   <joint name="right" type="prismatic">
     <parent link="wrist"/><child link="finger_r"/><origin xyz="0 0.2 0"/><axis xyz="0 1 0"/>
-    <limit lower="-1" upper="0" effort="1" velocity="1"/>
+    <limit lower="-1" upper="0.5" effort="1" velocity="1"/>
     <mimic joint="left" multiplier="-2" offset="0.01"/>
   </joint>
   <joint name="mirror" type="revolute">
     <parent link="base"/><child link="twin"/><origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>
-    <limit lower="-2" upper="2" effort="1" velocity="1"/>
+    <limit lower="-2" upper="3" effort="1" velocity="1"/>
     <mimic joint="turn" multiplier="-1" offset="0.5"/>
   </joint>
 </robot>"#;

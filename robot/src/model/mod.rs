@@ -22,6 +22,7 @@
 //! [`ArmProblem`](crate::ArmProblem).
 
 mod collision_pairs;
+mod joint_limits;
 mod kinematics;
 mod lever_arms;
 mod model_error;
@@ -31,6 +32,7 @@ mod model_warning;
 mod planning_group;
 mod robot_model;
 mod srdf;
+mod xml_guard;
 
 pub use kinematics::Kinematics;
 pub(crate) use kinematics::{JointMotion, to_f32};

@@ -24,6 +24,32 @@ pub enum ModelError {
         /// The parser's message.
         message: String,
     },
+    /// The URDF is larger than [`MAX_URDF_BYTES`](crate::RobotModel::MAX_URDF_BYTES).
+    #[error("{origin}: {bytes} bytes is more than the {limit} bytes a URDF may have")]
+    TooLarge {
+        /// The file (or `"URDF text"`).
+        origin: String,
+        /// Its size (at least this many, for a file read only so far).
+        bytes: u64,
+        /// The limit.
+        limit: u64,
+    },
+    /// The URDF nests elements deeper than
+    /// [`MAX_URDF_DEPTH`](crate::RobotModel::MAX_URDF_DEPTH) (refused before parsing: the
+    /// parser would overflow the stack).
+    #[error("{origin}: elements nested more than {limit} deep (a URDF needs 5)")]
+    TooDeep {
+        /// The file (or `"URDF text"`).
+        origin: String,
+        /// The limit.
+        limit: usize,
+    },
+    /// The URDF has more than one root element (two `<robot>`s, say).
+    #[error("{origin}: more than one root element (one `<robot>` per URDF)")]
+    SeveralRoots {
+        /// The file (or `"URDF text"`).
+        origin: String,
+    },
     /// The SRDF is not well-formed XML.
     #[error("{origin}: not a readable SRDF: {message}")]
     Srdf {
@@ -92,6 +118,53 @@ pub enum ModelError {
         /// Lower limit.
         lower: f64,
         /// Upper limit.
+        upper: f64,
+    },
+    /// Joint limits beyond the bound of their kind
+    /// ([`MAX_PRISMATIC_LIMIT`](crate::RobotModel::MAX_PRISMATIC_LIMIT),
+    /// [`MAX_REVOLUTE_LIMIT`](crate::RobotModel::MAX_REVOLUTE_LIMIT)): a unit error, most
+    /// likely.
+    #[error(
+        "joint `{joint}`: {kind} limits [{lower}, {upper}] are beyond ±{bound} (a unit error?)"
+    )]
+    LimitsTooWide {
+        /// The joint.
+        joint: String,
+        /// `"revolute"` or `"prismatic"`.
+        kind: &'static str,
+        /// Lower limit.
+        lower: f64,
+        /// Upper limit.
+        upper: f64,
+        /// The bound on either limit's magnitude (metres or radians).
+        bound: f64,
+    },
+    /// A mimic multiplier or offset that is not finite or beyond its bound
+    /// ([`MAX_MIMIC_MULTIPLIER`](crate::RobotModel::MAX_MIMIC_MULTIPLIER),
+    /// [`MAX_MIMIC_OFFSET`](crate::RobotModel::MAX_MIMIC_OFFSET)).
+    #[error("mimic joint `{joint}`: {what} {value} is not within ±{bound}")]
+    BadMimic {
+        /// The mimic joint.
+        joint: String,
+        /// `"multiplier"` or `"offset"`.
+        what: &'static str,
+        /// The value.
+        value: f64,
+        /// The bound on its magnitude.
+        bound: f64,
+    },
+    /// No value of the leader keeps a mimic joint within its own limits.
+    #[error(
+        "mimic joint `{joint}`: no value of its leader `{leader}` within the leader's limits keeps it within its own limits [{lower}, {upper}]"
+    )]
+    MimicLimits {
+        /// The mimic joint.
+        joint: String,
+        /// The planned (or held) joint leading it.
+        leader: String,
+        /// The mimic joint's lower limit.
+        lower: f64,
+        /// The mimic joint's upper limit.
         upper: f64,
     },
     /// A number that must be finite (an origin, a radius) is not, is beyond ±10⁶ m (an

@@ -24,6 +24,9 @@ pub(crate) struct ModelJoint {
     pub(crate) spec: Option<Joint>,
     /// `<mimic joint= multiplier= offset=>`: the leader's name, the multiplier and the offset.
     pub(crate) mimic: Option<(String, f64, f64)>,
+    /// A mimic joint's own `<limit>` (`None` for a continuous one, or one without limits):
+    /// its leader's range is shrunk to keep it within them.
+    pub(crate) limits: Option<(f64, f64)>,
     /// A coordinate of the configuration (else held at `value`).
     pub(crate) planned: bool,
     /// The value when held still.

@@ -5,7 +5,7 @@ use std::fmt;
 /// Something a [`RobotModel`](crate::RobotModel) ignored rather than refused (outside
 /// [strict mode](crate::RobotModel::strict)), or a change it made to its self-collision pairs
 /// that the user should review.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum ModelWarning {
     /// Entries of an SRDF or of a scene's allowed-collision matrix naming links the model does
     /// not have, skipped. SRDFs written for a mesh model often name links its spherised copy
@@ -38,6 +38,18 @@ pub enum ModelWarning {
         reason: &'static str,
         /// The pairs' link names.
         pairs: Vec<(String, String)>,
+    },
+    /// A leader's range shrunk so that a mimic joint following it stays within its own
+    /// limits.
+    MimicRange {
+        /// The leading joint.
+        leader: String,
+        /// The mimic joint.
+        follower: String,
+        /// The leader's new lower limit.
+        lower: f64,
+        /// The leader's new upper limit.
+        upper: f64,
     },
 }
 
@@ -76,6 +88,15 @@ impl fmt::Display for ModelWarning {
                     names.join(", ")
                 )
             }
+            Self::MimicRange {
+                leader,
+                follower,
+                lower,
+                upper,
+            } => write!(
+                f,
+                "joint `{leader}` limited to [{lower}, {upper}] to keep mimic joint `{follower}` within its limits"
+            ),
         }
     }
 }

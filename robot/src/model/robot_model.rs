@@ -7,6 +7,7 @@ use std::path::Path;
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 use spaces::{Joint, JointSpace};
 
+use crate::model::joint_limits::{checked_limits, checked_mimic, keep_mimic_limits};
 use crate::model::model_joint::ModelJoint;
 use crate::{ModelError, ModelWarning};
 
@@ -100,25 +101,41 @@ impl RobotModel {
     /// # Errors
     /// [`ModelError::Io`] if it cannot be read, else as [`from_urdf_str`](Self::from_urdf_str).
     pub fn from_urdf_file(path: &Path) -> Result<Self, ModelError> {
-        let text = std::fs::read_to_string(path).map_err(|source| ModelError::Io {
+        use std::io::Read;
+        let io = |source| ModelError::Io {
             path: path.to_path_buf(),
             source,
-        })?;
+        };
+        let limit = Self::MAX_URDF_BYTES as u64;
+        let mut text = String::new();
+        std::fs::File::open(path)
+            .map_err(io)?
+            .take(limit + 1)
+            .read_to_string(&mut text)
+            .map_err(io)?;
         Self::parse(&text, &path.display().to_string())
     }
 
     /// Reads a URDF document.
     ///
     /// # Errors
-    /// [`ModelError::Urdf`] for malformed XML, [`ModelError::DuplicateName`] for two joints
+    /// [`ModelError::TooLarge`], [`ModelError::TooDeep`] and [`ModelError::SeveralRoots`] for
+    /// a document refused before parsing, [`ModelError::Urdf`] for malformed XML,
+    /// [`ModelError::DuplicateName`] for two joints
     /// (or links) of one name, and the variants naming a link or joint for non-sphere
     /// collision geometry, unsupported joints, bad axes, limits or numbers (origins and radii
-    /// beyond 10⁶ m included), and links that do not form one tree.
+    /// beyond 10⁶ m included), joint limits or mimic factors beyond their bounds
+    /// ([`ModelError::LimitsTooWide`], [`ModelError::BadMimic`]), mimic joints whose limits
+    /// cannot be kept ([`ModelError::MimicLimits`]), and links that do not form one tree.
+    ///
+    /// A mimic joint's own limits are kept: its leader's range shrinks to the values that
+    /// keep every follower within its limits (a [`ModelWarning::MimicRange`] says so).
     pub fn from_urdf_str(text: &str) -> Result<Self, ModelError> {
         Self::parse(text, "URDF text")
     }
 
     fn parse(text: &str, origin: &str) -> Result<Self, ModelError> {
+        crate::model::xml_guard::check_shape(text, origin)?;
         let urdf = urdf_rs::read_from_string(text).map_err(|e| ModelError::Urdf {
             origin: origin.to_owned(),
             message: e.to_string(),
@@ -210,6 +227,8 @@ impl RobotModel {
         if joints.iter().all(|j| j.mimic.is_some()) {
             return Err(ModelError::NoJoints);
         }
+        let mut warnings = Vec::new();
+        keep_mimic_limits(&mut joints, &mut warnings)?;
         let by_name: HashMap<&str, &urdf_rs::Link> =
             urdf.links.iter().map(|l| (l.name.as_str(), l)).collect();
         let (mut spheres, mut ranges, mut bounds) = (Vec::new(), Vec::new(), Vec::new());
@@ -258,7 +277,7 @@ impl RobotModel {
             bounds,
             pairs,
             strict: false,
-            warnings: Vec::new(),
+            warnings,
         };
         model.rebuild()?;
         Ok(model)
@@ -351,41 +370,41 @@ fn joint_frame(
         Some(m) => {
             let multiplier = m.multiplier.unwrap_or(1.0);
             let offset = m.offset.unwrap_or(0.0);
-            for (what, v) in [("mimic multiplier", multiplier), ("mimic offset", offset)] {
-                if !v.is_finite() {
-                    return Err(bad(&joint.name, what, v));
-                }
-            }
+            checked_mimic(&joint.name, multiplier, offset)?;
             Some((m.joint.clone(), multiplier, offset))
         }
     };
     let (lower, upper) = (joint.limit.lower, joint.limit.upper);
-    let limited = |j: fn(String, f64, f64) -> Joint| {
-        if lower.is_finite() && upper.is_finite() && lower < upper {
-            Ok(j(joint.name.clone(), lower, upper))
-        } else {
-            Err(ModelError::BadLimits {
-                joint: joint.name.clone(),
-                lower,
-                upper,
-            })
-        }
-    };
-    // A mimic joint's own limits are not used: its leader's rule.
+    let prismatic = matches!(joint.joint_type, T::Prismatic);
     let spec = match (joint.joint_type.clone(), &mimic) {
         (_, Some(_)) => None,
-        (T::Revolute, None) => Some(limited(Joint::revolute)?),
-        (T::Prismatic, None) => Some(limited(Joint::prismatic)?),
+        (T::Revolute | T::Prismatic, None) => {
+            let (lower, upper) = checked_limits(&joint.name, prismatic, lower, upper)?;
+            Some(if prismatic {
+                Joint::prismatic(joint.name.clone(), lower, upper)
+            } else {
+                Joint::revolute(joint.name.clone(), lower, upper)
+            })
+        }
         _ => Some(Joint::continuous(joint.name.clone())),
+    };
+    // A mimic joint's own limits shrink its leader's range (`keep_mimic_limits`); without a
+    // `<limit>` (read as `[0, 0]`) or continuous, it has none.
+    let limits = match (joint.joint_type.clone(), &mimic) {
+        (T::Revolute | T::Prismatic, Some(_)) if (lower, upper) != (0.0, 0.0) => {
+            Some(checked_limits(&joint.name, prismatic, lower, upper)?)
+        }
+        _ => None,
     };
     let mut joint = ModelJoint {
         name: joint.name.clone(),
         link,
         origin,
         axis,
-        prismatic: matches!(joint.joint_type, T::Prismatic),
+        prismatic,
         spec,
         mimic,
+        limits,
         planned: true,
         value: 0.0,
     };
