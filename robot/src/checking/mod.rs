@@ -16,7 +16,8 @@
 //! - [`ParryChecker`] (`parry_checker.rs`): the reference checker, `f64` and parry queries, no
 //!   culling (tests and path re-checks).
 //! - [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] (`motion_audit.rs`): an independent
-//!   continuous check of a motion by conservative advancement on parry distances.
+//!   continuous check of a motion by conservative advancement on parry distances, with its
+//!   own broad phase (`audit_broad_phase.rs`: per-link bounding spheres first).
 //! - [`StateDiagnosis`] (`state_diagnosis.rs`): what one configuration touches, by name, in
 //!   `f64` (`mit-star check-state`).
 //! - `scratch_cell.rs`: the per-clone scratch buffers both checkers keep behind a mutex.
@@ -27,6 +28,7 @@
 
 mod arm_certification;
 mod arm_checker;
+mod audit_broad_phase;
 mod clearance;
 mod lanes;
 mod local_sweep;

@@ -4,6 +4,7 @@
 use spaces::{JointKind, StateSpace, wrap_angle};
 use validity::StateValidity;
 
+use crate::checking::audit_broad_phase::{AuditBroadPhase, PairRates, Tests};
 use crate::{Motion, ParryChecker, RobotModel, Scene};
 
 /// Closer than this (metres) counts as contact: the audit does not chase a gap that small.
@@ -81,6 +82,8 @@ pub struct MotionAudit {
     /// Per checked pair of links, in the checker's order: what bounds how fast its spheres
     /// close in.
     pair_links: Vec<PairLinks>,
+    /// Its own broad phase: per-link bounding spheres before sphere-by-sphere distances.
+    broad: AuditBroadPhase,
 }
 
 /// A checked pair of links, as the audit bounds how fast their spheres close in.
@@ -178,7 +181,9 @@ impl MotionAudit {
             .collect();
         // The checker lists the pairs' spheres in the same order, a link pair at a time.
         debug_assert_eq!(next, checker.sphere_pairs().len());
+        let broad = AuditBroadPhase::new(robot, scene, &checker);
         Self {
+            broad,
             checker,
             space,
             dimension,
@@ -212,10 +217,50 @@ impl MotionAudit {
     /// grazes an obstacle for a long way). Ends of the wrong dimension or not finite collide
     /// at `t = 0`.
     ///
-    /// Complexity: per configuration, one `f64` forward-kinematics pass and one distance query
-    /// per sphere and obstacle and per checked sphere pair; the number of configurations grows
-    /// with the motion's length over its clearance.
+    /// Complexity: per configuration, one `f64` forward-kinematics pass, one distance query
+    /// per link (bounded by one sphere) and obstacle and per checked link pair, and
+    /// sphere-by-sphere queries only for the link–obstacle and link–link pairs whose bound
+    /// could lower the advance or the clearance (the audit's own broad phase; its verdicts
+    /// are [`audit_exhaustive`](Self::audit_exhaustive)'s); the number of configurations
+    /// grows with the motion's length over its clearance.
     pub fn audit(&self, a: &[f64], b: &[f64], budget: u64) -> AuditVerdict {
+        self.run(a, b, budget, true).0
+    }
+
+    /// The same audit without its broad phase: every sphere against every obstacle and
+    /// every checked sphere pair at every configuration. Slower on large sphere models; the
+    /// reference [`audit`](Self::audit)'s verdicts are tested against.
+    pub fn audit_exhaustive(&self, a: &[f64], b: &[f64], budget: u64) -> AuditVerdict {
+        self.run(a, b, budget, false).0
+    }
+
+    /// As [`audit`](Self::audit) (`broad`) or [`audit_exhaustive`](Self::audit_exhaustive),
+    /// with the number of sphere distances and bound distances computed: `(exact, bounds)`.
+    pub fn audit_counting(
+        &self,
+        a: &[f64],
+        b: &[f64],
+        budget: u64,
+        broad: bool,
+    ) -> (AuditVerdict, (u64, u64)) {
+        let (verdict, tests) = self.run(a, b, budget, broad);
+        (verdict, (tests.exact, tests.bounds))
+    }
+
+    fn run(&self, a: &[f64], b: &[f64], budget: u64, broad: bool) -> (AuditVerdict, Tests) {
+        let mut tests = Tests::default();
+        let verdict = self.run_counting(a, b, budget, broad, &mut tests);
+        (verdict, tests)
+    }
+
+    fn run_counting(
+        &self,
+        a: &[f64],
+        b: &[f64],
+        budget: u64,
+        broad: bool,
+        tests: &mut Tests,
+    ) -> AuditVerdict {
         let d = self.dimension;
         let collides = |t: f64, configuration: Vec<f64>, contact: String| AuditVerdict::Collides {
             t,
@@ -241,26 +286,30 @@ impl MotionAudit {
         // Per sphere pair, how fast its gap can close: only the joints between the two links
         // move them relative to each other, each sphere at most as fast as those joints move
         // its centre.
-        let mut closing = vec![0.0; pairs.len()];
-        for pair in &self.pair_links {
-            let relative = |s: usize| -> f64 {
-                let row = &self.speeds[s * d..(s + 1) * d];
-                // From +0.0: a pair no joint moves apart closes at +0 and its gap's advance is
-                // +∞ (an empty `sum` of `f64` is -0.0).
-                (0..d)
-                    .filter(|&c| pair.between[c])
-                    .fold(0.0, |sum, c| sum + row[c] * delta[c].abs())
-            };
-            let ((first_a, count_a), (first_b, count_b)) = pair.spheres;
-            let a: Vec<f64> = (first_a..first_a + count_a).map(relative).collect();
-            let b: Vec<f64> = (first_b..first_b + count_b).map(relative).collect();
-            for k in pair.entries.clone() {
-                let (i, j) = pairs[k];
-                closing[k] = a[i - first_a] + b[j - first_b];
-            }
-        }
-        let mut obstacle_gaps = vec![0.0; speed.len()];
-        let mut pair_gaps = vec![0.0; pairs.len()];
+        // Per checked pair of links, per sphere of either link (a sphere pair closes at the
+        // sum of its two spheres' rates).
+        let rates: Vec<PairRates> = self
+            .pair_links
+            .iter()
+            .map(|pair| {
+                let relative = |s: usize| -> f64 {
+                    let row = &self.speeds[s * d..(s + 1) * d];
+                    // From +0.0: a pair no joint moves apart closes at +0 and its gap's
+                    // advance is +∞ (an empty `sum` of `f64` is -0.0).
+                    (0..d)
+                        .filter(|&c| pair.between[c])
+                        .fold(0.0, |sum, c| sum + row[c] * delta[c].abs())
+                };
+                let ((first_a, count_a), (first_b, count_b)) = pair.spheres;
+                (
+                    (first_a..first_a + count_a).map(relative).collect(),
+                    (first_b..first_b + count_b).map(relative).collect(),
+                )
+            })
+            .collect();
+        let mut scratch = broad.then(|| self.broad.scratch(&speed, &rates));
+        // Allocated at the first exhaustive measurement only.
+        let (mut obstacle_gaps, mut pair_gaps) = (Vec::new(), Vec::new());
         let mut q = a.to_vec();
         let (mut t, mut configurations, mut clearance) = (0.0_f64, 0_u64, f64::INFINITY);
         loop {
@@ -268,10 +317,25 @@ impl MotionAudit {
                 return AuditVerdict::Undecided { t, configurations };
             }
             self.space.interpolate(a, b, t, &mut q);
-            self.checker.gaps(&q, &mut obstacle_gaps, &mut pair_gaps);
             configurations += 1;
             // The longest advance no sphere can use to close its gap.
             let mut advance = f64::INFINITY;
+            if let Some(scratch) = scratch.as_mut() {
+                let bounds = (&speed[..], &rates[..]);
+                let (found, now) = (&mut clearance, &mut advance);
+                if !self.broad.measure(&q, bounds, scratch, now, found, tests) {
+                    if let Some(verdict) = self.step(&mut t, advance, configurations, clearance) {
+                        return verdict;
+                    }
+                    continue;
+                }
+                // A contact: measured exhaustively below, for its name.
+                advance = f64::INFINITY;
+            }
+            obstacle_gaps.resize(speed.len(), 0.0);
+            pair_gaps.resize(pairs.len(), 0.0);
+            self.checker.gaps(&q, &mut obstacle_gaps, &mut pair_gaps);
+            tests.exact += (obstacle_gaps.len() * self.broad_obstacles() + pair_gaps.len()) as u64;
             for (s, (&gap, &v)) in obstacle_gaps.iter().zip(&speed).enumerate() {
                 if gap <= AUDIT_CONTACT {
                     let contact =
@@ -281,30 +345,53 @@ impl MotionAudit {
                 clearance = clearance.min(gap);
                 advance = advance.min(gap / v);
             }
-            for (k, (&gap, &(i, j))) in pair_gaps.iter().zip(pairs).enumerate() {
-                if gap <= AUDIT_CONTACT {
-                    let contact = format!(
-                        "a sphere of `{}` meets a sphere of `{}`",
-                        self.sphere_links[i], self.sphere_links[j]
-                    );
-                    return collides(t, q, contact);
+            for (pair, (rate_a, rate_b)) in self.pair_links.iter().zip(&rates) {
+                let ((first_a, _), (first_b, _)) = pair.spheres;
+                for k in pair.entries.clone() {
+                    let (gap, (i, j)) = (pair_gaps[k], pairs[k]);
+                    if gap <= AUDIT_CONTACT {
+                        let contact = format!(
+                            "a sphere of `{}` meets a sphere of `{}`",
+                            self.sphere_links[i], self.sphere_links[j]
+                        );
+                        return collides(t, q, contact);
+                    }
+                    clearance = clearance.min(gap);
+                    advance = advance.min(gap / (rate_a[i - first_a] + rate_b[j - first_b]));
                 }
-                clearance = clearance.min(gap);
-                advance = advance.min(gap / closing[k]);
             }
-            if t >= 1.0 || t + advance >= 1.0 {
-                if t >= 1.0 {
-                    return AuditVerdict::Clear {
-                        configurations,
-                        clearance,
-                    };
-                }
-                // The end itself is measured too (it is a configuration of the motion).
-                t = 1.0;
-            } else {
-                t += advance;
+            if let Some(verdict) = self.step(&mut t, advance, configurations, clearance) {
+                return verdict;
             }
         }
+    }
+
+    /// Advances `t` by `advance` (to the end at most, which is measured too); the verdict
+    /// once the end was measured.
+    fn step(
+        &self,
+        t: &mut f64,
+        advance: f64,
+        configurations: u64,
+        clearance: f64,
+    ) -> Option<AuditVerdict> {
+        if *t >= 1.0 {
+            return Some(AuditVerdict::Clear {
+                configurations,
+                clearance,
+            });
+        }
+        *t = if *t + advance >= 1.0 {
+            1.0
+        } else {
+            *t + advance
+        };
+        None
+    }
+
+    /// How many obstacles each sphere is measured against.
+    fn broad_obstacles(&self) -> usize {
+        self.broad.obstacle_count()
     }
 }
 
