@@ -4,7 +4,9 @@
 
 mod common;
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use common::scheduled::Scheduled;
 
 use mit_star::{
     Configuration, IterationLimit, Parameters, TerminationExt, TimeLimit, build_planner,
@@ -61,7 +63,7 @@ proptest! {
     ) {
         let problem = problems::builtin("wall-gap", 2, 0).unwrap();
         let parameters = with_field(field, float, count, seed);
-        let started = Instant::now();
+        let clock = Scheduled::start();
         match build_planner(configuration, &problem, &parameters) {
             Err(e) => {
                 let text = e.to_string();
@@ -70,9 +72,11 @@ proptest! {
             }
             Ok(mut planner) => {
                 let budget = Duration::from_millis(30);
-                let stop = TimeLimit::until(started + budget).or(IterationLimit::new(3_000));
+                let stop = TimeLimit::until(clock.started() + budget).or(IterationLimit::new(3_000));
                 let outcome = planner.solve(&stop).unwrap();
-                prop_assert!(started.elapsed() < budget + Duration::from_millis(200));
+                // On the time this thread was scheduled: a loaded machine does not fail it.
+                let took = clock.elapsed();
+                prop_assert!(took < budget + Duration::from_millis(200), "took {:?} of {}", took, clock.source());
                 if let Some(solution) = outcome.solution() {
                     prop_assert!(common::path_is_valid(problem.world(), &solution.path, problem.step()));
                 }

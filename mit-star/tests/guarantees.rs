@@ -4,8 +4,9 @@
 mod common;
 
 use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
+use common::scheduled::Scheduled;
 use common::{assert_solution_sound, assert_trace_monotone, fingerprint};
 use mit_star::{
     BuildError, Configuration, CostThreshold, Counters, EitStar, Endpoint, FirstSolution,
@@ -85,18 +86,23 @@ fn parallel_runs_are_deterministic() {
 
 #[test]
 fn the_deadline_is_honoured() {
-    // GE R^8 keeps the planner busy far beyond the budget.
+    // GE R^8 keeps the planner busy far beyond the budget. Judged on the time this thread was
+    // scheduled (wall-clock less its run-queue wait), so another process on the core does not
+    // fail it; the margin covers an unoptimised build's poll gaps, and the stress example
+    // (`examples/deadline_stress.rs`, release) reports the exact overshoot.
     let problem = GoalEnclosure::new(8).build().unwrap();
     for budget_ms in [30, 120] {
-        let started = Instant::now();
+        let clock = Scheduled::start();
         let mut planner = EitStar::for_problem(&problem).seed(1).build().unwrap();
         let budget = Duration::from_millis(budget_ms);
-        planner.solve(&TimeLimit::until(started + budget)).unwrap();
-        let elapsed = started.elapsed();
-        // Generous margin for shared machines; the benchmark reports the exact overshoot.
+        planner
+            .solve(&TimeLimit::until(clock.started() + budget))
+            .unwrap();
+        let (took, wall) = (clock.elapsed(), clock.wall());
         assert!(
-            elapsed < budget + Duration::from_millis(50),
-            "budget {budget:?}, took {elapsed:?}"
+            took < budget + Duration::from_millis(50),
+            "budget {budget:?}, took {took:?} of {} ({wall:?} wall-clock)",
+            clock.source()
         );
     }
 }
@@ -104,8 +110,10 @@ fn the_deadline_is_honoured() {
 #[test]
 fn every_configuration_returns_near_its_deadline_at_any_size() {
     // A small stress matrix (the full one is `examples/deadline_stress.rs`): huge batches,
-    // high dimension, construction on the run's clock. The margin is generous for shared
-    // machines; the example reports the exact overshoot.
+    // high dimension, construction on the run's clock. Judged on the time this thread was
+    // scheduled (wall-clock less its run-queue wait: a loaded machine does not fail it, a
+    // planner that skips its polls does); the margin covers an unoptimised build's poll gaps,
+    // and the example reports the exact overshoot of a release build.
     for dimension in [2, 16, 32] {
         let problem = GoalEnclosure::new(dimension).build().unwrap();
         for configuration in Configuration::ALL {
@@ -114,15 +122,19 @@ fn every_configuration_returns_near_its_deadline_at_any_size() {
                     batch_size: Some(batch_size),
                     ..Parameters::default()
                 };
-                let started = Instant::now();
+                let clock = Scheduled::start();
                 let budget = Duration::from_millis(40);
                 let mut planner = build_planner(configuration, &problem, &parameters).unwrap();
-                planner.solve(&TimeLimit::until(started + budget)).unwrap();
-                let elapsed = started.elapsed();
+                planner
+                    .solve(&TimeLimit::until(clock.started() + budget))
+                    .unwrap();
+                let (took, wall) = (clock.elapsed(), clock.wall());
                 assert!(
-                    elapsed < budget + Duration::from_millis(40),
-                    "{} R^{dimension} batch {batch_size}: took {elapsed:?}",
-                    configuration.name()
+                    took < budget + Duration::from_millis(40),
+                    "{} R^{dimension} batch {batch_size}: took {took:?} of {} ({wall:?} \
+                     wall-clock) on a {budget:?} budget",
+                    configuration.name(),
+                    clock.source()
                 );
             }
         }

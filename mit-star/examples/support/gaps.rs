@@ -8,6 +8,11 @@ use std::time::{Duration, Instant};
 
 use mit_star::{Configuration, Parameters, Progress, Termination, build_planner};
 
+// The test suite's clock: wall-clock time less the thread's run-queue wait.
+#[path = "../../tests/common/scheduled.rs"]
+mod scheduled;
+use scheduled::Scheduled;
+
 /// Gaps shorter than this after the deadline are not recorded (except the one that crosses it).
 const LONG_GAP: Duration = Duration::from_micros(300);
 
@@ -115,6 +120,11 @@ impl Termination for Gaps {
 /// Builds `configuration` for `problem` and solves until `budget` seconds after the clock was
 /// taken (construction counts against the budget): solved, how late `solve` returned (before
 /// the planner is dropped), and the poll gaps. Exits on a build error.
+///
+/// The lateness is measured on the time the thread was scheduled: wall-clock time less the
+/// time it waited in the run queue (`/proc/thread-self/schedstat`; wall-clock where that
+/// cannot be read), so that another process on the core does not make a run late — a planner
+/// that skips its polls still does. The gaps are wall-clock.
 #[allow(dead_code)] // `poll_gaps` includes this file and measures its own way.
 pub(crate) fn measure<P: problems::PlanningProblem>(
     configuration: Configuration,
@@ -123,12 +133,13 @@ pub(crate) fn measure<P: problems::PlanningProblem>(
     budget: f64,
     trace: bool,
 ) -> (bool, f64, Gaps) {
-    let started = Instant::now();
+    let clock = Scheduled::start();
+    let started = clock.started();
     let gaps = Gaps::new(started, Duration::from_secs_f64(budget), trace);
     match build_planner(configuration, problem, parameters) {
         Ok(mut planner) => {
             let outcome = planner.solve(&gaps);
-            let late = started.elapsed().as_secs_f64() - budget;
+            let late = clock.elapsed().as_secs_f64() - budget;
             (outcome.is_ok_and(|o| o.is_solved()), late, gaps)
         }
         Err(e) => {

@@ -127,6 +127,13 @@ where
             return;
         }
         for i in 0..self.goal_ids.len() {
+            if stop.should_stop() {
+                // The other goals' expansions wait for the next iterations, in order: with
+                // thousands of goals, their neighbour queries are the restart's work.
+                let rest = self.goal_ids[i..].iter().map(|&g| (g, NONE, false));
+                self.deferred.extend(rest);
+                return;
+            }
             self.expand_reverse(self.goal_ids[i], NONE, stop);
         }
     }

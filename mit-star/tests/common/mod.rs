@@ -2,6 +2,8 @@
 
 #![allow(dead_code, unreachable_pub)]
 
+pub mod scheduled;
+
 use mit_star::{Counters, Eit, Outcome, Planner, Solution};
 use spaces::{StateSpace, euclidean_distance};
 use validity::{StateValidity, World};

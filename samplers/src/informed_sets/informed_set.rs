@@ -60,8 +60,12 @@ pub struct InformedSet {
     ln_unit_ball: f64,
     /// Scratch: the unit-ball sample of a draw.
     ball: Vec<f64>,
-    /// Scratch: per-goal selection weights of a draw.
+    /// Per-goal selection weights of the cost in `weighted` (recomputed when the cost
+    /// changes, not per draw: `O(goals)` logarithms and exponentials each time).
     weights: Vec<f64>,
+    /// The cost `weights` were computed for (its bits; NaN's at first), with the number of
+    /// non-empty hyperspheroids, the log of their summed measure and the weights' sum.
+    weighted: (u64, usize, f64, f64),
     counters: SamplerCounters,
 }
 
@@ -104,6 +108,7 @@ impl InformedSet {
             ln_unit_ball: ln_unit_ball_measure(n),
             ball: vec![0.0; n],
             weights: vec![0.0; m],
+            weighted: (f64::NAN.to_bits(), 0, 0.0, 0.0),
             counters: SamplerCounters::default(),
         };
         let mut direction = vec![0.0; n];
@@ -345,6 +350,10 @@ impl InformedSet {
     /// goals whose set is empty), in log space so nothing underflows in high dimension. Returns
     /// the number of non-empty hyperspheroids and the log of their summed measure.
     fn selection_weights(&mut self, cost: f64) -> (usize, f64) {
+        let (bits, active, ln_total, _) = self.weighted;
+        if bits == cost.to_bits() {
+            return (active, ln_total);
+        }
         let n = self.dimension;
         let mut largest = f64::NEG_INFINITY;
         let mut active = 0;
@@ -375,7 +384,9 @@ impl InformedSet {
             };
             sum += *w;
         }
-        (active, largest + sum.ln())
+        let ln_total = largest + sum.ln();
+        self.weighted = (cost.to_bits(), active, ln_total, sum);
+        (active, ln_total)
     }
 
     /// Direct sampling of the hyperspheroid(s), rejecting states outside the bounds.
@@ -389,7 +400,7 @@ impl InformedSet {
         out: &mut [f64],
     ) -> Result<(), SampleError> {
         let n = self.dimension;
-        let total: f64 = self.weights.iter().sum();
+        let total = self.weighted.3;
         loop {
             if stop.should_stop() {
                 return Err(SampleError::Stopped);

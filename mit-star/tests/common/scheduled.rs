@@ -1,0 +1,73 @@
+//! A clock for deadline assertions that does not depend on an idle machine: the wall-clock time
+//! of the calling thread less the time it spent waiting for a core.
+//!
+//! A planner's deadline is wall-clock, and a planner that polls its termination condition
+//! returns at most one poll gap after it: on an idle machine, `solve` returns at most one gap
+//! of work late. On a loaded machine the thread also waits in the run queue (for another
+//! process on the core), before and after the deadline, and a wall-clock bound fails although
+//! the planner did nothing wrong. Linux counts that wait per thread (the second field of
+//! `/proc/thread-self/schedstat`, in nanoseconds, kept exactly for every switch), so the time
+//! the thread was scheduled (running, or blocked on its own account) is the wall-clock time
+//! less that wait: a planner that skips its polls for `W` of work is still late by `W` on it,
+//! whatever else runs. Where the file cannot be read (not Linux, or a kernel without scheduler
+//! statistics) the clock falls back to wall-clock time, and says so in [`Scheduled::source`].
+//!
+//! Shared by `mit-star`'s integration tests (`tests/common`) and its unit tests (included by
+//! path), so that every timed assertion of the suite is judged the same way.
+
+#![allow(dead_code, unreachable_pub)]
+
+use std::time::{Duration, Instant};
+
+/// Started on one thread; read on the same thread.
+#[derive(Debug, Clone, Copy)]
+pub struct Scheduled {
+    wall: Instant,
+    waited: Option<Duration>,
+}
+
+impl Scheduled {
+    /// Starts the clock now, on the calling thread.
+    pub fn start() -> Self {
+        Self {
+            waited: run_queue_wait(),
+            wall: Instant::now(),
+        }
+    }
+
+    /// The instant the clock started (for a wall-clock deadline measured from it).
+    pub fn started(&self) -> Instant {
+        self.wall
+    }
+
+    /// Wall-clock time since [`start`](Self::start) less the time this thread waited for a
+    /// core meanwhile. Call it on the thread that started the clock.
+    pub fn elapsed(&self) -> Duration {
+        let wall = self.wall.elapsed();
+        match (self.waited, run_queue_wait()) {
+            (Some(before), Some(now)) => wall.saturating_sub(now.saturating_sub(before)),
+            _ => wall,
+        }
+    }
+
+    /// Wall-clock time since the start, whatever the machine did.
+    pub fn wall(&self) -> Duration {
+        self.wall.elapsed()
+    }
+
+    /// Which clock [`elapsed`](Self::elapsed) reads, for assertion messages.
+    pub fn source(&self) -> &'static str {
+        if self.waited.is_some() {
+            "scheduled time (wall-clock less run-queue wait)"
+        } else {
+            "wall-clock time (no scheduler statistics here)"
+        }
+    }
+}
+
+/// The calling thread's total wait in the run queue so far, if the kernel reports it.
+fn run_queue_wait() -> Option<Duration> {
+    let text = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+    let nanoseconds: u64 = text.split_whitespace().nth(1)?.parse().ok()?;
+    Some(Duration::from_nanos(nanoseconds))
+}
