@@ -147,6 +147,18 @@ pub enum HarnessError {
         #[source]
         source: std::io::Error,
     },
+    /// A file the user gave (a path file, an experiment's problem file) cannot be used as
+    /// input: a device or folder, larger than its kind's limit, or not text.
+    #[error("{what} `{}`: {source}", path.display())]
+    InputFile {
+        /// What the file should be, e.g. `path file`.
+        what: &'static str,
+        /// The file.
+        path: PathBuf,
+        /// What is wrong (it names the limit).
+        #[source]
+        source: problems::BoundedReadError,
+    },
     /// Reading or writing a file failed.
     #[error("`{}`: {source}", path.display())]
     Io {
@@ -247,6 +259,19 @@ impl HarnessError {
                 | Self::Planning { .. }
         )
     }
+}
+
+/// The longest line of input echoed in an error message, in characters.
+pub(crate) const ECHO_LIMIT: usize = 160;
+
+/// `message` with every line cut to [`ECHO_LIMIT`] characters (a parser that quotes the
+/// offending line of a 200 KB one-line file does not print it whole).
+pub(crate) fn clip_lines(message: &str) -> String {
+    message
+        .lines()
+        .map(|line| problems::excerpt(line, ECHO_LIMIT))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 #[cfg(test)]

@@ -96,7 +96,7 @@ pub use definition::planner_spec::{PlannerSpec, parse_configuration};
 pub use definition::problem_instance::ProblemInstance;
 pub use definition::problem_kind::InstanceProblem;
 pub use definition::problem_source::{ProblemFile, ProblemSource};
-pub use definition::problem_spec::ProblemSpec;
+pub use definition::problem_spec::{MAX_INSTANCES, MAX_SCHEDULED_RUNS, ProblemSpec};
 pub use definition::robot_choice::RobotChoice;
 pub use definition::shipped_experiment::ShippedExperiment;
 pub use error::HarnessError;

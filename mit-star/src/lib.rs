@@ -102,7 +102,8 @@ pub use informed_trees::{
 pub use nearest::{KdTree, NearestNeighbors, Neighbours};
 pub use observer::{BatchEvent, Observer, RestartEvent, SolutionEvent};
 pub use parameters::{
-    Connection, EisExpansionForm, EisExpansionRule, Parameters, k_nearest, r_disc,
+    Connection, EisExpansionForm, EisExpansionRule, MAX_GAUSSIAN_STD_FRACTION, MAX_RANGE,
+    MAX_REWIRE_FACTOR, MAX_SPARSE_STEPS, Parameters, k_nearest, r_disc,
 };
 pub use path_check::{PathVerdict, check_path, snap_ends};
 pub use planner::{Outcome, Planner, Solution};

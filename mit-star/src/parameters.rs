@@ -325,14 +325,33 @@ const ABIT_INFLATION_SCALING: f64 = 10.0;
 /// ABIT*'s truncation scaling parameter (OMPL 2.0's default).
 const ABIT_TRUNCATION_SCALING: f64 = 5.0;
 
-fn positive(name: &'static str, value: f64) -> Result<(), BuildError> {
-    if value.is_finite() && value > 0.0 {
+/// The largest `rewire_factor` and `rrt_rewire_factor` accepted: 100 (the RGG constant is
+/// about 1; 100 connects every sample to a hundred times the neighbours the theory asks).
+pub const MAX_REWIRE_FACTOR: f64 = 100.0;
+/// The largest `gaussian_std_fraction` accepted: 10 maximum extents (wider than the space
+/// itself: the adaptive sampler is then uniform in effect).
+pub const MAX_GAUSSIAN_STD_FRACTION: f64 = 10.0;
+/// The largest `sparse_initial_steps` and `sparse_min_steps` accepted: 10⁹ steps (far
+/// coarser than any edge: one sparse point per edge).
+pub const MAX_SPARSE_STEPS: f64 = 1e9;
+/// The largest `range` accepted: 10⁶ (in the space's units: radians, metres, or the box
+/// worlds' unit cube; an extension stops at its target whatever the range).
+pub const MAX_RANGE: f64 = 1e6;
+
+/// [`BuildError::Parameter`] unless `value` lies in `(0, max]`.
+fn within(
+    name: &'static str,
+    value: f64,
+    max: f64,
+    requirement: &'static str,
+) -> Result<(), BuildError> {
+    if value > 0.0 && value <= max {
         Ok(())
     } else {
         Err(BuildError::Parameter {
             name,
             value,
-            requirement: "it must be finite and positive",
+            requirement,
         })
     }
 }
@@ -416,8 +435,10 @@ impl Parameters {
     ///
     /// # Errors
     /// [`BuildError::Parameter`] naming the first parameter out of range: a batch size or bridge
-    /// count of 0, a batch growth outside `[0, 1]`, a non-positive or non-finite `η`, resolution, `δ` or sparse spacing, or `Ω`
-    /// outside `(0, 1)`.
+    /// count of 0, a batch growth outside `[0, 1]`, a resolution or `Ω` outside `(0, 1)`, and
+    /// values outside their documented ranges: `η` in `(0, 100]` ([`MAX_REWIRE_FACTOR`]), `δ`
+    /// in `(0, 10]` ([`MAX_GAUSSIAN_STD_FRACTION`]), sparse spacings in `(0, 10⁹]` steps
+    /// ([`MAX_SPARSE_STEPS`]), `range` in `(0, 10⁶]` ([`MAX_RANGE`]); NaN never passes.
     pub fn validate(&self) -> Result<(), BuildError> {
         if self.batch_size == Some(0) {
             return Err(BuildError::Parameter {
@@ -443,7 +464,12 @@ impl Parameters {
             });
         }
         if let Some(range) = self.range {
-            positive("range", range)?;
+            within(
+                "range",
+                range,
+                MAX_RANGE,
+                "it must lie in (0, 1e6] (`MAX_RANGE`)",
+            )?;
         }
         if self.certification == Some(0) {
             return Err(BuildError::Parameter {
@@ -468,8 +494,19 @@ impl Parameters {
                 requirement: "it must be at least 1",
             });
         }
-        positive("rewire_factor", self.rewire_factor)?;
-        positive("rrt_rewire_factor", self.rrt_rewire_factor)?;
+        let rewire = "it must lie in (0, 100] (`MAX_REWIRE_FACTOR`; about 1 is the theory's)";
+        within(
+            "rewire_factor",
+            self.rewire_factor,
+            MAX_REWIRE_FACTOR,
+            rewire,
+        )?;
+        within(
+            "rrt_rewire_factor",
+            self.rrt_rewire_factor,
+            MAX_REWIRE_FACTOR,
+            rewire,
+        )?;
         if !(0.0..=1.0).contains(&self.goal_bias) {
             return Err(BuildError::Parameter {
                 name: "goal_bias",
@@ -507,12 +544,18 @@ impl Parameters {
                 requirement: "it must lie strictly between 0 and 1 (a fraction of the maximum extent)",
             });
         }
-        positive("gaussian_std_fraction", self.gaussian_std_fraction)?;
+        within(
+            "gaussian_std_fraction",
+            self.gaussian_std_fraction,
+            MAX_GAUSSIAN_STD_FRACTION,
+            "it must lie in (0, 10] (`MAX_GAUSSIAN_STD_FRACTION`: maximum extents)",
+        )?;
+        let steps_rule = "it must lie in (0, 1e9] steps (`MAX_SPARSE_STEPS`)";
         if let Some(steps) = self.sparse_initial_steps {
-            positive("sparse_initial_steps", steps)?;
+            within("sparse_initial_steps", steps, MAX_SPARSE_STEPS, steps_rule)?;
         }
         if let Some(steps) = self.sparse_min_steps {
-            positive("sparse_min_steps", steps)?;
+            within("sparse_min_steps", steps, MAX_SPARSE_STEPS, steps_rule)?;
         }
         if !(self.sparse_factor > 0.0 && self.sparse_factor < 1.0) {
             return Err(BuildError::Parameter {

@@ -47,6 +47,7 @@
 //! | [`catalogue`], [`builtin`], [`Family`], [`Parameter`] | the families by name, with descriptions and default parameters |
 //! | [`problem_file`] | the TOML problem file format ([`Problem::from_toml_str`], [`Problem::from_file`], [`Problem::to_toml_string`]); [`humanise`] for TOML messages |
 //! | [`ProblemError`], [`ProblemFileError`], [`Endpoint`], [`Location`] | what is wrong, and where |
+//! | [`read_bounded`], [`BoundedReadError`], [`TEXT_INPUT_LIMIT`], [`excerpt`] | reading a user's file with a size limit, refusing devices and binary files; quoting input in errors briefly |
 //!
 //! Every family lives in `[-0.5, 0.5]^n` (add 0.5 for the paper's unit-cube coordinates), gives
 //! obstacles by centre and full side lengths, and uses PDT's validity rule: a state is valid iff
@@ -56,6 +57,7 @@
 
 #![forbid(unsafe_code)]
 
+mod bounded_read;
 mod catalogue;
 mod error;
 mod families;
@@ -65,6 +67,7 @@ pub mod problem_file;
 #[cfg(test)]
 mod test_support;
 
+pub use bounded_read::{BoundedReadError, TEXT_INPUT_LIMIT, excerpt, read_bounded};
 pub use catalogue::{Family, Parameter, builtin, catalogue};
 pub use error::{Endpoint, Location, ProblemError, ProblemFileError};
 pub use families::{

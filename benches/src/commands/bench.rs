@@ -337,7 +337,7 @@ impl BenchArgs {
         // Every finished run goes to the raw files before its worker starts the next one
         // (the database follows in batches): SIGTERM, SIGKILL or a crash lose at most the runs
         // in flight. Runs recorded by an earlier bench of this experiment are not rerun.
-        let journal = RunJournal::open(folder.path(), &instances)?;
+        let journal = RunJournal::open(folder.path(), &experiment, &instances)?;
         if journal.healed() > 0 {
             eprintln!(
                 "note: `{}` recorded {} runs a second time (two processes wrote the folder at \
@@ -522,37 +522,67 @@ pub(crate) fn first_instance(source: &ProblemSource) -> u64 {
     }
 }
 
-/// `--instances`: `K` (seeds 0..K, or a folder's first K problems) or `A-B` (inclusive).
+/// `--instances`: `K` (seeds 0..K, or a folder's first K problems) or `A-B` (inclusive); at
+/// most [`MAX_INSTANCES`](crate::definition::problem_spec::MAX_INSTANCES), and for a folder
+/// no more problems than it holds, each refused alike.
 fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, HarnessError> {
     let bad = || {
         HarnessError::Usage(format!(
-            "--instances `{text}`: give a count K or an inclusive range A-B (e.g. 1-100)"
+            "--instances `{}`: give a count K or an inclusive range A-B (e.g. 1-100)",
+            problems::excerpt(text, 40)
         ))
     };
     let number = |s: &str| s.trim().parse::<u64>().map_err(|_| bad());
-    let instances: Vec<u64> = match text.split_once('-') {
+    let too_many = |count: Option<u64>| {
+        crate::definition::problem_spec::check_instance_count(count).map_err(|message| {
+            HarnessError::Usage(format!(
+                "--instances `{}` {message}",
+                problems::excerpt(text, 40)
+            ))
+        })
+    };
+    let (first, count) = match text.split_once('-') {
         Some((a, b)) => {
             let (a, b) = (number(a)?, number(b)?);
             if a > b {
                 return Err(bad());
             }
-            (a..=b).collect()
+            (Some(a), (b - a).checked_add(1))
         }
         None => {
             let k = number(text)?;
             if k == 0 {
                 return Err(HarnessError::Usage("--instances must be at least 1".into()));
             }
-            match source {
-                ProblemSource::Mbm(folder) => folder
-                    .indices()
-                    .iter()
-                    .take(k as usize)
-                    .map(|&i| i as u64)
-                    .collect(),
-                _ => (0..k).collect(),
-            }
+            (None, Some(k))
         }
     };
-    Ok(instances)
+    if let ProblemSource::Mbm(folder) = source
+        && first.is_none()
+        && count.is_none_or(|k| k > folder.indices().len() as u64)
+    {
+        let indices = folder.indices();
+        return Err(HarnessError::Usage(format!(
+            "--instances `{}`: `{}` holds {} problems ({} to {}); give at most {} or a range \
+             of its indices",
+            problems::excerpt(text, 40),
+            folder.path().display(),
+            indices.len(),
+            indices.first().copied().unwrap_or(0),
+            indices.last().copied().unwrap_or(0),
+            indices.len()
+        )));
+    }
+    too_many(count)?;
+    let count = count.unwrap_or(0);
+    Ok(match (first, source) {
+        (Some(a), _) => (a..=a + (count - 1)).collect(),
+        (None, ProblemSource::Mbm(folder)) => folder
+            .indices()
+            .iter()
+            .take(count as usize)
+            .map(|&i| i as u64)
+            .collect(),
+        (None, _) => (0..count).collect(),
+    })
 }

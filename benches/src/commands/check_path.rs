@@ -21,10 +21,19 @@ pub struct CheckPathArgs {
     pub path: PathBuf,
     /// How far the path's ends may lie from the start and a goal, per coordinate (paths from
     /// planners that compute in `f32` differ in the last digits); ends that close are moved
-    /// onto the start and the goal before the checks.
-    #[arg(long, default_value_t = 1e-5)]
+    /// onto the start and the goal before the checks. At most 1e-3 (`MAX_TOLERANCE`): a
+    /// path whose ends lie farther from the query does not join it.
+    #[arg(long, default_value_t = 1e-5, allow_negative_numbers = true)]
     pub tolerance: f64,
 }
+
+/// The largest `--tolerance` accepted: 1e-3 per coordinate, a hundred times the `f32`
+/// rounding of a coordinate of size 10⁴ and far below any problem's features.
+pub(crate) const MAX_TOLERANCE: f64 = 1e-3;
+
+/// The largest path file read: 256 MiB (a million states of seven joints at full precision
+/// take about 140 MB).
+pub(crate) const PATH_FILE_LIMIT: u64 = 256 << 20;
 
 impl CheckPathArgs {
     /// Reads the paths, checks each on the problem's grid with its certification (as our
@@ -32,20 +41,34 @@ impl CheckPathArgs {
     /// continuously for arms), and prints one verdict per path.
     ///
     /// # Errors
-    /// An unknown problem, an unreadable path file, a line that is not numbers, a state of the
-    /// wrong dimension, a path of fewer than two states.
+    /// A tolerance outside `[0, MAX_TOLERANCE]`, an unknown problem, an unreadable path
+    /// file (a device, a folder, larger than `PATH_FILE_LIMIT`, not text), a line that is
+    /// not numbers, a coordinate that is not finite, a state of the wrong dimension, a path
+    /// of fewer than two states: each naming the line.
     pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+        if !(self.tolerance >= 0.0 && self.tolerance <= MAX_TOLERANCE) {
+            return Err(HarnessError::Usage(format!(
+                "--tolerance {}: it must lie in [0, {MAX_TOLERANCE:e}] (per coordinate); a \
+                 path whose ends lie farther from the start and the goal does not join them",
+                crate::budget::short_number(self.tolerance)
+            )));
+        }
         let instance = self.problem.build(1.0)?;
-        let text = std::fs::read_to_string(&self.path).map_err(|source| HarnessError::Io {
-            path: self.path.clone(),
-            source,
-        })?;
-        let mut paths = parse_paths(&text).map_err(|message| {
-            HarnessError::Usage(format!("{}: {message}", self.path.display()))
+        let text =
+            problems::read_bounded(&self.path, PATH_FILE_LIMIT, "path file").map_err(|source| {
+                HarnessError::InputFile {
+                    what: "path file",
+                    path: self.path.clone(),
+                    source,
+                }
+            })?;
+        let dimension = instance.problem.dimension();
+        let mut paths = parse_paths(&text, dimension).map_err(|message| {
+            HarnessError::Usage(format!("path file `{}`: {message}", self.path.display()))
         })?;
         if paths.is_empty() {
             return Err(HarnessError::Usage(format!(
-                "{}: no path in the file",
+                "path file `{}`: no path in the file",
                 self.path.display()
             )));
         }
@@ -56,9 +79,12 @@ impl CheckPathArgs {
             let verdict = instance
                 .problem
                 .check_path(path, self.tolerance)
-                .map_err(|source| HarnessError::Build {
-                    planner: format!("path {}", i + 1),
-                    source,
+                .map_err(|source| {
+                    HarnessError::Usage(format!(
+                        "path file `{}`, path {}: {source}",
+                        self.path.display(),
+                        i + 1
+                    ))
                 })?;
             let audit = instance.problem.validate(path, verdict.cost);
             let grid = match (verdict.valid, verdict.invalid_state, verdict.invalid_edge) {
@@ -103,29 +129,67 @@ impl CheckPathArgs {
     }
 }
 
-/// The paths of `text`: states one per line, paths separated by blank lines, `#` comments.
-fn parse_paths(text: &str) -> Result<Vec<Vec<Vec<f64>>>, String> {
+/// The paths of `text`: states one per line, paths separated by blank lines, `#` comments;
+/// each state of `dimension` finite coordinates, each path of at least two states. Errors
+/// name the line (and the coordinate).
+fn parse_paths(text: &str, dimension: usize) -> Result<Vec<Vec<Vec<f64>>>, String> {
     let mut paths = Vec::new();
     let mut current: Vec<Vec<f64>> = Vec::new();
+    let mut first_line = 0;
+    let mut close = |current: &mut Vec<Vec<f64>>, first: usize| {
+        if current.len() == 1 {
+            return Err(format!(
+                "line {first}: path {} has one state; a path needs at least two",
+                paths.len() + 1
+            ));
+        }
+        if !current.is_empty() {
+            paths.push(std::mem::take(current));
+        }
+        Ok(())
+    };
     for (number, line) in text.lines().enumerate() {
+        let number = number + 1;
         let line = line.split('#').next().unwrap_or("").trim();
         if line.is_empty() {
-            if !current.is_empty() {
-                paths.push(std::mem::take(&mut current));
-            }
+            close(&mut current, first_line)?;
             continue;
         }
-        let state = line
+        if current.is_empty() {
+            first_line = number;
+        }
+        let mut state = Vec::with_capacity(dimension);
+        for (k, token) in line
             .split(|c: char| c == ',' || c.is_whitespace())
             .filter(|t| !t.is_empty())
-            .map(str::parse::<f64>)
-            .collect::<Result<Vec<f64>, _>>()
-            .map_err(|e| format!("line {}: {e}", number + 1))?;
+            .enumerate()
+        {
+            let x = token.parse::<f64>().map_err(|_| {
+                format!(
+                    "line {number}, coordinate {}: `{}` is not a number",
+                    k + 1,
+                    problems::excerpt(token, 40)
+                )
+            })?;
+            if !x.is_finite() {
+                return Err(format!(
+                    "line {number}, coordinate {}: the coordinate is {}; a state's \
+                     coordinates must be finite numbers",
+                    k + 1,
+                    if x.is_nan() { "NaN" } else { "infinite" }
+                ));
+            }
+            state.push(x);
+        }
+        if state.len() != dimension {
+            return Err(format!(
+                "line {number} has {} coordinates; the problem's states have {dimension}",
+                state.len()
+            ));
+        }
         current.push(state);
     }
-    if !current.is_empty() {
-        paths.push(current);
-    }
+    close(&mut current, first_line)?;
     Ok(paths)
 }
 
@@ -136,9 +200,27 @@ mod tests {
     #[test]
     fn paths_are_read_with_comments_separators_and_blank_lines() {
         let text = "# two paths\n0 0\n1, 1 # end\n\n\n2 2\n3 3\n";
-        let paths = parse_paths(text).unwrap();
+        let paths = parse_paths(text, 2).unwrap();
         assert_eq!(paths.len(), 2);
         assert_eq!(paths[0], vec![vec![0.0, 0.0], vec![1.0, 1.0]]);
-        assert!(parse_paths("0 x\n").unwrap_err().contains("line 1"));
+        assert!(parse_paths("0 x\n", 2).unwrap_err().contains("line 1"));
+    }
+
+    #[test]
+    fn bad_states_name_their_line_and_coordinate() {
+        let e = parse_paths("0 0\n0 NaN\n", 2).unwrap_err();
+        assert!(
+            e.contains("line 2, coordinate 2") && e.contains("NaN"),
+            "{e}"
+        );
+        let e = parse_paths("0 0\ninf 0\n", 2).unwrap_err();
+        assert!(
+            e.contains("line 2, coordinate 1") && e.contains("infinite"),
+            "{e}"
+        );
+        let e = parse_paths("0 0\n0 0 0\n", 2).unwrap_err();
+        assert!(e.contains("line 2 has 3 coordinates"), "{e}");
+        let e = parse_paths("0 0\n1 1\n\n# one state\n2 2\n", 2).unwrap_err();
+        assert!(e.contains("line 5: path 2 has one state"), "{e}");
     }
 }

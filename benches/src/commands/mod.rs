@@ -93,6 +93,14 @@ pub enum Command {
     Spherise(SpheriseArgs),
 }
 
+impl Command {
+    /// `true` for the commands that poll the interrupt flag and write what they finished
+    /// when it is raised (`plan`, `bench`, `replan`); the others leave at the first signal.
+    pub fn polls_interrupt(&self) -> bool {
+        matches!(self, Self::Plan(_) | Self::Bench(_) | Self::Replan(_))
+    }
+}
+
 /// How a successful command ended, for the exit code.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CommandOutcome {
@@ -140,6 +148,9 @@ impl Cli {
     /// # Errors
     /// Whatever the command reports; input errors are found before any planning.
     pub fn run(&self, interrupt: Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
+        // Commands that poll no flag leave at the first signal: every command honours it.
+        let _leave_at_once = (!self.command.polls_interrupt())
+            .then(crate::execution::interrupt::NothingToSave::begin);
         match &self.command {
             Command::Plan(args) => args.run(&interrupt),
             Command::CheckPath(args) => args.run(),

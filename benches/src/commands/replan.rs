@@ -42,7 +42,7 @@ pub struct ReplanArgs {
     #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
     pub cycle: f64,
     /// Plan for this many planner iterations instead of one cycle of wall clock
-    /// (deterministic; the simulated clock still charges a cycle per plan).
+    /// (deterministic; the simulated clock still charges a cycle per plan); at most 10⁶.
     #[arg(long)]
     pub iterations: Option<u64>,
     /// Seconds after a plan is taken up over which planners see the moving obstacles' sweep

@@ -57,14 +57,16 @@ impl Experiment {
     /// [`HarnessError::ExperimentField`] naming a malformed field.
     pub fn from_file(path: &Path) -> Result<Self, HarnessError> {
         // Not a file the user can give is an input error (exit code 2), not an I/O failure.
-        let text = std::fs::read_to_string(path).map_err(|e| HarnessError::ExperimentFile {
-            file: path.display().to_string(),
-            message: if path.is_dir() {
-                "is a folder, not an experiment file".into()
-            } else {
-                format!("cannot be read: {e}")
-            },
-        })?;
+        // Bounded: `/dev/zero` or a 20 GB file is refused before it is read.
+        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "experiment file")
+            .map_err(|e| HarnessError::ExperimentFile {
+                file: path.display().to_string(),
+                message: if path.is_dir() {
+                    "is a folder, not an experiment file".into()
+                } else {
+                    format!("cannot be read: {e}")
+                },
+            })?;
         let origin = path.display().to_string();
         let stem = path
             .file_stem()
@@ -139,6 +141,31 @@ impl Experiment {
         }
         if self.runs == 0 {
             return Err(bad("runs", "is 0; it must be at least 1".into()));
+        }
+        // Refuse a schedule no campaign needs before building an instance or a job: a
+        // million instances took gigabytes before the first run.
+        for (i, p) in self.problems.iter().enumerate() {
+            crate::definition::problem_spec::check_instance_count(Some(p.instances.len() as u64))
+                .map_err(|message| bad(&format!("problems[{i}].instances"), message))?;
+        }
+        let instances: u128 = self
+            .problems
+            .iter()
+            .map(|p| p.dimensions.len() as u128 * p.instances.len() as u128)
+            .sum();
+        let scheduled = instances * self.planners.len() as u128 * self.runs as u128;
+        let cap = crate::definition::problem_spec::MAX_SCHEDULED_RUNS;
+        if scheduled > u128::from(cap) {
+            return Err(bad(
+                "runs",
+                format!(
+                    "schedules {scheduled} runs ({} planners × {instances} instances × {} runs); \
+                     an experiment may schedule at most {cap} (`MAX_SCHEDULED_RUNS`): split it \
+                     (several experiments, or fewer runs)",
+                    self.planners.len(),
+                    self.runs
+                ),
+            ));
         }
         // Every run's record is kept until the results are written: refuse, before allocating
         // the schedule, what could not fit (`runs = 1e12` aborted on allocation).

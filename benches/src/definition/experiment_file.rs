@@ -46,7 +46,7 @@ use crate::definition::experiment::Experiment;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
 use crate::definition::problem_source::ProblemSource;
-use crate::definition::problem_spec::ProblemSpec;
+use crate::definition::problem_spec::{ProblemSpec, check_instance_count};
 use crate::definition::robot_choice::RobotChoice;
 use crate::error::HarnessError;
 
@@ -194,7 +194,7 @@ impl ExperimentFile {
     pub fn parse(text: &str, origin: &str) -> Result<Self, HarnessError> {
         toml::from_str(text).map_err(|e| HarnessError::ExperimentFile {
             file: origin.to_owned(),
-            message: problems::humanise(e.to_string().trim_end()),
+            message: crate::error::clip_lines(&problems::humanise(e.to_string().trim_end())),
         })
     }
 
@@ -364,14 +364,22 @@ fn problem_spec(
                 HarnessError::Usage("must be at least 1".into()),
             ));
         }
-        (Some(k), None) => (0..k).collect(),
+        (Some(k), None) => {
+            check_instance_count(Some(k))
+                .map_err(|message| bad(".instances", HarnessError::Usage(message)))?;
+            (0..k).collect()
+        }
         (None, Some(seeds)) if seeds.is_empty() => {
             return Err(bad(
                 ".instance_seeds",
                 HarnessError::Usage("is empty".into()),
             ));
         }
-        (None, Some(seeds)) => seeds,
+        (None, Some(seeds)) => {
+            check_instance_count(Some(seeds.len() as u64))
+                .map_err(|message| bad(".instance_seeds", HarnessError::Usage(message)))?;
+            seeds
+        }
         (None, None) => vec![0],
     };
     if instances.len() > 1 && !source.is_seeded() {

@@ -4,6 +4,29 @@ use crate::definition::problem_instance::ProblemInstance;
 use crate::definition::problem_source::ProblemSource;
 use crate::error::HarnessError;
 
+/// The most instances (layout seeds or folder problems) one problem entry may ask for:
+/// 10 000. Every instance is built before the first run (a box world is a few kilobytes, an
+/// arm problem more), so a million would take gigabytes; split larger sets over several
+/// experiments.
+pub const MAX_INSTANCES: u64 = 10_000;
+
+/// The most runs one experiment may schedule (planners × instances × runs, over every
+/// problem and dimension): 10⁷. Each run's record is kept until the summaries are written.
+pub const MAX_SCHEDULED_RUNS: u64 = 10_000_000;
+
+/// Refuses more than [`MAX_INSTANCES`] instances in one problem entry: the message says how
+/// many were asked (`count`, `None` for more than `u64` holds).
+pub(crate) fn check_instance_count(count: Option<u64>) -> Result<(), String> {
+    match count {
+        Some(n) if n <= MAX_INSTANCES => Ok(()),
+        _ => Err(format!(
+            "asks for {} instances; at most {MAX_INSTANCES} per problem (every instance is \
+             built before the first run): split the seeds over several experiments",
+            count.map_or_else(|| "more than 2^64".to_owned(), |n| n.to_string())
+        )),
+    }
+}
+
 /// A problem entry of an experiment: a source, the dimensions to run it in with one time
 /// budget per dimension, the layout seeds (seeded families), and optionally another
 /// collision-check resolution.

@@ -57,6 +57,10 @@ impl Interrupt {
                         eprintln!("\n{name} while reading the inputs: leaving at once (nothing was run)");
                         std::process::exit(128 + received);
                     }
+                    if NothingToSave::active() {
+                        eprintln!("\n{name}: leaving at once (this command writes nothing to keep)");
+                        std::process::exit(128 + received);
+                    }
                     if first {
                         eprintln!(
                             "\n{name}: finishing, then writing every finished run (send it again to leave at once)"
@@ -153,6 +157,36 @@ impl<'a> ReadingInputs<'a> {
 impl Drop for ReadingInputs<'_> {
     fn drop(&mut self) {
         READING_INPUTS.fetch_sub(1, Ordering::SeqCst);
+    }
+}
+
+/// How many [`NothingToSave`] guards are alive in the process.
+static NOTHING_TO_SAVE: AtomicUsize = AtomicUsize::new(0);
+
+/// A command that polls no flag and has nothing to write when stopped (`check-path`,
+/// `check-state`, the listings, `compare`, `merge`, `spherise`): while a guard lives, the
+/// first SIGINT or SIGTERM makes the process leave at once (128 + signal), as a second one
+/// does for every command.
+#[derive(Debug)]
+#[must_use = "the command's phase ends when the guard is dropped"]
+pub(crate) struct NothingToSave(());
+
+impl NothingToSave {
+    /// Begins the phase.
+    pub(crate) fn begin() -> Self {
+        NOTHING_TO_SAVE.fetch_add(1, Ordering::SeqCst);
+        Self(())
+    }
+
+    /// `true` while some guard of the process is alive.
+    fn active() -> bool {
+        NOTHING_TO_SAVE.load(Ordering::SeqCst) > 0
+    }
+}
+
+impl Drop for NothingToSave {
+    fn drop(&mut self) {
+        NOTHING_TO_SAVE.fetch_sub(1, Ordering::SeqCst);
     }
 }
 

@@ -102,7 +102,7 @@ impl ResultsFolder {
         plots: bool,
     ) -> Result<Vec<PathBuf>, HarnessError> {
         self.claim(&results.experiment)?;
-        let mut journal = RunJournal::open(&self.path, &results.instances)?;
+        let mut journal = RunJournal::open(&self.path, &results.experiment, &results.instances)?;
         for (index, runs) in results.runs.iter().enumerate() {
             for record in runs {
                 if !journal.recorded().contains(&record.key()) {
@@ -180,10 +180,11 @@ impl ResultsFolder {
                     .to_owned();
                 Err(HarnessError::Usage(format!(
                     "`{}` holds the results of experiment `{other}` (see its experiment.toml), \
-                     not those of `{}` as defined now; write to another --output folder \
+                     not those of `{}` as defined now ({}); write to another --output folder \
                      (a folder is resumed only by the same experiment)",
                     self.path.display(),
-                    experiment.name
+                    experiment.name,
+                    differences(&existing, &text)
                 )))
             }
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
@@ -400,6 +401,54 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
         table.full_markdown()
     );
     s
+}
+
+/// What differs between the folder's `experiment.toml` (`existing`) and the experiment as
+/// defined now (`now`), line by line: `runs = 10 in the folder, runs = 20 now`; at most three
+/// differences, each line cut short.
+fn differences(existing: &str, now: &str) -> String {
+    let (old, new): (Vec<&str>, Vec<&str>) = (existing.lines().collect(), now.lines().collect());
+    let only_old: Vec<&str> = old.iter().filter(|l| !new.contains(l)).copied().collect();
+    let only_new: Vec<&str> = new.iter().filter(|l| !old.contains(l)).copied().collect();
+    fn key(line: &str) -> Option<&str> {
+        line.split_once(" = ").map(|(k, _)| k.trim())
+    }
+    fn quote(line: &str) -> String {
+        format!("`{}`", problems::excerpt(line.trim(), 100))
+    }
+    let mut said = Vec::new();
+    let mut used = vec![false; only_new.len()];
+    for &line in &only_old {
+        let partner = (0..only_new.len())
+            .find(|&i| !used[i] && key(only_new[i]).is_some() && key(only_new[i]) == key(line));
+        match partner {
+            Some(i) => {
+                used[i] = true;
+                said.push(format!(
+                    "{} in the folder, {} now",
+                    quote(line),
+                    quote(only_new[i])
+                ));
+            }
+            None => said.push(format!("{} in the folder only", quote(line))),
+        }
+    }
+    for (i, &line) in only_new.iter().enumerate() {
+        if !used[i] {
+            said.push(format!("{} now only", quote(line)));
+        }
+    }
+    let total = said.len();
+    if total == 0 {
+        return "the same lines in another order".to_owned();
+    }
+    said.truncate(3);
+    let more = if total > 3 {
+        format!(" and {} more differences", total - 3)
+    } else {
+        String::new()
+    };
+    format!("differs: {}{more}", said.join("; "))
 }
 
 #[cfg(test)]

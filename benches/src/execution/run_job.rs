@@ -49,7 +49,7 @@ pub struct RunJob {
 }
 
 /// Stops a run when the experiment is interrupted (Ctrl-C).
-struct Interrupted<'a>(&'a AtomicBool);
+pub(crate) struct Interrupted<'a>(pub(crate) &'a AtomicBool);
 
 impl Termination for Interrupted<'_> {
     fn should_terminate(&self, _: &Progress) -> bool {

@@ -81,6 +81,22 @@ pub struct RunJournal {
     _lock: FolderLock,
 }
 
+/// The error for a line of `runs.jsonl` that records a run outside the experiment: its
+/// `what` (instance, planner, run index) is not the experiment's.
+fn foreign(path: &Path, entry: &JournalLine, what: &str) -> HarnessError {
+    let r = &entry.record;
+    HarnessError::Usage(format!(
+        "`{}` line {}: run {} of planner `{}` on `{}` is not a run of this experiment (its \
+         {what} is not the experiment's): the folder holds runs of another experiment or was \
+         edited by hand; remove the line or write to another --output folder",
+        path.display(),
+        entry.line,
+        r.run,
+        problems::excerpt(&r.planner, 80),
+        problems::excerpt(&r.instance, 80),
+    ))
+}
+
 impl RunJournal {
     /// Opens (creating if needed) the raw files and the database of `folder` for appending,
     /// for an experiment with `instances`; takes the folder's write lock; repairs an append a
@@ -90,8 +106,14 @@ impl RunJournal {
     /// [`HarnessError::FolderLocked`] if another process writes the folder;
     /// [`HarnessError::Io`] or [`HarnessError::Database`] if the files cannot be opened or
     /// repaired; [`HarnessError::Serialise`] for a malformed line of `runs.jsonl`;
-    /// [`HarnessError::Usage`] for files this experiment cannot continue (see the type).
-    pub fn open(folder: &Path, instances: &[ProblemInstance]) -> Result<Self, HarnessError> {
+    /// [`HarnessError::Usage`] for files this experiment cannot continue (see the type),
+    /// and for a line of `runs.jsonl` recording a run outside `experiment` (an instance, a
+    /// planner or a run index it does not have), naming the line.
+    pub fn open(
+        folder: &Path,
+        experiment: &crate::Experiment,
+        instances: &[ProblemInstance],
+    ) -> Result<Self, HarnessError> {
         let lock = FolderLock::exclusive(folder)?;
         let jsonl_path = folder.join("runs.jsonl");
         let csv_path = folder.join("runs.csv");
@@ -114,7 +136,21 @@ impl RunJournal {
             })
         };
         for entry in &entries {
-            instance_of(&entry.record)?;
+            instance_of(&entry.record).map_err(|_| foreign(&jsonl_path, entry, "instance"))?;
+            if !experiment
+                .planners
+                .iter()
+                .any(|p| p.name() == entry.record.planner)
+            {
+                return Err(foreign(&jsonl_path, entry, "planner"));
+            }
+            if entry.record.run >= experiment.runs {
+                return Err(foreign(
+                    &jsonl_path,
+                    entry,
+                    &format!("run index (runs 0 to {})", experiment.runs - 1),
+                ));
+            }
         }
         let recorded: HashSet<RunKey> = entries.iter().map(|e| e.record.key()).collect();
         let csv_runs = raw_runs::csv_runs(&csv_path)?;
@@ -499,7 +535,7 @@ mod tests {
         results: &ExperimentResults,
         interval: Duration,
     ) -> RunJournal {
-        RunJournal::open(folder, &results.instances)
+        RunJournal::open(folder, &results.experiment, &results.instances)
             .unwrap()
             .commit_every(interval)
     }
@@ -612,7 +648,8 @@ mod tests {
     #[test]
     fn a_cut_short_append_is_repaired() {
         let (folder, results) = setup("repair");
-        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        let mut journal =
+            RunJournal::open(&folder, &results.experiment, &results.instances).unwrap();
         for run in 0..2 {
             journal
                 .append(&results, 0, &record(&results, 0, run))
@@ -629,7 +666,7 @@ mod tests {
         let rows = lines(&csv);
         std::fs::write(&csv, format!("{}\n{}\n", rows[0], rows[1])).unwrap();
 
-        let journal = RunJournal::open(&folder, &results.instances).unwrap();
+        let journal = RunJournal::open(&folder, &results.experiment, &results.instances).unwrap();
         assert_eq!(journal.recorded().len(), 2);
         drop(journal);
         assert_eq!(std::fs::read_to_string(&jsonl).unwrap(), text);
@@ -641,7 +678,7 @@ mod tests {
     fn files_that_cannot_be_continued_are_refused() {
         let (folder, results) = setup("refuse");
         std::fs::write(folder.join("runs.csv"), "instance,other\n").unwrap();
-        let message = RunJournal::open(&folder, &results.instances)
+        let message = RunJournal::open(&folder, &results.experiment, &results.instances)
             .unwrap_err()
             .to_string();
         assert!(message.contains("other columns"), "{message}");
@@ -654,7 +691,7 @@ mod tests {
             .insert(&BenchmarkLog::from_results(&one, 0))
             .unwrap();
         drop(database);
-        let message = RunJournal::open(&folder, &results.instances)
+        let message = RunJournal::open(&folder, &results.experiment, &results.instances)
             .unwrap_err()
             .to_string();
         assert!(message.contains("holds 1 runs"), "{message}");
@@ -685,7 +722,8 @@ mod tests {
         drop(db);
         assert_eq!(runs_in_database(&folder).1, 3);
 
-        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        let mut journal =
+            RunJournal::open(&folder, &results.experiment, &results.instances).unwrap();
         assert_eq!((journal.recorded().len(), journal.healed()), (2, 1));
         assert_eq!(
             std::fs::read_to_string(&jsonl).unwrap(),
@@ -704,7 +742,7 @@ mod tests {
         drop(journal);
         assert_eq!(lines(&jsonl).len(), 3);
         assert_eq!(lines(&csv).len(), 4);
-        let journal = RunJournal::open(&folder, &results.instances).unwrap();
+        let journal = RunJournal::open(&folder, &results.experiment, &results.instances).unwrap();
         assert_eq!((journal.recorded().len(), journal.healed()), (3, 0));
         drop(journal);
 
@@ -724,7 +762,8 @@ mod tests {
     #[test]
     fn a_csv_with_runs_the_journal_lacks_is_refused() {
         let (folder, results) = setup("extra");
-        let mut journal = RunJournal::open(&folder, &results.instances).unwrap();
+        let mut journal =
+            RunJournal::open(&folder, &results.experiment, &results.instances).unwrap();
         for run in 0..2 {
             journal
                 .append(&results, 0, &record(&results, 0, run))
@@ -734,7 +773,7 @@ mod tests {
         let jsonl = folder.join("runs.jsonl");
         let text = std::fs::read_to_string(&jsonl).unwrap();
         std::fs::write(&jsonl, format!("{}\n", text.lines().next().unwrap())).unwrap();
-        let message = RunJournal::open(&folder, &results.instances)
+        let message = RunJournal::open(&folder, &results.experiment, &results.instances)
             .unwrap_err()
             .to_string();
         assert!(

@@ -146,7 +146,7 @@ pub fn merge_parts(
         .enumerate()
         .map(|(i, instance)| (instance.id.as_str(), i))
         .collect();
-    let mut journal = RunJournal::open(output, &instances)?;
+    let mut journal = RunJournal::open(output, &experiment, &instances)?;
     let mut total_time = 0.0;
     for (record, concurrency, _) in slots.iter().flatten() {
         total_time += record.run_time;

@@ -50,7 +50,7 @@ mod trial_record;
 pub use motion_judge::{MotionJudge, path_is_clear};
 pub use replanning_experiment::{REPLANNING_PLANNERS, ReplanningExperiment, TRIAL_SEED_STRIDE};
 pub use replanning_scene::{ReplanningScene, ReplanningSetup, hand_position};
-pub use rules::{PANDA_VELOCITY_LIMITS, PlanningBudget, ReplanningRules};
+pub use rules::{MAX_PLAN_ITERATIONS, PANDA_VELOCITY_LIMITS, PlanningBudget, ReplanningRules};
 pub use summary::{ReplanningSummary, SummaryRow, write_trials_csv};
 pub use timed_path::{Piece, TimedPath};
 pub use trial::Trial;

@@ -85,7 +85,7 @@ impl ReplanningExperiment {
                 .clone()
                 .checked(setup.robot.joint_space().joints().len())?;
             for planner in &self.planners {
-                let trial = Trial::new(&setup, planner, &rules);
+                let trial = Trial::new(&setup, planner, &rules).interrupted_by(interrupt);
                 for k in 1..=self.trials {
                     if interrupt.load(Ordering::SeqCst) {
                         return Ok(records);
@@ -94,6 +94,10 @@ impl ReplanningExperiment {
                         .seed
                         .wrapping_add((k as u64 - 1).wrapping_mul(TRIAL_SEED_STRIDE));
                     let record = trial.run(k, seed)?;
+                    if interrupt.load(Ordering::SeqCst) {
+                        // Cut short: its plans were stopped, its record is not a trial's.
+                        return Ok(records);
+                    }
                     done(&record);
                     records.push(record);
                 }

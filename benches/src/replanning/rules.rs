@@ -7,6 +7,10 @@ use crate::error::HarnessError;
 /// (`robot/data/panda/panda_spherized.urdf`, VAMP's model: joints 1–4 2.3925, 5–7 2.8710).
 pub const PANDA_VELOCITY_LIMITS: [f64; 7] = [2.3925, 2.3925, 2.3925, 2.3925, 2.871, 2.871, 2.871];
 
+/// The most iterations one plan may be given (`replan --iterations`): 10⁶, hundreds of
+/// times what a plan of one 0.1 s cycle runs.
+pub const MAX_PLAN_ITERATIONS: u64 = 1_000_000;
+
 /// How much a planner may compute for one plan.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PlanningBudget {
@@ -99,6 +103,15 @@ impl ReplanningRules {
                 .map_err(|e| fail("planning budget", e.to_string()))?,
             PlanningBudget::Iterations(0) => {
                 return Err(fail("planning budget", "is 0 iterations".to_owned()));
+            }
+            PlanningBudget::Iterations(n) if n > MAX_PLAN_ITERATIONS => {
+                return Err(fail(
+                    "planning budget",
+                    format!(
+                        "is {n} iterations; at most {MAX_PLAN_ITERATIONS} per plan \
+                         (`MAX_PLAN_ITERATIONS`: a plan of a cycle takes a few thousand)"
+                    ),
+                ));
             }
             PlanningBudget::Iterations(_) => {}
         }

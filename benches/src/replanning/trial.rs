@@ -1,13 +1,15 @@
 //! [`Trial`]: one re-planning trial — plan, monitor, execute and judge on a simulated clock
 //! until the legs are done, the arm touches an obstacle, or time runs out.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-use mit_star::{IterationLimit, Planner, TimeLimit};
+use mit_star::{IterationLimit, Planner, TerminationExt as _, TimeLimit};
 use robot::{ArmProblem, Scene};
 
 use crate::definition::planner_spec::PlannerSpec;
 use crate::error::HarnessError;
+use crate::execution::run_job::Interrupted;
 use crate::replanning::motion_judge::{MotionJudge, path_is_clear};
 use crate::replanning::replanning_scene::ReplanningSetup;
 use crate::replanning::rules::{PlanningBudget, ReplanningRules};
@@ -48,7 +50,11 @@ pub struct Trial<'a> {
     setup: &'a ReplanningSetup,
     planner: &'a PlannerSpec,
     rules: &'a ReplanningRules,
+    interrupt: &'a AtomicBool,
 }
+
+/// The flag of a trial nobody interrupts.
+static NEVER: AtomicBool = AtomicBool::new(false);
 
 impl<'a> Trial<'a> {
     /// A trial of `planner` in `setup` under `rules` (checked by the caller).
@@ -61,7 +67,15 @@ impl<'a> Trial<'a> {
             setup,
             planner,
             rules,
+            interrupt: &NEVER,
         }
+    }
+
+    /// The trial stopping its plans, and itself, when `interrupt` is raised (SIGINT or
+    /// SIGTERM): the record of a trial interrupted is incomplete, and its caller drops it.
+    pub fn interrupted_by(mut self, interrupt: &'a AtomicBool) -> Self {
+        self.interrupt = interrupt;
+        self
     }
 
     /// Runs trial number `trial` with plans seeded `seed`, `seed + 1`, ….
@@ -99,7 +113,7 @@ impl<'a> Trial<'a> {
         let (mut t, mut q) = (0.0, setup.start.clone());
         let mut path: Option<TimedPath> = None;
         record.end = loop {
-            if t >= rules.time_limit - TIME_SLACK {
+            if t >= rules.time_limit - TIME_SLACK || self.interrupt.load(Ordering::SeqCst) {
                 break TrialEnd::Timeout;
             }
             let next = t + cycle;
@@ -255,9 +269,11 @@ impl<'a> Trial<'a> {
                         source,
                     }
                 })?;
-                planner.solve(&TimeLimit::until(started + budget))
+                planner.solve(&TimeLimit::until(started + budget).or(Interrupted(self.interrupt)))
             }
-            PlanningBudget::Iterations(n) => planner.solve(&IterationLimit::new(n)),
+            PlanningBudget::Iterations(n) => {
+                planner.solve(&IterationLimit::new(n).or(Interrupted(self.interrupt)))
+            }
         }
         .map_err(|source| HarnessError::Planning {
             planner: planner_name,

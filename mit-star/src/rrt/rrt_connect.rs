@@ -499,6 +499,7 @@ where
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
         let stop = SolveStop::new(termination);
         self.setup();
+        self.core.record_if_start_is_a_goal(&stop);
         let mut iterations = 0;
         while self.core.solution.is_none() {
             stop.update(iterations, self.best_cost());

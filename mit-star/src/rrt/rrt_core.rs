@@ -195,6 +195,27 @@ where
         );
     }
 
+    /// Records the trivial path `(start, goal)` of cost 0 if the start is one of the goals
+    /// (at distance 0 from it) and nothing cheaper is known; `true` if the best solution is
+    /// then that trivial one — nothing can improve on it, and no tree need grow.
+    pub(crate) fn record_if_start_is_a_goal(&mut self, stop: &SolveStop<'_>) -> bool {
+        if self.best_cost() <= 0.0 {
+            return true;
+        }
+        let Some(goal) = self
+            .goals
+            .iter()
+            .position(|g| self.space.distance(&self.start, g) == 0.0)
+        else {
+            return false;
+        };
+        let mut path = States::new(self.space.dimension());
+        path.push(&self.start);
+        path.push(&self.goals[goal]);
+        self.record(path, stop);
+        true
+    }
+
     /// Takes `solution`, offered from outside ([`Planner::offer_solution`](crate::Planner)), as
     /// the best one if it is valid (checked and certified as the planner's edges) and cheaper,
     /// with a trace point at the planning time so far.

@@ -168,10 +168,13 @@ impl Problem {
     /// [`from_toml_str`](Self::from_toml_str).
     pub fn from_file(path: impl AsRef<Path>) -> Result<Self, ProblemFileError> {
         let path = path.as_ref();
-        let text = std::fs::read_to_string(path).map_err(|source| ProblemFileError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text =
+            crate::read_bounded(path, crate::TEXT_INPUT_LIMIT, "problem file").map_err(|e| {
+                ProblemFileError::Io {
+                    path: path.to_path_buf(),
+                    source: e.into(),
+                }
+            })?;
         Self::from_toml_str(&text)
     }
 }
@@ -182,7 +185,7 @@ fn syntax_error(text: &str, error: &toml::de::Error) -> ProblemFileError {
         location: error
             .span()
             .map(|span| Location::of_offset(text, span.start)),
-        message: error.message().to_owned(),
+        message: crate::excerpt(error.message(), 200),
     }
 }
 
@@ -193,11 +196,12 @@ fn schema_error(text: &str, error: &toml::de::Error) -> ProblemFileError {
     let location = span
         .as_ref()
         .map(|span| Location::of_offset(text, span.start));
-    let mut message = humanise(error.message());
+    // The message may quote the input (a 200 KB string): a short excerpt of it.
+    let mut message = crate::excerpt(&humanise(error.message()), 200);
     if let Some(location) = location
         && let Some(line) = text.lines().nth(location.line - 1)
     {
-        message.push_str(&format!(", in `{}`", line.trim()));
+        message.push_str(&format!(", in `{}`", crate::excerpt(line.trim(), 120)));
     }
     ProblemFileError::Schema { location, message }
 }

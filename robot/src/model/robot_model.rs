@@ -101,18 +101,12 @@ impl RobotModel {
     /// # Errors
     /// [`ModelError::Io`] if it cannot be read, else as [`from_urdf_str`](Self::from_urdf_str).
     pub fn from_urdf_file(path: &Path) -> Result<Self, ModelError> {
-        use std::io::Read;
-        let io = |source| ModelError::Io {
-            path: path.to_path_buf(),
-            source,
-        };
-        let limit = Self::MAX_URDF_BYTES as u64;
-        let mut text = String::new();
-        std::fs::File::open(path)
-            .map_err(io)?
-            .take(limit + 1)
-            .read_to_string(&mut text)
-            .map_err(io)?;
+        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "URDF")
+            .map_err(std::io::Error::from)
+            .map_err(|source| ModelError::Io {
+                path: path.to_path_buf(),
+                source,
+            })?;
         Self::parse(&text, &path.display().to_string())
     }
 

@@ -87,10 +87,12 @@ struct JointConstraint {
 fn read_request(folder: &Path, index: usize) -> Result<(PathBuf, String, String), SceneError> {
     let request = folder.join(format!("request{index:04}.yaml"));
     let origin = request.display().to_string();
-    let text = std::fs::read_to_string(&request).map_err(|source| SceneError::Io {
-        path: request.clone(),
-        source,
-    })?;
+    let text = problems::read_bounded(&request, problems::TEXT_INPUT_LIMIT, "request")
+        .map_err(std::io::Error::from)
+        .map_err(|source| SceneError::Io {
+            path: request.clone(),
+            source,
+        })?;
     Ok((request, origin, text))
 }
 

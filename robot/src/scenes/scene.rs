@@ -170,10 +170,12 @@ impl Scene {
     /// # Errors
     /// [`SceneError::Io`] if it cannot be read, else as [`from_yaml_str`](Self::from_yaml_str).
     pub fn from_yaml_file(path: &Path) -> Result<Self, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "scene file")
+            .map_err(std::io::Error::from)
+            .map_err(|source| SceneError::Io {
+                path: path.to_path_buf(),
+                source,
+            })?;
         Self::from_yaml_str(&text, &path.display().to_string())
     }
 

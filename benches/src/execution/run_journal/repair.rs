@@ -17,6 +17,8 @@ pub(super) struct JournalLine {
     pub(super) record: RunRecord,
     pub(super) concurrency: usize,
     pub(super) text: String,
+    /// Its line number in the file (from 1).
+    pub(super) line: usize,
 }
 
 /// The `HarnessError::Io` of `path`.
@@ -93,6 +95,7 @@ pub(super) fn read_lines(
                 record,
                 concurrency,
                 text,
+                line: number + 1,
             }),
             Err(_) if skip_cut_last && number + 1 == count => {}
             Err(e) => {

@@ -339,6 +339,9 @@ where
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
         let stop = SolveStop::new(termination);
         self.connect.setup();
+        if self.connect.core.record_if_start_is_a_goal(&stop) {
+            return Ok(self.connect.core.finish(&stop));
+        }
         let mut iterations = 0;
         loop {
             stop.update(iterations, self.best_cost());

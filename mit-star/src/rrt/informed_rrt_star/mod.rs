@@ -177,6 +177,9 @@ where
 
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
         let stop = SolveStop::new(termination);
+        if self.core.record_if_start_is_a_goal(&stop) {
+            return Ok(self.core.finish(&stop));
+        }
         let mut iterations = 0;
         loop {
             stop.update(iterations, self.best_cost());
