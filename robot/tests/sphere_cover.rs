@@ -367,6 +367,7 @@ fn spherised_ur5(fallback: bool) -> Result<SpherisedUrdf, SpheriseError> {
         package_roots: vec![ur5_folder()],
         fallback: fallback
             .then(|| std::fs::read_to_string(ur5_folder().join("ur5_spherized.urdf")).unwrap()),
+        ..SpheriseOptions::default()
     };
     SpherisedUrdf::from_file(&ur5_folder().join("meshes/ur5.urdf"), &options)
 }
@@ -438,7 +439,7 @@ fn the_mesh_ur5_spherises_into_a_loadable_model_with_the_gripper_kept() {
 
 #[test]
 fn missing_meshes_and_unknown_packages_are_named() {
-    let Err(SpheriseError::MissingMeshes { missing }) = spherised_ur5(false) else {
+    let Err(SpheriseError::MissingMeshes { missing, .. }) = spherised_ur5(false) else {
         panic!("the gripper's meshes are not shipped")
     };
     assert!(

@@ -163,7 +163,7 @@ impl Cli {
             Command::Robots => listings::print_robots(),
             Command::Experiments(args) => args.run(),
             Command::Replan(args) => args.run(&interrupt),
-            Command::Spherise(args) => args.run(),
+            Command::Spherise(args) => args.run(&interrupt),
         }
     }
 }

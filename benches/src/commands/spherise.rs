@@ -1,6 +1,8 @@
 //! `mit-star spherise`: a sphere model from a URDF's collision meshes.
 
 use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
 use clap::Args;
 
@@ -10,22 +12,31 @@ use crate::error::HarnessError;
 /// Options of `mit-star spherise`.
 #[derive(Debug, Args)]
 pub struct SpheriseArgs {
-    /// The URDF whose collision meshes (STL), boxes and cylinders are covered by spheres
-    /// (its sphere elements are kept).
+    /// The URDF whose collision meshes (STL, OBJ, COLLADA .dae), boxes and cylinders are
+    /// covered by spheres (its sphere elements are kept).
     pub urdf: PathBuf,
     /// Where `package://PKG/path` names are looked up, as `DIR/PKG/path` or `DIR/path`
     /// (repeatable).
     #[arg(long = "package-root", value_name = "DIR")]
     pub package_roots: Vec<PathBuf>,
-    /// How far, at most, a sphere may reach beyond the mesh's solid, in metres.
+    /// How far, at most, a sphere may reach beyond the mesh's solid, in metres (a tolerance
+    /// so fine for a mesh's size that its grid would exceed 4 000 000 cells is refused before
+    /// any work).
     #[arg(long, default_value_t = 0.01)]
     pub tolerance: f64,
-    /// The most spheres per collision element: with more, the tolerance is raised by a
-    /// quarter at a time until the cover fits.
-    #[arg(long)]
+    /// The most spheres in the whole model: the tolerance (the same for every link) is
+    /// raised from --tolerance until the covers fit. Every mesh stays inside its spheres;
+    /// what the budget costs is how far they reach beyond it (the table's bound and
+    /// measured columns).
+    #[arg(long, value_name = "N")]
     pub max_spheres: Option<usize>,
-    /// A spherised URDF whose spheres are copied for links whose mesh files are missing
-    /// (without it, a missing mesh is an error naming every missing file).
+    /// The most spheres per collision element (mesh, box or cylinder): an element needing
+    /// more is covered again with its tolerance raised by a quarter at a time.
+    #[arg(long, value_name = "N")]
+    pub max_mesh_spheres: Option<usize>,
+    /// A spherised URDF whose spheres are copied for links whose mesh files are missing or
+    /// unreadable (Git LFS pointers, corrupt files, unsupported formats), with a warning
+    /// naming each file (without it, such meshes are an error naming every one).
     #[arg(long, value_name = "URDF")]
     pub fallback: Option<PathBuf>,
     /// Where to write the spherised URDF.
@@ -37,11 +48,15 @@ impl SpheriseArgs {
     /// Covers every link's collision geometry, writes the URDF with spheres, checks that it
     /// loads as a robot model, and prints the table per link.
     ///
+    /// The first SIGINT or SIGTERM (`interrupt` raised) stops the covers within a few
+    /// seconds: nothing is written and the command ends as interrupted.
+    ///
     /// # Errors
-    /// An unreadable URDF, mesh or fallback, a `package://` name without a root, missing
-    /// meshes without a fallback, a bad tolerance or budget, an unwritable output, or an
-    /// output that does not load as a sphere model.
-    pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+    /// An unreadable URDF or fallback, a `package://` name without a root, missing or
+    /// unreadable meshes without fallback spheres, a bad tolerance or budget, a tolerance too
+    /// fine (or a mesh too large) for the work cap, an unwritable output, or an output that
+    /// does not load as a sphere model.
+    pub fn run(&self, interrupt: &Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
         self.check_output()?;
         let fallback =
             match &self.fallback {
@@ -56,12 +71,17 @@ impl SpheriseArgs {
         let options = robot::SpheriseOptions {
             cover: robot::CoverOptions {
                 tolerance: self.tolerance,
-                max_spheres: self.max_spheres,
+                max_spheres: self.max_mesh_spheres,
             },
             package_roots: self.package_roots.clone(),
             fallback,
+            max_spheres: self.max_spheres,
+            stop: Some(Arc::clone(interrupt)),
         };
-        let spherised = robot::SpherisedUrdf::from_file(&self.urdf, &options)?;
+        let spherised = match robot::SpherisedUrdf::from_file(&self.urdf, &options) {
+            Err(robot::SpheriseError::Stopped) => return Ok(CommandOutcome::Interrupted),
+            result => result?,
+        };
         let model = robot::RobotModel::from_urdf_str(&spherised.text).map_err(|source| {
             HarnessError::Usage(format!(
                 "the spherised URDF does not load as a sphere model: {source}"
@@ -73,6 +93,14 @@ impl SpheriseArgs {
                 source,
             }
         })?;
+        for link in &spherised.links {
+            for file in &link.unusable {
+                eprintln!(
+                    "warning: link `{}`: mesh {file}: its spheres are the fallback's",
+                    link.link
+                );
+            }
+        }
         print_table(&spherised.links);
         say!(
             "wrote {}: {} spheres on {} links ({} joints)",
@@ -148,6 +176,6 @@ fn print_table(links: &[robot::LinkReport]) {
         );
     }
     say!(
-        "bound: no point of a link's spheres lies farther than this from its meshes (guaranteed); measured: sampled on the spheres' union"
+        "bound: no point of a link's spheres lies farther than this from its meshes (guaranteed); measured: the distance to the meshes of points sampled on the boundary of the spheres' union (the outward error)"
     );
 }

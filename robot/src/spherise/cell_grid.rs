@@ -12,13 +12,33 @@
 //! cell's diagonal beyond the solid where the points do not.
 
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use glam::DVec3;
 
 use super::solid::Solid;
+use super::spherise_error::SpheriseError;
 
-/// The most cells a grid may have; a finer grid is coarsened to this.
-pub(super) const MAX_CELLS: usize = 4_000_000;
+/// The most cells a grid may have; a finer grid is coarsened to this (the cover refuses,
+/// before building a grid, a tolerance that would need more: [`MAX_COVER_CELLS`]).
+///
+/// [`MAX_COVER_CELLS`]: super::MAX_COVER_CELLS
+pub(super) const MAX_CELLS: usize = super::MAX_COVER_CELLS;
+
+/// The cells of a grid of edge `h` over the box `[lo, hi]` (as `f64`: it may overflow any
+/// integer).
+pub(super) fn cells_over(lo: DVec3, hi: DVec3, h: f64) -> f64 {
+    (((hi - lo) / h).floor() + DVec3::splat(2.0)).element_product()
+}
+
+/// [`SpheriseError::Stopped`] if `stop` is raised.
+pub(super) fn check(stop: &AtomicBool) -> Result<(), SpheriseError> {
+    if stop.load(Ordering::Relaxed) {
+        Err(SpheriseError::Stopped)
+    } else {
+        Ok(())
+    }
+}
 
 /// One cell's part of the solid: points whose convex hull contains it, and their box.
 #[derive(Debug, Clone)]
@@ -92,13 +112,14 @@ pub(super) struct CellGrid {
 impl CellGrid {
     /// The elements of `solid` on a grid of cells of edge about `h` (coarser if the grid
     /// would have more than [`MAX_CELLS`]).
-    pub(super) fn new(solid: &Solid, h: f64) -> Self {
+    ///
+    /// # Errors
+    /// [`SpheriseError::Stopped`] once `stop` is raised (polled per column and per triangle).
+    pub(super) fn new(solid: &Solid, h: f64, stop: &AtomicBool) -> Result<Self, SpheriseError> {
         let mesh = solid.mesh();
         let (lo, hi) = mesh.bounds();
-        let extent = hi - lo;
         let mut h = h;
-        let cells = |h: f64| ((extent / h).floor() + DVec3::splat(2.0)).element_product();
-        while cells(h) > MAX_CELLS as f64 {
+        while cells_over(lo, hi, h) > MAX_CELLS as f64 {
             h *= 1.25;
         }
         // An offset of the grid from the bounds, so that flat faces on round coordinates
@@ -118,9 +139,9 @@ impl CellGrid {
             elements: Vec::new(),
             element_of: Vec::new(),
         };
-        grid.classify_corners(solid);
-        grid.make_elements(solid);
-        grid
+        grid.classify_corners(solid, stop)?;
+        grid.make_elements(solid, stop)?;
+        Ok(grid)
     }
 
     /// The position of corner `(i, j, k)`.
@@ -147,15 +168,16 @@ impl CellGrid {
         [0, 1, 2].map(|a| index(lo[a], a)..=index(hi[a], a))
     }
 
-    fn classify_corners(&mut self, solid: &Solid) {
+    fn classify_corners(&mut self, solid: &Solid, stop: &AtomicBool) -> Result<(), SpheriseError> {
         let count = (self.n[0] + 1) * (self.n[1] + 1) * (self.n[2] + 1);
         self.inside = vec![false; count];
         self.trusted = vec![false; count];
         if !solid.has_inside() {
-            return;
+            return Ok(());
         }
         for i in 0..=self.n[0] {
             for j in 0..=self.n[1] {
+                check(stop)?;
                 let base = self.corner([i, j, 0]);
                 let crossings = solid.column_crossings(base.x, base.y);
                 for k in 0..=self.n[2] {
@@ -174,14 +196,16 @@ impl CellGrid {
                 }
             }
         }
+        Ok(())
     }
 
-    fn make_elements(&mut self, solid: &Solid) {
+    fn make_elements(&mut self, solid: &Solid, stop: &AtomicBool) -> Result<(), SpheriseError> {
         let mesh = solid.mesh();
         let mut cells: HashMap<usize, Vec<DVec3>> = HashMap::new();
         let mut polygon = Vec::with_capacity(12);
         let mut scratch = Vec::with_capacity(12);
         for t in 0..mesh.triangles().len() {
+            check(stop)?;
             let corners = mesh.corners(t);
             for &v in &corners {
                 let [ri, rj, rk] = self.cell_range(v, v);
@@ -211,6 +235,7 @@ impl CellGrid {
         self.element_of = vec![u32::MAX; cell_count];
         for i in 0..self.n[0] {
             for j in 0..self.n[1] {
+                check(stop)?;
                 for k in 0..self.n[2] {
                     let cell = [i, j, k];
                     let index = self.cell_index(cell);
@@ -246,6 +271,7 @@ impl CellGrid {
                 }
             }
         }
+        Ok(())
     }
 }
 
@@ -321,7 +347,7 @@ mod tests {
     #[test]
     fn a_cube_is_cut_into_interior_and_surface_elements() {
         let cube = Solid::new(TriangleMesh::cuboid(DVec3::splat(0.5)).unwrap()).unwrap();
-        let grid = CellGrid::new(&cube, 0.1);
+        let grid = CellGrid::new(&cube, 0.1, &AtomicBool::new(false)).unwrap();
         assert!(grid.elements.iter().any(|e| e.surface));
         assert!(grid.elements.iter().any(|e| !e.surface));
         // Every element lies within the cube (its points are in the solid).

@@ -2,7 +2,10 @@
 //! URDF written with those spheres as its collision geometry (`mit-star spherise`).
 //!
 //! - [`TriangleMesh`] (`triangle_mesh.rs`): triangles over shared vertices, boxes and
-//!   cylinders as meshes; [`read_stl`] and [`parse_stl`] (`stl.rs`): binary and ASCII STL.
+//!   cylinders as meshes; [`read_stl`] and [`parse_stl`] (`stl.rs`): binary and ASCII STL;
+//!   `mesh_file.rs`: any collision mesh file by its extension (STL, OBJ and COLLADA, the
+//!   latter two through `mesh-loader`: why that crate, and the units and up-axis rules, are
+//!   in its doc), Git LFS pointers recognised.
 //! - `solid.rs`: a mesh as a point set (the solid of a closed mesh, the surface of an open
 //!   one), distances through parry and a robust ray-parity test of inside.
 //! - `cell_grid.rs`: the solid cut into cells, each cell's part bounded by a box.
@@ -10,7 +13,8 @@
 //!   protruding by at most the tolerance, with [`CoverOptions`] and [`CoverSphere`].
 //! - [`SpherisedUrdf`] (`spherised_urdf.rs`): a URDF's collision meshes and primitives
 //!   covered link by link, and the URDF rewritten with spheres; `urdf_collisions.rs` reads
-//!   the collision elements and finds their mesh files.
+//!   the collision elements and finds their mesh files; `sphere_budget.rs` finds the finest
+//!   tolerance whose covers fit a whole-model sphere budget.
 //! - [`SpheriseError`] (`spherise_error.rs`): what went wrong, naming the file or link.
 //!
 //! **The guarantee:** the union of a cover's spheres contains every point of every triangle
@@ -18,17 +22,26 @@
 //! mesh's solid than the sphere's reported protrusion (tested in
 //! `robot/tests/sphere_cover.rs`).
 //!
-//! May use: `glam`, `parry3d-f64`, `roxmltree`, `thiserror`, and `rpy_matrix` from `model`.
+//! May use: `glam`, `parry3d-f64`, `roxmltree`, `mesh-loader`, `thiserror`, and
+//! `rpy_matrix` from `model`.
 //! Nothing else in the crate uses it.
 
 mod cell_grid;
+mod mesh_file;
 mod solid;
+mod sphere_budget;
 mod sphere_cover;
 mod spherise_error;
 mod spherised_urdf;
 mod stl;
 mod triangle_mesh;
 mod urdf_collisions;
+
+/// The most grid cells one mesh's cover may take (about a gigabyte of work at most): a
+/// tolerance that would need more for the mesh's size (a `10⁻⁹` m tolerance, or a `10³⁰`
+/// scale) is refused with [`SpheriseError::TooMuchWork`] before any work. At the default
+/// 10 mm tolerance, a mesh up to about 0.9 m in each direction fits.
+pub const MAX_COVER_CELLS: usize = 4_000_000;
 
 pub use sphere_cover::{CoverOptions, CoverSphere, SphereCover};
 pub use spherise_error::SpheriseError;

@@ -13,10 +13,11 @@
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
+use std::sync::atomic::AtomicBool;
 
 use glam::DVec3;
 
-use super::cell_grid::{CellGrid, Element};
+use super::cell_grid::{CellGrid, Element, cells_over, check};
 use super::solid::Solid;
 use super::spherise_error::SpheriseError;
 use super::triangle_mesh::TriangleMesh;
@@ -82,8 +83,42 @@ impl SphereCover {
     ///
     /// # Errors
     /// [`SpheriseError::BadOption`] for a tolerance that is not positive and finite or a
-    /// sphere budget of 0; [`SpheriseError::BadMesh`] if parry refuses the mesh.
+    /// sphere budget of 0; [`SpheriseError::TooMuchWork`] if the tolerance is so fine for the
+    /// mesh's size that the grid would exceed [`MAX_COVER_CELLS`](super::MAX_COVER_CELLS)
+    /// cells (checked before any work); [`SpheriseError::BadMesh`] if parry refuses the mesh.
     pub fn new(mesh: &TriangleMesh, options: &CoverOptions) -> Result<Self, SpheriseError> {
+        Self::stoppable(mesh, options, &AtomicBool::new(false))
+    }
+
+    /// As [`new`](Self::new), polling `stop` in every long loop (a signal handler raises it).
+    ///
+    /// # Errors
+    /// As [`new`](Self::new), and [`SpheriseError::Stopped`] once `stop` is raised.
+    pub fn stoppable(
+        mesh: &TriangleMesh,
+        options: &CoverOptions,
+        stop: &AtomicBool,
+    ) -> Result<Self, SpheriseError> {
+        Self::check_options(options)?;
+        check_work(mesh, options.tolerance, "the cover")?;
+        let solid = Solid::new(mesh.clone())?;
+        let mut tolerance = options.tolerance;
+        loop {
+            let grid = CellGrid::new(&solid, cell_edge(tolerance), stop)?;
+            // A coarsened grid needs a larger tolerance for every cell to be coverable.
+            tolerance = tolerance.max(grid.h * 3f64.sqrt());
+            let spheres = cover(&solid, &grid, tolerance, stop)?;
+            let over_budget = options.max_spheres.is_some_and(|m| spheres.len() > m);
+            if !over_budget || tolerance > 1e3 * options.tolerance {
+                return Self::measured(&solid, spheres, tolerance, stop);
+            }
+            tolerance *= 1.25;
+        }
+    }
+
+    /// [`SpheriseError::BadOption`] for a tolerance that is not positive and finite or a
+    /// sphere budget of 0.
+    pub(super) fn check_options(options: &CoverOptions) -> Result<(), SpheriseError> {
         if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
             return Err(SpheriseError::BadOption {
                 what: "the tolerance",
@@ -98,33 +133,48 @@ impl SphereCover {
                 value: "0".into(),
             });
         }
-        let solid = Solid::new(mesh.clone())?;
-        let mut tolerance = options.tolerance;
-        loop {
-            // Cells a little under t/√3, so their diagonal stays below t less rounding room.
-            let grid = CellGrid::new(&solid, tolerance / 3f64.sqrt() * (1.0 - 1e-5));
-            // A coarsened grid needs a larger tolerance for every cell to be coverable.
-            tolerance = tolerance.max(grid.h * 3f64.sqrt());
-            let spheres = cover(&solid, &grid, tolerance);
-            let over_budget = options.max_spheres.is_some_and(|m| spheres.len() > m);
-            if !over_budget || tolerance > 1e3 * options.tolerance {
-                return Ok(Self::measured(&solid, spheres, tolerance));
-            }
-            tolerance *= 1.25;
-        }
+        Ok(())
     }
 
-    fn measured(solid: &Solid, spheres: Vec<CoverSphere>, tolerance: f64) -> Self {
+    fn measured(
+        solid: &Solid,
+        spheres: Vec<CoverSphere>,
+        tolerance: f64,
+        stop: &AtomicBool,
+    ) -> Result<Self, SpheriseError> {
         let mut max: f64 = 0.0;
         let mut sum = 0.0;
         let mut count = 0_usize;
+        // Each sphere's neighbours (the spheres it meets), by a sweep along x: the samples of
+        // a sphere are tested against these only.
+        let mut order: Vec<usize> = (0..spheres.len()).collect();
+        order.sort_by(|&a, &b| {
+            (spheres[a].centre.x - spheres[a].radius)
+                .total_cmp(&(spheres[b].centre.x - spheres[b].radius))
+        });
+        let mut neighbours: Vec<Vec<usize>> = vec![Vec::new(); spheres.len()];
+        for (at, &i) in order.iter().enumerate() {
+            check(stop)?;
+            let (a, right) = (spheres[i], spheres[i].centre.x + spheres[i].radius);
+            for &j in &order[at + 1..] {
+                let b = spheres[j];
+                if b.centre.x - b.radius > right {
+                    break;
+                }
+                if a.centre.distance(b.centre) < a.radius + b.radius {
+                    neighbours[i].push(j);
+                    neighbours[j].push(i);
+                }
+            }
+        }
         for (i, s) in spheres.iter().enumerate() {
+            check(stop)?;
             for p in fibonacci_sphere(SAMPLES_PER_SPHERE) {
                 let p = s.centre + p * s.radius;
-                let inside_other = spheres
+                let inside_other = neighbours[i]
                     .iter()
-                    .enumerate()
-                    .any(|(j, o)| j != i && p.distance(o.centre) < o.radius);
+                    .map(|&j| spheres[j])
+                    .any(|o| p.distance(o.centre) < o.radius);
                 if !inside_other {
                     let d = solid.distance(p);
                     max = max.max(d);
@@ -133,7 +183,7 @@ impl SphereCover {
                 }
             }
         }
-        Self {
+        Ok(Self {
             max_protrusion: spheres.iter().map(|s| s.protrusion).fold(0.0, f64::max),
             closed: solid.is_closed(),
             triangles: solid.mesh().triangles().len(),
@@ -141,7 +191,35 @@ impl SphereCover {
             measured_max: max,
             measured_mean: if count > 0 { sum / count as f64 } else { 0.0 },
             spheres,
-        }
+        })
+    }
+}
+
+/// The cell edge for tolerance `t`: a little under `t/√3`, so a cell's diagonal stays below
+/// `t` less rounding room.
+fn cell_edge(tolerance: f64) -> f64 {
+    tolerance / 3f64.sqrt() * (1.0 - 1e-5)
+}
+
+/// [`SpheriseError::TooMuchWork`] (naming `what`) if covering `mesh` at `tolerance` would
+/// take a grid of more than [`MAX_COVER_CELLS`](super::MAX_COVER_CELLS) cells.
+pub(super) fn check_work(
+    mesh: &TriangleMesh,
+    tolerance: f64,
+    what: &str,
+) -> Result<(), SpheriseError> {
+    let (lo, hi) = mesh.bounds();
+    let cells = cells_over(lo, hi, cell_edge(tolerance));
+    if cells <= super::MAX_COVER_CELLS as f64 {
+        Ok(())
+    } else {
+        Err(SpheriseError::TooMuchWork {
+            what: what.to_owned(),
+            extent: (hi - lo).max_element(),
+            tolerance,
+            cells,
+            cap: super::MAX_COVER_CELLS,
+        })
     }
 }
 
@@ -174,13 +252,19 @@ fn candidate(solid: &Solid, centre: DVec3, tolerance: f64) -> Candidate {
     }
 }
 
-fn candidates(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<Candidate> {
+fn candidates(
+    solid: &Solid,
+    grid: &CellGrid,
+    tolerance: f64,
+    stop: &AtomicBool,
+) -> Result<Vec<Candidate>, SpheriseError> {
     let mut out = Vec::new();
     // Every inside corner: its inner ball grown by t (radius ≥ t, a cell's diagonal) covers
     // the cells around it. (Every second corner per axis would do, one per cell; all of them
     // give the greedy choice finer positions: a quarter fewer spheres on the UR5.)
     for i in 0..=grid.n[0] {
         for j in 0..=grid.n[1] {
+            check(stop)?;
             for k in 0..=grid.n[2] {
                 if grid.trusted[grid.corner_index([i, j, k])] {
                     out.push(candidate(solid, grid.corner([i, j, k]), tolerance));
@@ -190,14 +274,17 @@ fn candidates(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<Candidate> 
     }
     // The centre of each element with surface, or whose own corner is not a trusted inside one: the
     // element's half diagonal is at most t/2, and so is the centre's distance to the solid.
-    for e in &grid.elements {
+    for (n, e) in grid.elements.iter().enumerate() {
+        if n % 256 == 0 {
+            check(stop)?;
+        }
         let covered_by_corner = grid.trusted[grid.corner_index(e.cell)];
         if e.surface || !covered_by_corner {
             let c = e.centre();
             out.push(candidate(solid, c, tolerance));
         }
     }
-    out
+    Ok(out)
 }
 
 /// The uncovered elements candidate `c` would cover.
@@ -222,19 +309,27 @@ fn gain(grid: &CellGrid, c: &Candidate, covered: &[bool], mut visit: impl FnMut(
     n
 }
 
-fn cover(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<CoverSphere> {
-    let candidates = candidates(solid, grid, tolerance);
+fn cover(
+    solid: &Solid,
+    grid: &CellGrid,
+    tolerance: f64,
+    stop: &AtomicBool,
+) -> Result<Vec<CoverSphere>, SpheriseError> {
+    let candidates = candidates(solid, grid, tolerance, stop)?;
     let mut covered = vec![false; grid.elements.len()];
     let mut left = grid.elements.len();
     // Lazy greedy: gains only fall as elements get covered, so a popped candidate whose
     // fresh gain still tops the heap is the best one.
-    let mut heap: BinaryHeap<(u32, Reverse<usize>)> = candidates
-        .iter()
-        .enumerate()
-        .map(|(i, c)| (gain(grid, c, &covered, |_| {}), Reverse(i)))
-        .collect();
+    let mut heap: BinaryHeap<(u32, Reverse<usize>)> = BinaryHeap::new();
+    for (i, c) in candidates.iter().enumerate() {
+        if i % 256 == 0 {
+            check(stop)?;
+        }
+        heap.push((gain(grid, c, &covered, |_| {}), Reverse(i)));
+    }
     let mut picked: Vec<(Candidate, Vec<usize>)> = Vec::new();
     while left > 0 {
+        check(stop)?;
         let Some((stale, Reverse(i))) = heap.pop() else {
             break;
         };
@@ -262,7 +357,7 @@ fn cover(solid: &Solid, grid: &CellGrid, tolerance: f64) -> Vec<CoverSphere> {
         own.reach = grid.elements[e].reach_from(c);
         picked.push((own, vec![e]));
     }
-    shrink_and_prune(solid, grid, &picked)
+    shrink_and_prune(solid, grid, &picked, stop)
 }
 
 /// Drops spheres whose elements other spheres can take within their reach (fewest elements
@@ -272,7 +367,8 @@ fn shrink_and_prune(
     solid: &Solid,
     grid: &CellGrid,
     picked: &[(Candidate, Vec<usize>)],
-) -> Vec<CoverSphere> {
+    stop: &AtomicBool,
+) -> Result<Vec<CoverSphere>, SpheriseError> {
     // A little room for rounding in the distances.
     let slack = solid.near();
     let reach = |c: &Candidate, e: usize| grid.elements[e].reach_from(c.centre);
@@ -285,6 +381,7 @@ fn shrink_and_prune(
     let mut order: Vec<usize> = (0..picked.len()).collect();
     order.sort_by_key(|&i| owned[i].len());
     for i in order {
+        check(stop)?;
         // For each element, the other sphere that takes it with the least growth.
         let mut moves = Vec::with_capacity(owned[i].len());
         for &e in &owned[i] {
@@ -308,7 +405,7 @@ fn shrink_and_prune(
             owned[j].push(e);
         }
     }
-    picked
+    Ok(picked
         .iter()
         .zip(radius)
         .zip(kept)
@@ -318,7 +415,7 @@ fn shrink_and_prune(
             radius: r + slack,
             protrusion: r + slack - c.depth,
         })
-        .collect()
+        .collect())
 }
 
 #[cfg(test)]

@@ -5,12 +5,15 @@
 use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
 
 use glam::DVec3;
 
-use super::sphere_cover::{CoverOptions, CoverSphere, SphereCover};
+use super::mesh_file::read_mesh;
+use super::sphere_budget::fit_budget;
+use super::sphere_cover::{CoverOptions, CoverSphere, SphereCover, check_work};
 use super::spherise_error::SpheriseError;
-use super::stl::read_stl;
 use super::triangle_mesh::TriangleMesh;
 use super::urdf_collisions::{Geometry, LinkCollisions, read_collisions, resolve};
 
@@ -25,8 +28,16 @@ pub struct SpheriseOptions {
     /// Where `package://` addresses are looked up.
     pub package_roots: Vec<PathBuf>,
     /// The text of a spherised URDF whose spheres stand in for links whose mesh files are
-    /// missing (VAMP's hand-made model for a gripper whose meshes are not at hand).
+    /// missing or unreadable (VAMP's hand-made model for a gripper whose meshes are not at
+    /// hand, or are Git LFS pointers).
     pub fallback: Option<String>,
+    /// The most spheres in the whole model (`--max-spheres`): the tolerance is raised, the
+    /// same for every link, until the covers together fit (kept sphere elements and fallback
+    /// spheres count too). Each link's report gives the tolerance used and what it measured.
+    pub max_spheres: Option<usize>,
+    /// Raised to stop (a SIGINT/SIGTERM handler): covers poll it in every long loop and
+    /// return [`SpheriseError::Stopped`].
+    pub stop: Option<Arc<AtomicBool>>,
 }
 
 /// Where a link's spheres came from.
@@ -34,7 +45,8 @@ pub struct SpheriseOptions {
 pub enum LinkSource {
     /// Covers of its collision meshes or primitives (spheres kept as they are).
     Covered,
-    /// Its mesh files are missing; the fallback model's spheres for it were copied.
+    /// Its mesh files are missing or unreadable; the fallback model's spheres for it were
+    /// copied.
     Fallback,
 }
 
@@ -62,6 +74,9 @@ pub struct LinkReport {
     pub measured_max: Option<f64>,
     /// The mean protrusion measured there.
     pub measured_mean: Option<f64>,
+    /// For a [`LinkSource::Fallback`] link: its mesh files that are missing (the name) or
+    /// unreadable (`name (why)`: a Git LFS pointer, a corrupt file, an unsupported format).
+    pub unusable: Vec<String>,
 }
 
 /// A spherised URDF: its text and the report per link.
@@ -93,8 +108,11 @@ impl SpherisedUrdf {
     /// # Errors
     /// [`SpheriseError::Urdf`] or [`SpheriseError::BadNumber`] for a malformed URDF or
     /// fallback, [`SpheriseError::UnknownPackage`] for a `package://` name without a package
-    /// root, [`SpheriseError::MissingMeshes`] naming every missing mesh of links the
-    /// fallback lacks, the mesh reader's errors, and [`SphereCover::new`]'s.
+    /// root, [`SpheriseError::MissingMeshes`] naming every missing or unreadable mesh (and
+    /// why) of links the fallback lacks, [`SphereCover::stoppable`]'s errors (a
+    /// [`TooMuchWork`](SpheriseError::TooMuchWork) names the link), and
+    /// [`SpheriseError::BadOption`] for a sphere budget below the spheres no tolerance
+    /// changes (kept sphere elements and fallback spheres).
     pub fn from_text(
         text: &str,
         folder: &Path,
@@ -107,21 +125,77 @@ impl SpherisedUrdf {
             Some(f) => fallback_collisions(f)?,
             None => HashMap::new(),
         };
+        let stop = options.stop.clone().unwrap_or_default();
+        // Every link's geometry, read once (a budget covers it at several tolerances).
         let mut missing = Vec::new();
-        let mut edits: Vec<(std::ops::Range<usize>, String)> = Vec::new();
-        let mut reports = Vec::new();
+        let mut sources = Vec::new();
         for link in links.iter().filter(|l| !l.collisions.is_empty()) {
-            let indent = indentation(text, link.collisions[0].range.start);
-            let (block, report) = match meshes(link, folder, &options.package_roots)? {
-                Ok(meshes) => covered(link, &meshes, &options.cover, &indent)?,
-                Err(absent) => match fallback.get(link.name.as_str()) {
-                    Some(elements) => fallen_back(link, elements, &indent),
+            let source = match meshes(link, folder, &options.package_roots)? {
+                Ok(placed) => Source::Geometry(placed),
+                Err(unusable) => match fallback.get(link.name.as_str()) {
+                    Some(elements) => Source::Fallback(elements, unusable),
                     None => {
-                        missing.extend(absent.into_iter().map(|f| (link.name.clone(), f)));
+                        missing.extend(unusable.into_iter().map(|f| (link.name.clone(), f)));
                         continue;
                     }
                 },
             };
+            sources.push((link, source));
+        }
+        if !missing.is_empty() {
+            return Err(SpheriseError::MissingMeshes {
+                missing,
+                fallback_given: options.fallback.is_some(),
+            });
+        }
+        // The work cap, for every mesh before any cover (a tolerance check comes first).
+        SphereCover::check_options(&options.cover)?;
+        for (link, source) in &sources {
+            if let Source::Geometry(placed) = source {
+                for p in placed {
+                    if let Placed::Mesh(mesh) = p {
+                        check_work(
+                            mesh,
+                            options.cover.tolerance,
+                            &format!("link `{}`", link.name),
+                        )?;
+                    }
+                }
+            }
+        }
+        let cover_all = |tolerance: f64| -> Result<Vec<(String, LinkReport)>, SpheriseError> {
+            let cover = CoverOptions {
+                tolerance,
+                ..options.cover
+            };
+            sources
+                .iter()
+                .map(|(link, source)| {
+                    let indent = indentation(text, link.collisions[0].range.start);
+                    match source {
+                        Source::Geometry(placed) => covered(link, placed, &cover, &indent, &stop),
+                        Source::Fallback(elements, unusable) => {
+                            Ok(fallen_back(link, elements, unusable, &indent))
+                        }
+                    }
+                })
+                .collect()
+        };
+        let covers = match options.max_spheres {
+            None => cover_all(options.cover.tolerance)?,
+            Some(budget) => {
+                let minimum = sources.iter().map(|(_, s)| s.least_spheres()).sum();
+                fit_budget(budget, minimum, options.cover.tolerance, |tolerance| {
+                    let covers = cover_all(tolerance)?;
+                    let total = covers.iter().map(|(_, r)| r.spheres).sum();
+                    Ok((total, covers))
+                })?
+            }
+        };
+        let mut edits: Vec<(std::ops::Range<usize>, String)> = Vec::new();
+        let mut reports = Vec::new();
+        for ((link, _), (block, report)) in sources.iter().zip(covers) {
+            let indent = indentation(text, link.collisions[0].range.start);
             for (i, c) in link.collisions.iter().enumerate() {
                 let start = line_start(text, c.range.start);
                 if i == 0 {
@@ -133,9 +207,6 @@ impl SpherisedUrdf {
                 }
             }
             reports.push(report);
-        }
-        if !missing.is_empty() {
-            return Err(SpheriseError::MissingMeshes { missing });
         }
         let mut out = text.to_owned();
         for (range, replacement) in edits.into_iter().rev() {
@@ -161,7 +232,27 @@ enum Placed {
     Sphere(DVec3, f64),
 }
 
-/// The link's geometry in its frame, or the mesh names whose files are missing.
+/// Where a link's spheres come from: its geometry, or the fallback's collision elements
+/// (with why its meshes could not be used).
+enum Source<'a> {
+    Geometry(Vec<Placed>),
+    Fallback(&'a [String], Vec<String>),
+}
+
+impl Source<'_> {
+    /// The fewest spheres any tolerance gives: kept sphere elements and fallback spheres,
+    /// and one per mesh.
+    fn least_spheres(&self) -> usize {
+        match self {
+            Self::Geometry(placed) => placed.len(),
+            Self::Fallback(elements, _) => elements.len(),
+        }
+    }
+}
+
+/// The link's geometry in its frame, or its mesh names whose files are missing or unreadable
+/// (`name` alone when missing, `name (why)` when unreadable: a Git LFS pointer, a corrupt
+/// file, an unsupported format).
 fn meshes(
     link: &LinkCollisions,
     folder: &Path,
@@ -175,7 +266,10 @@ fn meshes(
         match &c.geometry {
             Geometry::Mesh { filename, scale } => {
                 match resolve(&link.name, filename, folder, roots)? {
-                    Ok(path) => placed.push(Placed::Mesh(place(read_mesh(&path)?, *scale))),
+                    Ok(path) => match read_mesh(&path) {
+                        Ok(mesh) => placed.push(Placed::Mesh(place(mesh, *scale))),
+                        Err(why) => missing.push(format!("{filename} ({why})")),
+                    },
                     Err(_) => missing.push(filename.clone()),
                 }
             }
@@ -197,26 +291,12 @@ fn meshes(
     })
 }
 
-fn read_mesh(path: &Path) -> Result<TriangleMesh, SpheriseError> {
-    let extension = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_lowercase())
-        .unwrap_or_default();
-    if extension == "stl" {
-        read_stl(path)
-    } else {
-        Err(SpheriseError::UnsupportedFormat {
-            path: path.to_owned(),
-            extension,
-        })
-    }
-}
-
 fn covered(
     link: &LinkCollisions,
     placed: &[Placed],
     options: &CoverOptions,
     indent: &str,
+    stop: &AtomicBool,
 ) -> Result<(String, LinkReport), SpheriseError> {
     let mut spheres: Vec<CoverSphere> = Vec::new();
     let mut report = LinkReport {
@@ -230,12 +310,13 @@ fn covered(
         max_protrusion: Some(0.0),
         measured_max: Some(0.0),
         measured_mean: None,
+        unusable: Vec::new(),
     };
     let (mut weighted_mean, mut weight) = (0.0, 0.0);
     for p in placed {
         match p {
             Placed::Mesh(mesh) => {
-                let cover = SphereCover::new(mesh, options)?;
+                let cover = SphereCover::stoppable(mesh, options, stop)?;
                 report.triangles += cover.triangles;
                 report.closed &= cover.closed;
                 report.tolerance = report.tolerance.max(cover.tolerance);
@@ -301,7 +382,12 @@ fn fallback_collisions(text: &str) -> Result<HashMap<String, Vec<String>>, Spher
         .collect())
 }
 
-fn fallen_back(link: &LinkCollisions, elements: &[String], indent: &str) -> (String, LinkReport) {
+fn fallen_back(
+    link: &LinkCollisions,
+    elements: &[String],
+    unusable: &[String],
+    indent: &str,
+) -> (String, LinkReport) {
     let block = elements.join(&format!("\n{indent}"));
     let report = LinkReport {
         link: link.name.clone(),
@@ -314,6 +400,7 @@ fn fallen_back(link: &LinkCollisions, elements: &[String], indent: &str) -> (Str
         max_protrusion: None,
         measured_max: None,
         measured_mean: None,
+        unusable: unusable.to_vec(),
     };
     (block, report)
 }
