@@ -138,6 +138,24 @@ pub enum HarnessError {
         /// Why.
         source: robot::ArmError,
     },
+    /// A path file names joints that are not the robot's (`check-path`): its states cannot be
+    /// put into the robot's coordinate order.
+    #[error(
+        "{}: the path's joints are not the robot's ({mismatch}); the robot's joints, in coordinate order: {robot}",
+        path.display()
+    )]
+    PathJoints {
+        /// The path file.
+        path: PathBuf,
+        /// The names missing, unknown or repeated.
+        mismatch: String,
+        /// The robot's joint names in coordinate order, comma separated.
+        robot: String,
+    },
+    /// An arm problem's start or goal in collision or out of reach of certified motions,
+    /// the problem named by the [`ArmError`](robot::ArmError).
+    #[error(transparent)]
+    ArmEnd(robot::ArmError),
     /// The output folder cannot be created or written.
     #[error("output folder `{}` is not writable: {source}", path.display())]
     OutputFolder {

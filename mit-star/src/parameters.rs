@@ -168,8 +168,10 @@ pub struct Parameters {
     /// state at a time, as OMPL's discrete motion validator does (for side-by-side timing).
     /// Not in the paper.
     pub accelerated_checks: bool,
-    /// RRT-Connect's maximum extension length (`None`: [`default_range`](crate::default_range),
-    /// the paper's per dimension or 0.2 of the maximum extent). Unused by the EIT* family.
+    /// RRT-Connect's maximum extension length (`None`: the problem's
+    /// [`default_range`](problems::PlanningProblem::default_range) — an arm's, measured per
+    /// robot — else [`default_range`](crate::default_range), the paper's per dimension or 0.2
+    /// of the maximum extent). Unused by the EIT* family.
     pub range: Option<f64>,
     /// RRT-Connect steers towards valid samples only (`true`, OMPL's valid-state sampler:
     /// every draw costs a state check and invalid draws are redrawn) or towards any state of
@@ -363,7 +365,7 @@ impl Parameters {
 
     /// These parameters for `problem`: its resolution replaces `resolution`, and its
     /// certification, near-terminal fraction, sparse spacing, reverse-search repair,
-    /// connection rule, batch size and batch growth apply
+    /// connection rule, batch size, batch growth and RRT range apply
     /// wherever unset ([`Configuration::effective_parameters`](crate::Configuration::effective_parameters)
     /// also decides the planner's own defaults).
     ///
@@ -381,6 +383,7 @@ impl Parameters {
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
         parameters.batch_size = self.batch_size.or(Some(problem.batch_size()));
         parameters.batch_growth = self.batch_growth.or(Some(problem.batch_growth()));
+        parameters.range = self.range.or(problem.default_range());
         let (initial, finest) = problem.sparse_spacing();
         parameters.sparse_initial_steps = self.sparse_initial_steps.or(Some(initial));
         parameters.sparse_min_steps = self.sparse_min_steps.or(Some(finest));

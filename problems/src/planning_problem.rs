@@ -132,6 +132,14 @@ pub trait PlanningProblem {
     fn batch_growth(&self) -> f64 {
         0.0
     }
+
+    /// The extension range RRT-Connect, AORRTC and Informed RRT* should step by when none is
+    /// set (`None`, the default: the planners' own rule, `mit_star::default_range`). A robot
+    /// arm's was measured per robot, as VAMP sets one per robot: the joint-space diagonal's
+    /// fifth that the planners' rule takes is several radians for joints of a turn or more.
+    fn default_range(&self) -> Option<f64> {
+        None
+    }
 }
 
 /// The batch size of the MIT* and EIT* papers' experiments, 100 samples

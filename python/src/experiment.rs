@@ -129,7 +129,7 @@ pub struct PyExperimentResults {
 impl PyExperimentResults {
     /// Every run as a flat JSON object: the record's scalars, `valid` and `validation_failure`
     /// from its path validation, the counters' fields, the trace as `[seconds, cost]` pairs and
-    /// (with `paths`) the path.
+    /// (with `paths`) the path with, for an arm, its `joints` and `wrapping`.
     fn flat_records(&self, paths: bool) -> BindingResult<Vec<serde_json::Map<String, Value>>> {
         let mut rows = Vec::new();
         for record in self.results.all_runs() {
@@ -139,7 +139,9 @@ impl PyExperimentResults {
                 continue;
             };
             if !paths {
-                row.remove("path");
+                for key in ["path", "joints", "wrapping"] {
+                    row.remove(key);
+                }
             }
             if let Some(Value::Object(counters)) = row.remove("counters") {
                 row.extend(counters);
@@ -166,7 +168,9 @@ impl PyExperimentResults {
     /// One `dict` per finished run: `instance`, `planner`, `configuration`, `run`, `seed`,
     /// `budget`, `status`, `setup_time`, `run_time`, `initial_time`, `initial_cost`,
     /// `final_cost`, `valid`, `error`, the counters (`iterations`, `samples`, …) and `trace`
-    /// (`[seconds, cost]` pairs); with `paths=True` also `path` (a list of states).
+    /// (`[seconds, cost]` pairs); with `paths=True` also `path` (a list of states) and, for
+    /// an arm, `joints` (the joint each coordinate is, in order) and `wrapping` (`True` for a
+    /// continuous joint: interpolate it the short way round).
     #[pyo3(signature = (*, paths=false))]
     fn records<'py>(&self, py: Python<'py>, paths: bool) -> BindingResult<Bound<'py, PyList>> {
         let list = PyList::empty(py);

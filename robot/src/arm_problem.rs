@@ -55,6 +55,8 @@ pub struct ArmProblem {
     resolution: f64,
     certification: u32,
     uncertified: bool,
+    /// What the request asked that is not planned as asked ([`notes`](Self::notes)).
+    notes: Vec<String>,
 }
 
 impl ArmProblem {
@@ -100,6 +102,7 @@ impl ArmProblem {
             resolution,
             certification: CERTIFICATION,
             uncertified: false,
+            notes: Vec::new(),
         })
     }
 
@@ -152,24 +155,10 @@ impl ArmProblem {
                     near,
                 });
             }
-            let names = |(a, b): (usize, usize)| {
-                let links = self.robot.links();
-                format!("{}/{}", links[a].name, links[b].name)
-            };
-            let pairs: Vec<String> = self
-                .robot
-                .colliding_link_pairs(q)
-                .into_iter()
-                .map(names)
-                .collect();
             return Err(ArmError::EndInCollision {
                 problem: self.name.clone(),
                 what,
-                with: if pairs.is_empty() {
-                    "the scene (or outside the joint limits)".to_owned()
-                } else {
-                    format!("itself: links {}", pairs.join(", "))
-                },
+                with: collision_summary(&self.diagnose(q)),
             });
         }
         Ok(())
@@ -262,7 +251,18 @@ impl ArmProblem {
             snap_to_limits(robot.joint_space(), q);
         }
         let name = problem.name.clone();
-        Self::new(name, robot, problem.scene, start, goal)
+        let notes = held_notes(&robot, &problem);
+        let mut arm = Self::new(name, robot, problem.scene, start, goal)?;
+        arm.notes = notes;
+        Ok(arm)
+    }
+
+    /// What the request asks that is not planned as asked, one line each: goal values of
+    /// joints outside the planning group (held at the start's values, so the goal's are not
+    /// reached), and held joints whose start value was clamped into their limits. Empty when
+    /// every joint is planned, and for problems not read from a request.
+    pub fn notes(&self) -> &[String] {
+        &self.notes
     }
 
     /// The same problem checked every `resolution × maximum extent` (OMPL's convention; the
@@ -402,6 +402,128 @@ impl PlanningProblem for ArmProblem {
 
     fn batch_growth(&self) -> f64 {
         Self::BATCH_GROWTH
+    }
+
+    /// The robot's [`rrt_range`](RobotModel::rrt_range): measured for a shipped robot, a rule
+    /// on the joints' spans for any other.
+    fn default_range(&self) -> Option<f64> {
+        Some(self.robot.rrt_range())
+    }
+}
+
+/// [`ArmProblem::notes`] of MotionBenchMaker `problem` planned for `robot` (its held joints
+/// already set from the request's start).
+fn held_notes(robot: &RobotModel, problem: &MbmProblem) -> Vec<String> {
+    let held = robot.held_joints();
+    let value = |values: &[(String, f64)], joint: &str| {
+        values.iter().find(|(n, _)| n == joint).map(|&(_, v)| v)
+    };
+    // Equal, or one turn apart (a continuous joint's value wrapped).
+    let differs = |a: f64, b: f64| {
+        let d = (a - b).abs();
+        let turns = (d / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+        d > ArmProblem::LIMIT_TOLERANCE && (d - turns).abs() > ArmProblem::LIMIT_TOLERANCE
+    };
+    let mut notes = Vec::new();
+    let ignored: Vec<String> = held
+        .iter()
+        .filter_map(|&(joint, at)| {
+            let goal = value(&problem.goal, joint)?;
+            differs(goal, at).then(|| format!("{joint} = {goal} (held at {at})"))
+        })
+        .collect();
+    if !ignored.is_empty() {
+        notes.push(format!(
+            "the goal's values for joints outside the planned group are not planned: {}",
+            ignored.join(", ")
+        ));
+    }
+    let clamped: Vec<String> = held
+        .iter()
+        .filter_map(|&(joint, at)| {
+            let start = value(&problem.start, joint)?;
+            (start.is_finite() && differs(start, at)).then(|| format!("{joint} = {start} -> {at}"))
+        })
+        .collect();
+    if !clamped.is_empty() {
+        notes.push(format!(
+            "held joints' start values clamped into their limits: {}",
+            clamped.join(", ")
+        ));
+    }
+    notes
+}
+
+/// What an invalid configuration's diagnosis says it meets, for [`ArmError::EndInCollision`]:
+/// `itself: links a/b (overlap 3.100 mm), …` and `the scene: link l meets obstacle o (overlap
+/// 12.000 mm), …`, the deepest first, at most three of each.
+fn collision_summary(d: &crate::StateDiagnosis) -> String {
+    const SHOWN: usize = 3;
+    let depth = |gap: f64| {
+        if gap < 0.0 {
+            format!("overlap {:.3} mm", -gap * 1e3)
+        } else {
+            format!("gap {:.3} mm, within the checker's margin", gap * 1e3)
+        }
+    };
+    let more = |n: usize| {
+        if n > SHOWN {
+            format!(", and {} more", n - SHOWN)
+        } else {
+            String::new()
+        }
+    };
+    let mut parts = Vec::new();
+    if !d.itself.is_empty() {
+        let pairs: Vec<String> = d
+            .itself
+            .iter()
+            .take(SHOWN)
+            .map(|c| format!("{}/{} ({})", c.link, c.other, depth(c.gap)))
+            .collect();
+        parts.push(format!(
+            "itself: links {}{}",
+            pairs.join(", "),
+            more(d.itself.len())
+        ));
+    }
+    if !d.scene.is_empty() {
+        let contacts: Vec<String> = d
+            .scene
+            .iter()
+            .take(SHOWN)
+            .map(|c| {
+                format!(
+                    "link {} meets obstacle {} ({})",
+                    c.link,
+                    c.other,
+                    depth(c.gap)
+                )
+            })
+            .collect();
+        parts.push(format!(
+            "the scene: {}{}",
+            contacts.join(", "),
+            more(d.scene.len())
+        ));
+    }
+    if !d.limits.is_empty() {
+        let joints: Vec<String> = d
+            .limits
+            .iter()
+            .map(|v| {
+                format!(
+                    "joint {} = {} outside [{}, {}]",
+                    v.joint, v.value, v.lower, v.upper
+                )
+            })
+            .collect();
+        parts.push(format!("its limits: {}", joints.join(", ")));
+    }
+    if parts.is_empty() {
+        "something the diagnosis cannot name (run `mit-star check-state`)".to_owned()
+    } else {
+        parts.join("; ")
     }
 }
 

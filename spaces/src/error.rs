@@ -74,6 +74,36 @@ pub enum SpaceError {
         /// The offending value.
         value: f64,
     },
+    /// A joint's value is NaN or infinite ([`JointSpace`](crate::JointSpace): the joint named).
+    #[error("joint `{joint}` (coordinate {index}) is not finite ({value})")]
+    JointNotFinite {
+        /// The joint's name.
+        joint: String,
+        /// Its coordinate index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A joint's value lies outside its limits ([`JointSpace`](crate::JointSpace): the joint
+    /// named; a continuous joint's are `[-π, π]`).
+    #[error(
+        "joint `{joint}` (coordinate {index}) is {}, outside its limits [{}, {}]",
+        crate::short_number(*.value),
+        crate::short_number(*.lower),
+        crate::short_number(*.upper)
+    )]
+    JointOutsideLimits {
+        /// The joint's name.
+        joint: String,
+        /// Its coordinate index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+        /// Its lower limit.
+        lower: f64,
+        /// Its upper limit.
+        upper: f64,
+    },
     /// A state lies outside the space's bounds.
     #[error(
         "coordinate {index} of the state is {}, outside the bounds [{}, {}]",

@@ -238,6 +238,37 @@ impl StateSpace for JointSpace {
             .all(|(&x, (&lo, &hi))| x >= lo && x <= hi)
     }
 
+    /// As the default, naming the joint: [`SpaceError::JointNotFinite`] and
+    /// [`SpaceError::JointOutsideLimits`] instead of a coordinate's index alone.
+    fn check_state(&self, state: &[f64]) -> Result<(), SpaceError> {
+        if state.len() != self.dimension() {
+            return Err(SpaceError::DimensionMismatch {
+                expected: self.dimension(),
+                got: state.len(),
+            });
+        }
+        let joint = |index: usize| self.joints[index].name.clone();
+        if let Some((index, &value)) = state.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+            return Err(SpaceError::JointNotFinite {
+                joint: joint(index),
+                index,
+                value,
+            });
+        }
+        let outside =
+            (0..state.len()).find(|&i| !(self.lower[i]..=self.upper[i]).contains(&state[i]));
+        match outside {
+            Some(index) => Err(SpaceError::JointOutsideLimits {
+                joint: joint(index),
+                index,
+                value: state[index],
+                lower: self.lower[index],
+                upper: self.upper[index],
+            }),
+            None => Ok(()),
+        }
+    }
+
     fn enforce_bounds(&self, state: &mut [f64]) {
         for (i, x) in state.iter_mut().enumerate() {
             *x = if self.wraps[i] {
@@ -293,6 +324,32 @@ mod tests {
             assert!((-PI..PI).contains(&y), "{x} -> {y}");
             assert!((((x - y) / TAU).round() * TAU - (x - y)).abs() < 1e-9);
         }
+    }
+
+    #[test]
+    fn a_state_outside_a_limit_or_not_finite_names_the_joint() {
+        let space = JointSpace::new(vec![
+            Joint::revolute("shoulder", -1.0, 1.0),
+            Joint::continuous("wrist"),
+        ])
+        .unwrap();
+        assert!(space.check_state(&[0.5, -PI]).is_ok());
+        let e = space.check_state(&[0.0, 4.0]).unwrap_err();
+        assert!(
+            matches!(&e, SpaceError::JointOutsideLimits { joint, index: 1, .. } if joint == "wrist"),
+            "{e}"
+        );
+        assert!(
+            e.to_string()
+                .starts_with("joint `wrist` (coordinate 1) is 4"),
+            "{e}"
+        );
+        let e = space.check_state(&[f64::NAN, 0.0]).unwrap_err();
+        assert!(e.to_string().contains("joint `shoulder`"), "{e}");
+        assert!(matches!(
+            space.check_state(&[0.0]),
+            Err(SpaceError::DimensionMismatch { .. })
+        ));
     }
 
     #[test]

@@ -47,9 +47,10 @@ pub struct BenchArgs {
     #[arg(long = "problem", value_delimiter = ',')]
     pub problems: Vec<String>,
     /// The robot MotionBenchMaker folders (`--problem mbm:PATH`) are planned for (flags mode):
-    /// a shipped robot (`mit-star robots`; default panda) or a folder holding one URDF and one
-    /// SRDF. Experiment files say `robot = "ur5"` in the problem entry.
-    #[arg(long, value_name = "NAME|DIR")]
+    /// a shipped robot (`mit-star robots`; default panda), a URDF file (the SRDF beside it, if
+    /// any) or a folder holding one URDF and one SRDF. Experiment files say `robot = "ur5"` in
+    /// the problem entry.
+    #[arg(long, value_name = "NAME|URDF|DIR")]
     pub robot: Option<String>,
     /// Plan only this SRDF planning group of the robot (flags mode; experiment files:
     /// `group = "right_arm"`); the other joints are held at each request's start values.

@@ -8,6 +8,7 @@ use crate::commands::CommandOutcome;
 use crate::commands::problem_args::ProblemArgs;
 use crate::error::HarnessError;
 use crate::formats::kpi_table::number;
+use crate::formats::path_joints::{NamedPaths, json_paths, reorder, robot_order, take_joints_line};
 
 /// Options of `mit-star check-path`.
 #[derive(Debug, Args)]
@@ -16,7 +17,12 @@ pub struct CheckPathArgs {
     #[command(flatten)]
     pub problem: ProblemArgs,
     /// The path: a text file with one state per line (coordinates separated by spaces or
-    /// commas); `#` starts a comment. Blank lines separate several paths, each checked.
+    /// commas); `#` starts a comment. Blank lines separate several paths, each checked. For
+    /// an arm, a line `joints: NAME, NAME, …` before the first state names the joints the
+    /// coordinates are (without it: the robot's coordinate order, as `mit-star robots` lists
+    /// it); states are put into the robot's order by name, and names that are not the robot's
+    /// joints, each once, are refused. The JSON `plan --json` and `runs.jsonl` write (one
+    /// object per line, its `path` and `joints`) is read too.
     #[arg(long)]
     pub path: PathBuf,
     /// How far the path's ends may lie from the start and a goal, per coordinate (paths from
@@ -63,9 +69,22 @@ impl CheckPathArgs {
                 }
             })?;
         let dimension = instance.problem.dimension();
-        let mut paths = parse_paths(&text, dimension).map_err(|message| {
+        let in_file = |message: String| {
             HarnessError::Usage(format!("path file `{}`: {message}", self.path.display()))
-        })?;
+        };
+        let NamedPaths { mut paths, joints } = match json_paths(&text) {
+            Some(read) => {
+                let read = read.map_err(in_file)?;
+                check_json_paths(&read.paths, dimension).map_err(in_file)?;
+                read
+            }
+            None => {
+                let (text, joints) = take_joints_line(&text).map_err(in_file)?;
+                let paths = parse_paths(&text, dimension).map_err(in_file)?;
+                NamedPaths { paths, joints }
+            }
+        };
+        let reordered = self.robot_order(&instance, joints.as_deref(), &mut paths)?;
         if paths.is_empty() {
             return Err(HarnessError::Usage(format!(
                 "path file `{}`: no path in the file",
@@ -73,6 +92,9 @@ impl CheckPathArgs {
             )));
         }
         say!("{} on {}", self.path.display(), instance.title());
+        if let Some(note) = reordered {
+            say!("  {note}");
+        }
         let mut all_valid = true;
         for (i, path) in paths.iter_mut().enumerate() {
             instance.problem.snap_ends(path, self.tolerance);
@@ -127,6 +149,64 @@ impl CheckPathArgs {
             CommandOutcome::InvalidPaths
         })
     }
+}
+
+impl CheckPathArgs {
+    /// Puts `paths` into the robot's coordinate order by the file's joint names `joints`;
+    /// the note to print if it reordered them.
+    ///
+    /// # Errors
+    /// [`HarnessError::PathJoints`] for names that are not the robot's joints, each once;
+    /// [`HarnessError::Usage`] for joint names on a box world's path.
+    fn robot_order(
+        &self,
+        instance: &crate::definition::problem_instance::ProblemInstance,
+        joints: Option<&[String]>,
+        paths: &mut [Vec<Vec<f64>>],
+    ) -> Result<Option<String>, HarnessError> {
+        let Some(file) = joints else {
+            return Ok(None);
+        };
+        let Some((robot, _)) = instance.problem.joints() else {
+            return Err(HarnessError::Usage(format!(
+                "{}: the file names joints, but {} is a box world (coordinates without names)",
+                self.path.display(),
+                instance.title()
+            )));
+        };
+        let order = robot_order(file, &robot).map_err(|mismatch| HarnessError::PathJoints {
+            path: self.path.clone(),
+            mismatch: mismatch.to_string(),
+            robot: robot.join(", "),
+        })?;
+        if order.iter().enumerate().all(|(i, &j)| i == j) {
+            return Ok(None);
+        }
+        reorder(paths, &order);
+        Ok(Some(format!(
+            "the file's joints reordered by name into the robot's coordinate order: {}",
+            robot.join(", ")
+        )))
+    }
+}
+
+/// The paths read from JSON lines: each of at least two states of `dimension` coordinates
+/// (JSON has no NaN, so every coordinate is a finite number).
+fn check_json_paths(paths: &[Vec<Vec<f64>>], dimension: usize) -> Result<(), String> {
+    for (i, path) in paths.iter().enumerate() {
+        if path.len() < 2 {
+            return Err(format!("path {} has {} state(s); a path needs at least two", i + 1, path.len()));
+        }
+        if let Some((k, state)) = path.iter().enumerate().find(|(_, s)| s.len() != dimension) {
+            return Err(format!(
+                "path {}, state {}: {} coordinates where the problem has {dimension}",
+                i + 1,
+                k + 1,
+                state.len()
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The paths of `text`: states one per line, paths separated by blank lines, `#` comments;

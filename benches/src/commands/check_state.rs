@@ -42,8 +42,9 @@ impl CheckStateArgs {
                     parse_state(text).map_err(|m| HarnessError::Usage(format!("--state: {m}")))?;
                 if q.len() != dimension {
                     return Err(HarnessError::Usage(format!(
-                        "--state has {} values; the robot has {dimension} joints",
-                        q.len()
+                        "--state has {} values; the robot has {dimension} joints, in this order: {}",
+                        q.len(),
+                        arm.robot().joint_names().join(", ")
                     )));
                 }
                 vec![("state".to_owned(), q)]

@@ -1,4 +1,4 @@
-//! The listing subcommands: `problems`, `planners`, `robots`, `experiments`.
+//! The listing subcommands: `problems`, `planners`, `robots` (or one robot described), `experiments`.
 
 use clap::Args;
 use mit_star::{Configuration, Parameters};
@@ -189,10 +189,100 @@ impl ExperimentsArgs {
     }
 }
 
-/// `mit-star robots`: the shipped robots, their size, and how to unpack their problems.
-pub(crate) fn print_robots() -> Result<CommandOutcome, HarnessError> {
+/// Options of `mit-star robots`.
+#[derive(Debug, Args)]
+pub struct RobotsArgs {
+    /// Describe this robot instead of listing the shipped ones: a shipped name, a URDF (the
+    /// SRDF beside it: same stem `.srdf`, or the folder's only `*.srdf`; without one, the
+    /// pairs its spheres rule out are not checked, with a warning), or a folder holding one
+    /// URDF and one SRDF. Joints are listed in coordinate order: the order of a state's
+    /// values everywhere (`--state`, `check-path`, the paths written).
+    #[arg(value_name = "NAME|URDF|DIR")]
+    pub robot: Option<String>,
+}
+
+impl RobotsArgs {
+    /// Lists the shipped robots, or describes the one named.
+    ///
+    /// # Errors
+    /// [`HarnessError::Robot`] for a robot that cannot be found or loaded.
+    pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
+        match &self.robot {
+            None => print_robots(),
+            Some(text) => describe_robot(text),
+        }
+    }
+}
+
+/// `mit-star robots ROBOT`: the robot's joints in coordinate order, spheres per link, groups.
+fn describe_robot(text: &str) -> Result<CommandOutcome, HarnessError> {
+    let source = robot::RobotSource::parse(text)?;
+    let model = source.load(false)?;
+    say!("{} (robot `{}`)", source.label(), model.name());
+    if let Some(srdf) = source.srdf() {
+        say!("  SRDF: {}", srdf.display());
+    }
+    let joints = model.joint_space().joints();
     say!(
-        "Shipped robots (`--robot NAME`; or `--robot DIR`, a folder with one URDF and one SRDF):\n"
+        "  {} joints, in coordinate order (the order of a state's values: --state, check-path, the paths written):",
+        joints.len()
+    );
+    let width = joints.iter().map(|j| j.name.len()).max().unwrap_or(0);
+    for (i, joint) in joints.iter().enumerate() {
+        let (kind, limits) = match joint.kind {
+            spaces::JointKind::Revolute { lower, upper } => {
+                ("revolute", format!("[{lower:.6}, {upper:.6}] rad"))
+            }
+            spaces::JointKind::Prismatic { lower, upper } => {
+                ("prismatic", format!("[{lower:.6}, {upper:.6}] m"))
+            }
+            spaces::JointKind::Continuous => (
+                "continuous",
+                "wraps at ±π (values in [-π, π], moved the short way round)".to_owned(),
+            ),
+        };
+        say!("    {i:>2}  {:<width$}  {kind:<10}  {limits}", joint.name);
+    }
+    let held = model.held_joints();
+    if !held.is_empty() {
+        let held: Vec<String> = held.iter().map(|(n, v)| format!("{n} = {v}")).collect();
+        say!("  held joints: {}", held.join(", "));
+    }
+    say!(
+        "  {} spheres on {} links; per link with spheres:",
+        model.spheres().len(),
+        model.links().len()
+    );
+    for (l, link) in model.links().iter().enumerate() {
+        let n = model.link_sphere_range(l).len();
+        if n > 0 {
+            say!("    {:<width$}  {n}", link.name);
+        }
+    }
+    say!(
+        "  {} link pairs checked for self-collision",
+        model.self_collision_pairs().len()
+    );
+    say!(
+        "  RRT range: {} rad by default (RRT-Connect, AORRTC, Informed RRT*; `--set range=X` overrides)",
+        model.rrt_range()
+    );
+    let groups = source.groups()?;
+    if groups.is_empty() {
+        say!("  groups:   none (no SRDF)");
+    } else {
+        say!("  groups:   {} (`--group NAME`)", groups.join(", "));
+    }
+    for warning in model.warnings() {
+        say!("  warning:  {warning}");
+    }
+    Ok(CommandOutcome::Success)
+}
+
+/// `mit-star robots`: the shipped robots, their size, and how to unpack their problems.
+fn print_robots() -> Result<CommandOutcome, HarnessError> {
+    say!(
+        "Shipped robots (`--robot NAME`; or `--robot PATH.urdf`, the SRDF beside it; or `--robot DIR`, a folder with one URDF and one SRDF; `mit-star robots NAME|URDF|DIR` describes one):\n"
     );
     for shipped in robot::ShippedRobot::all() {
         let model = shipped

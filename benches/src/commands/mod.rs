@@ -33,7 +33,7 @@ pub use bench::BenchArgs;
 pub use check_path::CheckPathArgs;
 pub use check_state::CheckStateArgs;
 pub use compare::CompareArgs;
-pub use listings::{ExperimentsArgs, ProblemsArgs};
+pub use listings::{ExperimentsArgs, ProblemsArgs, RobotsArgs};
 pub use merge::MergeArgs;
 pub use plan::PlanArgs;
 pub use problem_args::ProblemArgs;
@@ -80,8 +80,10 @@ pub enum Command {
     Problems(ProblemsArgs),
     /// List the planner configurations and their parameters' defaults.
     Planners,
-    /// List the shipped robots (`--robot NAME`): joints, spheres, and their problem sets.
-    Robots,
+    /// List the shipped robots (`--robot NAME`): joints, spheres, and their problem sets; or
+    /// describe one robot (shipped, a URDF, or a folder): its joints in coordinate order,
+    /// spheres per link, planning groups.
+    Robots(RobotsArgs),
     /// List the shipped experiments, or print one.
     Experiments(ExperimentsArgs),
     /// The paper's re-planning experiment on the Panda: the arm travels between two blocks
@@ -160,7 +162,7 @@ impl Cli {
             Command::Compare(args) => args.run(),
             Command::Problems(args) => args.run(),
             Command::Planners => listings::print_planners(),
-            Command::Robots => listings::print_robots(),
+            Command::Robots(args) => args.run(),
             Command::Experiments(args) => args.run(),
             Command::Replan(args) => args.run(&interrupt),
             Command::Spherise(args) => args.run(&interrupt),

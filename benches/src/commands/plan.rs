@@ -279,6 +279,32 @@ fn print_simplified(s: &mit_star::Simplified, validation: &crate::path_validatio
     print_states(&s.path);
 }
 
+/// The line naming the joints a path's coordinates are, in order, and those that wrap;
+/// `None` without joint names (box worlds).
+pub(crate) fn joints_line(joints: &[String], wrapping: &[bool]) -> Option<String> {
+    if joints.is_empty() {
+        return None;
+    }
+    let wraps: Vec<&str> = joints
+        .iter()
+        .zip(wrapping)
+        .filter(|(_, w)| **w)
+        .map(|(j, _)| j.as_str())
+        .collect();
+    Some(format!(
+        "joints: {}{}",
+        joints.join(", "),
+        if wraps.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " (continuous, wrapping at ±π: {}; interpolate the short way round)",
+                wraps.join(", ")
+            )
+        }
+    ))
+}
+
 /// One line per state, six decimals.
 fn print_states(states: &[Vec<f64>]) {
     for state in states {
@@ -347,6 +373,9 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     }
     if !r.path.is_empty() {
         say!("  path ({} states):", r.path.len());
+        if let Some(line) = joints_line(&r.joints, &r.wrapping) {
+            say!("  {line}");
+        }
         print_states(&r.path);
     }
     for f in files {

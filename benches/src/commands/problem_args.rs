@@ -21,9 +21,11 @@ pub struct ProblemArgs {
     #[arg(long, conflicts_with = "problem")]
     pub problem_file: Option<PathBuf>,
     /// The robot a MotionBenchMaker folder (`--problem mbm:PATH`) is planned for: a shipped
-    /// robot (`mit-star robots`: panda, the default, ur5, fetch, baxter) or a folder holding
-    /// one URDF (a `*_spherized.urdf` preferred) and one SRDF.
-    #[arg(long, value_name = "NAME|DIR")]
+    /// robot (`mit-star robots`: panda, the default, ur5, fetch, baxter), a URDF file (the
+    /// SRDF beside it: same stem `.srdf` or the folder's only one; without one, the pairs its
+    /// spheres rule out are not checked, with a warning), or a folder holding one URDF (a
+    /// `*_spherized.urdf` preferred) and one SRDF.
+    #[arg(long, value_name = "NAME|URDF|DIR")]
     pub robot: Option<String>,
     /// Plan only this SRDF planning group of the robot (`right_arm`); the other joints are
     /// held at the request's start values. Default: the group the folder's requests name
@@ -110,11 +112,14 @@ impl ProblemArgs {
                     .into(),
             ));
         }
+        if let Some(arm) = problem.as_arm() {
+            for note in arm.notes() {
+                eprintln!("note: problem `{}`: {note}", arm.name());
+            }
+        }
         if let Some(arm) = problem.as_arm().filter(|_| check_ends) {
-            arm.check_ends().map_err(|source| HarnessError::Arm {
-                name: arm.name().to_owned(),
-                source,
-            })?;
+            // The arm error names the problem: once is enough.
+            arm.check_ends().map_err(HarnessError::ArmEnd)?;
         }
         let label = source.label();
         problem

@@ -64,6 +64,20 @@ impl InstanceProblem {
         }
     }
 
+    /// What a state's coordinates are, in order: each joint's name and whether it wraps
+    /// (a continuous joint), for an arm; `None` for a box world (coordinates `x0, x1, …`).
+    pub fn joints(&self) -> Option<(Vec<String>, Vec<bool>)> {
+        let arm = self.as_arm()?;
+        let joints = arm.robot().joint_space().joints();
+        Some((
+            joints.iter().map(|j| j.name.clone()).collect(),
+            joints
+                .iter()
+                .map(|j| j.kind == spaces::JointKind::Continuous)
+                .collect(),
+        ))
+    }
+
     /// Allows (or not) a check that may miss thin obstacles: a box world's step coarser than
     /// its thinnest obstacle ([`Problem::allowing_coarse_step`]), an arm's motion checked with
     /// certification off ([`ArmProblem::allowing_uncertified_motion`]).

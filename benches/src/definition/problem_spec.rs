@@ -97,16 +97,36 @@ impl ProblemSpec {
         }
         let label = self.source.label();
         let mut out = Vec::new();
+        // Notes of held joints, each said once with the count of problems it applies to.
+        let mut notes: Vec<(String, String, usize)> = Vec::new();
         for (&dimension, &budget) in self.dimensions.iter().zip(&self.budgets) {
             for &instance in &self.instances {
                 let mut problem = self.source.build(dimension, instance, self.resolution)?;
                 if self.allow_coarse_step {
                     problem = problem.allowing_coarse_step(true);
                 }
+                for note in problem.as_arm().map_or(&[][..], |a| a.notes()) {
+                    // The same note for another problem: counted, not repeated.
+                    let kind = note.split(':').next().unwrap_or_default().to_owned();
+                    match notes.iter_mut().find(|(k, _, _)| *k == kind) {
+                        Some((_, _, n)) => *n += 1,
+                        None => notes.push((
+                            kind,
+                            format!(
+                                "problem `{}`: {note}",
+                                problem
+                                    .as_arm()
+                                    .map_or("", |a| problems::PlanningProblem::name(&**a))
+                            ),
+                            1,
+                        )),
+                    }
+                }
                 if let Some(arm) = problem.as_arm()
                     && let Err(e) = arm.check_ends()
                 {
-                    eprintln!("note: {label} problem {instance} skipped: {e}");
+                    // The error names the problem (folder and index).
+                    eprintln!("note: skipped: {e}");
                     continue;
                 }
                 problem
@@ -127,6 +147,14 @@ impl ProblemSpec {
                     problem,
                 });
             }
+        }
+        for (_, note, n) in notes {
+            let others = match n {
+                1 => String::new(),
+                2 => " (and the same in 1 more problem)".to_owned(),
+                _ => format!(" (and the same in {} more problems)", n - 1),
+            };
+            eprintln!("note: {note}{others}");
         }
         Ok(out)
     }

@@ -7,7 +7,8 @@ use robot::{RobotModel, RobotSource, ShippedRobot};
 use crate::error::HarnessError;
 
 /// A robot named on the command line or in an experiment file: a shipped robot
-/// ([`ShippedRobot`], the Panda by default) or a folder with a URDF and an SRDF, read strictly
+/// ([`ShippedRobot`], the Panda by default), a URDF (the SRDF beside it, if any) or a folder
+/// with a URDF and an SRDF, read strictly
 /// (SRDF and allowed-collision entries naming unknown links are errors) or leniently (they are
 /// warnings).
 ///
@@ -32,8 +33,8 @@ impl RobotChoice {
     /// `base` if given; `strict` as `--strict-robot`.
     ///
     /// # Errors
-    /// [`HarnessError::Robot`] for a name that is neither shipped nor a folder with one URDF
-    /// and one SRDF, listing the shipped names.
+    /// [`HarnessError::Robot`] for a name that is neither shipped nor a URDF nor a folder with
+    /// one URDF and one SRDF, listing the shipped names.
     pub fn parse(
         text: Option<&str>,
         base: Option<&Path>,
@@ -97,11 +98,15 @@ impl RobotChoice {
         }
     }
 
-    /// What an experiment file's `robot` key holds for it: the shipped name, or the folder's
-    /// absolute path.
+    /// What an experiment file's `robot` key holds for it: the shipped name, the URDF's
+    /// absolute path, or the folder's.
     pub fn file_value(&self) -> String {
         match &self.source {
             RobotSource::Shipped(name) => (*name).to_owned(),
+            RobotSource::Urdf { urdf, .. } => std::fs::canonicalize(urdf)
+                .unwrap_or_else(|_| urdf.clone())
+                .display()
+                .to_string(),
             RobotSource::Files { urdf, .. } => {
                 let folder = urdf.parent().unwrap_or(urdf);
                 std::fs::canonicalize(folder)

@@ -167,6 +167,8 @@ impl RunJob {
             final_cost: None,
             trace: Vec::new(),
             path: Vec::new(),
+            joints: Vec::new(),
+            wrapping: Vec::new(),
             validation: None,
             counters: Counters::default(),
             error: None,
@@ -268,6 +270,9 @@ impl RunJob {
                 Some(solution) => {
                     record.final_cost = Some(solution.cost);
                     record.path = solution.path.iter().map(<[f64]>::to_vec).collect();
+                    if let Some((joints, wrapping)) = instance.problem.joints() {
+                        (record.joints, record.wrapping) = (joints, wrapping);
+                    }
                     let validation = instance.problem.validate(&record.path, solution.cost);
                     record.status = if validation.valid {
                         RunStatus::Solved

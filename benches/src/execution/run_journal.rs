@@ -515,6 +515,8 @@ mod tests {
             final_cost: None,
             trace: Vec::new(),
             path: Vec::new(),
+            joints: Vec::new(),
+            wrapping: Vec::new(),
             validation: None,
             counters: mit_star::Counters::default(),
             error: Some("line one\nline two".into()),

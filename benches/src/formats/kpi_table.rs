@@ -385,6 +385,8 @@ mod tests {
                 final_cost: Some(1.0),
                 trace: Vec::new(),
                 path: Vec::new(),
+                joints: Vec::new(),
+                wrapping: Vec::new(),
                 validation: None,
                 counters: mit_star::Counters::default(),
                 error: None,

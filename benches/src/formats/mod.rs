@@ -5,6 +5,8 @@
 //!   strict parser.
 //! - [`planner_arena_database`]: the SQLite database Planner Arena reads (`benchmark.db`), in
 //!   the schema OMPL's `ompl_benchmark_statistics.py` builds, filled from OMPL logs.
+//! - [`path_joints`]: the joint names of a path file `check-path` reads (a `joints:` line, or
+//!   the JSON `plan --json` and `runs.jsonl` write) and the robot's coordinate order.
 //! - [`raw_runs`]: `runs.csv` (one row per run) and `runs.jsonl` (one JSON object per run):
 //!   their columns, rows and lines, and reading the CSV back.
 //! - [`kpi_table`]: the KPI tables (`kpi.md`, the paper's Table I and the full KPIs);
@@ -18,5 +20,6 @@
 pub(crate) mod campaign_comparison;
 pub(crate) mod kpi_table;
 pub(crate) mod ompl_log;
+pub(crate) mod path_joints;
 pub(crate) mod planner_arena_database;
 pub(crate) mod raw_runs;

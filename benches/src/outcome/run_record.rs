@@ -81,6 +81,14 @@ pub struct RunRecord {
     pub trace: Vec<TracePoint>,
     /// The returned path (empty without a solution).
     pub path: Vec<Vec<f64>>,
+    /// The joint each coordinate of the path's states is, in coordinate order (arm problems
+    /// with a path; empty otherwise, and in records written before joints were recorded).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub joints: Vec<String>,
+    /// Per coordinate, `true` for a continuous joint: its value wraps at `±π`, and a motion
+    /// between two states takes the short way round (empty as [`joints`](Self::joints)).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub wrapping: Vec<bool>,
     /// The independent validation of the returned path.
     pub validation: Option<PathValidation>,
     /// The planner's work counters.
@@ -251,6 +259,8 @@ mod tests {
                 cost: 2.0,
             }],
             path: Vec::new(),
+            joints: Vec::new(),
+            wrapping: Vec::new(),
             validation: None,
             counters: Counters::default(),
             error: None,

@@ -37,6 +37,12 @@ impl RobotModel {
         &self.warnings
     }
 
+    /// The same model with `warning` added to its [`warnings`](Self::warnings).
+    pub(crate) fn with_warning(mut self, warning: ModelWarning) -> Self {
+        self.warnings.push(warning);
+        self
+    }
+
     /// Applies an SRDF document: its `disable_collisions` pairs are no longer checked.
     ///
     /// # Errors

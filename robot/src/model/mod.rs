@@ -8,7 +8,8 @@
 //!   `model_pairs.rs` finds the pairs the sphere model rules out (adjacent links, pairs in
 //!   collision everywhere) and the pairs colliding at a configuration; `model_joint.rs` derives
 //!   the coordinates and link frames from the joints (planned, held, mimic; the prismatic
-//!   weight); `planning_group.rs` reads SRDF planning groups and the held joints' values.
+//!   weight); `planning_group.rs` reads SRDF planning groups and the held joints' values;
+//!   `rrt_range.rs` gives the RRT range its problems default to (measured, or a rule).
 //! - [`Kinematics`] (`kinematics.rs`): forward kinematics, link poses and sphere centres, `f32`
 //!   and `f64`, no allocation; its per-joint steps are what the SIMD lanes of `checking` replay.
 //! - [`LeverArms`] (`lever_arms.rs`): how far each link's spheres can move per unit of each
@@ -31,6 +32,7 @@ mod model_pairs;
 mod model_warning;
 mod planning_group;
 mod robot_model;
+mod rrt_range;
 mod srdf;
 mod xml_guard;
 

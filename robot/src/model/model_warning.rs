@@ -51,6 +51,15 @@ pub enum ModelWarning {
         /// The leader's new upper limit.
         upper: f64,
     },
+    /// A URDF loaded without an SRDF: every pair of links with spheres is checked for
+    /// self-collision but those the sphere model rules out (the
+    /// [`DisabledPairs`](Self::DisabledPairs) that follow), as MoveIt's setup assistant would
+    /// generate them; pairs an SRDF would disable for other reasons (never in collision, by
+    /// the mechanism) are checked.
+    NoSrdf {
+        /// The URDF.
+        urdf: String,
+    },
 }
 
 impl fmt::Display for ModelWarning {
@@ -77,6 +86,12 @@ impl fmt::Display for ModelWarning {
                 f,
                 "{origin}: planning group `{group}`: ignored members the model does not have: {}",
                 names.join(", ")
+            ),
+            Self::NoSrdf { urdf } => write!(
+                f,
+                "no SRDF beside `{urdf}` (same stem, or the only *.srdf of its folder): \
+                 checking every pair of links with spheres but those the sphere model rules \
+                 out, and no planning groups"
             ),
             Self::DisabledPairs { reason, pairs } => {
                 let names: Vec<String> = pairs.iter().map(|(a, b)| format!("{a}/{b}")).collect();

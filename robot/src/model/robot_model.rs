@@ -93,6 +93,8 @@ pub struct RobotModel {
     pub(super) pairs: Vec<(usize, usize)>,
     pub(super) strict: bool,
     pub(super) warnings: Vec<ModelWarning>,
+    /// The RRT range set for it (`rrt_range.rs`), if any.
+    pub(super) rrt_range: Option<f64>,
 }
 
 impl RobotModel {
@@ -272,6 +274,7 @@ impl RobotModel {
             pairs,
             strict: false,
             warnings,
+            rrt_range: None,
         };
         model.rebuild()?;
         Ok(model)

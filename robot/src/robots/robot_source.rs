@@ -1,11 +1,12 @@
-//! [`RobotSource`]: a robot named on the command line — a shipped name or a folder.
+//! [`RobotSource`]: a robot named on the command line — a shipped name, a URDF or a folder.
 
 use std::path::{Path, PathBuf};
 
 use crate::{RobotModel, RobotSourceError, ShippedRobot};
 
-/// Where a robot model comes from: a [`ShippedRobot`] by name, or a folder holding one URDF
-/// (a `*_spherized.urdf` is preferred when there are several) and one `*.srdf`.
+/// Where a robot model comes from: a [`ShippedRobot`] by name, a URDF file with the SRDF
+/// beside it if any ([`srdf_beside`](Self::srdf_beside)), or a folder holding one URDF (a
+/// `*_spherized.urdf` is preferred when there are several) and one `*.srdf`.
 ///
 /// ```
 /// let ur5 = robot::RobotSource::parse("ur5")?;
@@ -27,6 +28,15 @@ pub enum RobotSource {
         /// The SRDF.
         srdf: PathBuf,
     },
+    /// A URDF named by its path, and the SRDF beside it if there is one
+    /// ([`srdf_beside`](Self::srdf_beside)).
+    Urdf {
+        /// The URDF (spheres as collision geometry).
+        urdf: PathBuf,
+        /// The SRDF beside it; without one, the model checks every pair of links with spheres
+        /// but those its spheres rule out, with a [`ModelWarning::NoSrdf`](crate::ModelWarning::NoSrdf).
+        srdf: Option<PathBuf>,
+    },
 }
 
 impl Default for RobotSource {
@@ -36,30 +46,35 @@ impl Default for RobotSource {
 }
 
 impl RobotSource {
-    /// A shipped robot's name, or else a folder holding the robot's URDF and SRDF.
+    /// A shipped robot's name, else a URDF file (`*.urdf`, its SRDF found by
+    /// [`srdf_beside`](Self::srdf_beside)), else a folder holding the robot's URDF and SRDF.
     ///
     /// # Errors
     /// [`RobotSourceError::Unknown`] listing the shipped names when `text` is neither a name
-    /// nor a folder; [`RobotSourceError::Missing`] or [`RobotSourceError::Ambiguous`] for a
-    /// folder without one URDF and one SRDF; [`RobotSourceError::Io`] if it cannot be listed.
+    /// nor a URDF nor a folder; [`RobotSourceError::Missing`] or
+    /// [`RobotSourceError::Ambiguous`] for a folder without one URDF and one SRDF (or a URDF
+    /// beside several SRDFs, none of its stem); [`RobotSourceError::Io`] if a folder cannot be
+    /// listed.
     pub fn parse(text: &str) -> Result<Self, RobotSourceError> {
         let text = text.trim();
         if let Some(robot) = ShippedRobot::find(text) {
             return Ok(Self::Shipped(robot.name));
         }
-        let folder = Path::new(text);
+        let path = Path::new(text);
+        if path.is_file() && text.to_ascii_lowercase().ends_with(".urdf") {
+            return Ok(Self::Urdf {
+                urdf: path.to_path_buf(),
+                srdf: Self::srdf_beside(path)?,
+            });
+        }
+        let folder = path;
         if !folder.is_dir() {
             return Err(RobotSourceError::Unknown {
                 name: text.to_owned(),
                 known: ShippedRobot::names(),
             });
         }
-        let entries = std::fs::read_dir(folder).map_err(|source| RobotSourceError::Io {
-            path: folder.to_path_buf(),
-            source,
-        })?;
-        let mut files: Vec<PathBuf> = entries.flatten().map(|e| e.path()).collect();
-        files.sort();
+        let files = listing(folder)?;
         let with = |suffix: &str| -> Vec<PathBuf> {
             files
                 .iter()
@@ -79,11 +94,82 @@ impl RobotSource {
         })
     }
 
+    /// The SRDF of the URDF at `urdf`: in its folder, the file of its stem with `.srdf`
+    /// (`ur5_spherized.srdf`), else of its stem without `_spherized` (`ur5.srdf`), else the
+    /// folder's only `*.srdf`; `None` if the folder has none.
+    ///
+    /// # Errors
+    /// [`RobotSourceError::Ambiguous`] for several SRDFs, none named after the URDF;
+    /// [`RobotSourceError::Io`] if the folder cannot be listed.
+    pub fn srdf_beside(urdf: &Path) -> Result<Option<PathBuf>, RobotSourceError> {
+        let folder = match urdf.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => Path::new("."),
+        };
+        let stem = urdf
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let base = stem.strip_suffix("_spherized").unwrap_or(&stem).to_owned();
+        for name in [&stem, &base] {
+            let srdf = urdf.with_file_name(format!("{name}.srdf"));
+            if srdf.is_file() {
+                return Ok(Some(srdf));
+            }
+        }
+        let srdfs: Vec<PathBuf> = listing(folder)?
+            .into_iter()
+            .filter(|p| p.is_file() && p.to_string_lossy().ends_with(".srdf"))
+            .collect();
+        if srdfs.is_empty() {
+            return Ok(None);
+        }
+        only(folder, "SRDF (*.srdf)", srdfs).map(Some)
+    }
+
     /// The shipped name, or the URDF's path.
     pub fn label(&self) -> String {
         match self {
             Self::Shipped(name) => (*name).to_owned(),
-            Self::Files { urdf, .. } => urdf.display().to_string(),
+            Self::Files { urdf, .. } | Self::Urdf { urdf, .. } => urdf.display().to_string(),
+        }
+    }
+
+    /// The SRDF applied, if any: compiled in for a shipped robot (`None` here), found for
+    /// the others.
+    pub fn srdf(&self) -> Option<&Path> {
+        match self {
+            Self::Shipped(_) => None,
+            Self::Files { srdf, .. } => Some(srdf),
+            Self::Urdf { srdf, .. } => srdf.as_deref(),
+        }
+    }
+
+    /// The planning groups of the robot's SRDF, in file order (empty without one).
+    ///
+    /// # Errors
+    /// [`RobotSourceError::Model`] for an SRDF that cannot be read or parsed.
+    pub fn groups(&self) -> Result<Vec<String>, RobotSourceError> {
+        let model = |source| RobotSourceError::Model {
+            robot: self.label(),
+            source,
+        };
+        match self {
+            Self::Shipped(name) => Ok(ShippedRobot::find(name)
+                .map(ShippedRobot::groups)
+                .unwrap_or_default()),
+            _ => match self.srdf() {
+                None => Ok(Vec::new()),
+                Some(path) => {
+                    let text = std::fs::read_to_string(path).map_err(|source| {
+                        model(crate::ModelError::Io {
+                            path: path.to_path_buf(),
+                            source,
+                        })
+                    })?;
+                    RobotModel::srdf_groups(&text).map_err(model)
+                }
+            },
         }
     }
 
@@ -128,8 +214,44 @@ impl RobotSource {
                 })
                 .map(RobotModel::without_model_pairs)
                 .map_err(model),
+            Self::Urdf {
+                urdf,
+                srdf: Some(srdf),
+            } => Self::Files {
+                urdf: urdf.clone(),
+                srdf: srdf.clone(),
+            }
+            .load_group(strict, group),
+            Self::Urdf { urdf, srdf: None } => {
+                if let Some(group) = group {
+                    return Err(RobotSourceError::NoGroups {
+                        urdf: urdf.clone(),
+                        group: group.to_owned(),
+                    });
+                }
+                RobotModel::from_urdf_file(urdf)
+                    .map(|m| {
+                        m.strict(strict)
+                            .with_warning(crate::ModelWarning::NoSrdf {
+                                urdf: urdf.display().to_string(),
+                            })
+                            .without_model_pairs()
+                    })
+                    .map_err(model)
+            }
         }
     }
+}
+
+/// The entries of `folder`, sorted.
+fn listing(folder: &Path) -> Result<Vec<PathBuf>, RobotSourceError> {
+    let entries = std::fs::read_dir(folder).map_err(|source| RobotSourceError::Io {
+        path: folder.to_path_buf(),
+        source,
+    })?;
+    let mut files: Vec<PathBuf> = entries.flatten().map(|e| e.path()).collect();
+    files.sort();
+    Ok(files)
 }
 
 /// The one file of `files`, or why there is not one.

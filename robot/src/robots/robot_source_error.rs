@@ -11,7 +11,7 @@ use crate::ModelError;
 pub enum RobotSourceError {
     /// Neither a shipped robot's name nor a folder.
     #[error(
-        "`{name}` is neither a shipped robot ({known}) nor a folder holding a URDF and an SRDF"
+        "`{name}` is neither a shipped robot ({known}) nor a URDF file nor a folder holding a URDF and an SRDF"
     )]
     Unknown {
         /// What was given.
@@ -44,6 +44,17 @@ pub enum RobotSourceError {
         path: PathBuf,
         /// The operating system's reason.
         source: std::io::Error,
+    },
+    /// A planning group asked of a URDF without an SRDF.
+    #[error(
+        "robot `{}` has no SRDF (none beside the URDF), so no planning group `{group}`: put its SRDF beside it (same stem, `.srdf`) or plan every joint",
+        urdf.display()
+    )]
+    NoGroups {
+        /// The URDF.
+        urdf: PathBuf,
+        /// The group asked for.
+        group: String,
     },
     /// The files were found but the model could not be made from them.
     #[error("robot `{robot}`: {source}")]

@@ -25,6 +25,10 @@ pub struct ShippedRobot {
     pub unpacked: &'static str,
     /// A scene of its problem set (`box`; Baxter's `bookshelf_tall_both_arms_easy`).
     pub scene: &'static str,
+    /// The RRT extension range its problems default to (RRT-Connect, AORRTC, Informed RRT*;
+    /// `--set range=` overrides it), in radians, chosen by measurement on its problem set
+    /// (`docs/guide/src/your-own-robot.md`, "RRT's range").
+    pub range: f64,
     urdf: &'static str,
     srdf: &'static str,
 }
@@ -40,6 +44,7 @@ const SHIPPED: [ShippedRobot; 4] = [
         ),
         unpacked: "target/{scene}_panda",
         scene: "box",
+        range: 1.0,
         urdf: include_str!("../../data/panda/panda_spherized.urdf"),
         srdf: include_str!("../../data/panda/panda.srdf"),
     },
@@ -49,6 +54,7 @@ const SHIPPED: [ShippedRobot; 4] = [
         problems: concat!(env!("CARGO_MANIFEST_DIR"), "/data/ur5/problems.tar.bz2"),
         unpacked: "target/problems/{scene}_ur5",
         scene: "box",
+        range: 1.0,
         urdf: include_str!("../../data/ur5/ur5_spherized.urdf"),
         srdf: include_str!("../../data/ur5/ur5.srdf"),
     },
@@ -58,6 +64,7 @@ const SHIPPED: [ShippedRobot; 4] = [
         problems: concat!(env!("CARGO_MANIFEST_DIR"), "/data/fetch/problems.tar.bz2"),
         unpacked: "target/problems/{scene}_fetch",
         scene: "box",
+        range: 1.0,
         urdf: include_str!("../../data/fetch/fetch_spherized.urdf"),
         srdf: include_str!("../../data/fetch/fetch.srdf"),
     },
@@ -67,6 +74,7 @@ const SHIPPED: [ShippedRobot; 4] = [
         problems: concat!(env!("CARGO_MANIFEST_DIR"), "/data/baxter/problems.tar.bz2"),
         unpacked: "target/problems/{scene}_baxter",
         scene: "bookshelf_tall_both_arms_easy",
+        range: 0.5,
         urdf: include_str!("../../data/baxter/baxter_spherized.urdf"),
         srdf: include_str!("../../data/baxter/baxter.srdf"),
     },
@@ -135,7 +143,7 @@ impl ShippedRobot {
         if let Some(group) = group {
             model = model.with_group_named(self.srdf, &origin, group)?;
         }
-        Ok(model.without_model_pairs())
+        Ok(model.without_model_pairs().with_rrt_range(self.range))
     }
 }
 
