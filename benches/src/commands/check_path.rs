@@ -195,7 +195,11 @@ impl CheckPathArgs {
 fn check_json_paths(paths: &[Vec<Vec<f64>>], dimension: usize) -> Result<(), String> {
     for (i, path) in paths.iter().enumerate() {
         if path.len() < 2 {
-            return Err(format!("path {} has {} state(s); a path needs at least two", i + 1, path.len()));
+            return Err(format!(
+                "path {} has {} state(s); a path needs at least two",
+                i + 1,
+                path.len()
+            ));
         }
         if let Some((k, state)) = path.iter().enumerate().find(|(_, s)| s.len() != dimension) {
             return Err(format!(
