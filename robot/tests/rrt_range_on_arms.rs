@@ -34,7 +34,7 @@ fn each_shipped_robot_steps_by_its_measured_range_unless_one_is_set() {
         assert_eq!(arm.default_range(), Some(shipped.range), "{robot}");
         let space = arm.space();
         let ompl = default_range(space.dimension(), space.maximum_extent());
-        assert!(ompl > 2.0 * shipped.range, "{robot}: {ompl}");
+        assert!(ompl > shipped.range, "{robot}: {ompl}");
         for configuration in [
             Configuration::RrtConnect,
             Configuration::Aorrtc,
