@@ -112,7 +112,7 @@ fn check_path_never_passes_a_path_that_misses_the_start() {
         }
     }
     // Ends within an accepted tolerance are snapped and the path passes.
-    let mut first = start.clone();
+    let mut first = start;
     first[0] += 5e-5;
     std::fs::write(&file, format!("{}\n{}\n", state(&first), state(&goal))).unwrap();
     let out = mit_star(&[
