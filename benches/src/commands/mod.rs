@@ -97,9 +97,13 @@ pub enum Command {
 
 impl Command {
     /// `true` for the commands that poll the interrupt flag and write what they finished
-    /// when it is raised (`plan`, `bench`, `replan`); the others leave at the first signal.
+    /// when it is raised (`plan`, `bench`, `replan`; `spherise` stops its covers and writes
+    /// nothing); the others leave at the first signal.
     pub fn polls_interrupt(&self) -> bool {
-        matches!(self, Self::Plan(_) | Self::Bench(_) | Self::Replan(_))
+        matches!(
+            self,
+            Self::Plan(_) | Self::Bench(_) | Self::Replan(_) | Self::Spherise(_)
+        )
     }
 }
 
