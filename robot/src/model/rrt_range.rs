@@ -29,7 +29,7 @@ impl RobotModel {
     /// joints left out; 0.2 of the joint space's diagonal (OMPL's rule) for a robot of
     /// prismatic joints only. It gives 0.99 rad for the Panda, 1.05 for the UR5, 0.75 for the
     /// Fetch and 0.61 for the Baxter, within a factor of two of the ranges measured for them
-    /// (1.0, 1.0, 1.0 and 0.5), where OMPL's rule takes 2.6 rad and more (6.2 rad for a
+    /// (1.0, 1.0, 1.25 and 0.5), where OMPL's rule takes 2.6 rad and more (6.2 rad for a
     /// 6-joint arm of `±2π` joints, for which the rule gives 1.05; `docs/guide/src/your-own-robot.md`,
     /// "RRT's range").
     pub fn range_rule(space: &JointSpace) -> f64 {

@@ -64,7 +64,7 @@ const SHIPPED: [ShippedRobot; 4] = [
         problems: concat!(env!("CARGO_MANIFEST_DIR"), "/data/fetch/problems.tar.bz2"),
         unpacked: "target/problems/{scene}_fetch",
         scene: "box",
-        range: 1.0,
+        range: 1.25,
         urdf: include_str!("../../data/fetch/fetch_spherized.urdf"),
         srdf: include_str!("../../data/fetch/fetch.srdf"),
     },
