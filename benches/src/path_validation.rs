@@ -93,6 +93,10 @@ pub struct PathValidation {
     pub length: f64,
     /// What failed first, if anything.
     pub failure: Option<String>,
+    /// Wall-clock seconds the check took, apart from the planner's time (0 where not timed;
+    /// [`InstanceProblem::validate`](crate::InstanceProblem::validate) times it).
+    #[serde(default)]
+    pub seconds: f64,
 }
 
 impl PathValidation {
@@ -215,6 +219,7 @@ impl PathValidation {
             segments_checked: 0,
             length: 0.0,
             failure: None,
+            seconds: 0.0,
         };
         let fail = |mut result: Self, why: String| {
             result.failure = Some(why);

@@ -342,6 +342,8 @@ fn plan_prints_the_result_and_draws_2d_runs() {
     assert!(
         stdout.contains("counters (zeros left out") && stdout.contains("state validity checks")
     );
+    // The independent check's time is shown apart from planning.
+    assert!(stdout.contains("apart from planning)"), "{stdout}");
     for ext in ["svg", "png"] {
         let path = dir.join(format!("goal-enclosure-n2-eit-star-seed3.{ext}"));
         assert!(
@@ -749,4 +751,36 @@ fn check_state_names_what_a_configuration_touches() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("7 joints"), "{stderr}");
+}
+
+#[test]
+fn bench_shows_the_independent_audits_time_apart_from_planning() {
+    let dir = scratch("audit-time");
+    let stdout = succeeded(&[
+        "bench",
+        "--planners",
+        "eit-star",
+        "--problem",
+        "obstacle-free",
+        "--dim",
+        "2",
+        "--runs",
+        "2",
+        "--time",
+        "0.02",
+        "--no-plots",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(
+        stdout.contains("Independent audit of 2 paths:") && stdout.contains("x the planning time"),
+        "{stdout}"
+    );
+    // Each run's record carries its audit time.
+    let jsonl = std::fs::read_to_string(dir.join("runs.jsonl")).unwrap();
+    for line in jsonl.lines() {
+        let run: serde_json::Value = serde_json::from_str(line).unwrap();
+        let seconds = run["validation"]["seconds"].as_f64().unwrap();
+        assert!(seconds > 0.0 && seconds < 60.0, "{line}");
+    }
 }

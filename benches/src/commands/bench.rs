@@ -447,6 +447,9 @@ impl BenchArgs {
         for f in files {
             say!("  {}", f.display());
         }
+        if let Some(line) = audit_summary(&all) {
+            say!("{line}");
+        }
         let invalid = all.invalid_runs();
         if !invalid.is_empty() {
             eprintln!(
@@ -585,5 +588,27 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
             .map(|&i| i as u64)
             .collect(),
         (None, _) => (0..count).collect(),
+    })
+}
+
+/// The independent audit's time over every recorded run with a checked path, apart from
+/// and against the planning time (`run_time`, construction included) of those runs; `None`
+/// when no path was checked.
+fn audit_summary(all: &ExperimentResults) -> Option<String> {
+    let (mut paths, mut audit, mut planning) = (0usize, 0.0, 0.0);
+    for run in all.all_runs() {
+        if let Some(v) = &run.validation {
+            paths += 1;
+            audit += v.seconds;
+            planning += run.run_time;
+        }
+    }
+    (paths > 0).then(|| {
+        format!(
+            "Independent audit of {paths} paths: {} in all, {}x the planning time of those runs ({}); not counted in any planner's time.",
+            crate::commands::plan::audit_time(audit),
+            crate::formats::kpi_table::number(audit / planning.max(f64::MIN_POSITIVE)),
+            crate::commands::plan::audit_time(planning)
+        )
     })
 }

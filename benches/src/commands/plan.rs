@@ -264,10 +264,11 @@ fn print_simplified(s: &mit_star::Simplified, validation: &crate::path_validatio
     );
     if validation.valid {
         say!(
-            "  simplified path validated independently, {} ({} segments, {} states):",
+            "  simplified path validated independently, {} ({} segments, {} states, {}):",
             validation.method.describe(),
             validation.segments_checked,
-            validation.states_checked
+            validation.states_checked,
+            audit_time(validation.seconds)
         );
     } else {
         say!(
@@ -305,6 +306,15 @@ pub(crate) fn joints_line(joints: &[String], wrapping: &[bool]) -> Option<String
     ))
 }
 
+/// The independent check's time in words: `0.42 ms`, `1.3 s`.
+pub(crate) fn audit_time(seconds: f64) -> String {
+    if seconds < 1.0 {
+        format!("{} ms", number(seconds * 1e3))
+    } else {
+        format!("{} s", number(seconds))
+    }
+}
+
 /// One line per state, six decimals.
 fn print_states(states: &[Vec<f64>]) {
     for state in states {
@@ -325,10 +335,11 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     let validation = r.validation.as_ref();
     match r.status {
         RunStatus::Solved => say!(
-            "  solved; path validated independently, {} ({} segments, {} states)",
+            "  solved; path validated independently, {} ({} segments, {} states, {} apart from planning)",
             validation.map_or_else(String::new, |v| v.method.describe()),
             validation.map_or(0, |v| v.segments_checked),
-            validation.map_or(0, |v| v.states_checked)
+            validation.map_or(0, |v| v.states_checked),
+            audit_time(validation.map_or(0.0, |v| v.seconds))
         ),
         RunStatus::Unsolved => say!("  no solution within the budget"),
         RunStatus::InvalidPath => say!(

@@ -252,8 +252,12 @@ impl InstanceProblem {
 
     /// Validates a returned path independently of the planner: exactly for box worlds,
     /// continuously in `f64` for arms ([`PathValidation::check_continuous`]).
+    ///
+    /// The check's own time is recorded in [`PathValidation::seconds`], so that reports
+    /// show it apart from planning.
     pub fn validate(&self, path: &[Vec<f64>], reported_cost: f64) -> PathValidation {
-        match self {
+        let started = std::time::Instant::now();
+        let mut validation = match self {
             Self::Boxes(p) => PathValidation::check(p, path, reported_cost),
             Self::Arm(p) => PathValidation::check_continuous(
                 &MotionAudit::new(p.robot(), p.scene()),
@@ -262,7 +266,9 @@ impl InstanceProblem {
                 reported_cost,
                 AUDIT_BUDGET,
             ),
-        }
+        };
+        validation.seconds = started.elapsed().as_secs_f64();
+        validation
     }
 
     /// The problem as text for logs: a TOML problem file for box worlds.
