@@ -407,7 +407,8 @@ fn experiment_names_cannot_escape_and_missing_files_are_input_errors() {
 
 #[test]
 fn impossible_run_counts_are_refused_before_allocating() {
-    // `--runs 1000000000000` aborted on allocation; now it is an input error naming memory.
+    // `--runs 1000000000000` aborted on allocation; now it is an input error naming the cap on
+    // the runs an experiment may schedule, checked before anything is built.
     let output = scratch("huge");
     let out = binary()
         .args([
@@ -429,6 +430,10 @@ fn impossible_run_counts_are_refused_before_allocating() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
-    assert!(stderr(&out).contains("memory"));
+    let text = stderr(&out);
+    assert!(
+        text.contains("schedules 1000000000000 runs") && text.contains("at most 10000000"),
+        "{text}"
+    );
     let _ = std::fs::remove_dir_all(&output);
 }
