@@ -66,7 +66,10 @@ fn each_shipped_robot_steps_by_its_measured_range_unless_one_is_set() {
             );
         }
     }
-    assert_eq!(distinct, 2, "the Panda's and the UR5's ranges differ from the planners'");
+    assert_eq!(
+        distinct, 2,
+        "the Panda's and the UR5's ranges differ from the planners'"
+    );
     let boxes = problems::DividingWalls::new(2).build().unwrap();
     assert_eq!(boxes.default_range(), None);
     assert_eq!(
