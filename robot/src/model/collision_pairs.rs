@@ -68,12 +68,7 @@ impl RobotModel {
     /// # Errors
     /// [`ModelError::Io`] if it cannot be read, else as [`with_srdf_str`](Self::with_srdf_str).
     pub fn with_srdf_file(self, path: &Path) -> Result<Self, ModelError> {
-        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "SRDF")
-            .map_err(std::io::Error::from)
-            .map_err(|source| ModelError::Io {
-                path: path.to_path_buf(),
-                source,
-            })?;
+        let text = ModelError::read_text(path, "SRDF")?;
         let origin = path.display().to_string();
         let pairs = crate::model::srdf::disabled_pairs(&text, &origin)?;
         self.disable(&pairs, &origin)

@@ -117,12 +117,7 @@ impl RobotModel {
     /// # Errors
     /// [`ModelError::Io`] if it cannot be read, else as [`with_group_str`](Self::with_group_str).
     pub fn with_group_file(self, path: &Path, group: &str) -> Result<Self, ModelError> {
-        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "SRDF")
-            .map_err(std::io::Error::from)
-            .map_err(|source| ModelError::Io {
-                path: path.to_path_buf(),
-                source,
-            })?;
+        let text = ModelError::read_text(path, "SRDF")?;
         self.with_group_named(&text, &path.display().to_string(), group)
     }
 

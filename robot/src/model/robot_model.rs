@@ -103,12 +103,7 @@ impl RobotModel {
     /// # Errors
     /// [`ModelError::Io`] if it cannot be read, else as [`from_urdf_str`](Self::from_urdf_str).
     pub fn from_urdf_file(path: &Path) -> Result<Self, ModelError> {
-        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "URDF")
-            .map_err(std::io::Error::from)
-            .map_err(|source| ModelError::Io {
-                path: path.to_path_buf(),
-                source,
-            })?;
+        let text = ModelError::read_text(path, "URDF")?;
         Self::parse(&text, &path.display().to_string())
     }
 
