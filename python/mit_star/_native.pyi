@@ -156,8 +156,9 @@ class ExperimentResults:
     """Every finished run of an experiment."""
 
     def records(self, *, paths: bool = False) -> list[dict[str, Any]]:
-        """One flat dict per run (pandas: ``DataFrame(results.records())``); with
-        ``paths=True`` also ``path`` and, for an arm, ``joints`` (the joint each coordinate
+        """One flat dict per run (pandas: ``DataFrame(results.records())``), with
+        ``validation_seconds``, the independent check's own time apart from ``run_time``;
+        with ``paths=True`` also ``path`` and, for an arm, ``joints`` (the joint each coordinate
         is, in order) and ``wrapping`` (``True`` for a continuous joint: the short way round)."""
     def table(self, *, paths: bool = False) -> dict[str, list[Any]]:
         """The runs as a dict of columns (pandas: ``DataFrame(results.table())``)."""

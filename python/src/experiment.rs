@@ -127,8 +127,9 @@ pub struct PyExperimentResults {
 }
 
 impl PyExperimentResults {
-    /// Every run as a flat JSON object: the record's scalars, `valid` and `validation_failure`
-    /// from its path validation, the counters' fields, the trace as `[seconds, cost]` pairs and
+    /// Every run as a flat JSON object: the record's scalars, `valid`, `validation_failure`
+    /// and `validation_seconds` (the independent check's own time) from its path validation,
+    /// the counters' fields, the trace as `[seconds, cost]` pairs and
     /// (with `paths`) the path with, for an arm, its `joints` and `wrapping`.
     fn flat_records(&self, paths: bool) -> BindingResult<Vec<serde_json::Map<String, Value>>> {
         let mut rows = Vec::new();
@@ -149,8 +150,10 @@ impl PyExperimentResults {
             let validation = row.remove("validation");
             let valid = validation.as_ref().and_then(|v| v.get("valid")).cloned();
             let failure = validation.as_ref().and_then(|v| v.get("failure")).cloned();
+            let seconds = validation.as_ref().and_then(|v| v.get("seconds")).cloned();
             row.insert("valid".into(), valid.unwrap_or(Value::Null));
             row.insert("validation_failure".into(), failure.unwrap_or(Value::Null));
+            row.insert("validation_seconds".into(), seconds.unwrap_or(Value::Null));
             if let Some(Value::Array(points)) = row.get_mut("trace") {
                 for point in points.iter_mut() {
                     let (t, c) = (point.get("time").cloned(), point.get("cost").cloned());
@@ -167,7 +170,8 @@ impl PyExperimentResults {
 impl PyExperimentResults {
     /// One `dict` per finished run: `instance`, `planner`, `configuration`, `run`, `seed`,
     /// `budget`, `status`, `setup_time`, `run_time`, `initial_time`, `initial_cost`,
-    /// `final_cost`, `valid`, `error`, the counters (`iterations`, `samples`, …) and `trace`
+    /// `final_cost`, `valid`, `validation_seconds` (the independent check's time, apart from
+    /// `run_time`), `error`, the counters (`iterations`, `samples`, …) and `trace`
     /// (`[seconds, cost]` pairs); with `paths=True` also `path` (a list of states) and, for
     /// an arm, `joints` (the joint each coordinate is, in order) and `wrapping` (`True` for a
     /// continuous joint: interpolate it the short way round).

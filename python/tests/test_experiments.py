@@ -31,6 +31,8 @@ def test_run_an_experiment_file_and_read_it_back(tmp_path: Path) -> None:
         assert key in row, key
     assert all(r["valid"] for r in records if r["final_cost"] is not None)
     assert "path" not in row and "path" in results.records(paths=True)[0]
+    # The independent check's time, apart from the planner's.
+    assert all(r["validation_seconds"] > 0 for r in records if r["final_cost"] is not None)
     table = results.table()
     assert len(table["planner"]) == 4 and set(table["planner"]) == {"MIT*", "EIT*"}
     assert "| dividing-walls" in results.kpi_markdown()
