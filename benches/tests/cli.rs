@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-mod common;
+use crate::common;
 use common::{refused, succeeded};
 
 /// An empty scratch path for this test file.

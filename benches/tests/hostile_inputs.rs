@@ -3,7 +3,7 @@
 //! parameter values, and signals during long work. Each is a typed error (exit code 2) naming
 //! what is wrong, or a kept promise.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

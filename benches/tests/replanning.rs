@@ -1,7 +1,7 @@
 //! `mit-star replan`: a tiny re-planning experiment runs end to end (deterministic iteration
 //! budgets), writes its tables and pictures, and bad options are refused before any trial.
 
-mod common;
+use crate::common;
 use common::{refused, succeeded};
 
 /// Two trials of two planners, two legs each, on iteration budgets (deterministic).

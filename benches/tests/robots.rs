@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-mod common;
+use crate::common;
 use common::{mit_star, refused, succeeded};
 
 /// `mbm:` and the sample UR5 box folder.

@@ -11,7 +11,7 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use mit_star_benches::BenchmarkLog;
 
-mod common;
+use crate::common;
 
 fn binary() -> Command {
     Command::new(env!("CARGO_BIN_EXE_mit-star"))

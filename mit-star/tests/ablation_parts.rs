@@ -1,7 +1,7 @@
 //! The parts the ablation study switches (issue 12): the suspension rule as a guidance wrapper,
 //! and the counters that show what the sampler, the estimated informed set and the checkers did.
 
-mod common;
+use crate::common;
 
 use common::fingerprint;
 use heuristics::Euclidean;

@@ -2,7 +2,7 @@
 //! random rectangles in R^2, R^4 and R^8, at the paper's resolution. Every returned path must be
 //! valid and every trace monotone; the easier problems must be solved within the budget.
 
-mod common;
+use crate::common;
 
 use std::time::Duration;
 

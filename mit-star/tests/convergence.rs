@@ -1,7 +1,7 @@
 //! Asymptotic behaviour (spec §10): on problems with a known optimum, the cost approaches it as
 //! the planner is given more iterations.
 
-mod common;
+use crate::common;
 
 use common::{assert_solution_sound, assert_trace_monotone, path_is_valid};
 use mit_star::{

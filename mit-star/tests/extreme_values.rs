@@ -2,7 +2,7 @@
 //! (`build_planner`): a typed error, or a planner that runs, keeps its deadline and returns a
 //! valid path — never a panic.
 
-mod common;
+use crate::common;
 
 use std::time::Duration;
 

@@ -1,7 +1,7 @@
 //! The planners' guarantees (spec §10): valid paths, monotone traces, determinism (also across
 //! threads), the deadline, `clear`, repeated `solve`, observers, and typed errors for bad input.
 
-mod common;
+use crate::common;
 
 use std::sync::{Arc, Mutex};
 use std::time::Duration;

@@ -4,7 +4,7 @@
 //! are polled or cost `O(goals)` per batch, so a 50 ms budget is kept with 5 000 or 20 000 goals
 //! as with one.
 
-mod common;
+use crate::common;
 
 use std::time::Duration;
 

@@ -2,7 +2,7 @@
 //! planner's best solution and bounds its search; an invalid one, or one that does not join the
 //! query, is refused; planners that return their first solution ignore offers.
 
-mod common;
+use crate::common;
 
 use common::path_is_valid;
 use mit_star::{

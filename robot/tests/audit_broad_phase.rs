@@ -7,8 +7,7 @@
 use proptest::prelude::*;
 use robot::{ArmProblem, AuditVerdict, MotionAudit, RobotModel, Scene};
 
-#[path = "support/arm_cases.rs"]
-mod arm_cases;
+use crate::arm_cases;
 use arm_cases::{edge, obstacle};
 
 const PANDA_URDF: &str = include_str!("../data/panda/panda_spherized.urdf");

@@ -6,8 +6,7 @@ use mit_star::{BatchEvent, Configuration, Parameters};
 use problems::{PAPER_BATCH_SIZE, PlanningProblem};
 use robot::ArmProblem;
 
-#[path = "support/cage_batches.rs"]
-mod cage_batches;
+use crate::cage_batches;
 use cage_batches::{batches, cage};
 
 #[test]

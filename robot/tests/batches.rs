@@ -18,8 +18,7 @@ use validity::{Preparation, Segment, StateValidity};
 
 const TOLERANCE: f64 = 1e-4;
 
-#[path = "support/arm_cases.rs"]
-mod arm_cases;
+use crate::arm_cases;
 use arm_cases::panda;
 
 fn obstacle() -> impl Strategy<Value = Obstacle> {

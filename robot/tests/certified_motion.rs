@@ -9,8 +9,7 @@ use spaces::{Never, Stop};
 use std::cell::Cell;
 use validity::{EdgeStatus, MotionProgress, StateValidity};
 
-#[path = "support/arm_cases.rs"]
-mod arm_cases;
+use crate::arm_cases;
 use arm_cases::{HOME, edge, obstacle, panda, reference_hit, tab_scene};
 
 fn certify(

@@ -7,8 +7,7 @@ use robot::{AuditVerdict, MotionAudit, ParryChecker, Scene};
 use spaces::StateSpace;
 use validity::StateValidity;
 
-#[path = "support/arm_cases.rs"]
-mod arm_cases;
+use crate::arm_cases;
 use arm_cases::{HOME, edge, obstacle, panda, reference_hit, tab_scene};
 
 /// A collision the audit reports is real: the reference, every sphere grown by 1 µm, sees it.

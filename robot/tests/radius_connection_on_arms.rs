@@ -6,8 +6,7 @@ use mit_star::{Configuration, Connection, Parameters};
 use problems::PlanningProblem;
 use spaces::StateSpace;
 
-#[path = "support/cage_batches.rs"]
-mod cage_batches;
+use crate::cage_batches;
 use cage_batches::{batches, cage};
 
 #[test]

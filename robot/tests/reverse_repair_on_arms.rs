@@ -6,8 +6,7 @@ use mit_star::{
     TimeLimit, build_planner,
 };
 
-#[path = "support/cage_batches.rs"]
-mod cage_batches;
+use crate::cage_batches;
 use cage_batches::cage;
 
 /// Solves to the first solution and returns the planner's (restarts, repairs).

@@ -8,8 +8,7 @@ use mit_star::{
 use problems::{PAPER_SPARSE_SPACING, PlanningProblem};
 use robot::ArmProblem;
 
-#[path = "support/cage_batches.rs"]
-mod cage_batches;
+use crate::cage_batches;
 use cage_batches::cage;
 
 /// The seeds each measurement pools: one run's average depends on which edges its graph

@@ -1,0 +1,20 @@
+//! The crate's integration tests, built as one binary: every file beside this one is a
+//! module of it, so the generic code they share is compiled and linked once, not once per
+//! file. A new test file must be declared below (a test of `mit-star-benches` checks that
+//! every file in a `tests/` folder is).
+
+mod common;
+
+mod arm_experiment;
+mod cli;
+mod durability;
+mod extreme_values;
+mod hostile_inputs;
+mod outputs;
+mod reliability;
+mod replanning;
+mod robots;
+mod shards;
+mod single_writer;
+mod spherise_limits;
+mod test_layout;

@@ -1,0 +1,8 @@
+//! The crate's integration tests, built as one binary: every file beside this one is a
+//! module of it, so the generic code they share is compiled and linked once, not once per
+//! file. A new test file must be declared below (a test of `mit-star-benches` checks that
+//! every file in a `tests/` folder is).
+
+mod example_files;
+mod extreme_values;
+mod families;

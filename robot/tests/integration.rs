@@ -1,0 +1,32 @@
+//! The crate's integration tests, built as one binary: every file beside this one is a
+//! module of it, so the generic code they share is compiled and linked once, not once per
+//! file. A new test file must be declared below (a test of `mit-star-benches` checks that
+//! every file in a `tests/` folder is).
+
+#[path = "support/arm_cases.rs"]
+mod arm_cases;
+#[path = "support/cage_batches.rs"]
+mod cage_batches;
+
+mod audit_broad_phase;
+mod batch_size_on_arms;
+mod batches;
+mod certified_motion;
+mod hostile_models;
+mod joint_kinds;
+mod mesh_formats;
+mod mimic_limits;
+mod model;
+mod motion_audit;
+mod one_sided;
+mod other_robots;
+mod parry_agreement;
+mod radius_connection_on_arms;
+mod reverse_repair_on_arms;
+mod rrt_range_on_arms;
+mod scenes;
+mod short_slices;
+mod simplified_arm_paths;
+mod sparse_spacing_on_arms;
+mod sphere_cover;
+mod sphere_less_links;
