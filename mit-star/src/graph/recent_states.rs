@@ -18,6 +18,9 @@
 /// accumulated column by column in loops the compiler vectorises. The ring starts with room for
 /// [`FIRST_ROOM`](Self::FIRST_ROOM) states and doubles while the log outgrows it, up to its
 /// capacity: a search solved within a few batches never allocates (and zeroes) the full ring.
+/// The first room is also held to [`FIRST_BYTES`](Self::FIRST_BYTES): in R^1000, 512 states
+/// would be a 4 MB allocation whose pages the very first push touches one per column (a
+/// millisecond of page faults inside the planner's construction, past a 1 ms budget).
 #[derive(Debug, Clone)]
 pub(crate) struct RecentStates {
     dimension: usize,
@@ -38,6 +41,22 @@ pub(crate) struct RecentStates {
 impl RecentStates {
     /// The states a ring first makes room for (or its capacity, if smaller).
     pub(crate) const FIRST_ROOM: usize = 512;
+
+    /// The most bytes the first room may take (a smaller room in high dimensions, at least
+    /// [`MIN_FIRST_ROOM`](Self::MIN_FIRST_ROOM) states).
+    pub(crate) const FIRST_BYTES: usize = 64 * 1024;
+
+    /// The fewest states a first room holds, whatever the dimension.
+    pub(crate) const MIN_FIRST_ROOM: usize = 8;
+
+    /// The room of the first allocation: [`FIRST_ROOM`](Self::FIRST_ROOM) states, fewer when
+    /// they would take more than [`FIRST_BYTES`](Self::FIRST_BYTES), never beyond the capacity.
+    fn first_room(&self) -> usize {
+        let bytes_per_state = self.dimension.max(1) * size_of::<f64>();
+        (Self::FIRST_BYTES / bytes_per_state)
+            .clamp(Self::MIN_FIRST_ROOM, Self::FIRST_ROOM)
+            .min(self.capacity)
+    }
 
     /// An empty ring for the last `capacity` states of `dimension` coordinates.
     pub(crate) fn new(dimension: usize, capacity: usize) -> Self {
@@ -88,10 +107,10 @@ impl RecentStates {
         self.held = (self.held + 1).min(self.room);
     }
 
-    /// Doubles the room (to [`FIRST_ROOM`](Self::FIRST_ROOM) at first, never beyond the
+    /// Doubles the room (to its [first room](Self::first_room) at first, never beyond the
     /// capacity), moving the held states to their slots in the larger columns.
     fn grow(&mut self) {
-        let room = (2 * self.room).clamp(Self::FIRST_ROOM.min(self.capacity), self.capacity);
+        let room = (2 * self.room).clamp(self.first_room(), self.capacity);
         let mut columns = vec![0.0; room * self.dimension];
         for p in self.end - self.held..self.end {
             let (from, to) = (p % self.room, p % room);
@@ -273,6 +292,23 @@ mod tests {
             }
         }
         assert_eq!(r.room, capacity);
+    }
+
+    #[test]
+    fn the_first_room_of_a_high_dimensional_ring_is_small() {
+        // Before: 512 states whatever the dimension, 4 MB in R^1000.
+        let mut r = RecentStates::new(1000, 16_384);
+        r.push(&[0.5; 1000]);
+        assert_eq!(r.room, RecentStates::MIN_FIRST_ROOM);
+        assert!(r.columns.len() * size_of::<f64>() <= RecentStates::FIRST_BYTES);
+        let state: Vec<f64> = (0..1000).map(f64::from).collect();
+        for _ in 0..100 {
+            r.push(&state);
+        }
+        assert_eq!(r.room, 128, "the room doubles from its first size");
+        let mut low = RecentStates::new(7, 16_384);
+        low.push(&[0.0; 7]);
+        assert_eq!(low.room, RecentStates::FIRST_ROOM, "low dimensions keep 512");
     }
 
     #[test]
