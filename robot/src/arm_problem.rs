@@ -466,65 +466,48 @@ fn collision_summary(d: &crate::StateDiagnosis) -> String {
             format!("gap {:.3} mm, within the checker's margin", gap * 1e3)
         }
     };
-    let more = |n: usize| {
-        if n > SHOWN {
-            format!(", and {} more", n - SHOWN)
-        } else {
-            String::new()
-        }
-    };
     let mut parts = Vec::new();
     if !d.itself.is_empty() {
-        let pairs: Vec<String> = d
-            .itself
-            .iter()
-            .take(SHOWN)
-            .map(|c| format!("{}/{} ({})", c.link, c.other, depth(c.gap)))
-            .collect();
-        parts.push(format!(
-            "itself: links {}{}",
-            pairs.join(", "),
-            more(d.itself.len())
-        ));
+        let pairs = listed(&d.itself, SHOWN, |c| {
+            format!("{}/{} ({})", c.link, c.other, depth(c.gap))
+        });
+        parts.push(format!("itself: links {pairs}"));
     }
     if !d.scene.is_empty() {
-        let contacts: Vec<String> = d
-            .scene
-            .iter()
-            .take(SHOWN)
-            .map(|c| {
-                format!(
-                    "link {} meets obstacle {} ({})",
-                    c.link,
-                    c.other,
-                    depth(c.gap)
-                )
-            })
-            .collect();
-        parts.push(format!(
-            "the scene: {}{}",
-            contacts.join(", "),
-            more(d.scene.len())
-        ));
+        let contacts = listed(&d.scene, SHOWN, |c| {
+            format!(
+                "link {} meets obstacle {} ({})",
+                c.link,
+                c.other,
+                depth(c.gap)
+            )
+        });
+        parts.push(format!("the scene: {contacts}"));
     }
     if !d.limits.is_empty() {
-        let joints: Vec<String> = d
-            .limits
-            .iter()
-            .map(|v| {
-                format!(
-                    "joint {} = {} outside [{}, {}]",
-                    v.joint, v.value, v.lower, v.upper
-                )
-            })
-            .collect();
-        parts.push(format!("its limits: {}", joints.join(", ")));
+        let joints = listed(&d.limits, usize::MAX, |v| {
+            format!(
+                "joint {} = {} outside [{}, {}]",
+                v.joint, v.value, v.lower, v.upper
+            )
+        });
+        parts.push(format!("its limits: {joints}"));
     }
     if parts.is_empty() {
         "something the diagnosis cannot name (run `mit-star check-state`)".to_owned()
     } else {
         parts.join("; ")
     }
+}
+
+/// The first `shown` of `items`, each written by `each`, joined by commas, then `, and N more`
+/// for the rest.
+fn listed<T>(items: &[T], shown: usize, each: impl Fn(&T) -> String) -> String {
+    let mut text: Vec<String> = items.iter().take(shown).map(each).collect();
+    if items.len() > shown {
+        text.push(format!("and {} more", items.len() - shown));
+    }
+    text.join(", ")
 }
 
 /// Moves values within [`ArmProblem::LIMIT_TOLERANCE`] outside a joint's limits onto them,
