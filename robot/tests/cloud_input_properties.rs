@@ -241,3 +241,45 @@ fn the_robot_filter_refuses_bad_configurations_and_padding() {
     assert!(robot::crop_to_ball(&mut points, DVec3::ZERO, -1.0).is_err());
     assert!(robot::crop_to_box(&mut points, DVec3::ONE, DVec3::ZERO).is_err());
 }
+
+/// VAMP's benchmark protocol on a MotionBenchMaker problem: 10 000 points on each primitive,
+/// cropped to the Panda's reach around its first joint, one point per 2 cm. The start is
+/// valid, so no sampled point lies within a sphere there: the robot filter without padding
+/// removes nothing.
+#[test]
+fn the_benchmark_protocol_on_table_pick() {
+    use problems::PlanningProblem;
+    let folder = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/mbm/table_pick_panda"
+    );
+    let problem = ArmProblem::panda_mbm(folder.as_ref(), 1).unwrap();
+    let obstacles = problem.scene().obstacles();
+    let cloud = robot::sample_surfaces(obstacles, robot::DEFAULT_SAMPLES_PER_OBSTACLE, 0).unwrap();
+    assert_eq!(cloud.len(), obstacles.len() * 10_000);
+    assert!(cloud.points.iter().all(|p| {
+        obstacles
+            .iter()
+            .any(|o| o.distance_f64(p.as_dvec3()) <= 1e-5)
+    }));
+    let mut points = cloud.points;
+    let crop = robot::crop_to_ball(&mut points, DVec3::new(0.0, 0.0, 0.333), 1.19).unwrap();
+    let mut voxels = points.clone();
+    let thin = robot::min_distance_downsample(&mut points, 0.02).unwrap();
+    let arm =
+        robot::remove_robot_points(&mut points, problem.robot(), problem.start(), 0.0).unwrap();
+    assert_eq!(arm.removed(), 0);
+    assert!(thin.after < thin.before / 4, "{thin:?}");
+    eprintln!(
+        "table_pick #1: {} obstacles, {} points; crop {} left in {:?}; 2 cm apart {} in {:?}; robot {:?}",
+        obstacles.len(),
+        crop.before,
+        crop.after,
+        crop.elapsed,
+        thin.after,
+        thin.elapsed,
+        arm.elapsed
+    );
+    let grid = robot::voxel_downsample(&mut voxels, 0.02).unwrap();
+    eprintln!("  voxels of 2 cm: {} in {:?}", grid.after, grid.elapsed);
+}

@@ -8,8 +8,24 @@ use super::cell_hash::{CellMap, cell_of};
 use super::cloud_input_error::CloudInputError;
 use super::filter_report::FilterReport;
 
-/// Marks the end of a cell's chain.
+/// More points than the filter's `u32` indices can name.
 const NONE: u32 = u32::MAX;
+
+/// The 27 cells around a cell, itself first (the likeliest to hold close points).
+const NEIGHBOURS: [[i64; 3]; 27] = {
+    let mut out = [[0; 3]; 27];
+    let mut k = 1;
+    let mut i = 0;
+    while i < 27 {
+        let d = [i / 9 - 1, i / 3 % 3 - 1, i % 3 - 1];
+        if d[0] != 0 || d[1] != 0 || d[2] != 0 {
+            out[k] = d;
+            k += 1;
+        }
+        i += 1;
+    }
+    out
+};
 
 /// Keeps points in the cloud's order, dropping each point that lies closer than `radius` to
 /// a point already kept: the kept points are at least `radius` apart, and every removed point
@@ -19,8 +35,9 @@ const NONE: u32 = u32::MAX;
 /// kept point by `radius` rather than a voxel's diagonal, at about three times the cost (27
 /// cells looked at per point).
 ///
-/// A hash grid of cells of side `radius` holds the kept points, chained through one array: two
-/// allocations, none per point.
+/// The points are bucketed in a hash grid of cells of side `radius` (a counting sort: one
+/// hash look-up per point), then each kept point looks at its cell and the 26 around it and
+/// removes the later points too close to it. A handful of allocations, none per point.
 ///
 /// # Errors
 /// [`CloudInputError::Parameter`] for a radius that is not finite and positive.
@@ -44,41 +61,64 @@ pub fn min_distance_downsample(
     let before = points.len();
     let inverse = 1.0 / radius;
     let limit = radius * radius;
-    let mut heads: CellMap<u32> = CellMap::with_capacity_and_hasher(before / 4, Default::default());
-    let mut next = vec![NONE; before];
-    let mut kept = 0_usize;
-    for read in 0..before {
-        let p = points[read];
-        let [cx, cy, cz] = cell_of(p, inverse);
-        let mut crowded = false;
-        'cells: for dx in -1..=1_i64 {
-            for dy in -1..=1_i64 {
-                for dz in -1..=1_i64 {
-                    let cell = [
-                        cx.wrapping_add(dx),
-                        cy.wrapping_add(dy),
-                        cz.wrapping_add(dz),
-                    ];
-                    let mut at = heads.get(&cell).copied().unwrap_or(NONE);
-                    while at != NONE {
-                        let q = points[at as usize];
-                        if p.as_dvec3().distance_squared(q.as_dvec3()) < limit {
-                            crowded = true;
-                            break 'cells;
-                        }
-                        at = next[at as usize];
-                    }
+    // Bucket the points by cell (side `radius`): a cell's points are
+    // `members[first[c]..first[c + 1]]`, in the cloud's order (a counting sort).
+    let mut cells: CellMap<u32> = CellMap::with_capacity_and_hasher(before / 8, Default::default());
+    let mut cell_of_point = Vec::with_capacity(before);
+    for &p in points.iter() {
+        let fresh = cells.len() as u32;
+        cell_of_point.push(*cells.entry(cell_of(p, inverse)).or_insert(fresh));
+    }
+    let mut first = vec![0_u32; cells.len() + 1];
+    for &c in &cell_of_point {
+        first[c as usize + 1] += 1;
+    }
+    for c in 1..first.len() {
+        first[c] += first[c - 1];
+    }
+    let mut fill = first.clone();
+    let mut members = vec![0_u32; before];
+    for (i, &c) in cell_of_point.iter().enumerate() {
+        members[fill[c as usize] as usize] = i as u32;
+        fill[c as usize] += 1;
+    }
+    // In the cloud's order, each point not yet removed is kept and removes the later points
+    // closer than `radius` (they lie in its cell or the 26 around it): the point is kept
+    // exactly when no earlier kept point is that close. Cells are looked up per kept point
+    // only.
+    let mut removed = vec![false; before];
+    for i in 0..before {
+        if removed[i] {
+            continue;
+        }
+        let p = points[i].as_dvec3();
+        let [cx, cy, cz] = cell_of(points[i], inverse);
+        for [dx, dy, dz] in NEIGHBOURS {
+            let cell = [
+                cx.wrapping_add(dx),
+                cy.wrapping_add(dy),
+                cz.wrapping_add(dz),
+            ];
+            let Some(&c) = cells.get(&cell) else {
+                continue;
+            };
+            let range = first[c as usize] as usize..first[c as usize + 1] as usize;
+            // A cell's members are in the cloud's order: skip to the later ones.
+            let cell_members = &members[range];
+            let later = cell_members.partition_point(|&j| j as usize <= i);
+            for &j in &cell_members[later..] {
+                let j = j as usize;
+                if !removed[j] && p.distance_squared(points[j].as_dvec3()) < limit {
+                    removed[j] = true;
                 }
             }
         }
-        if !crowded {
-            // `kept ≤ read`: the kept prefix never overtakes the point being read.
-            points[kept] = p;
-            let index = kept as u32;
-            next[kept] = heads.insert([cx, cy, cz], index).unwrap_or(NONE);
-            kept += 1;
-        }
     }
-    points.truncate(kept);
+    let mut index = 0;
+    points.retain(|_| {
+        index += 1;
+        !removed[index - 1]
+    });
+    let kept = points.len();
     Ok(FilterReport::since(start, before, kept))
 }
