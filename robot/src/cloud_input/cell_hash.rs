@@ -46,9 +46,11 @@ impl Hasher for CellHasher {
         self.write_u64(value as u64);
     }
 
+    /// The state with its high bits folded into the low ones, which pick the bucket: the
+    /// last multiplication leaves the low bits depending on the keys' low bits only.
     #[inline]
     fn finish(&self) -> u64 {
-        self.0
+        self.0 ^ (self.0 >> 32)
     }
 }
 

@@ -48,6 +48,7 @@ mod min_distance_filter;
 mod npy;
 mod pcd;
 mod ply;
+mod ply_writer;
 mod robot_filter;
 mod scalar;
 mod sensor_pose;
@@ -63,7 +64,7 @@ pub use input_cloud::{
 };
 pub use min_distance_filter::min_distance_downsample;
 pub use npy::{npy_bytes, write_npy};
-pub use ply::{PlyEncoding, ply_bytes, write_ply};
+pub use ply_writer::{PlyEncoding, ply_bytes, write_ply};
 pub use robot_filter::remove_robot_points;
 pub use sensor_pose::SensorPose;
 pub use surface_sampling::{

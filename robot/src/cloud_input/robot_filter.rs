@@ -28,7 +28,8 @@ pub fn remove_robot_points(
     q: &[f64],
     padding: f64,
 ) -> Result<FilterReport, CloudInputError> {
-    let dimension = robot.joint_names().len();
+    let kinematics = Kinematics::new(robot);
+    let dimension = kinematics.dimension();
     if q.len() != dimension || !q.iter().all(|v| v.is_finite()) {
         return Err(CloudInputError::Parameter {
             what: "configuration",
@@ -46,7 +47,6 @@ pub fn remove_robot_points(
     }
     let start = Instant::now();
     let before = points.len();
-    let kinematics = Kinematics::new(robot);
     let mut links = vec![DAffine3::IDENTITY; kinematics.link_count()];
     let mut spheres = vec![(DVec3::ZERO, 0.0); kinematics.sphere_count()];
     kinematics.sphere_centers_f64(q, &mut links, &mut spheres);
