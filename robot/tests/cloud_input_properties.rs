@@ -283,3 +283,96 @@ fn the_benchmark_protocol_on_table_pick() {
     let grid = robot::voxel_downsample(&mut voxels, 0.02).unwrap();
     eprintln!("  voxels of 2 cm: {} in {:?}", grid.after, grid.elapsed);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Every sphere of every shipped robot stays inside its reach ball, at random
+    /// configurations within the limits.
+    #[test]
+    fn the_reach_ball_holds_every_robot_at_every_configuration(
+        u in prop::collection::vec(0.0..=1.0f64, 32),
+    ) {
+        for shipped in robot::ShippedRobot::all() {
+            let model = shipped.model(false).unwrap();
+            let (center, radius) = robot::reach_ball(&model);
+            let space = model.joint_space();
+            let q: Vec<f64> = (0..space.dimension())
+                .map(|j| space.lower()[j] + u[j % u.len()] * (space.upper()[j] - space.lower()[j]))
+                .collect();
+            let fk = Kinematics::new(&model);
+            let mut links = vec![DAffine3::IDENTITY; fk.link_count()];
+            let mut spheres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+            fk.sphere_centers_f64(&q, &mut links, &mut spheres);
+            for (c, r) in spheres {
+                prop_assert!(
+                    c.distance(center) + r <= radius * (1.0 + 1e-12),
+                    "{}: a sphere reaches {} of {}", model.name(), c.distance(center) + r, radius
+                );
+            }
+        }
+    }
+}
+
+/// The farthest any sphere of `model` gets from `center` at `q`.
+fn farthest(model: &robot::RobotModel, center: DVec3, q: &[f64]) -> f64 {
+    let fk = Kinematics::new(model);
+    let mut links = vec![DAffine3::IDENTITY; fk.link_count()];
+    let mut spheres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+    fk.sphere_centers_f64(q, &mut links, &mut spheres);
+    spheres
+        .iter()
+        .map(|&(c, r)| c.distance(center) + r)
+        .fold(0.0, f64::max)
+}
+
+/// A hill climb towards each robot's most stretched configuration stays inside the ball, and
+/// comes within 40% of its radius (the triangle inequality adds sideways offsets in full:
+/// the UR5's bound is about 35% above the farthest configuration found, the Panda's 12%).
+#[test]
+fn the_reach_ball_holds_the_most_stretched_configurations() {
+    use spaces::rand::{RngExt, SeedableRng};
+    let mut rng = spaces::SeededRng::seed_from_u64(5);
+    for shipped in robot::ShippedRobot::all() {
+        let model = shipped.model(false).unwrap();
+        let (center, radius) = robot::reach_ball(&model);
+        let space = model.joint_space();
+        let n = space.dimension();
+        let mut best_q: Vec<f64> = (0..n)
+            .map(|j| rng.random_range(space.lower()[j]..=space.upper()[j]))
+            .collect();
+        let mut best = farthest(&model, center, &best_q);
+        for step in 0..3000 {
+            let scale = if step < 1500 { 0.5 } else { 0.05 };
+            let q: Vec<f64> = best_q
+                .iter()
+                .enumerate()
+                .map(|(j, &v)| {
+                    (v + scale * rng.random_range(-1.0..1.0))
+                        .clamp(space.lower()[j], space.upper()[j])
+                })
+                .collect();
+            let reach = farthest(&model, center, &q);
+            if reach > best {
+                (best, best_q) = (reach, q);
+            }
+        }
+        assert!(best <= radius, "{}: {best} beyond {radius}", model.name());
+        assert!(best >= 0.6 * radius, "{}: {best} of {radius}", model.name());
+        eprintln!(
+            "{}: reach ball {radius:.4} m, farthest found {best:.4} m",
+            model.name()
+        );
+    }
+}
+
+#[test]
+fn the_pandas_reach_is_vamps() {
+    let (center, radius) = robot::reach_ball(&ArmProblem::panda().unwrap());
+    assert!(
+        (center - DVec3::new(0.0, 0.0, 0.333)).length() < 1e-12,
+        "{center}"
+    );
+    assert!((1.0..1.3).contains(&radius), "{radius}");
+    eprintln!("Panda reach ball: centre {center}, radius {radius:.4} m");
+}

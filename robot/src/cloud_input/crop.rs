@@ -10,8 +10,8 @@ use super::filter_report::FilterReport;
 /// Keeps the points within `radius` of `center` (the boundary included, distances in `f64`):
 /// cropped to the robot's reach around its base, a cloud keeps only what the arm can touch
 /// (VAMP culls at 1.19 m around the Panda's first joint). Points beyond the reach cannot
-/// collide with the robot, so cropping changes no answer of the checker when the radius
-/// covers the robot's largest sphere at full stretch.
+/// collide with the robot, so cropping changes no answer of the checker when the ball is
+/// [`reach_ball`](super::reach_ball)'s, widened by the points' radius and the margin.
 ///
 /// # Errors
 /// [`CloudInputError::Parameter`] for a centre that is not finite or a radius that is not

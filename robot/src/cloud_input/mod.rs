@@ -49,6 +49,7 @@ mod npy;
 mod pcd;
 mod ply;
 mod ply_writer;
+mod reach;
 mod robot_filter;
 mod scalar;
 mod sensor_pose;
@@ -65,6 +66,7 @@ pub use input_cloud::{
 pub use min_distance_filter::min_distance_downsample;
 pub use npy::{npy_bytes, write_npy};
 pub use ply_writer::{PlyEncoding, ply_bytes, write_ply};
+pub use reach::reach_ball;
 pub use robot_filter::remove_robot_points;
 pub use sensor_pose::SensorPose;
 pub use surface_sampling::{
