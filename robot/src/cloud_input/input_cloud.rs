@@ -68,6 +68,12 @@ pub enum CloudOrigin {
         /// Their format.
         format: CloudFormat,
     },
+    /// Coordinates handed over in memory ([`InputCloud::from_xyz`]): a numpy array, a
+    /// camera driver's buffer.
+    Array {
+        /// The name given to them.
+        name: String,
+    },
     /// Sampled on the surfaces of a scene's obstacles
     /// ([`sample_surfaces`](super::sample_surfaces)).
     Sampled {
@@ -85,6 +91,7 @@ impl fmt::Display for CloudOrigin {
         match self {
             Self::File { path, format } => write!(f, "{format} file `{}`", path.display()),
             Self::Bytes { name, format } => write!(f, "{format} data `{name}`"),
+            Self::Array { name } => write!(f, "array `{name}`"),
             Self::Sampled {
                 obstacles,
                 per_obstacle,
@@ -123,6 +130,43 @@ impl InputCloud {
     /// `true` if there is no point (never for a cloud a reader returns).
     pub fn is_empty(&self) -> bool {
         self.points.is_empty()
+    }
+
+    /// A cloud from coordinates in memory, `x y z` after one another (a C-ordered N×3
+    /// `float32` or `float64` numpy array's buffer), under the readers' rules: points with a
+    /// NaN or infinite coordinate dropped and counted, at most [`MAX_CLOUD_POINTS`], none left
+    /// an error. `name` names the array in errors.
+    ///
+    /// ```
+    /// let cloud = robot::InputCloud::from_xyz("camera", &[0.0_f32, 1.0, 2.0, f32::NAN, 0.0, 0.0])?;
+    /// assert_eq!((cloud.len(), cloud.dropped_non_finite), (1, 1));
+    /// assert!(robot::InputCloud::from_xyz("pairs", &[0.0_f64, 1.0]).is_err());
+    /// # Ok::<(), robot::CloudInputError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`CloudInputError::Parameter`] for a length that is not a multiple of 3 or more than
+    /// [`MAX_CLOUD_POINTS`] points; [`CloudInputError::Empty`] if no point is left.
+    pub fn from_xyz<T: Copy + Into<f64>>(name: &str, xyz: &[T]) -> Result<Self, CloudInputError> {
+        if xyz.len() % 3 != 0 || xyz.len() / 3 > MAX_CLOUD_POINTS {
+            return Err(CloudInputError::Parameter {
+                what: "point coordinates",
+                message: format!(
+                    "array `{name}` holds {} values: x y z for at most {MAX_CLOUD_POINTS} points",
+                    xyz.len()
+                ),
+            });
+        }
+        let mut sink = PointSink::with_capacity(xyz.len() / 3);
+        for p in xyz.chunks_exact(3) {
+            sink.push(p[0].into(), p[1].into(), p[2].into());
+        }
+        sink.finish(
+            CloudOrigin::Array {
+                name: name.to_owned(),
+            },
+            name,
+        )
     }
 }
 

@@ -461,3 +461,25 @@ fn files_are_read_bounded_and_by_extension() {
     let e = parse_cloud(b"", CloudFormat::Ply, "camera frame 12").unwrap_err();
     assert!(e.to_string().starts_with("camera frame 12:"), "{e}");
 }
+
+#[test]
+fn arrays_in_memory_follow_the_readers_rules() {
+    let cloud =
+        InputCloud::from_xyz("driver", &[1.0_f64, 2.0, 3.0, 4.0, f64::INFINITY, 6.0]).unwrap();
+    assert_eq!(cloud.points, [Vec3::new(1.0, 2.0, 3.0)]);
+    assert_eq!(cloud.dropped_non_finite, 1);
+    assert_eq!(cloud.origin.to_string(), "array `driver`");
+    let e = InputCloud::from_xyz("dark", &[f32::NAN; 6]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "dark: the point cloud is empty (2 points with NaN or infinite coordinates dropped)"
+    );
+    let e = InputCloud::from_xyz::<f32>("nothing", &[]).unwrap_err();
+    assert!(
+        matches!(e, CloudInputError::Empty { dropped: 0, .. }),
+        "{e}"
+    );
+    // An f64 beyond f32's range is infinite in f32: dropped.
+    let cloud = InputCloud::from_xyz("far", &[1e39_f64, 0.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    assert_eq!((cloud.len(), cloud.dropped_non_finite), (1, 1));
+}
