@@ -2,7 +2,7 @@
 
 use std::time::Instant;
 
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 
 use super::cell_hash::{CellMap, cell_of};
 use super::cloud_input_error::CloudInputError;
@@ -93,7 +93,20 @@ pub fn min_distance_downsample(
         }
         let p = points[i].as_dvec3();
         let [cx, cy, cz] = cell_of(points[i], inverse);
+        // Where the point sits in its cell, in cell units: a neighbouring cell whose nearest
+        // face, edge or corner is a cell side (`radius`) away or more holds nothing to remove.
+        let within = p * inverse - DVec3::new(cx as f64, cy as f64, cz as f64);
+        let gap = |d: i64, f: f64| match d {
+            1 => 1.0 - f,
+            -1 => f,
+            _ => 0.0,
+        };
         for [dx, dy, dz] in NEIGHBOURS {
+            let (gx, gy, gz) = (gap(dx, within.x), gap(dy, within.y), gap(dz, within.z));
+            // A little slack for rounding: never skip a cell that may hold a close point.
+            if gx * gx + gy * gy + gz * gz > 1.0 + 1e-9 {
+                continue;
+            }
             let cell = [
                 cx.wrapping_add(dx),
                 cy.wrapping_add(dy),
