@@ -32,12 +32,12 @@ const NEIGHBOURS: [[i64; 3]; 27] = {
 /// is within `radius` of a kept one. This is VAMP's `filter_pointcloud` (which keeps one point
 /// per 0.02 m in its benchmark); unlike [`voxel_downsample`](super::voxel_downsample) its
 /// result does not depend on where a grid's cell borders fall, and it bounds the distance to a
-/// kept point by `radius` rather than a voxel's diagonal, at about three times the cost (27
-/// cells looked at per point).
+/// kept point by `radius` rather than a voxel's diagonal, at several times the cost.
 ///
 /// The points are bucketed in a hash grid of cells of side `radius` (a counting sort: one
-/// hash look-up per point), then each kept point looks at its cell and the 26 around it and
-/// removes the later points too close to it. A handful of allocations, none per point.
+/// hash look-up per point), then each kept point looks at its cell and those of the 26 around
+/// it that come within `radius` of it, and removes the later points too close to it. A
+/// handful of allocations, none per point.
 ///
 /// # Errors
 /// [`CloudInputError::Parameter`] for a radius that is not finite and positive.
