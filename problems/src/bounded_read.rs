@@ -84,6 +84,24 @@ pub fn read_bounded(
     limit: u64,
     what: &'static str,
 ) -> Result<String, BoundedReadError> {
+    let bytes = read_bounded_bytes(path, limit, what)?;
+    String::from_utf8(bytes).map_err(|e| BoundedReadError::NotText {
+        what,
+        at: e.utf8_error().valid_up_to(),
+    })
+}
+
+/// The bytes of the regular file `path` (a `what`, e.g. `"point cloud file"`): the checks of
+/// [`read_bounded`] (a regular file of at most `limit` bytes, never reading more than
+/// `limit + 1`) for a binary input, without asking for UTF-8.
+///
+/// # Errors
+/// [`BoundedReadError`] saying what is wrong; the caller names the file.
+pub fn read_bounded_bytes(
+    path: &Path,
+    limit: u64,
+    what: &'static str,
+) -> Result<Vec<u8>, BoundedReadError> {
     let file = File::open(path).map_err(BoundedReadError::Io)?;
     let metadata = file.metadata().map_err(BoundedReadError::Io)?;
     if !metadata.is_file() {
@@ -99,10 +117,7 @@ pub fn read_bounded(
     if bytes.len() as u64 > limit {
         return Err(BoundedReadError::TooLarge { what, limit });
     }
-    String::from_utf8(bytes).map_err(|e| BoundedReadError::NotText {
-        what,
-        at: e.utf8_error().valid_up_to(),
-    })
+    Ok(bytes)
 }
 
 /// `text` cut to at most `max` characters for quoting in an error message, with `…` and the

@@ -47,7 +47,7 @@
 //! | [`catalogue`], [`builtin`], [`Family`], [`Parameter`] | the families by name, with descriptions and default parameters |
 //! | [`problem_file`] | the TOML problem file format ([`Problem::from_toml_str`], [`Problem::from_file`], [`Problem::to_toml_string`]); [`humanise`] for TOML messages |
 //! | [`ProblemError`], [`ProblemFileError`], [`Endpoint`], [`Location`] | what is wrong, and where |
-//! | [`read_bounded`], [`BoundedReadError`], [`TEXT_INPUT_LIMIT`], [`excerpt`] | reading a user's file with a size limit, refusing devices and binary files; quoting input in errors briefly |
+//! | [`read_bounded`], [`read_bounded_bytes`], [`BoundedReadError`], [`TEXT_INPUT_LIMIT`], [`excerpt`] | reading a user's file with a size limit, refusing devices and binary files; quoting input in errors briefly |
 //!
 //! Every family lives in `[-0.5, 0.5]^n` (add 0.5 for the paper's unit-cube coordinates), gives
 //! obstacles by centre and full side lengths, and uses PDT's validity rule: a state is valid iff
@@ -67,7 +67,9 @@ pub mod problem_file;
 #[cfg(test)]
 mod test_support;
 
-pub use bounded_read::{BoundedReadError, TEXT_INPUT_LIMIT, excerpt, read_bounded};
+pub use bounded_read::{
+    BoundedReadError, TEXT_INPUT_LIMIT, excerpt, read_bounded, read_bounded_bytes,
+};
 pub use catalogue::{Family, Parameter, builtin, catalogue};
 pub use error::{Endpoint, Location, ProblemError, ProblemFileError};
 pub use families::{

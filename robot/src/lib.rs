@@ -35,6 +35,9 @@
 //! | [`ModelError`], [`SceneError`], [`ArmError`] | what is wrong, naming the file and field |
 //! | [`ShippedRobot`], [`RobotSource`], [`RobotSourceError`] | the shipped models (Panda, UR5, Fetch, Baxter) and a robot named by name or folder |
 //! | [`SphereCover`], [`CoverOptions`], [`CoverSphere`], [`TriangleMesh`], [`read_stl`], [`parse_stl`], [`SpherisedUrdf`], [`SpheriseOptions`], [`LinkReport`], [`LinkSource`], [`SpheriseError`] | spheres from meshes: a conservative cover of a mesh's solid within a tolerance, and a URDF rewritten with them (`mit-star spherise`) |
+//! | [`read_cloud`], [`parse_cloud`], [`InputCloud`] (and [`InputCloud::from_xyz`] for arrays in memory), [`CloudFormat`], [`CloudOrigin`], [`write_ply`], [`ply_bytes`], [`PlyEncoding`], [`write_npy`], [`npy_bytes`], [`MAX_CLOUD_POINTS`], [`MAX_CLOUD_FILE_BYTES`], [`CloudInputError`] | point clouds from files: PLY (ASCII, binary), PCD (ASCII, binary, binary_compressed), `.npy` (N×3 floats), bounded, NaN points dropped and counted; writers for PLY and `.npy` |
+//! | [`SensorPose`], [`sample_surfaces`], [`sample_obstacle_surface`], [`DEFAULT_SAMPLES_PER_OBSTACLE`] | a camera's pose (its cloud into the base frame); clouds sampled on a scene's primitives (VAMP's benchmark protocol, seeded) |
+//! | [`voxel_downsample`], [`min_distance_downsample`], [`crop_to_ball`], [`crop_to_box`], [`reach_ball`], [`remove_robot_points`], [`FilterReport`] | filters, each optional and timed: one point per voxel or per minimum distance, the robot's reach (a ball holding it at every configuration) or a box, the points on the robot at a configuration |
 //! | [`ModelWarning`] | what a lenient model ignored: SRDF and allowed-collision entries naming links it lacks |
 
 #![forbid(unsafe_code)]
@@ -42,6 +45,7 @@
 mod arm_error;
 mod arm_problem;
 mod checking;
+mod cloud_input;
 mod lane_f32;
 mod model;
 mod robots;
@@ -53,6 +57,13 @@ pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
 pub use checking::{
     AUDIT_CONTACT, ArmChecker, AuditVerdict, CERTIFICATION_FLOOR, Contact, LimitViolation,
     MotionAudit, ParryChecker, StateDiagnosis,
+};
+pub use cloud_input::{
+    CloudFormat, CloudInputError, CloudOrigin, DEFAULT_SAMPLES_PER_OBSTACLE, FilterReport,
+    InputCloud, MAX_CLOUD_FILE_BYTES, MAX_CLOUD_POINTS, PlyEncoding, SensorPose, crop_to_ball,
+    crop_to_box, min_distance_downsample, npy_bytes, parse_cloud, ply_bytes, reach_ball,
+    read_cloud, remove_robot_points, sample_obstacle_surface, sample_surfaces, voxel_downsample,
+    write_npy, write_ply,
 };
 pub use model::{
     Kinematics, LeverArms, LinkFrame, LinkSphere, ModelError, ModelWarning, Motion, RobotModel,
