@@ -13,7 +13,7 @@ use crate::checking::lanes::{LANES, LaneF32, LaneKinematics, LanePoint, LanePose
 use crate::checking::local_sweep::LocalSweep;
 use crate::checking::reachable_obstacles::reachable_obstacles;
 use crate::checking::scratch_cell::ScratchCell;
-use crate::{Kinematics, LeverArms, Obstacle, RobotModel, Scene};
+use crate::{CloudObstacle, Kinematics, LeverArms, Obstacle, RobotModel, Scene};
 
 /// What the checks share between clones: the kinematics, the scene, the pair lists and the
 /// bounds certification uses.
@@ -28,6 +28,11 @@ pub(crate) struct Shared {
     /// Per entry of `links`: the obstacles it can reach in some configuration
     /// (`reachable_obstacles.rs`), the only ones its tests look at.
     pub(crate) reachable: Vec<Vec<Obstacle>>,
+    /// The scene's point clouds.
+    pub(crate) clouds: Vec<Arc<CloudObstacle>>,
+    /// Per entry of `links`: the clouds (indices into `clouds`) with a point it can reach in
+    /// some configuration.
+    pub(crate) reachable_clouds: Vec<Vec<usize>>,
     /// Links with spheres, in tree order: link, its sphere range, local bounding sphere.
     pub(crate) links: Vec<(usize, Range<usize>, Vec3A, f32)>,
     /// Local sphere centres and radii.
@@ -186,6 +191,10 @@ impl ArmChecker {
                 let (c, r) = o.bounding_sphere();
                 f64::from(c.length() + r)
             })
+            .chain(scene.clouds().iter().map(|c| {
+                let (c, r) = c.bounding_sphere();
+                f64::from(c.length() + r)
+            }))
             .fold(0.0, f64::max);
         let margin = MARGIN_FLOOR + MARGIN_PER_METRE * (reach + far);
         let mut reaches = vec![0.0_f32; spheres.len()];
@@ -218,7 +227,12 @@ impl ArmChecker {
             .iter()
             .flat_map(|&pair| local.relative_levers(pair, &levers, dimension))
             .collect();
-        let reachable = reachable_obstacles((robot, &fk, &arms), &links, scene.obstacles());
+        let (reachable, reachable_clouds) = reachable_obstacles(
+            (robot, &fk, &arms),
+            &links,
+            scene.obstacles(),
+            scene.clouds(),
+        );
         let wraps = space
             .joints()
             .iter()
@@ -232,6 +246,8 @@ impl ArmChecker {
                 upper: space.upper().to_vec(),
                 wraps,
                 reachable,
+                clouds: scene.clouds().to_vec(),
+                reachable_clouds,
                 plain: vec![LaneF32::splat(margin as f32); links.len()],
                 links,
                 spheres,
@@ -571,6 +587,32 @@ fn invalid_filled(
                 let hit = obstacle.collides_spheres_lanes(c, radius);
                 if hit & active != 0 {
                     invalid |= hit & active;
+                    active = undecided(invalid);
+                    if active == 0 {
+                        *last_hit = k;
+                        return invalid;
+                    }
+                }
+            }
+        }
+        // Point clouds: the link's bounding sphere first, then its spheres, each a walk of the
+        // cloud's tree for the lanes still undecided.
+        for &cloud in &s.reachable_clouds[k] {
+            let cloud = &s.clouds[cloud];
+            if active == 0 || cloud.touches_lanes(&bounding, bound, active) == 0 {
+                continue;
+            }
+            if !placed[k] {
+                place_lanes(pose, range, lane_centers);
+                placed[k] = true;
+            }
+            for (c, sphere) in lane_centers[range.clone()]
+                .iter()
+                .zip(&s.spheres[range.clone()])
+            {
+                let hit = cloud.touches_lanes(c, LaneF32::splat(sphere.1) + grown, active);
+                if hit != 0 {
+                    invalid |= hit;
                     active = undecided(invalid);
                     if active == 0 {
                         *last_hit = k;

@@ -15,6 +15,9 @@ use parry3d_f64::math::Pose;
 use parry3d_f64::query::distance;
 use parry3d_f64::shape::{Ball, SharedShape};
 
+use std::sync::Arc;
+
+use crate::checking::audit_clouds::AuditClouds;
 use crate::checking::motion_audit::AUDIT_CONTACT;
 use crate::{Kinematics, ParryChecker, RobotModel, Scene};
 
@@ -42,6 +45,9 @@ struct BoundedLink {
 pub(super) struct AuditBroadPhase {
     fk: Kinematics,
     obstacles: Vec<(Pose, SharedShape)>,
+    /// The point clouds (the reference checker's), after the obstacles in the candidates'
+    /// numbering.
+    clouds: Arc<AuditClouds>,
     links: Vec<BoundedLink>,
     /// Per checked link pair, in the checker's order: its two links (indices into `links`)
     /// and its entries in `sphere_pairs`.
@@ -115,15 +121,28 @@ impl AuditBroadPhase {
         Self {
             fk: Kinematics::new(robot),
             obstacles: ParryChecker::obstacle_shapes(scene),
+            clouds: checker.clouds().clone(),
             links,
             pairs,
             sphere_pairs: checker.sphere_pairs().to_vec(),
         }
     }
 
-    /// How many obstacles the scene has.
+    /// How many obstacles the scene has (its point clouds count one each).
     pub(super) fn obstacle_count(&self) -> usize {
-        self.obstacles.len()
+        self.obstacles.len() + self.clouds.len()
+    }
+
+    /// The gap between the ball (`center`, `radius`) and obstacle `o` (primitives first, then
+    /// clouds), 0 if they touch or overlap.
+    fn gap(&self, o: usize, center: DVec3, radius: f64) -> f64 {
+        match self.obstacles.get(o) {
+            Some((op, shape)) => {
+                let (pose, ball) = (Pose::from_translation(center), Ball::new(radius));
+                distance(&pose, &ball, op, shape.as_ref()).map_or(0.0, |d| d.distance)
+            }
+            None => self.clouds.gap(o - self.obstacles.len(), center, radius),
+        }
     }
 
     /// The scratch of one motion whose spheres move at most `speed` (per sphere) and whose
@@ -142,7 +161,7 @@ impl AuditBroadPhase {
                 .collect(),
             pair_speed: rates.iter().map(|(a, b)| fastest(a) + fastest(b)).collect(),
             candidates: Vec::with_capacity(
-                self.links.len() * self.obstacles.len() + self.pairs.len(),
+                self.links.len() * self.obstacle_count() + self.pairs.len(),
             ),
         }
     }
@@ -168,12 +187,11 @@ impl AuditBroadPhase {
             *bound = s.poses[link.link].transform_point3(link.center);
         }
         let slack = |lower: f64, size: f64| lower - SLACK * (1.0 + size);
-        let n = self.obstacles.len();
+        let n = self.obstacle_count();
         s.candidates.clear();
         for (i, link) in self.links.iter().enumerate() {
-            let (pose, ball) = (Pose::from_translation(s.bounds[i]), Ball::new(link.radius));
-            for (o, (op, shape)) in self.obstacles.iter().enumerate() {
-                let d = distance(&pose, &ball, op, shape.as_ref()).map_or(0.0, |d| d.distance);
+            for o in 0..n {
+                let d = self.gap(o, s.bounds[i], link.radius);
                 let size = s.bounds[i].length() + link.radius;
                 s.candidates.push((slack(d, size), i * n + o));
             }
@@ -201,12 +219,10 @@ impl AuditBroadPhase {
                 continue;
             }
             if obstacle {
-                let (link, (op, shape)) = (&self.links[c / n], &self.obstacles[c % n]);
+                let link = &self.links[c / n];
                 for k in link.spheres.clone() {
                     let (center, radius) = s.centers[k];
-                    let (pose, ball) = (Pose::from_translation(center), Ball::new(radius));
-                    let gap =
-                        distance(&pose, &ball, op, shape.as_ref()).map_or(0.0, |d| d.distance);
+                    let gap = self.gap(c % n, center, radius);
                     tests.exact += 1;
                     if gap <= AUDIT_CONTACT {
                         return true;

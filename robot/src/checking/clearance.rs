@@ -117,21 +117,13 @@ pub(crate) fn certified_radii(
                 continue;
             }
             let m = *moving.get_or_insert_with(|| {
-                s.local.link_terms(k, edge.delta, &s.levers, terms);
-                let (speed, motion) =
-                    s.local
-                        .speed_of(k, lane_poses, &lane_bounds[k], (edge.delta, terms));
-                LinkMotion {
-                    speed,
-                    motion,
-                    second: LaneF32::splat(terms.second(k) as f32),
-                    acceleration: LaneF32::splat(terms.acceleration(k) as f32),
-                    // What the rate of approach computed in `f32` may miss: its relative
-                    // rounding, and the error of the link's poses carried through its joint
-                    // rates.
-                    slack: speed * LaneF32::splat(DIRECTION_ROUNDING)
-                        + margin * LaneF32::splat(4.0 * terms.rates(k) as f32),
-                }
+                link_motion(
+                    s,
+                    k,
+                    (&lane_poses[..], &lane_bounds[k]),
+                    (edge, &mut *terms),
+                    margin,
+                )
             });
             let LinkMotion {
                 speed,
@@ -190,6 +182,56 @@ pub(crate) fn certified_radii(
                 let directional = reach_approaching(clear, approach, acceleration);
                 radius =
                     radius.min(reach(clear, speed, second, edge.sweep[k] as f32).max(directional));
+            }
+        }
+        // Point clouds: only the bound that holds whatever the direction of motion (a
+        // cloud is not convex), from a lower bound of each sphere's distance to the cloud.
+        for &cloud in &s.reachable_clouds[k] {
+            let cloud = &s.clouds[cloud];
+            let loose = radius * sweep + floor + floor + margin + r;
+            let lower = cloud.distance_lower_bounds_lanes(&lane_bounds[k], loose, live);
+            if lower.simd_lt(loose).to_bitmask() & live == 0 {
+                continue;
+            }
+            let m = *moving.get_or_insert_with(|| {
+                link_motion(
+                    s,
+                    k,
+                    (&lane_poses[..], &lane_bounds[k]),
+                    (edge, &mut *terms),
+                    margin,
+                )
+            });
+            let limit =
+                (radius * m.speed + radius * radius * m.second).min(radius * sweep) + floor + floor;
+            if lower.simd_lt(limit + margin + r).to_bitmask() & live == 0 {
+                continue;
+            }
+            place_link(s, k, lane_poses, lane_centers, placed);
+            let reaches = &s.reaches[range.clone()];
+            for (c, (sphere, &extent)) in lane_centers[range.clone()]
+                .iter()
+                .zip(s.spheres[range.clone()].iter().zip(reaches))
+            {
+                // The sphere's ball is no nearer the cloud than the bounding centre's bound
+                // less its extent: clear by `limit` in every lane, it cannot lower the radius.
+                if lower
+                    .simd_lt(limit + margin + LaneF32::splat(extent))
+                    .to_bitmask()
+                    & live
+                    == 0
+                {
+                    continue;
+                }
+                let own = LaneF32::splat(sphere.1);
+                let gap =
+                    cloud.distance_lower_bounds_lanes(c, limit + margin + own + floor, live) - own;
+                nearest = nearest.min(gap);
+                let clear = gap - margin;
+                if clear.simd_lt(limit).to_bitmask() & live == 0 {
+                    continue;
+                }
+                radius = radius.min(reach(clear, m.speed, m.second, edge.sweep[k] as f32));
             }
         }
         refused |= (nearest - margin).simd_lt(floor).to_bitmask() & live;
@@ -254,6 +296,31 @@ struct LinkMotion {
     second: LaneF32,
     acceleration: LaneF32,
     slack: LaneF32,
+}
+
+/// Link entry `k`'s motion at the lanes' configurations (its poses and bounding centre
+/// given), computing its local sweep terms for the edge.
+fn link_motion(
+    s: &Shared,
+    k: usize,
+    (lane_poses, bounding): (&[crate::checking::lanes::LanePose], &LanePoint),
+    (edge, terms): (&EdgeBounds<'_>, &mut EdgeTerms),
+    margin: LaneF32,
+) -> LinkMotion {
+    s.local.link_terms(k, edge.delta, &s.levers, terms);
+    let (speed, motion) = s
+        .local
+        .speed_of(k, lane_poses, bounding, (edge.delta, terms));
+    LinkMotion {
+        speed,
+        motion,
+        second: LaneF32::splat(terms.second(k) as f32),
+        acceleration: LaneF32::splat(terms.acceleration(k) as f32),
+        // What the rate of approach computed in `f32` may miss: its relative rounding, and
+        // the error of the link's poses carried through its joint rates.
+        slack: speed * LaneF32::splat(DIRECTION_ROUNDING)
+            + margin * LaneF32::splat(4.0 * terms.rates(k) as f32),
+    }
 }
 
 /// Per lane, the largest `h` with `min(h · speed + h² · second, h · sweep) ≤ clear` (0 for a

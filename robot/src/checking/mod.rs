@@ -20,15 +20,19 @@
 //!   own broad phase (`audit_broad_phase.rs`: per-link bounding spheres first).
 //! - [`StateDiagnosis`] (`state_diagnosis.rs`): what one configuration touches, by name, in
 //!   `f64` (`mit-star check-state`).
+//! - `audit_clouds.rs`: the reference checker's and the audit's own view of point clouds,
+//!   every point in `f64` by brute force (no code shared with `clouds::PointTree`).
 //! - `scratch_cell.rs`: the per-clone scratch buffers both checkers keep behind a mutex.
 //!
-//! May use: `model` (the robot, its kinematics and lever arms), `scenes` (the obstacles), and
+//! May use: `model` (the robot, its kinematics and lever arms), `scenes` (the obstacles),
+//! `clouds` (point clouds and their tree: the planners' checker only), and
 //! the `spaces`, `validity`, `glam`, `wide` and `parry3d-f64` crates. Used by
 //! [`ArmProblem`](crate::ArmProblem).
 
 mod arm_certification;
 mod arm_checker;
 mod audit_broad_phase;
+mod audit_clouds;
 mod clearance;
 mod lanes;
 mod local_sweep;

@@ -41,7 +41,8 @@ pub enum AuditVerdict {
 
 /// An independent, continuous check of arm motions by **conservative advancement** in `f64`:
 /// at a configuration it computes, with parry's distance queries, how far every robot sphere
-/// is from the nearest obstacle and from the spheres it must not meet; no sphere can close
+/// is from the nearest obstacle (for a point cloud: from every point's ball, in `f64`, by brute
+/// force) and from the spheres it must not meet; no sphere can close
 /// that gap before the motion has gone `gap / speed`, where `speed` bounds how fast the sphere
 /// moves along the motion; so the audit jumps that far and measures again. Every
 /// configuration between two measured ones is thereby proven collision-free — no grid, and no

@@ -9,6 +9,7 @@ use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape};
 use spaces::StateSpace;
 use validity::StateValidity;
 
+use crate::checking::audit_clouds::AuditClouds;
 use crate::checking::scratch_cell::ScratchCell;
 use crate::{Kinematics, RobotModel, Scene, Shape};
 
@@ -22,6 +23,8 @@ struct Shared {
     upper: Vec<f64>,
     /// Obstacles as parry shapes with their poses.
     obstacles: Vec<(Pose, SharedShape)>,
+    /// The scene's point clouds, every point in `f64`.
+    clouds: Arc<AuditClouds>,
     /// Per link: its spheres' indices (empty for a link without spheres).
     link_spheres: Vec<std::ops::Range<usize>>,
     pairs: Vec<(usize, usize)>,
@@ -31,7 +34,8 @@ struct Shared {
 
 /// The reference checker: the same model and scene as [`ArmChecker`](crate::ArmChecker), but
 /// every sphere placed in `f64` and every test a parry query (balls against cuboids,
-/// cylinders and balls), with no broad phase and no early culling — slow and independent.
+/// cylinders and balls) or, for point clouds, a distance to every point in `f64`, with no
+/// broad phase and no early culling — slow and independent.
 ///
 /// It is what the property tests compare the fast checker with, and what the experiment
 /// harness re-checks returned arm paths with.
@@ -111,6 +115,7 @@ impl ParryChecker {
                 lower: space.lower().to_vec(),
                 upper: space.upper().to_vec(),
                 obstacles,
+                clouds: Arc::new(AuditClouds::of(scene)),
                 link_spheres,
                 pairs,
                 sphere_pairs,
@@ -147,6 +152,7 @@ impl ParryChecker {
             if s.obstacles
                 .iter()
                 .any(|(op, shape)| meets(&p, &b, op, shape.as_ref()))
+                || s.clouds.touches(sphere.0, b.radius)
             {
                 return false;
             }
@@ -167,6 +173,11 @@ impl ParryChecker {
 }
 
 impl ParryChecker {
+    /// The scene's point clouds as this checker measures them.
+    pub(crate) fn clouds(&self) -> &Arc<AuditClouds> {
+        &self.shared.clouds
+    }
+
     /// The self-collision pairs as pairs of indices into [`RobotModel::spheres`]: every
     /// sphere of one link of a checked pair with every sphere of the other.
     pub fn sphere_pairs(&self) -> &[(usize, usize)] {
@@ -198,7 +209,8 @@ impl ParryChecker {
                     // and would read as contact.
                     distance(&pose, &ball, op, shape.as_ref()).map_or(0.0, |d| d.distance)
                 })
-                .fold(f64::INFINITY, f64::min);
+                .fold(f64::INFINITY, f64::min)
+                .min(s.clouds.nearest_gap(c, r));
         }
         for (gap, &(i, j)) in pair_gaps.iter_mut().zip(&s.sphere_pairs) {
             let ((ci, ri), (cj, rj)) = (centers[i], centers[j]);

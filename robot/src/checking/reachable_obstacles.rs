@@ -13,24 +13,27 @@
 //! every obstacle.
 
 use std::ops::Range;
+use std::sync::Arc;
 
 use glam::{DAffine3, Vec3A};
 use spaces::StateSpace;
 
-use crate::{Kinematics, LeverArms, Motion, Obstacle, RobotModel};
+use crate::{CloudObstacle, Kinematics, LeverArms, Motion, Obstacle, RobotModel};
 
 /// Slack added to every reach, in metres: much more than the checks' growth (the `f32`
 /// margin, tens of micrometres) and the rounding of the reach itself.
 const SLACK: f64 = 1e-3;
 
 /// Per entry of `links` (the checker's links with spheres: link index, sphere range, local
-/// bounding sphere), the obstacles of `obstacles` it can reach, in their original order;
-/// `fk` and `levers` are `robot`'s.
+/// bounding sphere), the obstacles of `obstacles` it can reach, in their original order, and
+/// the clouds of `clouds` with a point's ball it can reach (as indices); `fk` and `levers`
+/// are `robot`'s.
 pub(crate) fn reachable_obstacles(
     (robot, fk, levers): (&RobotModel, &Kinematics, &LeverArms),
     links: &[(usize, Range<usize>, Vec3A, f32)],
     obstacles: &[Obstacle],
-) -> Vec<Vec<Obstacle>> {
+    clouds: &[Arc<CloudObstacle>],
+) -> (Vec<Vec<Obstacle>>, Vec<Vec<usize>>) {
     let frames = robot.links();
     // Any configuration places the fixed frames: the middle of the limits.
     let space = robot.joint_space();
@@ -50,33 +53,44 @@ pub(crate) fn reachable_obstacles(
     fk.link_poses_f64(&q, &mut poses);
     links
         .iter()
-        .map(|&(link, _, center, radius)| {
-            // The topmost revolute joint: its frame and coordinate.
-            let mut top = None;
-            let mut at = Some(link);
-            while let Some(a) = at {
-                match frames[a].motion {
-                    Motion::Fixed => {}
-                    Motion::Revolute { coordinate, .. } => top = Some((a, coordinate)),
-                    Motion::Prismatic { .. } => return obstacles.to_vec(),
+        .map(
+            |&(link, _, center, radius)| -> (Vec<Obstacle>, Vec<usize>) {
+                // The topmost revolute joint: its frame and coordinate.
+                let mut top = None;
+                let mut at = Some(link);
+                while let Some(a) = at {
+                    match frames[a].motion {
+                        Motion::Fixed => {}
+                        Motion::Revolute { coordinate, .. } => top = Some((a, coordinate)),
+                        Motion::Prismatic { .. } => {
+                            return (obstacles.to_vec(), (0..clouds.len()).collect());
+                        }
+                    }
+                    at = frames[a].parent;
                 }
-                at = frames[a].parent;
-            }
-            let (p, rho) = match top {
-                Some((a, coordinate)) => (poses[a].translation, levers.lever(link, coordinate)),
-                None => (
-                    poses[link].transform_point3(center.as_dvec3()),
-                    f64::from(radius),
-                ),
-            };
-            let rho = rho + SLACK;
-            obstacles
-                .iter()
-                .filter(|o| o.distance_f64(p) <= rho)
-                .copied()
-                .collect()
-        })
-        .collect()
+                let (p, rho) = match top {
+                    Some((a, coordinate)) => (poses[a].translation, levers.lever(link, coordinate)),
+                    None => (
+                        poses[link].transform_point3(center.as_dvec3()),
+                        f64::from(radius),
+                    ),
+                };
+                let rho = rho + SLACK;
+                let near = obstacles
+                    .iter()
+                    .filter(|o| o.distance_f64(p) <= rho)
+                    .copied()
+                    .collect();
+                // The `f32` lower bound (of a centre rounded to `f32`, a slack more for that) is
+                // never above the distance: a cloud it puts beyond the reach is out of reach.
+                let reach = (rho + SLACK) as f32;
+                let touched = (0..clouds.len())
+                    .filter(|&c| clouds[c].distance_lower_bound(p.as_vec3(), reach) <= reach)
+                    .collect();
+                (near, touched)
+            },
+        )
+        .unzip()
 }
 
 #[cfg(test)]
@@ -115,7 +129,7 @@ mod tests {
             .filter_map(|l| bounds[l].map(|(c, r)| (l, 0..0, c.as_vec3a(), r as f32)))
             .collect();
         let parts = (robot, &Kinematics::new(robot), &LeverArms::new(robot));
-        let kept = reachable_obstacles(parts, &links, &[far, base, near]);
+        let (kept, _) = reachable_obstacles(parts, &links, &[far, base, near], &[]);
         assert!(
             kept.iter()
                 .all(|k| k.iter().all(|o| o.pose() != far.pose()))

@@ -28,7 +28,8 @@ pub struct LimitViolation {
 pub struct Contact {
     /// The link.
     pub link: String,
-    /// The obstacle's id in the scene, or the other link's name.
+    /// The obstacle's id in the scene, the other link's name, or a cloud's name and the
+    /// index of its nearest point (`camera point 1234`).
     pub other: String,
     /// The smallest gap, metres: negative for an overlap (for an obstacle, at least that
     /// deep: the distance to a solid is 0 inside it).
@@ -112,6 +113,30 @@ impl StateDiagnosis {
                 let contact = Contact {
                     link: links[link].name.clone(),
                     other: id.clone(),
+                    gap,
+                };
+                if gap <= margin {
+                    diagnosis.scene.push(contact.clone());
+                }
+                if diagnosis.nearest.as_ref().is_none_or(|n| gap < n.gap) {
+                    diagnosis.nearest = Some(contact);
+                }
+            }
+            // Clouds: every point, in `f64`; the nearest point's ball names the contact.
+            for cloud in scene.clouds() {
+                let (gap, point) = robot
+                    .link_sphere_range(link)
+                    .map(|i| {
+                        let (point, d) = cloud.nearest_ball_f64(centers[i].0);
+                        (d - centers[i].1, point)
+                    })
+                    .fold(
+                        (f64::INFINITY, 0),
+                        |best, x| if x.0 < best.0 { x } else { best },
+                    );
+                let contact = Contact {
+                    link: links[link].name.clone(),
+                    other: format!("{} point {point}", cloud.name()),
                     gap,
                 };
                 if gap <= margin {

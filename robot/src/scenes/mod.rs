@@ -4,7 +4,8 @@
 //! - [`Obstacle`], [`Shape`] (`obstacle.rs`): boxes, cylinders and spheres with poses, and the
 //!   exact sphere contact tests (one sphere, or eight at once for the SIMD checker).
 //! - [`Scene`] (`scene.rs`): a MoveIt planning scene from MotionBenchMaker's YAML: obstacles in
-//!   the robot's base frame and allowed collisions.
+//!   the robot's base frame and allowed collisions; and point clouds
+//!   ([`CloudObstacle`](crate::CloudObstacle)).
 //! - [`MbmProblem`] (`mbm_problem.rs`): a MotionBenchMaker scene and request pair.
 //! - [`MovingObstacle`] (`moving_obstacle.rs`): a box going back and forth along a line, where
 //!   it is at any time and the box it sweeps over an interval; [`MovingScene`]
@@ -14,7 +15,8 @@
 //!   the file and field.
 //!
 //! May use: the `glam`, `wide`, `serde`, `serde-saphyr` and `thiserror` crates, and of this
-//! crate only the `f32` pose conversion of `model` and the SIMD lane type (`lane_f32.rs`).
+//! crate only the `f32` pose conversion of `model`, the SIMD lane type (`lane_f32.rs`) and the
+//! point clouds (`clouds`).
 //! Knows nothing of checking. Used by `model` (the shared length limit), `checking` and
 //! [`ArmProblem`](crate::ArmProblem).
 

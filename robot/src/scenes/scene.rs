@@ -2,15 +2,18 @@
 
 use std::collections::HashMap;
 use std::path::Path;
+use std::sync::Arc;
 
 use glam::{DAffine3, DQuat, DVec3};
 use serde::Deserialize;
 use serde::de::IgnoredAny;
 
-use crate::{Obstacle, SceneError, Shape};
+use crate::{CloudObstacle, Obstacle, SceneError, Shape};
 
 /// The obstacles of a planning scene, in the robot's base frame, and the robot link pairs the
-/// scene allows to touch (its allowed-collision matrix).
+/// scene allows to touch (its allowed-collision matrix); and point clouds
+/// ([`CloudObstacle`], added with [`with_cloud`](Self::with_cloud)), checked and certified
+/// as the primitives are.
 ///
 /// Reads the MoveIt `PlanningScene` YAML of MotionBenchMaker: `world.collision_objects[]` with
 /// `primitives[]` (`type: box` with full side lengths, `cylinder` with `[height, radius]` along
@@ -47,6 +50,7 @@ pub struct Scene {
     obstacles: Vec<Obstacle>,
     ids: Vec<String>,
     allowed: Vec<(String, String)>,
+    clouds: Vec<Arc<CloudObstacle>>,
 }
 
 #[derive(Deserialize)]
@@ -162,6 +166,7 @@ impl Scene {
             obstacles,
             ids,
             allowed: Vec::new(),
+            clouds: Vec::new(),
         }
     }
 
@@ -286,6 +291,23 @@ impl Scene {
     /// The link pairs the allowed-collision matrix allows to touch (each unordered pair once).
     pub fn allowed_pairs(&self) -> &[(String, String)] {
         &self.allowed
+    }
+
+    /// The scene with `cloud` added to its obstacles (its tree was built with it; clones of
+    /// the scene share it).
+    pub fn with_cloud(mut self, cloud: CloudObstacle) -> Self {
+        self.add_cloud(cloud);
+        self
+    }
+
+    /// Adds `cloud` to the obstacles.
+    pub fn add_cloud(&mut self, cloud: CloudObstacle) {
+        self.clouds.push(Arc::new(cloud));
+    }
+
+    /// The point clouds, in the order they were added.
+    pub fn clouds(&self) -> &[Arc<CloudObstacle>] {
+        &self.clouds
     }
 }
 

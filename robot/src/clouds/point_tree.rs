@@ -1,0 +1,421 @@
+//! [`PointTree`]: points arranged for sphere queries — a balanced binary tree of axis-aligned
+//! boxes over the points, laid out implicitly, with leaves of at most eight points.
+
+use glam::Vec3;
+use spaces::Stop;
+
+use crate::lane_f32::{LANES, LaneF32};
+
+/// Most points in a leaf.
+const LEAF: usize = 8;
+
+/// Deepest traversal stack: a tree of [`PointCloud::MAX_POINTS`](crate::PointCloud::MAX_POINTS)
+/// points is 21 levels deep, and a depth-first walk holds at most one entry per level plus one.
+const STACK: usize = 48;
+
+/// What a computed distance is multiplied by before it is handed out as a lower bound: covers
+/// the `f32` rounding of the squared distance (a few units in the last place) with room.
+const LOWER: f32 = 1.0 - 1e-6;
+
+/// Nodes built between two polls of the stop condition.
+const POLL_NODES: usize = 1 << 12;
+
+/// The point structure of cloud obstacles, built for the queries the arm checker asks:
+/// *is any point within `reach` of this centre* (one centre, or one per lane of a batch of
+/// configurations) and *how far is the nearest point, at least* (for certified motion).
+///
+/// # Layout
+/// The points are reordered by recursive median splits along the longest side of their box
+/// (a kd-tree whose splits halve the count), so that every node is a contiguous range of the
+/// array: node `i` covers `[lo, hi)`, its children `2i + 1` and `2i + 2` the halves
+/// `[lo, mid)` and `[mid, hi)` with `mid = lo + (hi − lo) / 2`, and ranges of at most eight
+/// points are leaves. Nothing but one box per node is stored (six `f32`, 24 bytes, about one
+/// node per four points): the points themselves in three coordinate arrays (12 bytes a
+/// point) and their indices in the cloud (4 bytes). About 22 bytes a point in all, at most
+/// 28 (`tests/cloud_structure.rs` measures it at 10⁶ points).
+///
+/// # Queries
+/// A walk from the root skips every node whose box is farther than the query asks (nearer
+/// child first), and tests the points of the leaves it reaches. The batched queries walk once
+/// for a batch of [`LANES`] centres (the arm checker's configurations): a node is visited if
+/// its box is near for some lane still undecided, its points tested in every lane at once.
+///
+/// The answers are exact for the `f32` arithmetic of `|c − p|² ≤ reach²` (the box of a node
+/// is never computed nearer than its points, as rounding is monotonic, so pruning never
+/// changes an answer), and the batched answers are the single queries' answers bit for bit.
+/// The distance lower bounds are shrunk by a millionth to cover rounding.
+///
+/// This is our own structure, written from reading VAMP's CAPT (Ramsey et al., RSS 2024),
+/// which precomputes per leaf of a kd-tree the points a sphere of the robot's radii could
+/// touch; we keep the plain tree (no precomputed affordance sets, so memory stays small and
+/// any radius can be asked), and answer distances as well as booleans.
+#[derive(Debug, Clone)]
+pub struct PointTree {
+    xs: Vec<f32>,
+    ys: Vec<f32>,
+    zs: Vec<f32>,
+    /// Per stored point: its index in the cloud it came from.
+    order: Vec<u32>,
+    /// Per node (implicit layout): its box, `[min x, min y, min z, max x, max y, max z]`.
+    boxes: Vec<[f32; 6]>,
+}
+
+impl PointTree {
+    /// The tree of `points` (finite: a [`PointCloud`](crate::PointCloud)'s points; at least
+    /// one). `O(n log n)`.
+    ///
+    /// # Panics
+    /// If `points` is empty or holds more than `u32::MAX` points (a
+    /// [`PointCloud`](crate::PointCloud) holds neither).
+    pub fn new(points: &[Vec3]) -> Self {
+        Self::new_polled(points, &spaces::Never).expect("never stopped")
+    }
+
+    /// As [`new`](Self::new), polling `stop` every few thousand nodes: `None` if it said to
+    /// stop (for clouds of millions of points built under a time limit).
+    pub fn new_polled(points: &[Vec3], stop: &dyn Stop) -> Option<Self> {
+        assert!(!points.is_empty() && u32::try_from(points.len()).is_ok());
+        let n = points.len();
+        let mut items: Vec<(Vec3, u32)> = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (*p, i as u32))
+            .collect();
+        let mut boxes = vec![[0.0_f32; 6]; node_count(n)];
+        let mut stack = vec![(0_usize, 0_usize, n)];
+        let mut built = 0;
+        while let Some((node, lo, hi)) = stack.pop() {
+            built += 1;
+            if built % POLL_NODES == 0 && stop.should_stop() {
+                return None;
+            }
+            let range = &mut items[lo..hi];
+            let (min, max) = range.iter().fold(
+                (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+                |(min, max), (p, _)| (min.min(*p), max.max(*p)),
+            );
+            boxes[node] = [min.x, min.y, min.z, max.x, max.y, max.z];
+            if hi - lo <= LEAF {
+                continue;
+            }
+            let side = max - min;
+            let axis = if side.x >= side.y && side.x >= side.z {
+                0
+            } else if side.y >= side.z {
+                1
+            } else {
+                2
+            };
+            let mid = lo + (hi - lo) / 2;
+            range.select_nth_unstable_by(mid - lo, |a, b| a.0[axis].total_cmp(&b.0[axis]));
+            stack.push((2 * node + 2, mid, hi));
+            stack.push((2 * node + 1, lo, mid));
+        }
+        Some(Self {
+            xs: items.iter().map(|(p, _)| p.x).collect(),
+            ys: items.iter().map(|(p, _)| p.y).collect(),
+            zs: items.iter().map(|(p, _)| p.z).collect(),
+            order: items.iter().map(|&(_, i)| i).collect(),
+            boxes,
+        })
+    }
+
+    /// How many points.
+    pub fn len(&self) -> usize {
+        self.xs.len()
+    }
+
+    /// Always `false`: a tree has at least one point.
+    pub fn is_empty(&self) -> bool {
+        self.xs.is_empty()
+    }
+
+    /// The box of all the points: minimum and maximum corners.
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        let b = &self.boxes[0];
+        (Vec3::new(b[0], b[1], b[2]), Vec3::new(b[3], b[4], b[5]))
+    }
+
+    /// Bytes the structure holds (its arrays' capacities).
+    pub fn memory_bytes(&self) -> usize {
+        4 * (self.xs.capacity() + self.ys.capacity() + self.zs.capacity())
+            + 4 * self.order.capacity()
+            + 24 * self.boxes.capacity()
+            + std::mem::size_of::<Self>()
+    }
+
+    /// `true` if some point is within `reach` of `center` (`|c − p|² ≤ reach²` in `f32`).
+    pub fn any_within(&self, center: Vec3, reach: f32) -> bool {
+        let r2 = reach * reach;
+        let mut walk = Walk::new(self.len());
+        while let Some((node, lo, hi)) = walk.pop() {
+            if box_distance_squared(&self.boxes[node], center) > r2 {
+                continue;
+            }
+            if hi - lo <= LEAF {
+                for j in lo..hi {
+                    if self.distance_squared(j, center) <= r2 {
+                        return true;
+                    }
+                }
+                continue;
+            }
+            self.push_children(&mut walk, (node, lo, hi), center);
+        }
+        false
+    }
+
+    /// A lower bound of the distance from `point` to the nearest point, or `limit` if none is
+    /// nearer than that (a walk that looks no further than `limit`; `f32::INFINITY` for the
+    /// exact nearest distance). Never above the true distance; below it by at most a
+    /// millionth when at most `limit`.
+    pub fn distance_lower_bound(&self, point: Vec3, limit: f32) -> f32 {
+        self.nearest_squared(point, limit).0.sqrt() * LOWER
+    }
+
+    /// The nearest point to `point` if one is within `limit`: its index in the cloud and its
+    /// distance (`f32`).
+    pub fn nearest(&self, point: Vec3, limit: f32) -> Option<(usize, f32)> {
+        let (d2, j) = self.nearest_squared(point, limit);
+        j.map(|j| (self.order[j] as usize, d2.sqrt()))
+    }
+
+    /// The smallest squared distance below `limit²` and the stored point at it.
+    fn nearest_squared(&self, point: Vec3, limit: f32) -> (f32, Option<usize>) {
+        let mut best = limit * limit;
+        let mut at = None;
+        let mut walk = Walk::new(self.len());
+        while let Some((node, lo, hi)) = walk.pop() {
+            if box_distance_squared(&self.boxes[node], point) >= best {
+                continue;
+            }
+            if hi - lo <= LEAF {
+                for j in lo..hi {
+                    let d2 = self.distance_squared(j, point);
+                    if d2 < best {
+                        best = d2;
+                        at = Some(j);
+                    }
+                }
+                continue;
+            }
+            self.push_children(&mut walk, (node, lo, hi), point);
+        }
+        (best, at)
+    }
+
+    /// Pushes the two children of an inner node, the nearer to `point` last (popped first).
+    #[inline]
+    fn push_children(&self, walk: &mut Walk, (node, lo, hi): (usize, usize, usize), point: Vec3) {
+        let mid = lo + (hi - lo) / 2;
+        let (left, right) = (2 * node + 1, 2 * node + 2);
+        let near_left = box_distance_squared(&self.boxes[left], point)
+            <= box_distance_squared(&self.boxes[right], point);
+        if near_left {
+            walk.push(right, mid, hi);
+            walk.push(left, lo, mid);
+        } else {
+            walk.push(left, lo, mid);
+            walk.push(right, mid, hi);
+        }
+    }
+
+    #[inline(always)]
+    fn distance_squared(&self, j: usize, c: Vec3) -> f32 {
+        let (dx, dy, dz) = (c.x - self.xs[j], c.y - self.ys[j], c.z - self.zs[j]);
+        dx * dx + dy * dy + dz * dz
+    }
+
+    /// Bit `l` set if lane `l` of `active` has a point within `reach[l]` of its centre: the
+    /// answers of [`any_within`](Self::any_within), a batch at once.
+    pub(crate) fn any_within_lanes(
+        &self,
+        center: &[LaneF32; 3],
+        reach: LaneF32,
+        active: u32,
+    ) -> u32 {
+        let r2 = reach * reach;
+        let mut open = active;
+        let mut found = 0;
+        let mut walk = Walk::new(self.len());
+        while let Some((node, lo, hi)) = walk.pop() {
+            if box_lanes(&self.boxes[node], center)
+                .simd_le(r2)
+                .to_bitmask()
+                & open
+                == 0
+            {
+                continue;
+            }
+            if hi - lo <= LEAF {
+                for j in lo..hi {
+                    let hit = self.distance_lanes(j, center).simd_le(r2).to_bitmask() & open;
+                    if hit != 0 {
+                        found |= hit;
+                        open &= !hit;
+                        if open == 0 {
+                            return found;
+                        }
+                    }
+                }
+                continue;
+            }
+            let first = open.trailing_zeros() as usize;
+            let at = Vec3::new(
+                center[0].to_array()[first],
+                center[1].to_array()[first],
+                center[2].to_array()[first],
+            );
+            self.push_children(&mut walk, (node, lo, hi), at);
+        }
+        found
+    }
+
+    /// Per lane, [`distance_lower_bound`](Self::distance_lower_bound) of its point with its
+    /// limit; the walk follows the lanes of `live` (others get a value no smaller than theirs
+    /// would be, but no larger than their limit).
+    pub(crate) fn lower_bounds_lanes(
+        &self,
+        point: &[LaneF32; 3],
+        limit: LaneF32,
+        live: u32,
+    ) -> LaneF32 {
+        let mut best = limit * limit;
+        let mut walk = Walk::new(self.len());
+        let first = live.trailing_zeros() as usize % LANES;
+        let lead = Vec3::new(
+            point[0].to_array()[first],
+            point[1].to_array()[first],
+            point[2].to_array()[first],
+        );
+        while let Some((node, lo, hi)) = walk.pop() {
+            if box_lanes(&self.boxes[node], point)
+                .simd_lt(best)
+                .to_bitmask()
+                & live
+                == 0
+            {
+                continue;
+            }
+            if hi - lo <= LEAF {
+                for j in lo..hi {
+                    best = best.min(self.distance_lanes(j, point));
+                }
+                continue;
+            }
+            self.push_children(&mut walk, (node, lo, hi), lead);
+        }
+        best.sqrt() * LaneF32::splat(LOWER)
+    }
+
+    #[inline(always)]
+    fn distance_lanes(&self, j: usize, [x, y, z]: &[LaneF32; 3]) -> LaneF32 {
+        let dx = *x - LaneF32::splat(self.xs[j]);
+        let dy = *y - LaneF32::splat(self.ys[j]);
+        let dz = *z - LaneF32::splat(self.zs[j]);
+        dx * dx + dy * dy + dz * dz
+    }
+}
+
+/// Nodes of the implicit tree of `n` points: a complete tree as deep as the deepest leaf.
+fn node_count(n: usize) -> usize {
+    let (mut depth, mut m) = (0, n);
+    while m > LEAF {
+        m = m.div_ceil(2);
+        depth += 1;
+    }
+    (1 << (depth + 1)) - 1
+}
+
+/// The squared distance from `c` to the box (0 inside).
+#[inline(always)]
+fn box_distance_squared(b: &[f32; 6], c: Vec3) -> f32 {
+    let dx = (b[0] - c.x).max(c.x - b[3]).max(0.0);
+    let dy = (b[1] - c.y).max(c.y - b[4]).max(0.0);
+    let dz = (b[2] - c.z).max(c.z - b[5]).max(0.0);
+    dx * dx + dy * dy + dz * dz
+}
+
+/// Per lane, [`box_distance_squared`].
+#[inline(always)]
+fn box_lanes(b: &[f32; 6], [x, y, z]: &[LaneF32; 3]) -> LaneF32 {
+    let zero = LaneF32::ZERO;
+    let axis = |lo: f32, hi: f32, c: LaneF32| {
+        (LaneF32::splat(lo) - c)
+            .max(c - LaneF32::splat(hi))
+            .max(zero)
+    };
+    let (dx, dy, dz) = (
+        axis(b[0], b[3], *x),
+        axis(b[1], b[4], *y),
+        axis(b[2], b[5], *z),
+    );
+    dx * dx + dy * dy + dz * dz
+}
+
+/// A depth-first walk's stack of nodes (node, first point, end), without allocation.
+struct Walk {
+    entries: [(u32, u32, u32); STACK],
+    len: usize,
+}
+
+impl Walk {
+    #[inline(always)]
+    fn new(n: usize) -> Self {
+        let mut walk = Self {
+            entries: [(0, 0, 0); STACK],
+            len: 0,
+        };
+        walk.push(0, 0, n);
+        walk
+    }
+
+    #[inline(always)]
+    fn push(&mut self, node: usize, lo: usize, hi: usize) {
+        self.entries[self.len] = (node as u32, lo as u32, hi as u32);
+        self.len += 1;
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(usize, usize, usize)> {
+        self.len = self.len.checked_sub(1)?;
+        let (node, lo, hi) = self.entries[self.len];
+        Some((node as usize, lo as usize, hi as usize))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Points on a jittered grid, and queries around them: every answer is brute force's.
+    #[test]
+    fn queries_are_brute_force() {
+        let points: Vec<Vec3> = (0..1000)
+            .map(|i| {
+                let f = i as f32;
+                Vec3::new((f * 0.37).sin(), (f * 0.71).cos(), (f * 0.13).sin() * 0.5)
+            })
+            .collect();
+        let tree = PointTree::new(&points);
+        assert_eq!(tree.len(), 1000);
+        for q in 0..300 {
+            let f = q as f32;
+            let c = Vec3::new(
+                (f * 1.1).cos() * 1.2,
+                (f * 0.3).sin(),
+                (f * 0.77).cos() * 0.6,
+            );
+            let reach = 0.01 + 0.002 * (q % 17) as f32;
+            let brute = points
+                .iter()
+                .map(|p| p.distance_squared(c))
+                .fold(f32::INFINITY, f32::min);
+            assert_eq!(tree.any_within(c, reach), brute <= reach * reach);
+            let (index, _) = tree.nearest(c, f32::INFINITY).unwrap();
+            assert_eq!(points[index].distance_squared(c), brute);
+            let lower = tree.distance_lower_bound(c, 0.05);
+            assert!(lower <= brute.sqrt() && lower >= brute.sqrt().min(0.05) * 0.99999);
+        }
+    }
+}

@@ -1,0 +1,288 @@
+//! Point clouds as obstacles of the Panda: the checker's states against the `f64` reference,
+//! certified edges among a random cloud audited by the independent `f64` audit (every point,
+//! continuous), the diagnosis naming the cloud and the point, and a plan among a cloud.
+
+use glam::{DVec3, Vec3};
+use mit_star::{FirstSolution, Parameters, Planner, RrtConnect, TerminationExt, TimeLimit};
+use proptest::prelude::*;
+use robot::{
+    ArmChecker, ArmProblem, AuditVerdict, CloudObstacle, MotionAudit, ParryChecker, PointCloud,
+    RobotModel, Scene, StateDiagnosis,
+};
+use spaces::{Never, SeededRng, StateSpace};
+use validity::{EdgeStatus, MotionProgress, StateValidity};
+
+const HOME: [f64; 7] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
+
+fn panda() -> RobotModel {
+    ArmProblem::panda().unwrap()
+}
+
+/// The surfaces of `boxes` boxes in front of the Panda, sampled at about `density` points a
+/// box (a camera's view of a cluttered table, from a seed).
+fn box_cloud(boxes: usize, density: usize, seed: u64) -> Vec<Vec3> {
+    let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed);
+    let mut unit = || spaces::rand::RngExt::random_range(&mut rng, -1.0_f32..1.0);
+    let mut points = Vec::new();
+    for _ in 0..boxes {
+        let centre = Vec3::new(0.5 + 0.2 * unit(), 0.5 * unit(), 0.35 + 0.35 * unit());
+        let half = Vec3::new(
+            0.02 + 0.1 * unit().abs(),
+            0.02 + 0.1 * unit().abs(),
+            0.02 + 0.1 * unit().abs(),
+        );
+        for _ in 0..density {
+            // A point on a random face.
+            let mut p = Vec3::new(unit(), unit(), unit());
+            let axis = (unit().abs() * 2.999) as usize;
+            p[axis] = p[axis].signum();
+            points.push(centre + p * half);
+        }
+    }
+    points
+}
+
+/// `sheets` square sheets of points 0.5 m wide, `spacing` apart, at random places and
+/// turns in the Panda's reach (walls a camera sees), from a seed.
+fn sheet_cloud(sheets: usize, spacing: f32, seed: u64) -> Vec<Vec3> {
+    let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed);
+    let mut unit = || spaces::rand::RngExt::random_range(&mut rng, -1.0_f32..1.0);
+    let mut points = Vec::new();
+    let steps = (0.5 / spacing) as i32;
+    for _ in 0..sheets {
+        let centre = Vec3::new(0.4 + 0.25 * unit(), 0.4 * unit(), 0.45 + 0.3 * unit());
+        let normal = Vec3::new(unit(), unit(), unit()).normalize_or(Vec3::X);
+        let u = normal.any_orthonormal_vector();
+        let v = normal.cross(u);
+        for i in 0..=steps {
+            for j in 0..=steps {
+                let (a, b) = (i as f32 * spacing - 0.25, j as f32 * spacing - 0.25);
+                points.push(centre + a * u + b * v);
+            }
+        }
+    }
+    points
+}
+
+fn cloud_scene(points: Vec<Vec3>) -> Scene {
+    let cloud = PointCloud::new(points).unwrap();
+    Scene::new(vec![]).with_cloud(CloudObstacle::new("camera", cloud))
+}
+
+fn certify(checker: &ArmChecker, robot: &RobotModel, a: &[f64], b: &[f64]) -> EdgeStatus {
+    let mut progress = MotionProgress::default();
+    checker
+        .certify_motion(robot.joint_space(), a, b, &mut progress, &Never)
+        .unwrap()
+}
+
+fn random_state(robot: &RobotModel, rng: &mut SeededRng) -> Vec<f64> {
+    let mut q = vec![0.0; 7];
+    robot.joint_space().sample_uniform(rng, &mut q);
+    q
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+
+    /// Single states and batches: the checker's verdict is the reference's wherever the
+    /// reference is decided by more than 0.1 mm either way, and never valid where the
+    /// reference finds a contact.
+    #[test]
+    fn states_among_a_cloud_agree_with_the_reference(
+        boxes in 1..5_usize,
+        density in 50..800_usize,
+        seed in any::<u64>(),
+    ) {
+        let robot = panda();
+        let scene = cloud_scene(box_cloud(boxes, density, seed));
+        let checker = ArmChecker::new(&robot, &scene);
+        let reference = ParryChecker::new(&robot, &scene);
+        let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed);
+        let states: Vec<f64> = (0..64).flat_map(|_| random_state(&robot, &mut rng)).collect();
+        let mut batched = vec![false; 64];
+        checker.are_valid(&states, 7, &mut batched);
+        let mut invalid = 0;
+        for (q, &together) in states.chunks(7).zip(&batched) {
+            let fast = checker.is_valid(q);
+            prop_assert_eq!(fast, together);
+            if fast {
+                prop_assert!(reference.is_valid(q), "{:?}", q);
+            }
+            if reference.is_valid_with_margin(q, 1e-4) == reference.is_valid_with_margin(q, -1e-4) {
+                prop_assert_eq!(fast, reference.is_valid(q), "{:?}", q);
+            }
+            invalid += usize::from(!fast);
+        }
+        let first = checker.first_invalid(&states, 7);
+        prop_assert_eq!(first, batched.iter().position(|v| !v));
+        prop_assert!(invalid < 64);
+    }
+
+    /// Certified edges among a random cloud (planner-free): the independent audit (`f64`,
+    /// every point, continuous) finds no configuration of them within a point's radius of a
+    /// point, and measures every sphere clear of every point's ball by half the checker's
+    /// margin or more.
+    #[test]
+    fn certified_edges_among_a_cloud_pass_the_audit(
+        sheets in 1..4_usize,
+        spacing in 0.005..0.03_f32,
+        seed in any::<u64>(),
+    ) {
+        let found = certify_and_audit(sheets, spacing, seed);
+        prop_assert_eq!(&found.failure, &None);
+        prop_assert!(found.undecided <= found.certified / 2 + 1, "{:?}", found);
+    }
+}
+
+/// What [`certify_and_audit`] found.
+#[derive(Debug, Default)]
+struct Audited {
+    certified: usize,
+    refused: usize,
+    undecided: usize,
+    failure: Option<String>,
+}
+
+/// Sixteen random edges of at most 1.5 rad among `sheets` sheets of points: each with valid
+/// ends certified, and each certified one audited.
+fn certify_and_audit(sheets: usize, spacing: f32, seed: u64) -> Audited {
+    let robot = panda();
+    let scene = cloud_scene(sheet_cloud(sheets, spacing, seed));
+    let checker = ArmChecker::new(&robot, &scene);
+    let audit = MotionAudit::new(&robot, &scene);
+    let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed ^ 5);
+    let mut found = Audited::default();
+    for _ in 0..16 {
+        let a = random_state(&robot, &mut rng);
+        let mut b = random_state(&robot, &mut rng);
+        // Edges of at most 1.5 rad, as planners' extensions are.
+        let length = spaces::euclidean_distance(&a, &b);
+        if length > 1.5 {
+            for (x, y) in b.iter_mut().zip(&a) {
+                *x = y + (*x - y) * 1.5 / length;
+            }
+        }
+        if !(checker.is_valid(&a) && checker.is_valid(&b)) {
+            continue;
+        }
+        match certify(&checker, &robot, &a, &b) {
+            EdgeStatus::Valid => {
+                found.certified += 1;
+                match audit.audit(&a, &b, 200_000) {
+                    AuditVerdict::Clear { clearance, .. } => {
+                        if clearance < 0.5 * checker.margin() {
+                            found.failure = Some(format!("certified edge clear by {clearance}"));
+                        }
+                    }
+                    AuditVerdict::Collides { contact, t, .. } => {
+                        found.failure = Some(format!("certified edge collides at {t}: {contact}"));
+                    }
+                    AuditVerdict::Undecided { .. } => found.undecided += 1,
+                }
+            }
+            EdgeStatus::Invalid => found.refused += 1,
+            EdgeStatus::Unknown => found.failure = Some("unknown without a stop".into()),
+        }
+    }
+    found
+}
+
+/// The random edges are a real test: over a few seeds, some are certified and some refused
+/// (sheets in their way).
+#[test]
+fn random_edges_among_sheets_are_both_certified_and_refused() {
+    let (mut certified, mut refused) = (0, 0);
+    for seed in 0..12 {
+        let found = certify_and_audit(3, 0.01, seed);
+        assert_eq!(found.failure, None, "seed {seed}");
+        certified += found.certified;
+        refused += found.refused;
+    }
+    assert!(
+        certified > 20 && refused > 2,
+        "{certified} certified, {refused} refused"
+    );
+}
+
+/// A cloud point on the hand's sphere at `HOME`: the diagnosis names the link, the cloud and
+/// the point; far away, the cloud is only the nearest obstacle.
+#[test]
+fn the_diagnosis_names_the_cloud_and_the_point() {
+    let robot = panda();
+    let fk = robot::Kinematics::new(&robot);
+    let mut poses = vec![glam::DAffine3::IDENTITY; fk.link_count()];
+    let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+    fk.sphere_centers_f64(&HOME, &mut poses, &mut centres);
+    let hand = robot
+        .links()
+        .iter()
+        .position(|l| l.name == "panda_hand")
+        .unwrap();
+    let at = centres[robot.link_sphere_range(hand).start].0.as_vec3();
+    let mut points = box_cloud(1, 50, 1)
+        .into_iter()
+        .map(|p| p + Vec3::new(2.0, 0.0, 0.0))
+        .collect::<Vec<_>>();
+    points.insert(17, at);
+    let scene = cloud_scene(points.clone());
+    let checker = ArmChecker::new(&robot, &scene);
+    assert!(!checker.is_valid(&HOME));
+    let d = StateDiagnosis::of(&robot, &scene, &checker, &HOME);
+    assert!(!d.valid, "{d}");
+    assert!(
+        d.scene
+            .iter()
+            .any(|c| c.link == "panda_hand" && c.other == "camera point 17"),
+        "{d}"
+    );
+    assert!(d.to_string().contains("camera point 17"), "{d}");
+    points.remove(17);
+    let scene = cloud_scene(points);
+    let checker = ArmChecker::new(&robot, &scene);
+    let d = StateDiagnosis::of(&robot, &scene, &checker, &HOME);
+    assert!(d.valid && d.scene.is_empty(), "{d}");
+    assert!(d.nearest.unwrap().other.starts_with("camera point "));
+}
+
+/// RRT-Connect plans among a cloud of a cluttered table (primitives and a cloud together),
+/// and every edge of its path passes the independent audit.
+#[test]
+fn a_plan_among_a_cloud_passes_the_audit() {
+    let robot = panda();
+    let table = robot::Obstacle::new(
+        robot::Shape::Cuboid {
+            half_extents: DVec3::new(0.3, 0.6, 0.02),
+        },
+        DVec3::new(0.6, 0.0, -0.03),
+        glam::DQuat::IDENTITY,
+    );
+    // A wall of points between the start and the goal.
+    let wall: Vec<Vec3> = (0..40)
+        .flat_map(|i| {
+            (0..30).map(move |j| Vec3::new(0.5, -0.05 + 0.01 * i as f32, 0.02 * j as f32))
+        })
+        .collect();
+    let scene = Scene::new(vec![table])
+        .with_cloud(CloudObstacle::new("wall", PointCloud::new(wall).unwrap()));
+    let start = vec![-0.8, 0.3, 0.0, -1.8, 0.0, 2.0, 0.785];
+    let goal = vec![0.8, 0.3, 0.0, -1.8, 0.0, 2.0, 0.785];
+    let problem = ArmProblem::new("wall", robot.clone(), scene.clone(), start, goal).unwrap();
+    assert!(problem.ends_are_valid());
+    let parameters = Parameters {
+        seed: 3,
+        ..Parameters::default()
+    };
+    let mut planner = RrtConnect::for_problem(&problem, &parameters).unwrap();
+    let outcome = planner
+        .solve(&FirstSolution.or(TimeLimit::seconds(60.0)))
+        .unwrap();
+    let solution = outcome.solution().expect("solved among the cloud");
+    let audit = MotionAudit::new(&robot, &scene);
+    let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
+    assert!(path.len() >= 2);
+    for pair in path.windows(2) {
+        let verdict = audit.audit(&pair[0], &pair[1], 1_000_000);
+        assert!(matches!(verdict, AuditVerdict::Clear { .. }), "{verdict:?}");
+    }
+}
