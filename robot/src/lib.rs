@@ -75,6 +75,6 @@ pub use model::{
 pub use robots::{RobotSource, RobotSourceError, ShippedRobot};
 pub use scenes::{MbmProblem, MovingObstacle, MovingScene, Obstacle, Scene, SceneError, Shape};
 pub use spherise::{
-    CoverOptions, CoverSphere, LinkReport, LinkSource, MAX_COVER_CELLS, SphereCover, SpheriseError,
-    SpheriseOptions, SpherisedUrdf, TriangleMesh, parse_stl, read_stl,
+    CoverOptions, CoverSphere, LinkReport, LinkSource, MAX_COVER_CELLS, Placement, SphereCover,
+    SpheriseError, SpheriseOptions, SpherisedUrdf, TriangleMesh, parse_stl, read_stl,
 };

@@ -39,9 +39,25 @@ pub struct SpheriseArgs {
     /// naming each file (without it, such meshes are an error naming every one).
     #[arg(long, value_name = "URDF")]
     pub fallback: Option<PathBuf>,
+    /// Where the spheres are placed: `grid` (greedy over a grid's corners), `medial`
+    /// (candidates on an approximate medial axis, a finer grid, pairs merged) or `fewest`
+    /// (both, keeping the cover with fewer spheres per mesh). Default: `fewest` under a
+    /// sphere budget (--max-spheres, --max-mesh-spheres), `grid` otherwise.
+    #[arg(long, value_name = "PLACEMENT", value_parser = parse_placement)]
+    pub placement: Option<robot::Placement>,
     /// Where to write the spherised URDF.
     #[arg(long, short)]
     pub output: PathBuf,
+}
+
+/// `grid`, `medial` or `fewest`.
+fn parse_placement(text: &str) -> Result<robot::Placement, String> {
+    match text {
+        "grid" => Ok(robot::Placement::Grid),
+        "medial" => Ok(robot::Placement::Medial),
+        "fewest" => Ok(robot::Placement::Fewest),
+        _ => Err(format!("`{text}`: one of grid, medial, fewest")),
+    }
 }
 
 impl SpheriseArgs {
@@ -76,6 +92,7 @@ impl SpheriseArgs {
             package_roots: self.package_roots.clone(),
             fallback,
             max_spheres: self.max_spheres,
+            placement: self.placement,
             stop: Some(Arc::clone(interrupt)),
         };
         let spherised = match robot::SpherisedUrdf::from_file(&self.urdf, &options) {

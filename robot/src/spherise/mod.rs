@@ -10,7 +10,9 @@
 //!   one), distances through parry and a robust ray-parity test of inside.
 //! - `cell_grid.rs`: the solid cut into cells, each cell's part bounded by a box.
 //! - [`SphereCover`] (`sphere_cover.rs`): few spheres containing every cell's box, each
-//!   protruding by at most the tolerance, with [`CoverOptions`] and [`CoverSphere`].
+//!   protruding by at most the tolerance, with [`CoverOptions`] and [`CoverSphere`];
+//!   [`Placement`] chooses between its grid placement and `medial_cover.rs`'s medial one
+//!   (candidates on an approximate medial axis, a finer grid, pairs merged).
 //! - [`SpherisedUrdf`] (`spherised_urdf.rs`): a URDF's collision meshes and primitives
 //!   covered link by link, and the URDF rewritten with spheres; `urdf_collisions.rs` reads
 //!   the collision elements and finds their mesh files; `sphere_budget.rs` finds the finest
@@ -27,6 +29,7 @@
 //! Nothing else in the crate uses it.
 
 mod cell_grid;
+mod medial_cover;
 mod mesh_file;
 mod solid;
 mod sphere_budget;
@@ -43,7 +46,7 @@ mod urdf_collisions;
 /// 10 mm tolerance, a mesh up to about 0.9 m in each direction fits.
 pub const MAX_COVER_CELLS: usize = 4_000_000;
 
-pub use sphere_cover::{CoverOptions, CoverSphere, SphereCover};
+pub use sphere_cover::{CoverOptions, CoverSphere, Placement, SphereCover};
 pub use spherise_error::SpheriseError;
 pub use spherised_urdf::{LinkReport, LinkSource, SpheriseOptions, SpherisedUrdf};
 pub use stl::{parse_stl, read_stl};

@@ -149,6 +149,18 @@ impl Solid {
             .fold(-d, f64::max)
     }
 
+    /// As [`depth`](Self::depth) for a point known to be inside by a decided parity test:
+    /// with a single closed shell, its distance to the surface (no ray cast).
+    pub(super) fn inside_depth(&self, p: DVec3) -> f64 {
+        if let [shell] = &self.shells[..]
+            && shell.closed
+        {
+            let d = self.surface_distance(p);
+            return if d <= self.near { -d } else { d - self.near };
+        }
+        self.depth(p)
+    }
+
     /// The distance from `p` to the solid (0 inside it), conservative where parity is
     /// undecided (the distance to the surface).
     pub(super) fn distance(&self, p: DVec3) -> f64 {

@@ -12,7 +12,7 @@ use glam::DVec3;
 
 use super::mesh_file::read_mesh;
 use super::sphere_budget::fit_budget;
-use super::sphere_cover::{CoverOptions, CoverSphere, SphereCover, check_work};
+use super::sphere_cover::{CoverOptions, CoverSphere, Placement, SphereCover, check_work};
 use super::spherise_error::SpheriseError;
 use super::triangle_mesh::TriangleMesh;
 use super::urdf_collisions::{Geometry, LinkCollisions, read_collisions, resolve};
@@ -35,6 +35,9 @@ pub struct SpheriseOptions {
     /// same for every link, until the covers together fit (kept sphere elements and fallback
     /// spheres count too). Each link's report gives the tolerance used and what it measured.
     pub max_spheres: Option<usize>,
+    /// Where the spheres are placed; `None` takes [`Placement::Fewest`] under a sphere
+    /// budget (`max_spheres` or the cover's own) and [`Placement::Grid`] otherwise.
+    pub placement: Option<Placement>,
     /// Raised to stop (a SIGINT/SIGTERM handler): covers poll it in every long loop and
     /// return [`SpheriseError::Stopped`].
     pub stop: Option<Arc<AtomicBool>>,
@@ -163,6 +166,13 @@ impl SpherisedUrdf {
                 }
             }
         }
+        let placement = options.placement.unwrap_or(
+            if options.max_spheres.is_some() || options.cover.max_spheres.is_some() {
+                Placement::Fewest
+            } else {
+                Placement::Grid
+            },
+        );
         let cover_all = |tolerance: f64| -> Result<Vec<(String, LinkReport)>, SpheriseError> {
             let cover = CoverOptions {
                 tolerance,
@@ -173,7 +183,9 @@ impl SpherisedUrdf {
                 .map(|(link, source)| {
                     let indent = indentation(text, link.collisions[0].range.start);
                     match source {
-                        Source::Geometry(placed) => covered(link, placed, &cover, &indent, &stop),
+                        Source::Geometry(placed) => {
+                            covered(link, placed, &cover, placement, &indent, &stop)
+                        }
                         Source::Fallback(elements, unusable) => {
                             Ok(fallen_back(link, elements, unusable, &indent))
                         }
@@ -295,6 +307,7 @@ fn covered(
     link: &LinkCollisions,
     placed: &[Placed],
     options: &CoverOptions,
+    placement: Placement,
     indent: &str,
     stop: &AtomicBool,
 ) -> Result<(String, LinkReport), SpheriseError> {
@@ -316,7 +329,7 @@ fn covered(
     for p in placed {
         match p {
             Placed::Mesh(mesh) => {
-                let cover = SphereCover::stoppable(mesh, options, stop)?;
+                let cover = SphereCover::placed(mesh, options, placement, stop)?;
                 report.triangles += cover.triangles;
                 report.closed &= cover.closed;
                 report.tolerance = report.tolerance.max(cover.tolerance);
