@@ -6,7 +6,9 @@ use std::path::Path;
 
 #[test]
 fn every_test_file_of_the_workspace_is_a_module_of_its_crates_test_binary() {
-    let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("workspace root");
+    let workspace = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("workspace root");
     let mut roots = 0;
     let mut forgotten = Vec::new();
     for entry in fs::read_dir(workspace).expect("workspace root is readable") {
@@ -26,7 +28,10 @@ fn every_test_file_of_the_workspace_is_a_module_of_its_crates_test_binary() {
             }
         }
     }
-    assert!(roots >= 6, "found {roots} crates with one test binary, expected at least 6");
+    assert!(
+        roots >= 6,
+        "found {roots} crates with one test binary, expected at least 6"
+    );
     assert!(
         forgotten.is_empty(),
         "test files not declared in their crate's tests/integration.rs (never compiled): {forgotten:?}"

@@ -308,7 +308,11 @@ mod tests {
         assert_eq!(r.room, 128, "the room doubles from its first size");
         let mut low = RecentStates::new(7, 16_384);
         low.push(&[0.0; 7]);
-        assert_eq!(low.room, RecentStates::FIRST_ROOM, "low dimensions keep 512");
+        assert_eq!(
+            low.room,
+            RecentStates::FIRST_ROOM,
+            "low dimensions keep 512"
+        );
     }
 
     #[test]

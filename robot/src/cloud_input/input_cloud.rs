@@ -8,10 +8,11 @@ use glam::Vec3;
 
 use super::cloud_input_error::CloudInputError;
 
-/// The most points a cloud may have, from a file's header or a sampler: 20 million (240 MB of
-/// `f32` coordinates). A header declaring more is refused before anything is allocated; a
-/// depth camera gives about 300 000 points a frame, VAMP's benchmark clouds 10⁴–10⁵.
-pub const MAX_CLOUD_POINTS: usize = 20_000_000;
+/// The most points a cloud may have, from a file's header or a sampler: 2²⁴ = 16 777 216
+/// (200 MB of `f32` coordinates), the most a [`PointCloud`](crate::PointCloud) holds. A header
+/// declaring more is refused before anything is allocated; a depth camera gives about 300 000
+/// points a frame, VAMP's benchmark clouds 10⁴–10⁵.
+pub const MAX_CLOUD_POINTS: usize = crate::PointCloud::MAX_POINTS;
 
 /// The largest point cloud file read: 1 GiB (an ASCII PLY of [`MAX_CLOUD_POINTS`] points is
 /// about 600 MB). Larger files are refused without being read whole.
