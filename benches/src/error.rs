@@ -130,6 +130,20 @@ pub enum HarnessError {
     /// A URDF could not be spherised (`mit-star spherise`).
     #[error(transparent)]
     Spherise(#[from] robot::SpheriseError),
+
+    /// A point cloud file, or a cloud sampled from a scene, that cannot be read or filtered.
+    #[error(transparent)]
+    CloudInput(#[from] robot::CloudInputError),
+
+    /// A point cloud refused as an obstacle (empty, too many points, a bad radius).
+    #[error("point cloud `{name}`: {source}")]
+    Cloud {
+        /// Where the cloud came from.
+        name: String,
+        /// What is wrong.
+        #[source]
+        source: robot::CloudError,
+    },
     /// A MotionBenchMaker folder or arm problem could not be read.
     #[error("arm problem `{name}`: {source}")]
     Arm {

@@ -16,7 +16,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use mit_star::{IterationLimit, Planner};
-use mit_star_benches::commands::ProblemArgs;
+use mit_star_benches::commands::{CloudArgs, ProblemArgs};
 use mit_star_benches::{ParameterOverrides, PlannerSpec, parse_configuration};
 
 fn main() -> ExitCode {
@@ -56,6 +56,7 @@ fn run(args: &[String]) -> Result<(), String> {
         instance: arm.then_some(number),
         resolution: None,
         allow_coarse_step: false,
+        clouds: CloudArgs::default(),
     }
     .build(1.0)
     .map_err(|e| e.to_string())?;

@@ -1,6 +1,6 @@
 """Type stubs of ``mit_star._native``, the Rust half of ``mit_star``."""
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from os import PathLike
 from typing import Any, Optional, Union
 
@@ -46,10 +46,26 @@ class Problem:
         group: Optional[str] = None,
         strict_robot: bool = False,
         resolution: Optional[float] = None,
+        cloud: Optional[ArrayLike] = None,
+        cloud_files: Optional[Sequence[StrPath]] = None,
+        sensor_pose: Optional[Sequence[float]] = None,
+        scene_as_cloud: Optional[int] = None,
+        point_radius: Optional[float] = None,
+        crop_reach: bool = False,
+        remove_robot: Optional[float] = None,
+        voxel: Optional[float] = None,
+        min_distance: Optional[float] = None,
     ) -> Problem:
         """Problem ``instance`` (1-based) of a MotionBenchMaker folder, for ``robot`` (a shipped
         name or a folder with one URDF and one SRDF; default the Panda), planning its SRDF group
-        ``group`` (default every moving joint)."""
+        ``group`` (default every moving joint).
+
+        Point clouds join the scene's obstacles: ``cloud``, an (N, 3) array or list of numbers
+        (copied once; NaN rows dropped), ``cloud_files`` (PLY, PCD, ``.npy``), ``sensor_pose``
+        (x, y, z, roll, pitch, yaw of the sensor in the base frame), ``scene_as_cloud`` (N
+        points sampled on each primitive, which the cloud replaces), ``point_radius`` (metres,
+        default 0.0025), and the filters ``crop_reach``, ``remove_robot`` (padding, at the
+        start), ``voxel``, ``min_distance`` (metres)."""
     @staticmethod
     def boxes(
         lower: ArrayLike,

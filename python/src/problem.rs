@@ -5,7 +5,8 @@
 use std::path::PathBuf;
 
 use mit_star_benches::InstanceProblem;
-use mit_star_benches::commands::ProblemArgs;
+use mit_star_benches::commands::{CloudArgs, ProblemArgs};
+use numpy::ndarray::ArrayView2;
 use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use problems::{PlanningProblem, Problem};
 use pyo3::prelude::*;
@@ -100,6 +101,7 @@ impl PyProblem {
             instance,
             resolution,
             allow_coarse_step,
+            clouds: CloudArgs::default(),
         })
     }
 
@@ -121,6 +123,7 @@ impl PyProblem {
             instance: None,
             resolution,
             allow_coarse_step,
+            clouds: CloudArgs::default(),
         })
     }
 
@@ -130,8 +133,17 @@ impl PyProblem {
     /// folder's requests name, where the SRDF has it; else every moving joint). The folders of
     /// the shipped Panda problems come from
     /// `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`.
+    ///
+    /// Point clouds join the scene's obstacles as `plan`'s cloud options add them: `cloud`, an
+    /// (N, 3) array or list of numbers (copied once: the checker's tree reorders the points;
+    /// NaN rows dropped), `cloud_files` (PLY, PCD or `.npy` paths), `sensor_pose`
+    /// (x, y, z, roll, pitch, yaw of the sensor in the robot's base frame, applied to both),
+    /// `scene_as_cloud` (replace the primitives by N points sampled on each), `point_radius`
+    /// (metres, default 0.0025), and the filters `crop_reach`, `remove_robot` (padding, at the
+    /// start), `voxel` and `min_distance` (metres).
     #[staticmethod]
-    #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None))]
+    #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None, cloud=None, cloud_files=None, sensor_pose=None, scene_as_cloud=None, point_radius=None, crop_reach=false, remove_robot=None, voxel=None, min_distance=None))]
+    #[allow(clippy::too_many_arguments)]
     fn mbm(
         folder: PathBuf,
         instance: Option<u64>,
@@ -139,7 +151,32 @@ impl PyProblem {
         group: Option<String>,
         strict_robot: bool,
         resolution: Option<f64>,
+        cloud: Option<&Bound<'_, PyAny>>,
+        cloud_files: Option<Vec<PathBuf>>,
+        sensor_pose: Option<[f64; 6]>,
+        scene_as_cloud: Option<usize>,
+        point_radius: Option<f64>,
+        crop_reach: bool,
+        remove_robot: Option<f64>,
+        voxel: Option<f64>,
+        min_distance: Option<f64>,
     ) -> BindingResult<Self> {
+        let clouds = CloudArgs {
+            cloud: cloud_files.unwrap_or_default(),
+            scene_as_cloud,
+            point_radius,
+            sensor_pose: sensor_pose
+                .map(|p| p.iter().map(f64::to_string).collect::<Vec<_>>().join(",")),
+            crop_reach,
+            remove_robot,
+            voxel,
+            min_distance,
+            points: cloud
+                .map(cloud_points)
+                .transpose()?
+                .map(|c| c.points)
+                .unwrap_or_default(),
+        };
         Self::resolve(&ProblemArgs {
             problem: Some(format!("mbm:{}", folder.display())),
             problem_file: None,
@@ -150,6 +187,7 @@ impl PyProblem {
             instance,
             resolution,
             allow_coarse_step: false,
+            clouds,
         })
     }
 
@@ -296,4 +334,40 @@ impl PyProblem {
             self.problem.resolution()
         )
     }
+}
+
+/// The points of an (N, 3) array (`float32` and `float64` read in place, anything else
+/// numpy can convert to `float64` converted first), under the file readers' rules (NaN rows
+/// dropped, at most `robot::MAX_CLOUD_POINTS`).
+fn cloud_points(array: &Bound<'_, PyAny>) -> BindingResult<robot::InputCloud> {
+    if let Ok(a) = array.extract::<PyReadonlyArray2<'_, f32>>() {
+        return points_of(&a.as_array());
+    }
+    if let Ok(a) = array.extract::<PyReadonlyArray2<'_, f64>>() {
+        return points_of(&a.as_array());
+    }
+    // Lists, integer arrays, …: converted by numpy (its own error if it cannot).
+    let converted = array
+        .py()
+        .import("numpy")?
+        .call_method1("asarray", (array, "float64"))?;
+    let a = converted
+        .extract::<PyReadonlyArray2<'_, f64>>()
+        .map_err(|_| BindingError::Value("cloud: give an (N, 3) array of numbers".into()))?;
+    points_of(&a.as_array())
+}
+
+fn points_of<T: Copy + Into<f64>>(a: &ArrayView2<'_, T>) -> BindingResult<robot::InputCloud> {
+    if a.ncols() != 3 {
+        return Err(BindingError::Value(format!(
+            "cloud: an (N, 3) array, not ({}, {})",
+            a.nrows(),
+            a.ncols()
+        )));
+    }
+    match a.as_slice() {
+        Some(xyz) => robot::InputCloud::from_xyz("cloud", xyz),
+        None => robot::InputCloud::from_xyz("cloud", &a.iter().copied().collect::<Vec<T>>()),
+    }
+    .map_err(|e| BindingError::Value(e.to_string()))
 }

@@ -298,6 +298,17 @@ impl ArmProblem {
         self
     }
 
+    /// The same problem in `scene` (the same robot, ends and settings; the checker is built
+    /// anew for it). Meant for a scene derived from [`scene`](Self::scene) — clouds added, or
+    /// primitives replaced by a cloud sampled on them: the scene's allowed collisions were
+    /// applied to the robot when the problem was made and are not applied again.
+    #[must_use]
+    pub fn with_scene(mut self, scene: Scene) -> Self {
+        self.scene = Arc::new(scene);
+        self.checker = ArmChecker::new(&self.robot, &self.scene);
+        self
+    }
+
     /// The robot (SRDF and the scene's allowed collisions applied).
     pub fn robot(&self) -> &RobotModel {
         &self.robot

@@ -15,6 +15,7 @@ macro_rules! say {
 mod bench;
 mod check_path;
 mod check_state;
+mod cloud_args;
 mod compare;
 mod listings;
 mod merge;
@@ -32,6 +33,7 @@ use clap::{Parser, Subcommand};
 pub use bench::BenchArgs;
 pub use check_path::CheckPathArgs;
 pub use check_state::CheckStateArgs;
+pub use cloud_args::CloudArgs;
 pub use compare::CompareArgs;
 pub use listings::{ExperimentsArgs, ProblemsArgs, RobotsArgs};
 pub use merge::MergeArgs;

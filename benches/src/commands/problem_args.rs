@@ -1,12 +1,15 @@
 //! [`ProblemArgs`]: the options that name one problem instance (`plan`, `check-path`).
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
 use clap::Args;
 use problems::PlanningProblem;
 
 use crate::budget::short_number;
+use crate::commands::cloud_args::CloudArgs;
 use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::problem_source::ProblemSource;
 use crate::definition::robot_choice::RobotChoice;
 use crate::error::HarnessError;
@@ -52,6 +55,9 @@ pub struct ProblemArgs {
     /// between checked points. Without it, a problem file's `allow_coarse_step` stands.
     #[arg(long)]
     pub allow_coarse_step: bool,
+    /// Point clouds among the obstacles of an arm problem.
+    #[command(flatten)]
+    pub clouds: CloudArgs,
 }
 
 impl ProblemArgs {
@@ -111,6 +117,20 @@ impl ProblemArgs {
                 "--robot, --group and --strict-robot apply to MotionBenchMaker problems (--problem mbm:PATH)"
                     .into(),
             ));
+        }
+        if self.clouds.any() {
+            let Some(arm) = problem.as_arm() else {
+                return Err(HarnessError::Usage(
+                    "point clouds (--cloud, --scene-as-cloud, …) are obstacles of arm problems \
+                     (--problem mbm:PATH)"
+                        .into(),
+                ));
+            };
+            let (with_cloud, lines) = self.clouds.apply(arm, instance_number)?;
+            for line in lines {
+                eprintln!("cloud: {line}");
+            }
+            problem = InstanceProblem::Arm(Arc::new(with_cloud));
         }
         if let Some(arm) = problem.as_arm() {
             for note in arm.notes() {

@@ -18,6 +18,9 @@ const START: RGBColor = RGBColor(0, 150, 60);
 const WAYPOINT: RGBColor = RGBColor(255, 150, 40);
 const GOAL: RGBColor = RGBColor(31, 119, 180);
 const HAND: RGBColor = RGBColor(214, 39, 40);
+const CLOUD: RGBColor = RGBColor(110, 70, 160);
+/// The most cloud points drawn: a larger cloud is drawn every k-th point (and says so).
+const CLOUD_DOTS: usize = 20_000;
 
 /// Waypoints drawn between the start and the goal, at equal fractions of the path length.
 const WAYPOINTS: usize = 3;
@@ -145,11 +148,41 @@ impl<'a> ArmPicture<'a> {
         drawn
     }
 
+    /// The scene's cloud points and the stride they are drawn at (every point up to
+    /// [`CLOUD_DOTS`] of them).
+    fn cloud_dots(&self) -> (usize, usize) {
+        let total: usize = self
+            .problem
+            .scene()
+            .clouds()
+            .iter()
+            .map(|c| c.cloud().len())
+            .sum();
+        (total, total.div_ceil(CLOUD_DOTS).max(1))
+    }
+
     /// Everything to draw, in world coordinates, and the hand's trajectory.
     fn scene_items(&self) -> (Vec<Item>, Vec<DVec3>) {
         let mut items = Vec::new();
         for obstacle in self.problem.scene().obstacles() {
             obstacle_items(obstacle.shape(), obstacle.pose(), &mut items);
+        }
+        let (_, every) = self.cloud_dots();
+        for cloud in self.problem.scene().clouds() {
+            let radius = cloud.cloud().radius();
+            items.extend(
+                cloud
+                    .cloud()
+                    .points()
+                    .iter()
+                    .step_by(every)
+                    .map(|p| Item::Ball {
+                        center: p.as_dvec3(),
+                        radius,
+                        colour: CLOUD,
+                        opacity: 1.0,
+                    }),
+            );
         }
         let fk = Kinematics::new(self.problem.robot());
         let mut links = vec![DAffine3::IDENTITY; fk.link_count()];
@@ -201,18 +234,23 @@ impl<'a> ArmPicture<'a> {
             (20, 10),
             ("sans-serif", 22).into_font().color(&BLACK),
         ))?;
-        let legend = [
-            (OBSTACLE, "obstacles"),
-            (START, "start"),
-            (WAYPOINT, "waypoints along the path"),
-            (GOAL, "goal"),
-            (HAND, "hand trajectory"),
+        let mut legend = vec![
+            (OBSTACLE, "obstacles".to_owned()),
+            (START, "start".to_owned()),
+            (WAYPOINT, "waypoints along the path".to_owned()),
+            (GOAL, "goal".to_owned()),
+            (HAND, "hand trajectory".to_owned()),
         ];
+        match self.cloud_dots() {
+            (0, _) => {}
+            (total, 1) => legend.push((CLOUD, format!("cloud ({total} points)"))),
+            (total, every) => legend.push((CLOUD, format!("cloud (every {every}th of {total})"))),
+        }
         let mut x = 20;
         for (colour, label) in legend {
             header.draw(&Circle::new((x + 8, 54), 7, colour.filled()))?;
             header.draw(&Text::new(
-                label,
+                label.as_str(),
                 (x + 22, 45),
                 ("sans-serif", 15).into_font().color(&BLACK),
             ))?;

@@ -309,6 +309,16 @@ impl Scene {
     pub fn clouds(&self) -> &[Arc<CloudObstacle>] {
         &self.clouds
     }
+
+    /// The scene without its primitives (boxes, cylinders, spheres): its clouds and allowed
+    /// collisions stay. A scene seen only through a camera: sample a cloud on the primitives
+    /// first (`robot::sample_surfaces`), then add it to this.
+    #[must_use]
+    pub fn without_primitives(mut self) -> Self {
+        self.obstacles.clear();
+        self.ids.clear();
+        self
+    }
 }
 
 /// The pairs an allowed-collision matrix allows, once a matrix that is square, symmetric and
