@@ -51,6 +51,7 @@ fn cube(center: [f64; 3], side: f64, n: usize) -> Vec<[f64; 3]> {
 fn a_scene_seen_as_a_cloud_is_planned_in_and_validated() {
     let problem = table_pick();
     let dir = scratch("clouds", "table-pick");
+    let saved = scratch("clouds", "saved.ply");
     let out = common::mit_star(&[
         "plan",
         "--planner",
@@ -62,6 +63,8 @@ fn a_scene_seen_as_a_cloud_is_planned_in_and_validated() {
         "--crop-reach",
         "--voxel",
         "0.02",
+        "--save-cloud",
+        saved.to_str().unwrap(),
         "--time",
         "5",
         "--output",
@@ -87,6 +90,24 @@ fn a_scene_seen_as_a_cloud_is_planned_in_and_validated() {
     let svg = find(&dir, "svg").expect("a picture of the plan");
     let drawn = std::fs::read_to_string(svg).unwrap();
     assert!(drawn.contains("cloud ("), "the legend names the cloud");
+    // The saved cloud, read back as a file, with the scene's primitives dropped.
+    let again = common::succeeded(&[
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        &problem,
+        "--cloud",
+        saved.to_str().unwrap(),
+        "--drop-primitives",
+        "--time",
+        "5",
+        "--no-picture",
+    ]);
+    assert!(
+        again.contains("validated independently, continuously"),
+        "{again}"
+    );
 }
 
 /// The first file under `dir` (recursively) ending in `.extension`.

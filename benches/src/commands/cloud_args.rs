@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 use clap::Args;
 use glam::Vec3;
 use problems::PlanningProblem;
-use robot::{ArmProblem, CloudObstacle, FilterReport, PointCloud, SensorPose};
+use robot::{ArmProblem, CloudObstacle, FilterReport, PlyEncoding, PointCloud, SensorPose};
 
 use crate::error::HarnessError;
 
@@ -49,6 +49,14 @@ pub struct CloudArgs {
     /// Keep points at least this far apart (metres; VAMP's benchmark uses 0.02).
     #[arg(long, value_name = "M", allow_negative_numbers = true)]
     pub min_distance: Option<f64>,
+    /// Plan among the clouds only: the scene file's primitives are dropped (as with
+    /// `--scene-as-cloud`, which samples them first).
+    #[arg(long)]
+    pub drop_primitives: bool,
+    /// Write the cloud as filtered to this file (`.ply`, binary, or `.npy`), to look at it in
+    /// another tool or to plan with it again (`--cloud FILE`).
+    #[arg(long, value_name = "FILE")]
+    pub save_cloud: Option<PathBuf>,
     /// Points given in memory (the Python package's numpy arrays), in the robot's base frame
     /// unless `sensor_pose` is set; they join the files' points.
     #[arg(skip)]
@@ -67,6 +75,8 @@ impl CloudArgs {
             || self.remove_robot.is_some()
             || self.voxel.is_some()
             || self.min_distance.is_some()
+            || self.drop_primitives
+            || self.save_cloud.is_some()
     }
 
     /// `arm` with the cloud these options make added to its scene (its primitives replaced
@@ -178,6 +188,27 @@ impl CloudArgs {
                 name: name.into(),
                 source,
             })?;
+        if let Some(path) = &self.save_cloud {
+            let start = Instant::now();
+            match path.extension().and_then(|e| e.to_str()) {
+                Some("npy") => robot::write_npy(path, cloud.points())?,
+                Some("ply") => {
+                    robot::write_ply(path, cloud.points(), PlyEncoding::BinaryLittleEndian)?;
+                }
+                _ => {
+                    return Err(HarnessError::Usage(format!(
+                        "--save-cloud `{}`: give a .ply or .npy file",
+                        path.display()
+                    )));
+                }
+            }
+            lines.push(format!(
+                "{} points written to `{}` in {}",
+                cloud.len(),
+                path.display(),
+                millis(start.elapsed())
+            ));
+        }
         let (count, radius) = (cloud.len(), cloud.radius());
         let start = Instant::now();
         let obstacle = CloudObstacle::new(name, cloud);
@@ -186,7 +217,7 @@ impl CloudArgs {
             radius * 1e3,
             millis(start.elapsed())
         ));
-        let scene = if self.scene_as_cloud.is_some() {
+        let scene = if self.scene_as_cloud.is_some() || self.drop_primitives {
             arm.scene().clone().without_primitives()
         } else {
             arm.scene().clone()

@@ -234,13 +234,16 @@ impl<'a> ArmPicture<'a> {
             (20, 10),
             ("sans-serif", 22).into_font().color(&BLACK),
         ))?;
-        let mut legend = vec![
-            (OBSTACLE, "obstacles".to_owned()),
+        let mut legend = Vec::new();
+        if !self.problem.scene().obstacles().is_empty() {
+            legend.push((OBSTACLE, "obstacles".to_owned()));
+        }
+        legend.extend([
             (START, "start".to_owned()),
             (WAYPOINT, "waypoints along the path".to_owned()),
             (GOAL, "goal".to_owned()),
             (HAND, "hand trajectory".to_owned()),
-        ];
+        ]);
         match self.cloud_dots() {
             (0, _) => {}
             (total, 1) => legend.push((CLOUD, format!("cloud ({total} points)"))),
