@@ -55,6 +55,8 @@ class Problem:
         remove_robot: Optional[float] = None,
         voxel: Optional[float] = None,
         min_distance: Optional[float] = None,
+        drop_primitives: bool = False,
+        save_cloud: Optional[StrPath] = None,
     ) -> Problem:
         """Problem ``instance`` (1-based) of a MotionBenchMaker folder, for ``robot`` (a shipped
         name or a folder with one URDF and one SRDF; default the Panda), planning its SRDF group
@@ -65,7 +67,8 @@ class Problem:
         (x, y, z, roll, pitch, yaw of the sensor in the base frame), ``scene_as_cloud`` (N
         points sampled on each primitive, which the cloud replaces), ``point_radius`` (metres,
         default 0.0025), and the filters ``crop_reach``, ``remove_robot`` (padding, at the
-        start), ``voxel``, ``min_distance`` (metres)."""
+        start), ``voxel``, ``min_distance`` (metres); ``drop_primitives`` plans among the clouds
+        alone, ``save_cloud`` writes the filtered cloud (``.ply`` or ``.npy``)."""
     @staticmethod
     def boxes(
         lower: ArrayLike,

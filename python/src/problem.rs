@@ -140,9 +140,10 @@ impl PyProblem {
     /// (x, y, z, roll, pitch, yaw of the sensor in the robot's base frame, applied to both),
     /// `scene_as_cloud` (replace the primitives by N points sampled on each), `point_radius`
     /// (metres, default 0.0025), and the filters `crop_reach`, `remove_robot` (padding, at the
-    /// start), `voxel` and `min_distance` (metres).
+    /// start), `voxel` and `min_distance` (metres); `drop_primitives` plans among the clouds
+    /// alone, `save_cloud` writes the filtered cloud (`.ply` or `.npy`).
     #[staticmethod]
-    #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None, cloud=None, cloud_files=None, sensor_pose=None, scene_as_cloud=None, point_radius=None, crop_reach=false, remove_robot=None, voxel=None, min_distance=None))]
+    #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None, cloud=None, cloud_files=None, sensor_pose=None, scene_as_cloud=None, point_radius=None, crop_reach=false, remove_robot=None, voxel=None, min_distance=None, drop_primitives=false, save_cloud=None))]
     #[allow(clippy::too_many_arguments)]
     fn mbm(
         folder: PathBuf,
@@ -160,6 +161,8 @@ impl PyProblem {
         remove_robot: Option<f64>,
         voxel: Option<f64>,
         min_distance: Option<f64>,
+        drop_primitives: bool,
+        save_cloud: Option<PathBuf>,
     ) -> BindingResult<Self> {
         let clouds = CloudArgs {
             cloud: cloud_files.unwrap_or_default(),
@@ -171,6 +174,8 @@ impl PyProblem {
             remove_robot,
             voxel,
             min_distance,
+            drop_primitives,
+            save_cloud,
             points: cloud
                 .map(cloud_points)
                 .transpose()?

@@ -29,13 +29,21 @@ def test_a_numpy_cloud_on_the_robot_is_named(box_panda) -> None:
     assert mit_star.Problem.mbm(box_panda, 1, cloud=np.array(high)).is_arm
 
 
-def test_the_scene_seen_as_a_cloud_is_planned_in(box_panda) -> None:
+def test_the_scene_seen_as_a_cloud_is_planned_in(box_panda, tmp_path) -> None:
+    saved = tmp_path / "scene.npy"
     problem = mit_star.Problem.mbm(
-        box_panda, 1, scene_as_cloud=2000, crop_reach=True, voxel=0.02
+        box_panda, 1, scene_as_cloud=2000, crop_reach=True, voxel=0.02, save_cloud=saved
     )
     result = mit_star.RrtConnect(problem, seed=2).solve(time=5.0)
     assert result.solved
     np.testing.assert_array_equal(result.path[0], problem.start)
+    # The saved cloud, alone, as a numpy array and as a file.
+    points = np.load(saved)
+    assert points.ndim == 2 and points.shape[1] == 3 and points.dtype == np.float32
+    alone = mit_star.Problem.mbm(box_panda, 1, cloud=points, drop_primitives=True)
+    assert mit_star.RrtConnect(alone, seed=2).solve(time=5.0).solved
+    again = mit_star.Problem.mbm(box_panda, 1, cloud_files=[saved], drop_primitives=True)
+    assert mit_star.RrtConnect(again, seed=2).solve(time=5.0).solved
 
 
 def test_bad_clouds_are_refused(box_panda) -> None:

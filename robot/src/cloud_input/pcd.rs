@@ -64,15 +64,7 @@ pub(super) fn parse_pcd(bytes: &[u8], origin: &str) -> Result<PointSink, CloudIn
         message,
     };
     // Byte offset of each field within a point (binary) and its value index (ASCII).
-    let offsets: Vec<usize> = header
-        .fields
-        .iter()
-        .scan(0, |at, f| {
-            let here = *at;
-            *at += f.scalar.size() * f.count;
-            Some(here)
-        })
-        .collect();
+    let offsets = starts(header.fields.iter().map(|f| f.scalar.size() * f.count));
     let need = count.checked_mul(stride);
     match header.data {
         Data::Binary => {
@@ -166,15 +158,7 @@ pub(super) fn parse_pcd(bytes: &[u8], origin: &str) -> Result<PointSink, CloudIn
                     "ASCII data is text, this is not UTF-8".into(),
                 )
             })?;
-            let values: Vec<usize> = header
-                .fields
-                .iter()
-                .scan(0, |at, f| {
-                    let here = *at;
-                    *at += f.count;
-                    Some(here)
-                })
-                .collect();
+            let values = starts(header.fields.iter().map(|f| f.count));
             let width: usize = header.fields.iter().map(|f| f.count).sum();
             let columns = axes.map(|a| values[a]);
             let mut rows = text
@@ -379,4 +363,15 @@ fn coordinate_fields(fields: &[Field], origin: &str) -> Result<[usize; 3], Cloud
         *slot = index;
     }
     Ok(out)
+}
+
+/// Where each of consecutive items of these sizes starts: 0, then the running sums.
+fn starts(sizes: impl Iterator<Item = usize>) -> Vec<usize> {
+    sizes
+        .scan(0, |at, size| {
+            let here = *at;
+            *at += size;
+            Some(here)
+        })
+        .collect()
 }
