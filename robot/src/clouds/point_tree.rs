@@ -37,7 +37,7 @@ const POLL_NODES: usize = 1 << 12;
 /// # Queries
 /// A walk from the root skips every node whose box is farther than the query asks (nearer
 /// child first), and tests the points of the leaves it reaches. The batched queries walk once
-/// for a batch of [`LANES`] centres (the arm checker's configurations): a node is visited if
+/// for a batch of `LANES` centres (the arm checker's configurations): a node is visited if
 /// its box is near for some lane still undecided, its points tested in every lane at once.
 ///
 /// The answers are exact for the `f32` arithmetic of `|c − p|² ≤ reach²` (the box of a node
