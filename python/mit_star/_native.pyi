@@ -63,7 +63,7 @@ class Problem:
         ``group`` (default every moving joint).
 
         Point clouds join the scene's obstacles: ``cloud``, an (N, 3) array or list of numbers
-        (copied once; NaN rows dropped), ``cloud_files`` (PLY, PCD, ``.npy``), ``sensor_pose``
+        (copied; NaN rows dropped), ``cloud_files`` (PLY, PCD, ``.npy``), ``sensor_pose``
         (x, y, z, roll, pitch, yaw of the sensor in the base frame), ``scene_as_cloud`` (N
         points sampled on each primitive, which the cloud replaces), ``point_radius`` (metres,
         default 0.0025), and the filters ``crop_reach``, ``remove_robot`` (padding, at the

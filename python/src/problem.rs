@@ -135,7 +135,7 @@ impl PyProblem {
     /// `tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`.
     ///
     /// Point clouds join the scene's obstacles as `plan`'s cloud options add them: `cloud`, an
-    /// (N, 3) array or list of numbers (copied once: the checker's tree reorders the points;
+    /// (N, 3) array or list of numbers (copied: the checker keeps its own reordered copy in its tree;
     /// NaN rows dropped), `cloud_files` (PLY, PCD or `.npy` paths), `sensor_pose`
     /// (x, y, z, roll, pitch, yaw of the sensor in the robot's base frame, applied to both),
     /// `scene_as_cloud` (replace the primitives by N points sampled on each), `point_radius`
