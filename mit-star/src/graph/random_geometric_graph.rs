@@ -213,9 +213,8 @@ impl RandomGeometricGraph {
         // Only the tail can be read: a list missing more than MERGE_LIMIT entries is requeried.
         let tail = ids.len().saturating_sub(MERGE_LIMIT);
         self.recent.skip(tail);
-        for &id in &ids[tail..] {
-            self.recent.push(&states[id as usize]);
-        }
+        self.recent
+            .extend(ids[tail..].iter().map(|&id| &states[id as usize]));
         self.new_batch();
     }
 

@@ -2,7 +2,7 @@
 //! order, so that bringing a cached neighbour list up to date is a vectorised pass.
 
 /// A ring of the states of the last `capacity` entries of the graph's commit log, stored by
-/// coordinate (all first coordinates, then all second ones, …).
+/// coordinate (all first coordinates, then all second ones, …) within pages of a few states.
 ///
 /// Under a weighted Euclidean metric ([`with_scales`](Self::with_scales)) the ring holds the
 /// scaled coordinates, as the kd-trees do, so the same column pass measures the weighted
@@ -12,61 +12,68 @@
 /// by measuring its distance to each sample committed since the list was made (at most
 /// `capacity` of them; beyond that a fresh tree query is made instead). That is most of the
 /// planner's own work in the anytime phase: a vertex meets the samples of the batches since
-/// its last expansion at each update, and tree pruning cannot cut that down in high dimensions. Read through vertex ids
-/// those states are scattered over the graph's storage; here one coordinate of every recent
-/// sample is a contiguous column, so the squared distances of a query to all of them are
-/// accumulated column by column in loops the compiler vectorises. The ring starts with room for
-/// [`FIRST_ROOM`](Self::FIRST_ROOM) states and doubles while the log outgrows it, up to its
-/// capacity: a search solved within a few batches never allocates (and zeroes) the full ring.
-/// The first room is also held to [`FIRST_BYTES`](Self::FIRST_BYTES): in R^1000, 512 states
-/// would be a 4 MB allocation whose pages the very first push touches one per column (a
-/// millisecond of page faults inside the planner's construction, past a 1 ms budget).
+/// its last expansion at each update, and tree pruning cannot cut that down in high
+/// dimensions. Read through vertex ids those states are scattered over the graph's storage;
+/// here one coordinate of the recent samples of a page is a contiguous run, so the squared
+/// distances of a query to all of them are accumulated column by column in loops the compiler
+/// vectorises.
+///
+/// The ring is a list of pages of at most [`PAGE_BYTES`](Self::PAGE_BYTES) each (between
+/// [`MIN_PAGE_SLOTS`](Self::MIN_PAGE_SLOTS) and [`MAX_PAGE_SLOTS`](Self::MAX_PAGE_SLOTS)
+/// states), allocated as the log first reaches them and never moved: a search solved within a
+/// few batches never allocates (and zeroes) the full ring, and growing costs one page's fresh
+/// memory, not a copy of everything held. In R^1000 a ring of columns doubled by copying put
+/// a megabyte of page faults between two polls of the deadline.
 #[derive(Debug, Clone)]
 pub(crate) struct RecentStates {
     dimension: usize,
     capacity: usize,
-    /// Slots allocated per column (at most `capacity`); position `p` is in slot `p % room`.
-    room: usize,
+    /// States per page; position `p` is in slot `p % (page_slots · page_count)`.
+    page_slots: usize,
+    page_count: usize,
     /// Log positions `end - held .. end` are held.
     end: usize,
     held: usize,
-    /// Column `d` is `columns[d * room..(d + 1) * room]`.
-    columns: Vec<f64>,
+    /// Page `i` (allocated once the log reaches it) holds slots `i · page_slots ..`; column `d`
+    /// of a page is `page[d * page_slots..(d + 1) * page_slots]`.
+    pages: Vec<Vec<f64>>,
     /// Per-coordinate weights of the metric; empty for the plain Euclidean one.
     scales: Vec<f64>,
     /// The largest magnitude of a scaled coordinate pushed so far (0 without scales).
     magnitude: f64,
 }
 
+/// A run of neighbouring slots within one page: page, first slot in the page, length.
+type Run = (usize, usize, usize);
+
 impl RecentStates {
-    /// The states a ring first makes room for (or its capacity, if smaller).
-    pub(crate) const FIRST_ROOM: usize = 512;
+    /// The most bytes a page takes (fewer states per page in high dimensions).
+    pub(crate) const PAGE_BYTES: usize = 64 * 1024;
 
-    /// The most bytes the first room may take (a smaller room in high dimensions, at least
-    /// [`MIN_FIRST_ROOM`](Self::MIN_FIRST_ROOM) states).
-    pub(crate) const FIRST_BYTES: usize = 64 * 1024;
+    /// The most states a page holds, whatever the dimension.
+    pub(crate) const MAX_PAGE_SLOTS: usize = 512;
 
-    /// The fewest states a first room holds, whatever the dimension.
-    pub(crate) const MIN_FIRST_ROOM: usize = 8;
+    /// The fewest states a page holds, whatever the dimension (a cache line of each column).
+    pub(crate) const MIN_PAGE_SLOTS: usize = 8;
 
-    /// The room of the first allocation: [`FIRST_ROOM`](Self::FIRST_ROOM) states, fewer when
-    /// they would take more than [`FIRST_BYTES`](Self::FIRST_BYTES), never beyond the capacity.
-    fn first_room(&self) -> usize {
-        let bytes_per_state = self.dimension.max(1) * size_of::<f64>();
-        (Self::FIRST_BYTES / bytes_per_state)
-            .clamp(Self::MIN_FIRST_ROOM, Self::FIRST_ROOM)
-            .min(self.capacity)
-    }
+    /// States written per column pass in [`extend`](Self::extend): a cache line of `f64`s.
+    pub(crate) const BLOCK: usize = 8;
 
     /// An empty ring for the last `capacity` states of `dimension` coordinates.
     pub(crate) fn new(dimension: usize, capacity: usize) -> Self {
+        let bytes_per_state = dimension.max(1) * size_of::<f64>();
+        let page_slots = (Self::PAGE_BYTES / bytes_per_state)
+            .clamp(Self::MIN_PAGE_SLOTS, Self::MAX_PAGE_SLOTS)
+            .min(capacity)
+            .max(1);
         Self {
             dimension,
             capacity,
-            room: 0,
+            page_slots,
+            page_count: capacity.div_ceil(page_slots),
             end: 0,
             held: 0,
-            columns: Vec::new(),
+            pages: Vec::new(),
             scales: Vec::new(),
             magnitude: 0.0,
         }
@@ -81,45 +88,87 @@ impl RecentStates {
         }
     }
 
-    /// Appends the state of the next log entry (the oldest held one falls out when full).
+    /// Appends the state of the next log entry (the oldest held one falls out when full): the
+    /// one-by-one reference that [`extend`](Self::extend) is tested against.
+    #[cfg(test)]
     pub(crate) fn push(&mut self, state: &[f64]) {
-        debug_assert_eq!(state.len(), self.dimension);
-        if self.capacity == 0 {
-            self.end += 1;
-            return;
-        }
-        if self.held == self.room && self.room < self.capacity {
-            self.grow();
-        }
-        let slot = self.end % self.room;
-        for (d, &x) in state.iter().enumerate() {
-            let x = match self.scales.get(d) {
-                Some(&s) => {
-                    let x = s * x;
-                    self.magnitude = self.magnitude.max(x.abs());
-                    x
-                }
-                None => x,
-            };
-            self.columns[d * self.room + slot] = x;
-        }
-        self.end += 1;
-        self.held = (self.held + 1).min(self.room);
+        self.push_block(&[state]);
     }
 
-    /// Doubles the room (to its [first room](Self::first_room) at first, never beyond the
-    /// capacity), moving the held states to their slots in the larger columns.
-    fn grow(&mut self) {
-        let room = (2 * self.room).clamp(self.first_room(), self.capacity);
-        let mut columns = vec![0.0; room * self.dimension];
-        for p in self.end - self.held..self.end {
-            let (from, to) = (p % self.room, p % room);
-            for d in 0..self.dimension {
-                columns[d * room + to] = self.columns[d * self.room + from];
+    /// Appends the states of the next log entries in order, as pushing them one by one would,
+    /// but a block of [`BLOCK`](Self::BLOCK) states at a time: each column then receives a run
+    /// of neighbouring slots (a cache line) per block instead of one scattered write per state.
+    pub(crate) fn extend<'a>(&mut self, states: impl IntoIterator<Item = &'a [f64]>) {
+        let mut block: [&[f64]; Self::BLOCK] = [&[]; Self::BLOCK];
+        let mut filled = 0;
+        for state in states {
+            block[filled] = state;
+            filled += 1;
+            if filled == Self::BLOCK {
+                self.push_block(&block);
+                filled = 0;
             }
         }
-        self.columns = columns;
-        self.room = room;
+        self.push_block(&block[..filled]);
+    }
+
+    /// The runs of slots of log positions `from..from + count`, in log order (a page boundary
+    /// or the ring's end starts a new run), passed to `each` with the offset of the run's first
+    /// position from `from`.
+    fn runs(&self, from: usize, count: usize, mut each: impl FnMut(Run, usize)) {
+        let slots = self.page_slots * self.page_count;
+        let mut done = 0;
+        while done < count {
+            let slot = (from + done) % slots;
+            let (page, offset) = (slot / self.page_slots, slot % self.page_slots);
+            let len = (count - done).min(self.page_slots - offset);
+            each((page, offset, len), done);
+            done += len;
+        }
+    }
+
+    /// Appends `block` (at most [`BLOCK`](Self::BLOCK) states) column by column.
+    fn push_block(&mut self, block: &[&[f64]]) {
+        debug_assert!(block.len() <= Self::BLOCK);
+        debug_assert!(block.iter().all(|s| s.len() == self.dimension));
+        if self.capacity == 0 || block.is_empty() {
+            self.end += block.len();
+            return;
+        }
+        let mut runs = [(0, 0, 0, 0); Self::BLOCK];
+        let mut count = 0;
+        self.runs(self.end, block.len(), |(page, offset, len), at| {
+            runs[count] = (page, offset, len, at);
+            count += 1;
+        });
+        // Runs in log order: where a tiny ring wraps within the block, the later state wins.
+        let stride = self.page_slots;
+        for &(page, offset, len, at) in &runs[..count] {
+            while self.pages.len() <= page {
+                self.pages.push(vec![0.0; self.dimension * stride]);
+            }
+            let page = &mut self.pages[page];
+            let states = &block[at..at + len];
+            for d in 0..self.dimension {
+                let column = &mut page[d * stride + offset..d * stride + offset + len];
+                match self.scales.get(d) {
+                    Some(&s) => {
+                        for (slot, state) in column.iter_mut().zip(states) {
+                            let x = s * state[d];
+                            self.magnitude = self.magnitude.max(x.abs());
+                            *slot = x;
+                        }
+                    }
+                    None => {
+                        for (slot, state) in column.iter_mut().zip(states) {
+                            *slot = state[d];
+                        }
+                    }
+                }
+            }
+        }
+        self.end += block.len();
+        self.held = (self.held + block.len()).min(self.capacity);
     }
 
     /// Skips `count` log entries without their states (the head of a batch larger than the
@@ -130,6 +179,12 @@ impl RecentStates {
             self.end += count;
             self.held = 0;
         }
+    }
+
+    /// Bytes the ring has allocated for states.
+    #[cfg(test)]
+    fn allocated_bytes(&self) -> usize {
+        self.pages.len() * self.dimension * self.page_slots * size_of::<f64>()
     }
 
     /// Writes to `out` the squared (weighted) Euclidean distances from `query` to the states of
@@ -153,29 +208,22 @@ impl RecentStates {
         out.clear();
         out.resize(count, 0.0);
         let mut magnitude = self.magnitude;
-        if count == 0 {
-            return Some(0.0);
+        for (q, s) in query.iter().zip(&self.scales) {
+            magnitude = magnitude.max((s * q).abs());
         }
-        // At most two runs of slots: up to the end of the ring, then from its start.
-        let first = from % self.room;
-        let head = count.min(self.room - first);
-        let runs = [(first, 0, head), (0, head, count - head)];
-        for (d, &q) in query.iter().enumerate() {
-            let q = match self.scales.get(d) {
-                Some(&s) => {
-                    magnitude = magnitude.max((s * q).abs());
-                    s * q
-                }
-                None => q,
-            };
-            let column = &self.columns[d * self.room..(d + 1) * self.room];
-            for &(slot, at, len) in &runs {
-                for (sum, &y) in out[at..at + len].iter_mut().zip(&column[slot..slot + len]) {
+        let stride = self.page_slots;
+        self.runs(from, count, |(page, offset, len), at| {
+            let page = &self.pages[page];
+            let sums = &mut out[at..at + len];
+            for (d, &q) in query.iter().enumerate() {
+                let q = self.scales.get(d).map_or(q, |s| s * q);
+                let column = &page[d * stride + offset..d * stride + offset + len];
+                for (sum, &y) in sums.iter_mut().zip(column) {
                     let t = q - y;
                     *sum += t * t;
                 }
             }
-        }
+        });
         // Each scaled difference is off by at most 2⁻⁵² · 2 · magnitude (two scalings and a
         // subtraction, each rounded to half an ulp), so the root by at most √n times that;
         // 1e-12 · magnitude covers it for any dimension up to millions.
@@ -266,8 +314,8 @@ mod tests {
 
     #[test]
     fn a_growing_ring_keeps_every_held_state_in_log_order() {
-        // Room for 512, then 1 024 (the capacity), then the oldest fall out.
-        let capacity = 2 * RecentStates::FIRST_ROOM;
+        // A page of 512, then two (the capacity), then the oldest fall out.
+        let capacity = 2 * RecentStates::MAX_PAGE_SLOTS;
         let mut r = RecentStates::new(2, capacity);
         let states: Vec<[f64; 2]> = (0..1_300_u32)
             .map(|p| [f64::from(p), f64::from(p % 7) - 3.0])
@@ -291,28 +339,93 @@ mod tests {
                 assert_eq!(distances(&r, oldest - 1, &q), None, "end {end}");
             }
         }
-        assert_eq!(r.room, capacity);
+        assert_eq!(r.allocated_bytes(), capacity * 2 * size_of::<f64>());
     }
 
     #[test]
-    fn the_first_room_of_a_high_dimensional_ring_is_small() {
-        // Before: 512 states whatever the dimension, 4 MB in R^1000.
+    fn pages_are_small_allocated_as_reached_and_never_moved() {
+        // Before: one block of columns, 512 states whatever the dimension (4 MB in R^1000),
+        // later doubled by copying everything held.
         let mut r = RecentStates::new(1000, 16_384);
         r.push(&[0.5; 1000]);
-        assert_eq!(r.room, RecentStates::MIN_FIRST_ROOM);
-        assert!(r.columns.len() * size_of::<f64>() <= RecentStates::FIRST_BYTES);
+        assert_eq!(r.page_slots, RecentStates::MIN_PAGE_SLOTS);
+        assert!(r.allocated_bytes() <= RecentStates::PAGE_BYTES);
+        let first = r.pages[0].as_ptr();
         let state: Vec<f64> = (0..1000).map(f64::from).collect();
         for _ in 0..100 {
             r.push(&state);
         }
-        assert_eq!(r.room, 128, "the room doubles from its first size");
-        let mut low = RecentStates::new(7, 16_384);
-        low.push(&[0.0; 7]);
+        assert_eq!(r.pages.len(), 101_usize.div_ceil(8), "a page per 8 states");
+        assert_eq!(r.pages[0].as_ptr(), first, "the first page never moved");
+        let low = RecentStates::new(7, 16_384);
         assert_eq!(
-            low.room,
-            RecentStates::FIRST_ROOM,
-            "low dimensions keep 512"
+            low.page_slots,
+            RecentStates::MAX_PAGE_SLOTS,
+            "low dimensions keep 512 states a page"
         );
+    }
+
+    #[test]
+    fn extending_by_blocks_measures_every_held_state_exactly() {
+        // Dimensions (one state a page up to 512), capacities (tiny rings wrap within a
+        // block) and scales, with runs of every length around the block size, against the
+        // distances measured directly from every state pushed.
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for dimension in [1, 3, 9, 1000, 9000] {
+            for capacity in [0, 1, 3, 8, 13, 64, 600] {
+                let scales: Vec<f64> = (0..dimension).map(|d| 0.5 + d as f64 * 0.25).collect();
+                for scaled in [false, true] {
+                    let mut ring = if scaled {
+                        RecentStates::with_scales(&scales, capacity)
+                    } else {
+                        RecentStates::new(dimension, capacity)
+                    };
+                    let weight = |d: usize| if scaled { scales[d] } else { 1.0 };
+                    let mut all: Vec<Vec<f64>> = Vec::new();
+                    for _ in 0..12 {
+                        let run = (next() % 20) as usize;
+                        let first = all.len();
+                        for _ in 0..run {
+                            let label = all.len() as f64 + 1.0;
+                            all.push((0..dimension).map(|d| label * 10.0 - d as f64).collect());
+                        }
+                        ring.extend(all[first..].iter().map(Vec::as_slice));
+                        let context = format!("dimension {dimension}, capacity {capacity}");
+                        let end = all.len();
+                        let oldest = end.saturating_sub(capacity);
+                        let query = vec![0.25; dimension];
+                        for from in [oldest, (oldest + end) / 2, end.saturating_sub(1), end] {
+                            let from = from.max(oldest);
+                            let want: Vec<f64> = all[from..]
+                                .iter()
+                                .map(|s| {
+                                    (0..dimension)
+                                        .map(|d| {
+                                            let t = weight(d) * 0.25 - weight(d) * s[d];
+                                            t * t
+                                        })
+                                        .sum()
+                                })
+                                .collect();
+                            assert_eq!(
+                                distances(&ring, from, &query),
+                                Some(want),
+                                "{context}, from {from}"
+                            );
+                        }
+                        if oldest > 0 {
+                            assert_eq!(distances(&ring, oldest - 1, &query), None, "{context}");
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]
