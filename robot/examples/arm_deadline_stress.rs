@@ -23,14 +23,17 @@
 //! `--steps default,0.25,0.5,1` (radians), `--certification on,off`, `--budgets 0.01,0.1`,
 //! `--seeds N`, `--batches 100,1000` (default: each planner's own), `--planners mit-star,…`,
 //! `--confirm K` (measure a late run again up to `K` times; it counts as late only if every
-//! attempt is: a stall of the planner's own comes back, a machine's rarely does), `--trace`.
+//! attempt is: a stall of the planner's own comes back, a machine's rarely does), `--trace`,
+//! `--extra-boxes N` (adds `N` seeded 1 cm cubes around the robot to each scene, less those
+//! touching the start or a goal: a scene of tens of thousands of obstacles).
 
 use std::path::PathBuf;
 use std::time::Instant;
 
+use glam::{DQuat, DVec3};
 use mit_star::{Configuration, Parameters};
 use problems::PlanningProblem;
-use robot::ArmProblem;
+use robot::{ArmProblem, Obstacle, Scene, Shape};
 use spaces::StateSpace;
 
 #[path = "../../mit-star/examples/support/gaps.rs"]
@@ -75,6 +78,7 @@ fn main() {
     let mut configurations = Configuration::ALL.to_vec();
     let mut trace = false;
     let mut confirm = 0_u32;
+    let mut extra_boxes = 0_usize;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         if arg == "--trace" {
@@ -97,6 +101,7 @@ fn main() {
             "--budgets" => budgets = list(&value),
             "--seeds" => seeds = value.parse().unwrap_or(1).max(1),
             "--confirm" => confirm = value.parse().unwrap_or(0),
+            "--extra-boxes" => extra_boxes = value.parse().unwrap_or(0),
             "--batches" => batches = list(&value).into_iter().map(Some).collect(),
             "--planners" => {
                 configurations = value
@@ -108,7 +113,8 @@ fn main() {
                 eprintln!(
                     "unknown option {other}; options: --scenes box,cage --problem 1 \
                      --steps default,0.25,0.5,1 --certification on,off --budgets 0.01,0.1 \
-                     --seeds N --confirm K --batches 100 --planners mit-star,rrt-connect --trace"
+                     --seeds N --confirm K --batches 100 --planners mit-star,rrt-connect --trace \
+                     --extra-boxes 20000"
                 );
                 std::process::exit(2);
             }
@@ -120,7 +126,7 @@ fn main() {
     for scene in &scenes {
         let folder = data.join(format!("{scene}_panda"));
         let loaded = match ArmProblem::panda_mbm(&folder, index) {
-            Ok(p) => p,
+            Ok(p) => with_extra_boxes(p, extra_boxes),
             Err(e) => {
                 eprintln!("{scene}: {e}");
                 std::process::exit(2);
@@ -318,6 +324,53 @@ fn report(
 }
 
 /// The largest lateness among `runs` (−∞ for none).
+/// `problem` with `count` 1 cm cubes added at seeded random places within 1.2 m of the
+/// robot's base (up to 1.6 m high), less those that touch its start or a goal.
+fn with_extra_boxes(problem: ArmProblem, count: usize) -> ArmProblem {
+    if count == 0 {
+        return problem;
+    }
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut uniform = move |low: f64, high: f64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        low + (high - low) * (state >> 11) as f64 / (1_u64 << 53) as f64
+    };
+    let mut obstacles = problem.scene().obstacles().to_vec();
+    let first = obstacles.len();
+    let cube = Shape::Cuboid {
+        half_extents: DVec3::splat(0.005),
+    };
+    for _ in 0..count {
+        let at = DVec3::new(uniform(-1.2, 1.2), uniform(-1.2, 1.2), uniform(0.0, 1.6));
+        obstacles.push(Obstacle::new(cube, at, DQuat::IDENTITY));
+    }
+    // Drop the cubes the ends touch (ids `obstacle{i}` of a scene built from a list), until
+    // the ends are valid again or nothing more can be dropped.
+    let ends: Vec<Vec<f64>> = std::iter::once(problem.start().to_vec())
+        .chain(problem.goals().iter().cloned())
+        .collect();
+    loop {
+        let candidate = problem.clone().with_scene(Scene::new(obstacles.clone()));
+        let mut touched = std::collections::BTreeSet::new();
+        for q in &ends {
+            for contact in candidate.diagnose(q).scene {
+                if let Some(i) = contact.other.strip_prefix("obstacle") {
+                    touched.extend(i.parse::<usize>().ok().filter(|&i| i >= first));
+                }
+            }
+        }
+        if touched.is_empty() {
+            eprintln!("{} extra cubes kept of {count}", obstacles.len() - first);
+            return candidate;
+        }
+        for &i in touched.iter().rev() {
+            obstacles.remove(i);
+        }
+    }
+}
+
 fn worst<'a>(runs: impl Iterator<Item = &'a Run>) -> f64 {
     runs.map(|r| r.late).fold(f64::NEG_INFINITY, f64::max)
 }
