@@ -54,6 +54,17 @@ pub(crate) fn setup_description(results: &ExperimentResults, index: usize) -> St
             "no"
         },
     );
+    if let Some(cloud) = &i.cloud {
+        text.push_str(&format!(
+            "point cloud: {}, once before the runs\n",
+            cloud.line()
+        ));
+        for step in &cloud.steps {
+            text.push_str("  cloud: ");
+            text.push_str(step);
+            text.push('\n');
+        }
+    }
     for line in p.describe().lines() {
         text.push_str("  ");
         text.push_str(line);
