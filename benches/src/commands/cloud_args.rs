@@ -7,7 +7,8 @@ use clap::Args;
 use glam::Vec3;
 use robot::ArmProblem;
 
-use crate::definition::cloud_spec::{CloudSpec, CloudSummary};
+use crate::definition::cloud_spec::CloudSpec;
+use crate::definition::cloud_summary::CloudSummary;
 use crate::error::HarnessError;
 
 /// The options that make point clouds obstacles of an arm problem. In order: the clouds are

@@ -1,71 +1,18 @@
 //! [`CloudSpec`]: the point cloud of an arm problem as settings — an experiment file's
-//! `cloud` table, the cloud options of `bench`, `plan` and `replan` — and its preparation into
-//! the problem's scene, each step timed ([`CloudSummary`]).
+//! `cloud` table, the cloud options of `bench`, `plan` and `replan` ([`CloudOption`]) — and
+//! its preparation into the problem's scene, each step timed ([`CloudSummary`]).
 
 use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use glam::Vec3;
 use problems::PlanningProblem;
 use robot::{ArmProblem, CloudObstacle, FilterReport, PlyEncoding, PointCloud, SensorPose};
 use serde::{Deserialize, Serialize};
 
+use crate::definition::cloud_option::CloudOption;
+use crate::definition::cloud_summary::{CloudSummary, millis};
 use crate::error::HarnessError;
-
-/// A cloud option, named as an experiment file's `cloud` table and the command line name it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum CloudOption {
-    /// `files` (`--cloud FILE`).
-    Files,
-    /// Points given in memory (the Python package's `cloud` array).
-    Points,
-    /// `sensor_pose` (`--sensor-pose`).
-    SensorPose,
-    /// `scene_as_cloud` (`--scene-as-cloud`).
-    SceneAsCloud,
-    /// `seed` (`--cloud-seed`).
-    Seed,
-    /// `point_radius` (`--point-radius`).
-    PointRadius,
-    /// `crop_reach` (`--crop-reach`).
-    CropReach,
-    /// `remove_robot` (`--remove-robot`).
-    RemoveRobot,
-    /// `voxel` (`--voxel`).
-    Voxel,
-    /// `min_distance` (`--min-distance`).
-    MinDistance,
-    /// `drop_primitives` (`--drop-primitives`).
-    DropPrimitives,
-    /// `--save-cloud` (command line and Python only).
-    SaveCloud,
-}
-
-impl CloudOption {
-    /// The key in an experiment file's `cloud` table and the command-line flag.
-    pub fn names(self) -> (&'static str, &'static str) {
-        match self {
-            Self::Files => ("files", "--cloud"),
-            Self::Points => ("points", "the `cloud` array"),
-            Self::SensorPose => ("sensor_pose", "--sensor-pose"),
-            Self::SceneAsCloud => ("scene_as_cloud", "--scene-as-cloud"),
-            Self::Seed => ("seed", "--cloud-seed"),
-            Self::PointRadius => ("point_radius", "--point-radius"),
-            Self::CropReach => ("crop_reach", "--crop-reach"),
-            Self::RemoveRobot => ("remove_robot", "--remove-robot"),
-            Self::Voxel => ("voxel", "--voxel"),
-            Self::MinDistance => ("min_distance", "--min-distance"),
-            Self::DropPrimitives => ("drop_primitives", "--drop-primitives"),
-            Self::SaveCloud => ("save_cloud", "--save-cloud"),
-        }
-    }
-
-    /// Both names, for messages: `` `cloud.voxel` (--voxel) ``.
-    pub fn describe(self) -> String {
-        let (key, flag) = self.names();
-        format!("`cloud.{key}` ({flag})")
-    }
-}
 
 /// The point cloud settings of an arm problem: where the points come from, then the filters,
 /// in this order — the files are read (and moved by the sensor pose) or the scene's
@@ -123,40 +70,6 @@ pub struct CloudSpec {
 
 fn is_false(b: &bool) -> bool {
     !*b
-}
-
-/// What preparing a problem's cloud did: the points before and after the filters, their
-/// radius, the time to read, sample and filter them and the time to build their tree, and one
-/// line per step.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CloudSummary {
-    /// Points read, given and sampled, before the filters.
-    pub input_points: usize,
-    /// Points in the cloud the problem is planned among.
-    pub points: usize,
-    /// Their radius, metres.
-    pub radius: f64,
-    /// Seconds to read, sample and filter the points.
-    pub prepare_seconds: f64,
-    /// Seconds to build their tree.
-    pub build_seconds: f64,
-    /// One line per step: what it did and how long it took.
-    pub steps: Vec<String>,
-}
-
-impl CloudSummary {
-    /// One line: `1234 of 6000 points of radius 2.5 mm, prepared in 3.10 ms, tree built in
-    /// 0.42 ms`.
-    pub fn line(&self) -> String {
-        format!(
-            "{} of {} points of radius {:.1} mm, prepared in {}, tree built in {}",
-            self.points,
-            self.input_points,
-            self.radius * 1e3,
-            millis(Duration::from_secs_f64(self.prepare_seconds)),
-            millis(Duration::from_secs_f64(self.build_seconds))
-        )
-    }
 }
 
 impl CloudSpec {
@@ -509,11 +422,6 @@ fn step(what: &str, report: &FilterReport) -> String {
         report.before,
         millis(report.elapsed)
     )
-}
-
-/// Milliseconds with two decimals: `3.10 ms`.
-pub(crate) fn millis(d: Duration) -> String {
-    format!("{:.2} ms", d.as_secs_f64() * 1e3)
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! [`ProblemInstance`]: one concrete problem of an experiment, with its time budget.
 
-use crate::definition::cloud_spec::CloudSummary;
+use crate::definition::cloud_summary::CloudSummary;
 use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::problem_source::ProblemSource;
 

@@ -6,7 +6,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use mit_star::Configuration;
 use robot::{ArmProblem, MovingScene, Scene};
 
-use crate::definition::cloud_spec::{CloudSpec, CloudSummary};
+use crate::definition::cloud_spec::CloudSpec;
+use crate::definition::cloud_summary::CloudSummary;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
 use crate::error::HarnessError;
