@@ -446,6 +446,48 @@ mod tests {
         assert!(unknown.unwrap_err().to_string().contains("voxle"));
     }
 
+    fn box_panda() -> ArmProblem {
+        let folder = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../robot/tests/data/mbm/box_panda"
+        );
+        ArmProblem::panda_mbm(Path::new(folder), 1).unwrap()
+    }
+
+    #[test]
+    fn given_points_join_the_files_moved_by_the_sensor_pose_in_place() {
+        let dir = std::env::temp_dir().join(format!("mit-star-cloud-spec-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("one.npy");
+        robot::write_npy(&file, &[Vec3::new(0.0, 0.0, 3.0)]).unwrap();
+        let given = [Vec3::new(1.0, 0.0, 3.0), Vec3::new(2.0, 0.0, 3.0)];
+        let spec = CloudSpec {
+            files: vec![file],
+            sensor_pose: Some([0.5, 0.0, 0.0, 0.0, 0.0, 0.0]),
+            ..CloudSpec::default()
+        };
+        let arm = box_panda();
+        let (planned, summary) = spec.prepare(&arm, 1, &given, "p", None).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        // The file's point, then the given ones, every one moved 0.5 m along x, once.
+        let cloud = planned.scene().clouds()[0].cloud();
+        let mut xs: Vec<f32> = cloud.points().iter().map(|p| p.x).collect();
+        xs.sort_by(f32::total_cmp);
+        assert_eq!(xs, [0.5, 1.5, 2.5]);
+        assert_eq!((summary.input_points, summary.points), (3, 3));
+        assert!(
+            summary.steps[0].contains("1 points read from"),
+            "{:?}",
+            summary.steps
+        );
+        assert_eq!(summary.steps[1], "2 points given");
+        // The primitives stay unless dropped.
+        assert_eq!(
+            planned.scene().obstacles().len(),
+            arm.scene().obstacles().len()
+        );
+    }
+
     #[test]
     fn settings_without_a_source_or_with_a_missing_file_are_named() {
         let only_voxel = CloudSpec {
