@@ -346,9 +346,11 @@ impl Experiment {
 fn cloud_table(cloud: &CloudSpec) -> toml::Table {
     let mut absolute = cloud.clone();
     for f in &mut absolute.files {
-        *f = std::fs::canonicalize(&*f).unwrap_or_else(|_| f.clone());
+        let path = std::fs::canonicalize(&*f).unwrap_or_else(|_| f.clone());
+        // TOML holds UTF-8 only: a path that is not is written as it displays.
+        *f = path.to_string_lossy().into_owned().into();
     }
-    // Every value of a checked cloud table fits TOML (seeds and counts within i64).
+    // Every other value of a checked cloud table fits TOML (seeds and counts within i64).
     toml::Table::try_from(&absolute).unwrap_or_default()
 }
 
