@@ -24,7 +24,8 @@ pub struct CloudArgs {
     #[arg(long, value_name = "FILE")]
     pub cloud: Vec<PathBuf>,
     /// Replace the scene's primitives by a cloud of N points sampled on the surface of each
-    /// (VAMP's benchmark protocol, default 10 000; seeded by the problem's index).
+    /// (VAMP's benchmark protocol, default 10 000; seeded by the problem's index, or by
+    /// `bench`'s and `replan`'s `--cloud-seed`).
     #[arg(long, value_name = "N", num_args = 0..=1, default_missing_value = "10000")]
     pub scene_as_cloud: Option<usize>,
     /// The radius of every point, in metres (default 0.0025).
@@ -54,7 +55,8 @@ pub struct CloudArgs {
     #[arg(long)]
     pub drop_primitives: bool,
     /// Write the cloud as filtered to this file (`.ply`, binary, or `.npy`), to look at it in
-    /// another tool or to plan with it again (`--cloud FILE`).
+    /// another tool or to plan with it again (`--cloud FILE`); one problem's cloud: not for
+    /// `bench` and `replan`.
     #[arg(long, value_name = "FILE")]
     pub save_cloud: Option<PathBuf>,
     /// Points given in memory (the Python package's numpy arrays), in the robot's base frame
