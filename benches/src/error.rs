@@ -144,6 +144,32 @@ pub enum HarnessError {
         #[source]
         source: robot::CloudError,
     },
+    /// A point cloud option of a problem (an experiment's `cloud` table, the command line's
+    /// `--cloud`, `--voxel`, …) that cannot be used: it names the problem entry and the option.
+    #[error("problem {problem}: cloud option {option}: {source}")]
+    CloudOption {
+        /// The problem: `` `table_pick_panda` #1 (problems[0]) ``.
+        problem: String,
+        /// The option: `` `cloud.voxel` (--voxel) ``.
+        option: String,
+        /// What is wrong with it.
+        #[source]
+        source: Box<HarnessError>,
+    },
+    /// A cloud filter (or the reading and sampling before them) left no point: an empty cloud
+    /// would silently be an empty scene.
+    #[error(
+        "problem {problem}: cloud option {option} leaves none of the {before} points (an empty \
+         cloud would silently be an empty scene)"
+    )]
+    CloudEmptied {
+        /// The problem entry.
+        problem: String,
+        /// The option whose step left no point.
+        option: String,
+        /// The points before that step.
+        before: usize,
+    },
     /// A MotionBenchMaker folder or arm problem could not be read.
     #[error("arm problem `{name}`: {source}")]
     Arm {
@@ -279,6 +305,33 @@ pub enum HarnessError {
 }
 
 impl HarnessError {
+    /// A cloud error ([`CloudOption`](Self::CloudOption), [`CloudEmptied`](Self::CloudEmptied))
+    /// with its problem named as the experiment's entry `entry` (`problems[2]`); other errors
+    /// as they are.
+    pub(crate) fn in_problem_entry(self, entry: &str) -> Self {
+        match self {
+            Self::CloudOption {
+                problem,
+                option,
+                source,
+            } => Self::CloudOption {
+                problem: format!("{problem} ({entry})"),
+                option,
+                source,
+            },
+            Self::CloudEmptied {
+                problem,
+                option,
+                before,
+            } => Self::CloudEmptied {
+                problem: format!("{problem} ({entry})"),
+                option,
+                before,
+            },
+            other => other,
+        }
+    }
+
     /// `true` for errors in what the user gave (names, values, files, folders): the command
     /// line reports them with exit code 2; other errors exit with 1.
     pub fn is_input_error(&self) -> bool {

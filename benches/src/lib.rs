@@ -88,6 +88,9 @@ pub mod replanning;
 pub mod statistics;
 
 pub use budget::{BudgetError, MAX_BUDGET_SECONDS, budget_duration, deadline_after, short_number};
+pub use definition::cloud_option::CloudOption;
+pub use definition::cloud_spec::CloudSpec;
+pub use definition::cloud_summary::CloudSummary;
 pub use definition::experiment::Experiment;
 pub use definition::experiment_file;
 pub use definition::mbm_folder::MbmFolder;

@@ -173,7 +173,10 @@ fn bad_cloud_options_are_refused_by_name() {
     plan(&["--scene-as-cloud", "--voxel", "-1"], &["voxel size"]);
     let far = ply("far", &cube([30.0, 0.0, 0.0], 0.1, 3));
     let far = far.to_str().unwrap();
-    plan(&["--cloud", far, "--crop-reach"], &["point cloud `cloud`"]);
+    plan(
+        &["--cloud", far, "--crop-reach"],
+        &["`cloud.crop_reach` (--crop-reach) leaves none of the 27 points"],
+    );
     plan(
         &["--cloud", far, "--sensor-pose", "1,2,3"],
         &["six numbers"],

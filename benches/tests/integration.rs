@@ -7,6 +7,7 @@ mod common;
 
 mod arm_experiment;
 mod cli;
+mod cloud_experiments;
 mod clouds;
 mod durability;
 mod extreme_values;

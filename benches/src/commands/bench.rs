@@ -8,6 +8,7 @@ use std::time::SystemTime;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
+use crate::commands::cloud_args::CloudArgs;
 use crate::definition::experiment::Experiment;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
@@ -60,6 +61,15 @@ pub struct BenchArgs {
     /// experiment files: `strict_robot = true`).
     #[arg(long)]
     pub strict_robot: bool,
+    /// Point clouds among the obstacles of every MotionBenchMaker problem (flags mode;
+    /// experiment files: a `cloud` table in the problem entry), prepared once per problem
+    /// instance before the runs.
+    #[command(flatten)]
+    pub clouds: CloudArgs,
+    /// The seed of `--scene-as-cloud`'s sampling for every problem (flags mode; default: each
+    /// problem's index in its folder).
+    #[arg(long, value_name = "SEED")]
+    pub cloud_seed: Option<u64>,
     /// Dimension of the built-in problems (flags mode).
     #[arg(long, conflicts_with = "dims")]
     pub dim: Option<usize>,
@@ -143,15 +153,18 @@ impl BenchArgs {
             || self.robot.is_some()
             || self.group.is_some()
             || self.strict_robot
+            || self.clouds.any()
+            || self.cloud_seed.is_some()
             || self.name.is_some();
         let experiment = match (&self.file, &self.experiment) {
             (Some(_), _) | (_, Some(_)) if flags_mode => {
                 return Err(HarnessError::Usage(
                     "--planners, --problem, --dim(s), --time, --instances, --resolution, \
-                     --robot, --group, --strict-robot and --name describe an experiment on the \
-                     command line; they cannot be combined with an experiment file or \
-                     --experiment (whose problem entries take `robot`, `group` and \
-                     `strict_robot` keys)"
+                     --robot, --group, --strict-robot, the cloud options (--cloud, \
+                     --scene-as-cloud, …) and --name describe an experiment on the command \
+                     line; they cannot be combined with an experiment file or --experiment \
+                     (whose problem entries take `robot`, `group`, `strict_robot` keys and a \
+                     `cloud` table)"
                         .into(),
                 ));
             }
@@ -241,9 +254,36 @@ impl BenchArgs {
         };
         let robot = RobotChoice::parse(self.robot.as_deref(), None, self.strict_robot)?
             .with_group(self.group.as_deref());
+        let cloud = if self.clouds.any() || self.cloud_seed.is_some() {
+            if let Some(path) = &self.clouds.save_cloud {
+                return Err(HarnessError::Usage(format!(
+                    "--save-cloud `{}` writes one problem's cloud; bench prepares one per problem \
+                     instance: save one with `mit-star plan --save-cloud`",
+                    path.display()
+                )));
+            }
+            Some(self.clouds.spec(self.cloud_seed)?)
+        } else {
+            None
+        };
         let mut problems = Vec::new();
         for text in &self.problems {
             let source = ProblemSource::parse_for_robot(text, None, &robot)?;
+            if let Some(cloud) = &cloud {
+                let named = format!("`{text}`");
+                if !matches!(source, ProblemSource::Mbm(_)) {
+                    return Err(HarnessError::CloudOption {
+                        problem: named,
+                        option: cloud.first_option().describe(),
+                        source: Box::new(HarnessError::Usage(
+                            "point clouds are obstacles of arm problems (--problem mbm:PATH); \
+                             this is a box world"
+                                .into(),
+                        )),
+                    });
+                }
+                cloud.check(&named, false)?;
+            }
             if !robot.is_default() && !matches!(source, ProblemSource::Mbm(_)) {
                 return Err(HarnessError::Usage(format!(
                     "--robot, --group and --strict-robot apply to MotionBenchMaker problems (mbm:PATH), not `{text}`"
@@ -288,14 +328,17 @@ impl BenchArgs {
                 instances,
                 resolution: self.resolution,
                 allow_coarse_step: self.allow_coarse_step,
+                cloud: cloud.clone(),
             });
         }
         let name = self.name.clone().unwrap_or_else(|| {
             let first = &problems[0];
             let dims: Vec<String> = first.dimensions.iter().map(|d| format!("n{d}")).collect();
             let more = if problems.len() > 1 { "-and-more" } else { "" };
+            // Among a cloud, another experiment: another default folder.
+            let cloud = if first.cloud.is_some() { "-cloud" } else { "" };
             crate::definition::experiment::safe_name(&format!(
-                "{}-{}{more}",
+                "{}-{}{cloud}{more}",
                 first.source.label(),
                 dims.join("-")
             ))
@@ -319,6 +362,11 @@ impl BenchArgs {
     pub fn run(&self, interrupt: Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
         let experiment = self.experiment()?;
         let instances = experiment.instances()?;
+        for instance in &instances {
+            if let Some(cloud) = &instance.cloud {
+                eprintln!("cloud: `{}`: {}", instance.id, cloud.line());
+            }
+        }
         check_planners_build(&experiment, &instances)?;
         let threads = match self.threads {
             Some(0) => return Err(HarnessError::Usage("--threads must be at least 1".into())),

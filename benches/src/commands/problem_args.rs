@@ -118,6 +118,7 @@ impl ProblemArgs {
                     .into(),
             ));
         }
+        let mut cloud = None;
         if self.clouds.any() {
             let Some(arm) = problem.as_arm() else {
                 return Err(HarnessError::Usage(
@@ -126,11 +127,13 @@ impl ProblemArgs {
                         .into(),
                 ));
             };
-            let (with_cloud, lines) = self.clouds.apply(arm, instance_number)?;
-            for line in lines {
+            let label = format!("`{}` #{instance_number}", source.label());
+            let (with_cloud, summary) = self.clouds.apply(arm, instance_number, &label)?;
+            for line in &summary.steps {
                 eprintln!("cloud: {line}");
             }
             problem = InstanceProblem::Arm(Arc::new(with_cloud));
+            cloud = Some(summary);
         }
         if let Some(arm) = problem.as_arm() {
             for note in arm.notes() {
@@ -162,6 +165,7 @@ impl ProblemArgs {
             instance: instance_number,
             budget,
             problem,
+            cloud,
         };
         if let Some(boxes) = instance.problem.as_boxes()
             && boxes.step_is_coarse()

@@ -6,12 +6,13 @@ use std::sync::atomic::AtomicBool;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
+use crate::commands::cloud_args::CloudArgs;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::problem_source::sanitise;
 use crate::error::HarnessError;
 use crate::replanning::{
-    PlanningBudget, ReplanningExperiment, ReplanningRules, ReplanningScene, ReplanningSummary,
-    TrialPicture, write_trials_csv,
+    PlanningBudget, ReplanningExperiment, ReplanningRules, ReplanningScene, ReplanningSetup,
+    ReplanningSummary, StaticAudit, TrialPicture, TrialRecord, write_trials_csv,
 };
 
 /// Options of `mit-star replan`. The defaults are the shipped experiment: both scenes, the
@@ -67,6 +68,14 @@ pub struct ReplanArgs {
     /// Do not draw the first trial of each planner and scene.
     #[arg(long)]
     pub no_picture: bool,
+    /// A point cloud standing among each scene's fixed obstacles (`--scene-as-cloud` samples
+    /// the fixed ones — the table, the vertical scene's ceiling and wall — and replaces them;
+    /// the moving obstacles stay boxes), prepared once per scene at the first leg's start.
+    #[command(flatten)]
+    pub clouds: CloudArgs,
+    /// The seed of `--scene-as-cloud`'s sampling (default 0).
+    #[arg(long, value_name = "SEED")]
+    pub cloud_seed: Option<u64>,
 }
 
 impl ReplanArgs {
@@ -103,7 +112,20 @@ impl ReplanArgs {
             ..ReplanningRules::default()
         };
         let rules = rules.checked(crate::replanning::PANDA_VELOCITY_LIMITS.len())?;
+        let cloud = if self.clouds.any() || self.cloud_seed.is_some() {
+            if let Some(path) = &self.clouds.save_cloud {
+                return Err(HarnessError::Usage(format!(
+                    "--save-cloud `{}`: replan prepares one cloud per scene; save one with \
+                     `mit-star plan --save-cloud`",
+                    path.display()
+                )));
+            }
+            Some(self.clouds.spec(self.cloud_seed)?)
+        } else {
+            None
+        };
         Ok(ReplanningExperiment {
+            cloud,
             scenes,
             planners: ReplanningExperiment::planners(&self.planners, &overrides)?,
             trials: self.trials,
@@ -121,9 +143,16 @@ impl ReplanArgs {
     pub fn run(&self, interrupt: &AtomicBool) -> Result<CommandOutcome, HarnessError> {
         let experiment = self.experiment()?;
         crate::writable_folder(&self.output)?;
+        let prepared = experiment.setups()?;
+        for (setup, cloud) in &prepared {
+            for step in cloud.iter().flat_map(|c| &c.steps) {
+                eprintln!("cloud: `{}`: {step}", setup.name);
+            }
+        }
+        let setups: Vec<ReplanningSetup> = prepared.into_iter().map(|(s, _)| s).collect();
         let total = experiment.scenes.len() * experiment.planners.len() * experiment.trials;
         let mut count = 0;
-        let records = experiment.run(interrupt, |r| {
+        let records = experiment.run_in(&setups, interrupt, |r| {
             count += 1;
             eprintln!(
                 "[{count}/{total}] {} {} trial {}: {} at {:.2} s, travelled {:.2}, {} plans ({} without a path, {} adopted), {} stops, {:.1} s wall",
@@ -147,9 +176,21 @@ impl ReplanArgs {
         let path = self.output.join("summary.md");
         std::fs::write(&path, &table).map_err(|source| HarnessError::Io { path, source })?;
         say!("{table}");
+        let mut unproven = 0;
+        if experiment.cloud.is_some() {
+            for setup in &setups {
+                let trials: Vec<&TrialRecord> =
+                    records.iter().filter(|r| r.scene == setup.name).collect();
+                let audit = StaticAudit::of(setup, &trials);
+                say!("{}: {}", setup.name, audit.line());
+                for failure in &audit.failures {
+                    eprintln!("WARNING: {failure}");
+                }
+                unproven += audit.failures.len();
+            }
+        }
         if !self.no_picture {
-            for scene in &experiment.scenes {
-                let setup = scene.setup()?;
+            for setup in &setups {
                 for planner in &experiment.planners {
                     let first = records
                         .iter()
@@ -165,7 +206,7 @@ impl ReplanArgs {
                             self.output.join(format!("{stem}.svg")),
                             self.output.join(format!("{stem}.png")),
                         );
-                        TrialPicture::new(&setup, record).save(&svg, &png)?;
+                        TrialPicture::new(setup, record).save(&svg, &png)?;
                     }
                 }
             }
@@ -173,6 +214,8 @@ impl ReplanArgs {
         say!("results written to {}", self.output.display());
         Ok(if records.len() < total {
             CommandOutcome::Interrupted
+        } else if unproven > 0 {
+            CommandOutcome::InvalidPaths
         } else {
             CommandOutcome::Success
         })

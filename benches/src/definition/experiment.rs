@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use crate::definition::cloud_spec::CloudSpec;
 use crate::definition::experiment_file::ExperimentFile;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::PlannerSpec;
@@ -211,8 +212,11 @@ impl Experiment {
     /// the same id.
     pub fn instances(&self) -> Result<Vec<ProblemInstance>, HarnessError> {
         let mut all: Vec<ProblemInstance> = Vec::new();
-        for spec in &self.problems {
-            for instance in spec.instances()? {
+        for (i, spec) in self.problems.iter().enumerate() {
+            let built = spec
+                .instances()
+                .map_err(|e| e.in_problem_entry(&format!("problems[{i}]")))?;
+            for instance in built {
                 if all.iter().any(|i| i.id == instance.id) {
                     return Err(HarnessError::Usage(format!(
                         "problem instance `{}` appears twice in the experiment",
@@ -312,6 +316,9 @@ impl Experiment {
                         e.insert("dimensions".into(), dims.into());
                     }
                 }
+                if let Some(cloud) = &p.cloud {
+                    e.insert("cloud".into(), cloud_table(cloud).into());
+                }
                 let time: Vec<toml::Value> = p.budgets.iter().map(|&b| b.into()).collect();
                 e.insert("time".into(), time.into());
                 if p.source.is_seeded() {
@@ -331,6 +338,20 @@ impl Experiment {
         t.insert("problems".into(), problems.into());
         toml::to_string(&t).unwrap_or_default()
     }
+}
+
+/// A problem's `cloud` table as the results folder's `experiment.toml` records it: every key
+/// given, the files as absolute paths (the folder is resumed from anywhere). A changed cloud
+/// option changes the table, so a folder is never resumed with another cloud.
+fn cloud_table(cloud: &CloudSpec) -> toml::Table {
+    let mut absolute = cloud.clone();
+    for f in &mut absolute.files {
+        let path = std::fs::canonicalize(&*f).unwrap_or_else(|_| f.clone());
+        // TOML holds UTF-8 only: a path that is not is written as it displays.
+        *f = path.to_string_lossy().into_owned().into();
+    }
+    // Every other value of a checked cloud table fits TOML (seeds and counts within i64).
+    toml::Table::try_from(&absolute).unwrap_or_default()
 }
 
 /// The rule of experiment names, which name their results folder `results/<name>`.

@@ -34,6 +34,11 @@
 //! # group = "right_arm"               # plan only this SRDF planning group (default: every
 //! #                                   # moving joint; the others take the request's values)
 //! # strict_robot = true               # refuse SRDF entries naming links the robot lacks
+//! # [problems.cloud]                  # `name = "mbm:PATH"` only: a point cloud obstacle,
+//! # scene_as_cloud = 10000            # the keys of `CloudSpec` (the command line's cloud
+//! # voxel = 0.02                      # options: files, sensor_pose, scene_as_cloud, seed,
+//! #                                   # point_radius, crop_reach, remove_robot, voxel,
+//! #                                   # min_distance, drop_primitives)
 //! ```
 
 use std::fmt;
@@ -42,6 +47,7 @@ use std::path::Path;
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 
+use crate::definition::cloud_spec::CloudSpec;
 use crate::definition::experiment::Experiment;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
@@ -147,6 +153,9 @@ pub struct ProblemEntry {
     pub group: Option<String>,
     /// Refuse SRDF and allowed-collision entries naming links the robot lacks.
     pub strict_robot: Option<bool>,
+    /// A point cloud among the obstacles (MotionBenchMaker problems only): the keys of
+    /// [`CloudSpec`], named as the command line's cloud options.
+    pub cloud: Option<CloudSpec>,
 }
 
 /// One number of seconds or a list of them; integers are accepted.
@@ -382,6 +391,25 @@ fn problem_spec(
         }
         (None, None) => vec![0],
     };
+    let cloud = match p.cloud {
+        None => None,
+        Some(_) if !matches!(source, ProblemSource::Mbm(_)) => {
+            return Err(bad(
+                ".cloud",
+                HarnessError::Usage(format!(
+                    "point clouds are obstacles of arm problems (`name = \"mbm:PATH\"`); `{}` \
+                     is a box world",
+                    source.label()
+                )),
+            ));
+        }
+        Some(cloud) => {
+            let cloud = cloud.relative_to(base);
+            // The error names the entry and the option: `cloud.files` (--cloud).
+            cloud.check(&format!("`{}` (problems[{index}])", source.label()), false)?;
+            Some(cloud)
+        }
+    };
     if instances.len() > 1 && !source.is_seeded() {
         return Err(bad(
             ".instances",
@@ -398,6 +426,7 @@ fn problem_spec(
         instances,
         resolution: p.resolution,
         allow_coarse_step: p.allow_coarse_step.unwrap_or(false),
+        cloud,
     })
 }
 

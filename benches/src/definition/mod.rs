@@ -10,7 +10,9 @@
 //!   MotionBenchMaker folder, [`mbm_folder`], planned for the robot of [`robot_choice`]);
 //!   [`problem_instance`]: one concrete instance (id, dimension,
 //!   layout, time budget); [`problem_kind`]: the problem an instance plans on, a box world or an
-//!   arm, and how each kind builds planners, checks paths and describes itself.
+//!   arm, and how each kind builds planners, checks paths and describes itself;
+//!   [`cloud_spec`]: the point cloud of an arm problem, and its preparation into the scene
+//!   ([`cloud_option`]: its options' names; [`cloud_summary`]: what preparing it did).
 //!
 //! May use: the planner and problem crates (`mit-star`, `problems`, `robot`, `spaces`,
 //! `validity`), [`crate::error`], [`crate::budget`] and [`crate::path_validation`]; from
@@ -19,6 +21,9 @@
 
 pub mod experiment_file;
 
+pub(crate) mod cloud_option;
+pub(crate) mod cloud_spec;
+pub(crate) mod cloud_summary;
 pub(crate) mod experiment;
 pub(crate) mod mbm_folder;
 pub(crate) mod parameter_overrides;

@@ -1,5 +1,6 @@
 //! [`ProblemInstance`]: one concrete problem of an experiment, with its time budget.
 
+use crate::definition::cloud_summary::CloudSummary;
 use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::problem_source::ProblemSource;
 
@@ -23,6 +24,9 @@ pub struct ProblemInstance {
     pub budget: f64,
     /// The problem.
     pub problem: InstanceProblem,
+    /// What preparing the problem's point cloud did, once before its runs (arm problems with
+    /// a `cloud`; `None` without one).
+    pub cloud: Option<CloudSummary>,
 }
 
 impl ProblemInstance {

@@ -295,9 +295,21 @@ fn describe_arm(p: &ArmProblem) -> String {
             robot::Shape::Sphere { .. } => 2,
         }] += 1;
     }
+    let clouds: Vec<String> = p
+        .scene()
+        .clouds()
+        .iter()
+        .map(|c| {
+            format!(
+                "{{ points = {}, radius = {} }}",
+                c.cloud().len(),
+                c.cloud().radius()
+            )
+        })
+        .collect();
     format!(
         "name = \"{}\"\nrobot = \"{}\"\njoints = {}\nspheres = {}\nself_collision_pairs = {}\n\
-         obstacles = {{ boxes = {}, cylinders = {}, spheres = {} }}\nstart = {}\ngoal = {}\nresolution = {}\n",
+         obstacles = {{ boxes = {}, cylinders = {}, spheres = {} }}\n{}start = {}\ngoal = {}\nresolution = {}\n",
         p.name(),
         p.robot().name(),
         p.space().dimension(),
@@ -306,6 +318,11 @@ fn describe_arm(p: &ArmProblem) -> String {
         kinds[0],
         kinds[1],
         kinds[2],
+        if clouds.is_empty() {
+            String::new()
+        } else {
+            format!("clouds = [{}]\n", clouds.join(", "))
+        },
         numbers(p.start()),
         numbers(&p.goals()[0]),
         p.resolution()

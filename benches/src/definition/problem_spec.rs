@@ -1,6 +1,10 @@
 //! [`ProblemSpec`]: a problem of an experiment over several dimensions and instances.
 
+use std::sync::Arc;
+
+use crate::definition::cloud_spec::CloudSpec;
 use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::problem_source::ProblemSource;
 use crate::error::HarnessError;
 
@@ -29,7 +33,7 @@ pub(crate) fn check_instance_count(count: Option<u64>) -> Result<(), String> {
 
 /// A problem entry of an experiment: a source, the dimensions to run it in with one time
 /// budget per dimension, the layout seeds (seeded families), and optionally another
-/// collision-check resolution.
+/// collision-check resolution and a point cloud.
 ///
 /// ```
 /// use mit_star_benches::{ProblemSource, ProblemSpec};
@@ -40,6 +44,7 @@ pub(crate) fn check_instance_count(count: Option<u64>) -> Result<(), String> {
 ///     instances: vec![0, 1, 2],
 ///     resolution: None,
 ///     allow_coarse_step: false,
+///     cloud: None,
 /// };
 /// let instances = spec.instances()?;
 /// assert_eq!(instances.len(), 6);
@@ -64,6 +69,9 @@ pub struct ProblemSpec {
     /// ([`ProblemInstance`]'s `allowing_coarse_step`). A problem file's own
     /// `allow_coarse_step` stands either way.
     pub allow_coarse_step: bool,
+    /// A point cloud among the obstacles of every instance (MotionBenchMaker problems only),
+    /// prepared once per instance when it is built.
+    pub cloud: Option<CloudSpec>,
 }
 
 impl ProblemSpec {
@@ -105,6 +113,22 @@ impl ProblemSpec {
                 if self.allow_coarse_step {
                     problem = problem.allowing_coarse_step(true);
                 }
+                let mut cloud = None;
+                if let Some(spec) = &self.cloud {
+                    let named = format!("`{label}` #{instance}");
+                    let Some(arm) = problem.as_arm() else {
+                        return Err(HarnessError::CloudOption {
+                            problem: named,
+                            option: "table".into(),
+                            source: Box::new(HarnessError::Usage(
+                                "point clouds are obstacles of arm problems (mbm:PATH)".into(),
+                            )),
+                        });
+                    };
+                    let (with_cloud, summary) = spec.prepare(arm, instance, &[], &named, None)?;
+                    problem = InstanceProblem::Arm(Arc::new(with_cloud));
+                    cloud = Some(summary);
+                }
                 for note in problem.as_arm().map_or(&[][..], |a| a.notes()) {
                     // The same note for another problem: counted, not repeated.
                     let kind = note.split(':').next().unwrap_or_default().to_owned();
@@ -145,6 +169,7 @@ impl ProblemSpec {
                     instance: if seeded { instance } else { 0 },
                     budget,
                     problem,
+                    cloud,
                 });
             }
         }
@@ -172,6 +197,7 @@ mod tests {
             instances,
             resolution: None,
             allow_coarse_step: false,
+            cloud: None,
         }
     }
 

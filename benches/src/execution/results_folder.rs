@@ -356,6 +356,9 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
             ""
         }
     );
+    if let Some(clouds) = cloud_markdown(results) {
+        s.push_str(&clouds);
+    }
     let invalid = results.invalid_runs();
     if !invalid.is_empty() {
         let _ = writeln!(
@@ -401,6 +404,41 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
         table.full_markdown()
     );
     s
+}
+
+/// The `## Point clouds` section of `kpi.md`: one row per instance planned among a cloud,
+/// with its points before and after the filters and the time to prepare it; `None` without
+/// a cloud.
+fn cloud_markdown(results: &ExperimentResults) -> Option<String> {
+    let rows: Vec<String> = results
+        .instances
+        .iter()
+        .filter_map(|i| {
+            i.cloud.as_ref().map(|c| {
+                format!(
+                    "| {} | {} | {} | {:.1} | {:.2} | {:.2} |",
+                    i.id,
+                    c.input_points,
+                    c.points,
+                    c.radius * 1e3,
+                    c.prepare_seconds * 1e3,
+                    c.build_seconds * 1e3
+                )
+            })
+        })
+        .collect();
+    if rows.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "## Point clouds\n\nEach instance's cloud was prepared once, when the last `bench` built \
+         its instances, before any run; the time is not counted in any planner's. Every \
+         returned path is validated against every point of the cloud (the independent \
+         continuous audit). The steps are in each instance's log (`logs/<instance>.log`).\n\n\
+         | instance | points read or sampled | points kept | radius [mm] | read, sample and \
+         filter [ms] | tree built [ms] |\n|---|---:|---:|---:|---:|---:|\n{}\n\n",
+        rows.join("\n")
+    ))
 }
 
 /// What differs between the folder's `experiment.toml` (`existing`) and the experiment as

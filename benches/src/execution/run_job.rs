@@ -329,6 +329,7 @@ mod tests {
             instances: vec![0],
             resolution: Some(resolution),
             allow_coarse_step: false,
+            cloud: None,
         }
         .instances()
         .unwrap()

@@ -15,7 +15,8 @@
 //!   it records, [`TrialRecord`] (`trial_record.rs`).
 //! - [`ReplanningExperiment`] (`replanning_experiment.rs`): planners × scenes × trials;
 //!   [`ReplanningSummary`] (`summary.rs`): the table (CSV, markdown); [`TrialPicture`]
-//!   (`trial_picture.rs`): one trial over time.
+//!   (`trial_picture.rs`): one trial over time; [`StaticAudit`] (`static_audit.rs`): the
+//!   executed motion checked independently against the fixed obstacles and a point cloud.
 //!
 //! May use: `definition/` (planner specs), `statistics/`, `pictures/` (the plot style),
 //! `budget.rs`, `error.rs`, and the library crates. Used by `commands/replan.rs`
@@ -41,6 +42,7 @@ mod motion_judge;
 mod replanning_experiment;
 mod replanning_scene;
 mod rules;
+mod static_audit;
 mod summary;
 mod timed_path;
 mod trial;
@@ -51,6 +53,7 @@ pub use motion_judge::{MotionJudge, path_is_clear};
 pub use replanning_experiment::{REPLANNING_PLANNERS, ReplanningExperiment, TRIAL_SEED_STRIDE};
 pub use replanning_scene::{ReplanningScene, ReplanningSetup, hand_position};
 pub use rules::{MAX_PLAN_ITERATIONS, PANDA_VELOCITY_LIMITS, PlanningBudget, ReplanningRules};
+pub use static_audit::StaticAudit;
 pub use summary::{ReplanningSummary, SummaryRow, write_trials_csv};
 pub use timed_path::{Piece, TimedPath};
 pub use trial::Trial;

@@ -1,13 +1,17 @@
 //! [`ReplanningExperiment`]: trials of several planners in several re-planning scenes.
 
+use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use mit_star::Configuration;
+use robot::{ArmProblem, MovingScene, Scene};
 
+use crate::definition::cloud_spec::CloudSpec;
+use crate::definition::cloud_summary::CloudSummary;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
 use crate::error::HarnessError;
-use crate::replanning::replanning_scene::ReplanningScene;
+use crate::replanning::replanning_scene::{ReplanningScene, ReplanningSetup};
 use crate::replanning::rules::ReplanningRules;
 use crate::replanning::trial::Trial;
 use crate::replanning::trial_record::TrialRecord;
@@ -34,6 +38,10 @@ pub struct ReplanningExperiment {
     pub seed: u64,
     /// The rules.
     pub rules: ReplanningRules,
+    /// A point cloud standing among every scene's fixed obstacles (its primitives sampled
+    /// with `scene_as_cloud`: the table, and the vertical scene's ceiling and wall; the moving
+    /// obstacles stay boxes), prepared once per scene at the first leg's start.
+    pub cloud: Option<CloudSpec>,
 }
 
 impl ReplanningExperiment {
@@ -66,26 +74,63 @@ impl ReplanningExperiment {
             .collect()
     }
 
+    /// Every scene made concrete, with the cloud (if any) among its fixed obstacles and what
+    /// preparing it did.
+    ///
+    /// # Errors
+    /// As [`ReplanningScene::setup`] and [`CloudSpec::prepare`] (errors name the scene and the
+    /// cloud option); [`HarnessError::ArmEnd`] if the cloud touches the arm at the start or the
+    /// goal.
+    pub fn setups(&self) -> Result<Vec<(ReplanningSetup, Option<CloudSummary>)>, HarnessError> {
+        self.scenes
+            .iter()
+            .map(|&scene| {
+                let setup = scene.setup()?;
+                match &self.cloud {
+                    None => Ok((setup, None)),
+                    Some(cloud) => {
+                        let (setup, summary) = with_cloud(setup, cloud)?;
+                        Ok((setup, Some(summary)))
+                    }
+                }
+            })
+            .collect()
+    }
+
     /// Runs every trial, calling `done` after each; stops early (returning what is done) when
     /// `interrupt` is raised.
     ///
     /// # Errors
     /// [`HarnessError::ReplanningRule`] for rules that cannot be used, else as
-    /// [`Trial::run`].
+    /// [`setups`](Self::setups) and [`Trial::run`].
     pub fn run(
         &self,
+        interrupt: &AtomicBool,
+        done: impl FnMut(&TrialRecord),
+    ) -> Result<Vec<TrialRecord>, HarnessError> {
+        let setups: Vec<ReplanningSetup> = self.setups()?.into_iter().map(|(s, _)| s).collect();
+        self.run_in(&setups, interrupt, done)
+    }
+
+    /// [`run`](Self::run) in `setups` (from [`setups`](Self::setups)) instead of this
+    /// experiment's scenes.
+    ///
+    /// # Errors
+    /// As [`run`](Self::run).
+    pub fn run_in(
+        &self,
+        setups: &[ReplanningSetup],
         interrupt: &AtomicBool,
         mut done: impl FnMut(&TrialRecord),
     ) -> Result<Vec<TrialRecord>, HarnessError> {
         let mut records = Vec::new();
-        for &scene in &self.scenes {
-            let setup = scene.setup()?;
+        for setup in setups {
             let rules = self
                 .rules
                 .clone()
                 .checked(setup.robot.joint_space().joints().len())?;
             for planner in &self.planners {
-                let trial = Trial::new(&setup, planner, &rules).interrupted_by(interrupt);
+                let trial = Trial::new(setup, planner, &rules).interrupted_by(interrupt);
                 for k in 1..=self.trials {
                     if interrupt.load(Ordering::SeqCst) {
                         return Ok(records);
@@ -105,6 +150,39 @@ impl ReplanningExperiment {
         }
         Ok(records)
     }
+}
+
+/// `setup` with the cloud of `cloud` standing among its fixed obstacles (which it replaces
+/// with `scene_as_cloud` or `drop_primitives`), prepared at the first leg's start (the
+/// sampling's default seed 0); the moving obstacles stay.
+fn with_cloud(
+    mut setup: ReplanningSetup,
+    cloud: &CloudSpec,
+) -> Result<(ReplanningSetup, CloudSummary), HarnessError> {
+    let name = setup.name;
+    let fixed = ArmProblem::new(
+        name,
+        setup.robot.clone(),
+        Scene::new(setup.scene.fixed().to_vec()),
+        setup.start.clone(),
+        setup.goal.clone(),
+    )
+    .map_err(|source| HarnessError::Arm {
+        name: name.to_owned(),
+        source,
+    })?;
+    let (among, summary) = cloud.prepare(&fixed, 0, &[], &format!("`{name}`"), None)?;
+    // A cloud on the arm at either end would end every trial at once: refused, named.
+    among.check_ends().map_err(HarnessError::ArmEnd)?;
+    let mut scene = MovingScene::new(
+        among.scene().obstacles().to_vec(),
+        setup.scene.moving().to_vec(),
+    );
+    for c in among.scene().clouds() {
+        scene = scene.with_cloud(Arc::clone(c));
+    }
+    setup.scene = scene;
+    Ok((setup, summary))
 }
 
 #[cfg(test)]
@@ -132,6 +210,7 @@ mod tests {
                 budget: PlanningBudget::Iterations(10),
                 ..ReplanningRules::default()
             },
+            cloud: None,
         };
         let raised = AtomicBool::new(true);
         assert!(experiment.run(&raised, |_| {}).unwrap().is_empty());

@@ -305,6 +305,12 @@ impl Scene {
         self.clouds.push(Arc::new(cloud));
     }
 
+    /// Adds `cloud`, shared with other scenes (its tree is not copied): the snapshots of a
+    /// [`MovingScene`](crate::MovingScene) share its static cloud.
+    pub fn add_shared_cloud(&mut self, cloud: Arc<CloudObstacle>) {
+        self.clouds.push(cloud);
+    }
+
     /// The point clouds, in the order they were added.
     pub fn clouds(&self) -> &[Arc<CloudObstacle>] {
         &self.clouds

@@ -3,8 +3,8 @@
 use crate::outcome::experiment_results::ExperimentResults;
 
 /// Describes how instance `index` of `results` was run: the experiment, the problem (as a
-/// problem file), the protocol (seeds, shuffling, budget), and how many runs executed
-/// concurrently. Every line ends with a line break; no line is `|>>>`.
+/// problem file), the protocol (seeds, shuffling, budget), how many runs executed
+/// concurrently, and the point cloud's preparation step by step. Every line ends with a line break; no line is `|>>>`.
 pub(crate) fn setup_description(results: &ExperimentResults, index: usize) -> String {
     let e = &results.experiment;
     let i = &results.instances[index];
@@ -28,8 +28,7 @@ pub(crate) fn setup_description(results: &ExperimentResults, index: usize) -> St
          concurrent runs: {concurrency} (worker threads on {available} available hardware threads; concurrency changes timings)\n\
          statistics: unsolved runs and runs whose path fails the independent full-resolution validation count as +inf\n\
          run property `time`: seconds to the first solution, or the budget without one; `run time`: wall-clock seconds used\n\
-         interrupted: {interrupted}\n\
-         problem file:\n",
+         interrupted: {interrupted}\n",
         name = e.name,
         description = if e.description.is_empty() {
             String::new()
@@ -54,6 +53,18 @@ pub(crate) fn setup_description(results: &ExperimentResults, index: usize) -> St
             "no"
         },
     );
+    if let Some(cloud) = &i.cloud {
+        text.push_str(&format!(
+            "point cloud: {}, once before the runs\n",
+            cloud.line()
+        ));
+        for step in &cloud.steps {
+            text.push_str("  cloud: ");
+            text.push_str(step);
+            text.push('\n');
+        }
+    }
+    text.push_str("problem file:\n");
     for line in p.describe().lines() {
         text.push_str("  ");
         text.push_str(line);
