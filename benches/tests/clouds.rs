@@ -110,6 +110,37 @@ fn a_scene_seen_as_a_cloud_is_planned_in_and_validated() {
     );
 }
 
+#[test]
+fn an_anytime_planner_stops_at_its_first_solution_among_a_cloud() {
+    // `plan --first-solution`: the time to MIT*'s first path among a sampled cloud, not the
+    // whole budget (without the flag the run takes its 30 s).
+    let problem = table_pick();
+    let stdout = common::succeeded(&[
+        "plan",
+        "--planner",
+        "mit-star",
+        "--problem",
+        &problem,
+        "--scene-as-cloud",
+        "2000",
+        "--crop-reach",
+        "--min-distance",
+        "0.02",
+        "--first-solution",
+        "--time",
+        "30",
+        "--no-picture",
+        "--json",
+    ]);
+    let record: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(record["status"], "solved", "{stdout}");
+    let initial = record["initial_time"].as_f64().expect("a first solution");
+    let run = record["run_time"].as_f64().unwrap();
+    assert!(run < 15.0, "stopped at {run} s, not at the first solution");
+    assert!(initial <= run, "{initial} > {run}");
+    assert!(record["path"].as_array().is_some_and(|p| p.len() >= 2));
+}
+
 /// The first file under `dir` (recursively) ending in `.extension`.
 fn find(dir: &Path, extension: &str) -> Option<PathBuf> {
     for entry in std::fs::read_dir(dir).ok()? {

@@ -49,6 +49,10 @@ pub struct PlanArgs {
     /// Print the result as JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Stop at the first solution (or the budget), as `bench --first-solution` does: the
+    /// time to a first path of an anytime planner (MIT*, AORRTC, …).
+    #[arg(long)]
+    pub first_solution: bool,
     /// Simplify the path found (vertex reduction, random and per-coordinate shortcuts and,
     /// unless `--set simplify_smoothing=false`, smoothing; every new edge checked and
     /// certified), validate the result independently, and report and draw it.
@@ -108,7 +112,7 @@ impl PlanArgs {
             planner: 0,
             run: 0,
             seed: self.seed,
-            first_solution: false,
+            first_solution: self.first_solution,
         };
         // Build once, on the run's clock: construction counts against the budget.
         let started = Instant::now();
