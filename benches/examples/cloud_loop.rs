@@ -24,7 +24,7 @@ use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
 use clap::Parser;
-use mit_star_benches::commands::{CloudArgs, ProblemArgs};
+use mit_star_benches::commands::ProblemArgs;
 use mit_star_benches::{
     HarnessError, InstanceProblem, ParameterOverrides, PlannerSpec, RunJob, parse_configuration,
 };
@@ -83,8 +83,9 @@ fn run_one(
             .problem
             .as_arm()
             .ok_or_else(|| HarnessError::Usage("clouds need an arm problem".into()))?;
-        let (with_cloud, steps) = CloudArgs::apply(&clouds, arm, instance.instance)?;
-        lines.extend(steps.into_iter().map(|s| format!("cloud: {s}")));
+        let label = format!("#{}", instance.instance);
+        let (with_cloud, summary) = clouds.apply(arm, instance.instance, &label)?;
+        lines.extend(summary.steps.iter().map(|s| format!("cloud: {s}")));
         with_cloud.check_ends().map_err(HarnessError::ArmEnd)?;
         instance.problem = InstanceProblem::Arm(Arc::new(with_cloud));
     }

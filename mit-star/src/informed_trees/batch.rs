@@ -251,7 +251,11 @@ mod tests {
 
     #[test]
     fn commits_hold_at_most_their_bytes_of_coordinates() {
-        assert_eq!(commit_chunk(2), INDEX_CHUNK, "low dimensions: the index chunk");
+        assert_eq!(
+            commit_chunk(2),
+            INDEX_CHUNK,
+            "low dimensions: the index chunk"
+        );
         assert_eq!(commit_chunk(1000), 8);
         assert_eq!(commit_chunk(10_000_000), 1, "at least one sample");
         for dimension in [7, 32, 333, 4096] {
