@@ -236,17 +236,14 @@ impl PointTree {
     ) -> u32 {
         let r2 = reach * reach;
         let mut open = active;
+        if box_lanes(&self.boxes[0], center).simd_le(r2).to_bitmask() & open == 0 {
+            return 0;
+        }
         let mut found = 0;
+        // Children are tested when their parent is reached, both boxes at once in every lane,
+        // and only the near ones pushed (the nearer first for the first open lane).
         let mut walk = Walk::new(self.len());
         while let Some((node, lo, hi)) = walk.pop() {
-            if box_lanes(&self.boxes[node], center)
-                .simd_le(r2)
-                .to_bitmask()
-                & open
-                == 0
-            {
-                continue;
-            }
             if hi - lo <= LEAF {
                 for j in lo..hi {
                     let hit = self.distance_lanes(j, center).simd_le(r2).to_bitmask() & open;
@@ -260,13 +257,27 @@ impl PointTree {
                 }
                 continue;
             }
-            let first = open.trailing_zeros() as usize;
-            let at = Vec3::new(
-                center[0].to_array()[first],
-                center[1].to_array()[first],
-                center[2].to_array()[first],
-            );
-            self.push_children(&mut walk, (node, lo, hi), at);
+            let mid = lo + (hi - lo) / 2;
+            let (left, right) = (2 * node + 1, 2 * node + 2);
+            let to_left = box_lanes(&self.boxes[left], center);
+            let to_right = box_lanes(&self.boxes[right], center);
+            let near_left = to_left.simd_le(r2).to_bitmask() & open != 0;
+            let near_right = to_right.simd_le(r2).to_bitmask() & open != 0;
+            match (near_left, near_right) {
+                (true, true) => {
+                    let first = open.trailing_zeros() as usize;
+                    if to_left.to_array()[first] <= to_right.to_array()[first] {
+                        walk.push(right, mid, hi);
+                        walk.push(left, lo, mid);
+                    } else {
+                        walk.push(left, lo, mid);
+                        walk.push(right, mid, hi);
+                    }
+                }
+                (true, false) => walk.push(left, lo, mid),
+                (false, true) => walk.push(right, mid, hi),
+                (false, false) => {}
+            }
         }
         found
     }
