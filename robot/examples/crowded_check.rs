@@ -3,6 +3,7 @@
 //!
 //! ```text
 //! cargo run --release -p robot --example crowded_check -- 20000
+//! cargo run --release -p robot --example crowded_check -- 300 0
 //! ```
 //!
 //! For each scene shipped with the crate's tests (`tests/data/mbm/*_panda`, problem 1), as it
@@ -12,14 +13,17 @@
 //! `is_valid` on 2000 uniform configurations, of
 //! `any_invalid` on them in batches of the checker's width, and per edge of `certify_motion`
 //! on 200 short edges from valid configurations (the start where too few are), with the counts of valid configurations and
-//! certified edges (identical answers give identical counts).
+//! certified edges (identical answers give identical counts). A second argument `T` builds the
+//! checker with a grid over a link's reachable obstacles from `T` of them on (0: always; the
+//! default is `obstacle_grid.rs`'s threshold), to compare the grid with the linear scan:
+//! `crowded_check 300 0` against `crowded_check 300 18446744073709551615`.
 
 use std::path::PathBuf;
 use std::time::Instant;
 
 use glam::{DQuat, DVec3};
 use problems::PlanningProblem;
-use robot::{ArmProblem, Obstacle, Scene, Shape};
+use robot::{ArmChecker, ArmProblem, Obstacle, Scene, Shape};
 use spaces::StateSpace;
 use validity::{EdgeStatus, MotionProgress, StateValidity};
 
@@ -37,6 +41,8 @@ fn main() {
         .nth(1)
         .and_then(|a| a.parse().ok())
         .unwrap_or(20_000);
+    // A second argument: the checker's grid threshold (its default otherwise).
+    let threshold: Option<usize> = std::env::args().nth(2).and_then(|a| a.parse().ok());
     let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm");
     for scene in SCENES {
         let Ok(base) = ArmProblem::panda_mbm(&data.join(format!("{scene}_panda")), 1) else {
@@ -45,7 +51,7 @@ fn main() {
         };
         for count in [0, extra] {
             let problem = with_cubes(&base, count);
-            report(&format!("{scene}+{count}"), &problem);
+            report(&format!("{scene}+{count}"), &problem, threshold);
         }
     }
 }
@@ -92,9 +98,11 @@ fn with_cubes(problem: &ArmProblem, count: usize) -> ArmProblem {
 }
 
 /// Times the three checks on `problem` and prints one line.
-fn report(name: &str, problem: &ArmProblem) {
+fn report(name: &str, problem: &ArmProblem, threshold: Option<usize>) {
     let space = problem.space();
-    let checker = problem.validity();
+    let own =
+        threshold.map(|t| ArmChecker::with_grid_threshold(problem.robot(), problem.scene(), t));
+    let checker = own.as_ref().unwrap_or(problem.validity());
     let mut rng = <spaces::SeededRng as spaces::rand::SeedableRng>::seed_from_u64(7);
     let mut states = vec![0.0; 7 * 2000];
     for q in states.chunks_exact_mut(7) {
