@@ -13,7 +13,8 @@
 //! `is_valid` on 2000 uniform configurations, of
 //! `any_invalid` on them in batches of the checker's width, and per edge of `certify_motion`
 //! on 200 short edges from valid configurations (the start where too few are), with the counts of valid configurations and
-//! certified edges (identical answers give identical counts). A second argument `T` builds the
+//! certified edges (identical answers give identical counts), and how long building the checker
+//! took. A second argument `T` builds the
 //! checker with a grid over a link's reachable obstacles from `T` of them on (0: always; the
 //! default is `obstacle_grid.rs`'s threshold), to compare the grid with the linear scan:
 //! `crowded_check 300 0` against `crowded_check 300 18446744073709551615`.
@@ -100,9 +101,18 @@ fn with_cubes(problem: &ArmProblem, count: usize) -> ArmProblem {
 /// Times the three checks on `problem` and prints one line.
 fn report(name: &str, problem: &ArmProblem, threshold: Option<usize>) {
     let space = problem.space();
-    let own =
-        threshold.map(|t| ArmChecker::with_grid_threshold(problem.robot(), problem.scene(), t));
-    let checker = own.as_ref().unwrap_or(problem.validity());
+    // The checker, timed as it is built (the problem's own was built with it).
+    let clock = Instant::now();
+    let own = match threshold {
+        Some(t) => ArmChecker::with_grid_threshold(problem.robot(), problem.scene(), t),
+        None => ArmChecker::new(problem.robot(), problem.scene()),
+    };
+    let built = clock.elapsed().as_secs_f64();
+    let checker = if threshold.is_some() {
+        &own
+    } else {
+        problem.validity()
+    };
     let mut rng = <spaces::SeededRng as spaces::rand::SeedableRng>::seed_from_u64(7);
     let mut states = vec![0.0; 7 * 2000];
     for q in states.chunks_exact_mut(7) {
@@ -166,11 +176,12 @@ fn report(name: &str, problem: &ArmProblem, threshold: Option<usize>) {
     println!(
         "{name:>22}: start {:8.2} µs ({start_valid}/200 valid)  is_valid {:8.2} µs \
          ({valid} valid)  any_invalid {:8.2} µs/conf \
-         (sum {hits})  certify {:9.1} µs/edge ({certified}/{} certified)",
+         (sum {hits})  certify {:9.1} µs/edge ({certified}/{} certified)  built in {:.1} ms",
         1e6 * at_start,
         1e6 * scalar,
         1e6 * batched,
         1e6 * certify,
         starts.len(),
+        1e3 * built,
     );
 }

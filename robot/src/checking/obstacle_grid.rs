@@ -100,8 +100,8 @@ impl ObstacleGrid {
             return None;
         }
         let mut bounds: Vec<f32> = obstacles.iter().map(|o| o.bounding_sphere().1).collect();
-        bounds.sort_unstable_by(f32::total_cmp);
-        let ninetieth = bounds[(bounds.len() * 9 / 10).min(bounds.len() - 1)];
+        let at = (bounds.len() * 9 / 10).min(bounds.len() - 1);
+        let ninetieth = *bounds.select_nth_unstable_by(at, f32::total_cmp).1;
         let (mut low, mut high) = (Vec3A::splat(f32::INFINITY), Vec3A::splat(f32::NEG_INFINITY));
         for o in obstacles {
             let (c, _) = o.bounding_sphere();
