@@ -600,41 +600,48 @@ fn invalid_filled(
         let near = s.grids[k].as_ref().is_some_and(|grid| {
             grid.candidates(&bounding, active, widest(bound), &mut candidates.0)
         });
-        let (every, picked): (&[Obstacle], &[u32]) = if near {
-            (&[], &candidates.0)
-        } else {
-            (list, &[])
-        };
-        let picked = picked.iter().map(|&i| &list[i as usize]);
-        for obstacle in every.iter().chain(picked) {
-            let Some((hit, excess)) = obstacle.contacts_lanes(&bounding, bound) else {
-                continue;
-            };
-            if hit & active == 0 {
-                continue;
-            }
-            if !placed[k] {
-                place_lanes(pose, range, lane_centers);
-                placed[k] = true;
-            }
-            for (c, (sphere, &reach)) in lane_centers[range.clone()].iter().zip(spheres.clone()) {
-                // The bounding centre too far for this sphere to touch, in every lane that
-                // counts.
-                let reach = LaneF32::splat(reach) + grown;
-                if excess.simd_le(reach * reach).to_bitmask() & active == 0 {
-                    continue;
-                }
-                let radius = LaneF32::splat(sphere.1) + grown;
-                let hit = obstacle.collides_spheres_lanes(c, radius);
-                if hit & active != 0 {
-                    invalid |= hit & active;
-                    active = undecided(invalid);
-                    if active == 0 {
-                        *last_hit = k;
-                        return invalid;
+        // The same tests over the grid's candidates or (no grid: the linear scan as it always
+        // was) the whole list.
+        macro_rules! test_each {
+            ($obstacles:expr) => {
+                for obstacle in $obstacles {
+                    let Some((hit, excess)) = obstacle.contacts_lanes(&bounding, bound) else {
+                        continue;
+                    };
+                    if hit & active == 0 {
+                        continue;
+                    }
+                    if !placed[k] {
+                        place_lanes(pose, range, lane_centers);
+                        placed[k] = true;
+                    }
+                    for (c, (sphere, &reach)) in
+                        lane_centers[range.clone()].iter().zip(spheres.clone())
+                    {
+                        // The bounding centre too far for this sphere to touch, in every lane that
+                        // counts.
+                        let reach = LaneF32::splat(reach) + grown;
+                        if excess.simd_le(reach * reach).to_bitmask() & active == 0 {
+                            continue;
+                        }
+                        let radius = LaneF32::splat(sphere.1) + grown;
+                        let hit = obstacle.collides_spheres_lanes(c, radius);
+                        if hit & active != 0 {
+                            invalid |= hit & active;
+                            active = undecided(invalid);
+                            if active == 0 {
+                                *last_hit = k;
+                                return invalid;
+                            }
+                        }
                     }
                 }
-            }
+            };
+        }
+        if near {
+            test_each!(candidates.0.iter().map(|&i| &list[i as usize]));
+        } else {
+            test_each!(list);
         }
         // Point clouds: the link's bounding sphere first, then its spheres, each a walk of the
         // cloud's tree for the lanes still undecided.
