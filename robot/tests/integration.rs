@@ -23,6 +23,7 @@ mod mesh_formats;
 mod mimic_limits;
 mod model;
 mod motion_audit;
+mod obstacle_grid;
 mod one_sided;
 mod other_robots;
 mod parry_agreement;

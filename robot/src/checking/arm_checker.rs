@@ -11,6 +11,7 @@ use wide::f64x4;
 
 use crate::checking::lanes::{LANES, LaneF32, LaneKinematics, LanePoint, LanePose};
 use crate::checking::local_sweep::LocalSweep;
+use crate::checking::obstacle_grid::{Candidates, GRID_THRESHOLD, ObstacleGrid, widest};
 use crate::checking::reachable_obstacles::reachable_obstacles;
 use crate::checking::scratch_cell::ScratchCell;
 use crate::{CloudObstacle, Kinematics, LeverArms, Obstacle, RobotModel, Scene};
@@ -28,6 +29,9 @@ pub(crate) struct Shared {
     /// Per entry of `links`: the obstacles it can reach in some configuration
     /// (`reachable_obstacles.rs`), the only ones its tests look at.
     pub(crate) reachable: Vec<Vec<Obstacle>>,
+    /// Per entry of `links`: a grid over its reachable obstacles where they are many
+    /// (`obstacle_grid.rs`), so that its tests look only at those near its lanes.
+    pub(crate) grids: Vec<Option<ObstacleGrid>>,
     /// The scene's point clouds.
     pub(crate) clouds: Vec<Arc<CloudObstacle>>,
     /// Per entry of `links`: the clouds (indices into `clouds`) with a point it can reach in
@@ -93,6 +97,9 @@ pub(crate) struct LaneScratch {
     /// first, since consecutive batches (the points of one edge, the extensions of one
     /// search) tend to hit the same thing.
     pub(crate) last_hit: usize,
+    /// The obstacles a link's grid returned (indices into its reachable list), with room for
+    /// the longest list that has a grid: a query never allocates.
+    pub(crate) candidates: Candidates,
 }
 
 /// Smallest growth of the spheres in every test, in metres: covers the `f32` rounding of the
@@ -150,6 +157,14 @@ pub struct ArmChecker {
 impl ArmChecker {
     /// The checker of `robot` (its self-collision pairs as they stand) in `scene`.
     pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
+        Self::with_grid_threshold(robot, scene, GRID_THRESHOLD)
+    }
+
+    /// [`new`](Self::new) with a grid over a link's reachable obstacles from `threshold` of
+    /// them on (`usize::MAX`: never; 0: always), for tests that compare the two paths: the
+    /// answers are the same either way.
+    #[doc(hidden)]
+    pub fn with_grid_threshold(robot: &RobotModel, scene: &Scene, threshold: usize) -> Self {
         let fk = Kinematics::new(robot);
         let bounds = robot.link_bounding_spheres();
         let links: Vec<(usize, Range<usize>, Vec3A, f32)> = (0..robot.links().len())
@@ -207,6 +222,22 @@ impl ArmChecker {
                 *out = ((reach + 2.0 * margin) * (1.0 + 1e-6) + 1e-6) as f32;
             }
         }
+        let (reachable, reachable_clouds) = reachable_obstacles(
+            (robot, &fk, &arms),
+            &links,
+            scene.obstacles(),
+            scene.clouds(),
+        );
+        let grids: Vec<Option<ObstacleGrid>> = reachable
+            .iter()
+            .zip(&links)
+            .map(|(list, link)| {
+                (list.len() >= threshold)
+                    .then(|| ObstacleGrid::new(list, link.3))
+                    .flatten()
+            })
+            .collect();
+        let longest = grids.iter().flatten().map(ObstacleGrid::len).max();
         let scratch = Scratch {
             lanes: LaneScratch {
                 lane_poses: vec![LanePose::IDENTITY; fk.link_count()],
@@ -215,6 +246,7 @@ impl ArmChecker {
                 placed: vec![false; links.len()],
                 lane_q: vec![LaneF32::ZERO; dimension],
                 last_hit: usize::MAX,
+                candidates: Candidates::with_capacity(longest.unwrap_or(0)),
             },
             certify: crate::checking::arm_certification::CertifyScratch::new(
                 dimension,
@@ -227,12 +259,6 @@ impl ArmChecker {
             .iter()
             .flat_map(|&pair| local.relative_levers(pair, &levers, dimension))
             .collect();
-        let (reachable, reachable_clouds) = reachable_obstacles(
-            (robot, &fk, &arms),
-            &links,
-            scene.obstacles(),
-            scene.clouds(),
-        );
         let wraps = space
             .joints()
             .iter()
@@ -246,6 +272,7 @@ impl ArmChecker {
                 upper: space.upper().to_vec(),
                 wraps,
                 reachable,
+                grids,
                 clouds: scene.clouds().to_vec(),
                 reachable_clouds,
                 plain: vec![LaneF32::splat(margin as f32); links.len()],
@@ -529,6 +556,7 @@ fn invalid_filled(
         placed,
         lane_q,
         last_hit,
+        candidates,
     } = scratch;
     let undecided = |invalid: u32| undecided(invalid, live, wanted);
     let mut active = undecided(invalid);
@@ -565,35 +593,55 @@ fn invalid_filled(
         let spheres = s.spheres[range.clone()]
             .iter()
             .zip(&s.reaches[range.clone()]);
-        for obstacle in &s.reachable[k] {
-            let Some((hit, excess)) = obstacle.contacts_lanes(&bounding, bound) else {
-                continue;
-            };
-            if hit & active == 0 {
-                continue;
-            }
-            if !placed[k] {
-                place_lanes(pose, range, lane_centers);
-                placed[k] = true;
-            }
-            for (c, (sphere, &reach)) in lane_centers[range.clone()].iter().zip(spheres.clone()) {
-                // The bounding centre too far for this sphere to touch, in every lane that
-                // counts.
-                let reach = LaneF32::splat(reach) + grown;
-                if excess.simd_le(reach * reach).to_bitmask() & active == 0 {
-                    continue;
-                }
-                let radius = LaneF32::splat(sphere.1) + grown;
-                let hit = obstacle.collides_spheres_lanes(c, radius);
-                if hit & active != 0 {
-                    invalid |= hit & active;
-                    active = undecided(invalid);
-                    if active == 0 {
-                        *last_hit = k;
-                        return invalid;
+        // Among many obstacles, only those the grid finds near the lanes still undecided: the
+        // others are beyond `bound` of every such lane (`obstacle_grid.rs`), and the test
+        // below would skip them.
+        let list = &s.reachable[k];
+        let near = s.grids[k].as_ref().is_some_and(|grid| {
+            grid.candidates(&bounding, active, widest(bound), &mut candidates.0)
+        });
+        // The same tests over the grid's candidates or (no grid: the linear scan as it always
+        // was) the whole list.
+        macro_rules! test_each {
+            ($obstacles:expr) => {
+                for obstacle in $obstacles {
+                    let Some((hit, excess)) = obstacle.contacts_lanes(&bounding, bound) else {
+                        continue;
+                    };
+                    if hit & active == 0 {
+                        continue;
+                    }
+                    if !placed[k] {
+                        place_lanes(pose, range, lane_centers);
+                        placed[k] = true;
+                    }
+                    for (c, (sphere, &reach)) in
+                        lane_centers[range.clone()].iter().zip(spheres.clone())
+                    {
+                        // The bounding centre too far for this sphere to touch, in every lane that
+                        // counts.
+                        let reach = LaneF32::splat(reach) + grown;
+                        if excess.simd_le(reach * reach).to_bitmask() & active == 0 {
+                            continue;
+                        }
+                        let radius = LaneF32::splat(sphere.1) + grown;
+                        let hit = obstacle.collides_spheres_lanes(c, radius);
+                        if hit & active != 0 {
+                            invalid |= hit & active;
+                            active = undecided(invalid);
+                            if active == 0 {
+                                *last_hit = k;
+                                return invalid;
+                            }
+                        }
                     }
                 }
-            }
+            };
+        }
+        if near {
+            test_each!(candidates.0.iter().map(|&i| &list[i as usize]));
+        } else {
+            test_each!(list);
         }
         // Point clouds: the link's bounding sphere first, then its spheres, each a walk of the
         // cloud's tree for the lanes still undecided.

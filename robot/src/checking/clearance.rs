@@ -44,6 +44,7 @@
 use crate::checking::arm_checker::{LaneScratch, Shared, distance_squared, place_link};
 use crate::checking::lanes::{LANES, LaneF32, LanePoint};
 use crate::checking::local_sweep::{EdgeTerms, LaneMotion};
+use crate::checking::obstacle_grid::widest;
 
 /// The relative rounding allowed for in a computed rate of approach (its `f32` arithmetic,
 /// the direction's and the velocity's), as a share of the link's speed bound.
@@ -83,6 +84,7 @@ pub(crate) fn certified_radii(
         lane_bounds,
         placed,
         lane_q,
+        candidates,
         ..
     } = lanes;
     s.lanes.link_poses(lane_q, lane_poses);
@@ -103,7 +105,21 @@ pub(crate) fn certified_radii(
         let mut moving: Option<LinkMotion> = None;
         let mut nearest = LaneF32::splat(f32::INFINITY);
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
-        for obstacle in &s.reachable[k] {
+        // Among many, only those the grid finds within the loosest bound below of a lane
+        // (`loose` with the lanes' radii so far, which only fall): the test below would skip
+        // the others.
+        let list = &s.reachable[k];
+        let near = s.grids[k].as_ref().is_some_and(|grid| {
+            let loose = radius * sweep + floor + floor + margin + r;
+            grid.candidates(&lane_bounds[k], live, widest(loose), &mut candidates.0)
+        });
+        let (every, picked): (&[crate::Obstacle], &[u32]) = if near {
+            (&[], &candidates.0)
+        } else {
+            (list, &[])
+        };
+        let picked = picked.iter().map(|&i| &list[i as usize]);
+        for obstacle in every.iter().chain(picked) {
             // First the obstacles that come within the link's lever-arm sweep over a piece of
             // the lane's radius so far (and twice the floor, safe from rounding): the others
             // cannot lower the radius. Spheres of the link are no closer than its bounding

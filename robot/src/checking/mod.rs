@@ -12,7 +12,9 @@
 //!   piece of an edge, from the piece's middle configuration, and how fast the two links of a
 //!   self-collision pair move relative to each other.
 //! - `reachable_obstacles.rs`: per link, the obstacles it can reach in some configuration
-//!   (the only ones its checks and clearances look at).
+//!   (the only ones its checks and clearances look at); `obstacle_grid.rs`: where a link
+//!   reaches many obstacles (a scene of thousands of boxes), a uniform grid over them, so that
+//!   its checks and clearances test only those near its lanes, with the same answers.
 //! - [`ParryChecker`] (`parry_checker.rs`): the reference checker, `f64` and parry queries, no
 //!   culling (tests and path re-checks).
 //! - [`MotionAudit`], [`AuditVerdict`], [`AUDIT_CONTACT`] (`motion_audit.rs`): an independent
@@ -37,6 +39,7 @@ mod clearance;
 mod lanes;
 mod local_sweep;
 mod motion_audit;
+mod obstacle_grid;
 mod parry_checker;
 mod reachable_obstacles;
 mod scratch_cell;
