@@ -30,12 +30,13 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use glam::{DQuat, DVec3};
 use mit_star::{Configuration, Parameters};
 use problems::PlanningProblem;
-use robot::{ArmProblem, Obstacle, Scene, Shape};
+use robot::ArmProblem;
 use spaces::StateSpace;
 
+#[path = "support/extra_cubes.rs"]
+mod extra_cubes;
 #[path = "../../mit-star/examples/support/gaps.rs"]
 mod gaps;
 use gaps::measure;
@@ -126,7 +127,7 @@ fn main() {
     for scene in &scenes {
         let folder = data.join(format!("{scene}_panda"));
         let loaded = match ArmProblem::panda_mbm(&folder, index) {
-            Ok(p) => with_extra_boxes(p, extra_boxes),
+            Ok(p) => extra_cubes::with_extra_cubes(&p, extra_boxes),
             Err(e) => {
                 eprintln!("{scene}: {e}");
                 std::process::exit(2);
@@ -324,53 +325,6 @@ fn report(
 }
 
 /// The largest lateness among `runs` (−∞ for none).
-/// `problem` with `count` 1 cm cubes added at seeded random places within 1.2 m of the
-/// robot's base (up to 1.6 m high), less those that touch its start or a goal.
-fn with_extra_boxes(problem: ArmProblem, count: usize) -> ArmProblem {
-    if count == 0 {
-        return problem;
-    }
-    let mut state = 0x2545_f491_4f6c_dd1d_u64;
-    let mut uniform = move |low: f64, high: f64| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        low + (high - low) * (state >> 11) as f64 / (1_u64 << 53) as f64
-    };
-    let mut obstacles = problem.scene().obstacles().to_vec();
-    let first = obstacles.len();
-    let cube = Shape::Cuboid {
-        half_extents: DVec3::splat(0.005),
-    };
-    for _ in 0..count {
-        let at = DVec3::new(uniform(-1.2, 1.2), uniform(-1.2, 1.2), uniform(0.0, 1.6));
-        obstacles.push(Obstacle::new(cube, at, DQuat::IDENTITY));
-    }
-    // Drop the cubes the ends touch (ids `obstacle{i}` of a scene built from a list), until
-    // the ends are valid again or nothing more can be dropped.
-    let ends: Vec<Vec<f64>> = std::iter::once(problem.start().to_vec())
-        .chain(problem.goals().iter().cloned())
-        .collect();
-    loop {
-        let candidate = problem.clone().with_scene(Scene::new(obstacles.clone()));
-        let mut touched = std::collections::BTreeSet::new();
-        for q in &ends {
-            for contact in candidate.diagnose(q).scene {
-                if let Some(i) = contact.other.strip_prefix("obstacle") {
-                    touched.extend(i.parse::<usize>().ok().filter(|&i| i >= first));
-                }
-            }
-        }
-        if touched.is_empty() {
-            eprintln!("{} extra cubes kept of {count}", obstacles.len() - first);
-            return candidate;
-        }
-        for &i in touched.iter().rev() {
-            obstacles.remove(i);
-        }
-    }
-}
-
 fn worst<'a>(runs: impl Iterator<Item = &'a Run>) -> f64 {
     runs.map(|r| r.late).fold(f64::NEG_INFINITY, f64::max)
 }

@@ -22,11 +22,13 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use glam::{DQuat, DVec3};
 use problems::PlanningProblem;
-use robot::{ArmChecker, ArmProblem, Obstacle, Scene, Shape};
+use robot::{ArmChecker, ArmProblem};
 use spaces::StateSpace;
 use validity::{EdgeStatus, MotionProgress, StateValidity};
+
+#[path = "support/extra_cubes.rs"]
+mod extra_cubes;
 
 /// The scenes shipped with the crate's tests.
 const SCENES: [&str; 5] = [
@@ -51,49 +53,8 @@ fn main() {
             std::process::exit(2);
         };
         for count in [0, extra] {
-            let problem = with_cubes(&base, count);
+            let problem = extra_cubes::with_extra_cubes(&base, count);
             report(&format!("{scene}+{count}"), &problem, threshold);
-        }
-    }
-}
-
-/// `problem` with `count` seeded 1 cm cubes added, less those touching its start or a goal
-/// (the fixed links would touch some in every configuration otherwise).
-fn with_cubes(problem: &ArmProblem, count: usize) -> ArmProblem {
-    let mut state = 0x2545_f491_4f6c_dd1d_u64;
-    let mut uniform = move |low: f64, high: f64| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        low + (high - low) * (state >> 11) as f64 / (1_u64 << 53) as f64
-    };
-    let mut obstacles = problem.scene().obstacles().to_vec();
-    let cube = Shape::Cuboid {
-        half_extents: DVec3::splat(0.005),
-    };
-    for _ in 0..count {
-        let at = DVec3::new(uniform(-1.2, 1.2), uniform(-1.2, 1.2), uniform(0.0, 1.6));
-        obstacles.push(Obstacle::new(cube, at, DQuat::IDENTITY));
-    }
-    let first = problem.scene().obstacles().len();
-    let ends: Vec<Vec<f64>> = std::iter::once(problem.start().to_vec())
-        .chain(problem.goals().iter().cloned())
-        .collect();
-    loop {
-        let candidate = problem.clone().with_scene(Scene::new(obstacles.clone()));
-        let mut touched = std::collections::BTreeSet::new();
-        for q in &ends {
-            for contact in candidate.diagnose(q).scene {
-                if let Some(i) = contact.other.strip_prefix("obstacle") {
-                    touched.extend(i.parse::<usize>().ok().filter(|&i| i >= first));
-                }
-            }
-        }
-        if touched.is_empty() {
-            return candidate;
-        }
-        for &i in touched.iter().rev() {
-            obstacles.remove(i);
         }
     }
 }
