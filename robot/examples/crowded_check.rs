@@ -30,14 +30,8 @@ use validity::{EdgeStatus, MotionProgress, StateValidity};
 #[path = "support/extra_cubes.rs"]
 mod extra_cubes;
 
-/// The scenes shipped with the crate's tests.
-const SCENES: [&str; 5] = [
-    "bookshelf_small",
-    "bookshelf_tall",
-    "box",
-    "cage",
-    "table_pick",
-];
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
 
 fn main() {
     let extra: usize = std::env::args()
@@ -47,8 +41,9 @@ fn main() {
     // A second argument: the checker's grid threshold (its default otherwise).
     let threshold: Option<usize> = std::env::args().nth(2).and_then(|a| a.parse().ok());
     let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm");
-    for scene in SCENES {
-        let Ok(base) = ArmProblem::panda_mbm(&data.join(format!("{scene}_panda")), 1) else {
+    for folder in mbm_scenes::SCENES {
+        let scene = folder.trim_end_matches("_panda");
+        let Ok(base) = ArmProblem::panda_mbm(&data.join(folder), 1) else {
             eprintln!("{scene}: cannot load");
             std::process::exit(2);
         };
