@@ -47,6 +47,10 @@ pub enum PlannerError {
         /// Its coordinates.
         state: Vec<f64>,
     },
+    /// A planner could not be built over the goals a goal region supplied
+    /// ([`LazyGoals`](crate::LazyGoals)): the first goal drawn, or the query, is refused.
+    #[error("building the planner over the goals drawn: {0}")]
+    GoalSet(Box<BuildError>),
     /// A path failed the planner's own consistency check (a bug: the path is withheld rather
     /// than returned unchecked).
     #[error("internal error: {0}")]

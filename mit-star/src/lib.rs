@@ -40,6 +40,7 @@
 //! | [`RrtConnect`], [`Aorrtc`], [`InformedRrtStar`] | comparison planners from the same parts: RRT-Connect; AORRTC (RRT-Connect, then repeated cost-bounded searches with informed sampling and simplification); Informed RRT* (k-nearest RRT* with direct informed sampling and pruning) |
 //! | [`PathSimplifier`], [`Simplified`], [`Simplifying`] | shorter paths: vertex reduction, random and per-joint shortcuts, every new edge checked and certified; after planning, or at every solution of a wrapped planner |
 //! | [`WarmStarted`] | an anytime planner started from a feasibility planner's first solution (RRT-Connect's, with `warm_start`) |
+//! | [`LazyGoals`], [`GoalSource`] | plan towards a goal region whose states are drawn while planning (a hand pose through inverse kinematics) |
 //! | [`check_path`], [`PathVerdict`], [`snap_ends`] | judge a path from anywhere (another planner's) by the rules our solutions pass |
 //! | [`Termination`], [`TimeLimit`], [`IterationLimit`], [`CostThreshold`], [`FirstSolution`], [`TerminationExt`] | termination conditions and their `or` / `and` combinators |
 //! | [`Trace`], [`Counters`] | the anytime `(time, cost)` record and work counters |
@@ -75,8 +76,10 @@ mod configuration_settings;
 mod counters;
 mod effective_parameters;
 mod error;
+mod goal_source;
 mod graph;
 mod informed_trees;
+mod lazy_goals;
 mod nearest;
 mod observer;
 mod parameters;
@@ -94,11 +97,13 @@ pub use components::{CheckerPart, SamplerPart};
 pub use configuration::{Configuration, build_planner, build_planner_with};
 pub use counters::Counters;
 pub use error::{BuildError, Endpoint, PlannerError};
+pub use goal_source::GoalSource;
 pub use graph::{RandomGeometricGraph, VertexId, VertexKind};
 pub use informed_trees::{
     APriori, AitStar, AitStarEis, BitStar, CostInformed, EffortInformed, Eit, EitStar, Guidance,
     MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr, ReverseSearch, Suspending,
 };
+pub use lazy_goals::LazyGoals;
 pub use nearest::{KdTree, NearestNeighbors, Neighbours};
 pub use observer::{BatchEvent, Observer, RestartEvent, SolutionEvent};
 pub use parameters::{

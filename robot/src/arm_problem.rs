@@ -298,6 +298,35 @@ impl ArmProblem {
         self
     }
 
+    /// The same problem towards `goals` instead of its goal (any of them ends a path): the
+    /// configurations a goal region supplied, inverse-kinematics solutions of a hand pose.
+    ///
+    /// # Errors
+    /// [`ArmError::Query`] for no goal, or a goal of the wrong length, not finite or outside
+    /// the joint limits.
+    pub fn with_goals(mut self, goals: Vec<Vec<f64>>) -> Result<Self, ArmError> {
+        let space = self.robot.joint_space();
+        if goals.is_empty() {
+            return Err(ArmError::Query {
+                problem: self.name.clone(),
+                what: "goal",
+                source: spaces::SpaceError::DimensionMismatch {
+                    expected: space.dimension(),
+                    got: 0,
+                },
+            });
+        }
+        for goal in &goals {
+            space.check_state(goal).map_err(|source| ArmError::Query {
+                problem: self.name.clone(),
+                what: "goal",
+                source,
+            })?;
+        }
+        self.goals = goals;
+        Ok(self)
+    }
+
     /// The same problem in `scene` (the same robot, ends and settings; the checker is built
     /// anew for it). Meant for a scene derived from [`scene`](Self::scene) — clouds added, or
     /// primitives replaced by a cloud sampled on them: the scene's allowed collisions were

@@ -15,6 +15,7 @@ use crate::budget::deadline_after;
 use crate::definition::planner_spec::PlannerSpec;
 use crate::definition::problem_instance::ProblemInstance;
 use crate::outcome::run_record::{RunRecord, RunStatus};
+use crate::path_validation::PathValidation;
 
 /// Memory a finished run's record takes until the results are written, generously (counters,
 /// trace, path): the unit of the run-count limit.
@@ -228,9 +229,25 @@ impl RunJob {
         &self,
         instance: &ProblemInstance,
         planner: &PlannerSpec,
+        built: Box<dyn Planner + Send>,
+        times: (Instant, Instant),
+        interrupt: &AtomicBool,
+    ) -> Option<(RunRecord, Option<Box<dyn Planner + Send>>)> {
+        let validate = |path: &[Vec<f64>], cost: f64| instance.problem.validate(path, cost);
+        self.solve_built_validating(instance, planner, built, times, interrupt, &validate)
+    }
+
+    /// [`solve_built`](Self::solve_built) with the returned path judged by `validate` rather
+    /// than by the instance's own ends: for goals drawn while planning (a hand pose), which
+    /// the instance does not know.
+    pub fn solve_built_validating(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
         mut built: Box<dyn Planner + Send>,
         (started, deadline): (Instant, Instant),
         interrupt: &AtomicBool,
+        validate: &dyn Fn(&[Vec<f64>], f64) -> PathValidation,
     ) -> Option<(RunRecord, Option<Box<dyn Planner + Send>>)> {
         let mut record = self.blank_record(instance, planner);
         let setup = started.elapsed();
@@ -273,7 +290,7 @@ impl RunJob {
                     if let Some((joints, wrapping)) = instance.problem.joints() {
                         (record.joints, record.wrapping) = (joints, wrapping);
                     }
-                    let validation = instance.problem.validate(&record.path, solution.cost);
+                    let validation = validate(&record.path, solution.cost);
                     record.status = if validation.valid {
                         RunStatus::Solved
                     } else {
