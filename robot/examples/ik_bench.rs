@@ -15,7 +15,7 @@
 //! solves), mean attempts, and the largest position and orientation error of the returned
 //! solutions, recomputed by the full `f64` forward kinematics (`Kinematics::link_poses_f64`,
 //! not the solver's chain walk); solutions outside the limits or refused by the checker are
-//! counted. `--out` writes the targets and the solutions as JSON for
+//! counted. `--out` writes the sampled configurations, the targets and the solutions as JSON for
 //! `benches/peers/pinocchio/check_ik.py`, which recomputes the errors with Pinocchio.
 
 use std::fmt::Write as _;
@@ -196,7 +196,7 @@ fn run(
         let (p, o) = (target.position(), target.orientation());
         let _ = write!(
             json,
-            "{}{{\"position\": [{}, {}, {}], \"quaternion\": [{}, {}, {}, {}], \"solution\": ",
+            "{}{{\"sampled\": {q:?}, \"position\": [{}, {}, {}], \"quaternion\": [{}, {}, {}, {}], \"solution\": ",
             if case > 0 { ", " } else { "" },
             p.x,
             p.y,

@@ -7,7 +7,9 @@ For every robot of the JSON file (its URDF, the solver's link, the planned joint
 coordinate order and the held joints' values), loads the URDF with Pinocchio, places the
 link by Pinocchio's forward kinematics at every returned solution, and prints per robot the
 largest position error (metres) and orientation error (radians, the angle of the rotation
-between target and reached frame) against the targets. `--urdf NAME=PATH` loads another
+between target and reached frame) against the targets. It also places the link at every
+sampled configuration the targets were made from (by our forward kinematics) and prints the
+largest disagreement: the targets themselves are confirmed. `--urdf NAME=PATH` loads another
 URDF for robot NAME (the original, unspherised file of a held-out arm: the kinematics must
 be the same).
 """
@@ -58,22 +60,27 @@ def check(robot, urdf):
     missing = [n for n in list(held) + robot["joints"] if not model.existJointName(n)]
     if missing:
         sys.exit(f"{urdf}: Pinocchio's model lacks joints {missing}")
-    max_position, max_orientation, solved = 0.0, 0.0, 0
-    for case in robot["cases"]:
-        solution = case["solution"]
-        if solution is None:
-            continue
-        solved += 1
+    def errors(case, joints):
+        """Position and orientation error of the link at `joints` against the target."""
         values = dict(held)
-        values.update(zip(robot["joints"], solution))
+        values.update(zip(robot["joints"], joints))
         pin.framesForwardKinematics(model, data, configuration(model, values))
         placement = data.oMf[frame]
         target = quaternion_matrix(*case["quaternion"])
         position = np.linalg.norm(placement.translation - np.array(case["position"]))
         orientation = np.linalg.norm(pin.log3(target.T @ placement.rotation))
-        max_position = max(max_position, position)
-        max_orientation = max(max_orientation, orientation)
-    return len(robot["cases"]), solved, max_position, max_orientation
+        return position, orientation
+
+    worst, targets, solved = [0.0, 0.0], [0.0, 0.0], 0
+    for case in robot["cases"]:
+        for k, e in enumerate(errors(case, case["sampled"])):
+            targets[k] = max(targets[k], e)
+        if case["solution"] is None:
+            continue
+        solved += 1
+        for k, e in enumerate(errors(case, case["solution"])):
+            worst[k] = max(worst[k], e)
+    return len(robot["cases"]), solved, worst, targets
 
 
 def main():
@@ -85,14 +92,17 @@ def main():
     with open(args.json) as f:
         robots = json.load(f)["robots"]
     print(f"Pinocchio {pin.__version__}")
-    print("| robot | URDF | solutions | max position error (m) | max orientation error (rad) |")
-    print("|---|---|---|---|---|")
+    print(
+        "| robot | URDF | solutions | max position error (m) | max orientation error (rad) "
+        "| targets vs Pinocchio: position (m) | orientation (rad) |"
+    )
+    print("|---|---|---|---|---|---|---|")
     for robot in robots:
         urdf = overrides.get(robot["name"], robot["urdf"])
-        cases, solved, position, orientation = check(robot, urdf)
+        cases, solved, (position, orientation), (tp, to) = check(robot, urdf)
         print(
             f"| {robot['name']} | {urdf.rsplit('/', 1)[-1]} | {solved}/{cases} "
-            f"| {position:.2e} | {orientation:.2e} |"
+            f"| {position:.2e} | {orientation:.2e} | {tp:.2e} | {to:.2e} |"
         )
 
 
