@@ -39,6 +39,7 @@
 //! | [`read_cloud`], [`parse_cloud`], [`InputCloud`] (and [`InputCloud::from_xyz`] for arrays in memory), [`CloudFormat`], [`CloudOrigin`], [`write_ply`], [`ply_bytes`], [`PlyEncoding`], [`write_npy`], [`npy_bytes`], [`MAX_CLOUD_POINTS`], [`MAX_CLOUD_FILE_BYTES`], [`CloudInputError`] | point clouds from files: PLY (ASCII, binary), PCD (ASCII, binary, binary_compressed), `.npy` (N×3 floats), bounded, NaN points dropped and counted; writers for PLY and `.npy` |
 //! | [`SensorPose`], [`sample_surfaces`], [`sample_obstacle_surface`], [`DEFAULT_SAMPLES_PER_OBSTACLE`] | a camera's pose (its cloud into the base frame); clouds sampled on a scene's primitives (VAMP's benchmark protocol, seeded) |
 //! | [`voxel_downsample`], [`min_distance_downsample`], [`crop_to_ball`], [`crop_to_box`], [`reach_ball`], [`remove_robot_points`], [`FilterReport`] | filters, each optional and timed: one point per voxel or per minimum distance, the robot's reach (a ball holding it at every configuration) or a box, the points on the robot at a configuration |
+//! | [`IkSolver`], [`PoseTarget`], [`PositionTolerance`], [`OrientationTolerance`], [`PoseGoal`], [`IkSolution`], [`IkError`] | inverse kinematics: configurations placing a link or tool frame at a pose within tolerances (a box or ball; a cone or free rotation about an axis), collision-free, several distinct ones per pose |
 //! | [`ModelWarning`] | what a lenient model ignored: SRDF and allowed-collision entries naming links it lacks |
 
 #![forbid(unsafe_code)]
@@ -48,6 +49,7 @@ mod arm_problem;
 mod checking;
 mod cloud_input;
 mod clouds;
+mod inverse_kinematics;
 mod lane_f32;
 mod model;
 mod robots;
@@ -68,6 +70,9 @@ pub use cloud_input::{
     write_npy, write_ply,
 };
 pub use clouds::{CloudError, CloudObstacle, PointCloud, PointTree};
+pub use inverse_kinematics::{
+    IkError, IkSolution, IkSolver, OrientationTolerance, PoseGoal, PoseTarget, PositionTolerance,
+};
 pub use model::{
     Kinematics, LeverArms, LinkFrame, LinkSphere, ModelError, ModelWarning, Motion, RobotModel,
     rpy_matrix,

@@ -17,6 +17,7 @@ mod cloud_input_properties;
 mod cloud_motion;
 mod cloud_structure;
 mod hostile_models;
+mod inverse_kinematics;
 mod joint_kinds;
 mod medial_placement;
 mod mesh_formats;

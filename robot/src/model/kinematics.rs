@@ -185,23 +185,32 @@ impl Kinematics {
     /// The `f64` twin of [`link_poses`](Self::link_poses).
     pub fn link_poses_f64(&self, q: &[f64], out: &mut [DAffine3]) {
         debug_assert!(q.len() >= self.dimension && out.len() >= self.steps.len());
-        for (i, step) in self.steps.iter().enumerate() {
-            let mut local = step.origin64;
-            match step.motion {
-                JointMotion::Fixed => {}
-                JointMotion::Prismatic(_, c) => {
-                    local *= DAffine3::from_translation(step.axis64 * q[c]);
-                }
-                JointMotion::RevoluteZ(c) | JointMotion::Revolute(_, c) => {
-                    local *= DAffine3::from_axis_angle(step.axis64, q[c]);
-                }
-            }
-            out[i] = if step.parent == usize::MAX {
-                local
-            } else {
-                out[step.parent] * local
-            };
+        for link in 0..self.steps.len() {
+            self.link_pose_f64(q, link, out);
         }
+    }
+
+    /// The `f64` twin of [`link_pose`](Self::link_pose): writes the world pose of link `link`
+    /// only, given the poses of its ancestors in `out` (inverse kinematics walks the chain of
+    /// one link this way).
+    #[inline]
+    pub fn link_pose_f64(&self, q: &[f64], link: usize, out: &mut [DAffine3]) {
+        let step = &self.steps[link];
+        let mut local = step.origin64;
+        match step.motion {
+            JointMotion::Fixed => {}
+            JointMotion::Prismatic(_, c) => {
+                local *= DAffine3::from_translation(step.axis64 * q[c]);
+            }
+            JointMotion::RevoluteZ(c) | JointMotion::Revolute(_, c) => {
+                local *= DAffine3::from_axis_angle(step.axis64, q[c]);
+            }
+        }
+        out[link] = if step.parent == usize::MAX {
+            local
+        } else {
+            out[step.parent] * local
+        };
     }
 
     /// The `f64` twin of [`sphere_centers`](Self::sphere_centers); also gives the radii.
