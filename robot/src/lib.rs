@@ -40,6 +40,9 @@
 //! | [`SensorPose`], [`sample_surfaces`], [`sample_obstacle_surface`], [`DEFAULT_SAMPLES_PER_OBSTACLE`] | a camera's pose (its cloud into the base frame); clouds sampled on a scene's primitives (VAMP's benchmark protocol, seeded) |
 //! | [`voxel_downsample`], [`min_distance_downsample`], [`crop_to_ball`], [`crop_to_box`], [`reach_ball`], [`remove_robot_points`], [`FilterReport`] | filters, each optional and timed: one point per voxel or per minimum distance, the robot's reach (a ball holding it at every configuration) or a box, the points on the robot at a configuration |
 //! | [`IkSolver`], [`PoseTarget`], [`PositionTolerance`], [`OrientationTolerance`], [`PoseGoal`], [`IkSolution`], [`IkError`] | inverse kinematics: configurations placing a link or tool frame at a pose within tolerances (a box or ball; a cone or free rotation about an axis), collision-free, several distinct ones per pose |
+//! | [`MotionLimits`], [`JointLimitsYaml`], [`PANDA_JOINT_LIMITS`] | velocity and acceleration limits per coordinate: the URDF's, a MoveIt `joint_limits.yaml`'s or given, scaled; mimic joints bound their leaders |
+//! | [`Trajectory`], [`Sample`], [`BlendCertifier`], [`BlendReport`], [`merge_repeated_waypoints`] | timed paths: stop at each corner (time-optimal trapezoids on the segments) or parabolic blends certified collision-free; exact piecewise-quadratic evaluation |
+//! | [`TrajectoryFile`], [`check_trajectory`], [`TRAJECTORY_TOLERANCE`], [`TrajectoryCheck`], [`Violation`], [`TrajectoryError`] | trajectories as JSON or CSV, and their check against the robot's limits and the scene |
 //! | [`ModelWarning`] | what a lenient model ignored: SRDF and allowed-collision entries naming links it lacks |
 
 #![forbid(unsafe_code)]
@@ -55,6 +58,7 @@ mod model;
 mod robots;
 mod scenes;
 mod spherise;
+mod trajectory;
 
 pub use arm_error::ArmError;
 pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
@@ -82,4 +86,9 @@ pub use scenes::{MbmProblem, MovingObstacle, MovingScene, Obstacle, Scene, Scene
 pub use spherise::{
     CoverOptions, CoverSphere, LinkReport, LinkSource, MAX_COVER_CELLS, Placement, SphereCover,
     SpheriseError, SpheriseOptions, SpherisedUrdf, TriangleMesh, parse_stl, read_stl,
+};
+pub use trajectory::{
+    BlendCertifier, BlendReport, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS, Sample,
+    TRAJECTORY_TOLERANCE, Trajectory, TrajectoryCheck, TrajectoryError, TrajectoryFile, Violation,
+    check_trajectory, merge_repeated_waypoints,
 };

@@ -31,6 +31,20 @@ pub(crate) struct ModelJoint {
     pub(crate) planned: bool,
     /// The value when held still.
     pub(crate) value: f64,
+    /// Its `<limit velocity=…>` as written (`None` when absent, or 0 or infinite — what
+    /// urdf-rs reads for a missing attribute): checked only when a trajectory is timed
+    /// ([`MotionLimits`](crate::MotionLimits)).
+    pub(crate) velocity: Option<f64>,
+}
+
+/// How one moving URDF joint follows the configuration, for timing: its name, its URDF
+/// velocity limit, and the coordinate it moves with and at what rate (`None` for a joint held
+/// still).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct JointRate {
+    pub(crate) name: String,
+    pub(crate) velocity: Option<f64>,
+    pub(crate) follows: Option<(usize, f64)>,
 }
 
 /// Where a joint's value comes from.
@@ -145,6 +159,47 @@ impl RobotModel {
             self.space = JointSpace::new(specs)?;
         }
         Ok(())
+    }
+
+    /// Every moving joint with the coordinate it follows and at what rate (`1` for a planned
+    /// joint, the composed multiplier for a mimic follower), for velocity limits.
+    pub(crate) fn joint_rates(&self) -> Vec<JointRate> {
+        let mut coordinates = vec![None; self.joints.len()];
+        let mut next = 0;
+        for (i, joint) in self.joints.iter().enumerate() {
+            if joint.planned && joint.mimic.is_none() && joint.spec.is_some() {
+                coordinates[i] = Some(next);
+                next += 1;
+            }
+        }
+        (0..self.joints.len())
+            .map(|i| JointRate {
+                name: self.joints[i].name.clone(),
+                velocity: self.joints[i].velocity,
+                follows: match self.drive(i, &coordinates, 0) {
+                    Ok(Drive::Coordinate {
+                        coordinate,
+                        multiplier,
+                        ..
+                    }) => Some((coordinate, multiplier)),
+                    _ => None,
+                },
+            })
+            .collect()
+    }
+
+    /// Every joint name of the URDF that the model kept a frame for (fixed joints included).
+    pub(crate) fn all_joint_names(&self) -> impl Iterator<Item = &str> {
+        self.link_joints.iter().flatten().map(String::as_str)
+    }
+
+    /// A copy whose every sphere (and link bounding sphere) is grown by `by` metres: a
+    /// checker of it proves clearance `by` beyond its margin (the blend certification of
+    /// [`Trajectory`](crate::Trajectory)).
+    pub(crate) fn with_grown_spheres(&self, by: f64) -> RobotModel {
+        let mut grown = self.clone();
+        grown.grow_spheres(by);
+        grown
     }
 
     /// The longest lever arm of a revolute (or continuous) coordinate over every link

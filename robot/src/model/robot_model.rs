@@ -323,6 +323,16 @@ impl RobotModel {
         &self.bounds
     }
 
+    /// Grows every sphere and link bounding sphere by `by` metres.
+    pub(super) fn grow_spheres(&mut self, by: f64) {
+        for sphere in &mut self.spheres {
+            sphere.radius += by;
+        }
+        for (_, radius) in self.bounds.iter_mut().flatten() {
+            *radius += by;
+        }
+    }
+
     /// The link pairs checked for self-collision: both links have spheres, `i < j`, and
     /// neither the SRDF nor an allowed-collision entry disabled the pair.
     pub fn self_collision_pairs(&self) -> &[(usize, usize)] {
@@ -399,6 +409,7 @@ fn joint_frame(
         limits,
         planned: true,
         value: 0.0,
+        velocity: Some(joint.limit.velocity).filter(|v| *v != 0.0 && *v != f64::INFINITY),
     };
     joint.value = joint.default_value();
     joints.push(joint);

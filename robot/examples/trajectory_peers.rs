@@ -1,0 +1,228 @@
+//! `trajectory_peers`: our trajectories beside TOPP-RA's on simplified Panda paths.
+//!
+//! ```text
+//! mkdir -p target/mbm && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/mbm
+//! cargo run --release -p robot --example trajectory_peers -- plan target/mbm 20 target/peers
+//! /work/venv/bin/python benches/peers/toppra/compare.py target/peers
+//! cargo run --release -p robot --example trajectory_peers -- check target/mbm target/peers
+//! /work/venv/bin/python benches/peers/toppra/compare.py target/peers --table
+//! ```
+//!
+//! `plan`: on the first `N` problems of each of the seven MotionBenchMaker Panda scenes,
+//! plans with RRT-Connect (range 1, first solution, 1 s), simplifies the path (0.1 s), times
+//! it (stop at corners, and blended with certified blends) under the Panda URDF's velocity
+//! limits and MoveIt's Panda acceleration limits ([`robot::PANDA_JOINT_LIMITS`]), checks our
+//! trajectory with [`robot::check_trajectory`] at 1 ms samples, and writes per path
+//! `SCENE/NNNN.path.json` (waypoints, limits, our durations, computation times and check) and
+//! `SCENE/NNNN.ours.json` (our blended trajectory sampled every 1 ms).
+//!
+//! `check`: certifies each `SCENE/NNNN.toppra.json` (TOPP-RA's trajectory sampled by
+//! `compare.py`) as a polyline against the problem's scene, and writes
+//! `SCENE/NNNN.toppra_check.json`.
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use mit_star::{
+    Configuration, FirstSolution, Parameters, PathSimplifier, TerminationExt, TimeLimit,
+    build_planner,
+};
+use robot::{
+    ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS, Trajectory,
+    TrajectoryFile, check_trajectory,
+};
+use spaces::StateSpace as _;
+
+#[path = "support/mbm_scenes.rs"]
+mod mbm_scenes;
+use mbm_scenes::SEVEN_SCENES;
+
+/// The sample period of the files, in seconds.
+const PERIOD: f64 = 1e-3;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("plan") => plan(
+            Path::new(&args[1]),
+            args[2].parse().expect("a problem count"),
+            Path::new(&args[3]),
+        ),
+        Some("check") => check(Path::new(&args[1]), Path::new(&args[2])),
+        _ => panic!("usage: trajectory_peers plan MBM_FOLDER N OUT | check MBM_FOLDER OUT"),
+    }
+}
+
+fn limits(problem: &ArmProblem) -> MotionLimits {
+    let yaml = JointLimitsYaml::parse(PANDA_JOINT_LIMITS, "panda").expect("the Panda's limits");
+    MotionLimits::for_robot(problem.robot(), Some(&yaml), None).expect("the Panda's limits")
+}
+
+fn plan(folder: &Path, count: usize, out: &Path) {
+    println!(
+        "| scene | paths | median waypoints | median stop (s) | median blended (s) | blends certified / shrunk / stopped | median timing (ms) | median certifier build (ms) | failed checks |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for scene in SEVEN_SCENES {
+        let scene = format!("{scene}_panda");
+        let dir = out.join(&scene);
+        std::fs::create_dir_all(&dir).expect("an output folder");
+        let (mut stops, mut blends, mut points, mut took, mut builds) =
+            (vec![], vec![], vec![], vec![], vec![]);
+        let (mut corners, mut failed) = ([0; 3], 0);
+        for index in 1..=count {
+            let Ok(problem) = ArmProblem::panda_mbm(&folder.join(&scene), index) else {
+                continue;
+            };
+            if !problem.ends_are_valid() {
+                continue;
+            }
+            let parameters = Parameters {
+                seed: index as u64,
+                range: Some(1.0),
+                ..Parameters::default()
+            };
+            let mut planner =
+                build_planner(Configuration::RrtConnect, &problem, &parameters).expect("builds");
+            let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)));
+            let Some(solution) = outcome.ok().and_then(|o| o.solution().cloned()) else {
+                continue;
+            };
+            let path: Vec<Vec<f64>> = solution.path.iter().map(<[f64]>::to_vec).collect();
+            let simplified = PathSimplifier::new()
+                .seed(index as u64)
+                .simplify(
+                    &problem,
+                    &path,
+                    &spaces::Deadline::after(Duration::from_secs_f64(0.1)),
+                )
+                .expect("a path of the problem");
+            let path = robot::merge_repeated_waypoints(&simplified.path);
+            if path.len() < 2 {
+                continue;
+            }
+            let limits = limits(&problem);
+            let started = Instant::now();
+            let certifier = BlendCertifier::new(problem.robot(), problem.scene());
+            let build = started.elapsed().as_secs_f64();
+            let started = Instant::now();
+            let (blended, report) = Trajectory::blended(&path, &limits, &certifier).expect("timed");
+            let timing = started.elapsed().as_secs_f64();
+            let stop = Trajectory::stop_at_corners(&path, &limits).expect("timed");
+            let file = TrajectoryFile::of(&blended, Some(PERIOD)).expect("sampled");
+            let verdict = check_trajectory(
+                &file,
+                problem.robot(),
+                problem.scene(),
+                &limits,
+                &robot::ArmChecker::new(problem.robot(), problem.scene()),
+            )
+            .expect("checked");
+            if !verdict.is_valid() {
+                failed += 1;
+                eprintln!(
+                    "{scene} {index}: {:?}",
+                    &verdict.violations[..verdict.violations.len().min(3)]
+                );
+            }
+            file.write(&dir.join(format!("{index:04}.ours.json")))
+                .expect("written");
+            let record = serde_json::json!({
+                "scene": scene,
+                "index": index,
+                "joints": limits.names(),
+                "waypoints": path,
+                "velocity_limits": limits.velocity(),
+                "acceleration_limits": limits.acceleration(),
+                "stop_duration": stop.duration(),
+                "blended_duration": blended.duration(),
+                "timing_seconds": timing,
+                "certifier_build_seconds": build,
+                "blends": [report.blended, report.shrunk, report.stopped],
+                "check_valid": verdict.is_valid(),
+                "check_velocity_excess": verdict.velocity_excess,
+                "check_acceleration_excess": verdict.acceleration_excess,
+            });
+            std::fs::write(
+                dir.join(format!("{index:04}.path.json")),
+                record.to_string(),
+            )
+            .expect("written");
+            stops.push(stop.duration());
+            blends.push(blended.duration());
+            points.push(path.len() as f64);
+            took.push(timing * 1e3);
+            builds.push(build * 1e3);
+            corners[0] += report.blended;
+            corners[1] += report.shrunk;
+            corners[2] += report.stopped;
+        }
+        println!(
+            "| {} | {} | {} | {:.3} | {:.3} | {} / {} / {} | {:.3} | {:.1} | {failed} |",
+            scene.trim_end_matches("_panda"),
+            stops.len(),
+            mbm_scenes::median(&mut points),
+            mbm_scenes::median(&mut stops),
+            mbm_scenes::median(&mut blends),
+            corners[0],
+            corners[1],
+            corners[2],
+            mbm_scenes::median(&mut took),
+            mbm_scenes::median(&mut builds),
+        );
+    }
+}
+
+fn check(folder: &Path, out: &Path) {
+    for scene in SEVEN_SCENES {
+        let scene = format!("{scene}_panda");
+        let dir = out.join(&scene);
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            continue;
+        };
+        let mut files: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.to_string_lossy().ends_with(".toppra.json"))
+            .collect();
+        files.sort();
+        let (mut checked, mut colliding) = (0, 0);
+        for file in files {
+            let name = file.file_name().unwrap().to_string_lossy().into_owned();
+            let index: usize = name[..4].parse().expect("NNNN.toppra.json");
+            let problem = ArmProblem::panda_mbm(&folder.join(&scene), index).expect("the problem");
+            let samples = TrajectoryFile::read(&file).expect("TOPP-RA's samples");
+            let checker = robot::ArmChecker::new(problem.robot(), problem.scene());
+            let space = problem.robot().joint_space();
+            let mut first = None;
+            let mut outside = 0;
+            for (i, w) in samples.samples.windows(2).enumerate() {
+                if !space.contains(&w[1].position) {
+                    outside += 1;
+                }
+                let mut progress = validity::MotionProgress::default();
+                let status = validity::StateValidity::certify_motion(
+                    &checker,
+                    space,
+                    &w[0].position,
+                    &w[1].position,
+                    &mut progress,
+                    &spaces::Never,
+                );
+                if first.is_none() && status != Some(validity::EdgeStatus::Valid) {
+                    first = Some(i + 1);
+                }
+            }
+            checked += 1;
+            colliding += usize::from(first.is_some());
+            let record = serde_json::json!({"collision_free": first.is_none(), "first_failure": first, "outside_position_limits": outside});
+            std::fs::write(
+                dir.join(format!("{index:04}.toppra_check.json")),
+                record.to_string(),
+            )
+            .expect("written");
+        }
+        println!(
+            "{scene}: {checked} TOPP-RA trajectories certified, {colliding} not collision-free"
+        );
+    }
+}
