@@ -196,6 +196,10 @@ pub enum HarnessError {
     /// the problem named by the [`ArmError`](robot::ArmError).
     #[error(transparent)]
     ArmEnd(robot::ArmError),
+    /// A pose goal the inverse kinematics refuses: a link the robot lacks, a quaternion of
+    /// norm 0, a negative tolerance.
+    #[error("pose goal: {0}")]
+    PoseGoal(#[from] robot::IkError),
     /// The output folder cannot be created or written.
     #[error("output folder `{}` is not writable: {source}", path.display())]
     OutputFolder {

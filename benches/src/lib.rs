@@ -54,6 +54,7 @@
 //! | [`PlannerSpec`], [`parse_configuration`], [`ParameterOverrides`] | a planner of an experiment; configuration names; `key = value` parameter changes |
 //! | [`ProblemSpec`], [`ProblemSource`], [`ProblemInstance`] | a problem over dimensions and layouts; built-in or file; one concrete instance with its budget |
 //! | [`MbmFolder`], [`RobotChoice`] | a MotionBenchMaker folder and the robot planned for (`--robot`, shipped or a folder) |
+//! | [`PoseGoalSpec`], [`PoseGoalSource`], [`pose_goal_planner`] | a link's pose as an arm problem's goal (`plan --goal-pose`, `[problems.pose_goal]`); the goal region inverse kinematics makes of it; the planner towards it |
 //! | [`RunJob`], [`Executor`], [`ExecutionOptions`], [`Interrupt`] | the shuffled, seeded schedule of runs; parallel execution with progress; SIGINT/SIGTERM |
 //! | [`RunJournal`], [`results_from_records`] | every finished run appended to the raw files at once and committed to the database in batches; reading them back |
 //! | [`RunRecord`], [`RunStatus`], [`PathValidation`], [`ValidationMethod`] | what one run measured; how it ended; the independent path check (exact for box worlds) |
@@ -96,6 +97,8 @@ pub use definition::experiment_file;
 pub use definition::mbm_folder::MbmFolder;
 pub use definition::parameter_overrides::ParameterOverrides;
 pub use definition::planner_spec::{PlannerSpec, parse_configuration};
+pub use definition::pose_goal_source::{PoseGoalSource, pose_goal_planner};
+pub use definition::pose_goal_spec::PoseGoalSpec;
 pub use definition::problem_instance::ProblemInstance;
 pub use definition::problem_kind::InstanceProblem;
 pub use definition::problem_source::{ProblemFile, ProblemSource};

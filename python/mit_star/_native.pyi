@@ -109,6 +109,17 @@ class Problem:
         """Whether ``state`` is valid for the problem's built-in checker."""
     def describe(self) -> str:
         """The problem as a TOML problem file (box worlds) or a description (arms)."""
+    def with_goal_pose(
+        self,
+        link: str,
+        pose: Union[str, ArrayLike] = "goal",
+        *,
+        tool: Optional[Sequence[float]] = None,
+        position_tolerance: Optional[Union[float, Sequence[float]]] = None,
+        orientation_tolerance: Optional[str] = None,
+        ik_goals: int = 8,
+    ) -> "Problem":
+        """The same arm problem with a pose of ``link`` as its goal (inverse kinematics draws goal configurations while planning)."""
 
 class SolveResult:
     """What ``Planner.solve`` returned."""

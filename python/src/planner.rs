@@ -6,7 +6,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
 use mit_star::{Configuration, Planner, build_planner_with};
-use mit_star_benches::InstanceProblem;
+use mit_star_benches::{InstanceProblem, pose_goal_planner};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -91,7 +91,21 @@ impl PyPlanner {
             )));
         }
         let failure = Arc::new(CallbackFailure::default());
-        let planner = if validity.is_none() && vectorized.is_none() {
+        let pose = problem.pose_goal.as_ref().zip(problem.problem.as_arm());
+        let planner = if let Some((spec, arm)) = pose {
+            if validity.is_some() || vectorized.is_some() {
+                return Err(BindingError::Value(
+                    "a problem with a pose goal plans with its own checker: drop validity and vectorized"
+                        .into(),
+                ));
+            }
+            // The parameters are checked once, over the problem's own goal.
+            problem
+                .problem
+                .effective_parameters(configuration, &parameters)?;
+            let source = spec.source(arm, seed)?;
+            pose_goal_planner(arm, source, configuration, parameters)
+        } else if validity.is_none() && vectorized.is_none() {
             problem.problem.build_planner(configuration, &parameters)?
         } else {
             let checker = PythonValidity::new(

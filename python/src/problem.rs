@@ -4,8 +4,8 @@
 
 use std::path::PathBuf;
 
-use mit_star_benches::InstanceProblem;
 use mit_star_benches::commands::{CloudArgs, ProblemArgs};
+use mit_star_benches::{InstanceProblem, PoseGoalSpec};
 use numpy::ndarray::ArrayView2;
 use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use problems::{PlanningProblem, Problem};
@@ -29,6 +29,8 @@ pub struct PyProblem {
     pub(crate) problem: InstanceProblem,
     /// The problem's identifier (`dividing-walls-R4`, `box_panda-R7-3`, …).
     pub(crate) id: String,
+    /// A link's pose as the goal instead of the goal configuration (arms).
+    pub(crate) pose_goal: Option<PoseGoalSpec>,
 }
 
 impl PyProblem {
@@ -38,6 +40,7 @@ impl PyProblem {
         Ok(Self {
             problem: instance.problem,
             id: instance.id,
+            pose_goal: None,
         })
     }
 
@@ -50,7 +53,11 @@ impl PyProblem {
             boxes.as_boxes().map_or("boxes", |p| p.name()),
             boxes.dimension()
         );
-        Ok(Self { problem: boxes, id })
+        Ok(Self {
+            problem: boxes,
+            id,
+            pose_goal: None,
+        })
     }
 
     /// The space's lower and upper bounds.
@@ -236,6 +243,59 @@ impl PyProblem {
         Self::from_boxes(problem.allowing_coarse_step(allow_coarse_step))
     }
 
+    /// The same arm problem with a pose of `link` as its goal: planners built for it draw
+    /// goal configurations by inverse kinematics while planning (collision-free, distinct; at
+    /// most `ik_goals`), and a path ends at one of them.
+    ///
+    /// `pose` is `"goal"` (the pose the goal configuration gives the link) or 7 numbers
+    /// x, y, z, qx, qy, qz, qw (metres, a quaternion, normalised) in the robot's root frame;
+    /// `tool`, 3 or 7 numbers, a frame fixed to the link whose pose is meant instead;
+    /// `position_tolerance`, a ball radius or 3 box half-extents (metres; exact by default);
+    /// `orientation_tolerance`, `"exact"` (default), `"free"`, `"cone:AXIS:ANGLE"` or
+    /// `"axis:AXIS"` (AXIS `x`, `y`, `z` or `a;b;c`), as `mit-star plan --goal-pose` takes
+    /// them. Raises `ValueError` for a box world, an unknown link or a malformed value.
+    #[pyo3(signature = (link, pose="goal", *, tool=None, position_tolerance=None, orientation_tolerance=None, ik_goals=8))]
+    fn with_goal_pose(
+        &self,
+        link: String,
+        pose: &Bound<'_, PyAny>,
+        tool: Option<Vec<f64>>,
+        position_tolerance: Option<&Bound<'_, PyAny>>,
+        orientation_tolerance: Option<String>,
+        ik_goals: usize,
+    ) -> BindingResult<Self> {
+        let Some(arm) = self.problem.as_arm() else {
+            return Err(BindingError::Value(
+                "a pose goal is a goal of arm problems; this is a box world".into(),
+            ));
+        };
+        let pose = match pose.extract::<String>() {
+            Ok(text) => text,
+            Err(_) => joined(&numbers_of("pose", pose)?),
+        };
+        let position_tolerance = match position_tolerance {
+            None => None,
+            Some(value) => Some(match value.extract::<f64>() {
+                Ok(radius) => radius.to_string(),
+                Err(_) => joined(&numbers_of("position_tolerance", value)?),
+            }),
+        };
+        let spec = PoseGoalSpec {
+            link,
+            pose,
+            tool: tool.map(|t| joined(&t)),
+            position_tolerance,
+            orientation_tolerance,
+            ik_goals,
+        };
+        // Refused now rather than at the first solve: an unknown link, a bad quaternion.
+        spec.source(arm, 0)?;
+        Ok(Self {
+            pose_goal: Some(spec),
+            ..self.clone()
+        })
+    }
+
     /// The problem's identifier (`dividing-walls-R4`, `box_panda-R7-3`, …).
     #[getter]
     fn id(&self) -> &str {
@@ -375,4 +435,26 @@ fn points_of<T: Copy + Into<f64>>(a: &ArrayView2<'_, T>) -> BindingResult<robot:
         None => robot::InputCloud::from_xyz("cloud", &a.iter().copied().collect::<Vec<T>>()),
     }
     .map_err(|e| BindingError::Value(e.to_string()))
+}
+
+/// Numbers from a sequence or array (`pose`, `position_tolerance`).
+fn numbers_of(name: &str, value: &Bound<'_, PyAny>) -> BindingResult<Vec<f64>> {
+    value.extract::<Vec<f64>>().map_err(|_| {
+        BindingError::Type(format!(
+            "{name} must be a sequence of numbers, not {}",
+            value
+                .get_type()
+                .name()
+                .map_or_else(|_| "an unknown type".to_owned(), |n| n.to_string())
+        ))
+    })
+}
+
+/// Numbers as the command line writes them: `0.5,0,0.4`.
+fn joined(values: &[f64]) -> String {
+    values
+        .iter()
+        .map(f64::to_string)
+        .collect::<Vec<_>>()
+        .join(",")
 }

@@ -38,7 +38,7 @@ use crate::outcome::run_record::RunRecord;
 pub struct BenchArgs {
     /// An experiment file (TOML); see `mit-star experiments --print smoke` for the format.
     pub file: Option<PathBuf>,
-    /// A shipped experiment: paper-table, ablation, ablation-study, smoke, panda-mbm, paper-planners (`mit-star experiments` lists them).
+    /// A shipped experiment: paper-table, ablation, ablation-study, smoke, panda-mbm, paper-planners, panda-pose-goals (`mit-star experiments` lists them).
     #[arg(long, short, conflicts_with = "file")]
     pub experiment: Option<String>,
     /// Planner configurations, comma separated (flags mode; default mit-star,eit-star).
@@ -329,6 +329,7 @@ impl BenchArgs {
                 resolution: self.resolution,
                 allow_coarse_step: self.allow_coarse_step,
                 cloud: cloud.clone(),
+                pose_goal: None,
             });
         }
         let name = self.name.clone().unwrap_or_else(|| {

@@ -20,6 +20,7 @@ mod compare;
 mod listings;
 mod merge;
 mod plan;
+mod pose_goal_args;
 mod problem_args;
 mod replan;
 mod spherise;

@@ -8,9 +8,11 @@ use clap::Args;
 
 use crate::budget::{budget_duration, deadline_after};
 use crate::commands::CommandOutcome;
+use crate::commands::pose_goal_args::PoseGoalArgs;
 use crate::commands::problem_args::ProblemArgs;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
+use crate::definition::pose_goal_source::PoseGoalSource;
 use crate::definition::problem_instance::ProblemInstance;
 use crate::definition::problem_source::sanitise;
 use crate::error::HarnessError;
@@ -31,6 +33,9 @@ pub struct PlanArgs {
     /// The problem.
     #[command(flatten)]
     pub problem: ProblemArgs,
+    /// A link's pose as the goal of an arm problem.
+    #[command(flatten)]
+    pub pose: PoseGoalArgs,
     /// Time budget in seconds (planner construction included).
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub time: f64,
@@ -97,8 +102,12 @@ impl PlanArgs {
                 source,
             })?;
         }
-        let instance = self.problem.build(self.time)?;
+        let mut instance = self.problem.build(self.time)?;
         let arm = instance.problem.as_arm().cloned();
+        instance.pose_goal = self.pose.spec();
+        if let Some(spec) = &instance.pose_goal {
+            spec.check()?;
+        }
         let picture = (instance.dimension == 2 || arm.is_some()) && !self.no_picture;
         if picture {
             crate::writable_folder(&self.output)?;
@@ -121,18 +130,21 @@ impl PlanArgs {
                 what: "--time".into(),
                 source,
             })?;
-        let built = instance
-            .problem
-            .build_planner(configuration, &spec.parameters_for_seed(self.seed))
-            .map_err(|source| HarnessError::Build {
-                planner: spec.name().to_owned(),
-                source,
-            })?;
-        let Some((record, planner)) =
-            job.solve_built(&instance, &spec, built, (started, deadline), interrupt)
-        else {
+        let (built, pose) = instance.build_planner(&spec, self.seed)?;
+        let solved = match &pose {
+            None => job.solve_built(&instance, &spec, built, (started, deadline), interrupt),
+            Some(source) => {
+                let validate = |path: &[Vec<f64>], cost: f64| source.validate(path, cost);
+                let times = (started, deadline);
+                job.solve_built_validating(&instance, &spec, built, times, interrupt, &validate)
+            }
+        };
+        let Some((record, planner)) = solved else {
             return Ok(CommandOutcome::Interrupted);
         };
+        if let Some(source) = &pose {
+            report_pose_goal(source, &record);
+        }
         let smoothing = spec.parameters_for_seed(self.seed).simplify_smoothing;
         let simplified = self.simplified(&instance, &record, smoothing)?;
         let drawn = simplified.as_ref().map_or(&record.path, |(s, _)| &s.path);
@@ -395,5 +407,17 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     }
     for f in files {
         say!("  picture: {}", f.display());
+    }
+}
+
+/// The goal configurations drawn for a pose goal, on stderr (stdout may be JSON).
+fn report_pose_goal(source: &PoseGoalSource, record: &RunRecord) {
+    let drawn = source.given().lock().map(|g| g.len()).unwrap_or(0);
+    eprintln!("pose goal: {drawn} goal configurations drawn by inverse kinematics");
+    if drawn == 0
+        && record.path.is_empty()
+        && let Some(why) = source.last_failure()
+    {
+        eprintln!("pose goal: no configuration reaches the pose: {why}");
     }
 }

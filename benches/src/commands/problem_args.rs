@@ -166,6 +166,7 @@ impl ProblemArgs {
             budget,
             problem,
             cloud,
+            pose_goal: None,
         };
         if let Some(boxes) = instance.problem.as_boxes()
             && boxes.step_is_coarse()

@@ -319,6 +319,13 @@ impl Experiment {
                 if let Some(cloud) = &p.cloud {
                     e.insert("cloud".into(), cloud_table(cloud).into());
                 }
+                if let Some(pose) = p
+                    .pose_goal
+                    .as_ref()
+                    .and_then(|g| toml::Table::try_from(g).ok())
+                {
+                    e.insert("pose_goal".into(), pose.into());
+                }
                 let time: Vec<toml::Value> = p.budgets.iter().map(|&b| b.into()).collect();
                 e.insert("time".into(), time.into());
                 if p.source.is_seeded() {

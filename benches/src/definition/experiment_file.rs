@@ -39,6 +39,10 @@
 //! # voxel = 0.02                      # options: files, sensor_pose, scene_as_cloud, seed,
 //! #                                   # point_radius, crop_reach, remove_robot, voxel,
 //! #                                   # min_distance, drop_primitives)
+//! # [problems.pose_goal]              # `name = "mbm:PATH"` only: a link's pose as the goal,
+//! # link = "panda_hand"               # the keys of `PoseGoalSpec` (the command line's
+//! # pose = "goal"                     # --goal-pose options: pose, link, tool,
+//! #                                   # position_tolerance, orientation_tolerance, ik_goals)
 //! ```
 
 use std::fmt;
@@ -51,6 +55,7 @@ use crate::definition::cloud_spec::CloudSpec;
 use crate::definition::experiment::Experiment;
 use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
+use crate::definition::pose_goal_spec::PoseGoalSpec;
 use crate::definition::problem_source::ProblemSource;
 use crate::definition::problem_spec::{ProblemSpec, check_instance_count};
 use crate::definition::robot_choice::RobotChoice;
@@ -156,6 +161,9 @@ pub struct ProblemEntry {
     /// A point cloud among the obstacles (MotionBenchMaker problems only): the keys of
     /// [`CloudSpec`], named as the command line's cloud options.
     pub cloud: Option<CloudSpec>,
+    /// A link's pose as the goal (MotionBenchMaker problems only): the keys of
+    /// [`PoseGoalSpec`].
+    pub pose_goal: Option<PoseGoalSpec>,
 }
 
 /// One number of seconds or a list of them; integers are accepted.
@@ -410,6 +418,23 @@ fn problem_spec(
             Some(cloud)
         }
     };
+    let pose_goal = match p.pose_goal {
+        None => None,
+        Some(_) if !matches!(source, ProblemSource::Mbm(_)) => {
+            return Err(bad(
+                ".pose_goal",
+                HarnessError::Usage(format!(
+                    "a pose goal is a goal of arm problems (`name = \"mbm:PATH\"`); `{}` is a \
+                     box world",
+                    source.label()
+                )),
+            ));
+        }
+        Some(pose) => {
+            pose.check().map_err(|e| bad(".pose_goal", e))?;
+            Some(pose)
+        }
+    };
     if instances.len() > 1 && !source.is_seeded() {
         return Err(bad(
             ".instances",
@@ -427,6 +452,7 @@ fn problem_spec(
         resolution: p.resolution,
         allow_coarse_step: p.allow_coarse_step.unwrap_or(false),
         cloud,
+        pose_goal,
     })
 }
 

@@ -12,7 +12,9 @@
 //!   layout, time budget); [`problem_kind`]: the problem an instance plans on, a box world or an
 //!   arm, and how each kind builds planners, checks paths and describes itself;
 //!   [`cloud_spec`]: the point cloud of an arm problem, and its preparation into the scene
-//!   ([`cloud_option`]: its options' names; [`cloud_summary`]: what preparing it did).
+//!   ([`cloud_option`]: its options' names; [`cloud_summary`]: what preparing it did);
+//!   [`pose_goal_spec`]: a link's pose as an arm problem's goal, and [`pose_goal_source`]: the
+//!   goal region inverse kinematics makes of it and the planner built towards it.
 //!
 //! May use: the planner and problem crates (`mit-star`, `problems`, `robot`, `spaces`,
 //! `validity`), [`crate::error`], [`crate::budget`] and [`crate::path_validation`]; from
@@ -28,6 +30,8 @@ pub(crate) mod experiment;
 pub(crate) mod mbm_folder;
 pub(crate) mod parameter_overrides;
 pub(crate) mod planner_spec;
+pub(crate) mod pose_goal_source;
+pub(crate) mod pose_goal_spec;
 pub(crate) mod problem_instance;
 pub(crate) mod problem_kind;
 pub(crate) mod problem_source;

@@ -1,8 +1,12 @@
 //! [`ProblemInstance`]: one concrete problem of an experiment, with its time budget.
 
 use crate::definition::cloud_summary::CloudSummary;
+use crate::definition::planner_spec::PlannerSpec;
+use crate::definition::pose_goal_source::{PoseGoalSource, pose_goal_planner};
+use crate::definition::pose_goal_spec::PoseGoalSpec;
 use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::problem_source::ProblemSource;
+use crate::error::HarnessError;
 
 /// One problem instance of an experiment: a problem in one dimension (and, for seeded
 /// families, one layout), with the time budget of each run. Each instance is one OMPL
@@ -27,9 +31,52 @@ pub struct ProblemInstance {
     /// What preparing the problem's point cloud did, once before its runs (arm problems with
     /// a `cloud`; `None` without one).
     pub cloud: Option<CloudSummary>,
+    /// A link's pose as the goal instead of the problem's goal configuration (arm problems).
+    pub pose_goal: Option<PoseGoalSpec>,
 }
 
 impl ProblemInstance {
+    /// Builds `planner` with `seed` for this instance: towards its goal, or towards its pose
+    /// goal ([`mit_star::LazyGoals`] with the goal region, returned too: it judges the path).
+    ///
+    /// # Errors
+    /// [`HarnessError::Build`] if the planner refuses its parameters or the query;
+    /// [`HarnessError::PoseGoal`] or [`HarnessError::Usage`] for a pose goal the robot or the
+    /// solver refuses.
+    pub fn build_planner(
+        &self,
+        planner: &PlannerSpec,
+        seed: u64,
+    ) -> Result<(Box<dyn mit_star::Planner + Send>, Option<PoseGoalSource>), HarnessError> {
+        let parameters = planner.parameters_for_seed(seed);
+        let built = |source| HarnessError::Build {
+            planner: planner.name().to_owned(),
+            source,
+        };
+        match (&self.pose_goal, self.problem.as_arm()) {
+            (None, _) => Ok((
+                self.problem
+                    .build_planner(planner.configuration(), &parameters)
+                    .map_err(built)?,
+                None,
+            )),
+            (Some(spec), Some(arm)) => {
+                let source = spec.source(arm, seed)?;
+                // The parameters are checked once, over the problem's own goal.
+                self.problem
+                    .effective_parameters(planner.configuration(), &parameters)
+                    .map_err(built)?;
+                let planner =
+                    pose_goal_planner(arm, source.clone(), planner.configuration(), parameters);
+                Ok((planner, Some(source)))
+            }
+            (Some(_), None) => Err(HarnessError::Usage(format!(
+                "a pose goal applies to arm problems; `{}` is not one",
+                self.label
+            ))),
+        }
+    }
+
     /// The instance id for a label, dimension and (for seeded families) instance seed.
     ///
     /// ```

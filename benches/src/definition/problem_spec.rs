@@ -3,6 +3,7 @@
 use std::sync::Arc;
 
 use crate::definition::cloud_spec::CloudSpec;
+use crate::definition::pose_goal_spec::PoseGoalSpec;
 use crate::definition::problem_instance::ProblemInstance;
 use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::problem_source::ProblemSource;
@@ -45,6 +46,7 @@ pub(crate) fn check_instance_count(count: Option<u64>) -> Result<(), String> {
 ///     resolution: None,
 ///     allow_coarse_step: false,
 ///     cloud: None,
+///     pose_goal: None,
 /// };
 /// let instances = spec.instances()?;
 /// assert_eq!(instances.len(), 6);
@@ -72,6 +74,9 @@ pub struct ProblemSpec {
     /// A point cloud among the obstacles of every instance (MotionBenchMaker problems only),
     /// prepared once per instance when it is built.
     pub cloud: Option<CloudSpec>,
+    /// A link's pose as every instance's goal instead of its goal configuration
+    /// (MotionBenchMaker problems only).
+    pub pose_goal: Option<PoseGoalSpec>,
 }
 
 impl ProblemSpec {
@@ -170,6 +175,7 @@ impl ProblemSpec {
                     budget,
                     problem,
                     cloud,
+                    pose_goal: self.pose_goal.clone(),
                 });
             }
         }
@@ -198,6 +204,7 @@ mod tests {
             resolution: None,
             allow_coarse_step: false,
             cloud: None,
+            pose_goal: None,
         }
     }
 

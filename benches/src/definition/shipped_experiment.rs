@@ -10,7 +10,7 @@ use crate::error::HarnessError;
 /// let names: Vec<&str> = ShippedExperiment::all().iter().map(|e| e.name).collect();
 /// assert_eq!(
 ///     names,
-///     ["paper-table", "ablation", "ablation-study", "smoke", "panda-mbm", "paper-planners"]
+///     ["paper-table", "ablation", "ablation-study", "smoke", "panda-mbm", "paper-planners", "panda-pose-goals"]
 /// );
 /// assert!(ShippedExperiment::find("smoke")?.text.contains("[[problems]]"));
 /// # Ok::<(), mit_star_benches::HarnessError>(())
@@ -27,7 +27,7 @@ pub struct ShippedExperiment {
     pub data: Option<&'static str>,
 }
 
-static SHIPPED: [ShippedExperiment; 6] = [
+static SHIPPED: [ShippedExperiment; 7] = [
     ShippedExperiment {
         name: "paper-table",
         summary: "the paper's Table I: MIT* vs EIT* on FG, RR (10 layouts), DW and GE, the paper's budgets, 100 runs",
@@ -65,6 +65,14 @@ static SHIPPED: [ShippedExperiment; 6] = [
         summary: "the paper's planner comparison: MIT*, EIT*, AIT*, BIT*, ABIT*, Informed RRT*, RRT-Connect on FG, DW, GE (R^4, R^8) and GE R^2, the paper's budgets, 100 runs (about 20 minutes on 2 cores)",
         text: include_str!("../../experiments/paper-planners.toml"),
         data: None,
+    },
+    ShippedExperiment {
+        name: "panda-pose-goals",
+        summary: "the Franka Panda in MotionBenchMaker's seven scenes × 20 problems with the goal given as the hand's pose (inverse kinematics while planning): RRT-Connect, AORRTC and MIT*, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 4 minutes on 2 cores)",
+        text: include_str!("../../experiments/panda-pose-goals.toml"),
+        data: Some(
+            "MotionBenchMaker scene folders in target/: `mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`",
+        ),
     },
 ];
 

@@ -192,12 +192,15 @@ impl RunJob {
             Ok(deadline) => deadline,
             Err(e) => return Some((self.failed(instance, planner, started, &e), None)),
         };
-        let parameters = planner.parameters_for_seed(self.seed);
-        match instance
-            .problem
-            .build_planner(planner.configuration(), &parameters)
-        {
-            Ok(built) => self.solve_built(instance, planner, built, (started, deadline), interrupt),
+        match instance.build_planner(planner, self.seed) {
+            Ok((built, None)) => {
+                self.solve_built(instance, planner, built, (started, deadline), interrupt)
+            }
+            Ok((built, Some(source))) => {
+                let validate = |path: &[Vec<f64>], cost: f64| source.validate(path, cost);
+                let times = (started, deadline);
+                self.solve_built_validating(instance, planner, built, times, interrupt, &validate)
+            }
             Err(e) => Some((self.failed(instance, planner, started, &e), None)),
         }
     }
@@ -347,6 +350,7 @@ mod tests {
             resolution: Some(resolution),
             allow_coarse_step: false,
             cloud: None,
+            pose_goal: None,
         }
         .instances()
         .unwrap()
