@@ -118,6 +118,7 @@ class Problem:
         position_tolerance: Optional[Union[float, Sequence[float]]] = None,
         orientation_tolerance: Optional[str] = None,
         ik_goals: int = 8,
+        ik_initial_goals: int = 1,
     ) -> "Problem":
         """The same arm problem with a pose of ``link`` as its goal (inverse kinematics draws goal configurations while planning)."""
 

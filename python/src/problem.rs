@@ -245,7 +245,8 @@ impl PyProblem {
 
     /// The same arm problem with a pose of `link` as its goal: planners built for it draw
     /// goal configurations by inverse kinematics while planning (collision-free, distinct; at
-    /// most `ik_goals`), and a path ends at one of them.
+    /// most `ik_goals`, `ik_initial_goals` of them before planning starts), and a path ends
+    /// at one of them.
     ///
     /// `pose` is `"goal"` (the pose the goal configuration gives the link) or 7 numbers
     /// x, y, z, qx, qy, qz, qw (metres, a quaternion, normalised) in the robot's root frame;
@@ -254,7 +255,7 @@ impl PyProblem {
     /// `orientation_tolerance`, `"exact"` (default), `"free"`, `"cone:AXIS:ANGLE"` or
     /// `"axis:AXIS"` (AXIS `x`, `y`, `z` or `a;b;c`), as `mit-star plan --goal-pose` takes
     /// them. Raises `ValueError` for a box world, an unknown link or a malformed value.
-    #[pyo3(signature = (link, pose="goal", *, tool=None, position_tolerance=None, orientation_tolerance=None, ik_goals=8))]
+    #[pyo3(signature = (link, pose="goal", *, tool=None, position_tolerance=None, orientation_tolerance=None, ik_goals=8, ik_initial_goals=1))]
     fn with_goal_pose(
         &self,
         link: String,
@@ -263,6 +264,7 @@ impl PyProblem {
         position_tolerance: Option<&Bound<'_, PyAny>>,
         orientation_tolerance: Option<String>,
         ik_goals: usize,
+        ik_initial_goals: usize,
     ) -> BindingResult<Self> {
         let Some(arm) = self.problem.as_arm() else {
             return Err(BindingError::Value(
@@ -287,6 +289,7 @@ impl PyProblem {
             position_tolerance,
             orientation_tolerance,
             ik_goals,
+            ik_initial_goals,
         };
         // Refused now rather than at the first solve: an unknown link, a bad quaternion.
         spec.source(arm, 0)?;

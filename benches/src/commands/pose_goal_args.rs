@@ -44,6 +44,10 @@ pub struct PoseGoalArgs {
     /// The most goal configurations inverse kinematics supplies while planning.
     #[arg(long, default_value_t = 8, requires = "goal_pose")]
     pub ik_goals: usize,
+    /// The goal configurations drawn before planning starts (more gives the planner a choice
+    /// of goals from the start, at the price of a later first solution).
+    #[arg(long, default_value_t = 1, requires = "goal_pose")]
+    pub ik_initial_goals: usize,
 }
 
 impl PoseGoalArgs {
@@ -57,6 +61,7 @@ impl PoseGoalArgs {
             position_tolerance: self.position_tolerance.clone(),
             orientation_tolerance: self.orientation_tolerance.clone(),
             ik_goals: self.ik_goals,
+            ik_initial_goals: self.ik_initial_goals,
         })
     }
 }

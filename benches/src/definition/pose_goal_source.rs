@@ -21,6 +21,7 @@ const FAILED_DRAWS: usize = 4;
 /// joinable by certified motion, each new.
 #[derive(Debug, Clone)]
 pub struct PoseGoalSource {
+    initial_goals: usize,
     max_goals: usize,
     goal: PoseGoal,
     original: PoseGoal,
@@ -32,10 +33,15 @@ pub struct PoseGoalSource {
 }
 
 impl PoseGoalSource {
-    /// The region of `goal`'s solutions valid and joinable in `arm`, at most `max_goals` of
-    /// them drawn by a planner.
-    pub fn new(goal: PoseGoal, arm: Arc<ArmProblem>, max_goals: usize) -> Self {
+    /// The region of `goal`'s solutions valid and joinable in `arm`; a planner draws
+    /// `initial_goals` of them before it starts, and at most `max_goals`.
+    pub fn new(
+        goal: PoseGoal,
+        arm: Arc<ArmProblem>,
+        (initial_goals, max_goals): (usize, usize),
+    ) -> Self {
         Self {
+            initial_goals: initial_goals.max(1),
             max_goals: max_goals.max(1),
             original: goal.clone(),
             goal,
@@ -49,6 +55,11 @@ impl PoseGoalSource {
     /// The most goals a planner should draw (`--ik-goals`).
     pub fn max_goals(&self) -> usize {
         self.max_goals
+    }
+
+    /// The goals a planner should draw before it starts (`--ik-initial-goals`).
+    pub fn initial_goals(&self) -> usize {
+        self.initial_goals
     }
 
     /// The goals given so far, shared: read them after planning.
@@ -170,6 +181,10 @@ pub fn pose_goal_planner(
             })?;
         mit_star::build_planner(configuration, &problem, &parameters)
     };
-    let maximum = source.max_goals();
-    Box::new(LazyGoals::new(build, source).with_max_goals(maximum))
+    let (initial, maximum) = (source.initial_goals(), source.max_goals());
+    Box::new(
+        LazyGoals::new(build, source)
+            .with_max_goals(maximum)
+            .with_initial_goals(initial),
+    )
 }

@@ -21,6 +21,7 @@ use crate::error::HarnessError;
 /// position_tolerance = "0.005"     # optional: a ball radius, or "x,y,z" box half-extents
 /// orientation_tolerance = "cone:z:0.1"  # optional: exact, free, cone:AXIS:ANGLE, axis:AXIS
 /// ik_goals = 8                     # optional: the most goal configurations drawn
+/// ik_initial_goals = 1             # optional: those drawn before planning starts
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -41,11 +42,19 @@ pub struct PoseGoalSpec {
     /// The most goal configurations inverse kinematics supplies while planning.
     #[serde(default = "default_ik_goals")]
     pub ik_goals: usize,
+    /// The goal configurations drawn before planning starts (at most `ik_goals`).
+    #[serde(default = "default_ik_initial_goals")]
+    pub ik_initial_goals: usize,
 }
 
 /// Eight goal configurations: enough for a redundant arm's several postures.
 pub(crate) fn default_ik_goals() -> usize {
     8
+}
+
+/// One goal configuration before planning: the planner starts as soon as one is known.
+pub(crate) fn default_ik_initial_goals() -> usize {
+    1
 }
 
 impl PoseGoalSpec {
@@ -70,6 +79,12 @@ impl PoseGoalSpec {
             return Err(HarnessError::Usage(
                 "ik_goals (--ik-goals) must be at least 1".into(),
             ));
+        }
+        if self.ik_initial_goals == 0 || self.ik_initial_goals > self.ik_goals {
+            return Err(HarnessError::Usage(format!(
+                "ik_initial_goals (--ik-initial-goals) must be between 1 and ik_goals ({}); it is {}",
+                self.ik_goals, self.ik_initial_goals
+            )));
         }
         Ok(())
     }
@@ -99,7 +114,11 @@ impl PoseGoalSpec {
             target = target.with_orientation_tolerance(parse_orientation_tolerance(text)?)?;
         }
         let goal = PoseGoal::new(solver, target).with_start(arm.start())?;
-        Ok(PoseGoalSource::new(goal, Arc::clone(arm), self.ik_goals))
+        Ok(PoseGoalSource::new(
+            goal,
+            Arc::clone(arm),
+            (self.ik_initial_goals, self.ik_goals),
+        ))
     }
 }
 
