@@ -7,6 +7,16 @@
 //!     [--restarts R] [--iterations I] [--damping D] [--max-step S]
 //! ```
 //!
+//! The held-out arm of the measurements is the KUKA LBR iiwa 7 of pybullet's data, not shipped
+//! here; its meshes covered with spheres by our own tool:
+//!
+//! ```text
+//! pip download pybullet --no-deps -d dl && cd dl && unzip -q pybullet-*.whl 'pybullet_data/kuka_iiwa/*'
+//! mit-star spherise --max-spheres 300 -o pybullet_data/kuka_iiwa/iiwa_spherized.urdf \
+//!     pybullet_data/kuka_iiwa/model.urdf
+//! ... --held-out dl/pybullet_data/kuka_iiwa/iiwa_spherized.urdf lbr_iiwa_link_7
+//! ```
+//!
 //! Per robot: `N` targets, each the pose of the solver's frame at a random configuration the
 //! checker (empty scene: self-collision and limits) accepts; IK from another random
 //! configuration with the default settings, the same checker (none with `--unchecked`), a
