@@ -4,7 +4,17 @@
 //! ```text
 //! cargo run --release -p robot --example ik_bench -- [--n 10000] [--seed 1] \
 //!     [--only panda] [--held-out URDF LINK] [--unchecked] [--out ik.json] \
-//!     [--restarts R] [--iterations I] [--damping D] [--max-step S]
+//!     [--restarts R] [--iterations I] [--damping D] [--max-step S] [--grasp]
+//! ```
+//!
+//! The held-out arm of the measurements is the KUKA LBR iiwa 7 of pybullet's data, not shipped
+//! here; its meshes covered with spheres by our own tool:
+//!
+//! ```text
+//! pip download pybullet --no-deps -d dl && cd dl && unzip -q pybullet-*.whl 'pybullet_data/kuka_iiwa/*'
+//! mit-star spherise --max-spheres 300 -o pybullet_data/kuka_iiwa/iiwa_spherized.urdf \
+//!     pybullet_data/kuka_iiwa/model.urdf
+//! ... --held-out dl/pybullet_data/kuka_iiwa/iiwa_spherized.urdf lbr_iiwa_link_7
 //! ```
 //!
 //! Per robot: `N` targets, each the pose of the solver's frame at a random configuration the
@@ -15,14 +25,19 @@
 //! solves), mean attempts, and the largest position and orientation error of the returned
 //! solutions, recomputed by the full `f64` forward kinematics (`Kinematics::link_poses_f64`,
 //! not the solver's chain walk); solutions outside the limits or refused by the checker are
-//! counted. `--out` writes the sampled configurations, the targets and the solutions as JSON for
+//! counted. `--grasp` makes each target a grasp: a ball of 5 mm about the position and a cone
+//! of 0.1 rad about the frame's z axis (the errors are then measured to these sets, and the
+//! JSON's targets are the centres). `--out` writes the sampled configurations, the targets and the solutions as JSON for
 //! `benches/peers/pinocchio/check_ik.py`, which recomputes the errors with Pinocchio.
 
 use std::fmt::Write as _;
 use std::time::{Duration, Instant};
 
 use glam::DAffine3;
-use robot::{ArmChecker, IkSolver, Kinematics, PoseTarget, RobotModel, Scene, ShippedRobot};
+use robot::{
+    ArmChecker, IkSolver, Kinematics, OrientationTolerance, PoseTarget, PositionTolerance,
+    RobotModel, Scene, ShippedRobot,
+};
 use spaces::rand::SeedableRng;
 use spaces::{Deadline, SeededRng, StateSpace};
 use validity::StateValidity;
@@ -70,6 +85,7 @@ fn main() {
         iterations: number("--iterations").map_or(IkSolver::ITERATIONS, |v| v as usize),
         damping: number("--damping").unwrap_or(IkSolver::DAMPING),
         max_step: number("--max-step").unwrap_or(IkSolver::MAX_STEP),
+        grasp: args.iter().any(|a| a == "--grasp"),
     };
     let mut arms = vec![
         shipped("panda", None, "panda_hand"),
@@ -122,6 +138,8 @@ struct Settings {
     iterations: usize,
     damping: f64,
     max_step: f64,
+    /// Grasp-like targets: a 5 mm ball and a 0.1 rad cone about the frame's z axis.
+    grasp: bool,
 }
 
 impl Settings {
@@ -183,7 +201,18 @@ fn run(
         }
         space.sample_uniform(&mut rng, &mut start);
         let pose = solver.frame_pose(&q).expect("a configuration");
-        let target = PoseTarget::from_pose(&pose).expect("a pose");
+        let mut target = PoseTarget::from_pose(&pose).expect("a pose");
+        if settings.grasp {
+            target = target
+                .with_position_tolerance(PositionTolerance::Ball { radius: 0.005 })
+                .and_then(|t| {
+                    t.with_orientation_tolerance(OrientationTolerance::Cone {
+                        axis: glam::DVec3::Z,
+                        half_angle: 0.1,
+                    })
+                })
+                .expect("valid tolerances");
+        }
         let deadline = Deadline::after(Duration::from_secs(1));
         let began = Instant::now();
         let validity: &dyn StateValidity = if unchecked {

@@ -329,3 +329,52 @@ fn bad_inputs_are_refused_by_name() {
     assert!(matches!(goal.last_failure(), Some(IkError::Stopped { .. })));
     assert!(goal.solutions().is_empty());
 }
+
+/// A planar arm of three continuous joints (no limits: coordinates wrap into `[-π, π]`):
+/// positions in the plane, orientation free, solved back from starts a half-turn away.
+#[test]
+fn continuous_joints_wrap() {
+    let sphere = r#"<collision><geometry><sphere radius="0.01"/></geometry></collision>"#;
+    let joint = |i: usize, x: f64| {
+        format!(
+            r#"<joint name="j{i}" type="continuous"><parent link="l{i}"/><child link="l{}"/><origin xyz="{x} 0 0"/><axis xyz="0 0 1"/></joint>"#,
+            i + 1
+        )
+    };
+    let urdf = format!(
+        r#"<robot name="planar">{}{}{}{}</robot>"#,
+        (0..4)
+            .map(|i| format!(r#"<link name="l{i}">{sphere}</link>"#))
+            .collect::<String>(),
+        joint(0, 0.0),
+        joint(1, 0.5),
+        joint(2, 0.4),
+    );
+    let model = RobotModel::from_urdf_str(&urdf).unwrap();
+    let fk_tool = DAffine3::from_translation(DVec3::new(0.3, 0.0, 0.0));
+    let mut solver = IkSolver::new(&model, "l3")
+        .unwrap()
+        .tool(fk_tool)
+        .unwrap()
+        .seed(4);
+    for (q, start) in [
+        ([3.0, 0.4, -2.5], [-3.0, 0.4, 2.5]),
+        ([-3.1, -1.0, 2.0], [3.1, 1.0, -2.0]),
+    ] {
+        let pose = solver.frame_pose(&q).unwrap();
+        let target = PoseTarget::new(pose.translation, DQuat::IDENTITY)
+            .unwrap()
+            .with_orientation_tolerance(OrientationTolerance::Free)
+            .unwrap();
+        let s = solver
+            .solve(&target, &start, &validity::AllValid, &spaces::Never)
+            .unwrap()
+            .configuration;
+        assert!(s.iter().all(|x| x.abs() <= PI), "{s:?}");
+        let reached = solver.frame_pose(&s).unwrap().translation;
+        assert!(
+            (reached - pose.translation).length() <= 1e-5,
+            "{reached} {pose:?}"
+        );
+    }
+}

@@ -67,6 +67,13 @@ impl IkSolver {
         let (mut best, mut best_cost) = ((f64::INFINITY, f64::INFINITY), f64::INFINITY);
         let (mut iterations, mut rejected) = (0, 0);
         for attempt in 0..=self.restarts {
+            if stop.should_stop() {
+                return Err(IkError::Stopped {
+                    attempts: attempt,
+                    position_error: best.0,
+                    orientation_error: best.1,
+                });
+            }
             if attempt == 0 {
                 let coordinates = self.scratch.q.iter_mut().zip(&self.limits).zip(start);
                 for ((q, &limits), &value) in coordinates {

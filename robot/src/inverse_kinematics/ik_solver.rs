@@ -75,7 +75,7 @@ impl IkSolver {
     pub const RESTARTS: usize = 50;
     /// Default [`iterations`](Self::iterations) per attempt.
     pub const ITERATIONS: usize = 30;
-    /// Default [`damping`](Self::damping) (the smallest λ).
+    /// Default [`damping`](Self::damping) (each descent's first λ).
     pub const DAMPING: f64 = 1e-3;
     /// Default [`max_step`](Self::max_step), radians (or metres) per coordinate.
     pub const MAX_STEP: f64 = 1.0;
@@ -173,8 +173,11 @@ impl IkSolver {
         Ok(self)
     }
 
-    /// The smallest damping λ (metres or radians); the solver raises it when a step fails to
-    /// reduce the error and lowers it back towards this value when steps succeed.
+    /// The damping λ (metres or radians) each descent starts with: a step that fails to
+    /// reduce the error is retried with λ raised √10-fold; a step that succeeds lowers it
+    /// √10-fold, down to a thousandth of this value (near a solution the steps become
+    /// Gauss–Newton's, which converge fast even close to a singular configuration). A descent
+    /// whose λ exceeds 10 is abandoned.
     ///
     /// # Errors
     /// [`IkError::BadSetting`] unless finite and in `(0, 1]`.

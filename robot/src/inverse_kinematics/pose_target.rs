@@ -74,16 +74,27 @@ impl PoseTarget {
         })
     }
 
-    /// The exact pose `pose` (its rotation part must be a rotation).
+    /// The exact pose `pose`.
     ///
     /// # Errors
-    /// As [`new`](Self::new), for the position and the quaternion of the rotation part.
+    /// As [`new`](Self::new), for the position and the quaternion of the rotation part;
+    /// [`IkError::BadQuaternion`] also for a rotation part that is not orthonormal with
+    /// determinant 1 (within 1e-6): a scaled or sheared transform is not a pose.
     pub fn from_pose(pose: &DAffine3) -> Result<Self, IkError> {
-        let quaternion = if pose.matrix3.is_finite() {
-            DQuat::from_mat3(&pose.matrix3)
-        } else {
-            DQuat::from_xyzw(f64::NAN, f64::NAN, f64::NAN, f64::NAN)
-        };
+        let m = pose.matrix3;
+        if !m.is_finite() {
+            let nan = DQuat::from_xyzw(f64::NAN, f64::NAN, f64::NAN, f64::NAN);
+            return Self::new(pose.translation, nan);
+        }
+        let quaternion = DQuat::from_mat3(&m);
+        let rigid = (m.transpose() * m).abs_diff_eq(DMat3::IDENTITY, 1e-6)
+            && (m.determinant() - 1.0).abs() <= 1e-6;
+        if !rigid {
+            return Err(IkError::BadQuaternion {
+                quaternion: quaternion.to_array(),
+                why: "the pose's rotation part is not a rotation",
+            });
+        }
         Self::new(pose.translation, quaternion)
     }
 
@@ -196,5 +207,8 @@ mod tests {
         assert!(PoseTarget::from_pose(&far).is_ok());
         let bad = DAffine3::from_translation(DVec3::new(f64::INFINITY, 0.0, 0.0));
         assert!(PoseTarget::from_pose(&bad).is_err());
+        let scaled = DAffine3::from_scale(DVec3::new(1.0, 2.0, 1.0));
+        let e = PoseTarget::from_pose(&scaled).unwrap_err();
+        assert!(e.to_string().contains("not a rotation"), "{e}");
     }
 }
