@@ -112,7 +112,7 @@ class Problem:
     def with_goal_pose(
         self,
         link: str,
-        pose: Union[str, ArrayLike] = "goal",
+        pose: Optional[Union[str, ArrayLike]] = None,
         *,
         tool: Optional[Sequence[float]] = None,
         position_tolerance: Optional[Union[float, Sequence[float]]] = None,

@@ -248,18 +248,18 @@ impl PyProblem {
     /// most `ik_goals`, `ik_initial_goals` of them before planning starts), and a path ends
     /// at one of them.
     ///
-    /// `pose` is `"goal"` (the pose the goal configuration gives the link) or 7 numbers
+    /// `pose` is `"goal"` (the default: the pose the goal configuration gives the link) or 7 numbers
     /// x, y, z, qx, qy, qz, qw (metres, a quaternion, normalised) in the robot's root frame;
     /// `tool`, 3 or 7 numbers, a frame fixed to the link whose pose is meant instead;
     /// `position_tolerance`, a ball radius or 3 box half-extents (metres; exact by default);
     /// `orientation_tolerance`, `"exact"` (default), `"free"`, `"cone:AXIS:ANGLE"` or
     /// `"axis:AXIS"` (AXIS `x`, `y`, `z` or `a;b;c`), as `mit-star plan --goal-pose` takes
     /// them. Raises `ValueError` for a box world, an unknown link or a malformed value.
-    #[pyo3(signature = (link, pose="goal", *, tool=None, position_tolerance=None, orientation_tolerance=None, ik_goals=8, ik_initial_goals=1))]
+    #[pyo3(signature = (link, pose=None, *, tool=None, position_tolerance=None, orientation_tolerance=None, ik_goals=8, ik_initial_goals=1))]
     fn with_goal_pose(
         &self,
         link: String,
-        pose: &Bound<'_, PyAny>,
+        pose: Option<&Bound<'_, PyAny>>,
         tool: Option<Vec<f64>>,
         position_tolerance: Option<&Bound<'_, PyAny>>,
         orientation_tolerance: Option<String>,
@@ -271,9 +271,12 @@ impl PyProblem {
                 "a pose goal is a goal of arm problems; this is a box world".into(),
             ));
         };
-        let pose = match pose.extract::<String>() {
-            Ok(text) => text,
-            Err(_) => joined(&numbers_of("pose", pose)?),
+        let pose = match pose {
+            None => "goal".to_owned(),
+            Some(value) => match value.extract::<String>() {
+                Ok(text) => text,
+                Err(_) => joined(&numbers_of("pose", value)?),
+            },
         };
         let position_tolerance = match position_tolerance {
             None => None,
