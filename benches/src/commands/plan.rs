@@ -170,6 +170,12 @@ impl PlanArgs {
         if picture && let Some(arm) = &arm {
             let svg = self.output.join(format!("{stem}.svg"));
             let png = self.output.join(format!("{stem}.png"));
+            // Towards a pose, the goal drawn is the configuration the path reached.
+            let reached = pose
+                .as_ref()
+                .and(drawn.last())
+                .and_then(|last| (**arm).clone().with_goals(vec![last.clone()]).ok());
+            let arm = reached.as_ref().unwrap_or(&**arm);
             ArmPicture::new(arm, drawn, title.clone()).save(&svg, &png)?;
             files.extend([svg, png]);
         }
