@@ -20,3 +20,4 @@ mod shards;
 mod single_writer;
 mod spherise_limits;
 mod test_layout;
+mod trajectories;

@@ -66,6 +66,9 @@ pub struct PlanArgs {
         allow_negative_numbers = true
     )]
     pub simplify_time: f64,
+    /// Timing the path: `--trajectory FILE` and its options.
+    #[command(flatten)]
+    pub timing: crate::commands::TrajectoryArgs,
 }
 
 impl PlanArgs {
@@ -99,6 +102,7 @@ impl PlanArgs {
         }
         let instance = self.problem.build(self.time)?;
         let arm = instance.problem.as_arm().cloned();
+        let limits = self.timing.prepare(arm.as_deref())?;
         let picture = (instance.dimension == 2 || arm.is_some()) && !self.no_picture;
         if picture {
             crate::writable_folder(&self.output)?;
@@ -136,6 +140,12 @@ impl PlanArgs {
         let smoothing = spec.parameters_for_seed(self.seed).simplify_smoothing;
         let simplified = self.simplified(&instance, &record, smoothing)?;
         let drawn = simplified.as_ref().map_or(&record.path, |(s, _)| &s.path);
+        let timed = match (&arm, &limits) {
+            (Some(arm), Some(limits)) if drawn.len() >= 2 => {
+                self.timing.write(arm, limits, drawn)?
+            }
+            _ => None,
+        };
         let mut files = Vec::new();
         let stem = format!(
             "{}-{}-seed{}",
@@ -179,6 +189,9 @@ impl PlanArgs {
                 o.insert("optimum".into(), instance.problem.optimum().into());
                 let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
                 o.insert("files".into(), names.into());
+                if let Some(t) = &timed {
+                    o.insert("trajectory".into(), t.json());
+                }
                 if let Some((s, validation)) = &simplified {
                     o.insert(
                         "simplified".into(),
@@ -202,6 +215,9 @@ impl PlanArgs {
             print_record(&record, &instance, &files);
             if let Some((s, validation)) = &simplified {
                 print_simplified(s, validation);
+            }
+            if let Some(t) = &timed {
+                say!("{}", t.line());
             }
         }
         if simplified.as_ref().is_some_and(|(_, v)| !v.valid) {
