@@ -76,7 +76,7 @@ fn polyline() -> impl Strategy<Value = Vec<Vec<f64>>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig::with_cases(256))]
 
     #[test]
     fn stopping_keeps_the_limits_and_every_waypoint(
@@ -256,7 +256,7 @@ fn bad_inputs_are_refused_by_name() {
     let limits = panda_limits(1.0, 1.0);
     let home = vec![0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
     assert_eq!(
-        Trajectory::stop_at_corners(&[home.clone()], &limits),
+        Trajectory::stop_at_corners(std::slice::from_ref(&home), &limits),
         Err(TrajectoryError::TooShort { points: 1 })
     );
     assert_eq!(
@@ -266,7 +266,7 @@ fn bad_inputs_are_refused_by_name() {
     let mut nan = home.clone();
     nan[3] = f64::NAN;
     assert!(matches!(
-        Trajectory::stop_at_corners(&[home.clone(), nan], &limits),
+        Trajectory::stop_at_corners(&[home, nan], &limits),
         Err(TrajectoryError::NotFinite { index: 1, joint, .. }) if joint == "panda_joint4"
     ));
     for scale in [0.0, -0.5, 1.01, f64::NAN] {
@@ -347,7 +347,7 @@ fn the_check_catches_tampering() {
             ..
         }
     )));
-    let mut jump = file.clone();
+    let mut jump = file;
     jump.samples[20].position[6] += 0.05;
     let found = check(&jump).unwrap();
     assert!(found.violations.iter().any(|v| matches!(
