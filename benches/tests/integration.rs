@@ -21,3 +21,4 @@ mod shards;
 mod single_writer;
 mod spherise_limits;
 mod test_layout;
+mod trajectories;

@@ -37,3 +37,4 @@ mod simplified_arm_paths;
 mod sparse_spacing_on_arms;
 mod sphere_cover;
 mod sphere_less_links;
+mod trajectory;

@@ -103,9 +103,9 @@ def ours_violation(record, ours_file):
 
 def table(folder):
     print("| scene | paths | median duration ours (s) | median TOPP-RA (s) | median ratio | max ratio | paths > 1.05x "
-          "| median compute ours (ms) | median TOPP-RA (ms) | median compute ratio | max violation ours | max violation TOPP-RA "
+          "| median ratio, TOPP-RA collision-free | median compute ours (ms) | median TOPP-RA (ms) | median compute ratio | max violation ours | max violation TOPP-RA "
           "| collisions ours | TOPP-RA colliding | TOPP-RA outside position limits |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     totals = []
     for scene in sorted(p for p in folder.iterdir() if p.is_dir()):
         rows = []
@@ -139,9 +139,11 @@ def line(name, rows):
     col = lambda k: np.array([r[k] for r in rows], dtype=float)
     ratio = col("ours") / col("toppra")
     compute = col("ours_ms") / col("toppra_ms")
+    free = np.array([r["ours"] / r["toppra"] for r in rows if r["toppra_collides"] is False])
+    free_text = f"{np.median(free):.3f} ({len(free)})" if len(free) else "n/a"
     count = lambda k: "n/a" if any(r[k] is None for r in rows) else str(sum(bool(r[k]) for r in rows))
     return (f"| {name} | {len(rows)} | {np.median(col('ours')):.3f} | {np.median(col('toppra')):.3f} | {np.median(ratio):.3f} "
-            f"| {ratio.max():.3f} | {int((ratio > 1.05).sum())} | {np.median(col('ours_ms')):.3f} | {np.median(col('toppra_ms')):.2f} "
+            f"| {ratio.max():.3f} | {int((ratio > 1.05).sum())} | {free_text} | {np.median(col('ours_ms')):.3f} | {np.median(col('toppra_ms')):.2f} "
             f"| {np.median(compute):.3f} | {col('ours_violation').max():.1e} | {col('toppra_violation').max():.1e} "
             f"| {sum(r['ours_collides'] for r in rows)} | {count('toppra_collides')} | {count('toppra_outside')} |")
 

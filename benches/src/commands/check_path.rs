@@ -23,14 +23,22 @@ pub struct CheckPathArgs {
     /// it); states are put into the robot's order by name, and names that are not the robot's
     /// joints, each once, are refused. The JSON `plan --json` and `runs.jsonl` write (one
     /// object per line, its `path` and `joints`) is read too.
-    #[arg(long)]
-    pub path: PathBuf,
+    #[arg(long, required_unless_present = "trajectory")]
+    pub path: Option<PathBuf>,
     /// How far the path's ends may lie from the start and a goal, per coordinate (paths from
     /// planners that compute in `f32` differ in the last digits); ends that close are moved
     /// onto the start and the goal before the checks. At most 1e-3 (`MAX_TOLERANCE`): a
     /// path whose ends lie farther from the query does not join it.
     #[arg(long, default_value_t = 1e-5, allow_negative_numbers = true)]
     pub tolerance: f64,
+    /// Instead of a path, a trajectory file (`plan --trajectory`'s JSON or CSV): checked for
+    /// the joint position, velocity and acceleration limits (relative 1e-9), continuity,
+    /// increasing times, rest at both ends, and collisions between consecutive samples.
+    #[arg(long, value_name = "FILE", conflicts_with = "path")]
+    pub trajectory: Option<PathBuf>,
+    /// The limits a `--trajectory` is checked against.
+    #[command(flatten)]
+    pub limits: crate::commands::LimitArgs,
 }
 
 /// The largest `--tolerance` accepted: 1e-3 per coordinate, a hundred times the `f32`
@@ -60,17 +68,24 @@ impl CheckPathArgs {
             )));
         }
         let instance = self.problem.build(1.0)?;
-        let text =
-            problems::read_bounded(&self.path, PATH_FILE_LIMIT, "path file").map_err(|source| {
-                HarnessError::InputFile {
-                    what: "path file",
-                    path: self.path.clone(),
-                    source,
-                }
-            })?;
+        if let Some(file) = &self.trajectory {
+            let arm = instance.problem.as_arm().map(|a| &**a);
+            return crate::commands::trajectory_args::check_trajectory_file(
+                arm,
+                file,
+                &self.limits,
+            );
+        }
+        let text = problems::read_bounded(self.path(), PATH_FILE_LIMIT, "path file").map_err(
+            |source| HarnessError::InputFile {
+                what: "path file",
+                path: self.path().to_path_buf(),
+                source,
+            },
+        )?;
         let dimension = instance.problem.dimension();
         let in_file = |message: String| {
-            HarnessError::Usage(format!("path file `{}`: {message}", self.path.display()))
+            HarnessError::Usage(format!("path file `{}`: {message}", self.path().display()))
         };
         let NamedPaths { mut paths, joints } = match json_paths(&text) {
             Some(read) => {
@@ -88,10 +103,10 @@ impl CheckPathArgs {
         if paths.is_empty() {
             return Err(HarnessError::Usage(format!(
                 "path file `{}`: no path in the file",
-                self.path.display()
+                self.path().display()
             )));
         }
-        say!("{} on {}", self.path.display(), instance.title());
+        say!("{} on {}", self.path().display(), instance.title());
         if let Some(note) = reordered {
             say!("  {note}");
         }
@@ -104,7 +119,7 @@ impl CheckPathArgs {
                 .map_err(|source| {
                     HarnessError::Usage(format!(
                         "path file `{}`, path {}: {source}",
-                        self.path.display(),
+                        self.path().display(),
                         i + 1
                     ))
                 })?;
@@ -152,6 +167,11 @@ impl CheckPathArgs {
 }
 
 impl CheckPathArgs {
+    /// The `--path` file (clap requires it without `--trajectory`).
+    fn path(&self) -> &std::path::Path {
+        self.path.as_deref().unwrap_or(std::path::Path::new(""))
+    }
+
     /// Puts `paths` into the robot's coordinate order by the file's joint names `joints`;
     /// the note to print if it reordered them.
     ///
@@ -170,12 +190,12 @@ impl CheckPathArgs {
         let Some((robot, _)) = instance.problem.joints() else {
             return Err(HarnessError::Usage(format!(
                 "{}: the file names joints, but {} is a box world (coordinates without names)",
-                self.path.display(),
+                self.path().display(),
                 instance.title()
             )));
         };
         let order = robot_order(file, &robot).map_err(|mismatch| HarnessError::PathJoints {
-            path: self.path.clone(),
+            path: self.path().to_path_buf(),
             mismatch: mismatch.to_string(),
             robot: robot.join(", "),
         })?;

@@ -24,6 +24,7 @@ mod pose_goal_args;
 mod problem_args;
 mod replan;
 mod spherise;
+mod trajectory_args;
 
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -42,6 +43,7 @@ pub use plan::PlanArgs;
 pub use problem_args::ProblemArgs;
 pub use replan::ReplanArgs;
 pub use spherise::SpheriseArgs;
+pub use trajectory_args::{Corners, LimitArgs, Timed, TrajectoryArgs};
 
 use crate::error::HarnessError;
 

@@ -71,6 +71,9 @@ pub struct PlanArgs {
         allow_negative_numbers = true
     )]
     pub simplify_time: f64,
+    /// Timing the path: `--trajectory FILE` and its options.
+    #[command(flatten)]
+    pub timing: crate::commands::TrajectoryArgs,
 }
 
 impl PlanArgs {
@@ -108,6 +111,7 @@ impl PlanArgs {
         if let Some(spec) = &instance.pose_goal {
             spec.check()?;
         }
+        let limits = self.timing.prepare(arm.as_deref())?;
         let picture = (instance.dimension == 2 || arm.is_some()) && !self.no_picture;
         if picture {
             crate::writable_folder(&self.output)?;
@@ -146,8 +150,14 @@ impl PlanArgs {
             report_pose_goal(source, &record);
         }
         let smoothing = spec.parameters_for_seed(self.seed).simplify_smoothing;
-        let simplified = self.simplified(&instance, &record, smoothing)?;
+        let simplified = self.simplified(&instance, &record, smoothing, pose.as_ref())?;
         let drawn = simplified.as_ref().map_or(&record.path, |(s, _)| &s.path);
+        let timed = match (&arm, &limits) {
+            (Some(arm), Some(limits)) if drawn.len() >= 2 => {
+                self.timing.write(arm, limits, drawn)?
+            }
+            _ => None,
+        };
         let mut files = Vec::new();
         let stem = format!(
             "{}-{}-seed{}",
@@ -197,6 +207,9 @@ impl PlanArgs {
                 o.insert("optimum".into(), instance.problem.optimum().into());
                 let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
                 o.insert("files".into(), names.into());
+                if let Some(t) = &timed {
+                    o.insert("trajectory".into(), t.json());
+                }
                 if let Some((s, validation)) = &simplified {
                     o.insert(
                         "simplified".into(),
@@ -221,6 +234,9 @@ impl PlanArgs {
             if let Some((s, validation)) = &simplified {
                 print_simplified(s, validation);
             }
+            if let Some(t) = &timed {
+                say!("{}", t.line());
+            }
         }
         if simplified.as_ref().is_some_and(|(_, v)| !v.valid) {
             return Ok(CommandOutcome::InvalidPaths);
@@ -241,7 +257,8 @@ impl PlanArgs {
 
 impl PlanArgs {
     /// The run's path simplified (`--simplify`; smoothed too if `smoothing`) and its
-    /// independent validation; `None` without the flag or a path.
+    /// independent validation (towards the pose goal `pose` when there is one); `None` without
+    /// the flag or a path.
     ///
     /// # Errors
     /// A problem that refuses its check step (refused before planning in practice).
@@ -250,6 +267,7 @@ impl PlanArgs {
         instance: &ProblemInstance,
         record: &RunRecord,
         smoothing: bool,
+        pose: Option<&PoseGoalSource>,
     ) -> Result<Option<(mit_star::Simplified, crate::path_validation::PathValidation)>, HarnessError>
     {
         if !self.simplify || record.path.len() < 2 {
@@ -262,7 +280,10 @@ impl PlanArgs {
                 planner: "path simplifier".to_owned(),
                 source,
             })?;
-        let validation = instance.problem.validate(&simplified.path, simplified.cost);
+        let validation = match pose {
+            Some(source) => source.validate(&simplified.path, simplified.cost),
+            None => instance.problem.validate(&simplified.path, simplified.cost),
+        };
         Ok(Some((simplified, validation)))
     }
 }

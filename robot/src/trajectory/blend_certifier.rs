@@ -94,7 +94,7 @@ impl BlendCertifier {
                 .max(fastest * duration / 3.0)
                 .ceil()
                 .max(1.0);
-            if !(chords <= Self::MAX_CHORDS as f64) {
+            if chords.is_nan() || chords > Self::MAX_CHORDS as f64 {
                 continue;
             }
             let chords = chords as usize;

@@ -13,33 +13,7 @@
 //!   the robot and scene.
 //! - [`TrajectoryError`] (`trajectory_error.rs`).
 //!
-//! # The guarantee
-//! Let `path` be a polyline whose straight segments are collision-free for an
-//! [`ArmChecker`](crate::ArmChecker) (as our planners certify every edge they return).
-//!
-//! - [`Trajectory::stop_at_corners`]: every configuration of the trajectory is on a segment of
-//!   `path` (so collision-free), it passes through every waypoint at rest, and every
-//!   coordinate's velocity and acceleration stay within the [`MotionLimits`] at every instant
-//!   (velocity is piecewise linear and acceleration piecewise constant, and both are within
-//!   the limits at every knot). Each segment takes the least time any motion starting and
-//!   ending at rest along it, under those limits, can.
-//! - [`Trajectory::blended`]: every configuration is either on a segment of `path` or on a
-//!   blend that [`BlendCertifier`] certified: every sphere of the robot, at every instant of
-//!   the blend, clear of the scene and of the links it is checked against by the checker's
-//!   margin — the same sense in which the planner's edges are certified. The limits hold as
-//!   above; blends are within the convex hull of their corner and its neighbours' points on
-//!   the segments, so within the joint position limits. A blend that cannot be certified is
-//!   shrunk, then replaced by a stop at its corner.
-//!
-//! Both start and end at rest at the path's ends. Continuous (wrapping) joints are taken as the
-//! path gives them, unwrapped: no angle is wrapped by the timing.
-//!
-//! # Jerk
-//! Jerk limits are not offered. A jerk-limited profile (Ruckig's, say) has no constant
-//! acceleration phases, so the exact piecewise-quadratic evaluation and the chord
-//! certification of blends would have to be redone for cubic pieces; a crate such as
-//! `rsruckig` would time single segments but not certify corner blends. A controller
-//! needing bounded jerk can follow this trajectory through its own jerk-limited filter.
+//! The guarantee of each timing, and why there are no jerk limits: [`Trajectory`]'s docs.
 //!
 //! May use: `model` (the URDF's velocity limits, mimic rates, lever arms), `checking` (the
 //! checker), `scenes`, and the `validity`, `spaces`, `serde`, `serde_json` and

@@ -197,10 +197,11 @@ mod tests {
 
     #[test]
     fn a_mimic_follower_bounds_its_leader() {
-        let model = RobotModel::from_urdf_str(&urdf(
-            "velocity=\"2\"",
-            r#"<mimic joint="j1" multiplier="-2"/>"#,
-        ))
+        // Prismatic: a revolute mimic joint turns at ±1 only.
+        let model = RobotModel::from_urdf_str(
+            &urdf("velocity=\"2\"", r#"<mimic joint="j1" multiplier="-2"/>"#)
+                .replace("revolute", "prismatic"),
+        )
         .unwrap();
         let limits = MotionLimits::for_robot(&model, None, Some(4.0)).unwrap();
         assert_eq!(limits.names(), ["j1"]);
@@ -210,14 +211,21 @@ mod tests {
 
     #[test]
     fn names_the_joint_of_a_missing_or_bad_limit() {
-        let model = RobotModel::from_urdf_str(&urdf("", "")).unwrap();
+        let model = RobotModel::from_urdf_str(&urdf("velocity=\"2\"", "").replace(
+            r#"type="revolute"><parent link="b"/><child link="c"/><axis xyz="0 0 1"/>
+<limit lower="-1" upper="1" velocity="3" effort="1"/>"#,
+            r#"type="continuous"><parent link="b"/><child link="c"/><axis xyz="0 0 1"/>"#,
+        ))
+        .unwrap();
         let e = MotionLimits::for_robot(&model, None, Some(1.0)).unwrap_err();
         assert!(
-            matches!(&e, TrajectoryError::MissingLimit { joint, what: "velocity", .. } if joint == "j1"),
+            matches!(&e, TrajectoryError::MissingLimit { joint, what: "velocity", .. } if joint == "j2"),
             "{e}"
         );
         let e = MotionLimits::for_robot(&model, None, None).unwrap_err();
-        assert!(matches!(&e, TrajectoryError::MissingLimit { joint, .. } if joint == "j1"));
+        assert!(
+            matches!(&e, TrajectoryError::MissingLimit { joint, .. } if joint == "j1" || joint == "j2")
+        );
         let model = RobotModel::from_urdf_str(&urdf("velocity=\"-2\"", "")).unwrap();
         let e = MotionLimits::for_robot(&model, None, Some(1.0)).unwrap_err();
         assert!(

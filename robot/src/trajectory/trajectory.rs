@@ -23,7 +23,44 @@ pub struct Sample {
 /// constant acceleration, `q(t) = q_k + v_k τ + a_k τ² / 2` with `τ = t − t_k`; the last
 /// knot's velocity and acceleration are zero. Knot times strictly increase from 0. Built by
 /// [`stop_at_corners`](Self::stop_at_corners) or [`blended`](Self::blended)
-/// (`blend_timing.rs`); see the [module docs](crate::trajectory) for what each guarantees.
+/// (`blend_timing.rs`).
+///
+/// # The guarantee
+/// Let `path` be a polyline whose straight segments are collision-free for an
+/// [`ArmChecker`](crate::ArmChecker) (as our planners certify every edge they return).
+///
+/// - [`Trajectory::stop_at_corners`]: every configuration of the trajectory is on a segment of
+///   `path` (so collision-free), it passes through every waypoint at rest, and every
+///   coordinate's velocity and acceleration stay within the [`MotionLimits`] at every instant
+///   (velocity is piecewise linear and acceleration piecewise constant, and both are within
+///   the limits at every knot). Each segment takes the least time any motion starting and
+///   ending at rest along it, under those limits, can.
+/// - [`Trajectory::blended`]: every configuration is either on a segment of `path` or on a
+///   blend `q(t) = q₀ + v₀ t + a t² / 2`, `t ∈ [0, τ]`, that
+///   [`BlendCertifier`](crate::BlendCertifier) certified: cut into `m` chords of time
+///   `h = τ / m`, each chord certified (every configuration of it, not only grid points) by an
+///   [`ArmChecker`](crate::ArmChecker) of the robot with every sphere grown by `δ`, where
+///   `δ ≥ max_k Σ_j λ_kj |a_j| h² / 8` bounds how far any point of link `k`'s spheres can be
+///   from where it is on the chord ([`LeverArms`](crate::LeverArms) `λ`). So at every
+///   instant of the blend every sphere is clear of the scene and of the link pairs checked
+///   by at least the checker's margin — the sense in which the planner's edges are
+///   certified. The limits hold as above; a blend is in the convex hull of its ends (on the
+///   segments) and its corner, so within the joint position limits. A blend that cannot be
+///   certified is shrunk, then replaced by a stop at its corner.
+///
+/// "Exactly" is up to floating-point rounding: limits are rounded down and durations up by
+/// a relative 10⁻¹², and evaluation rounds (the checks of the comparison with TOPP-RA
+/// measured at most 10⁻¹⁰ relative, in finite differences of 1 ms samples).
+///
+/// Both start and end at rest at the path's ends. Continuous (wrapping) joints are taken as the
+/// path gives them, unwrapped: no angle is wrapped by the timing.
+///
+/// # Jerk
+/// Jerk limits are not offered. A jerk-limited profile (Ruckig's, say) has no constant
+/// acceleration phases, so the exact piecewise-quadratic evaluation and the chord
+/// certification of blends would have to be redone for cubic pieces; a crate such as
+/// `rsruckig` would time single segments but not certify corner blends. A controller
+/// needing bounded jerk can follow this trajectory through its own jerk-limited filter.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trajectory {
     names: Vec<String>,
@@ -111,8 +148,8 @@ impl Trajectory {
         if !(period > 0.0 && period.is_finite() && count < 1e7) {
             return Err(TrajectoryError::BadPeriod { value: period });
         }
-        let mut out: Vec<Sample> = (0..)
-            .map(|i| i as f64 * period)
+        let mut out: Vec<Sample> = (0_u32..)
+            .map(|i| f64::from(i) * period)
             .take_while(|&t| t < self.duration())
             .map(|t| self.evaluate(t))
             .collect();

@@ -140,7 +140,7 @@ pub fn check_trajectory(
         });
     }
     for (i, w) in samples.windows(2).enumerate() {
-        if !(w[1].time > w[0].time) {
+        if w[1].time.is_nan() || w[0].time.is_nan() || w[1].time <= w[0].time {
             return Err(TrajectoryError::TimeNotIncreasing {
                 index: i + 1,
                 previous: w[0].time,

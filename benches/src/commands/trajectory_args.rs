@@ -1,0 +1,249 @@
+//! The trajectory options: `plan --trajectory FILE` times the (simplified) arm path and writes
+//! it; `check-path --trajectory FILE` checks a trajectory file against the problem.
+
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use robot::{
+    ArmChecker, ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, Trajectory,
+    TrajectoryFile, check_trajectory, merge_repeated_waypoints,
+};
+
+use crate::commands::CommandOutcome;
+use crate::error::HarnessError;
+use crate::formats::kpi_table::number;
+
+/// Where the velocity and acceleration limits come from, and their scaling.
+#[derive(Debug, Args, Clone)]
+pub struct LimitArgs {
+    /// A MoveIt `joint_limits.yaml`: its velocity limits replace the URDF's, its acceleration
+    /// limits are used (for joints whose `has_…_limits` is true).
+    #[arg(long, value_name = "YAML")]
+    pub joint_limits: Option<PathBuf>,
+    /// One acceleration limit for every joint (rad/s² or m/s²), replacing the YAML's.
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub max_acceleration: Option<f64>,
+    /// MoveIt's velocity scaling factor, in (0, 1].
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        value_name = "F",
+        allow_negative_numbers = true
+    )]
+    pub velocity_scaling: f64,
+    /// MoveIt's acceleration scaling factor, in (0, 1].
+    #[arg(
+        long,
+        default_value_t = 1.0,
+        value_name = "F",
+        allow_negative_numbers = true
+    )]
+    pub acceleration_scaling: f64,
+}
+
+impl LimitArgs {
+    /// The limits of `arm`'s robot.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] naming the file, the joint or the factor that is wrong.
+    pub fn limits(&self, arm: &ArmProblem) -> Result<MotionLimits, HarnessError> {
+        let usage = |e: robot::TrajectoryError| HarnessError::Usage(e.to_string());
+        let yaml = self
+            .joint_limits
+            .as_deref()
+            .map(JointLimitsYaml::read)
+            .transpose()
+            .map_err(usage)?;
+        MotionLimits::for_robot(arm.robot(), yaml.as_ref(), self.max_acceleration)
+            .and_then(|l| l.scaled(self.velocity_scaling, self.acceleration_scaling))
+            .map_err(usage)
+    }
+}
+
+/// How a timed path passes its corners.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Corners {
+    /// Stop at every waypoint: every configuration on the planned segments.
+    Stop,
+    /// Parabolic blends, each certified collision-free (shrunk or stopped if not).
+    Blend,
+}
+
+/// Options of `plan` that time the path and write it.
+#[derive(Debug, Args, Clone)]
+pub struct TrajectoryArgs {
+    /// Time the path (the simplified one with `--simplify`; repeated states merged) and write
+    /// the trajectory, JSON or CSV by the extension (arm problems only).
+    #[arg(long, value_name = "FILE.{json,csv}")]
+    pub trajectory: Option<PathBuf>,
+    /// Write samples every this many seconds (and at the end) instead of the knots.
+    #[arg(
+        long,
+        value_name = "S",
+        requires = "trajectory",
+        allow_negative_numbers = true
+    )]
+    pub sample_period: Option<f64>,
+    /// How to pass the corners.
+    #[arg(long, value_enum, default_value = "blend", requires = "trajectory")]
+    pub corners: Corners,
+    /// The limits.
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// What `plan --trajectory` did.
+#[derive(Debug, Clone)]
+pub struct Timed {
+    file: PathBuf,
+    duration: f64,
+    knots: usize,
+    samples: usize,
+    report: Option<robot::BlendReport>,
+}
+
+impl Timed {
+    /// One line for the text report.
+    pub fn line(&self) -> String {
+        let corners = self.report.as_ref().map_or_else(String::new, |r| {
+            format!(
+                "; corners: {} blended, {} blended after shrinking, {} stops",
+                r.blended, r.shrunk, r.stopped
+            )
+        });
+        format!(
+            "  trajectory: {} ({} s, {} knots, {} samples written{corners})",
+            self.file.display(),
+            number(self.duration),
+            self.knots,
+            self.samples
+        )
+    }
+
+    /// The JSON object for `--json`.
+    pub fn json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "file": self.file,
+            "duration": self.duration,
+            "knots": self.knots,
+            "samples": self.samples,
+            "corners": self.report.as_ref().map(|r| [r.blended, r.shrunk, r.stopped]),
+        })
+    }
+}
+
+impl TrajectoryArgs {
+    /// Checks the options before planning: `--trajectory` only on an arm problem, a period
+    /// that is positive and finite, a `.json` or `.csv` name, limits that resolve.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] saying which.
+    pub fn prepare(&self, arm: Option<&ArmProblem>) -> Result<Option<MotionLimits>, HarnessError> {
+        let Some(file) = &self.trajectory else {
+            return Ok(None);
+        };
+        let Some(arm) = arm else {
+            return Err(HarnessError::Usage(
+                "--trajectory is for arm problems (a robot's joints with velocity and acceleration limits)".into(),
+            ));
+        };
+        if !matches!(
+            file.extension().and_then(|e| e.to_str()),
+            Some("json" | "csv")
+        ) {
+            return Err(HarnessError::Usage(format!(
+                "--trajectory {}: the file is .json or .csv",
+                file.display()
+            )));
+        }
+        if let Some(p) = self.sample_period
+            && !(p > 0.0 && p.is_finite())
+        {
+            return Err(HarnessError::Usage(format!(
+                "--sample-period {p}: a positive number of seconds"
+            )));
+        }
+        self.limits.limits(arm).map(Some)
+    }
+
+    /// Times `path` on `arm` under `limits` and writes the file.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] for a path that cannot be timed (a single state) or a file
+    /// that cannot be written.
+    pub fn write(
+        &self,
+        arm: &ArmProblem,
+        limits: &MotionLimits,
+        path: &[Vec<f64>],
+    ) -> Result<Option<Timed>, HarnessError> {
+        let Some(file) = &self.trajectory else {
+            return Ok(None);
+        };
+        let usage = |e: robot::TrajectoryError| HarnessError::Usage(format!("--trajectory: {e}"));
+        let path = merge_repeated_waypoints(path);
+        let (trajectory, report) = match self.corners {
+            Corners::Stop => (
+                Trajectory::stop_at_corners(&path, limits).map_err(usage)?,
+                None,
+            ),
+            Corners::Blend => {
+                let certifier = BlendCertifier::new(arm.robot(), arm.scene());
+                let (t, r) = Trajectory::blended(&path, limits, &certifier).map_err(usage)?;
+                (t, Some(r))
+            }
+        };
+        let written = TrajectoryFile::of(&trajectory, self.sample_period).map_err(usage)?;
+        written.write(file).map_err(usage)?;
+        Ok(Some(Timed {
+            file: file.clone(),
+            duration: trajectory.duration(),
+            knots: trajectory.knots().len(),
+            samples: written.samples.len(),
+            report,
+        }))
+    }
+}
+
+/// `check-path --trajectory FILE`: the trajectory checked against an arm problem's robot,
+/// limits and scene; prints the verdict.
+///
+/// # Errors
+/// [`HarnessError::Usage`] for a box world, an unreadable or malformed file, joints that are
+/// not the robot's, times that do not increase, or limits that do not resolve.
+pub(crate) fn check_trajectory_file(
+    arm: Option<&ArmProblem>,
+    file: &std::path::Path,
+    limits: &LimitArgs,
+) -> Result<CommandOutcome, HarnessError> {
+    let Some(arm) = arm else {
+        return Err(HarnessError::Usage(
+            "--trajectory is for arm problems".into(),
+        ));
+    };
+    let usage = |e: robot::TrajectoryError| HarnessError::Usage(e.to_string());
+    let motion = limits.limits(arm)?;
+    let trajectory = TrajectoryFile::read(file).map_err(usage)?;
+    let checker = ArmChecker::new(arm.robot(), arm.scene());
+    let check = check_trajectory(&trajectory, arm.robot(), arm.scene(), &motion, &checker)
+        .map_err(usage)?;
+    say!(
+        "{}: {} samples, {} s; largest velocity {:+.3e} and acceleration {:+.3e} relative to the limits; {} motions between samples certified, {} audited",
+        file.display(),
+        check.samples,
+        number(check.duration),
+        check.velocity_excess,
+        check.acceleration_excess,
+        check.motions_certified,
+        check.motions_audited
+    );
+    if check.is_valid() {
+        say!("  valid");
+        return Ok(CommandOutcome::Success);
+    }
+    say!("  INVALID: {} violations", check.violation_count);
+    for v in &check.violations {
+        say!("    {v:?}");
+    }
+    Ok(CommandOutcome::InvalidPaths)
+}
