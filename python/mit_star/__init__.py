@@ -36,6 +36,7 @@ from ._native import (
     read_results,
     robots,
     run_experiment,
+    time_parameterise,
 )
 
 __all__ = [
@@ -62,6 +63,7 @@ __all__ = [
     "read_results",
     "robots",
     "run_experiment",
+    "time_parameterise",
 ]
 
 

@@ -234,3 +234,17 @@ def run_experiment(
 
 def read_results(folder: StrPath) -> ExperimentResults:
     """The runs of a results folder written by ``mit-star bench`` or ``run_experiment``."""
+
+def time_parameterise(
+    problem: Problem,
+    path: ArrayLike,
+    *,
+    corners: str = "blend",
+    joint_limits: Optional[StrPath] = None,
+    max_acceleration: Optional[float] = None,
+    velocity_scaling: float = 1.0,
+    acceleration_scaling: float = 1.0,
+    sample_period: Optional[float] = None,
+) -> dict[str, Any]:
+    """``path`` of an arm problem timed under the robot's limits: ``time``, ``position``,
+    ``velocity``, ``acceleration`` arrays, ``joints``, ``duration``, ``corners``."""

@@ -23,6 +23,7 @@ mod problem;
 mod python_validity;
 mod solve_request;
 mod solve_result;
+mod trajectory;
 
 use pyo3::prelude::*;
 
@@ -63,6 +64,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(experiment::experiments, m)?)?;
     m.add_function(wrap_pyfunction!(experiment::run_experiment, m)?)?;
     m.add_function(wrap_pyfunction!(experiment::read_results, m)?)?;
+    m.add_function(wrap_pyfunction!(trajectory::time_parameterise, m)?)?;
     m.add("PlanningError", m.py().get_type::<error::PlanningError>())?;
     Ok(())
 }
