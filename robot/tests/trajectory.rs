@@ -386,6 +386,6 @@ fn a_long_path_is_timed_within_the_limits() {
     eprintln!("300 waypoints timed in {:?}", started.elapsed());
     let stopping = Trajectory::stop_at_corners(&path, &limits).unwrap();
     assert!(blended.duration() <= stopping.duration());
-    let result = (|| keeps_limits(&blended, &limits, &path, 20_000))();
+    let result = keeps_limits(&blended, &limits, &path, 20_000);
     assert!(result.is_ok(), "{result:?}");
 }
