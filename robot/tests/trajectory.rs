@@ -360,3 +360,32 @@ fn the_check_catches_tampering() {
     )));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A long path (300 waypoints of small random steps, as an unsimplified planner path or a
+/// dense smoothing gives) is timed blended within the limits, no slower than stopping.
+#[test]
+fn a_long_path_is_timed_within_the_limits() {
+    let robot = ArmProblem::panda().unwrap();
+    let space = robot.joint_space();
+    let mut at = vec![0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
+    let mut path = vec![at.clone()];
+    while path.len() < 300 {
+        let i = path.len() as f64;
+        for (j, q) in at.iter_mut().enumerate() {
+            // Steps of up to 0.05 rad that turn irregularly (no two joints in phase).
+            let step = 0.05 * (1.7 * i + 2.3 * j as f64).sin() * (0.37 * i * (j + 1) as f64).cos();
+            *q = (*q + step).clamp(space.lower()[j], space.upper()[j]);
+        }
+        path.push(at.clone());
+    }
+    let path = robot::merge_repeated_waypoints(&path);
+    let limits = panda_limits(1.0, 1.0);
+    let started = std::time::Instant::now();
+    let certifier = BlendCertifier::new(&robot, &Scene::default());
+    let (blended, _) = Trajectory::blended(&path, &limits, &certifier).unwrap();
+    eprintln!("300 waypoints timed in {:?}", started.elapsed());
+    let stopping = Trajectory::stop_at_corners(&path, &limits).unwrap();
+    assert!(blended.duration() <= stopping.duration());
+    let result = keeps_limits(&blended, &limits, &path, 20_000);
+    assert!(result.is_ok(), "{result:?}");
+}
