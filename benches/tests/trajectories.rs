@@ -91,6 +91,16 @@ fn planned_trajectories_pass_the_check_and_tampered_ones_do_not() {
         "{}",
         String::from_utf8_lossy(&out.stdout)
     );
+    // Blended, at the knots: the motion between two knots is a parabola the check finds
+    // (a straight line between them cuts a blend's corner, which may touch an obstacle).
+    let knots = planned("knots.json", &[]);
+    let out = check(&knots);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
     // A velocity beyond its limit: invalid (exit code 3), named.
     let mut json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&blended).unwrap()).unwrap();

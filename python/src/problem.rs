@@ -255,6 +255,7 @@ impl PyProblem {
     /// `orientation_tolerance`, `"exact"` (default), `"free"`, `"cone:AXIS:ANGLE"` or
     /// `"axis:AXIS"` (AXIS `x`, `y`, `z` or `a;b;c`), as `mit-star plan --goal-pose` takes
     /// them. Raises `ValueError` for a box world, an unknown link or a malformed value.
+    #[allow(clippy::too_many_arguments)]
     #[pyo3(signature = (link, pose=None, *, tool=None, position_tolerance=None, orientation_tolerance=None, ik_goals=8, ik_initial_goals=1))]
     fn with_goal_pose(
         &self,

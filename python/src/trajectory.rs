@@ -74,14 +74,15 @@ pub(crate) fn time_parameterise<'py>(
         .ok_or_else(|| BindingError::Value("no limits".into()))?;
     let value = |e: robot::TrajectoryError| BindingError::Value(e.to_string());
     let path = merge_repeated_waypoints(&path);
-    let (trajectory, report) = py.detach(|| match corners {
-        Corners::Stop => Trajectory::stop_at_corners(&path, &limits).map(|t| (t, None)),
-        Corners::Blend => {
-            let certifier = BlendCertifier::new(arm.robot(), arm.scene());
-            Trajectory::blended(&path, &limits, &certifier).map(|(t, r)| (t, Some(r)))
-        }
-    })
-    .map_err(value)?;
+    let (trajectory, report) = py
+        .detach(|| match corners {
+            Corners::Stop => Trajectory::stop_at_corners(&path, &limits).map(|t| (t, None)),
+            Corners::Blend => {
+                let certifier = BlendCertifier::new(arm.robot(), arm.scene());
+                Trajectory::blended(&path, &limits, &certifier).map(|(t, r)| (t, Some(r)))
+            }
+        })
+        .map_err(value)?;
     let file = TrajectoryFile::of(&trajectory, sample_period).map_err(value)?;
     let matrix = |rows: Vec<Vec<f64>>| {
         PyArray2::from_vec2(py, &rows).map_err(|e| BindingError::Value(e.to_string()))
@@ -102,12 +103,14 @@ pub(crate) fn time_parameterise<'py>(
     )?;
     out.set_item(
         "acceleration",
-        matrix(file.samples.iter().map(|s| s.acceleration.clone()).collect())?,
+        matrix(
+            file.samples
+                .iter()
+                .map(|s| s.acceleration.clone())
+                .collect(),
+        )?,
     )?;
     out.set_item("duration", trajectory.duration())?;
-    out.set_item(
-        "corners",
-        report.map(|r| (r.blended, r.shrunk, r.stopped)),
-    )?;
+    out.set_item("corners", report.map(|r| (r.blended, r.shrunk, r.stopped)))?;
     Ok(out)
 }

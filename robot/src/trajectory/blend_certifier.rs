@@ -62,33 +62,53 @@ impl BlendCertifier {
     /// for `duration` seconds is certified collision-free (type docs).
     pub fn certify_blend(&self, entry: &Sample, duration: f64) -> bool {
         let n = self.space.dimension();
-        if entry.position.len() != n || !(duration > 0.0 && duration.is_finite()) {
+        if entry.position.len() != n || entry.velocity.len() != n || entry.acceleration.len() != n {
             return false;
         }
         let a = &entry.acceleration;
-        let strain = self
-            .links
-            .iter()
-            .map(|&l| {
-                (0..n)
-                    .map(|j| self.levers.lever(l, j) * a[j].abs())
-                    .sum::<f64>()
-            })
-            .fold(0.0, f64::max);
-        // Chords short enough that no coordinate turns half a turn along one (the checker
-        // takes a wrapping joint the short way round).
-        let fastest = (0..n)
+        let speed: Vec<f64> = (0..n)
             .map(|j| {
                 entry.velocity[j]
                     .abs()
                     .max((entry.velocity[j] + a[j] * duration).abs())
             })
-            .fold(0.0, f64::max);
-        let at = |t: f64| -> Vec<f64> {
-            (0..n)
-                .map(|j| entry.position[j] + entry.velocity[j] * t + 0.5 * a[j] * t * t)
-                .collect()
+            .collect();
+        let bend: Vec<f64> = a.iter().map(|x| x.abs()).collect();
+        let at = |t: f64, q: &mut [f64]| {
+            for (j, x) in q.iter_mut().enumerate() {
+                *x = entry.position[j] + entry.velocity[j] * t + 0.5 * a[j] * t * t;
+            }
         };
+        self.certify_curve(&at, duration, (&bend, &speed))
+    }
+
+    /// Whether the motion `at(t)`, `t ∈ [0, duration]`, is certified collision-free, given
+    /// bounds of each coordinate's second derivative (`bend`) and speed (`speed`) over the
+    /// motion: as for a blend (type docs), a chord leaves the curve by at most
+    /// `bend_j h² / 8` in coordinate `j`.
+    pub fn certify_curve(
+        &self,
+        at: &dyn Fn(f64, &mut [f64]),
+        duration: f64,
+        (bend, speed): (&[f64], &[f64]),
+    ) -> bool {
+        let n = self.space.dimension();
+        if bend.len() != n || speed.len() != n || !(duration > 0.0 && duration.is_finite()) {
+            return false;
+        }
+        let strain = self
+            .links
+            .iter()
+            .map(|&l| {
+                (0..n)
+                    .map(|j| self.levers.lever(l, j) * bend[j])
+                    .sum::<f64>()
+            })
+            .fold(0.0, f64::max);
+        // Chords short enough that no coordinate turns half a turn along one (the checker
+        // takes a wrapping joint the short way round).
+        let fastest = speed.iter().copied().fold(0.0, f64::max);
+        let (mut from, mut to) = (vec![0.0; n], vec![0.0; n]);
         'growth: for (growth, checker) in &self.checkers {
             let chords = (duration * (strain / (8.0 * growth)).sqrt())
                 .max(fastest * duration / 3.0)
@@ -98,15 +118,18 @@ impl BlendCertifier {
                 continue;
             }
             let chords = chords as usize;
-            let mut from = at(0.0);
+            at(0.0, &mut from);
             for i in 1..=chords {
-                let to = at(duration * i as f64 / chords as f64);
+                at(duration * i as f64 / chords as f64, &mut to);
+                if !from.iter().chain(&to).all(|x| x.is_finite()) {
+                    return false;
+                }
                 let mut progress = MotionProgress::default();
                 let status = checker.certify_motion(&self.space, &from, &to, &mut progress, &Never);
                 if status != Some(EdgeStatus::Valid) {
                     continue 'growth;
                 }
-                from = to;
+                std::mem::swap(&mut from, &mut to);
             }
             return true;
         }

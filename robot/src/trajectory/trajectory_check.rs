@@ -5,12 +5,17 @@ use spaces::{JointKind, Never, StateSpace};
 use validity::{EdgeStatus, MotionProgress, StateValidity};
 
 use crate::{
-    ArmChecker, AuditVerdict, MotionAudit, MotionLimits, RobotModel, Scene, TrajectoryError,
-    TrajectoryFile,
+    ArmChecker, AuditVerdict, BlendCertifier, MotionAudit, MotionLimits, RobotModel, Scene,
+    TrajectoryError, TrajectoryFile,
 };
 
 /// The configurations the audit of one motion between samples may evaluate.
 const AUDIT_BUDGET: u64 = 1_000_000;
+
+/// The clearance (metres) the audit must see along a chord taken as a motion that is
+/// straight within rounding ([`parallel`]'s 1e-7 rad): well beyond how far such a motion
+/// strays from its chord.
+const STRAIGHT_CLEARANCE: f64 = 1e-6;
 
 /// The relative tolerance of the limit checks.
 pub const TRAJECTORY_TOLERANCE: f64 = 1e-9;
@@ -149,7 +154,8 @@ pub fn check_trajectory(
         }
     }
     let space = robot.joint_space();
-    let mut auditor: Option<MotionAudit> = None;
+    let auditor: std::cell::OnceCell<MotionAudit> = std::cell::OnceCell::new();
+    let blends = BlendCertifier::new(robot, scene);
     let names = robot.joint_names();
     let (v_max, a_max) = (limits.velocity(), limits.acceleration());
     let mut check = TrajectoryCheck {
@@ -218,6 +224,30 @@ pub fn check_trajectory(
             }
         }
     }
+    // A straight motion (a stop-at-corner segment, or a piece of one): the edge
+    // certification, and a refusal confirmed by the `f64` audit (it refuses configurations
+    // within 10 µm of contact beyond its margin, which a sub-motion of a certified edge can
+    // come to).
+    let along_chord = |a: &[f64], b: &[f64]| {
+        let mut progress = MotionProgress::default();
+        let certified = if a == b {
+            checker.is_valid(a)
+        } else {
+            checker.certify_motion(space, a, b, &mut progress, &Never) == Some(EdgeStatus::Valid)
+        };
+        if certified {
+            return Verdict::Certified;
+        }
+        let audit = auditor.get_or_init(|| MotionAudit::new(robot, scene));
+        if matches!(
+            audit.audit(a, b, AUDIT_BUDGET),
+            AuditVerdict::Clear { clearance, .. } if clearance >= STRAIGHT_CLEARANCE
+        ) {
+            Verdict::Audited
+        } else {
+            Verdict::Refused
+        }
+    };
     for (i, w) in samples.windows(2).enumerate() {
         let (p, s) = (&w[0], &w[1]);
         let dt = s.time - p.time;
@@ -252,30 +282,329 @@ pub fn check_trajectory(
                 );
             }
         }
-        let mut progress = MotionProgress::default();
-        let certified = if p.position == s.position {
-            checker.is_valid(&p.position)
-        } else {
-            checker.certify_motion(space, &p.position, &s.position, &mut progress, &Never)
-                == Some(EdgeStatus::Valid)
+        // The motion between the samples: one or two parabolas of the samples'
+        // accelerations (a file of ours, at its knots or at a period), else the quintic their
+        // positions, velocities and accelerations determine (a controller's quintic spline).
+        let verdict = match parabolas(p, s) {
+            Some(pieces) => {
+                let mut verdict = Verdict::Certified;
+                for (entry, duration) in &pieces {
+                    let end = entry_at(entry, *duration);
+                    let piece = if parallel_motion(entry, &end) {
+                        along_chord(&entry.position, &end.position)
+                    } else if blends.certify_blend(entry, *duration) {
+                        Verdict::Certified
+                    } else {
+                        Verdict::Refused
+                    };
+                    verdict = verdict.and(piece);
+                }
+                verdict
+            }
+            None => {
+                let quintic = Quintic::new(p, s);
+                if blends.certify_curve(&|t, q| quintic.at(t, q), dt, quintic.bounds()) {
+                    Verdict::Certified
+                } else if quintic.straight {
+                    along_chord(&p.position, &s.position)
+                } else {
+                    Verdict::Refused
+                }
+            }
         };
-        // The certification is conservative (it refuses configurations within 10 µm of
-        // contact beyond its margin, which a sub-motion of a certified edge can come to):
-        // a refusal is confirmed by the `f64` audit.
-        let mut audit = || {
-            let audit = auditor.get_or_insert_with(|| MotionAudit::new(robot, scene));
-            matches!(
-                audit.audit(&p.position, &s.position, AUDIT_BUDGET),
-                AuditVerdict::Clear { .. }
-            )
-        };
-        if certified {
-            check.motions_certified += 1;
-        } else if audit() {
-            check.motions_audited += 1;
-        } else {
-            note(&mut check, Violation::Collision { sample: i + 1 });
+        match verdict {
+            Verdict::Certified => check.motions_certified += 1,
+            Verdict::Audited => check.motions_audited += 1,
+            Verdict::Refused => note(&mut check, Violation::Collision { sample: i + 1 }),
         }
     }
     Ok(check)
+}
+
+/// How the motion between two samples was proven collision-free, or not.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Verdict {
+    Certified,
+    Audited,
+    Refused,
+}
+
+impl Verdict {
+    /// Both motions proven: refused if either is, audited if either needed the audit.
+    fn and(self, other: Self) -> Self {
+        match (self, other) {
+            (Self::Refused, _) | (_, Self::Refused) => Self::Refused,
+            (Self::Audited, _) | (_, Self::Audited) => Self::Audited,
+            _ => Self::Certified,
+        }
+    }
+}
+
+/// The state `duration` after `entry` at its constant acceleration.
+fn entry_at(entry: &crate::Sample, duration: f64) -> crate::Sample {
+    let n = entry.position.len();
+    crate::Sample {
+        time: entry.time + duration,
+        position: (0..n)
+            .map(|j| {
+                entry.position[j]
+                    + entry.velocity[j] * duration
+                    + 0.5 * entry.acceleration[j] * duration * duration
+            })
+            .collect(),
+        velocity: (0..n)
+            .map(|j| entry.velocity[j] + entry.acceleration[j] * duration)
+            .collect(),
+        acceleration: entry.acceleration.clone(),
+    }
+}
+
+/// Whether a piece of constant acceleration from `entry` to `end` stays on their chord: its
+/// acceleration along the chord (then so is its velocity, and every configuration is on the
+/// chord's line), and its velocity never pointing backwards along it (then it moves
+/// monotonically from one end to the other; a backward speed below 1e-9 of the mean is taken
+/// as rounding, its overshoot below 1e-9 of the chord).
+fn parallel_motion(entry: &crate::Sample, end: &crate::Sample) -> bool {
+    let duration = end.time - entry.time;
+    let chord: Vec<f64> = entry
+        .position
+        .iter()
+        .zip(&end.position)
+        .map(|(a, b)| b - a)
+        .collect();
+    let length2: f64 = chord.iter().map(|x| x * x).sum();
+    let forward = |v: &[f64]| {
+        let along: f64 = chord.iter().zip(v).map(|(c, x)| c * x).sum();
+        along >= -1e-9 * length2 / duration
+    };
+    length2 > 0.0
+        && parallel(&chord, &entry.acceleration)
+        && forward(&entry.velocity)
+        && forward(&end.velocity)
+}
+
+/// Whether `a` and `b` agree within the rounding of a file (relative 1e-9).
+fn close(a: f64, b: f64, scale: f64) -> bool {
+    (a - b).abs() <= 1e-9 * (1.0 + scale)
+}
+
+/// The motion from `p` to `s` as pieces of constant acceleration, `(entry, duration)`: `p`'s
+/// acceleration held to `s` (or `s`'s, for a sample at a knot that records the acceleration
+/// after it), or `p`'s until a switch time and `s`'s after it (an interval holding one
+/// knot). `None` if neither explains the samples.
+fn parabolas(p: &crate::Sample, s: &crate::Sample) -> Option<Vec<(crate::Sample, f64)>> {
+    let h = s.time - p.time;
+    let n = p.position.len();
+    let reaches = |end: &crate::Sample| {
+        (0..n).all(|j| {
+            let scale = p.position[j].abs() + p.velocity[j].abs() + s.position[j].abs();
+            close(end.position[j], s.position[j], scale)
+                && close(end.velocity[j], s.velocity[j], scale + s.velocity[j].abs())
+        })
+    };
+    for a in [&p.acceleration, &s.acceleration] {
+        let entry = crate::Sample {
+            acceleration: a.clone(),
+            ..p.clone()
+        };
+        if reaches(&entry_at(&entry, h)) {
+            return Some(vec![(entry, h)]);
+        }
+    }
+    // One switch at τ: v_p + a_p τ + a_s (h − τ) = v_s, in the coordinate whose
+    // accelerations differ most.
+    let j = (0..n).max_by(|&x, &y| {
+        let dx = (p.acceleration[x] - s.acceleration[x]).abs();
+        let dy = (p.acceleration[y] - s.acceleration[y]).abs();
+        dx.total_cmp(&dy)
+    })?;
+    let jump = p.acceleration[j] - s.acceleration[j];
+    if jump == 0.0 {
+        return None;
+    }
+    let tau = (s.velocity[j] - p.velocity[j] - s.acceleration[j] * h) / jump;
+    if !(tau > 0.0 && tau < h) {
+        return None;
+    }
+    let middle = entry_at(p, tau);
+    let second = crate::Sample {
+        acceleration: s.acceleration.clone(),
+        ..middle
+    };
+    reaches(&entry_at(&second, h - tau)).then(|| vec![(p.clone(), tau), (second, h - tau)])
+}
+
+/// The motion from sample `p` to sample `s`, per coordinate, in time since `p`: the parabola
+/// of constant acceleration joining them if one of their accelerations gives one (a file
+/// written at a trajectory's knots), else the quintic matching both ends' positions,
+/// velocities and accelerations (a controller's quintic spline).
+struct Quintic {
+    coefficients: Vec<[f64; 6]>,
+    duration: f64,
+    /// The ends' velocities and accelerations all along the chord: the motion stays on the
+    /// line through the two positions.
+    straight: bool,
+    bend: Vec<f64>,
+    speed: Vec<f64>,
+}
+
+impl Quintic {
+    fn new(p: &crate::Sample, s: &crate::Sample) -> Self {
+        let h = s.time - p.time;
+        // A sample at a knot has two accelerations (before and after it); the file gives
+        // one. Where one of the two samples' accelerations, held from `p`, reaches `s`'s
+        // position and velocity, that parabola is the motion (a file written at our knots).
+        let parabola = [&p.acceleration, &s.acceleration].into_iter().find(|a| {
+            (0..p.position.len()).all(|j| {
+                let (p0, v0) = (p.position[j], p.velocity[j]);
+                let scale = 1.0 + p0.abs() + v0.abs() + s.position[j].abs() + s.velocity[j].abs();
+                (p0 + v0 * h + 0.5 * a[j] * h * h - s.position[j]).abs() <= 1e-9 * scale
+                    && (v0 + a[j] * h - s.velocity[j]).abs() <= 1e-9 * scale
+            })
+        });
+        let coefficients: Vec<[f64; 6]> = (0..p.position.len())
+            .map(|j| {
+                if let Some(a) = parabola {
+                    return [p.position[j], p.velocity[j], 0.5 * a[j], 0.0, 0.0, 0.0];
+                }
+                let (p0, v0, a0) = (p.position[j], p.velocity[j], p.acceleration[j]);
+                let (p1, v1, a1) = (s.position[j], s.velocity[j], s.acceleration[j]);
+                let d = p1 - p0;
+                [
+                    p0,
+                    v0,
+                    0.5 * a0,
+                    (20.0 * d - (8.0 * v1 + 12.0 * v0) * h - (3.0 * a0 - a1) * h * h)
+                        / (2.0 * h.powi(3)),
+                    (-30.0 * d + (14.0 * v1 + 16.0 * v0) * h + (3.0 * a0 - 2.0 * a1) * h * h)
+                        / (2.0 * h.powi(4)),
+                    (12.0 * d - 6.0 * (v1 + v0) * h - (a0 - a1) * h * h) / (2.0 * h.powi(5)),
+                ]
+            })
+            .collect();
+        // Sound bounds over [0, h]: each term at its largest.
+        let bend = coefficients
+            .iter()
+            .map(|c| {
+                2.0 * c[2].abs()
+                    + 6.0 * c[3].abs() * h
+                    + 12.0 * c[4].abs() * h * h
+                    + 20.0 * c[5].abs() * h.powi(3)
+            })
+            .collect();
+        let speed = coefficients
+            .iter()
+            .map(|c| {
+                c[1].abs()
+                    + 2.0 * c[2].abs() * h
+                    + 3.0 * c[3].abs() * h * h
+                    + 4.0 * c[4].abs() * h.powi(3)
+                    + 5.0 * c[5].abs() * h.powi(4)
+            })
+            .collect();
+        let chord: Vec<f64> = p
+            .position
+            .iter()
+            .zip(&s.position)
+            .map(|(a, b)| b - a)
+            .collect();
+        let straight = [&p.velocity, &s.velocity, &p.acceleration, &s.acceleration]
+            .iter()
+            .all(|v| parallel(&chord, v));
+        Self {
+            coefficients,
+            duration: h,
+            straight,
+            bend,
+            speed,
+        }
+    }
+
+    fn at(&self, t: f64, q: &mut [f64]) {
+        let t = t.clamp(0.0, self.duration);
+        for (x, c) in q.iter_mut().zip(&self.coefficients) {
+            *x = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
+        }
+    }
+
+    fn bounds(&self) -> (&[f64], &[f64]) {
+        (&self.bend, &self.speed)
+    }
+}
+
+/// Whether `v` is a multiple of `d` within about 1e-7 rad, zero included: the test's own
+/// rounding (`|d|²|v|² − (d·v)²` cancels) leaves about 1e-8 rad between vectors a timing made
+/// parallel. A motion that far off its chord strays from it by at most 1e-7 of its length
+/// times the robot's reach (0.1 µm over a radian of the Panda), which the certification's
+/// margin (20 µm) and the audit's required clearance ([`STRAIGHT_CLEARANCE`]) cover.
+fn parallel(d: &[f64], v: &[f64]) -> bool {
+    let dd: f64 = d.iter().map(|x| x * x).sum();
+    let vv: f64 = v.iter().map(|x| x * x).sum();
+    let dv: f64 = d.iter().zip(v).map(|(a, b)| a * b).sum();
+    vv == 0.0 || (dd > 0.0 && (dd * vv - dv * dv) <= 1e-14 * dd * vv)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Sample;
+
+    fn sample(time: f64, position: Vec<f64>, velocity: Vec<f64>, acceleration: Vec<f64>) -> Sample {
+        Sample {
+            time,
+            position,
+            velocity,
+            acceleration,
+        }
+    }
+
+    #[test]
+    fn the_quintic_meets_both_ends_and_is_the_parabola_of_a_constant_acceleration() {
+        // A parabola: x = 1 + 2t − 1.5t², y = −t + 0.5t², from t = 0.5 to 1.25.
+        let at = |t: f64| {
+            sample(
+                t,
+                vec![1.0 + 2.0 * t - 1.5 * t * t, -t + 0.5 * t * t],
+                vec![2.0 - 3.0 * t, -1.0 + t],
+                vec![-3.0, 1.0],
+            )
+        };
+        let (p, s) = (at(0.5), at(1.25));
+        let quintic = Quintic::new(&p, &s);
+        assert!(!quintic.straight);
+        let mut q = [0.0; 2];
+        for k in 0..=10 {
+            let t = 0.75 * f64::from(k) / 10.0;
+            quintic.at(t, &mut q);
+            let exact = at(0.5 + t).position;
+            assert!((q[0] - exact[0]).abs() < 1e-12 && (q[1] - exact[1]).abs() < 1e-12);
+        }
+        // The bend bound is the acceleration (the higher terms vanish).
+        assert!((quintic.bend[0] - 3.0).abs() < 1e-9 && (quintic.bend[1] - 1.0).abs() < 1e-9);
+        // A knot recording the next piece's acceleration: the parabola is still found.
+        let mut knot = at(1.25);
+        knot.acceleration = vec![0.0, 0.0];
+        let quintic = Quintic::new(&at(0.5), &knot);
+        quintic.at(0.4, &mut q);
+        let exact = at(0.9).position;
+        assert!((q[0] - exact[0]).abs() < 1e-12 && (q[1] - exact[1]).abs() < 1e-12);
+        // Ends of another kind: positions and velocities met.
+        let (p, s) = (
+            sample(0.0, vec![0.0], vec![1.0], vec![0.0]),
+            sample(2.0, vec![1.0], vec![0.0], vec![-1.0]),
+        );
+        let quintic = Quintic::new(&p, &s);
+        let mut q = [0.0];
+        quintic.at(2.0, &mut q);
+        assert!((q[0] - 1.0).abs() < 1e-12);
+        assert!(quintic.straight, "one coordinate: always along the chord");
+    }
+
+    #[test]
+    fn parallel_vectors_are_told_apart() {
+        assert!(parallel(&[1.0, 2.0], &[-2.0, -4.0]));
+        assert!(parallel(&[1.0, 2.0], &[0.0, 0.0]));
+        assert!(!parallel(&[1.0, 2.0], &[2.0, -1.0]));
+        assert!(!parallel(&[0.0, 0.0], &[1.0, 0.0]));
+    }
 }
