@@ -434,10 +434,9 @@ fn parabolas(p: &crate::Sample, s: &crate::Sample) -> Option<Vec<(crate::Sample,
     reaches(&entry_at(&second, h - tau)).then(|| vec![(p.clone(), tau), (second, h - tau)])
 }
 
-/// The motion from sample `p` to sample `s`, per coordinate, in time since `p`: the parabola
-/// of constant acceleration joining them if one of their accelerations gives one (a file
-/// written at a trajectory's knots), else the quintic matching both ends' positions,
-/// velocities and accelerations (a controller's quintic spline).
+/// The quintic from sample `p` to sample `s` matching both ends' positions, velocities and
+/// accelerations (a controller's quintic spline), per coordinate, in time since `p`: the
+/// motion between samples that no parabola of theirs explains ([`parabolas`]).
 struct Quintic {
     coefficients: Vec<[f64; 6]>,
     duration: f64,
@@ -451,22 +450,8 @@ struct Quintic {
 impl Quintic {
     fn new(p: &crate::Sample, s: &crate::Sample) -> Self {
         let h = s.time - p.time;
-        // A sample at a knot has two accelerations (before and after it); the file gives
-        // one. Where one of the two samples' accelerations, held from `p`, reaches `s`'s
-        // position and velocity, that parabola is the motion (a file written at our knots).
-        let parabola = [&p.acceleration, &s.acceleration].into_iter().find(|a| {
-            (0..p.position.len()).all(|j| {
-                let (p0, v0) = (p.position[j], p.velocity[j]);
-                let scale = 1.0 + p0.abs() + v0.abs() + s.position[j].abs() + s.velocity[j].abs();
-                (p0 + v0 * h + 0.5 * a[j] * h * h - s.position[j]).abs() <= 1e-9 * scale
-                    && (v0 + a[j] * h - s.velocity[j]).abs() <= 1e-9 * scale
-            })
-        });
         let coefficients: Vec<[f64; 6]> = (0..p.position.len())
             .map(|j| {
-                if let Some(a) = parabola {
-                    return [p.position[j], p.velocity[j], 0.5 * a[j], 0.0, 0.0, 0.0];
-                }
                 let (p0, v0, a0) = (p.position[j], p.velocity[j], p.acceleration[j]);
                 let (p1, v1, a1) = (s.position[j], s.velocity[j], s.acceleration[j]);
                 let d = p1 - p0;
@@ -584,10 +569,20 @@ mod tests {
         // A knot recording the next piece's acceleration: the parabola is still found.
         let mut knot = at(1.25);
         knot.acceleration = vec![0.0, 0.0];
-        let quintic = Quintic::new(&at(0.5), &knot);
-        quintic.at(0.4, &mut q);
-        let exact = at(0.9).position;
-        assert!((q[0] - exact[0]).abs() < 1e-12 && (q[1] - exact[1]).abs() < 1e-12);
+        let pieces = parabolas(&at(0.5), &knot).expect("one parabola");
+        assert_eq!(pieces.len(), 1);
+        assert_eq!(pieces[0].0.acceleration, vec![-3.0, 1.0]);
+        // A knot inside the interval: two parabolas, switching at it.
+        let before = at(0.5);
+        let mid = entry_at(&before, 0.25);
+        let end = entry_at(
+            &sample(mid.time, mid.position.clone(), mid.velocity.clone(), vec![1.0, -2.0]),
+            0.5,
+        );
+        let end = sample(1.25, end.position, end.velocity, vec![1.0, -2.0]);
+        let pieces = parabolas(&before, &end).expect("two parabolas");
+        assert_eq!(pieces.len(), 2);
+        assert!((pieces[0].1 - 0.25).abs() < 1e-9 && (pieces[1].1 - 0.5).abs() < 1e-9);
         // Ends of another kind: positions and velocities met.
         let (p, s) = (
             sample(0.0, vec![0.0], vec![1.0], vec![0.0]),
