@@ -3,11 +3,11 @@
 
 use std::path::PathBuf;
 
-use mit_star_benches::commands::{Corners, LimitArgs, TrajectoryArgs};
+use mit_star_benches::commands::{Corners, LimitArgs};
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use robot::{BlendCertifier, Trajectory, TrajectoryFile, merge_repeated_waypoints};
+use robot::TrajectoryFile;
 
 use crate::error::{BindingError, BindingResult};
 use crate::problem::PyProblem;
@@ -58,30 +58,23 @@ pub(crate) fn time_parameterise<'py>(
     let path: Vec<Vec<f64>> = path.extract().map_err(|_| {
         BindingError::Type("path must be an (n, d) array or a list of states".into())
     })?;
-    let args = TrajectoryArgs {
-        trajectory: Some(PathBuf::from("trajectory.json")),
-        sample_period,
-        corners,
-        limits: LimitArgs {
-            joint_limits,
-            max_acceleration,
-            velocity_scaling,
-            acceleration_scaling,
-        },
-    };
-    let limits = args
-        .prepare(Some(arm))?
-        .ok_or_else(|| BindingError::Value("no limits".into()))?;
+    if let Some(period) = sample_period
+        && !(period > 0.0 && period.is_finite())
+    {
+        return Err(BindingError::Value(format!(
+            "sample_period must be a positive number of seconds, not {period}"
+        )));
+    }
+    let limits = LimitArgs {
+        joint_limits,
+        max_acceleration,
+        velocity_scaling,
+        acceleration_scaling,
+    }
+    .limits(arm)?;
     let value = |e: robot::TrajectoryError| BindingError::Value(e.to_string());
-    let path = merge_repeated_waypoints(&path);
     let (trajectory, report) = py
-        .detach(|| match corners {
-            Corners::Stop => Trajectory::stop_at_corners(&path, &limits).map(|t| (t, None)),
-            Corners::Blend => {
-                let certifier = BlendCertifier::new(arm.robot(), arm.scene());
-                Trajectory::blended(&path, &limits, &certifier).map(|(t, r)| (t, Some(r)))
-            }
-        })
+        .detach(|| corners.time(arm, &limits, &path))
         .map_err(value)?;
     let file = TrajectoryFile::of(&trajectory, sample_period).map_err(value)?;
     let matrix = |rows: Vec<Vec<f64>>| {

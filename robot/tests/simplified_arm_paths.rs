@@ -1,36 +1,20 @@
 //! Simplified arm paths stay collision-free along their whole length: RRT-Connect paths on
 //! MotionBenchMaker problems, simplified, then audited continuously in `f64` with parry.
 
-use std::path::Path;
 use std::time::Duration;
 
-use mit_star::{FirstSolution, Parameters, PathSimplifier, Planner, TerminationExt, TimeLimit};
+use mit_star::PathSimplifier;
 use problems::PlanningProblem;
-use robot::{ArmProblem, AuditVerdict, MotionAudit};
+use robot::{AuditVerdict, MotionAudit};
 use validity::StateValidity;
+
+use crate::arm_cases::first_mbm_path;
 
 #[test]
 fn simplified_arm_paths_pass_the_continuous_audit() {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm");
     let mut shortened = 0;
     for scene in ["bookshelf_small_panda", "cage_panda", "table_pick_panda"] {
-        let problem = ArmProblem::panda_mbm(&folder.join(scene), 1).unwrap();
-        let parameters = Parameters {
-            range: Some(1.0),
-            seed: 3,
-            ..Parameters::default()
-        };
-        let mut planner = mit_star::RrtConnect::for_problem(&problem, &parameters).unwrap();
-        let outcome = planner
-            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
-            .unwrap();
-        let path: Vec<Vec<f64>> = outcome
-            .solution()
-            .unwrap()
-            .path
-            .iter()
-            .map(<[f64]>::to_vec)
-            .collect();
+        let (problem, path) = first_mbm_path(scene, 3);
         let simplified = PathSimplifier::new()
             .seed(7)
             .simplify(

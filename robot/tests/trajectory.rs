@@ -6,7 +6,9 @@
 use std::path::Path;
 use std::time::Duration;
 
-use mit_star::{FirstSolution, Parameters, PathSimplifier, Planner, TerminationExt, TimeLimit};
+use mit_star::PathSimplifier;
+
+use crate::arm_cases::first_mbm_path;
 use proptest::prelude::*;
 use robot::{
     ArmChecker, ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS,
@@ -119,30 +121,13 @@ proptest! {
 /// the continuous collision check between samples), and it is faster than stopping.
 #[test]
 fn blended_panda_trajectories_pass_the_check() {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm");
     let mut blends = 0;
     for (scene, seed) in [
         ("cage_panda", 3),
         ("bookshelf_small_panda", 5),
         ("table_pick_panda", 7),
     ] {
-        let problem = ArmProblem::panda_mbm(&folder.join(scene), 1).unwrap();
-        let parameters = Parameters {
-            range: Some(1.0),
-            seed,
-            ..Parameters::default()
-        };
-        let mut planner = mit_star::RrtConnect::for_problem(&problem, &parameters).unwrap();
-        let outcome = planner
-            .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
-            .unwrap();
-        let path: Vec<Vec<f64>> = outcome
-            .solution()
-            .unwrap()
-            .path
-            .iter()
-            .map(<[f64]>::to_vec)
-            .collect();
+        let (problem, path) = first_mbm_path(scene, seed);
         let simplified = PathSimplifier::new()
             .seed(seed)
             .simplify(

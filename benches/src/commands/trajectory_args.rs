@@ -69,6 +69,31 @@ pub enum Corners {
     Blend,
 }
 
+impl Corners {
+    /// Times `path` (repeated states merged) on `arm` under `limits`, passing its corners
+    /// this way; what became of the corners when blending.
+    ///
+    /// # Errors
+    /// As [`Trajectory::stop_at_corners`]: a path of one distinct state, of the wrong width
+    /// or not finite.
+    pub fn time(
+        self,
+        arm: &ArmProblem,
+        limits: &MotionLimits,
+        path: &[Vec<f64>],
+    ) -> Result<(Trajectory, Option<robot::BlendReport>), robot::TrajectoryError> {
+        let path = merge_repeated_waypoints(path);
+        match self {
+            Self::Stop => Ok((Trajectory::stop_at_corners(&path, limits)?, None)),
+            Self::Blend => {
+                let certifier = BlendCertifier::new(arm.robot(), arm.scene());
+                let (t, r) = Trajectory::blended(&path, limits, &certifier)?;
+                Ok((t, Some(r)))
+            }
+        }
+    }
+}
+
 /// Options of `plan` that time the path and write it.
 #[derive(Debug, Args, Clone)]
 pub struct TrajectoryArgs {
@@ -181,18 +206,7 @@ impl TrajectoryArgs {
             return Ok(None);
         };
         let usage = |e: robot::TrajectoryError| HarnessError::Usage(format!("--trajectory: {e}"));
-        let path = merge_repeated_waypoints(path);
-        let (trajectory, report) = match self.corners {
-            Corners::Stop => (
-                Trajectory::stop_at_corners(&path, limits).map_err(usage)?,
-                None,
-            ),
-            Corners::Blend => {
-                let certifier = BlendCertifier::new(arm.robot(), arm.scene());
-                let (t, r) = Trajectory::blended(&path, limits, &certifier).map_err(usage)?;
-                (t, Some(r))
-            }
-        };
+        let (trajectory, report) = self.corners.time(arm, limits, path).map_err(usage)?;
         let written = TrajectoryFile::of(&trajectory, self.sample_period).map_err(usage)?;
         written.write(file).map_err(usage)?;
         Ok(Some(Timed {

@@ -1,5 +1,6 @@
 //! Cases shared by the arm-motion tests: the Panda, a thin tab across its fingertip's path,
-//! random obstacles and edges, and the dense `f64` reference verdict on an edge.
+//! random obstacles and edges, the dense `f64` reference verdict on an edge, and a planned path
+//! of a MotionBenchMaker problem.
 
 // Each test binary includes this file and uses a subset.
 #![allow(dead_code)]
@@ -123,4 +124,29 @@ pub(crate) fn edge() -> impl Strategy<Value = (Vec<f64>, Vec<f64>)> {
                 .collect();
             (a, b)
         })
+}
+
+/// Problem 1 of the MotionBenchMaker folder `scene` (in `tests/data/mbm`) and RRT-Connect's
+/// first path on it (range 1, seeded), within 10 s.
+pub(crate) fn first_mbm_path(scene: &str, seed: u64) -> (ArmProblem, Vec<Vec<f64>>) {
+    use mit_star::{FirstSolution, Parameters, Planner, TerminationExt, TimeLimit};
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/mbm");
+    let problem = ArmProblem::panda_mbm(&folder.join(scene), 1).unwrap();
+    let parameters = Parameters {
+        range: Some(1.0),
+        seed,
+        ..Parameters::default()
+    };
+    let mut planner = mit_star::RrtConnect::for_problem(&problem, &parameters).unwrap();
+    let outcome = planner
+        .solve(&FirstSolution.or(TimeLimit::seconds(10.0)))
+        .unwrap();
+    let path = outcome
+        .solution()
+        .unwrap()
+        .path
+        .iter()
+        .map(<[f64]>::to_vec)
+        .collect();
+    (problem, path)
 }
