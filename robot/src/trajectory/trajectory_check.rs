@@ -576,12 +576,7 @@ mod tests {
         let before = at(0.5);
         let mid = entry_at(&before, 0.25);
         let end = entry_at(
-            &sample(
-                mid.time,
-                mid.position.clone(),
-                mid.velocity.clone(),
-                vec![1.0, -2.0],
-            ),
+            &sample(mid.time, mid.position, mid.velocity, vec![1.0, -2.0]),
             0.5,
         );
         let end = sample(1.25, end.position, end.velocity, vec![1.0, -2.0]);
