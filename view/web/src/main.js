@@ -1,0 +1,129 @@
+// The page: reads the embedded document, builds the view, exposes window.mitStarView.
+import * as THREE from 'three';
+import { decodeDocument } from './decode.js';
+import { MotionPlayer } from './motion.js';
+import { buildPanel, showFrame } from './panel.js';
+import { PointFigure, RobotFigure, meshGeometries, robotReach } from './robot.js';
+import { buildScene } from './scene.js';
+import { buildSearch } from './search.js';
+import { createStage, fitCamera, webglAvailable } from './stage.js';
+
+const api = { ready: false };
+window.mitStarView = api;
+
+function fail(message) {
+  api.error = message;
+  const box = document.getElementById('message');
+  box.textContent = message;
+  box.hidden = false;
+}
+
+/** The box holding the scene and every pose of every motion. */
+function extent(sceneGroup, doc, arm, reach) {
+  const box = new THREE.Box3().setFromObject(sceneGroup);
+  const p = new THREE.Vector3();
+  for (const m of doc.motions) {
+    const stride = arm ? 7 : 3;
+    for (let i = 0; i + 2 < m.poses.length; i += stride) box.expandByPoint(p.fromArray(m.poses, i));
+  }
+  if (doc.search) for (let i = 0; i + 2 < doc.search.segments.length; i += 3) box.expandByPoint(p.fromArray(doc.search.segments, i));
+  return box.isEmpty() ? box : box.expandByScalar(reach);
+}
+
+function start() {
+  const doc = decodeDocument(JSON.parse(document.getElementById('mit-star-view-data').textContent));
+  document.title = doc.title;
+  const panelRoot = document.getElementById('panel');
+  if (!webglAvailable()) {
+    buildPanel(panelRoot, { ...doc, motions: [], search: null, robot: null }, {});
+    fail('This view needs WebGL 2, which this browser does not provide. Enable hardware acceleration (or WebGL) in the browser settings, or open the file in a recent Chrome, Firefox or Safari.');
+    return;
+  }
+  let pending = false;
+  let last = 0;
+  let stage = null;
+  let player = null;
+  const frame = (now) => {
+    pending = false;
+    if (player?.playing) {
+      player.tick(Math.min((now - last) / 1000, 0.1));
+      last = now;
+      if (player.playing) request();
+    }
+    stage.render();
+    api.ready = true;
+  };
+  const request = () => {
+    if (!pending && stage) { pending = true; requestAnimationFrame(frame); }
+  };
+  stage = createStage(document.getElementById('stage'), request);
+
+  const arm = doc.kind === 'arm' && doc.robot;
+  const flat = doc.kind === 'world2d';
+  const probe = extent(new THREE.Group(), doc, arm, 0);
+  const size = probe.isEmpty() ? 1 : probe.getSize(new THREE.Vector3()).length();
+  const sceneGroup = buildScene(doc, 0.01 * Math.max(size, 1e-3));
+  const box = extent(sceneGroup, doc, arm, arm ? robotReach(doc.robot) : 0.02 * size);
+  const radius = 0.012 * Math.max(box.getSize(new THREE.Vector3()).length(), 1e-3);
+  const lift = flat ? radius : 0;
+  const geometries = arm ? meshGeometries(doc.robot) : null;
+  const hasMeshes = arm && doc.robot.links.some((l) => l.meshes.length > 0);
+  const makeFigure = (opacity) => {
+    const figure = arm ? new RobotFigure(doc.robot, geometries, opacity) : new PointFigure(radius, opacity);
+    figure.setMeshes(hasMeshes);
+    return figure;
+  };
+  const figure = makeFigure(1);
+  const ctx = { arm, links: arm ? doc.robot.links.length : 0, hand: arm ? doc.robot.hand : 0, lift, makeFigure };
+  let view = null;
+  player = new MotionPlayer(doc, figure, ctx, (p) => { if (view) showFrame(view, p); });
+  if (arm && doc.motions.length === 0) figure.group.visible = doc.robot.links.length === 0;
+  stage.scene.add(sceneGroup, figure.group, player.group);
+  if (!flat) {
+    const grid = new THREE.GridHelper(2 * Math.max(box.max.x - box.min.x, box.max.y - box.min.y), 20, 0xc8ccd4, 0xdde0e6);
+    grid.rotateX(Math.PI / 2);
+    grid.position.set((box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2, Math.min(box.min.z, 0));
+    stage.scene.add(grid);
+  }
+  let searchGroup = null;
+  let costRange = null;
+  const searchShown = Boolean(doc.search) && doc.motions.length === 0 && doc.scene.solids.length === 0 && doc.scene.clouds.length === 0;
+  if (doc.search) {
+    const overlay = buildSearch(doc.search, flat, lift);
+    searchGroup = overlay.group;
+    costRange = overlay.range;
+    searchGroup.visible = searchShown;
+    stage.scene.add(searchGroup);
+  }
+  const redraw = () => { request(); };
+  view = buildPanel(panelRoot, doc, {
+    setMotion: (k) => { player.setMotion(k); redraw(); },
+    setFrame: (f) => { player.playing = false; player.setFrame(f); redraw(); },
+    togglePlay: () => { player.togglePlay(); last = performance.now(); showFrame(view, player); redraw(); },
+    setSpeed: (s) => { player.speed = s; },
+    setMeshes: (on) => { figure.setMeshes(on); player.setMeshes(on); redraw(); },
+    setGhosts: (on) => { player.setGhosts(on); redraw(); },
+    setSearch: (on) => { if (searchGroup) searchGroup.visible = on; redraw(); },
+    searchShown,
+    costRange,
+  });
+  showFrame(view, player);
+  fitCamera(stage, box, flat);
+
+  const now = () => { stage.render(); api.ready = true; };
+  Object.assign(api, {
+    frameCount: () => player.frameCount(),
+    setFrame: (i) => { player.playing = false; player.setFrame(i); now(); },
+    motionCount: () => doc.motions.length,
+    setMotion: (k) => { player.setMotion(k); now(); },
+    render: now,
+  });
+  request();
+}
+
+try {
+  start();
+} catch (error) {
+  fail(`This view could not be drawn: ${error && error.message ? error.message : error}`);
+  throw error;
+}

@@ -1,0 +1,67 @@
+// Scene building: solids (instanced by shape), point clouds, and a box world's bounds.
+import * as THREE from 'three';
+
+const SOLID = new THREE.MeshStandardMaterial({ color: 0x8d99ae, roughness: 0.8 });
+const CLOUD_COLOURS = [0xd9822b, 0x2b8ad9, 0x6a994e, 0x9d4edd];
+
+function unitGeometry(type) {
+  if (type === 'cuboid') return new THREE.BoxGeometry(1, 1, 1);
+  if (type === 'sphere') return new THREE.SphereGeometry(1, 20, 14);
+  return new THREE.CylinderGeometry(1, 1, 1, 24).rotateX(Math.PI / 2);
+}
+
+function scaleOf(shape, flat, thickness) {
+  if (shape.type === 'cuboid') {
+    const [x, y, z] = shape.half_extents;
+    return [2 * x, 2 * y, flat ? thickness : 2 * z];
+  }
+  if (shape.type === 'sphere') return [shape.radius, shape.radius, flat ? thickness / 2 : shape.radius];
+  return [shape.radius, shape.radius, flat ? thickness : 2 * shape.half_height];
+}
+
+/** The obstacles of `doc` as a group; a 2-D world's solids are thin slabs under z = 0. */
+export function buildScene(doc, thickness) {
+  const group = new THREE.Group();
+  const flat = doc.kind === 'world2d';
+  const byType = new Map();
+  for (const solid of doc.scene.solids) {
+    if (!byType.has(solid.shape.type)) byType.set(solid.shape.type, []);
+    byType.get(solid.shape.type).push(solid);
+  }
+  const m = new THREE.Matrix4();
+  const p = new THREE.Vector3();
+  const q = new THREE.Quaternion();
+  const s = new THREE.Vector3();
+  for (const [type, solids] of byType) {
+    const mesh = new THREE.InstancedMesh(unitGeometry(type), SOLID, solids.length);
+    solids.forEach((solid, i) => {
+      s.fromArray(scaleOf(solid.shape, flat, thickness));
+      p.fromArray(solid.position);
+      if (flat) p.z = -thickness / 2;
+      q.fromArray(solid.rotation).normalize();
+      mesh.setMatrixAt(i, m.compose(p, q, s));
+    });
+    mesh.computeBoundingBox();
+    mesh.computeBoundingSphere();
+    group.add(mesh);
+  }
+  doc.scene.clouds.forEach((cloud, i) => {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(cloud.points, 3));
+    const material = new THREE.PointsMaterial({ color: CLOUD_COLOURS[i % CLOUD_COLOURS.length], size: 2 * cloud.radius });
+    group.add(new THREE.Points(geometry, material));
+  });
+  if (doc.scene.bounds) group.add(boundsOutline(doc.scene.bounds, flat));
+  return group;
+}
+
+function boundsOutline([lo, hi], flat) {
+  const material = new THREE.LineBasicMaterial({ color: 0x334155 });
+  if (flat) {
+    const corners = [[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]];
+    const geometry = new THREE.BufferGeometry().setFromPoints(corners.map(([x, y]) => new THREE.Vector3(x, y, 0)));
+    return new THREE.LineLoop(geometry, material);
+  }
+  const box = new THREE.Box3(new THREE.Vector3(...lo), new THREE.Vector3(...hi));
+  return new THREE.Box3Helper(box, 0x334155);
+}
