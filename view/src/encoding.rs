@@ -31,7 +31,11 @@ pub fn base64(bytes: &[u8]) -> String {
 pub(crate) fn f32s<S: Serializer>(values: &[f32], serializer: S) -> Result<S::Ok, S::Error> {
     let mut bytes = Vec::with_capacity(values.len() * 4);
     for &v in values {
-        let v = if v.is_nan() { 0.0 } else { v.clamp(f32::MIN, f32::MAX) };
+        let v = if v.is_nan() {
+            0.0
+        } else {
+            v.clamp(f32::MIN, f32::MAX)
+        };
         bytes.extend_from_slice(&v.to_le_bytes());
     }
     serializer.serialize_str(&base64(&bytes))

@@ -31,9 +31,11 @@ function extent(sceneGroup, doc, arm, reach) {
 }
 
 function start() {
+  const t0 = performance.now();
   const doc = decodeDocument(JSON.parse(document.getElementById('mit-star-view-data').textContent));
+  const t1 = performance.now();
   document.title = doc.title;
-  const panelRoot = document.getElementById('panel');
+  const panelRoot = document.getElementById('panel-body');
   if (!webglAvailable()) {
     buildPanel(panelRoot, { ...doc, motions: [], search: null, robot: null }, {});
     fail('This view needs WebGL 2, which this browser does not provide. Enable hardware acceleration (or WebGL) in the browser settings, or open the file in a recent Chrome, Firefox or Safari.');
@@ -51,6 +53,7 @@ function start() {
       if (player.playing) request();
     }
     stage.render();
+    if (!api.ready) api.timings = { decode: t1 - t0, build: t2 - t1, firstFrame: performance.now() - t2 };
     api.ready = true;
   };
   const request = () => {
@@ -109,6 +112,7 @@ function start() {
   });
   showFrame(view, player);
   fitCamera(stage, box, flat);
+  const t2 = performance.now();
 
   const now = () => { stage.render(); api.ready = true; };
   Object.assign(api, {

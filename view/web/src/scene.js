@@ -62,6 +62,8 @@ function boundsOutline([lo, hi], flat) {
     const geometry = new THREE.BufferGeometry().setFromPoints(corners.map(([x, y]) => new THREE.Vector3(x, y, 0)));
     return new THREE.LineLoop(geometry, material);
   }
-  const box = new THREE.Box3(new THREE.Vector3(...lo), new THREE.Vector3(...hi));
-  return new THREE.Box3Helper(box, 0x334155);
+  const size = [0, 1, 2].map((k) => hi[k] - lo[k]);
+  const edges = new THREE.LineSegments(new THREE.EdgesGeometry(new THREE.BoxGeometry(...size)), material);
+  edges.position.set(...[0, 1, 2].map((k) => (lo[k] + hi[k]) / 2));
+  return edges;
 }

@@ -45,7 +45,7 @@ export function fitCamera(stage, box, fromAbove) {
   const centre = box.getCenter(new THREE.Vector3());
   const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
   const fov = THREE.MathUtils.degToRad(camera.fov);
-  const distance = (radius / Math.sin(Math.min(fov, fov * camera.aspect) / 2)) * 1.05;
+  const distance = (radius / Math.sin(Math.min(fov, fov * camera.aspect) / 2)) * 0.9;
   const direction = fromAbove ? new THREE.Vector3(0, 0, 1) : new THREE.Vector3(1.1, -1.6, 1.0).normalize();
   if (fromAbove) {
     camera.up.set(0, 1, 0);

@@ -1,0 +1,3 @@
+//! The view crate's integration tests: one binary, each file a module.
+
+mod pages;
