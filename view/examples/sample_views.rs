@@ -1,5 +1,5 @@
 //! Writes synthetic view pages to a folder, for looking at and for the browser check
-//! (`node view/web/test/browser_check.mjs FOLDER/*.html`):
+//! (`node view/web/browser_check.mjs FOLDER/*.html`):
 //!
 //! - `arm.html`: a toy arm (spheres and one box mesh per link), a plan and a timed trajectory;
 //! - `world2d.html`: a 2-D box world with the search's tree and the informed ellipse;

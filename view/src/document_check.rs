@@ -247,3 +247,131 @@ impl ViewDocument {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{InformedView, LinkView, MeshView, ShapeView, SolidView};
+
+    fn world(frames: usize) -> ViewDocument {
+        let mut doc = ViewDocument::new(ViewKind::World2d, "w");
+        doc.motions.push(MotionView {
+            label: "plan".into(),
+            joint_names: vec!["x".into(), "y".into()],
+            frames,
+            joints: vec![0.5; frames * 2],
+            poses: vec![0.5; frames * 3],
+            times: None,
+            waypoints: vec![0],
+            colliding: Vec::new(),
+        });
+        doc
+    }
+
+    fn arm() -> ViewDocument {
+        let mut doc = ViewDocument::new(ViewKind::Arm, "a");
+        doc.robot = Some(RobotView {
+            name: "r".into(),
+            links: vec![LinkView {
+                name: "l".into(),
+                spheres: vec![0.0, 0.0, 0.0, 0.1],
+                meshes: vec![MeshView {
+                    positions: vec![0.0; 9],
+                    indices: vec![0, 1, 2],
+                    colour: [0.5; 3],
+                }],
+            }],
+            hand: 0,
+        });
+        doc
+    }
+
+    fn problem(doc: &ViewDocument) -> String {
+        doc.check().unwrap_err().to_string()
+    }
+
+    #[test]
+    fn consistent_documents_pass() {
+        world(4).check().unwrap();
+        arm().check().unwrap();
+    }
+
+    #[test]
+    fn lengths_that_do_not_match_their_counts_are_named() {
+        let mut doc = world(4);
+        doc.motions[0].poses.push(1.0);
+        let text = problem(&doc);
+        assert!(
+            text.contains("motions[0] (plan).poses") && text.contains("= 12"),
+            "{text}"
+        );
+        let mut doc = world(4);
+        doc.motions[0].joints.pop();
+        assert!(problem(&doc).contains("frames × joints = 4 × 2"));
+        let mut doc = world(4);
+        doc.motions[0].times = Some(vec![0.0, 1.0]);
+        assert!(problem(&doc).contains("2 values for 4 frames"));
+        let mut doc = world(3);
+        doc.motions[0].times = Some(vec![0.0, 2.0, 1.0]);
+        assert!(problem(&doc).contains("time 2 is before time 1"));
+    }
+
+    #[test]
+    fn frame_indices_and_the_hand_must_be_in_range() {
+        let mut doc = world(4);
+        doc.motions[0].waypoints = vec![0, 4];
+        assert!(problem(&doc).contains("waypoints: frame 4 ≥ 4 frames"));
+        let mut doc = world(4);
+        doc.motions[0].colliding = vec![9];
+        assert!(problem(&doc).contains("colliding: frame 9"));
+        let mut doc = arm();
+        doc.robot.as_mut().unwrap().hand = 1;
+        assert!(problem(&doc).contains("robot.hand: is 1, but the robot has 1 links"));
+        let mut doc = arm();
+        doc.robot.as_mut().unwrap().links[0].meshes[0].indices[2] = 3;
+        assert!(problem(&doc).contains("index 3 ≥ 3 vertices"));
+    }
+
+    #[test]
+    fn non_finite_numbers_are_refused() {
+        let mut doc = world(2);
+        doc.motions[0].poses[4] = f32::NAN;
+        assert!(problem(&doc).contains("value 4 is NaN"));
+        let mut doc = world(2);
+        doc.scene.solids.push(SolidView {
+            name: "b".into(),
+            shape: ShapeView::Sphere { radius: 1.0 },
+            position: [0.0, f32::INFINITY, 0.0],
+            rotation: [0.0, 0.0, 0.0, 1.0],
+        });
+        assert!(problem(&doc).contains("scene.solids[0] (b).position"));
+        let mut doc = world(2);
+        doc.scene.bounds = Some([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
+        assert!(problem(&doc).contains("is above the upper corner"));
+        let mut doc = world(2);
+        doc.search = Some(SearchOverlay {
+            segments: vec![0.0; 6],
+            costs: vec![f32::INFINITY],
+            informed: Some(InformedView {
+                start: [0.0; 3],
+                goal: [1.0, 0.0, 0.0],
+                cost: -1.0,
+            }),
+            label: "s".into(),
+        });
+        assert!(
+            problem(&doc).contains("search.informed.cost"),
+            "∞ costs are fine"
+        );
+    }
+
+    #[test]
+    fn the_kind_decides_whether_there_is_a_robot() {
+        let mut doc = arm();
+        doc.robot = None;
+        assert!(problem(&doc).contains("an arm view has no robot"));
+        let mut doc = world(1);
+        doc.robot = arm().robot;
+        assert!(problem(&doc).contains("a box world draws a point"));
+    }
+}

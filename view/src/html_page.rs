@@ -110,3 +110,55 @@ impl ViewDocument {
         Ok(page.len() as u64)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ViewKind;
+
+    #[test]
+    fn nothing_in_the_json_can_close_the_script_or_open_a_comment() {
+        let mut doc = ViewDocument::new(ViewKind::World2d, "a </script><script>alert(1)</script>");
+        doc.notes.push("<!-- and </SCRIPT > too".into());
+        let html = doc.to_html(ViewLimits::default()).unwrap();
+        let data = html
+            .split("id=\"mit-star-view-data\">")
+            .nth(1)
+            .and_then(|rest| rest.split("</script>").next())
+            .unwrap();
+        assert!(!data.contains('<'), "{data}");
+        let json: serde_json::Value = serde_json::from_str(data).unwrap();
+        assert_eq!(json["title"], "a </script><script>alert(1)</script>");
+        assert_eq!(json["notes"][0], "<!-- and </SCRIPT > too");
+        assert!(
+            html.contains("<title>a &lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt;</title>")
+        );
+        assert_eq!(
+            html.matches("<script").count(),
+            2,
+            "only the data and the viewer"
+        );
+    }
+
+    #[test]
+    fn the_page_carries_the_viewer_and_the_licence() {
+        let html = ViewDocument::new(ViewKind::World3d, "w")
+            .to_html(ViewLimits::default())
+            .unwrap();
+        assert!(html.starts_with("<!DOCTYPE html>"));
+        assert!(html.contains("<meta charset=\"utf-8\">"));
+        assert!(html.contains("mitStarView"), "the bundle is embedded");
+        assert!(html.contains("Permission is hereby granted"));
+        assert!(html.contains(&format!("three.js {}", env!("VIEW_THREE_VERSION"))));
+    }
+
+    #[test]
+    fn an_invalid_document_gives_no_page() {
+        let mut doc = ViewDocument::new(ViewKind::Arm, "no robot");
+        doc.subtitle.push("x".into());
+        assert!(matches!(
+            doc.to_html(ViewLimits::default()),
+            Err(ViewError::Invalid { .. })
+        ));
+    }
+}

@@ -151,11 +151,11 @@ fn volume(solid: &SolidView) -> f32 {
         ShapeView::Cuboid {
             half_extents: [x, y, z],
         } => 8.0 * x * y * z,
-        ShapeView::Sphere { radius } => 4.19 * radius.powi(3),
+        ShapeView::Sphere { radius } => 4.0 / 3.0 * std::f32::consts::PI * radius.powi(3),
         ShapeView::Cylinder {
             radius,
             half_height,
-        } => 6.28 * radius * radius * half_height,
+        } => std::f32::consts::TAU * radius * radius * half_height,
     }
 }
 
@@ -282,5 +282,158 @@ impl ViewLimits {
             motions,
             search,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ViewKind;
+
+    fn world(frames: usize) -> ViewDocument {
+        let mut doc = ViewDocument::new(ViewKind::World3d, "w");
+        doc.motions.push(MotionView {
+            label: "plan".into(),
+            joint_names: vec!["x".into()],
+            frames,
+            joints: (0..frames).map(|f| f as f32).collect(),
+            poses: (0..frames * 3).map(|v| v as f32).collect(),
+            times: Some((0..frames).map(|f| f as f64).collect()),
+            waypoints: vec![0, 7, frames - 1],
+            colliding: vec![3, 4, 5, frames - 2],
+        });
+        doc
+    }
+
+    #[test]
+    fn numbers_are_grouped_and_strides_ordinal() {
+        assert_eq!(grouped(0), "0");
+        assert_eq!(grouped(999), "999");
+        assert_eq!(grouped(1_000_000), "1 000 000");
+        assert_eq!(every(2), "every 2nd");
+        assert_eq!(every(5), "every 5th");
+        assert_eq!(every(11), "every 11th");
+        assert_eq!(every(21), "every 21st");
+        assert_eq!(every(103), "every 103rd");
+    }
+
+    #[test]
+    fn a_long_motion_keeps_its_ends_and_marks_within_the_cap() {
+        let limits = ViewLimits {
+            frames_per_motion: 10,
+            ..ViewLimits::default()
+        };
+        let doc = limits.decimate(&world(1001));
+        let m = &doc.motions[0];
+        // Stride ⌈1000 / 9⌉ = 112: frames 0, 112, …, 896, and 1000.
+        assert_eq!(m.frames, 10);
+        assert_eq!(m.joints.len(), 10);
+        assert_eq!(m.poses.len(), 30);
+        assert_eq!(m.joints[1], 112.0);
+        assert_eq!(m.joints[9], 1000.0);
+        assert_eq!(m.poses[27..30], [3000.0, 3001.0, 3002.0]);
+        assert_eq!(m.times.as_ref().unwrap()[9], 1000.0);
+        assert_eq!(m.waypoints, [0, 9]);
+        assert_eq!(m.colliding, [0, 9]);
+        assert_eq!(
+            doc.notes,
+            [
+                "motion \"plan\": 1 001 frames, 10 drawn (every 112th); waypoints and collisions shown at the nearest drawn frame"
+            ]
+        );
+        let untouched = limits.decimate(&world(10));
+        assert_eq!(untouched, world(10));
+    }
+
+    #[test]
+    fn clouds_solids_and_search_are_cut_to_their_caps() {
+        let mut doc = ViewDocument::new(ViewKind::World3d, "w");
+        doc.scene.clouds = vec![
+            CloudView {
+                name: "a".into(),
+                points: (0..3 * 600).map(|v| v as f32).collect(),
+                radius: 0.1,
+            },
+            CloudView {
+                name: "b".into(),
+                points: vec![0.0; 3 * 400],
+                radius: 0.1,
+            },
+        ];
+        doc.scene.solids = (0..50)
+            .map(|i| SolidView {
+                name: format!("s{i}"),
+                shape: ShapeView::Sphere {
+                    radius: (i % 10) as f32,
+                },
+                position: [0.0; 3],
+                rotation: [0.0, 0.0, 0.0, 1.0],
+            })
+            .collect();
+        doc.search = Some(SearchOverlay {
+            segments: vec![0.0; 6 * 1000],
+            costs: (0..1000).map(|c| c as f32).collect(),
+            informed: None,
+            label: "tree".into(),
+        });
+        let limits = ViewLimits {
+            cloud_points: 200,
+            solids: 10,
+            search_segments: 300,
+            ..ViewLimits::default()
+        };
+        let cut = limits.decimate(&doc);
+        assert_eq!(cut.scene.clouds[0].points.len(), 3 * 120);
+        assert_eq!(cut.scene.clouds[0].points[3..6], [15.0, 16.0, 17.0]);
+        assert_eq!(cut.scene.clouds[1].points.len(), 3 * 80);
+        assert_eq!(cut.scene.solids.len(), 10);
+        assert!(
+            cut.scene
+                .solids
+                .iter()
+                .all(|s| s.shape == ShapeView::Sphere { radius: 9.0 }
+                    || s.shape == ShapeView::Sphere { radius: 8.0 })
+        );
+        let search = cut.search.unwrap();
+        assert_eq!(search.costs.len(), 250);
+        assert_eq!(search.segments.len(), 6 * 250);
+        assert_eq!(search.costs[1], 4.0);
+        assert_eq!(
+            cut.notes,
+            [
+                "cloud: 1 000 points, 200 drawn (every 5th)",
+                "solids: 50, 10 drawn (the largest)",
+                "search: 1 000 segments, 250 drawn (every 4th)",
+            ]
+        );
+    }
+
+    #[test]
+    fn too_many_triangles_give_way_to_spheres() {
+        let mut doc = ViewDocument::new(ViewKind::Arm, "a");
+        doc.robot = Some(crate::RobotView {
+            name: "r".into(),
+            links: vec![crate::LinkView {
+                name: "l".into(),
+                spheres: vec![0.0, 0.0, 0.0, 0.1],
+                meshes: vec![crate::MeshView {
+                    positions: vec![0.0; 9],
+                    indices: vec![0, 1, 2, 0, 2, 1],
+                    colour: [1.0; 3],
+                }],
+            }],
+            hand: 0,
+        });
+        let limits = ViewLimits {
+            mesh_triangles: 1,
+            ..ViewLimits::default()
+        };
+        let cut = limits.decimate(&doc);
+        assert!(cut.robot.unwrap().links[0].meshes.is_empty());
+        assert_eq!(
+            cut.notes,
+            ["meshes: 2 triangles, over the cap of 1: spheres shown"]
+        );
+        assert_eq!(ViewLimits::unlimited().decimate(&doc), doc);
     }
 }

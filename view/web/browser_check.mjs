@@ -1,7 +1,7 @@
 // Opens view pages in headless Chromium and checks each: no console or page errors, ready in
 // time, a canvas that is not blank, and different pictures at the first and the last frame.
 //
-//   node view/web/test/browser_check.mjs [--screenshots DIR] [--browser PATH] PAGE.html…
+//   node view/web/browser_check.mjs [--screenshots DIR] [--browser PATH] PAGE.html…
 //
 // Needs Chromium (Debian: apt-get install -y chromium) and playwright-core (npm ci in view/web).
 // Prints one line per page; exits non-zero naming the page and the check that failed.
@@ -25,7 +25,7 @@ for (let i = 0; i < args.length; i++) {
   else pages.push(args[i]);
 }
 if (pages.length === 0) {
-  console.error('usage: node browser_check.mjs [--screenshots DIR] [--browser PATH] PAGE.html…');
+  console.error('usage: node view/web/browser_check.mjs [--screenshots DIR] [--browser PATH] PAGE.html…');
   process.exit(2);
 }
 if (screenshots) mkdirSync(screenshots, { recursive: true });
