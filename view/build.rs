@@ -59,7 +59,13 @@ fn main() {
     let manifest = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets it"));
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets it"));
     let web = manifest.join("web");
-    for path in ["web/src", "web/package.json", "web/package-lock.json"] {
+    // npm's own record of what node_modules holds: a reinstall or a removal reruns this.
+    for path in [
+        "web/src",
+        "web/package.json",
+        "web/package-lock.json",
+        "web/node_modules/.package-lock.json",
+    ] {
         println!("cargo:rerun-if-changed={path}");
     }
     let pins = pinned(&web);

@@ -5,7 +5,7 @@
 //! - `world2d.html`: a 2-D box world with the search's tree and the informed ellipse;
 //! - `world3d.html`: a 3-D box world;
 //! - `stress_frames.html`, `stress_boxes.html`, `stress_cloud.html`, `stress_all.html`: a motion
-//!   of 10⁶ frames, 10⁵ boxes, a 10⁶-point cloud, and all three at once.
+//!   of 10⁶ frames, 10⁵ boxes, a 10⁶-point cloud, and all three at once with 10⁶ search edges.
 //!
 //! `cargo run -p view --release --example sample_views -- FOLDER`
 
@@ -399,6 +399,30 @@ fn stress_all() -> ViewDocument {
         )
     }));
     doc.scene.clouds = vec![cloud(&mut noise, 1_000_000)];
+    // 10⁶ short random edges over the table, costs growing with the distance from the base.
+    let mut segments = Vec::with_capacity(6_000_000);
+    let mut costs = Vec::with_capacity(1_000_000);
+    for _ in 0..1_000_000 {
+        let a = [
+            noise.range(-0.8, 0.8),
+            noise.range(-0.8, 0.8),
+            noise.range(0.0, 0.8),
+        ];
+        let b = [
+            a[0] + noise.range(-0.02, 0.02),
+            a[1] + noise.range(-0.02, 0.02),
+            a[2],
+        ];
+        segments.extend_from_slice(&a);
+        segments.extend_from_slice(&b);
+        costs.push((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt());
+    }
+    doc.search = Some(SearchOverlay {
+        segments,
+        costs,
+        informed: None,
+        label: "random edges, 10⁶".into(),
+    });
     doc
 }
 

@@ -97,10 +97,34 @@ async function check(context, file) {
     share = await changed(page, 'first', 'last');
     if (screenshots) await page.screenshot({ path: join(screenshots, `${basename(file, '.html')}_last.png`) });
   }
+  // Each toggle changes the picture; play moves the slider.
+  const toggled = [];
+  for (const id of ['mesh-toggle', 'ghost-toggle', 'search-toggle']) {
+    const box = await page.$(`#${id}:not([disabled])`);
+    if (!box) continue;
+    await page.evaluate(() => window.mitStarView.setFrame(0));
+    await snapshot(page, 'before');
+    await box.click();
+    await page.evaluate(() => window.mitStarView.render());
+    await snapshot(page, 'after');
+    const share = await changed(page, 'before', 'after');
+    if (screenshots) await page.screenshot({ path: join(screenshots, `${basename(file, '.html')}_${id}.png`) });
+    await box.click();
+    if (!(share > MIN_CHANGED)) errors.push(`toggling #${id} changes ${(100 * share).toFixed(3)} % of pixels`);
+    toggled.push(id.replace('-toggle', ''));
+  }
+  if (frames > 1) {
+    await page.evaluate(() => window.mitStarView.setFrame(0));
+    await page.click('#play');
+    await page.waitForTimeout(700);
+    const at = Number(await page.$eval('#frame-slider', (s) => s.value));
+    if (!(at > 0)) errors.push('play does not move the slider');
+    if ((await page.textContent('#play')) === 'pause') await page.click('#play');
+  }
   const motions = await page.evaluate(() => window.mitStarView.motionCount());
   for (let k = 1; k < motions; k++) await page.evaluate((m) => window.mitStarView.setMotion(m), k);
   await page.close();
-  const line = `${file}: load ${loadMs} ms${phases}, ${bytes} bytes, ${frames} frames, ${motions} motions, pixel std ${std.toFixed(1)}, changed first→last ${share === null ? '-' : (100 * share).toFixed(2) + ' %'}`;
+  const line = `${file}: load ${loadMs} ms${phases}, ${bytes} bytes, ${frames} frames, ${motions} motions, pixel std ${std.toFixed(1)}, changed first→last ${share === null ? '-' : (100 * share).toFixed(2) + ' %'}, toggles checked: ${toggled.join(' ') || '-'}`;
   if (errors.length > 0) throw new Error(`${errors.length} errors: ${errors.slice(0, 5).join(' | ')}\n  ${line}`);
   if (!(std > MIN_STD)) throw new Error(`blank canvas: pixel std ${std.toFixed(2)} ≤ ${MIN_STD}\n  ${line}`);
   if (share !== null && !(share > MIN_CHANGED)) throw new Error(`first and last frames look alike: ${(100 * share).toFixed(3)} % of pixels changed ≤ ${100 * MIN_CHANGED} %\n  ${line}`);

@@ -11,8 +11,8 @@ function el(tag, attrs = {}, ...children) {
   return node;
 }
 
-function toggle(label, checked, onChange, disabled = false) {
-  const box = el('input', { type: 'checkbox', checked, disabled });
+function toggle(id, label, checked, onChange, disabled = false) {
+  const box = el('input', { type: 'checkbox', id, checked, disabled });
   box.addEventListener('change', () => onChange(box.checked));
   return el('label', { class: 'toggle' }, box, ` ${label}`);
 }
@@ -48,11 +48,11 @@ export function buildPanel(root, doc, actions) {
   const toggles = el('div', { class: 'toggles' });
   if (doc.robot) {
     const hasMeshes = doc.robot.links.some((l) => l.meshes.length > 0);
-    toggles.append(toggle('meshes (off: spheres)', hasMeshes, actions.setMeshes, !hasMeshes));
+    toggles.append(toggle('mesh-toggle', 'meshes (off: spheres)', hasMeshes, actions.setMeshes, !hasMeshes));
     if (!hasMeshes) toggles.append(el('p', { class: 'note' }, 'no meshes in this view: spheres shown'));
   }
-  if (doc.motions.some((m) => m.waypoints.length > 0)) toggles.append(toggle('ghosts at waypoints', true, actions.setGhosts));
-  if (doc.search) toggles.append(toggle(`search: ${doc.search.label}`, actions.searchShown, actions.setSearch));
+  if (doc.motions.some((m) => m.waypoints.length > 0)) toggles.append(toggle('ghost-toggle', 'ghosts at waypoints', true, actions.setGhosts));
+  if (doc.search) toggles.append(toggle('search-toggle', `search: ${doc.search.label}`, actions.searchShown, actions.setSearch));
   root.append(toggles);
   if (doc.search && actions.costRange) {
     const [lo, hi] = actions.costRange;

@@ -50,11 +50,12 @@ export class RobotFigure {
     this.own = this.parts.map((part) => part.material);
   }
 
-  /** Draws the meshes (true) or the spheres (false). */
+  /** Draws the meshes (true; spheres for a link without any) or the spheres (false). */
   setMeshes(useMeshes) {
     for (const link of this.links) {
-      link.meshes.visible = useMeshes;
-      link.spheres.visible = !useMeshes;
+      const meshes = useMeshes && link.meshes.children.length > 0;
+      link.meshes.visible = meshes;
+      link.spheres.visible = !meshes;
     }
   }
 
