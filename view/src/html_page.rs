@@ -32,6 +32,8 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px/1.4 system-ui
 #joints td.value { text-align: right; }
 #message { position: fixed; top: 40%; left: 50%; transform: translateX(-50%); max-width: 520px; padding: 16px;
   background: #fff7ed; border: 1px solid #f59e0b; border-radius: 6px; font-size: 15px; }
+#tooltip { position: fixed; pointer-events: none; background: #111827; color: #f9fafb; padding: 2px 6px;
+  border-radius: 3px; font-size: 12px; }
 #about { margin-top: 8px; color: #6b7280; }
 #about pre { white-space: pre-wrap; font-size: 11px; }
 ";
@@ -87,7 +89,7 @@ impl ViewDocument {
              (MIT licence):</p><pre>{licence}</pre></details></aside>\n",
             env!("VIEW_THREE_VERSION")
         ));
-        page.push_str("<div id=\"message\" hidden></div>\n");
+        page.push_str("<div id=\"message\" hidden></div>\n<div id=\"tooltip\" hidden></div>\n");
         page.push_str("<script type=\"application/json\" id=\"mit-star-view-data\">");
         page.push_str(&json);
         page.push_str("</script>\n<script>");

@@ -4,7 +4,7 @@ import { decodeDocument } from './decode.js';
 import { MotionPlayer } from './motion.js';
 import { buildPanel, showFrame } from './panel.js';
 import { PointFigure, RobotFigure, meshGeometries, robotReach } from './robot.js';
-import { buildScene } from './scene.js';
+import { buildScene, solidAt } from './scene.js';
 import { buildSearch } from './search.js';
 import { createStage, fitCamera, webglAvailable } from './stage.js';
 
@@ -28,6 +28,24 @@ function extent(sceneGroup, doc, arm, reach) {
   }
   if (doc.search) for (let i = 0; i + 2 < doc.search.segments.length; i += 3) box.expandByPoint(p.fromArray(doc.search.segments, i));
   return box.isEmpty() ? box : box.expandByScalar(reach);
+}
+
+/** Names the solid under the pointer in a tooltip (looked up once per animation frame). */
+function watchHover(stage, sceneGroup) {
+  const tip = document.getElementById('tooltip');
+  let pending = null;
+  stage.renderer.domElement.addEventListener('pointermove', (event) => {
+    if (pending === null) requestAnimationFrame(() => {
+      const rect = stage.renderer.domElement.getBoundingClientRect();
+      const pointer = new THREE.Vector2(((pending.clientX - rect.left) / rect.width) * 2 - 1, -((pending.clientY - rect.top) / rect.height) * 2 + 1);
+      const name = pending.buttons === 0 ? solidAt(sceneGroup, stage.camera, pointer) : null;
+      tip.hidden = name === null;
+      if (name !== null) Object.assign(tip.style, { left: `${pending.clientX + 12}px`, top: `${pending.clientY + 12}px` });
+      tip.textContent = name ?? '';
+      pending = null;
+    });
+    pending = event;
+  });
 }
 
 function start() {
@@ -112,6 +130,7 @@ function start() {
   });
   showFrame(view, player);
   fitCamera(stage, box, flat);
+  watchHover(stage, sceneGroup);
   const t2 = performance.now();
 
   const now = () => { stage.render(); api.ready = true; };

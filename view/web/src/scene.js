@@ -43,6 +43,7 @@ export function buildScene(doc, thickness) {
     });
     mesh.computeBoundingBox();
     mesh.computeBoundingSphere();
+    mesh.userData.solids = solids;
     group.add(mesh);
   }
   doc.scene.clouds.forEach((cloud, i) => {
@@ -66,4 +67,13 @@ function boundsOutline([lo, hi], flat) {
   const edges = new THREE.LineSegments(new THREE.EdgesGeometry(new THREE.BoxGeometry(...size)), material);
   edges.position.set(...[0, 1, 2].map((k) => (lo[k] + hi[k]) / 2));
   return edges;
+}
+
+/** The name of the solid under `pointer` (normalised device coordinates), or null. */
+export function solidAt(group, camera, pointer) {
+  const raycaster = new THREE.Raycaster();
+  raycaster.setFromCamera(pointer, camera);
+  const solids = group.children.filter((child) => child.userData.solids);
+  const hit = raycaster.intersectObjects(solids, false)[0];
+  return hit ? hit.object.userData.solids[hit.instanceId].name : null;
 }
