@@ -149,6 +149,12 @@ fn check_frames(field: &str, frames: &[usize], n: usize) -> Checked {
 fn check_motion(k: usize, motion: &MotionView, pose_width: usize, what: &str) -> Checked {
     let field = |name: &str| format!("motions[{k}] ({}).{name}", motion.label);
     let n = motion.frames;
+    if n == 0 {
+        return Err(ViewError::invalid(
+            field("frames"),
+            "is 0: a motion needs a frame",
+        ));
+    }
     let dof = motion.joint_names.len();
     length(
         &field("joints"),
@@ -324,6 +330,7 @@ mod tests {
         let mut doc = world(4);
         doc.motions[0].colliding = vec![9];
         assert!(problem(&doc).contains("colliding: frame 9"));
+        assert!(problem(&world(0)).contains("frames: is 0"));
         let mut doc = arm();
         doc.robot.as_mut().unwrap().hand = 1;
         assert!(problem(&doc).contains("robot.hand: is 1, but the robot has 1 links"));

@@ -5,9 +5,10 @@ use crate::{CloudView, MotionView, SearchOverlay, ShapeView, SolidView, ViewDocu
 
 /// Caps on what one page draws, so that it opens in a few seconds whatever the plan.
 ///
-/// The defaults keep a page under about 10 MB and opening in under 2 s in headless Chromium
-/// (software WebGL) on the project's machines, even for 10⁶-frame motions, 10⁵ boxes and
-/// 10⁶-point clouds (`view/examples/sample_views.rs` makes such pages).
+/// With the defaults, a page holding all at once a 10⁶-frame motion, 10⁵ boxes, a 10⁶-point
+/// cloud and 10⁶ search edges is 15 MB and opens in under 3 s in headless Chromium with
+/// software WebGL on one core; each alone gives about 4 MB and 1–2 s
+/// (`view/examples/sample_views.rs` makes such pages, `view/web/browser_check.mjs` times them).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ViewLimits {
     /// Frames kept of each motion (at least 2: the first and the last are always kept).

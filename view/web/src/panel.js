@@ -33,6 +33,8 @@ export function buildPanel(root, doc, actions) {
     root.append(el('label', { class: 'row' }, 'motion ', select));
   } else if (doc.motions.length === 1) {
     root.append(el('p', { class: 'label' }, doc.motions[0].label));
+  } else if (doc.robot) {
+    root.append(el('p', { class: 'note' }, 'no motion: the robot is not drawn (its pose is unknown)'));
   }
   if (doc.motions.length > 0) {
     view.slider = el('input', { type: 'range', id: 'frame-slider', min: '0', max: '0', step: '1', value: '0' });

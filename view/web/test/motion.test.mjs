@@ -1,9 +1,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 
-// motion.js imports three; only its pure helper is tested here, through a copy-free import
-// of the module once three resolves (it does: three is a dependency).
-const { evenly } = await import('../src/motion.js');
+import { evenly } from '../src/motion.js';
 
 test('ghosts: at most the cap, evenly chosen, first and last kept', () => {
   const frames = Array.from({ length: 100 }, (_, i) => i * 10);
