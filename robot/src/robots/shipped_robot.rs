@@ -36,7 +36,8 @@ pub struct ShippedRobot {
     /// Its data folder, as an absolute path into this crate's source.
     data: &'static str,
     /// Visual mesh names of its URDF drawn with another, smaller file of the same link
-    /// (`robot/data/<name>/meshes/README.md` says which and why).
+    /// (`robot/data/<name>/meshes/README.md` says which and why; the UR5's
+    /// `visual/README.md`).
     mesh_aliases: &'static [(&'static str, &'static str)],
 }
 
@@ -53,8 +54,10 @@ const PANDA_ALIASES: [(&str, &str); 8] = [
 ];
 
 /// The UR5 arm's COLLADA visual meshes are 6 MB: its collision STLs (0.3 MB, shipped for
-/// `spherise`) are drawn instead; the gripper base's coarse mesh stands for its fine one.
-const UR5_ALIASES: [(&str, &str); 8] = [
+/// `spherise`) are drawn instead. The gripper's meshes live in `visual/` (out of
+/// `spherise`'s reach, which keeps VAMP's spheres for the gripper), its base's coarse mesh
+/// standing for the fine one.
+const UR5_ALIASES: [(&str, &str); 13] = [
     (
         "package://meshes/ur5/visual/base.dae",
         "meshes/ur5/collision/base.stl",
@@ -85,7 +88,27 @@ const UR5_ALIASES: [(&str, &str); 8] = [
     ),
     (
         "package://meshes/robotiq/robotiq_85_base_link_fine.STL",
-        "meshes/robotiq/robotiq_85_base_link_coarse.STL",
+        "visual/robotiq/robotiq_85_base_link_coarse.STL",
+    ),
+    (
+        "package://meshes/robotiq_fts300.stl",
+        "visual/robotiq_fts300.stl",
+    ),
+    (
+        "meshes/robotiq/inner_finger_fine.STL",
+        "visual/robotiq/inner_finger_fine.STL",
+    ),
+    (
+        "meshes/robotiq/inner_knuckle_fine.STL",
+        "visual/robotiq/inner_knuckle_fine.STL",
+    ),
+    (
+        "meshes/robotiq/outer_finger_fine.STL",
+        "visual/robotiq/outer_finger_fine.STL",
+    ),
+    (
+        "meshes/robotiq/outer_knuckle_fine.STL",
+        "visual/robotiq/outer_knuckle_fine.STL",
     ),
 ];
 
@@ -222,7 +245,7 @@ impl ShippedRobot {
 
     /// The [`MeshResolver`] for its URDF's visual meshes: relative and `package://` names
     /// under [`data_folder`](Self::data_folder), with the aliases its
-    /// `meshes/README.md` lists. Without the folder every mesh is reported missing by
+    /// `meshes/README.md` (the UR5's `visual/README.md`) lists. Without the folder every mesh is reported missing by
     /// [`VisualMeshes::load`](crate::VisualMeshes::load); the model itself is compiled in and
     /// works anywhere.
     pub fn mesh_resolver(&self) -> MeshResolver {
