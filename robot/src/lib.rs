@@ -43,6 +43,7 @@
 //! | [`MotionLimits`], [`JointLimitsYaml`], [`PANDA_JOINT_LIMITS`] | velocity and acceleration limits per coordinate: the URDF's, a MoveIt `joint_limits.yaml`'s or given, scaled; mimic joints bound their leaders |
 //! | [`Trajectory`], [`Sample`], [`BlendCertifier`], [`BlendReport`], [`merge_repeated_waypoints`] | timed paths: stop at each corner (time-optimal trapezoids on the segments) or parabolic blends certified collision-free; exact piecewise-quadratic evaluation |
 //! | [`TrajectoryFile`], [`check_trajectory`], [`TRAJECTORY_TOLERANCE`], [`TrajectoryCheck`], [`Violation`], [`TrajectoryError`] | trajectories as JSON or CSV, and their check against the robot's limits and the scene |
+//! | [`LinkVisual`], [`VisualGeometry`], [`VisualMeshes`], [`LinkMesh`], [`MeshLoadFailure`], [`MeshLoadError`], [`PRIMITIVE_SEGMENTS`], [`MeshResolver`], [`ResolveError`] | what a viewer draws: each link's URDF visual elements (colours resolved), loaded as triangles in the link frame, mesh files found under the URDF's folder and package roots; failures reported per file |
 //! | [`ModelWarning`] | what a lenient model ignored: SRDF and allowed-collision entries naming links it lacks |
 
 #![forbid(unsafe_code)]
@@ -59,6 +60,7 @@ mod robots;
 mod scenes;
 mod spherise;
 mod trajectory;
+mod visuals;
 
 pub use arm_error::ArmError;
 pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
@@ -78,17 +80,19 @@ pub use inverse_kinematics::{
     IkError, IkSolution, IkSolver, OrientationTolerance, PoseGoal, PoseTarget, PositionTolerance,
 };
 pub use model::{
-    Kinematics, LeverArms, LinkFrame, LinkSphere, ModelError, ModelWarning, Motion, RobotModel,
-    rpy_matrix,
+    Kinematics, LeverArms, LinkFrame, LinkSphere, LinkVisual, ModelError, ModelWarning, Motion,
+    RobotModel, VisualGeometry, rpy_matrix,
 };
 pub use robots::{RobotSource, RobotSourceError, ShippedRobot};
 pub use scenes::{MbmProblem, MovingObstacle, MovingScene, Obstacle, Scene, SceneError, Shape};
 pub use spherise::{
-    CoverOptions, CoverSphere, LinkReport, LinkSource, MAX_COVER_CELLS, Placement, SphereCover,
-    SpheriseError, SpheriseOptions, SpherisedUrdf, TriangleMesh, parse_stl, read_stl,
+    CoverOptions, CoverSphere, LinkReport, LinkSource, MAX_COVER_CELLS, MeshResolver, Placement,
+    ResolveError, SphereCover, SpheriseError, SpheriseOptions, SpherisedUrdf, TriangleMesh,
+    parse_stl, read_stl,
 };
 pub use trajectory::{
     BlendCertifier, BlendReport, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS, Sample,
     TRAJECTORY_TOLERANCE, Trajectory, TrajectoryCheck, TrajectoryError, TrajectoryFile, Violation,
     check_trajectory, merge_repeated_waypoints,
 };
+pub use visuals::{LinkMesh, MeshLoadError, MeshLoadFailure, PRIMITIVE_SEGMENTS, VisualMeshes};

@@ -38,3 +38,4 @@ mod sparse_spacing_on_arms;
 mod sphere_cover;
 mod sphere_less_links;
 mod trajectory;
+mod visual_meshes;

@@ -10,6 +10,8 @@
 //!   the coordinates and link frames from the joints (planned, held, mimic; the prismatic
 //!   weight); `planning_group.rs` reads SRDF planning groups and the held joints' values;
 //!   `rrt_range.rs` gives the RRT range its problems default to (measured, or a rule).
+//! - [`LinkVisual`], [`VisualGeometry`] (`link_visual.rs`): each link's URDF `<visual>`
+//!   elements (origin, mesh file and scale or primitive, material colour), for viewers.
 //! - [`Kinematics`] (`kinematics.rs`): forward kinematics, link poses and sphere centres, `f32`
 //!   and `f64`, no allocation; its per-joint steps are what the SIMD lanes of `checking` replay.
 //! - [`LeverArms`] (`lever_arms.rs`): how far each link's spheres can move per unit of each
@@ -26,6 +28,7 @@ mod collision_pairs;
 mod joint_limits;
 mod kinematics;
 mod lever_arms;
+mod link_visual;
 mod model_error;
 mod model_joint;
 mod model_pairs;
@@ -39,6 +42,7 @@ mod xml_guard;
 pub use kinematics::Kinematics;
 pub(crate) use kinematics::{JointMotion, to_f32};
 pub use lever_arms::LeverArms;
+pub use link_visual::{LinkVisual, VisualGeometry};
 pub use model_error::ModelError;
 pub use model_warning::ModelWarning;
 pub use robot_model::{LinkFrame, LinkSphere, Motion, RobotModel, rpy_matrix};

@@ -8,6 +8,7 @@ use glam::{DAffine3, DMat3, DQuat, DVec3};
 use spaces::{Joint, JointSpace};
 
 use crate::model::joint_limits::{checked_limits, checked_mimic, keep_mimic_limits};
+use crate::model::link_visual::{LinkVisual, read_visuals};
 use crate::model::model_joint::ModelJoint;
 use crate::{ModelError, ModelWarning};
 
@@ -88,6 +89,7 @@ pub struct RobotModel {
     /// Per link, the name of the joint above it (`None` for the root).
     pub(super) link_joints: Vec<Option<String>>,
     spheres: Vec<LinkSphere>,
+    visuals: Vec<LinkVisual>,
     ranges: Vec<Range<usize>>,
     bounds: Vec<Option<(DVec3, f64)>>,
     pub(super) pairs: Vec<(usize, usize)>,
@@ -115,7 +117,8 @@ impl RobotModel {
     /// [`ModelError::DuplicateName`] for two joints
     /// (or links) of one name, and the variants naming a link or joint for non-sphere
     /// collision geometry, unsupported joints, bad axes, limits or numbers (origins and radii
-    /// beyond 10⁶ m included), joint limits or mimic factors beyond their bounds
+    /// beyond 10⁶ m included, and in `<visual>` elements: origins, sizes, mesh scales, colours
+    /// outside `[0, 1]`), joint limits or mimic factors beyond their bounds
     /// ([`ModelError::LimitsTooWide`], [`ModelError::BadMimic`]), mimic joints whose limits
     /// cannot be kept ([`ModelError::MimicLimits`]), and links that do not form one tree.
     ///
@@ -255,6 +258,7 @@ impl RobotModel {
                 pairs.push((i, j));
             }
         }
+        let visuals = read_visuals(&urdf, &links)?;
         let mut model = Self {
             name: urdf.name,
             links,
@@ -264,6 +268,7 @@ impl RobotModel {
             joints,
             link_joints,
             spheres,
+            visuals,
             ranges,
             bounds,
             pairs,
@@ -308,6 +313,13 @@ impl RobotModel {
     /// Every collision sphere, grouped by link in tree order.
     pub fn spheres(&self) -> &[LinkSphere] {
         &self.spheres
+    }
+
+    /// Every visual element (URDF `<visual>`: what a viewer draws), in tree order of their
+    /// links, with colours resolved; links kept only as frames (no spheres) keep theirs.
+    /// [`VisualMeshes::load`](crate::VisualMeshes::load) turns them into triangles.
+    pub fn visuals(&self) -> &[LinkVisual] {
+        &self.visuals
     }
 
     /// The spheres of `link`, as a range of [`spheres`](Self::spheres).
@@ -417,7 +429,7 @@ fn joint_frame(
 }
 
 /// A URDF pose: translation `xyz`, rotation `Rz(yaw)·Ry(pitch)·Rx(roll)` from `rpy`.
-fn pose(p: &urdf_rs::Pose, element: &str) -> Result<DAffine3, ModelError> {
+pub(super) fn pose(p: &urdf_rs::Pose, element: &str) -> Result<DAffine3, ModelError> {
     if let Some(&v) = p
         .xyz
         .0

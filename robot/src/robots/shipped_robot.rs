@@ -1,6 +1,8 @@
 //! [`ShippedRobot`]: the robot models compiled into this crate, and their problem sets.
 
-use crate::{ModelError, RobotModel};
+use std::path::{Path, PathBuf};
+
+use crate::{MeshResolver, ModelError, RobotModel};
 
 /// A robot model shipped with this crate (`robot/data/<name>/`): its spherised URDF and SRDF,
 /// compiled in, and where its MotionBenchMaker problems are.
@@ -31,7 +33,126 @@ pub struct ShippedRobot {
     pub range: f64,
     urdf: &'static str,
     srdf: &'static str,
+    /// Its data folder, as an absolute path into this crate's source.
+    data: &'static str,
+    /// Visual mesh names of its URDF drawn with another, smaller file of the same link
+    /// (`robot/data/<name>/meshes/README.md` says which and why; the UR5's
+    /// `visual/README.md`).
+    mesh_aliases: &'static [(&'static str, &'static str)],
 }
+
+/// The Panda's visual meshes are 9 MB: its collision meshes (0.4 MB) are drawn instead.
+const PANDA_ALIASES: [(&str, &str); 8] = [
+    ("meshes/visual/link1.obj", "meshes/collision/link1.obj"),
+    ("meshes/visual/link2.obj", "meshes/collision/link2.obj"),
+    ("meshes/visual/link3.obj", "meshes/collision/link3.obj"),
+    ("meshes/visual/link4.obj", "meshes/collision/link4.obj"),
+    ("meshes/visual/link5.obj", "meshes/collision/link5.obj"),
+    ("meshes/visual/link6.obj", "meshes/collision/link6.obj"),
+    ("meshes/visual/hand.obj", "meshes/collision/hand.obj"),
+    ("meshes/visual/finger.obj", "meshes/collision/finger.obj"),
+];
+
+/// The UR5 arm's COLLADA visual meshes are 6 MB: its collision STLs (0.3 MB, shipped for
+/// `spherise`) are drawn instead. The gripper's meshes live in `visual/` (out of
+/// `spherise`'s reach, which keeps VAMP's spheres for the gripper), its base's coarse mesh
+/// standing for the fine one.
+const UR5_ALIASES: [(&str, &str); 13] = [
+    (
+        "package://meshes/ur5/visual/base.dae",
+        "meshes/ur5/collision/base.stl",
+    ),
+    (
+        "package://meshes/ur5/visual/shoulder.dae",
+        "meshes/ur5/collision/shoulder.stl",
+    ),
+    (
+        "package://meshes/ur5/visual/upperarm.dae",
+        "meshes/ur5/collision/upperarm.stl",
+    ),
+    (
+        "package://meshes/ur5/visual/forearm.dae",
+        "meshes/ur5/collision/forearm.stl",
+    ),
+    (
+        "package://meshes/ur5/visual/wrist1.dae",
+        "meshes/ur5/collision/wrist1.stl",
+    ),
+    (
+        "package://meshes/ur5/visual/wrist2.dae",
+        "meshes/ur5/collision/wrist2.stl",
+    ),
+    (
+        "package://meshes/ur5/visual/wrist3.dae",
+        "meshes/ur5/collision/wrist3.stl",
+    ),
+    (
+        "package://meshes/robotiq/robotiq_85_base_link_fine.STL",
+        "visual/robotiq/robotiq_85_base_link_coarse.STL",
+    ),
+    (
+        "package://meshes/robotiq_fts300.stl",
+        "visual/robotiq_fts300.stl",
+    ),
+    (
+        "meshes/robotiq/inner_finger_fine.STL",
+        "visual/robotiq/inner_finger_fine.STL",
+    ),
+    (
+        "meshes/robotiq/inner_knuckle_fine.STL",
+        "visual/robotiq/inner_knuckle_fine.STL",
+    ),
+    (
+        "meshes/robotiq/outer_finger_fine.STL",
+        "visual/robotiq/outer_finger_fine.STL",
+    ),
+    (
+        "meshes/robotiq/outer_knuckle_fine.STL",
+        "visual/robotiq/outer_knuckle_fine.STL",
+    ),
+];
+
+/// Baxter's COLLADA visual meshes are over 20 MB: Rethink's simplified STLs of the same
+/// links (the arms and head, but `W1`, whose simplified mesh lacks the COLLADA file's node
+/// rotation), its collision meshes (torso, pedestal) and the gripper's STL are drawn
+/// instead.
+const BAXTER_ALIASES: [(&str, &str); 11] = [
+    ("meshes/head/H0.DAE", "meshes/head/H0_simple.STL"),
+    ("meshes/head/H1.DAE", "meshes/head/H1_simple.STL"),
+    (
+        "meshes/upper_shoulder/S0.DAE",
+        "meshes/upper_shoulder/S0_simple.STL",
+    ),
+    (
+        "meshes/lower_shoulder/S1.DAE",
+        "meshes/lower_shoulder/S1_simple.STL",
+    ),
+    (
+        "meshes/upper_elbow/E0.DAE",
+        "meshes/upper_elbow/E0_simple.STL",
+    ),
+    (
+        "meshes/lower_elbow/E1.DAE",
+        "meshes/lower_elbow/E1_simple.STL",
+    ),
+    (
+        "meshes/upper_forearm/W0.DAE",
+        "meshes/upper_forearm/W0_simple.STL",
+    ),
+    ("meshes/wrist/W2.DAE", "meshes/wrist/W2_simple.STL"),
+    (
+        "meshes/torso/base_link.DAE",
+        "meshes/torso/base_link_collision.STL",
+    ),
+    (
+        "meshes/base/PEDESTAL.DAE",
+        "meshes/base/pedestal_link_collision.STL",
+    ),
+    (
+        "meshes/electric_gripper/electric_gripper_base.DAE",
+        "meshes/electric_gripper/electric_gripper_base.STL",
+    ),
+];
 
 /// The shipped robots, the default ([`ShippedRobot::DEFAULT`]) first.
 const SHIPPED: [ShippedRobot; 4] = [
@@ -47,6 +168,8 @@ const SHIPPED: [ShippedRobot; 4] = [
         range: 1.0,
         urdf: include_str!("../../data/panda/panda_spherized.urdf"),
         srdf: include_str!("../../data/panda/panda.srdf"),
+        data: concat!(env!("CARGO_MANIFEST_DIR"), "/data/panda"),
+        mesh_aliases: &PANDA_ALIASES,
     },
     ShippedRobot {
         name: "ur5",
@@ -57,6 +180,8 @@ const SHIPPED: [ShippedRobot; 4] = [
         range: 1.0,
         urdf: include_str!("../../data/ur5/ur5_spherized.urdf"),
         srdf: include_str!("../../data/ur5/ur5.srdf"),
+        data: concat!(env!("CARGO_MANIFEST_DIR"), "/data/ur5"),
+        mesh_aliases: &UR5_ALIASES,
     },
     ShippedRobot {
         name: "fetch",
@@ -67,6 +192,8 @@ const SHIPPED: [ShippedRobot; 4] = [
         range: 1.25,
         urdf: include_str!("../../data/fetch/fetch_spherized.urdf"),
         srdf: include_str!("../../data/fetch/fetch.srdf"),
+        data: concat!(env!("CARGO_MANIFEST_DIR"), "/data/fetch"),
+        mesh_aliases: &[],
     },
     ShippedRobot {
         name: "baxter",
@@ -77,6 +204,8 @@ const SHIPPED: [ShippedRobot; 4] = [
         range: 0.5,
         urdf: include_str!("../../data/baxter/baxter_spherized.urdf"),
         srdf: include_str!("../../data/baxter/baxter.srdf"),
+        data: concat!(env!("CARGO_MANIFEST_DIR"), "/data/baxter"),
+        mesh_aliases: &BAXTER_ALIASES,
     },
 ];
 
@@ -106,6 +235,25 @@ impl ShippedRobot {
             .map(|r| r.name)
             .collect::<Vec<_>>()
             .join(", ")
+    }
+
+    /// Its data folder in this crate's source (`robot/data/<name>`), where its mesh files
+    /// are; it may be missing when the program was moved away from the source.
+    pub fn data_folder(&self) -> &'static Path {
+        Path::new(self.data)
+    }
+
+    /// The [`MeshResolver`] for its URDF's visual meshes: relative and `package://` names
+    /// under [`data_folder`](Self::data_folder), with the aliases its
+    /// `meshes/README.md` (the UR5's `visual/README.md`) lists. Without the folder every mesh is reported missing by
+    /// [`VisualMeshes::load`](crate::VisualMeshes::load); the model itself is compiled in and
+    /// works anywhere.
+    pub fn mesh_resolver(&self) -> MeshResolver {
+        let folder = PathBuf::from(self.data);
+        self.mesh_aliases.iter().fold(
+            MeshResolver::new(Some(folder.clone()), vec![folder]),
+            |resolver, &(name, instead)| resolver.with_alias(name, instead),
+        )
     }
 
     /// The planning groups its SRDF defines, in file order (`--group NAME`).
@@ -171,6 +319,28 @@ mod tests {
             .unwrap();
         assert_eq!(bare.self_collision_pairs(), panda.self_collision_pairs());
         assert_eq!(ShippedRobot::names(), "panda, ur5, fetch, baxter");
+    }
+
+    #[test]
+    fn every_mesh_alias_is_named_by_its_urdf_and_stands_for_a_shipped_file() {
+        for robot in ShippedRobot::all() {
+            let named: Vec<String> = robot
+                .model(false)
+                .unwrap()
+                .visuals()
+                .iter()
+                .filter_map(|v| match &v.geometry {
+                    crate::VisualGeometry::Mesh { filename, .. } => Some(filename.clone()),
+                    _ => None,
+                })
+                .collect();
+            let resolver = robot.mesh_resolver();
+            for &(name, instead) in robot.mesh_aliases {
+                assert!(named.iter().any(|n| n == name), "{}: {name}", robot.name);
+                assert_eq!(resolver.alias_of(name), instead);
+                assert!(robot.data_folder().join(instead).is_file(), "{instead}");
+            }
+        }
     }
 
     #[test]

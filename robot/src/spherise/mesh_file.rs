@@ -41,7 +41,7 @@ const LFS_POINTER: &[u8] = b"version https://git-lfs.github.com/spec/";
 /// for another extension, [`SpheriseError::Stl`] or [`SpheriseError::Mesh`] for a file its
 /// reader refuses, [`SpheriseError::BadMesh`] for one without triangles or with a coordinate
 /// that is not finite.
-pub(super) fn read_mesh(path: &Path) -> Result<TriangleMesh, SpheriseError> {
+pub(crate) fn read_mesh(path: &Path) -> Result<TriangleMesh, SpheriseError> {
     let extension = path
         .extension()
         .map(|e| e.to_string_lossy().to_lowercase())

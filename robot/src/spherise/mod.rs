@@ -15,7 +15,8 @@
 //!   (candidates on an approximate medial axis, a finer grid, pairs merged).
 //! - [`SpherisedUrdf`] (`spherised_urdf.rs`): a URDF's collision meshes and primitives
 //!   covered link by link, and the URDF rewritten with spheres; `urdf_collisions.rs` reads
-//!   the collision elements and finds their mesh files; `sphere_budget.rs` finds the finest
+//!   the collision elements and finds their mesh files through [`MeshResolver`]
+//!   (`mesh_resolver.rs`: `package://`, relative and absolute names, aliases); `sphere_budget.rs` finds the finest
 //!   tolerance whose covers fit a whole-model sphere budget.
 //! - [`SpheriseError`] (`spherise_error.rs`): what went wrong, naming the file or link.
 //!
@@ -26,11 +27,12 @@
 //!
 //! May use: `glam`, `parry3d-f64`, `roxmltree`, `mesh-loader`, `thiserror`, and
 //! `rpy_matrix` from `model`.
-//! Nothing else in the crate uses it.
+//! Used by `visuals` (the mesh reader and the resolver, for visual meshes).
 
 mod cell_grid;
 mod medial_cover;
 mod mesh_file;
+mod mesh_resolver;
 mod solid;
 mod sphere_budget;
 mod sphere_cover;
@@ -46,6 +48,8 @@ mod urdf_collisions;
 /// 10 mm tolerance, a mesh up to about 0.9 m in each direction fits.
 pub const MAX_COVER_CELLS: usize = 4_000_000;
 
+pub(crate) use mesh_file::read_mesh;
+pub use mesh_resolver::{MeshResolver, ResolveError};
 pub use sphere_cover::{CoverOptions, CoverSphere, Placement, SphereCover};
 pub use spherise_error::SpheriseError;
 pub use spherised_urdf::{LinkReport, LinkSource, SpheriseOptions, SpherisedUrdf};

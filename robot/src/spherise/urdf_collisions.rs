@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat3, DVec3};
 
+use super::mesh_resolver::{MeshResolver, ResolveError};
 use super::spherise_error::SpheriseError;
 use crate::model::rpy_matrix;
 
@@ -171,39 +172,25 @@ fn bad(link: &str, what: &'static str, text: &str, count: usize) -> SpheriseErro
     }
 }
 
-/// Where a mesh file named in a URDF is: `package://PKG/rest` under each package root as
-/// `ROOT/PKG/rest` or `ROOT/rest`, `file://` as an absolute path, and a relative name beside
-/// the URDF or under a root. `Ok(Err(tried))` when the name is understood but no such file
-/// exists.
+/// Where a mesh file named in a URDF is, as [`MeshResolver`] finds it (`urdf_folder` for
+/// relative names, then the package roots). `Ok(Err(tried))` when the name is understood but
+/// no such file exists.
 pub(super) fn resolve(
     link: &str,
     filename: &str,
     urdf_folder: &Path,
     package_roots: &[PathBuf],
 ) -> Result<Result<PathBuf, Vec<PathBuf>>, SpheriseError> {
-    let tried: Vec<PathBuf> = if let Some(rest) = filename.strip_prefix("package://") {
-        if package_roots.is_empty() {
-            return Err(SpheriseError::UnknownPackage {
-                link: link.to_owned(),
-                uri: filename.to_owned(),
-                tried: "no package root given".into(),
-            });
-        }
-        let without_package = rest.split_once('/').map_or(rest, |(_, r)| r);
-        package_roots
-            .iter()
-            .flat_map(|root| [root.join(rest), root.join(without_package)])
-            .collect()
-    } else if let Some(path) = filename.strip_prefix("file://") {
-        vec![PathBuf::from(path)]
-    } else if Path::new(filename).is_absolute() {
-        vec![PathBuf::from(filename)]
-    } else {
-        std::iter::once(urdf_folder.join(filename))
-            .chain(package_roots.iter().map(|root| root.join(filename)))
-            .collect()
-    };
-    Ok(tried.iter().find(|p| p.is_file()).cloned().ok_or(tried))
+    let resolver = MeshResolver::new(Some(urdf_folder.to_owned()), package_roots.to_vec());
+    match resolver.resolve(filename) {
+        Ok(path) => Ok(Ok(path)),
+        Err(ResolveError::NotFound { tried, .. }) => Ok(Err(tried)),
+        Err(ResolveError::NoPackageRoot { .. }) => Err(SpheriseError::UnknownPackage {
+            link: link.to_owned(),
+            uri: filename.to_owned(),
+            tried: "no package root given".into(),
+        }),
+    }
 }
 
 #[cfg(test)]
