@@ -199,6 +199,7 @@ fn arm_motion(
         times,
         waypoints: marks,
         colliding,
+        mover_positions: Vec::new(),
     }
 }
 
@@ -246,6 +247,7 @@ fn point_motion(waypoints: &[[f32; 3]], per_leg: usize, solids: &[SolidView]) ->
         times: None,
         waypoints: (0..waypoints.len()).map(|i| i * per_leg).collect(),
         colliding,
+        mover_positions: Vec::new(),
     }
 }
 

@@ -94,8 +94,18 @@ fn check_robot(robot: &RobotView) -> Checked {
 }
 
 fn check_scene(scene: &SceneView) -> Checked {
-    for (i, solid) in scene.solids.iter().enumerate() {
-        let field = format!("scene.solids[{i}] ({})", solid.name);
+    let solids = scene
+        .solids
+        .iter()
+        .enumerate()
+        .map(|(i, s)| ("solids", i, s));
+    let movers = scene
+        .movers
+        .iter()
+        .enumerate()
+        .map(|(i, s)| ("movers", i, s));
+    for (list, i, solid) in solids.chain(movers) {
+        let field = format!("scene.{list}[{i}] ({})", solid.name);
         all_finite(&format!("{field}.position"), &solid.position)?;
         all_finite(&format!("{field}.rotation"), &solid.rotation)?;
         if solid.rotation.iter().map(|v| v * v).sum::<f32>() < 1e-12 {
@@ -146,7 +156,13 @@ fn check_frames(field: &str, frames: &[usize], n: usize) -> Checked {
     }
 }
 
-fn check_motion(k: usize, motion: &MotionView, pose_width: usize, what: &str) -> Checked {
+fn check_motion(
+    k: usize,
+    motion: &MotionView,
+    pose_width: usize,
+    what: &str,
+    movers: usize,
+) -> Checked {
     let field = |name: &str| format!("motions[{k}] ({}).{name}", motion.label);
     let n = motion.frames;
     if n == 0 {
@@ -190,6 +206,17 @@ fn check_motion(k: usize, motion: &MotionView, pose_width: usize, what: &str) ->
             ));
         }
     }
+    length(
+        &field("mover_positions"),
+        motion.mover_positions.len(),
+        if motion.mover_positions.is_empty() {
+            0
+        } else {
+            n * movers * 3
+        },
+        &format!("frames × movers × 3 = {n} × {movers} × 3, or none"),
+    )?;
+    all_finite(&field("mover_positions"), &motion.mover_positions)?;
     check_frames(&field("waypoints"), &motion.waypoints, n)?;
     check_frames(&field("colliding"), &motion.colliding, n)
 }
@@ -245,7 +272,7 @@ impl ViewDocument {
         }
         check_scene(&self.scene)?;
         for (k, motion) in self.motions.iter().enumerate() {
-            check_motion(k, motion, pose_width, what)?;
+            check_motion(k, motion, pose_width, what, self.scene.movers.len())?;
         }
         if let Some(search) = &self.search {
             check_search(search)?;
@@ -270,6 +297,7 @@ mod tests {
             times: None,
             waypoints: vec![0],
             colliding: Vec::new(),
+            mover_positions: Vec::new(),
         });
         doc
     }

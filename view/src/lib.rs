@@ -18,6 +18,7 @@
 //!         rotation: [0.0, 0.0, 0.0, 1.0],
 //!     }],
 //!     clouds: Vec::new(),
+//!     movers: Vec::new(),
 //!     bounds: Some([[0.0, 0.0, 0.0], [1.0, 1.0, 0.0]]),
 //! };
 //! doc.motions.push(MotionView {
@@ -29,6 +30,7 @@
 //!     times: None,
 //!     waypoints: vec![0, 1, 2],
 //!     colliding: Vec::new(),
+//!     mover_positions: Vec::new(),
 //! });
 //! let html = doc.to_html(ViewLimits::default())?;
 //! assert!(html.contains("<title>A point around a wall</title>"));

@@ -34,4 +34,8 @@ pub struct MotionView {
     pub waypoints: Vec<usize>,
     /// Frames found in collision (drawn in red), ascending.
     pub colliding: Vec<usize>,
+    /// Where each of the scene's [`movers`](crate::SceneView::movers) is at each frame,
+    /// `frames × movers × 3`, frame-major (empty without movers).
+    #[serde(serialize_with = "f32s")]
+    pub mover_positions: Vec<f32>,
 }

@@ -11,6 +11,9 @@ pub struct SceneView {
     pub solids: Vec<SolidView>,
     /// Point clouds.
     pub clouds: Vec<CloudView>,
+    /// Obstacles that move (a re-planning trial's): their shapes, placed per frame by
+    /// [`MotionView::mover_positions`](crate::MotionView::mover_positions).
+    pub movers: Vec<SolidView>,
     /// The planning bounds of a box world, `[lo, hi]` (`None` for arms).
     pub bounds: Option<[[f32; 3]; 2]>,
 }

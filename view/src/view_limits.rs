@@ -106,6 +106,14 @@ fn decimate_motion(motion: &MotionView, cap: usize, pose_width: usize) -> (Motio
             .map(|t| kept.iter().map(|&f| t[f]).collect()),
         waypoints: remap(&motion.waypoints, stride, kept.len()),
         colliding: remap(&motion.colliding, stride, kept.len()),
+        mover_positions: take(
+            &motion.mover_positions,
+            motion
+                .mover_positions
+                .len()
+                .checked_div(motion.frames)
+                .unwrap_or(0),
+        ),
     };
     let note = format!(
         "motion \"{}\": {} frames, {} drawn ({}); waypoints and collisions shown at the nearest drawn frame",
@@ -302,6 +310,7 @@ mod tests {
             times: Some((0..frames).map(|f| f as f64).collect()),
             waypoints: vec![0, 7, frames - 1],
             colliding: vec![3, 4, 5, frames - 2],
+            mover_positions: Vec::new(),
         });
         doc
     }

@@ -36,6 +36,7 @@ fn arm(frames: usize) -> ViewDocument {
         times: Some((0..frames).map(|f| f as f64 * 0.1).collect()),
         waypoints: vec![0, frames - 1],
         colliding: vec![frames / 2],
+        mover_positions: Vec::new(),
     });
     doc
 }

@@ -38,8 +38,11 @@ export function decodeDocument(raw) {
   const scene = {
     ...raw.scene,
     clouds: raw.scene.clouds.map((c) => ({ ...c, points: f32(c.points) })),
+    movers: raw.scene.movers ?? [],
   };
-  const motions = raw.motions.map((m) => ({ ...m, joints: f32(m.joints), poses: f32(m.poses) }));
+  const motions = raw.motions.map((m) => ({
+    ...m, joints: f32(m.joints), poses: f32(m.poses), mover_positions: f32(m.mover_positions),
+  }));
   const search = raw.search && { ...raw.search, segments: f32(raw.search.segments), costs: f32(raw.search.costs) };
   return { ...raw, robot, scene, motions, search };
 }

@@ -4,7 +4,7 @@ import { decodeDocument } from './decode.js';
 import { MotionPlayer } from './motion.js';
 import { buildPanel, showFrame } from './panel.js';
 import { PointFigure, RobotFigure, meshGeometries, robotReach } from './robot.js';
-import { buildScene, solidAt } from './scene.js';
+import { buildMovers, buildScene, solidAt } from './scene.js';
 import { buildSearch } from './search.js';
 import { createStage, fitCamera, webglAvailable } from './stage.js';
 
@@ -95,7 +95,9 @@ function start() {
     return figure;
   };
   const figure = makeFigure(1);
-  const ctx = { arm, links: arm ? doc.robot.links.length : 0, hand: arm ? doc.robot.hand : 0, lift, makeFigure };
+  const movers = buildMovers(doc);
+  sceneGroup.add(movers.group);
+  const ctx = { arm, links: arm ? doc.robot.links.length : 0, hand: arm ? doc.robot.hand : 0, lift, makeFigure, placeMovers: movers.place };
   let view = null;
   player = new MotionPlayer(doc, figure, ctx, (p) => { if (view) showFrame(view, p); });
   if (arm && doc.motions.length === 0) figure.group.visible = doc.robot.links.length === 0;

@@ -93,6 +93,7 @@ export class MotionPlayer {
       if (this.pose.length !== d.stride) this.pose = new Float32Array(d.stride);
       this.figure.setPose(frameAt(d.motion.poses, d.stride, n, this.frame, this.pose, this.ctx.arm));
       this.figure.setColliding(d.colliding[Math.round(this.frame)] === 1);
+      this.ctx.placeMovers?.(d.motion.mover_positions, n, this.frame);
     }
     this.onFrame(this);
   }

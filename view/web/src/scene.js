@@ -69,6 +69,40 @@ function boundsOutline([lo, hi], flat) {
   return edges;
 }
 
+const MOVER = new THREE.MeshStandardMaterial({ color: 0xe07a1f, roughness: 0.6, transparent: true, opacity: 0.75 });
+
+/** The obstacles that move, one mesh each at its frame-0 pose; `place(positions, k)` moves
+ * them to the `k`-th frame of a motion's `mover_positions` (movers × 3 per frame, lerped). */
+export function buildMovers(doc) {
+  const group = new THREE.Group();
+  const meshes = doc.scene.movers.map((solid) => {
+    const mesh = new THREE.Mesh(unitGeometry(solid.shape.type), MOVER);
+    mesh.scale.fromArray(scaleOf(solid.shape, false, 0));
+    mesh.position.fromArray(solid.position);
+    mesh.quaternion.fromArray(solid.rotation).normalize();
+    mesh.userData.solids = [solid];
+    group.add(mesh);
+    return mesh;
+  });
+  const place = (positions, frames, f) => {
+    const width = meshes.length * 3;
+    if (width === 0 || positions.length !== frames * width) return;
+    const i = Math.min(Math.floor(f), frames - 1);
+    const j = Math.min(i + 1, frames - 1);
+    const t = f - i;
+    meshes.forEach((mesh, m) => {
+      const a = i * width + 3 * m;
+      const b = j * width + 3 * m;
+      mesh.position.set(
+        positions[a] + (positions[b] - positions[a]) * t,
+        positions[a + 1] + (positions[b + 1] - positions[a + 1]) * t,
+        positions[a + 2] + (positions[b + 2] - positions[a + 2]) * t,
+      );
+    });
+  };
+  return { group, place };
+}
+
 /** The name of the solid under `pointer` (normalised device coordinates), or null. */
 export function solidAt(group, camera, pointer) {
   const raycaster = new THREE.Raycaster();
