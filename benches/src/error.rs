@@ -247,6 +247,14 @@ pub enum HarnessError {
         /// The drawing backend's message.
         message: String,
     },
+    /// A 3-D view page could not be made or written.
+    #[error("view `{}`: {source}", path.display())]
+    View {
+        /// The page.
+        path: PathBuf,
+        /// What went wrong.
+        source: view::ViewError,
+    },
     /// Raw results could not be serialised.
     #[error("`{}`: {message}", path.display())]
     Serialise {

@@ -127,5 +127,6 @@ pub use outcome::run_record::{RunRecord, RunStatus};
 pub use path_validation::{PathValidation, ValidationMethod};
 pub use pictures::arm_picture::ArmPicture;
 pub use pictures::experiment_figure::ExperimentFigure;
+pub use pictures::plan_view::PlanView;
 pub use pictures::plot_style::planner_colours;
 pub use pictures::run_picture::RunPicture;

@@ -22,3 +22,4 @@ mod single_writer;
 mod spherise_limits;
 mod test_layout;
 mod trajectories;
+mod views;

@@ -9,6 +9,7 @@ use crate::commands::problem_args::ProblemArgs;
 use crate::error::HarnessError;
 use crate::formats::kpi_table::number;
 use crate::formats::path_joints::{NamedPaths, json_paths, reorder, robot_order, take_joints_line};
+use crate::pictures::plan_view::PlanView;
 
 /// Options of `mit-star check-path`.
 #[derive(Debug, Args)]
@@ -39,6 +40,10 @@ pub struct CheckPathArgs {
     /// The limits a `--trajectory` is checked against.
     #[command(flatten)]
     pub limits: crate::commands::LimitArgs,
+    /// Write an interactive 3-D view of the paths (or the trajectory) to this HTML file, the
+    /// configurations in collision marked in red.
+    #[arg(long, value_name = "FILE.html")]
+    pub view: Option<PathBuf>,
 }
 
 /// The largest `--tolerance` accepted: 1e-3 per coordinate, a hundred times the `f32`
@@ -67,6 +72,11 @@ impl CheckPathArgs {
                 crate::budget::short_number(self.tolerance)
             )));
         }
+        let view = crate::commands::ViewArgs {
+            view: self.view.clone(),
+            view_search: false,
+        };
+        let page = view.prepare()?;
         let instance = self.problem.build(1.0)?;
         if let Some(file) = &self.trajectory {
             let arm = instance.problem.as_arm().map(|a| &**a);
@@ -74,6 +84,8 @@ impl CheckPathArgs {
                 arm,
                 file,
                 &self.limits,
+                Some(&instance),
+                page,
             );
         }
         let text = problems::read_bounded(self.path(), PATH_FILE_LIMIT, "path file").map_err(
@@ -111,6 +123,20 @@ impl CheckPathArgs {
             say!("  {note}");
         }
         let mut all_valid = true;
+        let mut drawn = match page {
+            Some(_) => {
+                let mut drawn = PlanView::new(
+                    &instance.problem,
+                    format!("{} on {}", self.path().display(), instance.title()),
+                    None,
+                )?;
+                if let Some(resolver) = instance.mesh_resolver() {
+                    drawn.meshes(&resolver);
+                }
+                Some(drawn)
+            }
+            None => None,
+        };
         for (i, path) in paths.iter_mut().enumerate() {
             instance.problem.snap_ends(path, self.tolerance);
             let verdict = instance
@@ -156,7 +182,21 @@ impl CheckPathArgs {
                     )
                 }
             );
-            all_valid &= verdict.valid && verdict.joins_query && audit.valid;
+            let valid = verdict.valid && verdict.joins_query && audit.valid;
+            all_valid &= valid;
+            if let Some(drawn) = &mut drawn {
+                let label = format!(
+                    "path {}: {}",
+                    i + 1,
+                    if valid { "valid" } else { "INVALID" }
+                );
+                drawn.subtitle(format!("{label}: {grid}"));
+                drawn.path(label, path);
+            }
+        }
+        if let (Some(drawn), Some(page)) = (&drawn, page) {
+            drawn.write(page)?;
+            say!("  view: {}", page.display());
         }
         Ok(if all_valid {
             CommandOutcome::Success

@@ -25,6 +25,7 @@ mod problem_args;
 mod replan;
 mod spherise;
 mod trajectory_args;
+mod view_args;
 
 use std::process::ExitCode;
 use std::sync::Arc;
@@ -44,6 +45,7 @@ pub use problem_args::ProblemArgs;
 pub use replan::ReplanArgs;
 pub use spherise::SpheriseArgs;
 pub use trajectory_args::{Corners, LimitArgs, Timed, TrajectoryArgs};
+pub use view_args::ViewArgs;
 
 use crate::error::HarnessError;
 

@@ -21,6 +21,7 @@ use crate::execution::run_job::RunJob;
 use crate::formats::kpi_table::number;
 use crate::outcome::run_record::{RunRecord, RunStatus};
 use crate::pictures::arm_picture::ArmPicture;
+use crate::pictures::plan_view::PlanView;
 use crate::pictures::run_picture::RunPicture;
 
 /// Options of `mit-star plan`.
@@ -74,6 +75,9 @@ pub struct PlanArgs {
     /// Timing the path: `--trajectory FILE` and its options.
     #[command(flatten)]
     pub timing: crate::commands::TrajectoryArgs,
+    /// The 3-D view: `--view FILE.html`, `--view-search`.
+    #[command(flatten)]
+    pub view: crate::commands::ViewArgs,
 }
 
 impl PlanArgs {
@@ -116,6 +120,7 @@ impl PlanArgs {
         if picture {
             crate::writable_folder(&self.output)?;
         }
+        self.view.prepare()?;
         drop(reading);
         if interrupt.load(std::sync::atomic::Ordering::SeqCst) {
             return Ok(CommandOutcome::Interrupted);
@@ -195,8 +200,38 @@ impl PlanArgs {
         {
             let svg = self.output.join(format!("{stem}.svg"));
             let png = self.output.join(format!("{stem}.png"));
-            RunPicture::new(boxes, &snapshot, drawn, title)?.save(&svg, &png)?;
+            RunPicture::new(boxes, &snapshot, drawn, title.clone())?.save(&svg, &png)?;
             files.extend([svg, png]);
+        }
+        if let Some(file) = &self.view.view {
+            let mut view = PlanView::new(
+                &instance.problem,
+                title,
+                instance.pose_goal.as_ref().map(|p| p.link.as_str()),
+            )?;
+            if let Some(resolver) = instance.mesh_resolver() {
+                view.meshes(&resolver);
+            }
+            view.subtitle(view_verdict(&record));
+            if let Some((s, _)) = &simplified {
+                view.path("simplified path", &s.path);
+            }
+            view.path("path as planned", &record.path);
+            if let Some(t) = &timed {
+                view.trajectory("timed trajectory", t.trajectory());
+            }
+            if self.view.view_search {
+                match planner.as_ref().and_then(|p| p.snapshot()) {
+                    Some(snapshot) => {
+                        view.search(&snapshot);
+                    }
+                    None => {
+                        view.note(format!("{} keeps no graph to draw", spec.name()));
+                    }
+                }
+            }
+            view.write(file)?;
+            files.push(file.clone());
         }
         if self.json {
             let mut value = serde_json::to_value(&record).map_err(|e| HarnessError::Serialise {
@@ -367,6 +402,33 @@ fn print_states(states: &[Vec<f64>]) {
 }
 
 /// The human-readable report of one run.
+/// The run's verdict in one line, under a view's title.
+fn view_verdict(r: &RunRecord) -> String {
+    let failure = || {
+        r.validation
+            .as_ref()
+            .and_then(|v| v.failure.clone())
+            .or_else(|| r.error.clone())
+            .unwrap_or_default()
+    };
+    match r.status {
+        RunStatus::Solved => format!(
+            "solved: first path after {} s (cost {}), final cost {}, {} states, validated \
+             independently ({})",
+            number(r.initial_time.unwrap_or(f64::NAN)),
+            number(r.initial_cost.unwrap_or(f64::INFINITY)),
+            number(r.final_cost.unwrap_or(f64::INFINITY)),
+            r.path.len(),
+            r.validation
+                .as_ref()
+                .map_or_else(String::new, |v| v.method.describe())
+        ),
+        RunStatus::Unsolved => "no solution within the budget".to_owned(),
+        RunStatus::InvalidPath => format!("INVALID PATH: {}", failure()),
+        RunStatus::Error => format!("error: {}", failure()),
+    }
+}
+
 fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     say!(
         "{} on {} (seed {}, budget {} s)",

@@ -12,6 +12,7 @@ use robot::{
 use crate::commands::CommandOutcome;
 use crate::error::HarnessError;
 use crate::formats::kpi_table::number;
+use crate::pictures::plan_view::PlanView;
 
 /// Where the velocity and acceleration limits come from, and their scaling.
 #[derive(Debug, Args, Clone)]
@@ -125,9 +126,15 @@ pub struct Timed {
     knots: usize,
     samples: usize,
     report: Option<robot::BlendReport>,
+    trajectory: Trajectory,
 }
 
 impl Timed {
+    /// The trajectory written.
+    pub fn trajectory(&self) -> &Trajectory {
+        &self.trajectory
+    }
+
     /// One line for the text report.
     pub fn line(&self) -> String {
         let corners = self.report.as_ref().map_or_else(String::new, |r| {
@@ -215,6 +222,7 @@ impl TrajectoryArgs {
             knots: trajectory.knots().len(),
             samples: written.samples.len(),
             report,
+            trajectory,
         }))
     }
 }
@@ -229,6 +237,8 @@ pub(crate) fn check_trajectory_file(
     arm: Option<&ArmProblem>,
     file: &std::path::Path,
     limits: &LimitArgs,
+    view: Option<&crate::ProblemInstance>,
+    page: Option<&std::path::Path>,
 ) -> Result<CommandOutcome, HarnessError> {
     let Some(arm) = arm else {
         return Err(HarnessError::Usage(
@@ -251,13 +261,54 @@ pub(crate) fn check_trajectory_file(
         check.motions_certified,
         check.motions_audited
     );
-    if check.is_valid() {
-        say!("  valid");
-        return Ok(CommandOutcome::Success);
-    }
-    say!("  INVALID: {} violations", check.violation_count);
+    let verdict = if check.is_valid() {
+        "valid".to_owned()
+    } else {
+        format!("INVALID: {} violations", check.violation_count)
+    };
+    say!("  {verdict}");
     for v in &check.violations {
         say!("    {v:?}");
     }
-    Ok(CommandOutcome::InvalidPaths)
+    if let (Some(instance), Some(page)) = (view, page) {
+        let title = format!("{} on {}", file.display(), instance.title());
+        let mut drawn = PlanView::new(&instance.problem, title, None)?;
+        if let Some(resolver) = instance.mesh_resolver() {
+            drawn.meshes(&resolver);
+        }
+        drawn.subtitle(format!(
+            "{} samples, {} s: {verdict}",
+            check.samples,
+            number(check.duration)
+        ));
+        match in_robot_order(&trajectory, arm.robot().joint_names()) {
+            Some(states) => {
+                let times = trajectory.samples.iter().map(|s| s.time).collect();
+                drawn.samples("trajectory", times, states);
+            }
+            None => {
+                drawn.note("the file's joints are not the robot's: no motion drawn");
+            }
+        }
+        drawn.write(page)?;
+        say!("  view: {}", page.display());
+    }
+    Ok(if check.is_valid() {
+        CommandOutcome::Success
+    } else {
+        CommandOutcome::InvalidPaths
+    })
+}
+
+/// The samples' positions in the robot's coordinate order (`robot`'s joint names), or `None`
+/// if the file's joints are not those names.
+fn in_robot_order(file: &TrajectoryFile, robot: &[String]) -> Option<Vec<Vec<f64>>> {
+    let order: Vec<usize> = robot
+        .iter()
+        .map(|name| file.joints.iter().position(|j| j == name))
+        .collect::<Option<_>>()?;
+    file.samples
+        .iter()
+        .map(|s| order.iter().map(|&k| s.position.get(k).copied()).collect())
+        .collect()
 }

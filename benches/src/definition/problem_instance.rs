@@ -91,6 +91,14 @@ impl ProblemInstance {
         }
     }
 
+    /// Where an arm instance's robot finds its visual mesh files (`None` for a box world).
+    pub fn mesh_resolver(&self) -> Option<robot::MeshResolver> {
+        match &self.source {
+            ProblemSource::Mbm(folder) => Some(folder.robot().mesh_resolver()),
+            _ => None,
+        }
+    }
+
     /// A human-readable title: `dividing-walls R^4`, `random-rectangles R^8 #3`.
     pub fn title(&self) -> String {
         if self.source.is_seeded() {

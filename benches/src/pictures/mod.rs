@@ -6,6 +6,10 @@
 //!   path), drawn by `mit-star plan`.
 //! - [`arm_picture`]: an arm plan (the scene, the arm's spheres along the path, the hand's
 //!   trajectory), drawn by `mit-star plan`.
+//! - [`arm_view`], [`world_view`]: 3-D views (one HTML page each, the `view` crate) of
+//!   plans on an arm or in a 2-D/3-D box world, with [`view_frames`] (the moments the slider
+//!   steps through) and [`search_view`] (the search overlay), built by [`plan_view`];
+//!   [`instance_views`]: the best and worst run of each instance, for `report.html`.
 //! - [`plot_style`]: the look they share: the embedded font, the planners' colours, saving
 //!   SVG and PNG.
 //!
@@ -14,6 +18,12 @@
 //! result formats or execution.
 
 pub(crate) mod arm_picture;
+pub(crate) mod arm_view;
 pub(crate) mod experiment_figure;
+pub(crate) mod instance_views;
+pub(crate) mod plan_view;
 pub(crate) mod plot_style;
 pub(crate) mod run_picture;
+pub(crate) mod search_view;
+pub(crate) mod view_frames;
+pub(crate) mod world_view;
