@@ -15,8 +15,10 @@ use crate::execution::shard::Shard;
 use crate::formats::kpi_table::KpiTable;
 use crate::formats::ompl_log::benchmark_log::BenchmarkLog;
 use crate::formats::planner_arena_database::PlannerArenaDatabase;
+use crate::formats::report_page::{ReportInstance, ReportPage};
 use crate::outcome::experiment_results::ExperimentResults;
 use crate::pictures::experiment_figure::ExperimentFigure;
+use crate::pictures::instance_views::write_instance_view;
 
 /// The name of the Planner Arena database in a results folder.
 pub const DATABASE_FILE: &str = "benchmark.db";
@@ -32,6 +34,8 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 /// | `benchmark.db` | the Planner Arena database: runs committed in batches while they finish (at most 10 s behind), then rebuilt from every recorded run |
 /// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
 /// | `kpi.md` | the KPI tables |
+/// | `report.html` | the KPI tables, each instance's figure and a link to its 3-D view, on one page |
+/// | `views/<instance>.html` | the 3-D view of the instance's best and worst run (arms, 2-D and 3-D box worlds) |
 /// | `shard.toml` | which part of the experiment's runs the folder holds (`bench --shard K/N` only) |
 /// | `.mit-star.lock` | the lock of the one process writing the folder, with its process id and command line while it runs |
 ///
@@ -290,6 +294,48 @@ impl ResultsFolder {
         let kpi = kpi_markdown(results, &KpiTable::from_results(results));
         let path = self.path.join("kpi.md");
         write_replacing(&path, kpi.as_bytes())?;
+        files.push(path);
+        files.extend(self.write_report(results, kpi, plots)?);
+        Ok(files)
+    }
+
+    /// Writes `report.html` (the KPI tables `kpi`, each instance's figure when `plots`) and,
+    /// when `plots`, the 3-D view of each instance's best and worst run in `views/`; the
+    /// files written.
+    fn write_report(
+        &self,
+        results: &ExperimentResults,
+        kpi: String,
+        plots: bool,
+    ) -> Result<Vec<PathBuf>, HarnessError> {
+        let mut files = Vec::new();
+        let mut instances = Vec::with_capacity(results.instances.len());
+        for (index, instance) in results.instances.iter().enumerate() {
+            let has_runs = !results.runs[index].is_empty();
+            let figure = (plots && has_runs).then(|| format!("plots/{}.svg", instance.id));
+            let mut view = None;
+            if plots && has_runs {
+                let link = format!("views/{}.html", instance.id);
+                let page = self.path.join(&link);
+                writable_folder(&self.path.join("views"))?;
+                if let Some(what) = write_instance_view(results, index, &page)? {
+                    files.push(page);
+                    view = Some((link, what));
+                }
+            }
+            instances.push(ReportInstance {
+                title: instance.title(),
+                figure,
+                view,
+            });
+        }
+        let page = ReportPage {
+            title: results.experiment.name.clone(),
+            kpi_markdown: kpi,
+            instances,
+        };
+        let path = self.path.join("report.html");
+        write_replacing(&path, page.to_html().as_bytes())?;
         files.push(path);
         Ok(files)
     }

@@ -11,6 +11,8 @@
 //!   their columns, rows and lines, and reading the CSV back.
 //! - [`kpi_table`]: the KPI tables (`kpi.md`, the paper's Table I and the full KPIs);
 //!   [`campaign_comparison`]: two results folders' KPIs side by side (`mit-star compare`).
+//! - [`report_page`]: `report.html`, the KPI tables, the figures and the links to the 3-D
+//!   views of each instance on one page.
 //!
 //! May use: [`crate::outcome`] (what is written), [`crate::definition`],
 //! [`crate::statistics`], [`crate::error`], and from execution only the names of a run and of a
@@ -23,3 +25,4 @@ pub(crate) mod ompl_log;
 pub(crate) mod path_joints;
 pub(crate) mod planner_arena_database;
 pub(crate) mod raw_runs;
+pub(crate) mod report_page;

@@ -237,10 +237,9 @@ fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn record(status: RunStatus) -> RunRecord {
+impl RunRecord {
+    /// A solved-looking run of MIT* for tests, with `status`.
+    pub(crate) fn example(status: RunStatus) -> RunRecord {
         RunRecord {
             instance: "i".into(),
             planner: "MIT*".into(),
@@ -265,6 +264,15 @@ mod tests {
             counters: Counters::default(),
             error: None,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn record(status: RunStatus) -> RunRecord {
+        RunRecord::example(status)
     }
 
     #[test]
