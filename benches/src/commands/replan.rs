@@ -12,7 +12,7 @@ use crate::definition::problem_source::sanitise;
 use crate::error::HarnessError;
 use crate::replanning::{
     PlanningBudget, ReplanningExperiment, ReplanningRules, ReplanningScene, ReplanningSetup,
-    ReplanningSummary, StaticAudit, TrialPicture, TrialRecord, write_trials_csv,
+    ReplanningSummary, StaticAudit, TrialPicture, TrialRecord, write_trial_view, write_trials_csv,
 };
 
 /// Options of `mit-star replan`. The defaults are the shipped experiment: both scenes, the
@@ -68,6 +68,11 @@ pub struct ReplanArgs {
     /// Do not draw the first trial of each planner and scene.
     #[arg(long)]
     pub no_picture: bool,
+    /// Also write an interactive 3-D view of the first trial of each planner and scene
+    /// (`<scene>-<planner>-trial<k>.html` beside its picture): the arm over simulated time
+    /// among the moving obstacles.
+    #[arg(long)]
+    pub view: bool,
     /// A point cloud standing among each scene's fixed obstacles (`--scene-as-cloud` samples
     /// the fixed ones — the table, the vertical scene's ceiling and wall — and replaces them;
     /// the moving obstacles stay boxes), prepared once per scene at the first leg's start.
@@ -189,7 +194,7 @@ impl ReplanArgs {
                 unproven += audit.failures.len();
             }
         }
-        if !self.no_picture {
+        if !self.no_picture || self.view {
             for setup in &setups {
                 for planner in &experiment.planners {
                     let first = records
@@ -206,7 +211,13 @@ impl ReplanArgs {
                             self.output.join(format!("{stem}.svg")),
                             self.output.join(format!("{stem}.png")),
                         );
-                        TrialPicture::new(setup, record).save(&svg, &png)?;
+                        if !self.no_picture {
+                            TrialPicture::new(setup, record).save(&svg, &png)?;
+                        }
+                        if self.view {
+                            let page = self.output.join(format!("{stem}.html"));
+                            write_trial_view(setup, record, &page)?;
+                        }
                     }
                 }
             }

@@ -48,6 +48,7 @@ mod timed_path;
 mod trial;
 mod trial_picture;
 mod trial_record;
+mod trial_view;
 
 pub use motion_judge::{MotionJudge, path_is_clear};
 pub use replanning_experiment::{REPLANNING_PLANNERS, ReplanningExperiment, TRIAL_SEED_STRIDE};
@@ -59,3 +60,4 @@ pub use timed_path::{Piece, TimedPath};
 pub use trial::Trial;
 pub use trial_picture::TrialPicture;
 pub use trial_record::{TrialEnd, TrialRecord};
+pub use trial_view::write_trial_view;
