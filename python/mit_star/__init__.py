@@ -37,6 +37,7 @@ from ._native import (
     robots,
     run_experiment,
     time_parameterise,
+    write_view,
 )
 
 __all__ = [
@@ -64,6 +65,7 @@ __all__ = [
     "robots",
     "run_experiment",
     "time_parameterise",
+    "write_view",
 ]
 
 

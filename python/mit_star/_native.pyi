@@ -248,3 +248,16 @@ def time_parameterise(
 ) -> dict[str, Any]:
     """``path`` of an arm problem timed under the robot's limits: ``time``, ``position``,
     ``velocity``, ``acceleration`` arrays, ``joints``, ``duration``, ``corners``."""
+
+def write_view(
+    problem: Problem,
+    file: StrPath,
+    path: Optional[ArrayLike] = None,
+    *,
+    paths: Optional[dict[str, ArrayLike]] = None,
+    trajectory: Optional[dict[str, Any]] = None,
+    title: Optional[str] = None,
+) -> int:
+    """An interactive 3-D view of ``problem`` with ``path``, ``paths`` (label to path) and a
+    ``trajectory`` from ``time_parameterise``, written to the HTML page ``file``; its size in
+    bytes. Configurations in collision are drawn in red."""

@@ -24,6 +24,7 @@ mod python_validity;
 mod solve_request;
 mod solve_result;
 mod trajectory;
+mod view;
 
 use pyo3::prelude::*;
 
@@ -65,6 +66,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(experiment::run_experiment, m)?)?;
     m.add_function(wrap_pyfunction!(experiment::read_results, m)?)?;
     m.add_function(wrap_pyfunction!(trajectory::time_parameterise, m)?)?;
+    m.add_function(wrap_pyfunction!(view::write_view, m)?)?;
     m.add("PlanningError", m.py().get_type::<error::PlanningError>())?;
     Ok(())
 }

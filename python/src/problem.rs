@@ -31,6 +31,8 @@ pub struct PyProblem {
     pub(crate) id: String,
     /// A link's pose as the goal instead of the goal configuration (arms).
     pub(crate) pose_goal: Option<PoseGoalSpec>,
+    /// Where an arm's visual mesh files are found, for `write_view`.
+    pub(crate) meshes: Option<robot::MeshResolver>,
 }
 
 impl PyProblem {
@@ -38,6 +40,7 @@ impl PyProblem {
     fn resolve(args: &ProblemArgs) -> BindingResult<Self> {
         let instance = args.build(1.0)?;
         Ok(Self {
+            meshes: instance.mesh_resolver(),
             problem: instance.problem,
             id: instance.id,
             pose_goal: None,
@@ -57,6 +60,7 @@ impl PyProblem {
             problem: boxes,
             id,
             pose_goal: None,
+            meshes: None,
         })
     }
 
