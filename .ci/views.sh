@@ -30,6 +30,10 @@ quiet $tool plan --robot fetch --problem mbm:target/problems/box_fetch --instanc
 quiet $tool plan --robot baxter --problem mbm:target/problems/bookshelf_tall_both_arms_easy_baxter \
   --instance 1 \
   --planner rrt-connect --time 1 --view "$out/baxter-bookshelf_tall.html" --no-picture
+# Each shipped robot on its own, every joint through its range, spheres and meshes.
+for robot in panda ur5 fetch baxter; do
+  quiet $tool robots $robot --view "$out/robot-$robot.html"
+done
 # Box worlds with the search and the informed set.
 quiet $tool plan --problem wall-gap --dim 2 --time 0.3 --view "$out/world-2d.html" \
   --view-search --no-picture
@@ -49,4 +53,4 @@ quiet $tool replan --scenes horizontal --planners rrt-connect --trials 1 --legs 
 # An experiment's report and its views.
 quiet $tool bench --planners rrt-connect,mit-star --problem mbm:target/problems/box_ur5 \
   --robot ur5 --instances 2 --runs 2 --time 0.2 --output "$out/bench" -q
-ls "$out"/*.html "$out"/replan/*.html "$out"/bench/views/*.html
+ls "$out"/*.html "$out"/bench/report.html "$out"/replan/*.html "$out"/bench/views/*.html

@@ -6,6 +6,7 @@ use mit_star::{Configuration, Parameters};
 use crate::commands::CommandOutcome;
 use crate::definition::shipped_experiment::ShippedExperiment;
 use crate::error::HarnessError;
+use crate::pictures::robot_sweep::write_robot_sweep;
 
 /// Options of `mit-star problems`.
 #[derive(Debug, Args)]
@@ -199,6 +200,15 @@ pub struct RobotsArgs {
     /// values everywhere (`--state`, `check-path`, the paths written).
     #[arg(value_name = "NAME|URDF|DIR")]
     pub robot: Option<String>,
+    /// Also write an interactive 3-D view of the robot to this HTML file: each joint swept
+    /// through its range, its spheres and its visual meshes side by side (a toggle), the
+    /// sphere model's self-collisions in red.
+    #[arg(long, value_name = "FILE.html", requires = "robot")]
+    pub view: Option<std::path::PathBuf>,
+    /// A folder `package://NAME/…` mesh paths are looked up in (as `NAME/…`; repeatable), for
+    /// `--view` of a URDF whose meshes live in ROS packages.
+    #[arg(long, value_name = "DIR", requires = "view")]
+    pub package_root: Vec<std::path::PathBuf>,
 }
 
 impl RobotsArgs {
@@ -207,10 +217,31 @@ impl RobotsArgs {
     /// # Errors
     /// [`HarnessError::Robot`] for a robot that cannot be found or loaded.
     pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
-        match &self.robot {
-            None => print_robots(),
-            Some(text) => describe_robot(text),
+        let Some(text) = &self.robot else {
+            return print_robots();
+        };
+        let page = crate::commands::ViewArgs {
+            view: self.view.clone(),
+            view_search: false,
+        };
+        let page = page.prepare()?;
+        let outcome = describe_robot(text)?;
+        if let Some(page) = page {
+            let source = robot::RobotSource::parse(text)?;
+            let model = source.load(false)?;
+            let resolver = match &source {
+                robot::RobotSource::Shipped(name) => robot::ShippedRobot::find(name).map_or_else(
+                    robot::MeshResolver::default,
+                    robot::ShippedRobot::mesh_resolver,
+                ),
+                robot::RobotSource::Files { urdf, .. } | robot::RobotSource::Urdf { urdf, .. } => {
+                    robot::MeshResolver::for_urdf_file(urdf, self.package_root.clone())
+                }
+            };
+            let bytes = write_robot_sweep(&model, &source.label(), &resolver, page)?;
+            say!("  view: {} ({bytes} bytes)", page.display());
         }
+        Ok(outcome)
     }
 }
 

@@ -9,7 +9,8 @@
 //! - [`arm_view`], [`world_view`]: 3-D views (one HTML page each, the `view` crate) of
 //!   plans on an arm or in a 2-D/3-D box world, with [`view_frames`] (the moments the slider
 //!   steps through) and [`search_view`] (the search overlay), built by [`plan_view`];
-//!   [`instance_views`]: the best and worst run of each instance, for `report.html`.
+//!   [`instance_views`]: the best and worst run of each instance, for `report.html`;
+//!   [`robot_sweep`]: a robot on its own, each joint through its range (`robots --view`).
 //! - [`plot_style`]: the look they share: the embedded font, the planners' colours, saving
 //!   SVG and PNG.
 //!
@@ -23,6 +24,7 @@ pub(crate) mod experiment_figure;
 pub(crate) mod instance_views;
 pub(crate) mod plan_view;
 pub(crate) mod plot_style;
+pub(crate) mod robot_sweep;
 pub(crate) mod run_picture;
 pub(crate) mod search_view;
 pub(crate) mod view_frames;
