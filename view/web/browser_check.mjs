@@ -95,6 +95,7 @@ async function check(context, file) {
     // The middle frame too: a motion may end where it began (a robot's joint sweep).
     await page.evaluate((n) => window.mitStarView.setFrame(Math.floor(n / 2)), frames);
     await snapshot(page, 'middle');
+    if (screenshots) await page.screenshot({ path: join(screenshots, `${basename(file, '.html')}_middle.png`) });
     await page.evaluate((n) => window.mitStarView.setFrame(n - 1), frames);
     await snapshot(page, 'last');
     share = Math.max(await changed(page, 'first', 'last'), await changed(page, 'first', 'middle'));

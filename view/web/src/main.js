@@ -6,7 +6,7 @@ import { buildPanel, showFrame } from './panel.js';
 import { PointFigure, RobotFigure, meshGeometries, robotReach } from './robot.js';
 import { buildMovers, buildScene, solidAt } from './scene.js';
 import { buildSearch } from './search.js';
-import { createStage, fitCamera, webglAvailable } from './stage.js';
+import { createStage, fitCamera, viewFromBehind, webglAvailable } from './stage.js';
 
 const api = { ready: false };
 window.mitStarView = api;
@@ -131,7 +131,13 @@ function start() {
     costRange,
   });
   showFrame(view, player);
-  fitCamera(stage, box, flat);
+  // An arm is watched from behind its base, looking at the obstacles it works among.
+  const obstacles = new THREE.Box3().setFromObject(sceneGroup);
+  const first = doc.motions[0];
+  const from = arm && first && !obstacles.isEmpty()
+    ? viewFromBehind(new THREE.Vector3().fromArray(first.poses, 0), obstacles.getCenter(new THREE.Vector3()))
+    : null;
+  fitCamera(stage, box, flat, from);
   watchHover(stage, sceneGroup);
   const t2 = performance.now();
 

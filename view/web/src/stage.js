@@ -39,14 +39,27 @@ export function createStage(container, onChange) {
 }
 
 /** Points the camera at `box` so all of it shows: from above for a plane, obliquely otherwise. */
-export function fitCamera(stage, box, fromAbove) {
+/** The direction to look from at an arm's workspace: from behind the robot's base (`base`),
+ * seen from the obstacles' centre (`obstacles`), turned 35° aside and raised 30°; null when the
+ * two coincide in plan view. */
+export function viewFromBehind(base, obstacles) {
+  const h = new THREE.Vector3(base.x - obstacles.x, base.y - obstacles.y, 0);
+  if (h.length() < 1e-6) return null;
+  h.normalize().applyAxisAngle(new THREE.Vector3(0, 0, 1), THREE.MathUtils.degToRad(35));
+  h.z = Math.tan(THREE.MathUtils.degToRad(30));
+  return h.normalize();
+}
+
+export function fitCamera(stage, box, fromAbove, from = null) {
   const { camera, controls } = stage;
   if (box.isEmpty()) box.set(new THREE.Vector3(-1, -1, -1), new THREE.Vector3(1, 1, 1));
   const centre = box.getCenter(new THREE.Vector3());
   const radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
   const fov = THREE.MathUtils.degToRad(camera.fov);
   const distance = (radius / Math.sin(Math.min(fov, fov * camera.aspect) / 2)) * 0.9;
-  const direction = fromAbove ? new THREE.Vector3(0, 0, 1) : new THREE.Vector3(1.1, -1.6, 1.0).normalize();
+  const direction = fromAbove
+    ? new THREE.Vector3(0, 0, 1)
+    : from ?? new THREE.Vector3(1.1, -1.6, 1.0).normalize();
   if (fromAbove) {
     camera.up.set(0, 1, 0);
     controls.enableRotate = false;
