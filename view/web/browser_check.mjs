@@ -85,7 +85,7 @@ async function check(context, file) {
   const pageError = await page.evaluate(() => window.mitStarView.error);
   if (pageError) throw new Error(`the page says: ${pageError}`);
   const t = await page.evaluate(() => window.mitStarView.timings);
-  const phases = t ? ` (decode ${t.decode.toFixed(0)}, build ${t.build.toFixed(0)}, first frame ${t.firstFrame.toFixed(0)} ms)` : '';
+  const phases = t ? ` (page ready ${t.ready.toFixed(0)} ms after navigation: decode ${t.decode.toFixed(0)}, build ${t.build.toFixed(0)}, first frame ${t.firstFrame.toFixed(0)} ms)` : '';
   const frames = await page.evaluate(() => window.mitStarView.frameCount());
   await page.evaluate(() => window.mitStarView.setFrame(0));
   const std = await snapshot(page, 'first');

@@ -71,7 +71,7 @@ function start() {
       if (player.playing) request();
     }
     stage.render();
-    if (!api.ready) api.timings = { decode: t1 - t0, build: t2 - t1, firstFrame: performance.now() - t2 };
+    if (!api.ready) api.timings = { decode: t1 - t0, build: t2 - t1, firstFrame: performance.now() - t2, ready: performance.now() };
     api.ready = true;
   };
   const request = () => {
