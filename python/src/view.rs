@@ -35,6 +35,7 @@ pub(crate) fn write_view(
     let view = mit_star_benches::commands::ViewArgs {
         view: Some(file.clone()),
         view_search: false,
+        view_package_root: Vec::new(),
     };
     view.prepare()?;
     let dimension = problem.problem.dimension();

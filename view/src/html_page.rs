@@ -19,7 +19,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px/1.4 system-ui
 #panel h1 { font-size: 16px; margin: 0 0 4px; }
 #panel p { margin: 2px 0; }
 .subtitle { color: #4b5563; }
-.notes { margin: 4px 0; padding-left: 18px; color: #92400e; }
+.notes { margin: 4px 0; padding-left: 18px; color: #92400e; overflow-wrap: anywhere; }
 .note { color: #6b7280; font-style: italic; }
 .row { display: flex; gap: 6px; align-items: center; flex-wrap: wrap; margin: 4px 0; }
 .spread { justify-content: space-between; }

@@ -70,6 +70,15 @@ async function changed(page, a, b) {
 
 async function check(context, file) {
   const page = await context.newPage();
+  try {
+    return await checkPage(page, file);
+  } finally {
+    // A page left open (a failed check) would go on playing and starve the next ones.
+    await page.close();
+  }
+}
+
+async function checkPage(page, file) {
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(`console: ${m.text()}`); });
   page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
@@ -127,15 +136,21 @@ async function check(context, file) {
   }
   if (frames > 1) {
     await page.evaluate(() => window.mitStarView.setFrame(0));
-    await page.click('#play');
+    // The button's own click handler, run in the page: Playwright's click would wait for the
+    // button to be stable across animation frames, slow while software WebGL draws a heavy robot.
+    await page.evaluate(() => document.getElementById('play').click());
     await page.waitForTimeout(700);
-    const at = Number(await page.$eval('#frame-slider', (s) => s.value));
+    // Read and stop in one step: a page busy playing (software WebGL on a loaded machine) can
+    // make a second click wait for its input to be handled; setFrame stops playback.
+    const at = await page.evaluate(() => {
+      const value = Number(document.getElementById('frame-slider').value);
+      window.mitStarView.setFrame(0);
+      return value;
+    });
     if (!(at > 0)) errors.push('play does not move the slider');
-    if ((await page.textContent('#play')) === 'pause') await page.click('#play');
   }
   const motions = await page.evaluate(() => window.mitStarView.motionCount());
   for (let k = 1; k < motions; k++) await page.evaluate((m) => window.mitStarView.setMotion(m), k);
-  await page.close();
   const line = `${file}: load ${loadMs} ms${phases}, ${bytes} bytes, ${frames} frames, ${motions} motions, pixel std ${std.toFixed(1)}, changed first→middle/last ${share === null ? '-' : (100 * share).toFixed(2) + ' %'}, toggles checked: ${toggled.join(' ') || '-'}`;
   if (errors.length > 0) throw new Error(`${errors.length} errors: ${errors.slice(0, 5).join(' | ')}\n  ${line}`);
   if (!(std > MIN_STD)) throw new Error(`blank canvas: pixel std ${std.toFixed(2)} ≤ ${MIN_STD}\n  ${line}`);

@@ -75,6 +75,7 @@ impl CheckPathArgs {
         let view = crate::commands::ViewArgs {
             view: self.view.clone(),
             view_search: false,
+            view_package_root: Vec::new(),
         };
         let page = view.prepare()?;
         let instance = self.problem.build(1.0)?;

@@ -223,6 +223,7 @@ impl RobotsArgs {
         let page = crate::commands::ViewArgs {
             view: self.view.clone(),
             view_search: false,
+            view_package_root: Vec::new(),
         };
         let page = page.prepare()?;
         let outcome = describe_robot(text)?;
@@ -230,10 +231,12 @@ impl RobotsArgs {
             let source = robot::RobotSource::parse(text)?;
             let model = source.load(false)?;
             let resolver = match &source {
-                robot::RobotSource::Shipped(name) => robot::ShippedRobot::find(name).map_or_else(
-                    robot::MeshResolver::default,
-                    robot::ShippedRobot::mesh_resolver,
-                ),
+                robot::RobotSource::Shipped(name) => robot::ShippedRobot::find(name)
+                    .map_or_else(
+                        robot::MeshResolver::default,
+                        robot::ShippedRobot::mesh_resolver,
+                    )
+                    .with_package_roots(self.package_root.clone()),
                 robot::RobotSource::Files { urdf, .. } | robot::RobotSource::Urdf { urdf, .. } => {
                     robot::MeshResolver::for_urdf_file(urdf, self.package_root.clone())
                 }

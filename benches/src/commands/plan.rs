@@ -210,7 +210,7 @@ impl PlanArgs {
                 instance.pose_goal.as_ref().map(|p| p.link.as_str()),
             )?;
             if let Some(resolver) = instance.mesh_resolver() {
-                view.meshes(&resolver);
+                view.meshes(&resolver.with_package_roots(self.view.view_package_root.clone()));
             }
             view.subtitle(view_verdict(&record));
             if let Some((s, _)) = &simplified {

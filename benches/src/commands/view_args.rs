@@ -20,6 +20,10 @@ pub struct ViewArgs {
     /// without a graph (the RRTs) have none to show.
     #[arg(long, requires = "view")]
     pub view_search: bool,
+    /// A folder `package://NAME/…` mesh paths are also looked up in (as `NAME/…`; repeatable):
+    /// meshes the robot's files do not ship (the Fetch's, whose licence keeps them out).
+    #[arg(long, value_name = "DIR", requires = "view")]
+    pub view_package_root: Vec<PathBuf>,
 }
 
 impl ViewArgs {
@@ -64,13 +68,14 @@ mod tests {
     fn only_html_pages_in_writable_folders() {
         let wrong = ViewArgs {
             view: Some("plan.png".into()),
-            view_search: false,
+            ..ViewArgs::default()
         };
         assert!(matches!(wrong.prepare(), Err(HarnessError::Usage(m)) if m.contains(".html")));
         let folder = std::env::temp_dir().join(format!("view-args-{}", std::process::id()));
         let right = ViewArgs {
             view: Some(folder.join("a/plan.html")),
             view_search: true,
+            view_package_root: Vec::new(),
         };
         assert_eq!(
             right.prepare().unwrap(),

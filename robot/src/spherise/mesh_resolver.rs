@@ -84,6 +84,14 @@ impl MeshResolver {
         self
     }
 
+    /// The same resolver looking in `roots` too, after its own package roots (a user's
+    /// description packages for a robot that ships without some of its meshes).
+    #[must_use]
+    pub fn with_package_roots(mut self, roots: impl IntoIterator<Item = PathBuf>) -> Self {
+        self.package_roots.extend(roots);
+        self
+    }
+
     /// The folder relative names are looked up in first, if any.
     pub fn urdf_folder(&self) -> Option<&Path> {
         self.urdf_folder.as_deref()

@@ -1,7 +1,7 @@
 // The page: reads the embedded document, builds the view, exposes window.mitStarView.
 import * as THREE from 'three';
 import { decodeDocument } from './decode.js';
-import { MotionPlayer } from './motion.js';
+import { MAX_GHOSTS, MotionPlayer } from './motion.js';
 import { buildPanel, showFrame } from './panel.js';
 import { PointFigure, RobotFigure, meshGeometries, robotReach } from './robot.js';
 import { buildMovers, buildScene, solidAt } from './scene.js';
@@ -9,6 +9,7 @@ import { buildSearch } from './search.js';
 import { createStage, fitCamera, viewFromBehind, webglAvailable } from './stage.js';
 
 const api = { ready: false };
+const GHOST_TRIANGLES = 1_500_000;
 window.mitStarView = api;
 
 function fail(message) {
@@ -89,9 +90,13 @@ function start() {
   const lift = flat ? radius : 0;
   const geometries = arm ? meshGeometries(doc.robot) : null;
   const hasMeshes = arm && doc.robot.links.some((l) => l.meshes.length > 0);
+  // Ghosts are drawn with meshes only while all of them together stay under GHOST_TRIANGLES:
+  // sixteen Baxters of 150 000 triangles each would make every frame slow on a laptop.
+  const triangles = arm ? doc.robot.links.reduce((n, l) => n + l.meshes.reduce((m, x) => m + x.indices.length / 3, 0), 0) : 0;
+  const ghostMeshes = triangles * MAX_GHOSTS <= GHOST_TRIANGLES;
   const makeFigure = (opacity) => {
     const figure = arm ? new RobotFigure(doc.robot, geometries, opacity) : new PointFigure(radius, opacity);
-    figure.setMeshes(hasMeshes);
+    figure.setMeshes(hasMeshes && (opacity === 1 || ghostMeshes));
     return figure;
   };
   const figure = makeFigure(1);
@@ -124,7 +129,7 @@ function start() {
     setFrame: (f) => { player.playing = false; player.setFrame(f); redraw(); },
     togglePlay: () => { player.togglePlay(); last = performance.now(); showFrame(view, player); redraw(); },
     setSpeed: (s) => { player.speed = s; },
-    setMeshes: (on) => { figure.setMeshes(on); player.setMeshes(on); redraw(); },
+    setMeshes: (on) => { figure.setMeshes(on); player.setMeshes(on && ghostMeshes); redraw(); },
     setGhosts: (on) => { player.setGhosts(on); redraw(); },
     setSearch: (on) => { if (searchGroup) searchGroup.visible = on; redraw(); },
     searchShown,

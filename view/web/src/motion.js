@@ -3,7 +3,8 @@
 import * as THREE from 'three';
 import { frameAt, frameOfValue, progressOf, valueOfFrame } from './interpolation.js';
 
-const MAX_GHOSTS = 16;
+/** At most this many ghosts per motion. */
+export const MAX_GHOSTS = 16;
 
 /** At most `cap` of `items`, evenly chosen, first and last kept. */
 export function evenly(items, cap) {
