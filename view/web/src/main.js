@@ -149,6 +149,7 @@ function start() {
   const now = () => { stage.render(); api.ready = true; };
   Object.assign(api, {
     frameCount: () => player.frameCount(),
+    frame: () => player.frame,
     setFrame: (i) => { player.playing = false; player.setFrame(i); now(); },
     motionCount: () => doc.motions.length,
     setMotion: (k) => { player.setMotion(k); now(); },
