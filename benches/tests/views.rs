@@ -166,6 +166,13 @@ fn a_report_links_each_instance_to_its_view() {
         "{report}"
     );
     assert!(report.contains("plots/wall-gap-n2.svg"));
+    let page = std::fs::read_to_string(dir.join(link)).unwrap();
+    assert!(
+        page.contains(r#"<script src="viewer.js"></script>"#),
+        "one shared viewer"
+    );
+    let viewer = std::fs::read_to_string(dir.join("views/viewer.js")).unwrap();
+    assert!(viewer.starts_with("/* Drawn with three.js"));
     let doc = document(&dir.join(link));
     let motions = doc["motions"].as_array().unwrap();
     assert_eq!(motions.len(), 2, "the best and the worst run");

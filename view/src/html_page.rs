@@ -59,6 +59,25 @@ fn script_safe_json(json: &str) -> String {
     json.replace('<', "\\u003c")
 }
 
+/// Where a page finds its viewer (three.js and the page's code, about 590 KB).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Viewer<'a> {
+    /// Inside the page: one file that opens anywhere.
+    Embedded,
+    /// In the file of this name beside the page (write [`viewer_script`] there): a folder of
+    /// many pages, such as an experiment's views, holds one copy.
+    Beside(&'a str),
+}
+
+/// The viewer as a script file for pages written with [`Viewer::Beside`], three.js's licence
+/// at its head.
+pub fn viewer_script() -> String {
+    format!(
+        "/* Drawn with three.js (https://threejs.org), under this licence:\n{}\n*/\n{VIEWER}",
+        THREE_LICENSE.trim().replace("*/", "* /")
+    )
+}
+
 impl ViewDocument {
     /// The page: the document [checked](Self::check), cut down to `limits` (with notes saying
     /// what was dropped), as one self-contained UTF-8 HTML file.
@@ -67,6 +86,20 @@ impl ViewDocument {
     /// [`ViewError::Invalid`] when the document contradicts itself; [`ViewError::Json`] if it
     /// cannot be serialised.
     pub fn to_html(&self, limits: ViewLimits) -> Result<String, ViewError> {
+        self.to_html_with(limits, Viewer::Embedded)
+    }
+
+    /// As [`to_html`](Self::to_html), the viewer embedded or loaded from a file beside the
+    /// page ([`Viewer::Beside`]: many pages of one folder share one copy of
+    /// [`viewer_script`]).
+    ///
+    /// # Errors
+    /// As [`to_html`](Self::to_html).
+    pub fn to_html_with(
+        &self,
+        limits: ViewLimits,
+        viewer: Viewer<'_>,
+    ) -> Result<String, ViewError> {
         self.check()?;
         let decimated = limits.decimate(self);
         let json = script_safe_json(&serde_json::to_string(&decimated)?);
@@ -92,9 +125,19 @@ impl ViewDocument {
         page.push_str("<div id=\"message\" hidden></div>\n<div id=\"tooltip\" hidden></div>\n");
         page.push_str("<script type=\"application/json\" id=\"mit-star-view-data\">");
         page.push_str(&json);
-        page.push_str("</script>\n<script>");
-        page.push_str(VIEWER);
-        page.push_str("</script>\n</body>\n</html>\n");
+        match viewer {
+            Viewer::Embedded => {
+                page.push_str("</script>\n<script>");
+                page.push_str(VIEWER);
+                page.push_str("</script>\n</body>\n</html>\n");
+            }
+            Viewer::Beside(name) => {
+                page.push_str(&format!(
+                    "</script>\n<script src=\"{}\"></script>\n</body>\n</html>\n",
+                    escape_html(name)
+                ));
+            }
+        }
         Ok(page)
     }
 
@@ -103,8 +146,21 @@ impl ViewDocument {
     /// # Errors
     /// As `to_html`, and [`ViewError::Io`] naming `path` when it cannot be written.
     pub fn write_html(&self, path: impl AsRef<Path>, limits: ViewLimits) -> Result<u64, ViewError> {
+        self.write_html_with(path, limits, Viewer::Embedded)
+    }
+
+    /// Writes [`to_html_with`](Self::to_html_with) to `path`; returns the bytes written.
+    ///
+    /// # Errors
+    /// As [`write_html`](Self::write_html).
+    pub fn write_html_with(
+        &self,
+        path: impl AsRef<Path>,
+        limits: ViewLimits,
+        viewer: Viewer<'_>,
+    ) -> Result<u64, ViewError> {
         let path = path.as_ref();
-        let page = self.to_html(limits)?;
+        let page = self.to_html_with(limits, viewer)?;
         fs::write(path, &page).map_err(|source| ViewError::Io {
             path: path.to_path_buf(),
             source,
@@ -117,6 +173,19 @@ impl ViewDocument {
 mod tests {
     use super::*;
     use crate::ViewKind;
+
+    #[test]
+    fn a_page_may_load_its_viewer_from_beside_it() {
+        let doc = ViewDocument::new(ViewKind::World2d, "shared");
+        let page = doc
+            .to_html_with(ViewLimits::default(), Viewer::Beside("viewer.js"))
+            .unwrap();
+        let embedded = doc.to_html(ViewLimits::default()).unwrap();
+        assert!(page.contains("<script src=\"viewer.js\"></script>"));
+        assert!(page.len() + VIEWER.len() / 2 < embedded.len());
+        let script = viewer_script();
+        assert!(script.starts_with("/* Drawn with three.js") && script.ends_with(VIEWER));
+    }
 
     #[test]
     fn nothing_in_the_json_can_close_the_script_or_open_a_comment() {

@@ -18,7 +18,7 @@ use crate::formats::planner_arena_database::PlannerArenaDatabase;
 use crate::formats::report_page::{ReportInstance, ReportPage};
 use crate::outcome::experiment_results::ExperimentResults;
 use crate::pictures::experiment_figure::ExperimentFigure;
-use crate::pictures::instance_views::write_instance_view;
+use crate::pictures::instance_views::{VIEWER_FILE, write_instance_view};
 
 /// The name of the Planner Arena database in a results folder.
 pub const DATABASE_FILE: &str = "benchmark.db";
@@ -35,7 +35,7 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 /// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
 /// | `kpi.md` | the KPI tables |
 /// | `report.html` | the KPI tables, each instance's figure and a link to its 3-D view, on one page |
-/// | `views/<instance>.html` | the 3-D view of the instance's best and worst run (arms, 2-D and 3-D box worlds) |
+/// | `views/<instance>.html`, `views/viewer.js` | the 3-D view of the instance's best and worst run (arms, 2-D and 3-D box worlds), sharing one viewer |
 /// | `shard.toml` | which part of the experiment's runs the folder holds (`bench --shard K/N` only) |
 /// | `.mit-star.lock` | the lock of the one process writing the folder, with its process id and command line while it runs |
 ///
@@ -328,6 +328,11 @@ impl ResultsFolder {
                 figure,
                 view,
             });
+        }
+        if files.iter().any(|f| f.starts_with(self.path.join("views"))) {
+            let viewer = self.path.join("views").join(VIEWER_FILE);
+            write_replacing(&viewer, view::viewer_script().as_bytes())?;
+            files.push(viewer);
         }
         let page = ReportPage {
             title: results.experiment.name.clone(),

@@ -36,6 +36,11 @@ impl<'a> ArmView<'a> {
         }
     }
 
+    /// The arm's joint space.
+    pub(crate) fn space(&self) -> &spaces::JointSpace {
+        self.arm.space()
+    }
+
     /// The robot.
     pub(crate) fn robot(&self) -> &robot::RobotModel {
         self.arm.robot()

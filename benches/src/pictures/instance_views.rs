@@ -9,6 +9,12 @@ use crate::outcome::experiment_results::ExperimentResults;
 use crate::outcome::run_record::{RunRecord, RunStatus};
 use crate::pictures::plan_view::PlanView;
 
+/// The viewer the views of an experiment share, written once beside them in `views/`.
+pub(crate) const VIEWER_FILE: &str = "viewer.js";
+
+/// About how many frames each path of an experiment's view is cut into.
+const REPORT_FRAMES: usize = 120;
+
 /// The runs an instance's view shows: the solved run of least final cost, and the worst — a
 /// run whose path failed the validation if there is one, else the solved run of greatest
 /// final cost (when it is another run).
@@ -27,7 +33,8 @@ pub(crate) fn best_and_worst(runs: &[RunRecord]) -> (Option<&RunRecord>, Option<
     (best, worst)
 }
 
-/// Writes the view of instance `index` of `results` to `page`: its best and worst run. What
+/// Writes the view of instance `index` of `results` to `page` (loading the viewer from
+/// [`VIEWER_FILE`] beside it): its best and worst run, the robot as spheres. What
 /// the view shows in a few words, or `None` when there is nothing to show (no solved run, or
 /// a box world of more than three dimensions).
 ///
@@ -46,8 +53,14 @@ pub(crate) fn write_instance_view(
     let Ok(mut view) = PlanView::new(&instance.problem, instance.title(), None) else {
         return Ok(None);
     };
-    if let Some(resolver) = instance.mesh_resolver() {
-        view.meshes(&resolver);
+    // An experiment may have hundreds of instances: 120 frames a path keep a UR5 view of two
+    // runs near 0.2 MB (the viewer is shared; playing interpolates between frames).
+    view.frames_per_path(REPORT_FRAMES);
+    if instance.mesh_resolver().is_some() {
+        view.note(
+            "the robot is drawn as its collision spheres: an experiment's views leave the \
+             meshes out to keep the folder small (`mit-star plan --view` draws them)",
+        );
     }
     let label = |what: &str, r: &RunRecord| {
         format!(
@@ -76,7 +89,7 @@ pub(crate) fn write_instance_view(
         view.path(label("worst", worst), &worst.path);
         what.push_str(" and worst run");
     }
-    view.write(page)?;
+    view.write_with(page, view::Viewer::Beside(VIEWER_FILE))?;
     Ok(Some(what))
 }
 

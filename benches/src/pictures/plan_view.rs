@@ -35,6 +35,8 @@ enum Drawer<'a> {
 pub struct PlanView<'a> {
     drawer: Drawer<'a>,
     document: ViewDocument,
+    /// About how many frames a path is cut into.
+    frames: usize,
 }
 
 impl<'a> PlanView<'a> {
@@ -61,7 +63,11 @@ impl<'a> PlanView<'a> {
                 (Drawer::World(drawer), document)
             }
         };
-        Ok(Self { drawer, document })
+        Ok(Self {
+            drawer,
+            document,
+            frames: crate::pictures::view_frames::FRAMES_PER_PATH,
+        })
     }
 
     /// Draws the robot's visual meshes (its URDF's `<visual>` elements, files found by
@@ -71,6 +77,13 @@ impl<'a> PlanView<'a> {
         if let Drawer::Arm(arm) = &self.drawer {
             crate::pictures::arm_view::add_meshes(&mut self.document, arm.robot(), resolver);
         }
+        self
+    }
+
+    /// Cuts each path added after this into about `count` frames (default 400): fewer make a
+    /// smaller page, and playing interpolates between them.
+    pub fn frames_per_path(&mut self, count: usize) -> &mut Self {
+        self.frames = count.max(1);
         self
     }
 
@@ -92,8 +105,14 @@ impl<'a> PlanView<'a> {
             return self;
         }
         let motion = match &self.drawer {
-            Drawer::Arm(arm) => arm.path_motion(label, path),
-            Drawer::World(world) => world.path_motion(label, path),
+            Drawer::Arm(arm) => arm.motion(
+                label,
+                &ViewFrames::along_path_in(arm.space(), path, self.frames),
+            ),
+            Drawer::World(world) => world.motion(
+                label,
+                &ViewFrames::along_path_in(world.space(), path, self.frames),
+            ),
         };
         self.document.motions.push(motion);
         self
@@ -152,8 +171,17 @@ impl<'a> PlanView<'a> {
     /// # Errors
     /// [`HarnessError::View`] if the document is inconsistent or the file cannot be written.
     pub fn write(&self, path: &Path) -> Result<u64, HarnessError> {
+        self.write_with(path, view::Viewer::Embedded)
+    }
+
+    /// Writes the page to `path`, its viewer embedded or in a file beside it; its size in
+    /// bytes.
+    ///
+    /// # Errors
+    /// As [`write`](Self::write).
+    pub fn write_with(&self, path: &Path, viewer: view::Viewer<'_>) -> Result<u64, HarnessError> {
         self.document
-            .write_html(path, ViewLimits::default())
+            .write_html_with(path, ViewLimits::default(), viewer)
             .map_err(|source| HarnessError::View {
                 path: path.to_path_buf(),
                 source,

@@ -24,6 +24,15 @@ impl ViewFrames {
     /// so that the whole has about [`FRAMES_PER_PATH`] frames, interpolated as `space` does
     /// (the short way round for continuous joints).
     pub(crate) fn along_path<S: StateSpace + ?Sized>(space: &S, path: &[Vec<f64>]) -> Self {
+        Self::along_path_in(space, path, FRAMES_PER_PATH)
+    }
+
+    /// As [`along_path`](Self::along_path), in about `count` frames.
+    pub(crate) fn along_path_in<S: StateSpace + ?Sized>(
+        space: &S,
+        path: &[Vec<f64>],
+        count: usize,
+    ) -> Self {
         let lengths: Vec<f64> = path
             .windows(2)
             .map(|w| space.distance(&w[0], &w[1]))
@@ -39,7 +48,7 @@ impl ViewFrames {
                 continue;
             };
             let pieces = if total > 0.0 && total.is_finite() {
-                ((FRAMES_PER_PATH as f64 * length / total).round() as usize).max(1)
+                ((count as f64 * length / total).round() as usize).max(1)
             } else {
                 1
             };

@@ -36,6 +36,11 @@ impl<'a> WorldView<'a> {
         Ok(Self { problem })
     }
 
+    /// The world's space.
+    pub(crate) fn space(&self) -> &spaces::RealVectorSpace {
+        self.problem.space()
+    }
+
     fn point(&self, state: &[f64]) -> DVec3 {
         DVec3::new(state[0], state[1], state.get(2).copied().unwrap_or(0.0))
     }
@@ -113,8 +118,14 @@ impl<'a> WorldView<'a> {
 
     /// The point's motion along `path`, labelled `label`, frames refused by the problem's
     /// checker marked.
+    #[cfg(test)]
     pub(crate) fn path_motion(&self, label: impl Into<String>, path: &[Vec<f64>]) -> MotionView {
-        let frames = ViewFrames::along_path(self.problem.space(), path);
+        self.motion(label, &ViewFrames::along_path(self.problem.space(), path))
+    }
+
+    /// The point's motion through `frames`, labelled `label`, frames refused by the problem's
+    /// checker marked.
+    pub(crate) fn motion(&self, label: impl Into<String>, frames: &ViewFrames) -> MotionView {
         let validity = self.problem.validity();
         let n = self.problem.dimension();
         MotionView {
