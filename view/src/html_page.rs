@@ -39,7 +39,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; font: 13px/1.4 system-ui
 ";
 
 /// `text` with `&`, `<`, `>` and `"` escaped for HTML text and attributes.
-fn escape_html(text: &str) -> String {
+pub fn escape_html(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {

@@ -69,7 +69,7 @@ mod view_error;
 mod view_limits;
 
 pub use encoding::base64;
-pub use html_page::{Viewer, viewer_script};
+pub use html_page::{Viewer, escape_html, viewer_script};
 pub use motion_view::MotionView;
 pub use robot_view::{LinkView, MeshView, RobotView};
 pub use scene_view::{CloudView, SceneView, ShapeView, SolidView};

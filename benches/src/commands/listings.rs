@@ -226,30 +226,21 @@ impl RobotsArgs {
             view_package_root: Vec::new(),
         };
         let page = page.prepare()?;
-        let outcome = describe_robot(text)?;
+        let (source, model) = describe_robot(text)?;
         if let Some(page) = page {
-            let source = robot::RobotSource::parse(text)?;
-            let model = source.load(false)?;
-            let resolver = match &source {
-                robot::RobotSource::Shipped(name) => robot::ShippedRobot::find(name)
-                    .map_or_else(
-                        robot::MeshResolver::default,
-                        robot::ShippedRobot::mesh_resolver,
-                    )
-                    .with_package_roots(self.package_root.clone()),
-                robot::RobotSource::Files { urdf, .. } | robot::RobotSource::Urdf { urdf, .. } => {
-                    robot::MeshResolver::for_urdf_file(urdf, self.package_root.clone())
-                }
-            };
+            let resolver = source
+                .mesh_resolver()
+                .with_package_roots(self.package_root.clone());
             let bytes = write_robot_sweep(&model, &source.label(), &resolver, page)?;
             say!("  view: {} ({bytes} bytes)", page.display());
         }
-        Ok(outcome)
+        Ok(CommandOutcome::Success)
     }
 }
 
-/// `mit-star robots ROBOT`: the robot's joints in coordinate order, spheres per link, groups.
-fn describe_robot(text: &str) -> Result<CommandOutcome, HarnessError> {
+/// `mit-star robots ROBOT`: the robot's joints in coordinate order, spheres per link, groups;
+/// the robot described, for its view.
+fn describe_robot(text: &str) -> Result<(robot::RobotSource, robot::RobotModel), HarnessError> {
     let source = robot::RobotSource::parse(text)?;
     let model = source.load(false)?;
     say!("{} (robot `{}`)", source.label(), model.name());
@@ -310,7 +301,7 @@ fn describe_robot(text: &str) -> Result<CommandOutcome, HarnessError> {
     for warning in model.warnings() {
         say!("  warning:  {warning}");
     }
-    Ok(CommandOutcome::Success)
+    Ok((source, model))
 }
 
 /// `mit-star robots`: the shipped robots, their size, and how to unpack their problems.

@@ -70,15 +70,7 @@ impl RobotChoice {
     /// Where the robot's visual mesh files are found: a shipped robot's data folder (with
     /// the smaller meshes it ships in place of the URDF's), else the URDF's folder.
     pub fn mesh_resolver(&self) -> robot::MeshResolver {
-        match &self.source {
-            RobotSource::Shipped(name) => ShippedRobot::find(name).map_or_else(
-                || robot::MeshResolver::new(None, Vec::new()),
-                ShippedRobot::mesh_resolver,
-            ),
-            RobotSource::Files { urdf, .. } | RobotSource::Urdf { urdf, .. } => {
-                robot::MeshResolver::for_urdf_file(urdf, Vec::new())
-            }
-        }
+        self.source.mesh_resolver()
     }
 
     /// The same robot planning only the SRDF's planning group `group` (`--group`, `group`):

@@ -4,6 +4,8 @@
 
 use std::fmt::Write as _;
 
+use view::escape_html as escape;
+
 /// One problem instance on the report: its figure and its view, as paths relative to the
 /// results folder.
 #[derive(Debug, Clone, PartialEq)]
@@ -89,21 +91,6 @@ impl ReportPage {
         s.push_str("</section></body></html>\n");
         s
     }
-}
-
-/// `text` with `&`, `<`, `>` and `"` escaped.
-pub(crate) fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            c => out.push(c),
-        }
-    }
-    out
 }
 
 /// The Markdown that `kpi.md` uses as HTML: `#` headings, paragraphs, pipe tables (the

@@ -78,15 +78,14 @@ impl ViewFrames {
             .collect();
         times.sort_by(f64::total_cmp);
         times.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * duration.max(1.0));
-        let waypoints = knots
+        let mut waypoints: Vec<usize> = knots
             .iter()
             .map(|&t| {
                 times
                     .partition_point(|&s| s < t - 1e-9 * duration.max(1.0))
                     .min(times.len() - 1)
             })
-            .collect::<Vec<_>>();
-        let mut waypoints = waypoints;
+            .collect();
         waypoints.dedup();
         let states = times.iter().map(|&t| position(t)).collect();
         Self {

@@ -2,7 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::{RobotModel, RobotSourceError, ShippedRobot};
+use crate::{MeshResolver, RobotModel, RobotSourceError, ShippedRobot};
 
 /// Where a robot model comes from: a [`ShippedRobot`] by name, a URDF file with the SRDF
 /// beside it if any ([`srdf_beside`](Self::srdf_beside)), or a folder holding one URDF (a
@@ -125,6 +125,18 @@ impl RobotSource {
             return Ok(None);
         }
         only(folder, "SRDF (*.srdf)", srdfs).map(Some)
+    }
+
+    /// Where the robot's visual mesh files are found: a shipped robot's data folder (with the
+    /// smaller meshes it ships in place of some of its URDF's), else the URDF's folder.
+    pub fn mesh_resolver(&self) -> MeshResolver {
+        match self {
+            Self::Shipped(name) => ShippedRobot::find(name)
+                .map_or_else(MeshResolver::default, ShippedRobot::mesh_resolver),
+            Self::Files { urdf, .. } | Self::Urdf { urdf, .. } => {
+                MeshResolver::for_urdf_file(urdf, Vec::new())
+            }
+        }
     }
 
     /// The shipped name, or the URDF's path.
