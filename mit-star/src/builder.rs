@@ -344,7 +344,8 @@ where
             checker,
             self.heuristic,
             self.parameters,
-        );
+        )
+        .query_validated();
         planner.set_name(name);
         if let Some(observer) = self.observer {
             planner.set_observer(observer);

@@ -22,7 +22,7 @@ const COMMIT_BYTES: usize = 64 * 1024;
 
 /// Samples committed at a time in `dimension` coordinates: [`INDEX_CHUNK`], or fewer so that
 /// their coordinates take at most [`COMMIT_BYTES`].
-fn commit_chunk(dimension: usize) -> usize {
+pub(crate) fn commit_chunk(dimension: usize) -> usize {
     (COMMIT_BYTES / (dimension.max(1) * size_of::<f64>())).clamp(1, INDEX_CHUNK)
 }
 

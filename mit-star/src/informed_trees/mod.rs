@@ -30,7 +30,7 @@
 //! `samplers`, `validity` and `heuristics` crates. Nothing of `rrt`.
 
 mod aliases;
-mod batch;
+pub(crate) mod batch;
 #[cfg(test)]
 mod batch_tests;
 mod eit;
@@ -46,6 +46,8 @@ mod offered_path;
 mod reverse_queue;
 mod reverse_repair;
 mod reverse_search;
+#[cfg(test)]
+mod setup_tests;
 mod solution_certification;
 mod start_reach;
 #[cfg(test)]

@@ -338,8 +338,7 @@ where
 
     fn solve(&mut self, termination: &dyn Termination) -> Result<Outcome, PlannerError> {
         let stop = SolveStop::new(termination);
-        self.connect.setup();
-        if self.connect.core.record_if_start_is_a_goal(&stop) {
+        if !self.connect.setup(&stop) || self.connect.core.record_if_start_is_a_goal(&stop) {
             return Ok(self.connect.core.finish(&stop));
         }
         let mut iterations = 0;
