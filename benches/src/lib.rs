@@ -94,6 +94,7 @@ pub use definition::cloud_spec::CloudSpec;
 pub use definition::cloud_summary::CloudSummary;
 pub use definition::experiment::Experiment;
 pub use definition::experiment_file;
+pub use definition::file_contents::FileContents;
 pub use definition::mbm_folder::MbmFolder;
 pub use definition::parameter_overrides::ParameterOverrides;
 pub use definition::planner_spec::{PlannerSpec, parse_configuration};

@@ -174,6 +174,92 @@ fn an_experiment_file_takes_a_cloud_table() {
     assert!(stderr.contains("4 already recorded"), "{stderr}");
 }
 
+#[test]
+fn a_cloud_file_changed_under_its_name_is_never_resumed() {
+    // Before contents were recorded, the folder's experiment.toml named the file only, and a
+    // re-run after the file changed resumed the old folder: runs among two different clouds.
+    let dir = scratch("cloud-bench", "changed");
+    std::fs::create_dir_all(&dir).unwrap();
+    let cloud = dir.join("scan.ply");
+    let ply = |points: &[[f64; 3]]| {
+        let mut text = format!(
+            "ply\nformat ascii 1.0\nelement vertex {}\nproperty float x\nproperty float y\n\
+             property float z\nend_header\n",
+            points.len()
+        );
+        for p in points {
+            text.push_str(&format!("{} {} {}\n", p[0], p[1], p[2]));
+        }
+        text
+    };
+    // Points far behind the robot: they change nothing but the file.
+    std::fs::write(&cloud, ply(&[[-2.0, 0.0, 0.5], [-2.0, 0.1, 0.5]])).unwrap();
+    let output = dir.join("results");
+    let args = |extra: &[&str]| -> Vec<String> {
+        let mut a: Vec<String> = [
+            "bench",
+            "--planners",
+            "rrt-connect",
+            "--problem",
+            &format!("mbm:{}", table_pick()),
+            "--instances",
+            "1",
+            "--time",
+            "2",
+            "--runs",
+            "1",
+            "--threads",
+            "1",
+            "--no-plots",
+            "--quiet",
+            "--output",
+            output.to_str().unwrap(),
+        ]
+        .iter()
+        .map(|s| (*s).to_owned())
+        .collect();
+        a.extend(extra.iter().map(|s| (*s).to_owned()));
+        a
+    };
+    let with_cloud = ["--cloud", cloud.to_str().unwrap()];
+    let (code, stdout, stderr) = run(&args(&with_cloud));
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let recorded = std::fs::read_to_string(output.join("experiment.toml")).unwrap();
+    let length = std::fs::metadata(&cloud).unwrap().len();
+    assert!(
+        recorded.contains(&format!("contents = [\"{length} bytes, crc32 ")),
+        "{recorded}"
+    );
+    // The same flags, the same file: resumed.
+    let (code, _, stderr) = run(&args(&with_cloud));
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stderr.contains("1 already recorded"), "{stderr}");
+    // The file changes under its name: another experiment, refused with the line named.
+    std::fs::write(&cloud, ply(&[[-2.0, 0.0, 0.5], [-2.0, 0.2, 0.5]])).unwrap();
+    let (code, _, stderr) = run(&args(&with_cloud));
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("contents = ["), "{stderr}");
+    // Resumed from the folder's own experiment.toml: the file is checked against it.
+    let again: Vec<String> = [
+        "bench",
+        output.join("experiment.toml").to_str().unwrap(),
+        "--quiet",
+        "--no-plots",
+        "--output",
+        output.to_str().unwrap(),
+    ]
+    .iter()
+    .map(|s| (*s).to_owned())
+    .collect();
+    let (code, _, stderr) = run(&again);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("`cloud.contents`") && stderr.contains("changed since the experiment"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("scan.ply"), "{stderr}");
+}
+
 /// An experiment file holding one problem entry `entry` (TOML lines) in a fresh folder.
 fn experiment_file(name: &str, entry: &str) -> PathBuf {
     let dir = scratch("cloud-bench", name);

@@ -98,6 +98,7 @@ impl CloudArgs {
             voxel: self.voxel,
             min_distance: self.min_distance,
             drop_primitives: self.drop_primitives,
+            contents: Vec::new(),
         })
     }
 

@@ -28,6 +28,9 @@ pub enum CloudOption {
     DropPrimitives,
     /// `--save-cloud` (command line and Python only).
     SaveCloud,
+    /// `contents`: what the files held when the experiment was recorded (its results
+    /// folder's `experiment.toml` only).
+    Contents,
 }
 
 impl CloudOption {
@@ -46,6 +49,7 @@ impl CloudOption {
             Self::MinDistance => ("min_distance", "--min-distance"),
             Self::DropPrimitives => ("drop_primitives", "--drop-primitives"),
             Self::SaveCloud => ("save_cloud", "--save-cloud"),
+            Self::Contents => ("contents", "recorded in `experiment.toml`"),
         }
     }
 

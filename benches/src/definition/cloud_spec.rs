@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::definition::cloud_option::CloudOption;
 use crate::definition::cloud_summary::{CloudSummary, millis};
+use crate::definition::file_contents::FileContents;
 use crate::error::HarnessError;
 
 /// The point cloud settings of an arm problem: where the points come from, then the filters,
@@ -66,6 +67,12 @@ pub struct CloudSpec {
     /// Plan among the cloud only: the scene's primitives are dropped.
     #[serde(default, skip_serializing_if = "is_false")]
     pub drop_primitives: bool,
+    /// What each of `files` held, in order (`"<length> bytes, crc32 <hex>"`,
+    /// [`FileContents`]): `bench` records it in the results folder's `experiment.toml`, and a
+    /// file that no longer holds it is refused, naming the file, so that a folder is never
+    /// resumed with a cloud that changed under the same name. Empty: not checked.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub contents: Vec<String>,
 }
 
 fn is_false(b: &bool) -> bool {
@@ -195,6 +202,58 @@ impl CloudSpec {
         Ok(())
     }
 
+    /// Checks that every file still holds what `contents` recorded (nothing to check when it
+    /// is empty): one entry per file, each equal to the file's [`FileContents`] now.
+    ///
+    /// # Errors
+    /// [`HarnessError::CloudOption`] naming `problem`, `contents` and the file that changed
+    /// (what was recorded, what it holds now), or a count that does not match the files.
+    pub fn check_contents(&self, problem: &str) -> Result<(), HarnessError> {
+        if self.contents.is_empty() {
+            return Ok(());
+        }
+        let fail = |message: String| HarnessError::CloudOption {
+            problem: problem.to_owned(),
+            option: CloudOption::Contents.describe(),
+            source: Box::new(HarnessError::Usage(message)),
+        };
+        if self.contents.len() != self.files.len() {
+            return Err(fail(format!(
+                "lists {} entries for {} files",
+                self.contents.len(),
+                self.files.len()
+            )));
+        }
+        for (file, recorded) in self.files.iter().zip(&self.contents) {
+            let now = FileContents::of(file)
+                .map_err(|e| fail(format!("`{}` cannot be read: {e}", file.display())))?;
+            if now.to_string() != *recorded {
+                return Err(fail(format!(
+                    "`{}` changed since the experiment was recorded: it held {recorded}, it \
+                     holds {now}",
+                    file.display()
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// These settings with `contents` recording what every file holds now (a file that
+    /// cannot be read is recorded as such, and [`check_contents`](Self::check_contents) then
+    /// refuses it).
+    #[must_use]
+    pub fn with_contents_recorded(mut self) -> Self {
+        self.contents = self
+            .files
+            .iter()
+            .map(|f| match FileContents::of(f) {
+                Ok(c) => c.to_string(),
+                Err(e) => format!("unreadable ({e})"),
+            })
+            .collect();
+        self
+    }
+
     /// `arm` with the cloud these settings make added to its scene (its primitives dropped
     /// with `scene_as_cloud` or `drop_primitives`), and what each step did. `index` is the
     /// problem's index (the sampling's default seed); `given` are points in memory (in the
@@ -215,6 +274,7 @@ impl CloudSpec {
     ) -> Result<(ArmProblem, CloudSummary), HarnessError> {
         let started = Instant::now();
         self.check(problem, !given.is_empty())?;
+        self.check_contents(problem)?;
         let fail = |option: CloudOption, source: HarnessError| HarnessError::CloudOption {
             problem: problem.to_owned(),
             option: option.describe(),

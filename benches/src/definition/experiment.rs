@@ -348,10 +348,11 @@ impl Experiment {
 }
 
 /// A problem's `cloud` table as the results folder's `experiment.toml` records it: every key
-/// given, the files as absolute paths (the folder is resumed from anywhere). A changed cloud
-/// option changes the table, so a folder is never resumed with another cloud.
+/// given, the files as absolute paths (the folder is resumed from anywhere) and what they hold
+/// (`contents`). A changed cloud option or file changes the table, so a folder is never
+/// resumed with another cloud.
 fn cloud_table(cloud: &CloudSpec) -> toml::Table {
-    let mut absolute = cloud.clone();
+    let mut absolute = cloud.clone().with_contents_recorded();
     for f in &mut absolute.files {
         let path = std::fs::canonicalize(&*f).unwrap_or_else(|_| f.clone());
         // TOML holds UTF-8 only: a path that is not is written as it displays.

@@ -12,7 +12,8 @@
 //!   layout, time budget); [`problem_kind`]: the problem an instance plans on, a box world or an
 //!   arm, and how each kind builds planners, checks paths and describes itself;
 //!   [`cloud_spec`]: the point cloud of an arm problem, and its preparation into the scene
-//!   ([`cloud_option`]: its options' names; [`cloud_summary`]: what preparing it did);
+//!   ([`cloud_option`]: its options' names; [`cloud_summary`]: what preparing it did;
+//!   [`file_contents`]: what its files held);
 //!   [`pose_goal_spec`]: a link's pose as an arm problem's goal, and [`pose_goal_source`]: the
 //!   goal region inverse kinematics makes of it and the planner built towards it.
 //!
@@ -27,6 +28,7 @@ pub(crate) mod cloud_option;
 pub(crate) mod cloud_spec;
 pub(crate) mod cloud_summary;
 pub(crate) mod experiment;
+pub(crate) mod file_contents;
 pub(crate) mod mbm_folder;
 pub(crate) mod parameter_overrides;
 pub(crate) mod planner_spec;
