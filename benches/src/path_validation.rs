@@ -57,6 +57,41 @@ impl ValidationMethod {
     }
 }
 
+impl PathValidation {
+    /// What the check covered, in the method's own unit, for reports: segments and the path's
+    /// states with [`ValidationMethod::ExactBoxes`]; segments with
+    /// [`ValidationMethod::ContinuousArm`] (whose configurations [`ValidationMethod::describe`]
+    /// names); segments and grid points with [`ValidationMethod::Resampled`].
+    ///
+    /// ```
+    /// let problem = problems::builtin("obstacle-free", 2, 0)?;
+    /// let path = vec![problem.start().to_vec(), problem.goals()[0].clone()];
+    /// let v = mit_star_benches::PathValidation::check(&problem, &path, problem.straight_line_cost());
+    /// assert_eq!(v.coverage(), "1 segment, 2 path states");
+    /// # Ok::<(), problems::ProblemError>(())
+    /// ```
+    pub fn coverage(&self) -> String {
+        let count =
+            |n: u64, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+        let segments = count(self.segments_checked, "segment", "segments");
+        match self.method {
+            ValidationMethod::ExactBoxes => format!(
+                "{segments}, {}",
+                count(self.states_checked, "path state", "path states")
+            ),
+            ValidationMethod::ContinuousArm { .. } => segments,
+            ValidationMethod::Resampled { .. } => format!(
+                "{segments}, {}",
+                count(
+                    self.states_checked,
+                    "state on the grid",
+                    "states on the grid"
+                )
+            ),
+        }
+    }
+}
+
 /// The result of re-checking a path independently of the planner: the path must start at the
 /// start, end at a goal, every segment must be valid, and its length must match the cost the
 /// planner reported.

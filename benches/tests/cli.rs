@@ -342,8 +342,14 @@ fn plan_prints_the_result_and_draws_2d_runs() {
     assert!(
         stdout.contains("counters (zeros left out") && stdout.contains("state validity checks")
     );
-    // The independent check's time is shown apart from planning.
+    // The independent check's time is shown apart from planning, and what it covered in a
+    // box world's units: segments and the path's states.
     assert!(stdout.contains("apart from planning)"), "{stdout}");
+    let verdict = stdout.lines().find(|l| l.contains("validated")).unwrap();
+    assert!(
+        verdict.contains(" segments, ") && verdict.contains(" path states, "),
+        "{verdict}"
+    );
     for ext in ["svg", "png"] {
         let path = dir.join(format!("goal-enclosure-n2-eit-star-seed3.{ext}"));
         assert!(
@@ -706,6 +712,13 @@ fn an_arm_without_certification_is_refused_unless_allowed() {
     assert!(
         stdout.contains("validated independently, continuously"),
         "{stdout}"
+    );
+    // An arm's audit counts configurations (named once, in the method) and segments: no
+    // second count of "states" that means something else than a box world's.
+    let verdict = stdout.lines().find(|l| l.contains("validated")).unwrap();
+    assert!(
+        verdict.contains(" configurations, ") && !verdict.contains(" states"),
+        "{verdict}"
     );
 }
 

@@ -20,6 +20,7 @@ use crate::execution::interrupt::ReadingInputs;
 use crate::execution::run_job::RunJob;
 use crate::formats::kpi_table::number;
 use crate::outcome::run_record::{RunRecord, RunStatus};
+use crate::path_validation::PathValidation;
 use crate::pictures::arm_picture::ArmPicture;
 use crate::pictures::plan_view::PlanView;
 use crate::pictures::run_picture::RunPicture;
@@ -342,10 +343,9 @@ fn print_simplified(s: &mit_star::Simplified, validation: &crate::path_validatio
     );
     if validation.valid {
         say!(
-            "  simplified path validated independently, {} ({} segments, {} states, {}):",
+            "  simplified path validated independently, {} ({}, {}):",
             validation.method.describe(),
-            validation.segments_checked,
-            validation.states_checked,
+            validation.coverage(),
             audit_time(validation.seconds)
         );
     } else {
@@ -440,10 +440,9 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     let validation = r.validation.as_ref();
     match r.status {
         RunStatus::Solved => say!(
-            "  solved; path validated independently, {} ({} segments, {} states, {} apart from planning)",
+            "  solved; path validated independently, {} ({}, {} apart from planning)",
             validation.map_or_else(String::new, |v| v.method.describe()),
-            validation.map_or(0, |v| v.segments_checked),
-            validation.map_or(0, |v| v.states_checked),
+            validation.map_or_else(String::new, PathValidation::coverage),
             audit_time(validation.map_or(0.0, |v| v.seconds))
         ),
         RunStatus::Unsolved => say!("  no solution within the budget"),
