@@ -350,16 +350,56 @@ fn plan_prints_the_result_and_draws_2d_runs() {
         verdict.contains(" segments, ") && verdict.contains(" path states, "),
         "{verdict}"
     );
-    for ext in ["svg", "png"] {
-        let path = dir.join(format!("goal-enclosure-n2-eit-star-seed3.{ext}"));
+    // Named by instance, planner, seed and a tag of the other settings (here `--time 0.05`).
+    let pictures = |dir: &std::path::Path| -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    };
+    let names = pictures(&dir);
+    assert_eq!(names.len(), 2, "{names:?}");
+    for (name, ext) in names.iter().zip(["png", "svg"]) {
+        let tag = name
+            .strip_prefix("goal-enclosure-n2-eit-star-seed3-s")
+            .and_then(|t| t.strip_suffix(&format!(".{ext}")))
+            .unwrap_or_else(|| panic!("{name}"));
         assert!(
-            std::fs::metadata(&path)
-                .map(|m| m.len() > 5_000)
-                .unwrap_or(false),
-            "{}",
-            path.display()
+            tag.len() == 8 && tag.chars().all(|c| c.is_ascii_hexdigit()),
+            "{name}"
+        );
+        assert!(
+            std::fs::metadata(dir.join(name)).unwrap().len() > 5_000,
+            "{name}"
         );
     }
+    // Another setting, another pair of files; the same settings again replace theirs, saying so.
+    // (Before, every run of a problem, planner and seed wrote the same two files, silently.)
+    let again = |extra: &[&str]| {
+        let mut args = vec![
+            "plan",
+            "--planner",
+            "eit-star",
+            "--problem",
+            "goal-enclosure",
+            "--time",
+            "0.05",
+            "--seed",
+            "3",
+            "-o",
+        ];
+        args.push(dir.to_str().unwrap());
+        args.extend_from_slice(extra);
+        succeeded(&args)
+    };
+    let stdout = again(&["--set", "batch_size=50"]);
+    assert!(!stdout.contains("replaced"), "{stdout}");
+    assert_eq!(pictures(&dir).len(), 4);
+    let stdout = again(&[]);
+    assert!(stdout.contains("(replaced "), "{stdout}");
+    assert_eq!(pictures(&dir).len(), 4);
     // JSON output, and no picture in 4-D.
     let stdout = succeeded(&[
         "plan",

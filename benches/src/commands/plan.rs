@@ -82,6 +82,47 @@ pub struct PlanArgs {
 }
 
 impl PlanArgs {
+    /// The pictures' file name without extension: the problem instance, the planner and the
+    /// seed, then — when any other setting was given (`--set`, a budget other than 1 s,
+    /// `--first-solution`, `--simplify`, the problem's options beyond its name and instance:
+    /// resolution, robot, group, clouds; a pose goal) — `-s` and eight hexadecimal digits
+    /// (CRC-32) of those settings, so that runs with different settings never share a file.
+    fn picture_stem(&self, instance: &str, planner: &str) -> String {
+        let stem = format!("{instance}-{}-seed{}", sanitise(planner), self.seed);
+        let mut settings: Vec<String> = self.set.clone();
+        settings.sort();
+        if self.time != 1.0 {
+            settings.push(format!("time={}", self.time));
+        }
+        if self.first_solution {
+            settings.push("first-solution".into());
+        }
+        if self.simplify {
+            settings.push(format!("simplify={}", self.simplify_time));
+        }
+        let p = &self.problem;
+        if p.robot.is_some()
+            || p.group.is_some()
+            || p.resolution.is_some()
+            || p.allow_coarse_step
+            || p.clouds.any()
+        {
+            settings.push(format!(
+                "{:?} {:?} {:?} {} {:?}",
+                p.robot, p.group, p.resolution, p.allow_coarse_step, p.clouds
+            ));
+        }
+        if self.pose.goal_pose.is_some() {
+            settings.push(format!("{:?}", self.pose));
+        }
+        if settings.is_empty() {
+            return stem;
+        }
+        let mut crc = crc32fast::Hasher::new();
+        crc.update(settings.join("\n").as_bytes());
+        format!("{stem}-s{:08x}", crc.finalize())
+    }
+
     /// Runs the planner and prints the result.
     ///
     /// # Errors
@@ -165,12 +206,14 @@ impl PlanArgs {
             _ => None,
         };
         let mut files = Vec::new();
-        let stem = format!(
-            "{}-{}-seed{}",
-            instance.id,
-            sanitise(configuration.name()),
-            self.seed
-        );
+        let stem = self.picture_stem(&instance.id, configuration.name());
+        let replaced = [
+            self.output.join(format!("{stem}.svg")),
+            self.output.join(format!("{stem}.png")),
+        ]
+        .into_iter()
+        .filter(|f| picture && f.exists())
+        .collect::<Vec<_>>();
         let title = format!(
             "{} on {} · seed {} · {} s · cost {}",
             spec.name(),
@@ -267,6 +310,13 @@ impl PlanArgs {
             say!("{value}");
         } else {
             print_record(&record, &instance, &files);
+            for f in &replaced {
+                say!(
+                    "  (replaced {}: an earlier picture of the same problem, planner, seed and \
+                     settings)",
+                    f.display()
+                );
+            }
             if let Some((s, validation)) = &simplified {
                 print_simplified(s, validation);
             }
