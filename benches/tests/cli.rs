@@ -320,6 +320,56 @@ fn problems_write_prints_the_exact_problem_as_a_file_plan_reads() {
 }
 
 #[test]
+fn plan_refuses_a_parameter_its_planner_does_not_read() {
+    // Before, `--set range=0.5` on MIT* (which takes no range) was accepted and ignored.
+    refused(
+        &[
+            "plan",
+            "--problem",
+            "wall-gap",
+            "--time",
+            "0.01",
+            "--no-picture",
+            "--set",
+            "range=0.5",
+        ],
+        &[
+            "MIT* does not read the parameter `range`",
+            "RRT-Connect, AORRTC, Informed RRT*",
+        ],
+    );
+    refused(
+        &[
+            "plan",
+            "--planner",
+            "rrt-connect",
+            "--problem",
+            "wall-gap",
+            "--time",
+            "0.01",
+            "--no-picture",
+            "--set",
+            "batch_size=10",
+        ],
+        &["RRT-Connect does not read the parameter `batch_size`"],
+    );
+    // A parameter the planner reads is taken.
+    let stdout = succeeded(&[
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        "wall-gap",
+        "--time",
+        "0.05",
+        "--no-picture",
+        "--set",
+        "range=0.5",
+    ]);
+    assert!(stdout.contains("RRT-Connect on wall-gap"), "{stdout}");
+}
+
+#[test]
 fn plan_prints_the_result_and_draws_2d_runs() {
     let dir = scratch("plan");
     let stdout = succeeded(&[

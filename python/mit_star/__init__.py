@@ -21,6 +21,7 @@ by the checker stops the planner and is raised from ``solve``.
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Callable
 from typing import Any
 
@@ -30,7 +31,9 @@ from ._native import (
     PlanningError,
     Problem,
     SolveResult,
+    __version__,
     experiments,
+    planner_parameters,
     planners,
     problem_families,
     read_results,
@@ -58,7 +61,9 @@ __all__ = [
     "Problem",
     "RrtConnect",
     "SolveResult",
+    "__version__",
     "experiments",
+    "planner_parameters",
     "planners",
     "problem_families",
     "read_results",
@@ -70,14 +75,30 @@ __all__ = [
 
 
 def _configuration(name: str, label: str) -> Callable[..., Planner]:
+    read = planner_parameters(name)
+
     def build(problem: Problem, **params: Any) -> Planner:
         return Planner(name, problem, **params)
 
+    # help() and inspect show the keywords this planner reads; each defaults to None, which
+    # keeps the planner's own default (listed in the docstring).
+    keyword = inspect.Parameter.KEYWORD_ONLY
+    fixed = [
+        inspect.Parameter("problem", inspect.Parameter.POSITIONAL_OR_KEYWORD),
+        inspect.Parameter("seed", keyword, default=0),
+        inspect.Parameter("validity", keyword, default=None),
+        inspect.Parameter("vectorized", keyword, default=None),
+        inspect.Parameter("batch", keyword, default=64),
+    ]
+    own = [inspect.Parameter(key, keyword, default=None) for key, _ in read if key != "seed"]
+    build.__signature__ = inspect.Signature(fixed + own, return_annotation=Planner)  # type: ignore[attr-defined]
     build.__name__ = build.__qualname__ = label
+    defaults = "\n".join(f"    {key} = {value}" for key, value in read if key != "seed")
     build.__doc__ = (
         f"The ``{name}`` planner for ``problem``: ``Planner({name!r}, problem, **params)``.\n\n"
-        "Keywords: ``seed``, ``validity``, ``vectorized``, ``batch`` and any planner parameter "
-        "(``batch_size``, ``rewire_factor``, ...), as ``Planner`` takes them."
+        "``seed``, ``validity``, ``vectorized`` and ``batch`` as ``Planner`` takes them; the "
+        "planner's own parameters, with their defaults (None keeps the default; a parameter "
+        "this planner does not read is refused with ValueError):\n\n" + defaults
     )
     return build
 

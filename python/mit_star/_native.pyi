@@ -208,8 +208,13 @@ class ExperimentResults:
     @property
     def interrupted(self) -> bool: ...
 
+__version__: str
+
 def planners() -> list[str]:
     """The configuration names, MIT* first."""
+
+def planner_parameters(name: str) -> list[tuple[str, str]]:
+    """The parameters configuration ``name`` reads, with their defaults as text."""
 
 def problem_families() -> list[tuple[str, str]]:
     """The built-in problem families as ``(name, description)``."""

@@ -37,6 +37,17 @@ fn planners() -> Vec<&'static str> {
         .collect()
 }
 
+/// The parameters the planner of configuration `name` reads, with their defaults as text, in
+/// the order `planners` lists them (`mit-star planners` prints the same).
+///
+/// Raises `ValueError` for an unknown configuration.
+#[pyfunction]
+fn planner_parameters(name: &str) -> PyResult<Vec<(String, String)>> {
+    let configuration = mit_star_benches::parse_configuration(&name.replace('_', "-"))
+        .map_err(|e| pyo3::exceptions::PyValueError::new_err(e.to_string()))?;
+    Ok(configuration.settings(&mit_star::Parameters::default()))
+}
+
 /// The built-in problem families (PDT's benchmark problems), as `(name, description)`.
 #[pyfunction]
 fn problem_families() -> Vec<(&'static str, &'static str)> {
@@ -60,6 +71,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<solve_result::SolveResult>()?;
     m.add_class::<experiment::PyExperimentResults>()?;
     m.add_function(wrap_pyfunction!(planners, m)?)?;
+    m.add_function(wrap_pyfunction!(planner_parameters, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(problem_families, m)?)?;
     m.add_function(wrap_pyfunction!(robots, m)?)?;
     m.add_function(wrap_pyfunction!(experiment::experiments, m)?)?;

@@ -22,6 +22,7 @@ pub(crate) fn planner_parameters(
     let configuration = parse_configuration(&name.replace('_', "-"))?;
     let overrides = overrides(params)?;
     let spec = PlannerSpec::new(configuration, None, &overrides)?;
+    spec.refuse_unread()?;
     Ok((configuration, spec.parameters_for_seed(seed)))
 }
 

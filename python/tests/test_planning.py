@@ -66,6 +66,13 @@ def test_bad_planner_arguments(walls4: mit_star.Problem) -> None:
         mit_star.MitStar(walls4, no_such_parameter=1)
     with pytest.raises(TypeError):
         mit_star.MitStar(walls4, batch_size=[1])
+    # A parameter the planner does not read is refused, naming those that read it (before, MIT*
+    # took `range` and ignored it).
+    with pytest.raises(ValueError, match=r"MIT\* does not read the parameter `range`.*RRT-Connect"):
+        mit_star.MitStar(walls4, range=0.5)
+    with pytest.raises(ValueError, match="RRT-Connect does not read the parameter `batch_size`"):
+        mit_star.RrtConnect(walls4, batch_size=10)
+    assert mit_star.RrtConnect(walls4, range=0.5).solve(time=1.0).solved
     with pytest.raises(TypeError):
         mit_star.MitStar(walls4, validity=3)
     planner = mit_star.MitStar(walls4)
@@ -75,3 +82,20 @@ def test_bad_planner_arguments(walls4: mit_star.Problem) -> None:
         planner.solve(time=-1.0)
     with pytest.raises(ValueError, match="time"):
         planner.solve(time=float("nan"))
+
+
+def test_version_and_planner_signatures() -> None:
+    import importlib.metadata
+    import inspect
+
+    assert mit_star.__version__ == importlib.metadata.version("mit-star")
+    # help() shows the parameters the planner reads, not **params (before: `build(problem,
+    # **params)` for every planner).
+    mit = inspect.signature(mit_star.MitStar).parameters
+    assert {"problem", "seed", "batch_size", "rewire_factor", "eis_batch_size"} <= set(mit)
+    assert "range" not in mit
+    rrt = inspect.signature(mit_star.RrtConnect).parameters
+    assert "range" in rrt and "batch_size" not in rrt
+    assert "batch_size = " in (mit_star.MitStar.__doc__ or "")
+    assert dict(mit_star.planner_parameters("rrt-connect"))["rrt_balance"] in ("true", "false")
+

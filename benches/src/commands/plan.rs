@@ -141,6 +141,7 @@ impl PlanArgs {
             overrides.push_assignment(s)?;
         }
         let spec = PlannerSpec::new(configuration, None, &overrides)?;
+        spec.refuse_unread()?;
         budget_duration(self.time).map_err(|source| HarnessError::Budget {
             what: "--time".into(),
             source,

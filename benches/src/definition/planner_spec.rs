@@ -98,6 +98,38 @@ impl PlannerSpec {
         &self.overrides
     }
 
+    /// Refuses an override of a parameter this planner does not read (`range` for MIT*,
+    /// `batch_size` for RRT-Connect: [`Configuration::reads`]), naming the planners that read
+    /// it. Where one planner runs (`plan`, Python's `Planner`) such an override changes
+    /// nothing and is a mistake; an experiment's `--set` applies to all its planners, each
+    /// reading what it uses, and is not checked this way.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] naming the first such parameter.
+    pub fn refuse_unread(&self) -> Result<(), HarnessError> {
+        let Some((key, _)) = self
+            .overrides
+            .entries()
+            .find(|(key, _)| !self.configuration.reads(key))
+        else {
+            return Ok(());
+        };
+        let readers: Vec<&str> = Configuration::ALL
+            .into_iter()
+            .filter(|c| c.reads(key))
+            .map(Configuration::label)
+            .collect();
+        Err(HarnessError::Usage(format!(
+            "{} does not read the parameter `{key}`, so setting it would change nothing{}",
+            self.configuration.label(),
+            if readers.is_empty() {
+                String::new()
+            } else {
+                format!(" (it is read by {})", readers.join(", "))
+            }
+        )))
+    }
+
     /// The parameters with the seed of one run (the problem sets the resolution when the
     /// planner is built).
     pub fn parameters_for_seed(&self, seed: u64) -> Parameters {
