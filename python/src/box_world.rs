@@ -2,7 +2,6 @@
 //! and anti-obstacle centres and widths).
 
 use numpy::ndarray::{ArrayView1, ArrayView2};
-use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use problems::Problem;
 use pyo3::prelude::*;
 use validity::{AxisBox, World};
@@ -46,20 +45,22 @@ pub(crate) fn box_world(
     Ok(Problem::new(name, world, start.to_vec(), goals)?)
 }
 
-/// One goal of shape (d,) or several of shape (k, d).
+/// One goal of shape (d,) or several of shape (k, d) (lists and integer arrays converted).
 fn goal_states(goal: &Bound<'_, PyAny>, d: usize) -> BindingResult<Vec<Vec<f64>>> {
-    let goals: Vec<Vec<f64>> = if let Ok(one) = goal.extract::<PyReadonlyArray1<'_, f64>>() {
+    let goals: Vec<Vec<f64>> = if let Ok(one) = crate::arrays::vector("goal", goal) {
         vec![one.as_array().to_vec()]
-    } else if let Ok(many) = goal.extract::<PyReadonlyArray2<'_, f64>>() {
-        many.as_array()
+    } else {
+        crate::arrays::matrix("goal", goal)
+            .map_err(|_| {
+                BindingError::Type(
+                    "goal must be an array of numbers of shape (d,) or (k, d)".into(),
+                )
+            })?
+            .as_array()
             .rows()
             .into_iter()
             .map(|r| r.to_vec())
             .collect()
-    } else {
-        return Err(BindingError::Type(
-            "goal must be a float numpy array of shape (d,) or (k, d)".into(),
-        ));
     };
     if let Some(bad) = goals.iter().find(|g| g.len() != d) {
         return Err(BindingError::Value(format!(

@@ -12,6 +12,7 @@
 //! | `experiment.rs` | running shipped or file experiments and reading results folders |
 //! | `error.rs` | `BindingError` and its Python exceptions (`PlanningError`) |
 
+mod arrays;
 mod box_world;
 mod error;
 mod experiment;

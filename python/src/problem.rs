@@ -7,7 +7,9 @@ use std::path::PathBuf;
 use mit_star_benches::commands::{CloudArgs, ProblemArgs};
 use mit_star_benches::{InstanceProblem, PoseGoalSpec};
 use numpy::ndarray::ArrayView2;
-use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{PyArray1, PyArray2, PyReadonlyArray2};
+
+use crate::arrays::{matrix, vector};
 use problems::{PlanningProblem, Problem};
 use pyo3::prelude::*;
 use spaces::StateSpace;
@@ -215,18 +217,27 @@ impl PyProblem {
     #[pyo3(signature = (lower, upper, start, goal, *, centers=None, widths=None, free_centers=None, free_widths=None, resolution=None, name="boxes", allow_coarse_step=false))]
     #[allow(clippy::too_many_arguments)]
     fn boxes(
-        lower: PyReadonlyArray1<'_, f64>,
-        upper: PyReadonlyArray1<'_, f64>,
-        start: PyReadonlyArray1<'_, f64>,
+        lower: &Bound<'_, PyAny>,
+        upper: &Bound<'_, PyAny>,
+        start: &Bound<'_, PyAny>,
         goal: &Bound<'_, PyAny>,
-        centers: Option<PyReadonlyArray2<'_, f64>>,
-        widths: Option<PyReadonlyArray2<'_, f64>>,
-        free_centers: Option<PyReadonlyArray2<'_, f64>>,
-        free_widths: Option<PyReadonlyArray2<'_, f64>>,
+        centers: Option<&Bound<'_, PyAny>>,
+        widths: Option<&Bound<'_, PyAny>>,
+        free_centers: Option<&Bound<'_, PyAny>>,
+        free_widths: Option<&Bound<'_, PyAny>>,
         resolution: Option<f64>,
         name: &str,
         allow_coarse_step: bool,
     ) -> BindingResult<Self> {
+        // Lists and integer arrays are converted; float64 arrays are read in place.
+        let (lower, upper) = (vector("lower", lower)?, vector("upper", upper)?);
+        let start = vector("start", start)?;
+        let centers = centers.map(|a| matrix("centers", a)).transpose()?;
+        let widths = widths.map(|a| matrix("widths", a)).transpose()?;
+        let free_centers = free_centers
+            .map(|a| matrix("free_centers", a))
+            .transpose()?;
+        let free_widths = free_widths.map(|a| matrix("free_widths", a)).transpose()?;
         let problem = box_world(
             name,
             (lower.as_array(), upper.as_array()),
@@ -380,7 +391,8 @@ impl PyProblem {
 
     /// Whether `state` is valid for the problem's built-in checker (the box world, or the arm
     /// among the scene's obstacles).
-    fn is_valid(&self, state: PyReadonlyArray1<'_, f64>) -> BindingResult<bool> {
+    fn is_valid(&self, state: &Bound<'_, PyAny>) -> BindingResult<bool> {
+        let state = vector("state", state)?;
         let state = state
             .as_slice()
             .map_err(|e| BindingError::Value(e.to_string()))?;

@@ -55,6 +55,24 @@ def test_a_box_world_from_numpy_arrays() -> None:
     assert result.solved and result.cost > 1.6
 
 
+def test_lists_and_integer_arrays_are_taken_wherever_arrays_are() -> None:
+    # Before, a list or an integer array raised TypeError ("argument 'lower': ... cannot be
+    # converted to 'PyArray<f64, ...>'").
+    from_lists = mit_star.Problem.boxes(
+        lower=[-1, -1], upper=np.array([1, 1]), start=(-0.8, 0.0), goal=[0.8, 0],
+        centers=[[0, -0.2]], widths=np.array([[0.2, 1.6]], dtype=np.float32),
+        resolution=1e-3,
+    )
+    assert from_lists.dimension == 2
+    assert not from_lists.is_valid([0, 0]) and from_lists.is_valid(np.array([0, 1]) * 0.9)
+    several = mit_star.Problem.boxes([-1, -1], [1, 1], [-0.8, 0], [[0.8, 0], [0.8, 0.5]])
+    assert mit_star.RrtConnect(several, seed=1).solve(time=1.0).solved
+    with pytest.raises(TypeError, match="lower must be an array of numbers"):
+        mit_star.Problem.boxes(["a", "b"], [1, 1], [0, 0], [0.5, 0.5])
+    with pytest.raises(ValueError, match=r"start must have shape \(d,\)"):
+        mit_star.Problem.boxes([-1, -1], [1, 1], [[0, 0]], [0.5, 0.5])
+
+
 def test_bad_inputs_raise_python_exceptions() -> None:
     with pytest.raises(ValueError, match="dividing-wall"):
         mit_star.Problem("dividing-wall", 4)
