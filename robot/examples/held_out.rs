@@ -3,7 +3,7 @@
 //! --problem mbm:FOLDER --robot URDF` plans and audits.
 //!
 //! ```text
-//! cargo run --release -p robot --example held_out -- ROBOT.urdf OUT_FOLDER [COUNT=24] [SEED=1]
+//! cargo run --release -p robot --example held_out -- ROBOT.urdf OUT_FOLDER [COUNT=24] [SEED=1] [SPREAD=1]
 //! ```
 //!
 //! For robots that ship nowhere in this repository (cuRobo's, converted by
@@ -18,7 +18,10 @@
 //!
 //! and keeps the scene when both ends are valid (collision-free, within limits, joinable by
 //! certified motions: [`ArmProblem::ends_are_valid`]); else it draws again. Sizes scale with
-//! the reach (a UR5's 0.85 m is scale 1). Prints, per problem, the attempts it took.
+//! the reach (a UR5's 0.85 m is scale 1). `SPREAD` (in (0, 1]) draws every joint within that
+//! fraction of its range around the range's middle (two arms drawn over their whole ranges
+//! end up folded around each other, in poses no motion joins). Prints, per problem, the
+//! attempts it took.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -52,12 +55,13 @@ struct Drawer {
     model: RobotModel,
     fk: Kinematics,
     tip: usize,
+    spread: f64,
     links: Vec<DAffine3>,
     centres: Vec<(DVec3, f64)>,
 }
 
 impl Drawer {
-    fn new(model: RobotModel) -> Self {
+    fn new(model: RobotModel, spread: f64) -> Self {
         let fk = Kinematics::new(&model);
         let tip = (0..model.links().len())
             .rev()
@@ -69,6 +73,7 @@ impl Drawer {
             model,
             fk,
             tip,
+            spread,
             links,
             centres,
         }
@@ -81,9 +86,13 @@ impl Drawer {
             .iter()
             .map(|j| match j.kind {
                 JointKind::Revolute { lower, upper } | JointKind::Prismatic { lower, upper } => {
-                    rng.next(lower, upper)
+                    let (middle, half) = ((lower + upper) / 2.0, (upper - lower) / 2.0);
+                    rng.next(middle - half * self.spread, middle + half * self.spread)
                 }
-                JointKind::Continuous => rng.next(-std::f64::consts::PI, std::f64::consts::PI),
+                JointKind::Continuous => {
+                    let half = std::f64::consts::PI * self.spread;
+                    rng.next(-half, half)
+                }
             })
             .collect()
     }
@@ -241,16 +250,18 @@ fn request_yaml(names: &[String], start: &[f64], goal: &[f64]) -> String {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (Some(robot), Some(out)) = (args.first(), args.get(1)) else {
-        eprintln!("usage: held_out ROBOT.urdf OUT_FOLDER [COUNT=24] [SEED=1]");
+        eprintln!("usage: held_out ROBOT.urdf OUT_FOLDER [COUNT=24] [SEED=1] [SPREAD=1]");
         std::process::exit(2);
     };
     let count: usize = args.get(2).map_or(24, |a| a.parse().expect("a count"));
     let seed: u64 = args.get(3).map_or(1, |a| a.parse().expect("a seed"));
+    let spread: f64 = args.get(4).map_or(1.0, |a| a.parse().expect("a spread"));
+    assert!(spread > 0.0 && spread <= 1.0, "SPREAD must be in (0, 1]");
     let model = RobotSource::parse(robot)
         .and_then(|s| s.load(false))
         .expect("a robot");
     let names = model.joint_names().to_vec();
-    let mut drawer = Drawer::new(model.clone());
+    let mut drawer = Drawer::new(model.clone(), spread);
     let mut rng = Uniform(0x9e37_79b9_7f4a_7c15 ^ seed.wrapping_mul(0x2545_f491_4f6c_dd1d));
     let reach = (0..2000)
         .map(|_| {

@@ -56,6 +56,10 @@ for robot in iiwa kinova_gen3 ur10e dual_ur10e unitree_g1; do
         "$gen" "$out/$robot/${robot}_spherized.urdf" "$out/problems/$robot" 24 1
     bench "$out/$robot/${robot}_spherized.urdf" "$out/problems/$robot" "$robot"
 done
+# The dual UR10e's ends drawn within the middle 30 % of each joint's range.
+[ -d "$out/problems/dual_ur10e_s03" ] ||
+    "$gen" "$out/dual_ur10e/dual_ur10e_spherized.urdf" "$out/problems/dual_ur10e_s03" 24 1 0.3
+bench "$out/dual_ur10e/dual_ur10e_spherized.urdf" "$out/problems/dual_ur10e_s03" dual_s03
 # Capped cover against cuRobo's spheres, on problems drawn for the (fatter) capped model.
 [ -d "$out/problems/kinova_capped" ] ||
     "$gen" "$out/kinova_gen3/capped/kinova_gen3_spherized.urdf" "$out/problems/kinova_capped" 24 1
