@@ -21,6 +21,7 @@ const EVERY_PLANNER: &[&str] = &[
 const INFORMED_TREES: &[&str] = &[
     "batch_size",
     "batch_growth",
+    "solution_samples",
     "rewire_factor",
     "connection",
     "pruning",

@@ -51,6 +51,16 @@ pub struct Parameters {
     /// — 0, fixed batches as in the papers, for box worlds and a planner built without a
     /// problem). Not in the paper.
     pub batch_growth: Option<f64>,
+    /// Once a solution exists, the fraction of each batch of the EIT* family drawn along the
+    /// best path rather than by the sampler: states on the segment between two of its vertices
+    /// that are not neighbours on it (a shortcut), half of them displaced by a Gaussian step,
+    /// kept if valid and inside the informed set (`None`: the problem's,
+    /// [`PlanningProblem::solution_samples`](problems::PlanningProblem::solution_samples) — 0,
+    /// the papers' sampling, for box worlds and a planner built without a problem). The
+    /// forward search then finds a shortcut that is free as a chain of graph edges. Such states
+    /// do not count in the sample number `q` of `k(q)` and `r(q)`, so the uniform samples keep
+    /// the connection rules that make the planners asymptotically optimal. Not in the paper.
+    pub solution_samples: Option<f64>,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
     /// k-nearest or r-disc connection (`None`: the problem's,
@@ -273,6 +283,7 @@ impl Default for Parameters {
         Self {
             batch_size: None,
             batch_growth: None,
+            solution_samples: None,
             rewire_factor: 1.001,
             connection: None,
             pruning: true,
@@ -383,6 +394,7 @@ impl Parameters {
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
         parameters.batch_size = self.batch_size.or(Some(problem.batch_size()));
         parameters.batch_growth = self.batch_growth.or(Some(problem.batch_growth()));
+        parameters.solution_samples = self.solution_samples.or(Some(problem.solution_samples()));
         parameters.range = self.range.or(problem.default_range());
         let (initial, finest) = problem.sparse_spacing();
         parameters.sparse_initial_steps = self.sparse_initial_steps.or(Some(initial));
@@ -457,6 +469,15 @@ impl Parameters {
                 name: "batch_growth",
                 value: growth,
                 requirement: "it must lie in [0, 1] (a fraction of the graph's vertices)",
+            });
+        }
+        if let Some(fraction) = self.solution_samples
+            && !(0.0..=1.0).contains(&fraction)
+        {
+            return Err(BuildError::Parameter {
+                name: "solution_samples",
+                value: fraction,
+                requirement: "it must lie in [0, 1] (a fraction of each batch)",
             });
         }
         if self.eis_batch_size == Some(0) {
@@ -596,6 +617,11 @@ impl Parameters {
                 "batch_growth",
                 self.batch_growth
                     .map_or_else(|| "problem's".to_owned(), |g| g.to_string()),
+            ),
+            (
+                "solution_samples",
+                self.solution_samples
+                    .map_or_else(|| "problem's".to_owned(), |f| f.to_string()),
             ),
             ("rewire_factor", self.rewire_factor.to_string()),
             ("connection", connection.to_string()),
