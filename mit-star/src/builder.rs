@@ -146,7 +146,7 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
     }
 
     /// The fraction of each batch placed along the best path once a solution exists
-    /// (default: the problem's, 0.3 on arms, else 0: every sample from the sampler).
+    /// (default: the problem's, 0.5 on arms, else 0: every sample from the sampler).
     pub fn solution_samples(mut self, fraction: f64) -> Self {
         self.parameters.solution_samples = Some(fraction);
         self

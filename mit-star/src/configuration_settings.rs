@@ -22,6 +22,7 @@ const INFORMED_TREES: &[&str] = &[
     "batch_size",
     "batch_growth",
     "solution_samples",
+    "solution_corner_pulls",
     "rewire_factor",
     "connection",
     "pruning",

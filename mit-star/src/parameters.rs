@@ -61,6 +61,12 @@ pub struct Parameters {
     /// do not count in the sample number `q` of `k(q)` and `r(q)`, so the uniform samples keep
     /// the connection rules that make the planners asymptotically optimal. Not in the paper.
     pub solution_samples: Option<f64>,
+    /// With [`solution_samples`](Self::solution_samples), a third of the states placed along
+    /// the best path move one of its corners part of the way towards the chord of its two
+    /// neighbours on the path (`true`), instead of every state lying on a shortcut (`false`,
+    /// the default: on the Panda the pulls made paths longer on more problems than shorter,
+    /// `docs/guide/src/performance-switches.md`). Not in the paper.
+    pub solution_corner_pulls: bool,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
     /// k-nearest or r-disc connection (`None`: the problem's,
@@ -284,6 +290,7 @@ impl Default for Parameters {
             batch_size: None,
             batch_growth: None,
             solution_samples: None,
+            solution_corner_pulls: false,
             rewire_factor: 1.001,
             connection: None,
             pruning: true,
@@ -622,6 +629,10 @@ impl Parameters {
                 "solution_samples",
                 self.solution_samples
                     .map_or_else(|| "problem's".to_owned(), |f| f.to_string()),
+            ),
+            (
+                "solution_corner_pulls",
+                self.solution_corner_pulls.to_string(),
             ),
             ("rewire_factor", self.rewire_factor.to_string()),
             ("connection", connection.to_string()),

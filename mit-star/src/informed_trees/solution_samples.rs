@@ -55,7 +55,6 @@ where
         if count == 0 || m < 3 {
             return 0;
         }
-        let n = self.space.dimension();
         let mut states = std::mem::take(&mut self.path_states);
         states.clear();
         for v in &path {
@@ -67,18 +66,11 @@ where
             if added == count || stop.should_stop() {
                 break;
             }
-            let i = self.path_rng.random_range(0..m - 2);
-            let j = self.path_rng.random_range(i + 2..m);
-            let (a, b) = (&states[i * n..(i + 1) * n], &states[j * n..(j + 1) * n]);
-            let t = self.path_rng.random::<f64>();
-            self.space.interpolate(a, b, t, &mut x);
-            if self.path_rng.random::<bool>() {
-                let sigma =
-                    DISPLACEMENT * self.path_rng.random::<f64>() * self.space.distance(a, b);
-                for xi in x.iter_mut() {
-                    *xi += sigma * gaussian(&mut self.path_rng);
-                }
-                self.space.enforce_bounds(&mut x);
+            let pulls = self.parameters.solution_corner_pulls;
+            if pulls && self.path_rng.random_range(0..3) == 0 {
+                self.corner_pull(&mut states, &mut x);
+            } else {
+                self.shortcut_state(&states, &mut x);
             }
             let (space, h) = (&self.space, &self.heuristic);
             let through =
@@ -95,6 +87,61 @@ where
         self.path_states = states;
         self.counters.solution_samples += added as u64;
         added
+    }
+
+    /// A state on the segment between two vertices of the path (`states`, `m ≥ 3` of them)
+    /// that are not neighbours on it, at a uniform place; half of the time displaced by a
+    /// Gaussian step whose deviation is uniform up to [`DISPLACEMENT`] of the segment's length.
+    fn shortcut_state(&mut self, states: &[f64], x: &mut [f64]) {
+        let n = self.space.dimension();
+        let m = states.len() / n;
+        let i = self.path_rng.random_range(0..m - 2);
+        let j = self.path_rng.random_range(i + 2..m);
+        let (a, b) = (&states[i * n..(i + 1) * n], &states[j * n..(j + 1) * n]);
+        let t = self.path_rng.random::<f64>();
+        self.space.interpolate(a, b, t, x);
+        if self.path_rng.random::<bool>() {
+            let sigma = DISPLACEMENT * self.path_rng.random::<f64>() * self.space.distance(a, b);
+            for xi in x.iter_mut() {
+                *xi += sigma * gaussian(&mut self.path_rng);
+            }
+            self.space.enforce_bounds(x);
+        }
+    }
+
+    /// An interior vertex of the path moved a uniform part of the way towards the chord of
+    /// its two neighbours on it (the chord's point as far along as the vertex is along the
+    /// path): a corner cut partly, where cutting it whole collides.
+    fn corner_pull(&mut self, states: &mut Vec<f64>, x: &mut [f64]) {
+        let n = self.space.dimension();
+        let m = states.len() / n;
+        let k = self.path_rng.random_range(1..m - 1);
+        let (before, after) = {
+            let state = |i: usize| &states[i * n..(i + 1) * n];
+            let (a, corner, b) = (state(k - 1), state(k), state(k + 1));
+            (
+                self.space.distance(a, corner),
+                self.space.distance(corner, b),
+            )
+        };
+        let t = if before + after > 0.0 {
+            before / (before + after)
+        } else {
+            0.5
+        };
+        // The chord's point, written after the path's states for the moment.
+        self.space.interpolate(
+            &states[(k - 1) * n..k * n],
+            &states[(k + 1) * n..(k + 2) * n],
+            t,
+            x,
+        );
+        states.extend_from_slice(x);
+        let s = self.path_rng.random::<f64>();
+        self.space
+            .interpolate(&states[k * n..(k + 1) * n], &states[m * n..], s, x);
+        states.truncate(m * n);
+        self.space.enforce_bounds(x);
     }
 }
 
