@@ -25,6 +25,7 @@ const INFORMED_TREES: &[&str] = &[
     "solution_corner_pulls",
     "rewire_factor",
     "connection",
+    "neighbour_cap",
     "pruning",
     "lazy_certification",
     "near_terminals",

@@ -74,6 +74,13 @@ pub struct Parameters {
     /// r-disc on arms; k-nearest, the paper's, for box worlds and a planner built without a
     /// problem).
     pub connection: Option<Connection>,
+    /// With r-disc connection, a vertex is joined to at most its `⌈c · k(q)⌉` nearest within
+    /// the radius, `k(q)` the k-nearest rule's number (`None`: every one within it, the
+    /// rule as published). With `c ≥ 1` each vertex keeps at least the neighbours of the
+    /// k-nearest rule or all within the radius, so either rule's asymptotic optimality holds;
+    /// in 7 dimensions the radius's `2ⁿ` constant joins each vertex to hundreds of others, and
+    /// in a thin informed set to most of the graph. Not in the paper.
+    pub neighbour_cap: Option<f64>,
     /// Remove samples that cannot improve the solution at each new batch.
     pub pruning: bool,
     /// Collision-check resolution, a fraction of the space's maximum extent (`L = r · extent`).
@@ -293,6 +300,7 @@ impl Default for Parameters {
             solution_corner_pulls: false,
             rewire_factor: 1.001,
             connection: None,
+            neighbour_cap: None,
             pruning: true,
             resolution: 5e-6,
             seed: 0,
@@ -487,6 +495,15 @@ impl Parameters {
                 requirement: "it must lie in [0, 1] (a fraction of each batch)",
             });
         }
+        if let Some(cap) = self.neighbour_cap
+            && !(1.0..=1e6).contains(&cap)
+        {
+            return Err(BuildError::Parameter {
+                name: "neighbour_cap",
+                value: cap,
+                requirement: "it must lie in [1, 10⁶] (a multiple of the k-nearest rule's k)",
+            });
+        }
         if self.eis_batch_size == Some(0) {
             return Err(BuildError::Parameter {
                 name: "eis_batch_size",
@@ -636,6 +653,11 @@ impl Parameters {
             ),
             ("rewire_factor", self.rewire_factor.to_string()),
             ("connection", connection.to_string()),
+            (
+                "neighbour_cap",
+                self.neighbour_cap
+                    .map_or_else(|| "none".to_owned(), |c| c.to_string()),
+            ),
             ("pruning", self.pruning.to_string()),
             ("resolution", self.resolution.to_string()),
             ("seed", self.seed.to_string()),

@@ -70,6 +70,10 @@ where
                     .min(self.space.measure());
                 let r = r_disc(q, n, eta, measure);
                 self.graph.set_neighbourhood(Neighbourhood::Radius(r));
+                let cap = self.parameters.neighbour_cap.map_or(usize::MAX, |c| {
+                    (c * k_nearest(q, n, eta) as f64).ceil() as usize
+                });
+                self.graph.set_neighbour_cap(cap);
                 r
             }
         }

@@ -28,6 +28,7 @@ pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str
         "batch_size" => parameters.batch_size = Some(number() as usize),
         "batch_growth" => parameters.batch_growth = Some(number()),
         "solution_samples" => parameters.solution_samples = Some(number()),
+        "neighbour_cap" => parameters.neighbour_cap = Some(number()),
         "solution_corner_pulls" => parameters.solution_corner_pulls = on(),
         "range" => parameters.range = Some(number()),
         "rewire_factor" => parameters.rewire_factor = number(),
