@@ -153,7 +153,7 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
 /// The generator of the states placed along the best path, from the planner's seed (its own
 /// stream: the sampler's draws do not move when it draws).
 fn path_rng(seed: u64) -> SeededRng {
-    SeededRng::seed_from_u64(seed ^ 0x5eed_0f_5a_7a_11)
+    SeededRng::seed_from_u64(seed ^ 0x5eed_0f5a_7a11)
 }
 
 impl<S, V, Smp, E, H, G> std::fmt::Debug for Eit<S, V, Smp, E, H, G> {
