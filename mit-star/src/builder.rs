@@ -145,6 +145,13 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
         self
     }
 
+    /// The fraction of each batch placed along the best path once a solution exists
+    /// (default: the problem's, 0.5 on arms, else 0: every sample from the sampler).
+    pub fn solution_samples(mut self, fraction: f64) -> Self {
+        self.parameters.solution_samples = Some(fraction);
+        self
+    }
+
     /// The RGG constant `η` (default 1.001).
     pub fn rewire_factor(mut self, eta: f64) -> Self {
         self.parameters.rewire_factor = eta;

@@ -21,8 +21,11 @@ const EVERY_PLANNER: &[&str] = &[
 const INFORMED_TREES: &[&str] = &[
     "batch_size",
     "batch_growth",
+    "solution_samples",
+    "solution_corner_pulls",
     "rewire_factor",
     "connection",
+    "neighbour_cap",
     "pruning",
     "lazy_certification",
     "near_terminals",

@@ -46,6 +46,9 @@ pub struct Counters {
     pub forward_iterations: u64,
     /// Vertices removed by pruning.
     pub pruned: u64,
+    /// States placed along the best path
+    /// ([`solution_samples`](crate::Parameters::solution_samples)).
+    pub solution_samples: u64,
     /// Vertices in the graph now.
     pub vertices: u64,
     /// Stored (checked) edges now.
@@ -117,6 +120,7 @@ impl Counters {
             reverse_iterations,
             forward_iterations,
             pruned,
+            solution_samples,
             vertices,
             edges,
             peak_vertices,
@@ -155,6 +159,7 @@ impl Counters {
         self.reverse_iterations += reverse_iterations;
         self.forward_iterations += forward_iterations;
         self.pruned += pruned;
+        self.solution_samples += solution_samples;
         self.vertices += vertices;
         self.edges += edges;
         self.peak_vertices += peak_vertices;

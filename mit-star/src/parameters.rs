@@ -51,6 +51,22 @@ pub struct Parameters {
     /// — 0, fixed batches as in the papers, for box worlds and a planner built without a
     /// problem). Not in the paper.
     pub batch_growth: Option<f64>,
+    /// Once a solution exists, the fraction of each batch of the EIT* family drawn along the
+    /// best path rather than by the sampler: states on the segment between two of its vertices
+    /// that are not neighbours on it (a shortcut), half of them displaced by a Gaussian step,
+    /// kept if valid and inside the informed set (`None`: the problem's,
+    /// [`PlanningProblem::solution_samples`](problems::PlanningProblem::solution_samples) — 0,
+    /// the papers' sampling, for box worlds and a planner built without a problem). The
+    /// forward search then finds a shortcut that is free as a chain of graph edges. Such states
+    /// do not count in the sample number `q` of `k(q)` and `r(q)`, so the uniform samples keep
+    /// the connection rules that make the planners asymptotically optimal. Not in the paper.
+    pub solution_samples: Option<f64>,
+    /// With [`solution_samples`](Self::solution_samples), a third of the states placed along
+    /// the best path move one of its corners part of the way towards the chord of its two
+    /// neighbours on the path (`true`), instead of every state lying on a shortcut (`false`,
+    /// the default: on the Panda the pulls made paths longer on more problems than shorter,
+    /// `docs/guide/src/performance-switches.md`). Not in the paper.
+    pub solution_corner_pulls: bool,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
     /// k-nearest or r-disc connection (`None`: the problem's,
@@ -58,6 +74,13 @@ pub struct Parameters {
     /// r-disc on arms; k-nearest, the paper's, for box worlds and a planner built without a
     /// problem).
     pub connection: Option<Connection>,
+    /// With r-disc connection, a vertex is joined to at most its `⌈c · k(q)⌉` nearest within
+    /// the radius, `k(q)` the k-nearest rule's number (`None`: every one within it, the
+    /// rule as published). With `c ≥ 1` each vertex keeps at least the neighbours of the
+    /// k-nearest rule or all within the radius, so either rule's asymptotic optimality holds;
+    /// in 7 dimensions the radius's `2ⁿ` constant joins each vertex to hundreds of others, and
+    /// in a thin informed set to most of the graph. Not in the paper.
+    pub neighbour_cap: Option<f64>,
     /// Remove samples that cannot improve the solution at each new batch.
     pub pruning: bool,
     /// Collision-check resolution, a fraction of the space's maximum extent (`L = r · extent`).
@@ -273,8 +296,11 @@ impl Default for Parameters {
         Self {
             batch_size: None,
             batch_growth: None,
+            solution_samples: None,
+            solution_corner_pulls: false,
             rewire_factor: 1.001,
             connection: None,
+            neighbour_cap: None,
             pruning: true,
             resolution: 5e-6,
             seed: 0,
@@ -383,6 +409,7 @@ impl Parameters {
         parameters.near_terminals = self.near_terminals.or(Some(problem.near_terminals()));
         parameters.batch_size = self.batch_size.or(Some(problem.batch_size()));
         parameters.batch_growth = self.batch_growth.or(Some(problem.batch_growth()));
+        parameters.solution_samples = self.solution_samples.or(Some(problem.solution_samples()));
         parameters.range = self.range.or(problem.default_range());
         let (initial, finest) = problem.sparse_spacing();
         parameters.sparse_initial_steps = self.sparse_initial_steps.or(Some(initial));
@@ -457,6 +484,24 @@ impl Parameters {
                 name: "batch_growth",
                 value: growth,
                 requirement: "it must lie in [0, 1] (a fraction of the graph's vertices)",
+            });
+        }
+        if let Some(fraction) = self.solution_samples
+            && !(0.0..=1.0).contains(&fraction)
+        {
+            return Err(BuildError::Parameter {
+                name: "solution_samples",
+                value: fraction,
+                requirement: "it must lie in [0, 1] (a fraction of each batch)",
+            });
+        }
+        if let Some(cap) = self.neighbour_cap
+            && !(1.0..=1e6).contains(&cap)
+        {
+            return Err(BuildError::Parameter {
+                name: "neighbour_cap",
+                value: cap,
+                requirement: "it must lie in [1, 10⁶] (a multiple of the k-nearest rule's k)",
             });
         }
         if self.eis_batch_size == Some(0) {
@@ -597,8 +642,22 @@ impl Parameters {
                 self.batch_growth
                     .map_or_else(|| "problem's".to_owned(), |g| g.to_string()),
             ),
+            (
+                "solution_samples",
+                self.solution_samples
+                    .map_or_else(|| "problem's".to_owned(), |f| f.to_string()),
+            ),
+            (
+                "solution_corner_pulls",
+                self.solution_corner_pulls.to_string(),
+            ),
             ("rewire_factor", self.rewire_factor.to_string()),
             ("connection", connection.to_string()),
+            (
+                "neighbour_cap",
+                self.neighbour_cap
+                    .map_or_else(|| "none".to_owned(), |c| c.to_string()),
+            ),
             ("pruning", self.pruning.to_string()),
             ("resolution", self.resolution.to_string()),
             ("seed", self.seed.to_string()),

@@ -133,6 +133,14 @@ pub trait PlanningProblem {
         0.0
     }
 
+    /// The fraction of each batch a planner of the EIT* family draws along its best path once
+    /// it has one (0 by default: every sample from the sampler, as in the papers). In many
+    /// dimensions uniform samples seldom fall where the path could be straightened, so a
+    /// problem that wants short paths soon (an arm) asks for some.
+    fn solution_samples(&self) -> f64 {
+        0.0
+    }
+
     /// The extension range RRT-Connect, AORRTC and Informed RRT* should step by when none is
     /// set (`None`, the default: the planners' own rule, `mit_star::default_range`). A robot
     /// arm's was measured per robot, as VAMP sets one per robot: the joint-space diagonal's
@@ -236,5 +244,8 @@ impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
     }
     fn batch_growth(&self) -> f64 {
         (**self).batch_growth()
+    }
+    fn solution_samples(&self) -> f64 {
+        (**self).solution_samples()
     }
 }

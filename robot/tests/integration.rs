@@ -34,6 +34,7 @@ mod rrt_range_on_arms;
 mod scenes;
 mod short_slices;
 mod simplified_arm_paths;
+mod solution_samples_on_arms;
 mod sparse_spacing_on_arms;
 mod sphere_cover;
 mod sphere_less_links;

@@ -225,7 +225,7 @@ mod tests {
                 SampleOrigin::Drawn => tally[0] += 1,
                 SampleOrigin::Gaussian => tally[1] += 1,
                 SampleOrigin::Bridge => tally[2] += 1,
-                SampleOrigin::NearTerminal | SampleOrigin::Offered => {
+                SampleOrigin::NearTerminal | SampleOrigin::Offered | SampleOrigin::NearSolution => {
                     panic!("the adaptive sampler draws only Drawn, Gaussian and Bridge states")
                 }
             }

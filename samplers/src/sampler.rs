@@ -113,6 +113,10 @@ pub enum SampleOrigin {
     /// path, a simplified solution), kept as a vertex so the search can improve on that path
     /// locally.
     Offered,
+    /// Not drawn by a sampler: a state the planner placed along its best path (a shortcut
+    /// between two of its vertices, perhaps displaced), strung along one path as offered
+    /// states are.
+    NearSolution,
 }
 
 impl SampleOrigin {
@@ -120,9 +124,10 @@ impl SampleOrigin {
     /// connection rules `k(q)` and `r(q)`: the states a sampler draws to cover its set —
     /// uniform and informed draws, and the obstacle-based samplers' states, which stand in for
     /// draws of the set as in MIT* — but not [`NearTerminal`](Self::NearTerminal) states,
-    /// clustered around the start and the goals, nor [`Offered`](Self::Offered) ones, strung
-    /// along one path: either would make the set look more densely sampled than it is (and the
-    /// radius too small for asymptotic optimality).
+    /// clustered around the start and the goals, nor [`Offered`](Self::Offered) and
+    /// [`NearSolution`](Self::NearSolution) ones, strung along one path: any of them would
+    /// make the set look more densely sampled than it is (and the radius too small for
+    /// asymptotic optimality).
     ///
     /// ```
     /// use samplers::SampleOrigin;
@@ -130,9 +135,13 @@ impl SampleOrigin {
     /// assert!(SampleOrigin::Gaussian.counts_toward_density());
     /// assert!(!SampleOrigin::NearTerminal.counts_toward_density());
     /// assert!(!SampleOrigin::Offered.counts_toward_density());
+    /// assert!(!SampleOrigin::NearSolution.counts_toward_density());
     /// ```
     pub fn counts_toward_density(self) -> bool {
-        !matches!(self, Self::NearTerminal | Self::Offered)
+        !matches!(
+            self,
+            Self::NearTerminal | Self::Offered | Self::NearSolution
+        )
     }
 }
 

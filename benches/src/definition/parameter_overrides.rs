@@ -211,6 +211,8 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         connection: Some(mit_star::Connection::KNearest),
         batch_size: Some(problems::PAPER_BATCH_SIZE),
         batch_growth: Some(0.0),
+        solution_samples: Some(0.0),
+        neighbour_cap: Some(1.0),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {

@@ -88,7 +88,7 @@ impl RandomGeometricGraph {
         };
         let used = match self.neighbourhood {
             Neighbourhood::Nearest(k) => k.min(list.len()),
-            Neighbourhood::Radius(_) => list.len(),
+            Neighbourhood::Radius(_) => list.len().min(self.neighbour_cap),
         };
         self.lists[v as usize] = list;
         let (tag, log, removals) = (self.tag, self.log.len() as u32, self.removals);
@@ -159,7 +159,9 @@ impl RandomGeometricGraph {
                 out.push(self.entry(v, w, space, heuristic));
             }
         }
-        if self.indexed && !self.euclidean {
+        let capped = matches!(self.neighbourhood, Neighbourhood::Radius(_))
+            && self.neighbour_cap != usize::MAX;
+        if (self.indexed && !self.euclidean) || capped {
             out.sort_unstable_by(|a, b| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id)));
             if let Neighbourhood::Radius(r) = self.neighbourhood {
                 out.retain(|n| n.distance <= r);

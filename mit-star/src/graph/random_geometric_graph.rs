@@ -101,6 +101,9 @@ pub struct RandomGeometricGraph {
     /// Scratch for [`RecentStates::squared_distances`] (at most [`MERGE_LIMIT`] values).
     pub(crate) merge_distances: Vec<f64>,
     pub(crate) neighbourhood: Neighbourhood,
+    /// Under r-disc, the most neighbours (the nearest) a vertex is joined to in a batch
+    /// (`usize::MAX`: every one within the radius); with a cap, lists are kept nearest first.
+    pub(crate) neighbour_cap: usize,
     pub(crate) found: Neighbours,
     /// Scratch for a fresh neighbour list (kept apart from the cached one until the query
     /// completes).
@@ -155,6 +158,7 @@ impl RandomGeometricGraph {
             recent: RecentStates::new(dimension, MERGE_LIMIT),
             merge_distances: Vec::with_capacity(MERGE_LIMIT),
             neighbourhood: Neighbourhood::Nearest(1),
+            neighbour_cap: usize::MAX,
             found: Neighbours::new(),
             scratch_list: Vec::new(),
             linear_queries: 0,
@@ -234,6 +238,12 @@ impl RandomGeometricGraph {
     /// Sets the connection rule for the current batch.
     pub(crate) fn set_neighbourhood(&mut self, neighbourhood: Neighbourhood) {
         self.neighbourhood = neighbourhood;
+    }
+
+    /// Caps the neighbours of a vertex under r-disc at its `cap` nearest within the radius
+    /// (`usize::MAX`: no cap).
+    pub(crate) fn set_neighbour_cap(&mut self, cap: usize) {
+        self.neighbour_cap = cap;
     }
 
     /// The state of vertex `v`.

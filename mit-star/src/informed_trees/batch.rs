@@ -70,6 +70,10 @@ where
                     .min(self.space.measure());
                 let r = r_disc(q, n, eta, measure);
                 self.graph.set_neighbourhood(Neighbourhood::Radius(r));
+                let cap = self.parameters.neighbour_cap.map_or(usize::MAX, |c| {
+                    (c * k_nearest(q, n, eta) as f64).ceil() as usize
+                });
+                self.graph.set_neighbour_cap(cap);
                 r
             }
         }
@@ -178,10 +182,13 @@ where
         let ahead = size.min(RESERVE_AHEAD);
         ids.reserve(ahead);
         self.graph.reserve(ahead);
+        // Once a solution exists, part of the batch lies along its path.
+        let along = self.solution_sample_count(size);
+        let placed = self.add_solution_samples(along, stop, &mut ids);
         let mut sample = std::mem::take(&mut self.sample);
         let mut committed = 0;
         let chunk = commit_chunk(self.space.dimension());
-        for _ in 0..size {
+        for _ in placed..size {
             match self
                 .sampler
                 .sample(&self.space, &self.validity, bound, stop, &mut sample)
@@ -192,7 +199,7 @@ where
                     ids.push(self.graph.add_vertex(&sample, vertex));
                     // Large batches are committed and indexed as they grow (nearest-neighbour
                     // trees built in polled steps), not in one unpolled piece at the end.
-                    if ids.len() - committed == chunk {
+                    if ids.len() - committed >= chunk {
                         self.graph.commit(&ids[committed..]);
                         self.graph.index_pending(stop);
                         committed = ids.len();

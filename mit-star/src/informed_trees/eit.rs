@@ -5,7 +5,8 @@ use std::time::Duration;
 
 use heuristics::{Euclidean, Heuristic};
 use samplers::Sampler;
-use spaces::{StateSpace, States};
+use spaces::rand::SeedableRng;
+use spaces::{SeededRng, StateSpace, States};
 use validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
 
 use crate::graph::{NONE, RandomGeometricGraph, Vertex};
@@ -147,6 +148,16 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) frontier_states: Vec<f64>,
     /// Scratch of the start's search for its side of the frontier (`start_reach.rs`).
     pub(crate) start_reach: StartReach,
+    /// The random draws of the states placed along the best path (`solution_samples.rs`).
+    pub(crate) path_rng: SeededRng,
+    /// Scratch: the best path's states, `dimension` coordinates each.
+    pub(crate) path_states: Vec<f64>,
+}
+
+/// The generator of the states placed along the best path, from the planner's seed (its own
+/// stream: the sampler's draws do not move when it draws).
+fn path_rng(seed: u64) -> SeededRng {
+    SeededRng::seed_from_u64(seed ^ 0x5eed_0f5a_7a11)
 }
 
 impl<S, V, Smp, E, H, G> std::fmt::Debug for Eit<S, V, Smp, E, H, G> {
@@ -193,6 +204,7 @@ where
         let step = <E as EdgeChecker<S, Counted<V>>>::step(&checker);
         let n = space.dimension();
         let graph = RandomGeometricGraph::for_space(&space);
+        let parameters_seed = parameters.seed;
         Self {
             initial: (sampler.clone(), checker.clone()),
             space,
@@ -240,6 +252,8 @@ where
             frontier: Vec::new(),
             frontier_states: Vec::new(),
             start_reach: StartReach::default(),
+            path_rng: path_rng(parameters_seed),
+            path_states: Vec::new(),
         }
     }
 
@@ -583,6 +597,7 @@ where
         self.trace.clear();
         self.counters = Counters::default();
         self.elapsed = Duration::ZERO;
+        self.path_rng = path_rng(self.parameters.seed);
     }
 
     fn best_cost(&self) -> f64 {

@@ -20,6 +20,8 @@
 //!   the sampler at the end of a batch without a solution.
 //! - `start_reach.rs`: the start's side of that frontier, for a start in a pocket (outside a
 //!   reverse tree that holds most of the graph); `start_reach_tests.rs`, its tests.
+//! - `solution_samples.rs`: states placed along the best path, part of each batch once a
+//!   solution exists; `solution_samples_tests.rs`, its tests.
 //! - `batch.rs`: adding a batch of samples — prune, sample, reconnect, restart the searches;
 //!   `batch_tests.rs`: the sample count of its connection rules, and where ABIT*'s search of a
 //!   batch ends.
@@ -49,6 +51,9 @@ mod reverse_search;
 #[cfg(test)]
 mod setup_tests;
 mod solution_certification;
+mod solution_samples;
+#[cfg(test)]
+mod solution_samples_tests;
 mod start_reach;
 #[cfg(test)]
 mod start_reach_tests;
