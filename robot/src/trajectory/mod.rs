@@ -21,6 +21,7 @@
 
 mod blend_certifier;
 mod blend_timing;
+mod corner_search;
 mod joint_limits_yaml;
 mod motion_limits;
 #[allow(clippy::module_inception)]
