@@ -19,6 +19,13 @@
 //! `check`: certifies each `SCENE/NNNN.toppra.json` (TOPP-RA's trajectory sampled by
 //! `compare.py`) as a polyline against the problem's scene, and writes
 //! `SCENE/NNNN.toppra_check.json`.
+//!
+//! `retime`: times again the paths of a `plan` output (after `compare.py`'s TOPP-RA pass) with
+//! the current `Trajectory::blended`, and prints per scene the median and largest ratio of
+//! our durations to TOPP-RA's, for trying a change of the timing without planning again.
+//! `RETIME_VERBOSE=1` prints each path; `RETIME_EMPTY=1` certifies blends against an empty
+//! scene (self-collisions only: what the obstacles cost); `RETIME_FREE=1` also prints the
+//! certifications each path took.
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -256,7 +263,12 @@ fn retime(folder: &Path, out: &Path) {
                 serde_json::from_value(record["waypoints"].clone()).expect("waypoints");
             let problem = ArmProblem::panda_mbm(&folder.join(&scene), index).expect("problem");
             let limits = limits(&problem);
-            let certifier = BlendCertifier::new(problem.robot(), problem.scene());
+            let scene_of = if std::env::var_os("RETIME_EMPTY").is_some() {
+                robot::Scene::new(vec![])
+            } else {
+                problem.scene().clone()
+            };
+            let certifier = BlendCertifier::new(problem.robot(), &scene_of);
             let started = Instant::now();
             let (blended, _) = Trajectory::blended(&path, &limits, &certifier).expect("timed");
             took.push(started.elapsed().as_secs_f64() * 1e3);

@@ -7,27 +7,27 @@
 //! configuration is `w_i + σ d_i`, and the *speed* `σ̇` is at most `S_i = min_j V_j / |d_ij|`
 //! and changes at most at `α_i = min_j A_j / |d_ij|`: so every coordinate keeps its limits.
 //!
-//! At corner `k` the motion arrives along `d_{k−1}` at speed `e_k` and leaves along `d_k` at
-//! `x_k`: `e_k = c_k S_{k−1} min(1, r_k)` and `x_k = c_k S_k min(1, 1 / r_k)` for a *corner
-//! factor* `c_k ∈ [0, 1]` (0 at the path's ends: at rest) and a ratio `r_k` that slows one
-//! side more than the other. The velocity changes from `e_k d_{k−1}` to `x_k d_k` at constant
-//! acceleration over `τ_k = max_j |x_k d_kj − e_k d_{k−1,j}| / A_j`, centred on the waypoint:
-//! the blend runs from `w_k − e_k d_{k−1} τ_k / 2` to `w_k + x_k d_k τ_k / 2`, a parabola (a
-//! quadratic Bézier curve with control points these two and `w_k`). `c_k = 0` is a stop at
-//! `w_k`. Between its two blends a segment has the length `L_i = 1 − x_i τ_i / 2 − e_{i+1}
-//! τ_{i+1} / 2` left, crossed by the fastest profile from `x_i` to `e_{i+1}`: speed up at
-//! `α_i`, cruise at the peak (at most `S_i`), slow down at `α_i` — feasible when
-//! `|e_{i+1}² − x_i²| ≤ 2 α_i L_i`. A segment between two stops is then the time-optimal
-//! synchronized trapezoid (or triangle).
+//! At corner `k` the motion arrives along `d_{k−1}` at speed `e_k = u_k S_{k−1}` and leaves
+//! along `d_k` at `x_k = v_k S_k`, for shares `u_k, v_k ∈ [0, 1]` (0 at the path's ends: at
+//! rest). The velocity changes from `e_k d_{k−1}` to `x_k d_k` at constant acceleration over
+//! `τ_k = max_j |x_k d_kj − e_k d_{k−1,j}| / A_j` (the least time any motion takes between
+//! these velocities), centred on the waypoint: the blend runs from `w_k − e_k d_{k−1} τ_k / 2`
+//! to `w_k + x_k d_k τ_k / 2`, a parabola (a quadratic Bézier curve with control points these
+//! two and `w_k`). `u_k = v_k = 0` is a stop at `w_k`. Between its two blends a segment has
+//! the length `L_i = 1 − x_i τ_i / 2 − e_{i+1} τ_{i+1} / 2` left — a blend may take any part
+//! of its segments, up to all of it shared with the next blend — crossed by the fastest
+//! profile from `x_i` to `e_{i+1}`: speed up at `α_i`, cruise at the peak (at most `S_i`),
+//! slow down at `α_i` — feasible when `L_i ≥ 0` and `|e_{i+1}² − x_i²| ≤ 2 α_i L_i`. A
+//! segment between two stops is then the time-optimal synchronized trapezoid (or triangle).
 //!
-//! Corner factors start at 1 (or their caps) and ratios at 1; while a segment is infeasible
-//! the factor of the corner at its faster end shrinks by a tenth. Then two sweeps over the
-//! corners each try the factors 1, 0.9, …, 0 (within the caps) with the ratios 1, 0.7, 0.5,
-//! 1/0.7, 2 and keep the pair that takes least time, the other corners fixed (on the Panda's
-//! simplified MotionBenchMaker paths the ratios took the median duration from 1.086 to 1.084
-//! times TOPP-RA's, and the factors' grid from 0.2 to 0.1 took it from 1.099 to 1.086). Velocity is linear in a blend between two velocities within the limits
-//! and each blend's acceleration is `(v_out − v_in) / τ_k`: the limits hold exactly (limits
-//! rounded down, durations up, by a relative 10⁻¹²).
+//! Given the shares, everything else is the fastest it can be; the shares are chosen by
+//! `corner_search.rs`: exactly the best over a grid (dynamic programming along the chain of
+//! corners), refined around the best. On the Panda's simplified MotionBenchMaker paths this
+//! took the median duration from 1.084 times TOPP-RA's (coordinate sweeps over corner factors
+//! and speed ratios, as before) to 1.031 (`benches/peers/toppra/README.md`). Velocity is
+//! linear in a blend between two velocities within the limits and each blend's acceleration
+//! is `(v_out − v_in) / τ_k`: the limits hold exactly (limits rounded down, durations up, by
+//! a relative 10⁻¹²).
 
 use super::corner_search::{Corner, best_corners};
 use crate::trajectory::trajectory::checked_path;
@@ -165,7 +165,7 @@ impl Polyline<'_> {
     }
 
     /// Segment `i`'s profile between corners `ci` and `cj` (`None`: infeasible).
-    fn profile(&self, i: usize, ci: Corner, cj: Corner) -> Option<Profile> {
+    pub(super) fn profile(&self, i: usize, ci: Corner, cj: Corner) -> Option<Profile> {
         let (_, x) = self.corner_speeds(i, ci);
         let (e, _) = self.corner_speeds(i + 1, cj);
         Profile::new(
@@ -384,7 +384,7 @@ fn largest_certified(mut certified: impl FnMut(f64) -> bool) -> f64 {
 }
 
 /// The polyline of a checked `path`.
-fn polyline<'a, P: AsRef<[f64]>>(
+pub(super) fn polyline<'a, P: AsRef<[f64]>>(
     path: &'a [P],
     limits: &'a MotionLimits,
 ) -> Result<Polyline<'a>, TrajectoryError> {
@@ -416,7 +416,7 @@ fn polyline<'a, P: AsRef<[f64]>>(
 }
 
 /// The trajectory of the polyline with corners `corners` (feasible).
-fn timed(line: &Polyline<'_>, corners: &[Corner]) -> Trajectory {
+pub(super) fn timed(line: &Polyline<'_>, corners: &[Corner]) -> Trajectory {
     Trajectory::from_knots(line.limits.names().to_vec(), knots(line, corners))
 }
 
@@ -456,5 +456,83 @@ mod tests {
         assert_eq!((corners[1].enter, corners[1].leave), (1.0, 1.0));
         let t = timed(&line, &corners);
         assert!((t.duration() - 7.0).abs() < 1e-9, "{}", t.duration());
+    }
+
+    /// A deterministic stream of numbers in `[0, 1)` (a 64-bit linear congruential
+    /// generator's top bits).
+    fn stream(seed: u64) -> impl FnMut() -> f64 {
+        let mut state = seed;
+        move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 11) as f64 / (1_u64 << 53) as f64
+        }
+    }
+
+    #[test]
+    fn blended_limits_hold_between_knots_and_ends_are_at_rest() {
+        use spaces::StateSpace as _;
+        // Random zigzags of three joints, certified in free space: at random instants (not
+        // only knots) every velocity and acceleration is within its limit, the velocity is
+        // the derivative of the position, and the motion starts and ends at rest at the ends.
+        let panda = crate::ArmProblem::panda().unwrap();
+        let certifier = BlendCertifier::new(&panda, &crate::Scene::default());
+        let limits = MotionLimits::new(
+            panda.joint_names().to_vec(),
+            vec![2.0, 1.5, 2.5, 2.0, 2.5, 2.5, 2.5],
+            vec![3.0, 2.0, 4.0, 3.0, 5.0, 5.0, 5.0],
+        )
+        .unwrap();
+        let mut next = stream(7);
+        for _ in 0..20 {
+            let points = 2 + (next() * 6.0) as usize;
+            let path: Vec<Vec<f64>> = (0..points)
+                .map(|_| {
+                    let (lower, upper) = (
+                        panda.joint_space().lower().to_vec(),
+                        panda.joint_space().upper().to_vec(),
+                    );
+                    (0..7)
+                        .map(|j| lower[j] + (upper[j] - lower[j]) * (0.2 + 0.6 * next()))
+                        .collect()
+                })
+                .collect();
+            let (t, report) = Trajectory::blended(&path, &limits, &certifier).unwrap();
+            let stopping = Trajectory::stop_at_corners(&path, &limits).unwrap();
+            assert!(t.duration() <= stopping.duration() * (1.0 + 1e-12));
+            assert_eq!(
+                report.blended + report.shrunk + report.stopped,
+                points - 2,
+                "{report:?}"
+            );
+            assert!(t.within(&limits, 1e-9));
+            let grow = 1.0 + 1e-9;
+            for _ in 0..500 {
+                let at = next() * t.duration();
+                let (s, later) = (t.evaluate(at), t.evaluate(at + 1e-7));
+                for j in 0..7 {
+                    assert!(s.velocity[j].abs() <= limits.velocity()[j] * grow);
+                    assert!(s.acceleration[j].abs() <= limits.acceleration()[j] * grow);
+                    let slope = (later.position[j] - s.position[j]) / (later.time - s.time);
+                    assert!((slope - s.velocity[j]).abs() < 1e-5 + 1e-6 * s.acceleration[j].abs() * 1e2);
+                }
+            }
+            let (first, last) = (t.evaluate(0.0), t.evaluate(t.duration()));
+            assert_eq!(first.position, path[0]);
+            assert_eq!(&last.position, path.last().unwrap());
+            assert!(first.velocity.iter().chain(&last.velocity).all(|v| *v == 0.0));
+        }
+    }
+
+    #[test]
+    fn the_largest_certified_scale_is_found_from_below() {
+        for limit in [0.9, 0.5, 0.3, 0.01] {
+            let found = largest_certified(|f| f <= limit);
+            assert!(found <= limit && found > 0.0, "{limit}: {found}");
+            // Within a sixteenth of the last shrink's step below the limit.
+            assert!(limit - found <= limit * (1.0 / SHRINK - 1.0) / 16.0 + 1e-12, "{limit}: {found}");
+        }
+        assert_eq!(largest_certified(|_| false), 0.0);
     }
 }

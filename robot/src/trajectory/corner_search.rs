@@ -170,3 +170,62 @@ fn shortest(line: &Polyline<'_>, candidates: &[Vec<Corner>]) -> Vec<Corner> {
     }
     chosen
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::blend_timing::polyline;
+    use super::*;
+    use crate::MotionLimits;
+
+    /// The time of `corners` on `line`, `None` if a segment is infeasible.
+    fn total(line: &Polyline<'_>, corners: &[Corner]) -> Option<f64> {
+        (0..line.segments())
+            .map(|i| {
+                let p = line.profile(i, corners[i], corners[i + 1])?;
+                let half = |k: usize| 0.5 * line.blend(k, line.corner_speeds(k, corners[k]));
+                Some(half(i) + p.duration() + half(i + 1))
+            })
+            .sum()
+    }
+
+    #[test]
+    fn the_shortest_path_is_the_best_of_every_combination() {
+        let limits = MotionLimits::new(
+            vec!["a".into(), "b".into()],
+            vec![1.0, 2.0],
+            vec![1.5, 1.0],
+        )
+        .unwrap();
+        let path = [[0.0, 0.0], [1.0, 0.2], [1.3, 1.5], [0.2, 1.7], [0.0, 3.0]];
+        let line = polyline(&path, &limits).unwrap();
+        let shares = [0.0, 0.3, 0.6, 1.0];
+        let list: Vec<Corner> = shares
+            .iter()
+            .flat_map(|&enter| shares.iter().map(move |&leave| Corner { enter, leave }))
+            .collect();
+        let mut candidates = vec![list; 5];
+        candidates[0] = vec![Corner::STOP];
+        candidates[4] = vec![Corner::STOP];
+        let chosen = shortest(&line, &candidates);
+        let best = total(&line, &chosen).expect("feasible");
+        let mut brute = f64::INFINITY;
+        for a in &candidates[1] {
+            for b in &candidates[2] {
+                for c in &candidates[3] {
+                    let corners = [Corner::STOP, *a, *b, *c, Corner::STOP];
+                    if let Some(t) = total(&line, &corners) {
+                        brute = brute.min(t);
+                    }
+                }
+            }
+        }
+        assert!((best - brute).abs() <= 1e-12 * brute, "{best} vs {brute}");
+        // Some corner is passed moving, and the refinement does no worse than the grid.
+        assert!(chosen.iter().any(|c| *c != Corner::STOP));
+        let refined = best_corners(&line, &[0.0, 1.0, 1.0, 1.0, 0.0]);
+        assert!(total(&line, &refined).unwrap() <= best * (1.0 + 1e-12));
+        // Caps bound the shares; a cap of 0 is a stop.
+        let capped = best_corners(&line, &[0.0, 0.5, 0.0, 1.0, 0.0]);
+        assert!(capped[1].size() <= 0.5 && capped[2] == Corner::STOP);
+    }
+}
