@@ -273,6 +273,32 @@ fn retime(folder: &Path, out: &Path) {
             let (blended, _) = Trajectory::blended(&path, &limits, &certifier).expect("timed");
             took.push(started.elapsed().as_secs_f64() * 1e3);
             ratios.push(blended.duration() / toppra);
+            if std::env::var_os("RETIME_CHECK").is_some() {
+                let checker = robot::ArmChecker::new(problem.robot(), problem.scene());
+                for period in [None, Some(PERIOD)] {
+                    let file = TrajectoryFile::of(&blended, period).expect("sampled");
+                    let verdict = check_trajectory(
+                        &file,
+                        problem.robot(),
+                        problem.scene(),
+                        &limits,
+                        &checker,
+                    )
+                    .expect("checked");
+                    if !verdict.is_valid() {
+                        let gaps: Vec<f64> = blended
+                            .knots()
+                            .windows(2)
+                            .map(|w| w[1].time - w[0].time)
+                            .collect();
+                        println!(
+                            "{scene} {index}: period {period:?}: {:?}; knots at {:?}; gaps {gaps:?}",
+                            &verdict.violations[..verdict.violations.len().min(3)],
+                            blended.knots().iter().map(|k| k.time).collect::<Vec<_>>()
+                        );
+                    }
+                }
+            }
             if std::env::var_os("RETIME_FREE").is_some() {
                 let free = BlendCertifier::new(problem.robot(), &robot::Scene::new(vec![]));
                 let started = Instant::now();
