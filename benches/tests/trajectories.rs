@@ -145,7 +145,10 @@ fn trajectories_are_plotted_by_plan_and_check_path() {
     let dir = common::scratch("trajectory-plots", "plan");
     std::fs::create_dir_all(&dir).unwrap();
     let plot = dir.join("plan.png");
-    let blended = planned("plotted.json", &["--trajectory-plot", &plot.to_string_lossy()]);
+    let blended = planned(
+        "plotted.json",
+        &["--trajectory-plot", &plot.to_string_lossy()],
+    );
     assert!(is_a_drawn_png(&plot), "{}", plot.display());
     let problem = problem();
     let checked = blended.with_file_name("checked.png");

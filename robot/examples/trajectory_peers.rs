@@ -308,7 +308,10 @@ fn retime(folder: &Path, out: &Path) {
                     path.len(),
                     started.elapsed().as_secs_f64() * 1e3,
                     report.certifications,
-                    Trajectory::blended(&path, &limits, &certifier).expect("timed").1.certifications,
+                    Trajectory::blended(&path, &limits, &certifier)
+                        .expect("timed")
+                        .1
+                        .certifications,
                 );
             }
             if std::env::var_os("RETIME_VERBOSE").is_some() {

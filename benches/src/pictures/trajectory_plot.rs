@@ -264,12 +264,9 @@ mod tests {
     use super::*;
 
     fn plot() -> TrajectoryPlot {
-        let limits = robot::MotionLimits::new(
-            vec!["a".into(), "b".into()],
-            vec![1.0, 2.0],
-            vec![2.0, 1.0],
-        )
-        .unwrap();
+        let limits =
+            robot::MotionLimits::new(vec!["a".into(), "b".into()], vec![1.0, 2.0], vec![2.0, 1.0])
+                .unwrap();
         let t = robot::Trajectory::stop_at_corners(&[[0.0, 0.0], [1.0, 0.5], [0.2, 2.0]], &limits)
             .unwrap();
         TrajectoryPlot::new(

@@ -525,13 +525,21 @@ mod tests {
                     assert!(s.velocity[j].abs() <= limits.velocity()[j] * grow);
                     assert!(s.acceleration[j].abs() <= limits.acceleration()[j] * grow);
                     let slope = (later.position[j] - s.position[j]) / (later.time - s.time);
-                    assert!((slope - s.velocity[j]).abs() < 1e-5 + 1e-6 * s.acceleration[j].abs() * 1e2);
+                    assert!(
+                        (slope - s.velocity[j]).abs() < 1e-5 + 1e-6 * s.acceleration[j].abs() * 1e2
+                    );
                 }
             }
             let (first, last) = (t.evaluate(0.0), t.evaluate(t.duration()));
             assert_eq!(first.position, path[0]);
             assert_eq!(&last.position, path.last().unwrap());
-            assert!(first.velocity.iter().chain(&last.velocity).all(|v| *v == 0.0));
+            assert!(
+                first
+                    .velocity
+                    .iter()
+                    .chain(&last.velocity)
+                    .all(|v| *v == 0.0)
+            );
         }
     }
 
@@ -541,7 +549,10 @@ mod tests {
             let found = largest_certified(|f| f <= limit);
             assert!(found <= limit && found > 0.0, "{limit}: {found}");
             // Within a sixteenth of the last shrink's step below the limit.
-            assert!(limit - found <= limit * (1.0 / SHRINK - 1.0) / 16.0 + 1e-12, "{limit}: {found}");
+            assert!(
+                limit - found <= limit * (1.0 / SHRINK - 1.0) / 16.0 + 1e-12,
+                "{limit}: {found}"
+            );
         }
         assert_eq!(largest_certified(|_| false), 0.0);
     }

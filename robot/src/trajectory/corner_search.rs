@@ -190,12 +190,9 @@ mod tests {
 
     #[test]
     fn the_shortest_path_is_the_best_of_every_combination() {
-        let limits = MotionLimits::new(
-            vec!["a".into(), "b".into()],
-            vec![1.0, 2.0],
-            vec![1.5, 1.0],
-        )
-        .unwrap();
+        let limits =
+            MotionLimits::new(vec!["a".into(), "b".into()], vec![1.0, 2.0], vec![1.5, 1.0])
+                .unwrap();
         let path = [[0.0, 0.0], [1.0, 0.2], [1.3, 1.5], [0.2, 1.7], [0.0, 3.0]];
         let line = polyline(&path, &limits).unwrap();
         let shares = [0.0, 0.3, 0.6, 1.0];
