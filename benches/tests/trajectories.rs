@@ -133,6 +133,71 @@ fn planned_trajectories_pass_the_check_and_tampered_ones_do_not() {
     );
 }
 
+/// Whether `file` is a PNG of some substance: its signature, and over 20 kB (an empty
+/// 1400 × 1120 white picture compresses to a few kB).
+fn is_a_drawn_png(file: &std::path::Path) -> bool {
+    let bytes = std::fs::read(file).unwrap_or_default();
+    bytes.starts_with(b"\x89PNG\r\n\x1a\n") && bytes.len() > 20_000
+}
+
+#[test]
+fn trajectories_are_plotted_by_plan_and_check_path() {
+    let dir = common::scratch("trajectory-plots", "plan");
+    std::fs::create_dir_all(&dir).unwrap();
+    let plot = dir.join("plan.png");
+    let blended = planned(
+        "plotted.json",
+        &["--trajectory-plot", &plot.to_string_lossy()],
+    );
+    assert!(is_a_drawn_png(&plot), "{}", plot.display());
+    let problem = problem();
+    let checked = blended.with_file_name("checked.png");
+    let stdout = succeeded(&[
+        "check-path",
+        "--problem",
+        &problem,
+        "--trajectory",
+        &blended.to_string_lossy(),
+        "--joint-limits",
+        limits(),
+        "--plot",
+        &checked.to_string_lossy(),
+    ]);
+    assert!(stdout.contains("plot: "), "{stdout}");
+    assert!(is_a_drawn_png(&checked), "{}", checked.display());
+    // A plot without a trajectory, or of another format: refused before planning.
+    refused(
+        &[
+            "plan",
+            "--planner",
+            "rrt-connect",
+            "--problem",
+            &problem,
+            "--no-picture",
+            "--trajectory-plot",
+            "t.png",
+        ],
+        &["--trajectory"],
+    );
+    refused(
+        &[
+            "plan",
+            "--planner",
+            "rrt-connect",
+            "--problem",
+            &problem,
+            "--no-picture",
+            "--trajectory",
+            "t.json",
+            "--max-acceleration",
+            "2",
+            "--trajectory-plot",
+            "t.jpg",
+        ],
+        &["--trajectory-plot t.jpg", ".png or .svg"],
+    );
+}
+
 #[test]
 fn trajectory_options_are_checked_before_planning() {
     let problem = problem();

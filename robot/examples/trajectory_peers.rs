@@ -19,6 +19,13 @@
 //! `check`: certifies each `SCENE/NNNN.toppra.json` (TOPP-RA's trajectory sampled by
 //! `compare.py`) as a polyline against the problem's scene, and writes
 //! `SCENE/NNNN.toppra_check.json`.
+//!
+//! `retime`: times again the paths of a `plan` output (after `compare.py`'s TOPP-RA pass) with
+//! the current `Trajectory::blended`, and prints per scene the median and largest ratio of
+//! our durations to TOPP-RA's, for trying a change of the timing without planning again.
+//! `RETIME_VERBOSE=1` prints each path; `RETIME_EMPTY=1` certifies blends against an empty
+//! scene (self-collisions only: what the obstacles cost); `RETIME_FREE=1` also prints the
+//! certifications each path took.
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -49,7 +56,10 @@ fn main() {
             Path::new(&args[3]),
         ),
         Some("check") => check(Path::new(&args[1]), Path::new(&args[2])),
-        _ => panic!("usage: trajectory_peers plan MBM_FOLDER N OUT | check MBM_FOLDER OUT"),
+        Some("retime") => retime(Path::new(&args[1]), Path::new(&args[2])),
+        _ => panic!(
+            "usage: trajectory_peers plan MBM_FOLDER N OUT | check MBM_FOLDER OUT | retime MBM_FOLDER OUT"
+        ),
     }
 }
 
@@ -225,4 +235,109 @@ fn check(folder: &Path, out: &Path) {
             "{scene}: {checked} TOPP-RA trajectories certified, {colliding} not collision-free"
         );
     }
+}
+
+/// `retime`: times again the paths of a `plan` output whose TOPP-RA runs `compare.py` wrote,
+/// and prints per scene the median and largest ratio of our blended durations to TOPP-RA's
+/// and our median timing (for trying timing changes without planning again).
+fn retime(folder: &Path, out: &Path) {
+    let read = |p: &Path| -> serde_json::Value {
+        serde_json::from_str(&std::fs::read_to_string(p).expect("readable")).expect("JSON")
+    };
+    let (mut all, mut all_ms) = (vec![], vec![]);
+    for scene in SEVEN_SCENES {
+        let scene = format!("{scene}_panda");
+        let dir = out.join(&scene);
+        let (mut ratios, mut took) = (vec![], vec![]);
+        for index in 1..=1000 {
+            let path_file = dir.join(format!("{index:04}.path.json"));
+            let run_file = dir.join(format!("{index:04}.toppra_run.json"));
+            if !path_file.exists() || !run_file.exists() {
+                continue;
+            }
+            let (record, run) = (read(&path_file), read(&run_file));
+            let Some(toppra) = run["toppra_duration"].as_f64() else {
+                continue;
+            };
+            let path: Vec<Vec<f64>> =
+                serde_json::from_value(record["waypoints"].clone()).expect("waypoints");
+            let problem = ArmProblem::panda_mbm(&folder.join(&scene), index).expect("problem");
+            let limits = limits(&problem);
+            let scene_of = if std::env::var_os("RETIME_EMPTY").is_some() {
+                robot::Scene::new(vec![])
+            } else {
+                problem.scene().clone()
+            };
+            let certifier = BlendCertifier::new(problem.robot(), &scene_of);
+            let started = Instant::now();
+            let (blended, _) = Trajectory::blended(&path, &limits, &certifier).expect("timed");
+            took.push(started.elapsed().as_secs_f64() * 1e3);
+            ratios.push(blended.duration() / toppra);
+            if std::env::var_os("RETIME_CHECK").is_some() {
+                let checker = robot::ArmChecker::new(problem.robot(), problem.scene());
+                for period in [None, Some(PERIOD)] {
+                    let file = TrajectoryFile::of(&blended, period).expect("sampled");
+                    let verdict = check_trajectory(
+                        &file,
+                        problem.robot(),
+                        problem.scene(),
+                        &limits,
+                        &checker,
+                    )
+                    .expect("checked");
+                    if !verdict.is_valid() {
+                        let gaps: Vec<f64> = blended
+                            .knots()
+                            .windows(2)
+                            .map(|w| w[1].time - w[0].time)
+                            .collect();
+                        println!(
+                            "{scene} {index}: period {period:?}: {:?}; knots at {:?}; gaps {gaps:?}",
+                            &verdict.violations[..verdict.violations.len().min(3)],
+                            blended.knots().iter().map(|k| k.time).collect::<Vec<_>>()
+                        );
+                    }
+                }
+            }
+            if std::env::var_os("RETIME_FREE").is_some() {
+                let free = BlendCertifier::new(problem.robot(), &robot::Scene::new(vec![]));
+                let started = Instant::now();
+                let (_, report) = Trajectory::blended(&path, &limits, &free).expect("timed");
+                println!(
+                    "{scene} {index}: {} waypoints, {:.3} ms in free space ({} certifications), {} certifications in the scene",
+                    path.len(),
+                    started.elapsed().as_secs_f64() * 1e3,
+                    report.certifications,
+                    Trajectory::blended(&path, &limits, &certifier)
+                        .expect("timed")
+                        .1
+                        .certifications,
+                );
+            }
+            if std::env::var_os("RETIME_VERBOSE").is_some() {
+                println!(
+                    "{scene} {index}: {} waypoints, ratio {:.3}",
+                    path.len(),
+                    blended.duration() / toppra
+                );
+            }
+        }
+        all.extend(&ratios);
+        all_ms.extend(&took);
+        let max = ratios.iter().copied().fold(0.0, f64::max);
+        println!(
+            "{scene}: {} paths, median ratio {:.3}, max {max:.3}, median timing {:.3} ms",
+            ratios.len(),
+            mbm_scenes::median(&mut ratios),
+            mbm_scenes::median(&mut took)
+        );
+    }
+    let max = all.iter().copied().fold(0.0, f64::max);
+    let over = all.iter().filter(|&&r| r > 1.05).count();
+    println!(
+        "all: {} paths, median ratio {:.4}, max {max:.3}, > 1.05: {over}, median timing {:.3} ms",
+        all.len(),
+        mbm_scenes::median(&mut all),
+        mbm_scenes::median(&mut all_ms)
+    );
 }

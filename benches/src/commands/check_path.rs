@@ -44,6 +44,10 @@ pub struct CheckPathArgs {
     /// configurations in collision marked in red.
     #[arg(long, value_name = "FILE.html")]
     pub view: Option<PathBuf>,
+    /// With `--trajectory`: draw it (each joint's position, velocity and acceleration against
+    /// time, the limits dashed) into this PNG (or `.svg`) file.
+    #[arg(long, value_name = "FILE.png", requires = "trajectory")]
+    pub plot: Option<PathBuf>,
 }
 
 /// The largest `--tolerance` accepted: 1e-3 per coordinate, a hundred times the `f32`
@@ -86,7 +90,7 @@ impl CheckPathArgs {
                 file,
                 &self.limits,
                 Some(&instance),
-                page,
+                (page, self.plot.as_deref()),
             );
         }
         let text = problems::read_bounded(self.path(), PATH_FILE_LIMIT, "path file").map_err(

@@ -13,6 +13,7 @@ use crate::commands::CommandOutcome;
 use crate::error::HarnessError;
 use crate::formats::kpi_table::number;
 use crate::pictures::plan_view::PlanView;
+use crate::pictures::trajectory_plot::TrajectoryPlot;
 
 /// Where the velocity and acceleration limits come from, and their scaling.
 #[derive(Debug, Args, Clone)]
@@ -71,6 +72,14 @@ pub enum Corners {
 }
 
 impl Corners {
+    /// The option's value naming this.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Stop => "stop",
+            Self::Blend => "blend",
+        }
+    }
+
     /// Times `path` (repeated states merged) on `arm` under `limits`, passing its corners
     /// this way; what became of the corners when blending.
     ///
@@ -113,6 +122,11 @@ pub struct TrajectoryArgs {
     /// How to pass the corners.
     #[arg(long, value_enum, default_value = "blend", requires = "trajectory")]
     pub corners: Corners,
+    /// Also draw the trajectory — each joint's position, velocity and acceleration against
+    /// time, its velocity and acceleration limits dashed, the knots marked — into this PNG
+    /// (or `.svg`) file.
+    #[arg(long, value_name = "FILE.png", requires = "trajectory")]
+    pub trajectory_plot: Option<PathBuf>,
     /// The limits.
     #[command(flatten)]
     pub limits: LimitArgs,
@@ -127,6 +141,7 @@ pub struct Timed {
     samples: usize,
     report: Option<robot::BlendReport>,
     trajectory: Trajectory,
+    plot: Option<PathBuf>,
 }
 
 impl Timed {
@@ -135,7 +150,7 @@ impl Timed {
         &self.trajectory
     }
 
-    /// One line for the text report.
+    /// The line for the text report (and one naming the plot, if drawn).
     pub fn line(&self) -> String {
         let corners = self.report.as_ref().map_or_else(String::new, |r| {
             format!(
@@ -149,7 +164,9 @@ impl Timed {
             number(self.duration),
             self.knots,
             self.samples
-        )
+        ) + &self.plot.as_ref().map_or_else(String::new, |p| {
+            format!("\n  trajectory plot: {}", p.display())
+        })
     }
 
     /// The JSON object for `--json`.
@@ -160,6 +177,7 @@ impl Timed {
             "knots": self.knots,
             "samples": self.samples,
             "corners": self.report.as_ref().map(|r| [r.blended, r.shrunk, r.stopped]),
+            "plot": self.plot,
         })
     }
 }
@@ -187,6 +205,9 @@ impl TrajectoryArgs {
                 "--trajectory {}: the file is .json or .csv",
                 file.display()
             )));
+        }
+        if let Some(plot) = &self.trajectory_plot {
+            plot_name(plot, "--trajectory-plot")?;
         }
         if let Some(p) = self.sample_period
             && !(p > 0.0 && p.is_finite())
@@ -216,6 +237,15 @@ impl TrajectoryArgs {
         let (trajectory, report) = self.corners.time(arm, limits, path).map_err(usage)?;
         let written = TrajectoryFile::of(&trajectory, self.sample_period).map_err(usage)?;
         written.write(file).map_err(usage)?;
+        if let Some(plot) = &self.trajectory_plot {
+            TrajectoryPlot::new(
+                format!("{} ({} corners)", file.display(), self.corners.name()),
+                limits.names().to_vec(),
+                trajectory.knots().to_vec(),
+                (limits.velocity().to_vec(), limits.acceleration().to_vec()),
+            )
+            .save(plot)?;
+        }
         Ok(Some(Timed {
             file: file.clone(),
             duration: trajectory.duration(),
@@ -223,6 +253,7 @@ impl TrajectoryArgs {
             samples: written.samples.len(),
             report,
             trajectory,
+            plot: self.trajectory_plot.clone(),
         }))
     }
 }
@@ -238,13 +269,16 @@ pub(crate) fn check_trajectory_file(
     file: &std::path::Path,
     limits: &LimitArgs,
     view: Option<&crate::ProblemInstance>,
-    page: Option<&std::path::Path>,
+    (page, plot): (Option<&std::path::Path>, Option<&std::path::Path>),
 ) -> Result<CommandOutcome, HarnessError> {
     let Some(arm) = arm else {
         return Err(HarnessError::Usage(
             "--trajectory is for arm problems".into(),
         ));
     };
+    if let Some(plot) = plot {
+        plot_name(plot, "--plot")?;
+    }
     let usage = |e: robot::TrajectoryError| HarnessError::Usage(e.to_string());
     let motion = limits.limits(arm)?;
     let trajectory = TrajectoryFile::read(file).map_err(usage)?;
@@ -269,6 +303,30 @@ pub(crate) fn check_trajectory_file(
     say!("  {verdict}");
     for v in &check.violations {
         say!("    {v:?}");
+    }
+    if let Some(plot) = plot {
+        // The limits in the file's joint order (the check refused joints not the robot's).
+        let order = |list: &[f64]| -> Vec<f64> {
+            trajectory
+                .joints
+                .iter()
+                .map(|j| {
+                    motion
+                        .names()
+                        .iter()
+                        .position(|n| n == j)
+                        .map_or(f64::NAN, |k| list[k])
+                })
+                .collect()
+        };
+        TrajectoryPlot::new(
+            format!("{}: {verdict}", file.display()),
+            trajectory.joints.clone(),
+            trajectory.samples.clone(),
+            (order(motion.velocity()), order(motion.acceleration())),
+        )
+        .save(plot)?;
+        say!("  plot: {}", plot.display());
     }
     if let (Some(instance), Some(page)) = (view, page) {
         let title = format!("{} on {}", file.display(), instance.title());
@@ -298,6 +356,17 @@ pub(crate) fn check_trajectory_file(
     } else {
         CommandOutcome::InvalidPaths
     })
+}
+
+/// Refuses a plot file `name` (given as `option`) that is not `.png` or `.svg`.
+fn plot_name(name: &std::path::Path, option: &str) -> Result<(), HarnessError> {
+    match name.extension().and_then(|e| e.to_str()) {
+        Some("png" | "svg") => Ok(()),
+        _ => Err(HarnessError::Usage(format!(
+            "{option} {}: the picture is .png or .svg",
+            name.display()
+        ))),
+    }
 }
 
 /// The samples' positions in the robot's coordinate order (`robot`'s joint names), or `None`

@@ -11,6 +11,9 @@
 //!   steps through) and [`search_view`] (the search overlay), built by [`plan_view`];
 //!   [`instance_views`]: the best and worst run of each instance, for `report.html`;
 //!   [`robot_sweep`]: a robot on its own, each joint through its range (`robots --view`).
+//! - [`trajectory_plot`]: a timed arm trajectory against time (position, velocity and
+//!   acceleration per joint, the limits dashed), drawn by `plan --trajectory-plot` and
+//!   `check-path --trajectory … --plot`.
 //! - [`plot_style`]: the look they share: the embedded font, the planners' colours, saving
 //!   SVG and PNG.
 //!
@@ -27,5 +30,6 @@ pub(crate) mod plot_style;
 pub(crate) mod robot_sweep;
 pub(crate) mod run_picture;
 pub(crate) mod search_view;
+pub(crate) mod trajectory_plot;
 pub(crate) mod view_frames;
 pub(crate) mod world_view;

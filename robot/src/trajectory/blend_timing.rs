@@ -7,28 +7,29 @@
 //! configuration is `w_i + σ d_i`, and the *speed* `σ̇` is at most `S_i = min_j V_j / |d_ij|`
 //! and changes at most at `α_i = min_j A_j / |d_ij|`: so every coordinate keeps its limits.
 //!
-//! At corner `k` the motion arrives along `d_{k−1}` at speed `e_k` and leaves along `d_k` at
-//! `x_k`: `e_k = c_k S_{k−1} min(1, r_k)` and `x_k = c_k S_k min(1, 1 / r_k)` for a *corner
-//! factor* `c_k ∈ [0, 1]` (0 at the path's ends: at rest) and a ratio `r_k` that slows one
-//! side more than the other. The velocity changes from `e_k d_{k−1}` to `x_k d_k` at constant
-//! acceleration over `τ_k = max_j |x_k d_kj − e_k d_{k−1,j}| / A_j`, centred on the waypoint:
-//! the blend runs from `w_k − e_k d_{k−1} τ_k / 2` to `w_k + x_k d_k τ_k / 2`, a parabola (a
-//! quadratic Bézier curve with control points these two and `w_k`). `c_k = 0` is a stop at
-//! `w_k`. Between its two blends a segment has the length `L_i = 1 − x_i τ_i / 2 − e_{i+1}
-//! τ_{i+1} / 2` left, crossed by the fastest profile from `x_i` to `e_{i+1}`: speed up at
-//! `α_i`, cruise at the peak (at most `S_i`), slow down at `α_i` — feasible when
-//! `|e_{i+1}² − x_i²| ≤ 2 α_i L_i`. A segment between two stops is then the time-optimal
-//! synchronized trapezoid (or triangle).
+//! At corner `k` the motion arrives along `d_{k−1}` at speed `e_k = u_k S_{k−1}` and leaves
+//! along `d_k` at `x_k = v_k S_k`, for shares `u_k, v_k ∈ [0, 1]` (0 at the path's ends: at
+//! rest). The velocity changes from `e_k d_{k−1}` to `x_k d_k` at constant acceleration over
+//! `τ_k = max_j |x_k d_kj − e_k d_{k−1,j}| / A_j` (the least time any motion takes between
+//! these velocities), centred on the waypoint: the blend runs from `w_k − e_k d_{k−1} τ_k / 2`
+//! to `w_k + x_k d_k τ_k / 2`, a parabola (a quadratic Bézier curve with control points these
+//! two and `w_k`). `u_k = v_k = 0` is a stop at `w_k`. Between its two blends a segment has
+//! the length `L_i = 1 − x_i τ_i / 2 − e_{i+1} τ_{i+1} / 2` left — a blend may take any part
+//! of its segments, up to all of it shared with the next blend — crossed by the fastest
+//! profile from `x_i` to `e_{i+1}`: speed up at `α_i`, cruise at the peak (at most `S_i`),
+//! slow down at `α_i` — feasible when `L_i ≥ 0` and `|e_{i+1}² − x_i²| ≤ 2 α_i L_i`. A
+//! segment between two stops is then the time-optimal synchronized trapezoid (or triangle).
 //!
-//! Corner factors start at 1 (or their caps) and ratios at 1; while a segment is infeasible
-//! the factor of the corner at its faster end shrinks by a tenth. Then two sweeps over the
-//! corners each try the factors 1, 0.9, …, 0 (within the caps) with the ratios 1, 0.7, 0.5,
-//! 1/0.7, 2 and keep the pair that takes least time, the other corners fixed (on the Panda's
-//! simplified MotionBenchMaker paths the ratios took the median duration from 1.086 to 1.084
-//! times TOPP-RA's, and the factors' grid from 0.2 to 0.1 took it from 1.099 to 1.086). Velocity is linear in a blend between two velocities within the limits
-//! and each blend's acceleration is `(v_out − v_in) / τ_k`: the limits hold exactly (limits
-//! rounded down, durations up, by a relative 10⁻¹²).
+//! Given the shares, everything else is the fastest it can be; the shares are chosen by
+//! `corner_search.rs`: exactly the best over a grid (dynamic programming along the chain of
+//! corners), refined around the best. On the Panda's simplified MotionBenchMaker paths this
+//! took the median duration from 1.084 times TOPP-RA's (coordinate sweeps over corner factors
+//! and speed ratios, as before) to 1.031 (`benches/peers/toppra/README.md`). Velocity is
+//! linear in a blend between two velocities within the limits and each blend's acceleration
+//! is `(v_out − v_in) / τ_k`: the limits hold exactly (limits rounded down, durations up, by
+//! a relative 10⁻¹²).
 
+use super::corner_search::{Corner, best_corners};
 use crate::trajectory::trajectory::checked_path;
 use crate::{BlendCertifier, MotionLimits, Sample, Trajectory, TrajectoryError};
 
@@ -36,21 +37,25 @@ use crate::{BlendCertifier, MotionLimits, Sample, Trajectory, TrajectoryError};
 /// floating-point arithmetic.
 const ROUNDING: f64 = 1e-12;
 
-/// Shrinks of a blend (its corner factor times [`SHRINK`]) before its corner becomes a stop.
+/// Rounds of shrinking a corner's blend after a failed certification before the corner
+/// becomes a stop.
 const SHRINKS: u32 = 12;
 
-/// What a shrink multiplies a corner factor by: the blend's distance from its corner by
-/// about a half.
+/// What a shrink multiplies a corner's speeds by (the blend's distance from its corner by
+/// about a half), until the blend is certified.
 const SHRINK: f64 = 0.7;
 
-/// The corner factors tried by the sweeps, as shares of the corner's cap.
-const FACTORS: [f64; 11] = [1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.0];
+/// Bisections of the scale between the last shrink certified and the one before it.
+const BISECTIONS: u32 = 4;
 
-/// The ratios of a corner's speed in to its speed out tried by the sweeps.
-const RATIOS: [f64; 5] = [1.0, 0.7, 0.5, 1.0 / 0.7, 2.0];
-
-/// Sweeps of the corner factors.
-const SWEEPS: usize = 2;
+/// What the largest certified scale of a refused blend is multiplied by to cap its corner. A
+/// blend bisected to the edge of what can be certified passes within micrometres of an
+/// obstacle, where a check cutting it into other chords (a file sampled every millisecond,
+/// checked piece by piece by `check_trajectory`) may fail to certify it, though it is
+/// certified as timed. On the 175 Panda paths of `benches/peers/toppra`, 4 such files failed
+/// that check without backing off, 1 at 0.97, none at 0.95 or 0.9 (median duration ratios to
+/// TOPP-RA 1.031, 1.034, 1.041, 1.045).
+const BACK_OFF: f64 = 0.95;
 
 /// How a blended trajectory came out: what became of its interior corners, and the blend
 /// certifications it took.
@@ -67,18 +72,18 @@ pub struct BlendReport {
 }
 
 /// The polyline to time.
-struct Polyline<'a> {
+pub(super) struct Polyline<'a> {
     points: Vec<&'a [f64]>,
     directions: Vec<Vec<f64>>,
     /// Per segment, its speed and speed-change limits `S_i`, `α_i`.
-    speed: Vec<(f64, f64)>,
+    pub(super) speed: Vec<(f64, f64)>,
     limits: &'a MotionLimits,
 }
 
 /// One segment's speed profile: from `x` speeding up to `peak`, cruising, slowing to `e`,
 /// over the length `length` starting at `from` (fractions of the segment).
 #[derive(Debug, Clone, Copy)]
-struct Profile {
+pub(super) struct Profile {
     from: f64,
     x: f64,
     peak: f64,
@@ -87,26 +92,69 @@ struct Profile {
     decelerate: f64,
 }
 
+impl Profile {
+    /// The fastest profile over a segment of top speed and speed-change limit `(top,
+    /// alpha)`, leaving a blend of `tau_x` seconds at speed `x` and entering one of `tau_e`
+    /// seconds at speed `e` (`None`: the blends leave too little of the segment).
+    pub(super) fn new(
+        (top, alpha): (f64, f64),
+        (x, tau_x): (f64, f64),
+        (e, tau_e): (f64, f64),
+    ) -> Option<Self> {
+        let from = 0.5 * x * tau_x;
+        let length = 1.0 - from - 0.5 * e * tau_e;
+        if length.is_nan() || length < 0.0 || (e * e - x * x).abs() > 2.0 * alpha * length {
+            return None;
+        }
+        let peak = (alpha * length + 0.5 * (x * x + e * e))
+            .sqrt()
+            .min(top)
+            .max(x)
+            .max(e);
+        let accelerate = (peak - x) / alpha;
+        let decelerate = (peak - e) / alpha;
+        let ramps = (2.0 * peak * peak - x * x - e * e) / (2.0 * alpha);
+        let cruise = if peak > 0.0 {
+            ((length - ramps) / peak).max(0.0)
+        } else {
+            0.0
+        };
+        Some(Self {
+            from,
+            x,
+            peak,
+            accelerate,
+            cruise,
+            decelerate,
+        })
+    }
+
+    /// The time from the end of the blend before to the start of the blend after.
+    pub(super) fn duration(&self) -> f64 {
+        self.accelerate + self.cruise + self.decelerate
+    }
+}
+
 impl Polyline<'_> {
-    fn segments(&self) -> usize {
+    /// The number of segments.
+    pub(super) fn segments(&self) -> usize {
         self.directions.len()
     }
 
-    /// Corner `k`'s speeds in and out at `corner`.
-    fn corner_speeds(&self, k: usize, corner: Corner) -> (f64, f64) {
+    /// Corner `k`'s speeds in and out at `corner` (at rest at the path's ends).
+    pub(super) fn corner_speeds(&self, k: usize, corner: Corner) -> (f64, f64) {
         let m = self.segments();
         if k == 0 || k == m {
             return (0.0, 0.0);
         }
-        let Corner { factor, ratio } = corner;
         (
-            factor * self.speed[k - 1].0 * ratio.min(1.0),
-            factor * self.speed[k].0 * ratio.recip().min(1.0),
+            corner.enter * self.speed[k - 1].0,
+            corner.leave * self.speed[k].0,
         )
     }
 
     /// The blend duration at corner `k` with speeds `(e, x)`.
-    fn blend(&self, k: usize, (e, x): (f64, f64)) -> f64 {
+    pub(super) fn blend(&self, k: usize, (e, x): (f64, f64)) -> f64 {
         let a = self.limits.acceleration();
         let mut tau = 0.0_f64;
         for (j, limit) in a.iter().enumerate() {
@@ -125,122 +173,59 @@ impl Polyline<'_> {
         tau * (1.0 + ROUNDING)
     }
 
-    /// Segment `i`'s profile between corner factors `ci` and `cj` (`None`: infeasible).
-    fn profile(&self, i: usize, ci: Corner, cj: Corner) -> Option<Profile> {
+    /// Segment `i`'s profile between corners `ci` and `cj` (`None`: infeasible).
+    pub(super) fn profile(&self, i: usize, ci: Corner, cj: Corner) -> Option<Profile> {
         let (_, x) = self.corner_speeds(i, ci);
         let (e, _) = self.corner_speeds(i + 1, cj);
-        let (top, alpha) = self.speed[i];
-        let from = 0.5 * x * self.blend(i, self.corner_speeds(i, ci));
-        let length = 1.0 - from - 0.5 * e * self.blend(i + 1, self.corner_speeds(i + 1, cj));
-        if length.is_nan() || length < 0.0 || (e * e - x * x).abs() > 2.0 * alpha * length {
-            return None;
-        }
-        let peak = (alpha * length + 0.5 * (x * x + e * e))
-            .sqrt()
-            .min(top)
-            .max(x)
-            .max(e);
-        let accelerate = (peak - x) / alpha;
-        let decelerate = (peak - e) / alpha;
-        let ramps = (2.0 * peak * peak - x * x - e * e) / (2.0 * alpha);
-        let cruise = if peak > 0.0 {
-            ((length - ramps) / peak).max(0.0)
-        } else {
-            0.0
-        };
-        Some(Profile {
-            from,
-            x,
-            peak,
-            accelerate,
-            cruise,
-            decelerate,
-        })
-    }
-
-    /// The time from corner `k`'s blend through segment `k` (`None`: infeasible).
-    fn time(&self, c: &[Corner], i: usize) -> Option<f64> {
-        let p = self.profile(i, c[i], c[i + 1])?;
-        Some(
-            0.5 * self.blend(i, self.corner_speeds(i, c[i]))
-                + p.accelerate
-                + p.cruise
-                + p.decelerate
-                + 0.5 * self.blend(i + 1, self.corner_speeds(i + 1, c[i + 1])),
+        Profile::new(
+            self.speed[i],
+            (x, self.blend(i, self.corner_speeds(i, ci))),
+            (e, self.blend(i + 1, self.corner_speeds(i + 1, cj))),
         )
     }
-
-    /// Corners within `caps` (ends at rest) that make every segment feasible, tuned for time
-    /// as the module docs say.
-    fn factors(&self, caps: &[f64]) -> Vec<Corner> {
-        let m = self.segments();
-        let mut c: Vec<Corner> = caps
-            .iter()
-            .map(|&factor| Corner { factor, ratio: 1.0 })
-            .collect();
-        c[0].factor = 0.0;
-        c[m].factor = 0.0;
-        for _ in 0..100_000 {
-            let Some(i) = (0..m).find(|&i| self.profile(i, c[i], c[i + 1]).is_none()) else {
-                break;
-            };
-            // Shrink the faster end (an end at rest cannot be the cause alone).
-            let (_, x) = self.corner_speeds(i, c[i]);
-            let (e, _) = self.corner_speeds(i + 1, c[i + 1]);
-            let k = if (x >= e && i > 0) || i + 1 == m {
-                i
-            } else {
-                i + 1
-            };
-            let f = &mut c[k].factor;
-            *f = if *f < 1e-6 { 0.0 } else { *f * 0.9 };
-        }
-        if (0..m).any(|i| self.profile(i, c[i], c[i + 1]).is_none()) {
-            c.iter_mut().for_each(|corner| corner.factor = 0.0);
-        }
-        for _ in 0..SWEEPS {
-            for k in 1..m {
-                let local =
-                    |c: &[Corner]| -> Option<f64> { Some(self.time(c, k - 1)? + self.time(c, k)?) };
-                let mut best = (local(&c).unwrap_or(f64::INFINITY), c[k]);
-                for f in FACTORS {
-                    for ratio in RATIOS {
-                        let corner = Corner {
-                            factor: f * caps[k],
-                            ratio,
-                        };
-                        let mut trial = c.clone();
-                        trial[k] = corner;
-                        if let Some(t) = local(&trial)
-                            && t < best.0
-                        {
-                            best = (t, corner);
-                        }
-                    }
-                }
-                c[k] = best.1;
-            }
-        }
-        c
-    }
 }
 
-/// How a corner is passed: its factor `c_k` of the segments' top speeds, and the ratio of
-/// the speed in to the speed out (1: both at `c_k` of their top speeds; below 1 the speed in
-/// is lowered, above 1 the speed out).
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Corner {
-    factor: f64,
-    ratio: f64,
+/// The blend at corner `k` passed at `corner`: its first knot (time 0) and its duration.
+fn blend_entry(line: &Polyline<'_>, k: usize, corner: Corner) -> (Sample, f64) {
+    let n = line.limits.names().len();
+    let m = line.segments();
+    let (e, x) = line.corner_speeds(k, corner);
+    let tau = line.blend(k, (e, x));
+    let along = |i: usize, s: f64| -> Vec<f64> {
+        if i < m {
+            line.directions[i].iter().map(|d| s * d).collect()
+        } else {
+            vec![0.0; n]
+        }
+    };
+    let vin = if k > 0 { along(k - 1, e) } else { vec![0.0; n] };
+    let vout = along(k, x);
+    let position = if k > 0 {
+        let (w, d) = (line.points[k - 1], &line.directions[k - 1]);
+        let f = 1.0 - 0.5 * e * tau;
+        (0..n).map(|j| w[j] + f * d[j]).collect()
+    } else {
+        line.points[0].to_vec()
+    };
+    let acceleration = if tau > 0.0 {
+        (0..n).map(|j| (vout[j] - vin[j]) / tau).collect()
+    } else {
+        vec![0.0; n]
+    };
+    let entry = Sample {
+        time: 0.0,
+        position,
+        velocity: vin,
+        acceleration,
+    };
+    (entry, tau)
 }
 
-/// The knots of the polyline with corner factors `c` (feasible), and per interior blend its
-/// corner and the index of its first knot.
-fn knots(line: &Polyline<'_>, c: &[Corner]) -> (Vec<Sample>, Vec<(usize, usize)>) {
+/// The knots of the polyline with corners `c` (feasible).
+fn knots(line: &Polyline<'_>, c: &[Corner]) -> Vec<Sample> {
     let n = line.limits.names().len();
     let m = line.segments();
     let mut out = Vec::new();
-    let mut blends = Vec::new();
     let mut t = 0.0;
     let zero = vec![0.0; n];
     let along =
@@ -250,27 +235,11 @@ fn knots(line: &Polyline<'_>, c: &[Corner]) -> (Vec<Sample>, Vec<(usize, usize)>
         (0..n).map(|j| w[j] + f * d[j]).collect()
     };
     for k in 0..=m {
-        let (e, x) = line.corner_speeds(k, c[k]);
-        let tau = line.blend(k, (e, x));
+        let (mut entry, tau) = blend_entry(line, k, c[k]);
         // A phase too short to advance the clock is left out (its motion is below rounding).
         if t + tau > t {
-            let vin = if k > 0 { along(k - 1, e) } else { zero.clone() };
-            let vout = if k < m { along(k, x) } else { zero.clone() };
-            let entry = if k > 0 {
-                point(k - 1, 1.0 - 0.5 * e * tau)
-            } else {
-                line.points[0].to_vec()
-            };
-            let acceleration = (0..n).map(|j| (vout[j] - vin[j]) / tau).collect();
-            if k > 0 && k < m {
-                blends.push((k, out.len()));
-            }
-            out.push(Sample {
-                time: t,
-                position: entry,
-                velocity: vin,
-                acceleration,
-            });
+            entry.time = t;
+            out.push(entry);
             t += tau;
         }
         if k == m {
@@ -304,7 +273,7 @@ fn knots(line: &Polyline<'_>, c: &[Corner]) -> (Vec<Sample>, Vec<(usize, usize)>
         velocity: zero.clone(),
         acceleration: zero,
     });
-    (out, blends)
+    out
 }
 
 impl Trajectory {
@@ -327,14 +296,18 @@ impl Trajectory {
         limits: &MotionLimits,
     ) -> Result<Self, TrajectoryError> {
         let line = polyline(path, limits)?;
-        Ok(timed(&line, &vec![0.0; line.segments() + 1]).0)
+        let stops = vec![Corner::STOP; line.segments() + 1];
+        Ok(timed(&line, &stops))
     }
 
     /// The motion along `path` with parabolic blends at its corners (module docs of
-    /// `blend_timing.rs`), each blend certified collision-free by `certifier`: a blend it
-    /// cannot certify is shrunk (its corner factor times 0.7, up to twelve times) and then made a
-    /// stop. Returns the faster of that and [`stop_at_corners`](Self::stop_at_corners), with
-    /// what became of the corners.
+    /// `blend_timing.rs`), the corners' speeds those that take least time (a search over grids
+    /// of them, `corner_search.rs`), each blend certified collision-free by `certifier`. A
+    /// blend it cannot certify is shrunk (its speeds scaled down by 0.7 until certified, then
+    /// bisected up to the largest scale certified), its corner capped a little below and the corners
+    /// searched again; a corner refused twelve times becomes a stop. Returns the trajectory
+    /// with what became of the corners; never slower than
+    /// [`stop_at_corners`](Self::stop_at_corners) (stopping everywhere is among the candidates).
     ///
     /// Every configuration is on a segment of `path` or on a certified blend; the limits hold
     /// exactly. See [`Trajectory`]'s docs for the guarantee.
@@ -349,61 +322,79 @@ impl Trajectory {
         let line = polyline(path, limits)?;
         let m = line.segments();
         let mut caps = vec![1.0; m + 1];
-        let mut shrinks = vec![0_u32; m + 1];
+        caps[0] = 0.0;
+        caps[m] = 0.0;
+        let mut refusals = vec![0_u32; m + 1];
         let mut report = BlendReport::default();
-        let mut certified = std::collections::HashMap::new();
-        let trajectory = loop {
-            let (trajectory, blends) = timed(&line, &caps);
-            let mut failed = None;
-            for (k, at) in blends {
-                let (entry, exit) = (&trajectory.knots()[at], &trajectory.knots()[at + 1]);
-                let key: Vec<u64> = entry
-                    .velocity
-                    .iter()
-                    .chain(&exit.velocity)
-                    .map(|v| v.to_bits())
-                    .collect();
-                let ok = *certified.entry((k, key)).or_insert_with(|| {
-                    report.certifications += 1;
-                    certifier.certify_blend(entry, exit.time - entry.time)
-                });
-                if !ok {
-                    failed = Some(k);
-                    break;
+        let mut verdicts = std::collections::HashMap::new();
+        let mut certified = |k: usize, corner: Corner| -> bool {
+            let key = (k, corner.enter.to_bits(), corner.leave.to_bits());
+            *verdicts.entry(key).or_insert_with(|| {
+                let (entry, tau) = blend_entry(&line, k, corner);
+                if tau <= 0.0 {
+                    return true;
                 }
+                report.certifications += 1;
+                certifier.certify_blend(&entry, tau)
+            })
+        };
+        let corners = loop {
+            let corners = best_corners(&line, &caps);
+            let refused: Vec<usize> = (1..m)
+                .filter(|&k| corners[k] != Corner::STOP && !certified(k, corners[k]))
+                .collect();
+            if refused.is_empty() {
+                break corners;
             }
-            let Some(k) = failed else { break trajectory };
-            let current = line.factors(&caps)[k].factor;
-            if shrinks[k] < SHRINKS {
-                shrinks[k] += 1;
-                caps[k] = SHRINK * current;
-            } else {
-                caps[k] = 0.0;
+            for k in refused {
+                refusals[k] += 1;
+                caps[k] = if refusals[k] > SHRINKS {
+                    0.0
+                } else {
+                    let scale = largest_certified(|f| certified(k, corners[k].scaled(f)));
+                    BACK_OFF * scale * corners[k].size()
+                };
             }
         };
-        let factors = line.factors(&caps);
         for k in 1..m {
-            match (factors[k].factor == 0.0, shrinks[k]) {
+            match (corners[k] == Corner::STOP, refusals[k]) {
                 (true, _) => report.stopped += 1,
                 (false, 0) => report.blended += 1,
                 (false, _) => report.shrunk += 1,
             }
         }
-        let stopping = timed(&line, &vec![0.0; m + 1]).0;
-        if stopping.duration() < trajectory.duration() {
-            report = BlendReport {
-                stopped: m - 1,
-                certifications: report.certifications,
-                ..BlendReport::default()
-            };
-            return Ok((stopping, report));
-        }
-        Ok((trajectory, report))
+        Ok((timed(&line, &corners), report))
     }
 }
 
+/// The largest scale in `(0, 1)` for which `certified` holds, as found by shrinking by
+/// [`SHRINK`] (down to 10⁻⁴) and then bisecting [`BISECTIONS`] times; 0 if none is.
+fn largest_certified(mut certified: impl FnMut(f64) -> bool) -> f64 {
+    let (mut good, mut bad) = (0.0, 1.0);
+    let mut scale = SHRINK;
+    while scale > 1e-4 {
+        if certified(scale) {
+            good = scale;
+            break;
+        }
+        bad = scale;
+        scale *= SHRINK;
+    }
+    if good > 0.0 {
+        for _ in 0..BISECTIONS {
+            let middle = 0.5 * (good + bad);
+            if certified(middle) {
+                good = middle;
+            } else {
+                bad = middle;
+            }
+        }
+    }
+    good
+}
+
 /// The polyline of a checked `path`.
-fn polyline<'a, P: AsRef<[f64]>>(
+pub(super) fn polyline<'a, P: AsRef<[f64]>>(
     path: &'a [P],
     limits: &'a MotionLimits,
 ) -> Result<Polyline<'a>, TrajectoryError> {
@@ -434,15 +425,9 @@ fn polyline<'a, P: AsRef<[f64]>>(
     })
 }
 
-/// The trajectory with corner factors tuned within `caps`, and its interior blends as
-/// [`knots`] lists them.
-fn timed(line: &Polyline<'_>, caps: &[f64]) -> (Trajectory, Vec<(usize, usize)>) {
-    let factors = line.factors(caps);
-    let (knots, blends) = knots(line, &factors);
-    (
-        Trajectory::from_knots(line.limits.names().to_vec(), knots),
-        blends,
-    )
+/// The trajectory of the polyline with corners `corners` (feasible).
+pub(super) fn timed(line: &Polyline<'_>, corners: &[Corner]) -> Trajectory {
+    Trajectory::from_knots(line.limits.names().to_vec(), knots(line, corners))
 }
 
 #[cfg(test)]
@@ -477,9 +462,98 @@ mod tests {
         // Two collinear segments: blending does not slow down at the middle waypoint.
         let limits = one_joint();
         let line = polyline(&[[0.0], [3.0], [6.0]], &limits).unwrap();
-        let factors = line.factors(&[1.0, 1.0, 1.0]);
-        assert_eq!(factors[1].factor, 1.0);
-        let (t, _) = timed(&line, &[1.0, 1.0, 1.0]);
+        let corners = best_corners(&line, &[0.0, 1.0, 0.0]);
+        assert_eq!((corners[1].enter, corners[1].leave), (1.0, 1.0));
+        let t = timed(&line, &corners);
         assert!((t.duration() - 7.0).abs() < 1e-9, "{}", t.duration());
+    }
+
+    /// A deterministic stream of numbers in `[0, 1)` (a 64-bit linear congruential
+    /// generator's top bits).
+    fn stream(seed: u64) -> impl FnMut() -> f64 {
+        let mut state = seed;
+        move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 11) as f64 / (1_u64 << 53) as f64
+        }
+    }
+
+    #[test]
+    fn blended_limits_hold_between_knots_and_ends_are_at_rest() {
+        use spaces::StateSpace as _;
+        // Random zigzags of three joints, certified in free space: at random instants (not
+        // only knots) every velocity and acceleration is within its limit, the velocity is
+        // the derivative of the position, and the motion starts and ends at rest at the ends.
+        let panda = crate::ArmProblem::panda().unwrap();
+        let certifier = BlendCertifier::new(&panda, &crate::Scene::default());
+        let limits = MotionLimits::new(
+            panda.joint_names().to_vec(),
+            vec![2.0, 1.5, 2.5, 2.0, 2.5, 2.5, 2.5],
+            vec![3.0, 2.0, 4.0, 3.0, 5.0, 5.0, 5.0],
+        )
+        .unwrap();
+        let mut next = stream(7);
+        for _ in 0..20 {
+            let points = 2 + (next() * 6.0) as usize;
+            let path: Vec<Vec<f64>> = (0..points)
+                .map(|_| {
+                    let (lower, upper) = (
+                        panda.joint_space().lower().to_vec(),
+                        panda.joint_space().upper().to_vec(),
+                    );
+                    (0..7)
+                        .map(|j| lower[j] + (upper[j] - lower[j]) * (0.2 + 0.6 * next()))
+                        .collect()
+                })
+                .collect();
+            let (t, report) = Trajectory::blended(&path, &limits, &certifier).unwrap();
+            let stopping = Trajectory::stop_at_corners(&path, &limits).unwrap();
+            assert!(t.duration() <= stopping.duration() * (1.0 + 1e-12));
+            assert_eq!(
+                report.blended + report.shrunk + report.stopped,
+                points - 2,
+                "{report:?}"
+            );
+            assert!(t.within(&limits, 1e-9));
+            let grow = 1.0 + 1e-9;
+            for _ in 0..500 {
+                let at = next() * t.duration();
+                let (s, later) = (t.evaluate(at), t.evaluate(at + 1e-7));
+                for j in 0..7 {
+                    assert!(s.velocity[j].abs() <= limits.velocity()[j] * grow);
+                    assert!(s.acceleration[j].abs() <= limits.acceleration()[j] * grow);
+                    let slope = (later.position[j] - s.position[j]) / (later.time - s.time);
+                    assert!(
+                        (slope - s.velocity[j]).abs() < 1e-5 + 1e-6 * s.acceleration[j].abs() * 1e2
+                    );
+                }
+            }
+            let (first, last) = (t.evaluate(0.0), t.evaluate(t.duration()));
+            assert_eq!(first.position, path[0]);
+            assert_eq!(&last.position, path.last().unwrap());
+            assert!(
+                first
+                    .velocity
+                    .iter()
+                    .chain(&last.velocity)
+                    .all(|v| *v == 0.0)
+            );
+        }
+    }
+
+    #[test]
+    fn the_largest_certified_scale_is_found_from_below() {
+        for limit in [0.9, 0.5, 0.3, 0.01] {
+            let found = largest_certified(|f| f <= limit);
+            assert!(found <= limit && found > 0.0, "{limit}: {found}");
+            // Within a sixteenth of the last shrink's step below the limit.
+            assert!(
+                limit - found <= limit * (1.0 / SHRINK - 1.0) / 16.0 + 1e-12,
+                "{limit}: {found}"
+            );
+        }
+        assert_eq!(largest_certified(|_| false), 0.0);
     }
 }

@@ -6,7 +6,8 @@
 //!   their leaders.
 //! - [`Trajectory`], [`Sample`] (`trajectory.rs`): piecewise-quadratic motion, knots, exact
 //!   evaluation, sampling; built by `blend_timing.rs` ([`Trajectory::stop_at_corners`],
-//!   [`Trajectory::blended`], [`BlendReport`]).
+//!   [`Trajectory::blended`], [`BlendReport`]), whose corners' speeds `corner_search.rs`
+//!   chooses (the least time over grids of them, by dynamic programming).
 //! - [`BlendCertifier`] (`blend_certifier.rs`): blends proven collision-free.
 //! - [`TrajectoryFile`] (`trajectory_file.rs`): JSON and CSV writers and reader;
 //!   [`check_trajectory`], [`TrajectoryCheck`] (`trajectory_check.rs`): a file checked against
@@ -21,6 +22,7 @@
 
 mod blend_certifier;
 mod blend_timing;
+mod corner_search;
 mod joint_limits_yaml;
 mod motion_limits;
 #[allow(clippy::module_inception)]
