@@ -120,30 +120,8 @@ impl ExperimentFigure {
         &self,
         area: &DrawingArea<DB, Shift>,
     ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-        area.draw(&Text::new(
-            self.title.clone(),
-            (20, 10),
-            ("sans-serif", 26).into_font().color(&BLACK),
-        ))?;
-        area.draw(&Text::new(
-            self.subtitle.clone(),
-            (20, 42),
-            ("sans-serif", 15).into_font().color(&RGBColor(80, 80, 80)),
-        ))?;
-        let mut x = 20;
-        for p in &self.planners {
-            area.draw(&PathElement::new(
-                vec![(x, 70), (x + 28, 70)],
-                p.colour.stroke_width(4),
-            ))?;
-            area.draw(&Text::new(
-                p.name.clone(),
-                (x + 34, 62),
-                ("sans-serif", 16).into_font().color(&BLACK),
-            ))?;
-            x += 60 + 10 * p.name.chars().count() as i32;
-        }
-        Ok(())
+        let entries = self.planners.iter().map(|p| (p.name.as_str(), p.colour));
+        plot_style::draw_header(area, (&self.title, &self.subtitle), entries, 10)
     }
 
     /// Panel 1: median cost with its confidence band.

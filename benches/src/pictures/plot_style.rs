@@ -6,8 +6,9 @@ use std::sync::Once;
 
 use mit_star::Configuration;
 use plotters::coord::Shift;
+use plotters::prelude::{BLACK, DrawingAreaErrorKind, IntoFont, PathElement, Text};
 use plotters::prelude::{BitMapBackend, DrawingArea, DrawingBackend, IntoDrawingArea, SVGBackend};
-use plotters::style::{FontStyle, RGBColor};
+use plotters::style::{Color, FontStyle, RGBColor};
 
 use crate::definition::planner_spec::PlannerSpec;
 use crate::error::HarnessError;
@@ -16,6 +17,44 @@ use crate::error::HarnessError;
 pub(crate) trait Figure {
     /// Draws the whole figure on `root`; a failure is described in words.
     fn draw_on<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>;
+}
+
+/// Draws a figure's header on `area`: `title`, `subtitle` under it, and a legend line of
+/// `entries` (a coloured stroke and a name each, spaced `char_width` pixels per character of
+/// the name).
+///
+/// # Errors
+/// The backend's drawing error.
+pub(crate) fn draw_header<'a, DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    (title, subtitle): (&str, &str),
+    entries: impl IntoIterator<Item = (&'a str, RGBColor)>,
+    char_width: i32,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    area.draw(&Text::new(
+        title.to_owned(),
+        (20, 10),
+        ("sans-serif", 26).into_font().color(&BLACK),
+    ))?;
+    area.draw(&Text::new(
+        subtitle.to_owned(),
+        (20, 42),
+        ("sans-serif", 15).into_font().color(&RGBColor(80, 80, 80)),
+    ))?;
+    let mut x = 20;
+    for (name, colour) in entries {
+        area.draw(&PathElement::new(
+            vec![(x, 70), (x + 28, 70)],
+            colour.stroke_width(4),
+        ))?;
+        area.draw(&Text::new(
+            name.to_owned(),
+            (x + 34, 62),
+            ("sans-serif", 16).into_font().color(&BLACK),
+        ))?;
+        x += 60 + char_width * name.chars().count() as i32;
+    }
+    Ok(())
 }
 
 /// Draws `figure` at `size` pixels into an SVG and a PNG file (the embedded font registered).

@@ -149,30 +149,9 @@ impl TrajectoryPlot {
         &self,
         area: &DrawingArea<DB, Shift>,
     ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-        area.draw(&Text::new(
-            self.title.clone(),
-            (20, 10),
-            ("sans-serif", 26).into_font().color(&BLACK),
-        ))?;
-        area.draw(&Text::new(
-            self.subtitle.clone(),
-            (20, 42),
-            ("sans-serif", 15).into_font().color(&RGBColor(80, 80, 80)),
-        ))?;
-        let mut x = 20;
-        for (j, name) in self.joints.iter().enumerate() {
-            area.draw(&PathElement::new(
-                vec![(x, 70), (x + 28, 70)],
-                Self::colour(j).stroke_width(4),
-            ))?;
-            area.draw(&Text::new(
-                name.clone(),
-                (x + 34, 62),
-                ("sans-serif", 16).into_font().color(&BLACK),
-            ))?;
-            x += 60 + 9 * name.chars().count() as i32;
-        }
-        Ok(())
+        let joints = self.joints.iter().enumerate();
+        let entries = joints.map(|(j, name)| (name.as_str(), Self::colour(j)));
+        plot_style::draw_header(area, (&self.title, &self.subtitle), entries, 9)
     }
 
     /// One panel: `which` 0 position, 1 velocity (limits dashed), 2 acceleration (limits
