@@ -324,6 +324,8 @@ where
     /// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
     /// malformed query, and the parts' own errors ([`BuildError::Sampler`],
     /// [`BuildError::Validity`]).
+    // Seven parts are seven type parameters; an alias would only hide which planner it is.
+    #[allow(clippy::type_complexity)]
     pub fn build(self) -> Result<Eit<S, V, Smp, E, H, G, N>, BuildError> {
         if let Some(error) = self.problem_error {
             return Err(error);
