@@ -21,7 +21,7 @@ const FAMILIES: [(&str, usize); 4] = [
 fn fcit_solves_the_box_worlds_with_sound_paths() {
     for (family, n) in FAMILIES {
         for seed in 0..3 {
-            let problem = problems::builtin(family, n, 0).unwrap();
+            let problem = mit_star_problems::builtin(family, n, 0).unwrap();
             let mut planner = FcitStar::for_problem(&problem).seed(seed).build().unwrap();
             assert_eq!(planner.name(), "FCIT*");
             let outcome = planner.solve(&IterationLimit::new(20_000)).unwrap();
@@ -40,7 +40,7 @@ fn fcit_solves_the_box_worlds_with_sound_paths() {
 #[test]
 fn fcit_costs_do_not_increase_over_iterations() {
     for (family, n) in FAMILIES {
-        let problem = problems::builtin(family, n, 1).unwrap();
+        let problem = mit_star_problems::builtin(family, n, 1).unwrap();
         let parameters = Parameters {
             seed: 5,
             ..Parameters::default()
@@ -66,7 +66,7 @@ fn fcit_costs_do_not_increase_over_iterations() {
 
 #[test]
 fn every_vertex_is_a_neighbour_of_every_other() {
-    let problem = problems::builtin("dividing-walls", 4, 0).unwrap();
+    let problem = mit_star_problems::builtin("dividing-walls", 4, 0).unwrap();
     let mut fcit = FcitStar::for_problem(&problem).seed(2).build().unwrap();
     let mut bit = BitStar::for_problem(&problem).seed(2).build().unwrap();
     for planner in [&mut fcit as &mut dyn Planner, &mut bit] {
@@ -79,7 +79,7 @@ fn every_vertex_is_a_neighbour_of_every_other() {
             .forward_edges()
             .map(|(a, b)| {
                 let (xa, xb) = (graph.state_of(a).unwrap(), graph.state_of(b).unwrap());
-                spaces::euclidean_distance(xa, xb)
+                mit_star_spaces::euclidean_distance(xa, xb)
             })
             .fold(0.0, f64::max)
     };

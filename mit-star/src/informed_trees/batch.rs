@@ -1,10 +1,10 @@
 //! Adding a batch of samples — EIT*'s "improve approximation" (spec §3.4): prune, sample under
 //! the current bound, reconnect, restart both searches.
 
-use heuristics::Heuristic;
-use samplers::{CostBound, SampleError, Sampler};
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::{CostBound, SampleError, Sampler};
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::{NONE, Neighbourhood, Pruning};
 use crate::informed_trees::NeighbourRule;
@@ -54,7 +54,7 @@ where
     /// Sets the current batch's neighbourhood — `k`, `r` or a complete graph, as the
     /// [`NeighbourRule`] decides it — for the current number of vertices `q` (start and goals
     /// included), counting only the vertices that stand for the sampler's coverage of its set:
-    /// states drawn near the terminals ([`NearTerminals`](samplers::NearTerminals)) are left
+    /// states drawn near the terminals ([`NearTerminals`](mit_star_samplers::NearTerminals)) are left
     /// out, so the rules keep the rewire factor `η` they are given for the wrapped sampler's
     /// density. Returns `k`, `r`, or `∞` for a complete graph (the observer's
     /// [`BatchEvent::connection`]).

@@ -6,10 +6,10 @@
 //! queue hands out edges in the same order as if all were queued, with at most one queued edge
 //! per expanded vertex (plus the few tree edges queued beside the lists).
 
-use heuristics::Heuristic;
-use samplers::Sampler;
-use spaces::StateSpace;
-use validity::{Counted, EdgeChecker, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::NONE;
 use crate::informed_trees::NeighbourRule;

@@ -1,9 +1,9 @@
 //! Tests of FCIT*'s lazy successors: on the complete graph, the forward queue holds about one
 //! edge per expanded vertex, and the search finds what queueing every edge finds.
 
-use heuristics::Euclidean;
-use samplers::InformedSampler;
-use validity::{DenseChecker, World};
+use mit_star_heuristics::Euclidean;
+use mit_star_samplers::InformedSampler;
+use mit_star_validity::{DenseChecker, World};
 
 use crate::informed_trees::{APriori, BatchDensity, Connectivity, Eit, NeighbourRule};
 use crate::termination::SolveStop;
@@ -24,7 +24,7 @@ impl NeighbourRule for EagerComplete {
 }
 
 type Eager = Eit<
-    spaces::RealVectorSpace,
+    mit_star_spaces::RealVectorSpace,
     World,
     InformedSampler,
     DenseChecker,
@@ -35,7 +35,7 @@ type Eager = Eit<
 
 #[test]
 fn the_queue_holds_about_one_edge_per_expanded_vertex() {
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
