@@ -38,7 +38,10 @@ fn a_padded_plan_keeps_the_padding_by_the_independent_check() {
     let out = mit_star(&["check-state", "--problem", &problem, "--padding", "0.5"]);
     let state = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(3), "{state}");
-    assert!(state.contains("is within the padding (500 mm) of obstacle"), "{state}");
+    assert!(
+        state.contains("is within the padding (500 mm) of obstacle"),
+        "{state}"
+    );
 }
 
 #[test]
