@@ -149,6 +149,11 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// is proven collision-free, not only its grid points (see [`LeverArms`] for the bound and
 /// `arm_certification.rs` for the walk).
 ///
+/// **Padding** ([`padded`](Self::padded)): every sphere is grown by a user's [`Padding`] too
+/// in every test against the scene (plain checks, batches and certification), not between
+/// the robot's links, so a padded checker's certified edges keep the padding from every
+/// obstacle at every configuration.
+///
 /// Clones share the model and scene (an [`Arc`]) and own their scratch buffers, so a check
 /// never allocates. The scratch sits behind a mutex so that problems holding a checker
 /// can be shared between threads; each planner owns its own clone, so the lock is never
