@@ -9,12 +9,12 @@ use std::time::Duration;
 
 use glam::{DQuat, DVec3};
 use mit_star::{FirstSolution, Parameters, PathSimplifier, Planner, TerminationExt, TimeLimit};
-use proptest::prelude::*;
-use robot::{
+use mit_star_robot::{
     ArmChecker, ArmError, ArmProblem, AuditVerdict, Kinematics, MotionAudit, Obstacle, Padding,
     ParryChecker, Scene, Shape, ShippedRobot,
 };
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
+use proptest::prelude::*;
 
 use crate::arm_cases::{HOME, edge, obstacle, panda};
 
@@ -111,7 +111,7 @@ proptest! {
         let space = robot.joint_space();
         prop_assume!(checker.is_valid(&a) && checker.is_valid(&b));
         let mut progress = MotionProgress::new(0.0, 0.0);
-        let status = checker.certify_motion(space, &a, &b, &mut progress, &spaces::Never);
+        let status = checker.certify_motion(space, &a, &b, &mut progress, &mit_star_spaces::Never);
         if status == Some(EdgeStatus::Valid) {
             let audit = MotionAudit::padded(&robot, &scene, padding);
             let verdict = audit.audit(&a, &b, 2_000_000);
@@ -161,7 +161,7 @@ fn padded_plan(robot: &str, scene: &str, index: usize, padding: f64) -> Result<f
         .simplify(
             &problem,
             &path,
-            &spaces::Deadline::after(Duration::from_secs(2)),
+            &mit_star_spaces::Deadline::after(Duration::from_secs(2)),
         )
         .unwrap()
         .path;

@@ -119,7 +119,7 @@ pub struct BenchArgs {
     /// `f64` audit; replaces an experiment file's `padding`. Recorded in the results folder,
     /// which is not resumed with another.
     #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
-    pub padding: Option<robot::Padding>,
+    pub padding: Option<mit_star_robot::Padding>,
     /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
@@ -353,7 +353,10 @@ impl BenchArgs {
             // Padded, another experiment: another default folder.
             let padding = match self.padding {
                 Some(p) if !p.is_zero() => {
-                    format!("-padding{}mm", spaces::short_number(p.metres() * 1e3))
+                    format!(
+                        "-padding{}mm",
+                        mit_star_spaces::short_number(p.metres() * 1e3)
+                    )
                 }
                 _ => String::new(),
             };
@@ -601,7 +604,7 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
     let bad = || {
         HarnessError::Usage(format!(
             "--instances `{}`: give a count K or an inclusive range A-B (e.g. 1-100)",
-            problems::excerpt(text, 40)
+            mit_star_problems::excerpt(text, 40)
         ))
     };
     let number = |s: &str| s.trim().parse::<u64>().map_err(|_| bad());
@@ -609,7 +612,7 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
         crate::definition::problem_spec::check_instance_count(count).map_err(|message| {
             HarnessError::Usage(format!(
                 "--instances `{}` {message}",
-                problems::excerpt(text, 40)
+                mit_star_problems::excerpt(text, 40)
             ))
         })
     };
@@ -637,7 +640,7 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
         return Err(HarnessError::Usage(format!(
             "--instances `{}`: `{}` holds {} problems ({} to {}); give at most {} or a range \
              of its indices",
-            problems::excerpt(text, 40),
+            mit_star_problems::excerpt(text, 40),
             folder.path().display(),
             indices.len(),
             indices.first().copied().unwrap_or(0),

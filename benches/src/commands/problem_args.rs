@@ -4,7 +4,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use clap::Args;
-use problems::PlanningProblem;
+use mit_star_problems::PlanningProblem;
 
 use crate::budget::short_number;
 use crate::commands::cloud_args::CloudArgs;
@@ -60,7 +60,7 @@ pub struct ProblemArgs {
     /// path is certified to keep it, and the `f64` re-check measures it. The robot's own links
     /// are not padded. Default 0.
     #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
-    pub padding: Option<robot::Padding>,
+    pub padding: Option<mit_star_robot::Padding>,
     /// Point clouds among the obstacles of an arm problem.
     #[command(flatten)]
     pub clouds: CloudArgs,

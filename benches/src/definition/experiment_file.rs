@@ -215,7 +215,9 @@ impl ExperimentFile {
     pub fn parse(text: &str, origin: &str) -> Result<Self, HarnessError> {
         toml::from_str(text).map_err(|e| HarnessError::ExperimentFile {
             file: origin.to_owned(),
-            message: crate::error::clip_lines(&problems::humanise(e.to_string().trim_end())),
+            message: crate::error::clip_lines(&mit_star_problems::humanise(
+                e.to_string().trim_end(),
+            )),
         })
     }
 
@@ -439,7 +441,7 @@ fn problem_spec(
             Some(pose)
         }
     };
-    let padding = robot::Padding::new(p.padding.unwrap_or(0.0))
+    let padding = mit_star_robot::Padding::new(p.padding.unwrap_or(0.0))
         .map_err(|e| bad(".padding", HarnessError::Usage(e.to_string())))?;
     if !padding.is_zero() && !matches!(source, ProblemSource::Mbm(_)) {
         return Err(bad(

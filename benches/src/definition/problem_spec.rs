@@ -45,7 +45,7 @@ pub(crate) fn check_instance_count(count: Option<u64>) -> Result<(), String> {
 ///     instances: vec![0, 1, 2],
 ///     resolution: None,
 ///     allow_coarse_step: false,
-///     padding: robot::Padding::ZERO,
+///     padding: mit_star_robot::Padding::ZERO,
 ///     cloud: None,
 ///     pose_goal: None,
 /// };
@@ -73,8 +73,8 @@ pub struct ProblemSpec {
     /// `allow_coarse_step` stands either way.
     pub allow_coarse_step: bool,
     /// The collision padding every arm instance keeps from its obstacles
-    /// ([`robot::ArmProblem::with_padding`]; zero: none). Box worlds take none.
-    pub padding: robot::Padding,
+    /// ([`mit_star_robot::ArmProblem::with_padding`]; zero: none). Box worlds take none.
+    pub padding: mit_star_robot::Padding,
     /// A point cloud among the obstacles of every instance (MotionBenchMaker problems only),
     /// prepared once per instance when it is built.
     pub cloud: Option<CloudSpec>,
@@ -150,7 +150,7 @@ impl ProblemSpec {
                                 "problem `{}`: {note}",
                                 problem
                                     .as_arm()
-                                    .map_or("", |a| problems::PlanningProblem::name(&**a))
+                                    .map_or("", |a| mit_star_problems::PlanningProblem::name(&**a))
                             ),
                             1,
                         )),
@@ -208,7 +208,7 @@ mod tests {
             instances,
             resolution: None,
             allow_coarse_step: false,
-            padding: robot::Padding::ZERO,
+            padding: mit_star_robot::Padding::ZERO,
             cloud: None,
             pose_goal: None,
         }

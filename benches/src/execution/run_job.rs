@@ -7,9 +7,9 @@ use std::time::Instant;
 use mit_star::{
     Counters, FirstSolution, Planner, Progress, Termination, TerminationExt, TimeLimit, TracePoint,
 };
+use mit_star_spaces::SeededRng;
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
-use spaces::SeededRng;
 
 use crate::budget::deadline_after;
 use crate::definition::planner_spec::PlannerSpec;
@@ -349,7 +349,7 @@ mod tests {
             instances: vec![0],
             resolution: Some(resolution),
             allow_coarse_step: false,
-            padding: robot::Padding::ZERO,
+            padding: mit_star_robot::Padding::ZERO,
             cloud: None,
             pose_goal: None,
         }

@@ -23,7 +23,7 @@ pub const MAX_PADDING: f64 = 1.0;
 /// collide in every configuration with a padding of a centimetre.
 ///
 /// ```
-/// use robot::{MAX_PADDING, Padding, PaddingError};
+/// use mit_star_robot::{MAX_PADDING, Padding, PaddingError};
 /// assert_eq!(Padding::new(0.01)?.metres(), 0.01);
 /// assert_eq!(Padding::default(), Padding::ZERO);
 /// assert!(matches!(Padding::new(-0.01), Err(PaddingError::Negative(_))));
@@ -85,7 +85,7 @@ impl Padding {
 impl fmt::Display for Padding {
     /// In millimetres: `10 mm`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} mm", spaces::short_number(self.0 * 1e3))
+        write!(f, "{} mm", mit_star_spaces::short_number(self.0 * 1e3))
     }
 }
 
