@@ -10,8 +10,8 @@
 //! - the budget is kept.
 
 use glam::{DMat3, DVec3};
+use mit_star_robot::{CoverOptions, SphereCover, TriangleMesh};
 use proptest::prelude::*;
-use robot::{CoverOptions, SphereCover, TriangleMesh};
 
 /// The closest point of triangle `abc` to `p` (by regions of the triangle's plane).
 fn closest_on_triangle(p: DVec3, [a, b, c]: [DVec3; 3]) -> DVec3 {
