@@ -101,7 +101,8 @@ OTHER_PAGES = ["SUMMARY.md", "introduction.md", "faithfulness.md", "ablation-fin
 COMMAND_LANGS = {"sh", "bash", "shell", "console"}
 ELLIPSIS = "…"
 DEFAULT_FACTOR = 10.0
-NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w.])")
+# A number: not glued to a word before it (`seed0`, `n7-i3` stay text), a unit may follow (`4x`).
+NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?!\d|\.\d)")
 ANY_NUMBER = r"([-+]?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?)"
 CARGO_LINE = re.compile(
     r"^\s*(Compiling|Finished|Running|Blocking|Updating|Downloading|Downloaded|Locking|"
@@ -269,8 +270,6 @@ def update(shown_lines, printed_lines, tolerance=Tolerance()):
         anchored_end = k == len(segments) - 1
         if anchored_start:
             positions = [0]
-        elif anchored_end:
-            positions = [max(cursor, n - length)]
         else:
             positions = range(cursor, max(cursor, n - length) + 1)
 
@@ -282,7 +281,7 @@ def update(shown_lines, printed_lines, tolerance=Tolerance()):
             )
 
         p = max(positions, key=score)
-        if anchored_start and anchored_end:
+        if anchored_end:  # the block ends where the output ends
             take = printed_lines[p:]
         else:
             take = printed_lines[p : p + length]
@@ -315,6 +314,12 @@ class Block:
         return f"{self.page}:{self.line}"
 
 
+def _split_replace(value):
+    """`OLD => NEW` (NEW may be empty) as (OLD, "=>", NEW), or (value, "", "")."""
+    m = re.fullmatch(r"(.*?)\s=>(?:\s(.*))?", value)
+    return (m.group(1), "=>", m.group(2) or "") if m else (value, "", "")
+
+
 def parse_directives(comment):
     """The directives of a `<!-- check: ... -->` comment's text (after `check`)."""
     directives = {"replace": []}
@@ -345,7 +350,7 @@ def parse_directives(comment):
         elif name == "exit" and value.isdigit():
             directives["exit"] = int(value)
         elif name == "replace":
-            old, arrow, new = value.partition(" => ")
+            old, arrow, new = _split_replace(value)
             if not arrow or not old:
                 raise ValueError(f"`replace: {value}` is not `replace: OLD => NEW`")
             directives["replace"].append((old, new))
@@ -466,7 +471,7 @@ class Runner:
 
     def run_page(self, name):
         blocks, page_lines = parse_page(name)
-        stats = {"run": 0, "reduced": 0, "skipped": 0, "compared": 0, "passed": 0, "t": 0.0}
+        stats = {"run": 0, "reduced": 0, "skipped": 0, "compared": 0, "passed": 0, "code": 0, "t": 0.0}
         last_output = None  # printed lines of the latest command block, or None if skipped
         last_block = None
         python = None
@@ -523,6 +528,7 @@ class Runner:
                     last_output, last_block = (lines if ok else None), block
                 continue
             if block.lang != "text":
+                stats["code"] += 1  # rust, toml, python outside python.md: code, not commands
                 continue
             if "not-output" in d:
                 continue
@@ -705,7 +711,7 @@ def main(argv):
     wall = time.monotonic() - start
     print("\n== summary")
     print(f"{'page':<28} {'run':>4} {'reduced':>7} {'skipped':>7} {'compared':>8} {'passed':>6} {'time [s]':>8}")
-    totals = {"run": 0, "reduced": 0, "skipped": 0, "compared": 0, "passed": 0, "t": 0.0}
+    totals = {"run": 0, "reduced": 0, "skipped": 0, "compared": 0, "passed": 0, "code": 0, "t": 0.0}
     for page, s in summary:
         for key in totals:
             totals[key] += s[key]
@@ -718,7 +724,10 @@ def main(argv):
         f"{'all':<28} {t['run']:>4} {t['reduced']:>7} {t['skipped']:>7} {t['compared']:>8}"
         f" {t['passed']:>6} {t['t']:>8.1f}"
     )
-    print(f"{runner.totals['files']} file(s) written from the pages; wall time {wall:.0f} s")
+    print(
+        f"{runner.totals['files']} file(s) written from the pages; {t['code']} code block(s)"
+        f" (Rust, TOML, Python outside python.md) not run; wall time {wall:.0f} s"
+    )
     if runner.reduced:
         print(f"\n{len(runner.reduced)} block(s) ran in a reduced form:")
         for where, replaces in runner.reduced:
