@@ -32,7 +32,8 @@ rest of their line):
     <!-- check: timing x3 -->                     ... within a factor of 3
     <!-- check: timing counts -->                 integers loose too (the counters, segments
                                                   and improvements of a run cut short by its
-                                                  time budget); zero matches only zero
+                                                  time budget), 0 counting as 1 (0 matches 0 to
+                                                  10); a decimal zero matches only zero
     <!-- check: exit 2 -->                        the block must exit with 2, not 0
     <!-- check: replace: --instances 1-100 => --instances 1-3 -->
                                                   the reduced form that runs in CI (repeatable;
@@ -156,7 +157,7 @@ class LinePattern:
                     continue
                 parts.append(re.escape(piece[pos : m.start()]))
                 parts.append(ANY_NUMBER)
-                self.numbers.append(float(token))
+                self.numbers.append((float(token), not _is_decimal(token)))
                 pos = m.end()
             parts.append(re.escape(piece[pos:]))
         self.regex = re.compile("".join(parts))
@@ -166,20 +167,27 @@ class LinePattern:
         m = self.regex.fullmatch(_normalise(printed))
         if not m:
             return "differs"
-        for shown, token in zip(self.numbers, m.groups()):
+        for (shown, integer), token in zip(self.numbers, m.groups()):
             value = float(token)
-            if not _close(shown, value, self.tolerance.factor):
+            integers = integer and not _is_decimal(token)
+            if not _close(shown, value, self.tolerance.factor, integers):
                 return f"{token} is not within ×{self.tolerance.factor:g} of the shown {shown:g}"
         return None
 
 
-def _close(shown, printed, factor):
+def _close(shown, printed, factor, integers=False):
+    """Within `factor` either way, of the same sign. A decimal zero matches only zero; an
+    integer (a count) is at least 1 for the ratio, so 0 and 3 match within a factor of 10."""
     if shown == printed:
         return True
-    if shown == 0 or printed == 0 or (shown < 0) != (printed < 0):
+    if (shown < 0) != (printed < 0):
         return False
-    ratio = abs(printed / shown)
-    return 1 / factor <= ratio <= factor
+    a, b = abs(shown), abs(printed)
+    if integers:
+        a, b = max(a, 1), max(b, 1)
+    if a == 0 or b == 0:
+        return False
+    return 1 / factor <= b / a <= factor
 
 
 def _items(shown_lines, tolerance):

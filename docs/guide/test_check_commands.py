@@ -63,9 +63,15 @@ class Compare(unittest.TestCase):
         self.assertIsNotNone(compare(shown, PRINTED, TIMING))
         self.assertIsNone(compare(shown, PRINTED, Tolerance(10.0, counts=True)))
 
-    def test_zero_matches_only_zero(self):
+    def test_a_decimal_zero_matches_only_zero(self):
         self.assertIsNotNone(compare(["cost 0.0"], ["cost 0.5"], Tolerance(10.0)))
         self.assertIsNone(compare(["cost 0.0"], ["cost 0"], Tolerance(10.0)))
+
+    def test_a_zero_count_matches_small_counts(self):
+        counts = Tolerance(10.0, counts=True)
+        self.assertIsNone(compare(["0 stops"], ["3 stops"], counts))
+        self.assertIsNotNone(compare(["0 stops"], ["11 stops"], counts))
+        self.assertIsNotNone(compare(["0 stops"], ["3 stops"], Tolerance(10.0)))
 
     def test_ellipsis_lines_and_inline_ellipsis(self):
         shown = [PRINTED[0], "…", "  final cost: … after 28 improvements", "…"]
