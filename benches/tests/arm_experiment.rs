@@ -57,7 +57,7 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
             // Arm problems ask the EIT* family for samples near the start and the goal.
             let near = counters
                 .iter()
-                .find(|(n, _)| *n == "sampler near terminal draws")
+                .find(|(n, _)| *n == "sampler_near_terminals")
                 .map(|&(_, c)| c);
             if run.planner == "RRT-Connect" || run.planner == "AORRTC" {
                 assert!(near.is_none_or(|c| c == 0), "{run:?}");

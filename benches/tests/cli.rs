@@ -664,9 +664,9 @@ fn only_runs_some_planners_of_an_experiment_to_their_first_solution() {
     );
     let header = csv.lines().next().unwrap();
     for column in [
-        "sampler_gaussian_repairs",
-        "estimated_informed_set_initial_cost",
-        "full_points_of_edges_of_1e4_to_5e4_points",
+        "sampler_gaussian",
+        "estimate_initial",
+        "full_points_by_length_2",
     ] {
         assert!(header.contains(column), "{column} not in {header}");
     }
