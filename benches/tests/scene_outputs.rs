@@ -20,7 +20,7 @@ fn bench_three_layouts(dir: &Path, extra: &[&str]) -> String {
         "--runs",
         "2",
         "--time",
-        "0.02",
+        "0.2",
         "-q",
         "-o",
         dir.to_str().unwrap(),

@@ -19,6 +19,7 @@ use crate::formats::planner_arena_database::PlannerArenaDatabase;
 use crate::formats::report_page::{ReportInstance, ReportPage};
 use crate::formats::scene_summary::SceneSummary;
 use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::run_record::RunRecord;
 use crate::outcome::scene::Scene;
 use crate::pictures::experiment_figure::ExperimentFigure;
 use crate::pictures::instance_views::{VIEWER_FILE, write_instance_view};
@@ -403,9 +404,10 @@ impl ResultsFolder {
     }
 }
 
-/// The hardest of `indices`: an instance with a path that failed the validation if there is
-/// one, else the one with the greatest median time to the first solution over all its runs
-/// (failed runs count as `∞`; the first such instance on ties).
+/// The hardest of `indices` that has a path to show: an instance with a path that failed the
+/// validation if there is one, else, among those with a solved run, the one with the greatest
+/// median time to the first solution over all its runs (failed runs count as `∞`; the first
+/// such instance on ties); the first of `indices` if no run solved.
 pub(crate) fn hardest_instance(results: &ExperimentResults, indices: &[usize]) -> usize {
     let invalid = indices.iter().copied().find(|&i| {
         results.runs[i]
@@ -421,13 +423,14 @@ pub(crate) fn hardest_instance(results: &ExperimentResults, indices: &[usize]) -
             crate::statistics::MedianEstimate::of(&times, 0.5)
                 .map_or(f64::NEG_INFINITY, |m| m.median)
         };
-        let mut best = indices[0];
-        for &i in &indices[1..] {
-            if median(i) > median(best) {
-                best = i;
+        let solved = |i: &usize| results.runs[*i].iter().any(RunRecord::is_success);
+        let mut hardest: Option<usize> = None;
+        for i in indices.iter().copied().filter(solved) {
+            if hardest.is_none_or(|h| median(i) > median(h)) {
+                hardest = Some(i);
             }
         }
-        best
+        hardest.unwrap_or(indices[0])
     })
 }
 
