@@ -163,9 +163,13 @@ mod tests {
     use super::*;
     use crate::path_validation::{PathValidation, ValidationMethod};
 
+    /// A run: instance, planner, first-solution time (`None`: unsolved), final cost, audit
+    /// seconds (`None`: no path audited).
+    type Run<'a> = (usize, &'a str, Option<f64>, f64, Option<f64>);
+
     /// Two layouts of random rectangles and one dividing-walls world, MIT* and EIT*, with
-    /// runs `(instance, planner, first-solution time or None, final cost, audit seconds)`.
-    fn results(runs: &[(usize, &str, Option<f64>, f64, Option<f64>)]) -> ExperimentResults {
+    /// `runs`.
+    fn results(runs: &[Run<'_>]) -> ExperimentResults {
         let experiment = crate::Experiment::from_toml_str(
             "runs = 3\nplanners = ['mit-star', 'eit-star']\n[[problems]]\n\
              name = 'random-rectangles'\ndimensions = [2]\ntime = 1\ninstance_seeds = [1, 2]\n\

@@ -76,7 +76,12 @@ impl ExperimentFigure {
     pub fn from_scene(results: &ExperimentResults, scene: &Scene) -> Self {
         let pooled = (scene.instances.len() > 1)
             .then(|| format!("{} {}", scene.instances.len(), scene.instance_noun()));
-        Self::from_instances(results, &scene.instances, scene.title.clone(), pooled)
+        Self::from_instances(
+            results,
+            &scene.instances,
+            scene.title.clone(),
+            pooled.as_deref(),
+        )
     }
 
     /// The figure of the runs on `indices`, titled `title`; `pooled` names the instances
@@ -85,7 +90,7 @@ impl ExperimentFigure {
         results: &ExperimentResults,
         indices: &[usize],
         title: String,
-        pooled: Option<String>,
+        pooled: Option<&str>,
     ) -> Self {
         let confidence = results.experiment.confidence;
         let budget = indices
@@ -131,7 +136,7 @@ impl ExperimentFigure {
             .collect();
         let planners_count = results.experiment.planners.len().max(1);
         let runs = all.len() / planners_count;
-        let runs = match &pooled {
+        let runs = match pooled {
             Some(what) => format!("{what}, {runs} runs per planner in all (costs pooled)"),
             None => format!("{runs} runs per planner"),
         };
