@@ -53,8 +53,8 @@ struct Curves {
 /// as error bars. Bands are light fills with outlines, so overlapping planners stay
 /// readable. Time axes are logarithmic with 1-2-5 ticks labelled in s, ms or µs. The cost
 /// axis fits the curves, not a distant optimum; the first-solution panel's axes fit the
-/// medians and their intervals (see [`fitted_log_range`]). Each planner has the same
-/// colour in every figure.
+/// medians and their intervals, each bound reaching at most a factor of 10 beyond them.
+/// Each planner has the same colour in every figure.
 #[derive(Debug, Clone)]
 pub struct ExperimentFigure {
     title: String,
