@@ -18,13 +18,13 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
-use problems::PlanningProblem;
-use rand::{RngExt, SeedableRng};
-use robot::ArmProblem;
-use spaces::{Never, SeededRng, StateSpace};
-use validity::{
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::ArmProblem;
+use mit_star_spaces::{Never, SeededRng, StateSpace};
+use mit_star_validity::{
     DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, MotionProgress, StateValidity,
 };
+use rand::{RngExt, SeedableRng};
 
 const SCENES: [&str; 3] = ["bookshelf_small_panda", "cage_panda", "table_pick_panda"];
 const COUNT: usize = 1024;

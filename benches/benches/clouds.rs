@@ -14,9 +14,9 @@ use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
+use mit_star_robot::{CloudObstacle, PointCloud, PointTree};
+use mit_star_spaces::SeededRng;
 use rand::{RngExt, SeedableRng};
-use robot::{CloudObstacle, PointCloud, PointTree};
-use spaces::SeededRng;
 
 const SIZES: [usize; 4] = [1_000, 10_000, 100_000, 1_000_000];
 const QUERIES: usize = 1024;

@@ -7,11 +7,11 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
-use problems::Problem;
+use mit_star_problems::Problem;
+use mit_star_samplers::{AdaptiveSampler, CostBound, InformedSampler, Sampler};
+use mit_star_spaces::{Never, SeededRng, StateSpace, States};
+use mit_star_validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 use rand::{RngExt, SeedableRng};
-use samplers::{AdaptiveSampler, CostBound, InformedSampler, Sampler};
-use spaces::{Never, SeededRng, StateSpace, States};
-use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 const DIMENSIONS: [usize; 4] = [2, 4, 8, 16];
 const PROBLEMS: [&str; 4] = [
@@ -24,7 +24,7 @@ const PROBLEMS: [&str; 4] = [
 const RESOLUTION: f64 = 5e-6;
 
 fn problem(name: &str, n: usize) -> Problem {
-    problems::builtin(name, n, 1).expect("built-in problem")
+    mit_star_problems::builtin(name, n, 1).expect("built-in problem")
 }
 
 /// 1024 states drawn uniformly in the problem's space (valid or not), for validity checks.
@@ -47,7 +47,7 @@ fn free_edge(problem: &Problem, checker: &mut DenseChecker) -> (Vec<f64>, Vec<f6
     loop {
         space.sample_uniform(&mut rng, &mut a);
         space.sample_uniform(&mut rng, &mut dir);
-        let norm = spaces::euclidean_distance(&dir, &vec![0.0; n]);
+        let norm = mit_star_spaces::euclidean_distance(&dir, &vec![0.0; n]);
         for i in 0..n {
             b[i] = a[i] + 0.1 * dir[i] / norm;
         }

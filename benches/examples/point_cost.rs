@@ -15,10 +15,10 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use problems::Problem;
+use mit_star_problems::Problem;
+use mit_star_spaces::{Never, SeededRng, StateSpace};
+use mit_star_validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 use rand::{RngExt, SeedableRng};
-use spaces::{Never, SeededRng, StateSpace};
-use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 const RESOLUTION: f64 = 5e-6;
 const ROUNDS: usize = 5;
@@ -69,7 +69,10 @@ fn check_all(
         )));
     }
     let seconds = started.elapsed().as_secs_f64();
-    let counters = EdgeChecker::<spaces::RealVectorSpace, validity::World>::counters(&checker);
+    let counters =
+        EdgeChecker::<mit_star_spaces::RealVectorSpace, mit_star_validity::World>::counters(
+            &checker,
+        );
     (statuses, counters.points_tested, seconds)
 }
 
@@ -93,7 +96,7 @@ fn main() {
         ("RR #3", "random-rectangles", 3),
     ];
     for (label, name, seed) in problems {
-        let problem = problems::builtin(name, n, seed).expect("a built-in problem");
+        let problem = mit_star_problems::builtin(name, n, seed).expect("a built-in problem");
         let edges = edges(&problem, count);
         let mut best = [f64::INFINITY; 2];
         let mut reference: Option<(Vec<EdgeStatus>, u64)> = None;

@@ -48,7 +48,7 @@ pub fn deadline_after(start: Instant, seconds: f64) -> Result<Instant, BudgetErr
     start.checked_add(budget).ok_or(BudgetError(seconds))
 }
 
-pub use spaces::short_number;
+pub use mit_star_spaces::short_number;
 
 #[cfg(test)]
 mod tests {

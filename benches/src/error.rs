@@ -44,7 +44,7 @@ pub enum HarnessError {
         dimension: usize,
         /// Why the problem refused.
         #[source]
-        source: problems::ProblemError,
+        source: mit_star_problems::ProblemError,
     },
     /// A problem file could not be read or parsed.
     #[error("problem file `{}`: {source}", path.display())]
@@ -53,7 +53,7 @@ pub enum HarnessError {
         path: PathBuf,
         /// What is wrong with it.
         #[source]
-        source: problems::ProblemFileError,
+        source: mit_star_problems::ProblemFileError,
     },
     /// A parameter override is malformed: unknown key, wrong type, or a value the planner
     /// refuses.
@@ -126,14 +126,14 @@ pub enum HarnessError {
     },
     /// A robot (`--robot`, an experiment's `robot`) could not be found or loaded.
     #[error(transparent)]
-    Robot(#[from] robot::RobotSourceError),
+    Robot(#[from] mit_star_robot::RobotSourceError),
     /// A URDF could not be spherised (`mit-star spherise`).
     #[error(transparent)]
-    Spherise(#[from] robot::SpheriseError),
+    Spherise(#[from] mit_star_robot::SpheriseError),
 
     /// A point cloud file, or a cloud sampled from a scene, that cannot be read or filtered.
     #[error(transparent)]
-    CloudInput(#[from] robot::CloudInputError),
+    CloudInput(#[from] mit_star_robot::CloudInputError),
 
     /// A point cloud refused as an obstacle (empty, too many points, a bad radius).
     #[error("point cloud `{name}`: {source}")]
@@ -142,7 +142,7 @@ pub enum HarnessError {
         name: String,
         /// What is wrong.
         #[source]
-        source: robot::CloudError,
+        source: mit_star_robot::CloudError,
     },
     /// A point cloud option of a problem (an experiment's `cloud` table, the command line's
     /// `--cloud`, `--voxel`, …) that cannot be used: it names the problem entry and the option.
@@ -176,7 +176,7 @@ pub enum HarnessError {
         /// The folder or problem.
         name: String,
         /// Why.
-        source: robot::ArmError,
+        source: mit_star_robot::ArmError,
     },
     /// A path file names joints that are not the robot's (`check-path`): its states cannot be
     /// put into the robot's coordinate order.
@@ -193,13 +193,13 @@ pub enum HarnessError {
         robot: String,
     },
     /// An arm problem's start or goal in collision or out of reach of certified motions,
-    /// the problem named by the [`ArmError`](robot::ArmError).
+    /// the problem named by the [`ArmError`](mit_star_robot::ArmError).
     #[error(transparent)]
-    ArmEnd(robot::ArmError),
+    ArmEnd(mit_star_robot::ArmError),
     /// A pose goal the inverse kinematics refuses: a link the robot lacks, a quaternion of
     /// norm 0, a negative tolerance.
     #[error("pose goal: {0}")]
-    PoseGoal(#[from] robot::IkError),
+    PoseGoal(#[from] mit_star_robot::IkError),
     /// The output folder cannot be created or written.
     #[error("output folder `{}` is not writable: {source}", path.display())]
     OutputFolder {
@@ -219,7 +219,7 @@ pub enum HarnessError {
         path: PathBuf,
         /// What is wrong (it names the limit).
         #[source]
-        source: problems::BoundedReadError,
+        source: mit_star_problems::BoundedReadError,
     },
     /// Reading or writing a file failed.
     #[error("`{}`: {source}", path.display())]
@@ -253,7 +253,7 @@ pub enum HarnessError {
         /// The page.
         path: PathBuf,
         /// What went wrong.
-        source: view::ViewError,
+        source: mit_star_view::ViewError,
     },
     /// Raw results could not be serialised.
     #[error("`{}`: {message}", path.display())]
@@ -366,7 +366,7 @@ pub(crate) const ECHO_LIMIT: usize = 160;
 pub(crate) fn clip_lines(message: &str) -> String {
     message
         .lines()
-        .map(|line| problems::excerpt(line, ECHO_LIMIT))
+        .map(|line| mit_star_problems::excerpt(line, ECHO_LIMIT))
         .collect::<Vec<_>>()
         .join("\n")
 }

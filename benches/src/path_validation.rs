@@ -3,11 +3,11 @@
 
 use std::cell::Cell;
 
-use problems::Problem;
-use robot::{AuditVerdict, MotionAudit};
+use mit_star_problems::Problem;
+use mit_star_robot::{AuditVerdict, MotionAudit};
+use mit_star_spaces::{StateSpace, euclidean_distance};
+use mit_star_validity::{SegmentCause, SegmentVerdict, StateValidity, World};
 use serde::{Deserialize, Serialize};
-use spaces::{StateSpace, euclidean_distance};
-use validity::{SegmentCause, SegmentVerdict, StateValidity, World};
 
 /// How a path was validated.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -47,11 +47,11 @@ impl ValidationMethod {
             } => format!(
                 "continuously in f64 (conservative advancement on parry distances, no grid: \
                  {configurations} configurations, clearance ≥ {} mm)",
-                spaces::short_number(clearance * 1e3)
+                mit_star_spaces::short_number(clearance * 1e3)
             ),
             Self::Resampled { step } => format!(
                 "at a step of {} (at least 4× finer than planning)",
-                spaces::short_number(*step)
+                mit_star_spaces::short_number(*step)
             ),
         }
     }
@@ -64,11 +64,11 @@ impl PathValidation {
     /// names); segments and grid points with [`ValidationMethod::Resampled`].
     ///
     /// ```
-    /// let problem = problems::builtin("obstacle-free", 2, 0)?;
+    /// let problem = mit_star_problems::builtin("obstacle-free", 2, 0)?;
     /// let path = vec![problem.start().to_vec(), problem.goals()[0].clone()];
     /// let v = mit_star_benches::PathValidation::check(&problem, &path, problem.straight_line_cost());
     /// assert_eq!(v.coverage(), "1 segment, 2 path states");
-    /// # Ok::<(), problems::ProblemError>(())
+    /// # Ok::<(), mit_star_problems::ProblemError>(())
     /// ```
     pub fn coverage(&self) -> String {
         let count =
@@ -105,13 +105,13 @@ impl PathValidation {
 /// only if the chosen check passed; reports name the method.
 ///
 /// ```
-/// let problem = problems::builtin("obstacle-free", 2, 0)?;
+/// let problem = mit_star_problems::builtin("obstacle-free", 2, 0)?;
 /// let path = vec![problem.start().to_vec(), problem.goals()[0].clone()];
 /// let v = mit_star_benches::PathValidation::check(&problem, &path, problem.straight_line_cost());
 /// assert!(v.valid, "{:?}", v.failure);
 /// assert_eq!(v.method, mit_star_benches::ValidationMethod::ExactBoxes);
 /// assert_eq!(v.segments_checked, 1);
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PathValidation {
@@ -329,7 +329,7 @@ mod tests {
 
     fn wall() -> Problem {
         // A wall at x = 0 spanning the bounds except y > 0.3.
-        problems::builtin("wall-gap", 2, 0).unwrap()
+        mit_star_problems::builtin("wall-gap", 2, 0).unwrap()
     }
 
     #[test]
@@ -381,7 +381,7 @@ mod tests {
 
     #[test]
     fn wrong_ends_and_costs_fail() {
-        let p = problems::builtin("obstacle-free", 2, 0).unwrap();
+        let p = mit_star_problems::builtin("obstacle-free", 2, 0).unwrap();
         let (s, g) = (p.start().to_vec(), p.goals()[0].clone());
         let v = PathValidation::check(&p, &[g.clone(), s.clone()], 0.8);
         assert!(v.failure.unwrap().contains("starts at"));
@@ -403,7 +403,7 @@ mod tests {
 
     #[test]
     fn resampling_is_at_least_four_times_finer() {
-        let p = problems::builtin("obstacle-free", 2, 0).unwrap();
+        let p = mit_star_problems::builtin("obstacle-free", 2, 0).unwrap();
         let path = vec![p.start().to_vec(), p.goals()[0].clone()];
         let v = PathValidation::check_resampled(
             p.world(),
@@ -421,10 +421,10 @@ mod tests {
     fn an_arm_path_is_measured_in_its_joint_space_metric() {
         // The hand-written test robot: a revolute joint and a prismatic one, weighted 1/R.
         let urdf = include_str!("../../robot/tests/data/two_link.urdf");
-        let robot = robot::RobotModel::from_urdf_str(urdf)
+        let robot = mit_star_robot::RobotModel::from_urdf_str(urdf)
             .unwrap()
             .without_model_pairs();
-        let audit = MotionAudit::new(&robot, &robot::Scene::new(Vec::new()));
+        let audit = MotionAudit::new(&robot, &mit_star_robot::Scene::new(Vec::new()));
         let (start, goal) = (vec![0.0, 0.0], vec![0.5, 0.2]);
         let space = robot.joint_space();
         assert_ne!(space.joints()[1].weight, 1.0);

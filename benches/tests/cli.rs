@@ -295,8 +295,11 @@ fn problems_write_prints_the_exact_problem_as_a_file_plan_reads() {
         "--instance",
         "2",
     ]);
-    let built = problems::builtin("random-rectangles", 4, 2).unwrap();
-    assert_eq!(problems::Problem::from_toml_str(&text).unwrap(), built);
+    let built = mit_star_problems::builtin("random-rectangles", 4, 2).unwrap();
+    assert_eq!(
+        mit_star_problems::Problem::from_toml_str(&text).unwrap(),
+        built
+    );
     let dir = scratch("problems-write");
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("rr4-2.toml");

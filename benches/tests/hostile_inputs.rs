@@ -64,7 +64,7 @@ impl Draws {
 #[test]
 fn check_path_never_passes_a_path_that_misses_the_start() {
     let dir = folder("tolerance");
-    let problem = problems::builtin("obstacle-free", 2, 0).unwrap();
+    let problem = mit_star_problems::builtin("obstacle-free", 2, 0).unwrap();
     let (start, goal) = (problem.start().to_vec(), problem.goals()[0].clone());
     let file = dir.join("path.txt");
     let mut draws = Draws(74);
@@ -132,7 +132,7 @@ fn check_path_never_passes_a_path_that_misses_the_start() {
 #[test]
 fn check_path_names_the_line_of_a_bad_state_and_refuses_binary_files() {
     let dir = folder("bad-states");
-    let problem = problems::builtin("obstacle-free", 2, 0).unwrap();
+    let problem = mit_star_problems::builtin("obstacle-free", 2, 0).unwrap();
     let (start, goal) = (problem.start().to_vec(), problem.goals()[0].clone());
     let file = dir.join("path.txt");
     let path = file.to_str().unwrap();

@@ -7,7 +7,7 @@ import re
 import sys
 
 CATEGORIES = [
-    ("validity", r"validity::|World|GridWalker|bisection"),
+    ("validity", r"mit_star_validity::|World|GridWalker|bisection"),
     ("kd-tree", r"kd_tree|nearest"),
     ("neighbour lists", r"neighbour|graph::"),
     ("reverse search", r"reverse"),

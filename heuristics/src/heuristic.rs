@@ -1,6 +1,6 @@
 //! The [`Heuristic`] trait.
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 /// Admissible estimates for a path-length objective, and effort estimates, used to order a
 /// planner's searches.
@@ -36,11 +36,11 @@ pub trait Heuristic<S: StateSpace + ?Sized> {
 }
 
 /// Interior points of the canonical grid of an edge of `length` at `step` (spec §2): the state
-/// checks a full check of that edge performs. The grid is [`validity::EdgeGrid`], the one every
+/// checks a full check of that edge performs. The grid is [`mit_star_validity::EdgeGrid`], the one every
 /// edge checker walks.
 #[inline]
 pub fn grid_points(length: f64, step: f64) -> u64 {
-    validity::EdgeGrid::new(length, step).points()
+    mit_star_validity::EdgeGrid::new(length, step).points()
 }
 
 impl<S: StateSpace + ?Sized, H: Heuristic<S> + ?Sized> Heuristic<S> for &H {

@@ -4,8 +4,8 @@
 //! (state checks left to validate an edge), behind one [`Heuristic`] trait.
 //!
 //! ```
-//! use heuristics::{Euclidean, Heuristic, Zero};
-//! use spaces::RealVectorSpace;
+//! use mit_star_heuristics::{Euclidean, Heuristic, Zero};
+//! use mit_star_spaces::RealVectorSpace;
 //!
 //! let space = RealVectorSpace::cube(2, -0.5, 0.5)?;
 //! let goals = vec![vec![0.45, 0.0]];
@@ -14,7 +14,7 @@
 //! // 0.9 long at step 0.01 → 90 intervals → 89 interior grid points to check.
 //! assert_eq!(h.effort(&space, &[-0.45, 0.0], &[0.45, 0.0], 0.01), 89);
 //! assert_eq!(Zero.cost_to_go(&space, &[-0.45, 0.0], &goals), 0.0);
-//! # Ok::<(), spaces::SpaceError>(())
+//! # Ok::<(), mit_star_spaces::SpaceError>(())
 //! ```
 //!
 //! # Catalogue

@@ -1,6 +1,6 @@
 //! [`Euclidean`] and [`SpaceMetric`]: the exact straight-line lower bounds of path length.
 
-use spaces::{StateSpace, euclidean_distance};
+use mit_star_spaces::{StateSpace, euclidean_distance};
 
 use crate::Heuristic;
 
@@ -20,7 +20,7 @@ impl<S: StateSpace + ?Sized> Heuristic<S> for Euclidean {
 }
 
 /// The space's own metric ([`StateSpace::distance`]): for path length, the cost of the straight
-/// edge, hence the tightest admissible bound. In a [`JointSpace`](spaces::JointSpace) this is the
+/// edge, hence the tightest admissible bound. In a [`JointSpace`](mit_star_spaces::JointSpace) this is the
 /// joint-space metric — weighted, with continuous joints taking the short way round.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct SpaceMetric;
@@ -35,7 +35,7 @@ impl<S: StateSpace + ?Sized> Heuristic<S> for SpaceMetric {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spaces::{Joint, JointSpace, RealVectorSpace};
+    use mit_star_spaces::{Joint, JointSpace, RealVectorSpace};
 
     #[test]
     fn euclidean_and_metric_agree_in_rn() {

@@ -1,6 +1,6 @@
 //! [`Weighted`]: inflates a heuristic's cost-to-go (weighted A*).
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::Heuristic;
 
@@ -45,7 +45,7 @@ impl<S: StateSpace + ?Sized, H: Heuristic<S>> Heuristic<S> for Weighted<H> {
 mod tests {
     use super::*;
     use crate::Euclidean;
-    use spaces::RealVectorSpace;
+    use mit_star_spaces::RealVectorSpace;
 
     #[test]
     fn inflates_only_cost_to_go() {

@@ -1,6 +1,6 @@
 //! [`Zero`]: the trivially admissible heuristic.
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::Heuristic;
 

@@ -293,17 +293,20 @@ fn main() {
 /// world large enough that one exact certification of a long edge is real work; for
 /// `many-goals:COUNT`, dividing walls with `COUNT` goals drawn (deterministically) among the
 /// valid states of the space's far half instead of its one goal.
-fn built(name: &str, dimension: usize) -> Result<problems::Problem, problems::ProblemError> {
+fn built(
+    name: &str,
+    dimension: usize,
+) -> Result<mit_star_problems::Problem, mit_star_problems::ProblemError> {
     if let Some(count) = name.strip_prefix("many-goals:") {
         let count: usize = count.parse().unwrap_or(5_000).max(1);
         return many_goals(count, dimension);
     }
     let Some(count) = name.strip_prefix("many-rectangles:") else {
-        return problems::builtin(name, dimension, 0);
+        return mit_star_problems::builtin(name, dimension, 0);
     };
     let count: usize = count.parse().unwrap_or(10_000).max(1);
     let side = (0.3 / count as f64).powf(1.0 / dimension as f64).min(0.5);
-    problems::RandomRectangles::new(dimension)
+    mit_star_problems::RandomRectangles::new(dimension)
         .count(count)
         .min_side(0.5 * side)
         .max_side(side)
@@ -313,9 +316,12 @@ fn built(name: &str, dimension: usize) -> Result<problems::Problem, problems::Pr
 
 /// Dividing walls in `dimension` dimensions with `count` goals: valid states of the half of the
 /// space beyond the middle of the first axis, drawn by a fixed linear congruential sequence.
-fn many_goals(count: usize, dimension: usize) -> Result<problems::Problem, problems::ProblemError> {
-    use validity::StateValidity;
-    let walls = problems::builtin("dividing-walls", dimension, 0)?;
+fn many_goals(
+    count: usize,
+    dimension: usize,
+) -> Result<mit_star_problems::Problem, mit_star_problems::ProblemError> {
+    use mit_star_validity::StateValidity;
+    let walls = mit_star_problems::builtin("dividing-walls", dimension, 0)?;
     let (lower, upper) = (
         walls.world().lower().to_vec(),
         walls.world().upper().to_vec(),
@@ -338,7 +344,7 @@ fn many_goals(count: usize, dimension: usize) -> Result<problems::Problem, probl
         }
     }
     let name = format!("many-goals:{count}");
-    problems::Problem::new(name, walls.world().clone(), walls.start().to_vec(), goals)
+    mit_star_problems::Problem::new(name, walls.world().clone(), walls.start().to_vec(), goals)
 }
 
 /// How late a run with `budget` seconds may return: `max(1 ms, 1 % of the budget)`.

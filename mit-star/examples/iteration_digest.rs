@@ -31,7 +31,7 @@ fn main() {
         ] {
             for batch in [20_usize, 100] {
                 for seed in 0..3 {
-                    let problem = problems::builtin(family, n, 0).unwrap();
+                    let problem = mit_star_problems::builtin(family, n, 0).unwrap();
                     let parameters = Parameters {
                         seed,
                         batch_size: Some(batch),

@@ -24,10 +24,10 @@ use mit_star::{
     Configuration, Counters, KdTree, NearestNeighbors, Neighbours, Parameters, TimeLimit,
     build_planner_with, k_nearest,
 };
-use problems::Problem;
-use spaces::rand::{RngExt, SeedableRng};
-use spaces::{SeededRng, StateSpace};
-use validity::{DenseChecker, EdgeChecker, EdgeProgress, StateValidity, World};
+use mit_star_problems::Problem;
+use mit_star_spaces::rand::{RngExt, SeedableRng};
+use mit_star_spaces::{SeededRng, StateSpace};
+use mit_star_validity::{DenseChecker, EdgeChecker, EdgeProgress, StateValidity, World};
 
 /// One validity call in this many is timed.
 const SAMPLE: u64 = 64;
@@ -232,8 +232,11 @@ fn check_costs(problem: &Problem) -> (f64, f64) {
             }
         }
         let mut progress = EdgeProgress::default();
-        checker.check_full(space, world, &a, &b, &mut progress, &spaces::Never);
-        points = EdgeChecker::<spaces::RealVectorSpace, validity::World>::counters(&checker)
+        checker.check_full(space, world, &a, &b, &mut progress, &mit_star_spaces::Never);
+        points =
+            EdgeChecker::<mit_star_spaces::RealVectorSpace, mit_star_validity::World>::counters(
+                &checker,
+            )
             .points_tested;
     }
     let per_point = started.elapsed().as_secs_f64() * 1e9 / points as f64;
@@ -361,10 +364,11 @@ fn main() {
         println!();
     }
     for experiment in options.experiments.iter().filter(|_| options.planning) {
-        let problem = problems::builtin(&experiment.family, experiment.n, 0).unwrap_or_else(|e| {
-            eprintln!("{e}");
-            std::process::exit(2)
-        });
+        let problem = mit_star_problems::builtin(&experiment.family, experiment.n, 0)
+            .unwrap_or_else(|e| {
+                eprintln!("{e}");
+                std::process::exit(2)
+            });
         let (per_state, per_point) = check_costs(&problem);
         let overhead = clock_overhead();
         println!(

@@ -36,7 +36,7 @@ fn main() {
         eprintln!("{usage}");
         std::process::exit(2);
     };
-    let problem = problems::builtin("goal-enclosure", dimension, 0).unwrap();
+    let problem = mit_star_problems::builtin("goal-enclosure", dimension, 0).unwrap();
     let parameters = Parameters {
         batch_size: Some(batch),
         seed,

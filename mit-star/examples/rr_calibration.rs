@@ -18,8 +18,8 @@ use std::time::Duration;
 use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
-use problems::RandomRectangles;
-use validity::SegmentVerdict;
+use mit_star_problems::RandomRectangles;
+use mit_star_validity::SegmentVerdict;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();

@@ -1,10 +1,10 @@
 //! [`Builder`]: validated construction of an [`Eit`] configuration.
 
-use heuristics::{Euclidean, Heuristic};
-use problems::PlanningProblem;
-use samplers::Sampler;
-use spaces::StateSpace;
-use validity::{Counted, EdgeChecker, StateValidity};
+use mit_star_heuristics::{Euclidean, Heuristic};
+use mit_star_problems::PlanningProblem;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::components::configuration_name;
 use crate::informed_trees::{EffortInformed, Guidance};
@@ -19,8 +19,8 @@ use crate::{
 ///
 /// ```
 /// use mit_star::{MitStar, Parameters};
-/// use spaces::RealVectorSpace;
-/// use validity::World;
+/// use mit_star_spaces::RealVectorSpace;
+/// use mit_star_validity::World;
 ///
 /// let space = RealVectorSpace::cube(2, -0.5, 0.5)?;
 /// let world = World::in_space(&space);
@@ -83,7 +83,7 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
 
 impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
-    /// [`Problem`](problems::Problem), a robot-arm problem, or your own: its space, validity
+    /// [`Problem`](mit_star_problems::Problem), a robot-arm problem, or your own: its space, validity
     /// checker, start, goals and resolution, and the certification, reverse-search repair,
     /// sparse spacing, connection rule, batch size and batch growth it asks for. [`build`](Builder::build)
     /// refuses a problem that refuses its collision-check step or its certification
@@ -92,7 +92,7 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     ///
     /// ```
     /// use mit_star::{EitStar, FirstSolution, Planner};
-    /// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+    /// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
     /// let mut planner = EitStar::for_problem(&problem).seed(1).build()?;
     /// let outcome = planner.solve(&FirstSolution)?;
     /// assert!(outcome.cost() >= problem.optimum().unwrap());
@@ -369,16 +369,16 @@ fn bytes_per_sample(n: usize) -> u64 {
 
 /// Refuses a batch size whose one batch of samples could not fit in this machine's memory.
 fn check_batch_memory(batch_size: usize, n: usize) -> Result<(), BuildError> {
-    let bytes = spaces::MemoryBudget::bytes_for(&[batch_size as u64, bytes_per_sample(n)]);
-    let Err(budget) = spaces::MemoryBudget::check_on_machine(bytes) else {
+    let bytes = mit_star_spaces::MemoryBudget::bytes_for(&[batch_size as u64, bytes_per_sample(n)]);
+    let Err(budget) = mit_star_spaces::MemoryBudget::check_on_machine(bytes) else {
         return Ok(());
     };
     Err(BuildError::TooLarge {
         what: format!("a batch of {batch_size} samples in {n} dimensions"),
         needed: bytes.map_or_else(
             || "more than 16 EiB".to_owned(),
-            spaces::MemoryBudget::describe,
+            mit_star_spaces::MemoryBudget::describe,
         ),
-        available: spaces::MemoryBudget::describe(budget.bytes()),
+        available: mit_star_spaces::MemoryBudget::describe(budget.bytes()),
     })
 }

@@ -1,12 +1,14 @@
 //! [`SamplerPart`] and [`CheckerPart`]: how the builder makes a configuration's parts from
 //! [`Parameters`].
 
-use samplers::{
+use mit_star_samplers::{
     AdaptiveSampler, BridgeSampler, Estimated, GaussianSampler, InformedSampler, NearTerminals,
     UniformSampler,
 };
-use spaces::StateSpace;
-use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, step_from_resolution};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{
+    DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, step_from_resolution,
+};
 
 use crate::{BuildError, Parameters};
 
@@ -167,11 +169,11 @@ impl<S: StateSpace> CheckerPart<S> for LengthAdaptiveChecker {
         Ok(LengthAdaptiveChecker::with_parameters(
             step,
             p.sparse_initial_steps
-                .unwrap_or(problems::PAPER_SPARSE_SPACING.0)
+                .unwrap_or(mit_star_problems::PAPER_SPARSE_SPACING.0)
                 * step,
             p.sparse_factor,
             p.sparse_min_steps
-                .unwrap_or(problems::PAPER_SPARSE_SPACING.1)
+                .unwrap_or(mit_star_problems::PAPER_SPARSE_SPACING.1)
                 * step,
         )?
         .with_acceleration(p.accelerated_checks))
@@ -210,7 +212,7 @@ pub(crate) fn configuration_name(guidance: &str, sampler: &str, checker: &str) -
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spaces::RealVectorSpace;
+    use mit_star_spaces::RealVectorSpace;
 
     #[test]
     fn parts_follow_the_parameters() {

@@ -4,14 +4,14 @@
 use std::fmt;
 use std::str::FromStr;
 
-use problems::PlanningProblem;
+use mit_star_problems::PlanningProblem;
+use mit_star_validity::StateValidity;
 use serde::{Deserialize, Serialize};
-use validity::StateValidity;
 
-use heuristics::Heuristic;
-use samplers::{NearTerminals, Sampler};
-use spaces::StateSpace;
-use validity::{Counted, EdgeChecker};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::{NearTerminals, Sampler};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{Counted, EdgeChecker};
 
 use crate::{
     AitStar, Aorrtc, BitStar, BuildError, CheckerPart, Eit, EitStar, Guidance, InformedRrtStar,
@@ -157,7 +157,7 @@ impl FromStr for Configuration {
     }
 }
 
-/// Builds the planner of `configuration` for `problem` — a box-world [`problems::Problem`], a
+/// Builds the planner of `configuration` for `problem` — a box-world [`mit_star_problems::Problem`], a
 /// robot-arm problem, or any other [`PlanningProblem`] — with `parameters` (the problem's
 /// resolution replaces `parameters.resolution`).
 ///
@@ -167,7 +167,7 @@ impl FromStr for Configuration {
 ///
 /// ```
 /// use mit_star::{build_planner, Configuration, IterationLimit, Parameters};
-/// let problem = problems::ObstacleFree::new(3).build()?;
+/// let problem = mit_star_problems::ObstacleFree::new(3).build()?;
 /// let mut planner = build_planner(Configuration::EitStar, &problem, &Parameters::default())?;
 /// let outcome = planner.solve(&IterationLimit::new(50))?;
 /// assert_eq!(planner.name(), "EIT*");
@@ -227,8 +227,8 @@ pub fn build_planner<P: PlanningProblem>(
 ///
 /// ```
 /// use mit_star::{build_planner_with, Configuration, FirstSolution, Parameters};
-/// use validity::Counted;
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// use mit_star_validity::Counted;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let counted = Counted::new(problem.world().clone());
 /// let mut planner = build_planner_with(Configuration::MitStar, &problem, &Parameters::default(), counted)?;
 /// assert!(planner.solve(&FirstSolution)?.is_solved());
@@ -344,7 +344,7 @@ mod tests {
     use crate::{FirstSolution, IterationLimit, TerminationExt};
 
     fn near_terminal_draws(configuration: Configuration, parameters: &Parameters) -> u64 {
-        let problem = problems::DividingWalls::new(4).build().unwrap();
+        let problem = mit_star_problems::DividingWalls::new(4).build().unwrap();
         let mut planner = build_planner(configuration, &problem, parameters).unwrap();
         assert_eq!(planner.name(), configuration.label());
         planner
@@ -372,7 +372,7 @@ mod tests {
             near_terminals: Some(1.0),
             ..Parameters::default()
         };
-        let problem = problems::DividingWalls::new(2).build().unwrap();
+        let problem = mit_star_problems::DividingWalls::new(2).build().unwrap();
         let error = build_planner(Configuration::MitStar, &problem, &bad)
             .err()
             .unwrap();

@@ -182,7 +182,7 @@ mod tests {
 
     #[test]
     fn planners_report_only_parameters_they_read() {
-        let problem = problems::ObstacleFree::new(2).build().unwrap();
+        let problem = mit_star_problems::ObstacleFree::new(2).build().unwrap();
         let names = parameter_names();
         for c in Configuration::ALL {
             let planner = crate::build_planner(c, &problem, &Parameters::default()).unwrap();

@@ -25,7 +25,7 @@ pub struct Counters {
     /// Grid points tested by edge checks (certification included), the points the validity
     /// checker's per-edge broad phase decided without a test included.
     pub points_tested: u64,
-    /// Of those, the points decided without a test ([`validity::Preparation::AllValid`]).
+    /// Of those, the points decided without a test ([`mit_star_validity::Preparation::AllValid`]).
     pub points_culled: u64,
     /// Edges certified on the finer grid (the informed-trees family: a solution's path's edges
     /// and the edges that move a vertex of the forward tree; every edge that joins the tree
@@ -65,7 +65,7 @@ pub struct Counters {
     pub sampler_gaussian: u64,
     /// Adaptive sampler: samples repaired on the segment `x_pre → x_temp` (`x_crit`).
     pub sampler_bridge: u64,
-    /// States the [`NearTerminals`](samplers::NearTerminals) wrapper drew near the start or a
+    /// States the [`NearTerminals`](mit_star_samplers::NearTerminals) wrapper drew near the start or a
     /// goal.
     pub sampler_near_terminals: u64,
     /// Of those, the states drawn near the reverse search's frontier
@@ -84,7 +84,7 @@ pub struct Counters {
     pub estimate_expansions: u64,
     /// Estimated informed set: batches with samples drawn under it.
     pub estimate_batches: u64,
-    /// Sparse checks by edge length ([`validity::LENGTH_BUCKET_BOUNDS`]).
+    /// Sparse checks by edge length ([`mit_star_validity::LENGTH_BUCKET_BOUNDS`]).
     pub sparse_checks_by_length: [u64; 5],
     /// Grid points tested by sparse checks, by edge length.
     pub sparse_points_by_length: [u64; 5],
@@ -212,9 +212,9 @@ impl Counters {
     /// branches and estimate.
     pub(crate) fn with_parts(
         mut self,
-        edges: validity::EdgeCounters,
+        edges: mit_star_validity::EdgeCounters,
         validity_checks: u64,
-        sampler: &samplers::SamplerCounters,
+        sampler: &mit_star_samplers::SamplerCounters,
     ) -> Self {
         self.sparse_checks = edges.sparse_checks;
         self.full_checks = edges.full_checks;

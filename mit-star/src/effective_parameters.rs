@@ -1,8 +1,8 @@
 //! [`Configuration::effective_parameters`]: the parameters a planner built by
 //! [`build_planner`](crate::build_planner) runs with, every default decided.
 
-use problems::PlanningProblem;
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_spaces::StateSpace;
 
 use crate::{
     APriori, BuildError, Configuration, CostInformed, EffortInformed, Guidance, Parameters,
@@ -28,11 +28,11 @@ impl Configuration {
     ///
     /// ```
     /// use mit_star::{Configuration, Parameters};
-    /// let problem = problems::DividingWalls::new(2).build()?;
+    /// let problem = mit_star_problems::DividingWalls::new(2).build()?;
     /// let defaults = Parameters::default();
     /// assert_eq!(defaults.sparse_initial_steps, None);
     /// let mit = Configuration::MitStar.effective_parameters(&problem, &defaults)?;
-    /// assert_eq!(mit.sparse_initial_steps, Some(problems::PAPER_SPARSE_SPACING.0));
+    /// assert_eq!(mit.sparse_initial_steps, Some(mit_star_problems::PAPER_SPARSE_SPACING.0));
     /// assert_eq!(mit.suspend_reverse_when_forward_empty, Some(true));
     /// let eit = Configuration::EitStar.effective_parameters(&problem, &defaults)?;
     /// assert_eq!(eit.suspend_reverse_when_forward_empty, Some(false));
@@ -88,8 +88,8 @@ fn guided<G: Guidance>(mut parameters: Parameters) -> Parameters {
 mod tests {
     use super::*;
     use crate::{AitStar, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr};
-    use spaces::RealVectorSpace;
-    use validity::World;
+    use mit_star_spaces::RealVectorSpace;
+    use mit_star_validity::World;
 
     /// The suspension rule the planner type behind each configuration of the EIT* family
     /// falls back to, read from the type (not from a table kept by hand).
@@ -110,7 +110,7 @@ mod tests {
 
     #[test]
     fn effective_parameters_decide_every_default_as_the_planner_would() {
-        let problem = problems::DividingWalls::new(2).build().unwrap();
+        let problem = mit_star_problems::DividingWalls::new(2).build().unwrap();
         let defaults = Parameters::default();
         for c in Configuration::ALL {
             let effective = c.effective_parameters(&problem, &defaults).unwrap();

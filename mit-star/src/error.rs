@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-use spaces::SpaceError;
+use mit_star_spaces::SpaceError;
 use thiserror::Error;
 
 /// Which state of a query a [`PlannerError`] is about.
@@ -82,13 +82,13 @@ pub enum BuildError {
     },
     /// An edge checker refused its parameters (step, sparse spacing, refinement factor Ω).
     #[error("edge checker: {0}")]
-    Validity(#[from] validity::ValidityError),
+    Validity(#[from] mit_star_validity::ValidityError),
     /// A sampler refused its parameters or the query.
     #[error("sampler: {0}")]
-    Sampler(#[from] samplers::SamplerError),
+    Sampler(#[from] mit_star_samplers::SamplerError),
     /// The problem definition is malformed.
     #[error("problem: {0}")]
-    Problem(#[from] problems::ProblemError),
+    Problem(#[from] mit_star_problems::ProblemError),
     /// The query (start, goals) is malformed.
     #[error("query: {0}")]
     Query(#[from] PlannerError),
@@ -115,9 +115,9 @@ pub enum BuildError {
     },
 }
 
-/// A number for a message ([`spaces::short_number`]).
+/// A number for a message ([`mit_star_spaces::short_number`]).
 pub(crate) fn short(value: f64) -> String {
-    spaces::short_number(value)
+    mit_star_spaces::short_number(value)
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! [`GoalSource`]: goal states drawn while planning, one at a time (OMPL's `GoalLazySamples`).
 
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 /// A goal region that yields its goal states one at a time, while a planner plans: a pose of a
 /// robot's hand reached through inverse kinematics, a set of grasps, any goal a planner cannot
@@ -12,7 +12,7 @@ use spaces::Stop;
 ///
 /// ```
 /// use mit_star::GoalSource;
-/// use spaces::Stop;
+/// use mit_star_spaces::Stop;
 ///
 /// /// The goals of a list, in order.
 /// struct Listed(Vec<Vec<f64>>, usize);
@@ -31,7 +31,7 @@ use spaces::Stop;
 ///     }
 /// }
 /// let mut source = Listed(vec![vec![0.9, 0.9]], 0);
-/// assert_eq!(source.next_goal(&spaces::Never), Some(vec![0.9, 0.9]));
+/// assert_eq!(source.next_goal(&mit_star_spaces::Never), Some(vec![0.9, 0.9]));
 /// assert!(source.exhausted());
 /// ```
 pub trait GoalSource {

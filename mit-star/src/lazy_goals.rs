@@ -2,7 +2,7 @@
 
 use std::time::{Duration, Instant};
 
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 use crate::termination::Wrapped;
 use crate::{
@@ -51,16 +51,16 @@ use crate::{
 /// /// Three goals along the far side of the square `[-0.5, 0.5]²`.
 /// struct Wall(usize);
 /// impl GoalSource for Wall {
-///     fn next_goal(&mut self, _: &dyn spaces::Stop) -> Option<Vec<f64>> {
+///     fn next_goal(&mut self, _: &dyn mit_star_spaces::Stop) -> Option<Vec<f64>> {
 ///         self.0 += 1;
 ///         (self.0 <= 3).then(|| vec![0.45, 0.6 - 0.3 * self.0 as f64])
 ///     }
 ///     fn exhausted(&self) -> bool { self.0 >= 3 }
 ///     fn reset(&mut self) { self.0 = 0 }
 /// }
-/// let world = problems::DividingWalls::new(2).build()?.world().clone();
+/// let world = mit_star_problems::DividingWalls::new(2).build()?.world().clone();
 /// let build = move |goals: &[Vec<f64>]| {
-///     let problem = problems::Problem::new("wall", world.clone(), vec![-0.45, 0.0], goals.to_vec())?
+///     let problem = mit_star_problems::Problem::new("wall", world.clone(), vec![-0.45, 0.0], goals.to_vec())?
 ///         .with_resolution(1e-3)?;
 ///     build_planner(Configuration::RrtConnect, &problem, &Parameters::default())
 /// };
@@ -468,15 +468,19 @@ mod tests {
     fn builder(
         configuration: Configuration,
     ) -> impl FnMut(&[Vec<f64>]) -> Result<Built, BuildError> {
-        let world = problems::DividingWalls::new(2)
+        let world = mit_star_problems::DividingWalls::new(2)
             .build()
             .expect("a world")
             .world()
             .clone();
         move |goals: &[Vec<f64>]| {
-            let problem =
-                problems::Problem::new("walls", world.clone(), vec![-0.45, 0.0], goals.to_vec())?
-                    .with_resolution(1e-4)?;
+            let problem = mit_star_problems::Problem::new(
+                "walls",
+                world.clone(),
+                vec![-0.45, 0.0],
+                goals.to_vec(),
+            )?
+            .with_resolution(1e-4)?;
             let parameters = Parameters {
                 seed: 5,
                 ..Parameters::default()

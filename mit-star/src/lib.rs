@@ -12,7 +12,7 @@
 //! use mit_star::{CostThreshold, MitStar, Planner, TerminationExt, TimeLimit};
 //!
 //! // PDT's dividing walls in R^4 (coarser resolution to keep the example quick).
-//! let problem = problems::DividingWalls::new(4).build()?.with_resolution(1e-4)?;
+//! let problem = mit_star_problems::DividingWalls::new(4).build()?.with_resolution(1e-4)?;
 //! let mut planner = MitStar::for_problem(&problem).seed(42).build()?;
 //! let stop = TimeLimit::new(Duration::from_millis(200)).or(CostThreshold::new(1.0));
 //! let outcome = planner.solve(&stop)?;

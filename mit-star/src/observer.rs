@@ -1,6 +1,6 @@
 //! [`Observer`]: callbacks a planner invokes on notable events (argmin's observer pattern).
 
-use samplers::CostBound;
+use mit_star_samplers::CostBound;
 
 /// A new best solution.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -17,12 +17,12 @@ pub enum Connection {
 }
 
 /// How MIT*'s estimated informed set grows its cost from the reliability `γ` (spec §6): the
-/// `samplers` crate's [`ExpansionForm`](samplers::ExpansionForm), under the planner's name.
-pub use samplers::ExpansionForm as EisExpansionForm;
+/// `samplers` crate's [`ExpansionForm`](mit_star_samplers::ExpansionForm), under the planner's name.
+pub use mit_star_samplers::ExpansionForm as EisExpansionForm;
 
 /// When MIT*'s estimated informed set expands (spec §6): the `samplers` crate's
-/// [`ExpansionRule`](samplers::ExpansionRule), under the planner's name.
-pub use samplers::ExpansionRule as EisExpansionRule;
+/// [`ExpansionRule`](mit_star_samplers::ExpansionRule), under the planner's name.
+pub use mit_star_samplers::ExpansionRule as EisExpansionRule;
 
 /// The parameters of an [`Eit`](crate::Eit) planner and its parts, with the spec's defaults
 /// (§9). Serialisable, so benchmark output can record exactly what ran.
@@ -40,14 +40,14 @@ pub use samplers::ExpansionRule as EisExpansionRule;
 #[serde(default)]
 pub struct Parameters {
     /// Samples per batch (`None`: the problem's,
-    /// [`PlanningProblem::batch_size`](problems::PlanningProblem::batch_size) — 50 on arms;
+    /// [`PlanningProblem::batch_size`](mit_star_problems::PlanningProblem::batch_size) — 50 on arms;
     /// the papers' 100 for box worlds and a planner built without a problem;
     /// [`samples_per_batch`](Self::samples_per_batch) reads it).
     pub batch_size: Option<usize>,
     /// A batch holds at least this fraction of the vertices already in the graph, so batches
     /// grow geometrically once the graph holds `batch_size / batch_growth` vertices and a
     /// search restarted every batch costs a bounded number of passes over the graph (`None`:
-    /// the problem's, [`PlanningProblem::batch_growth`](problems::PlanningProblem::batch_growth)
+    /// the problem's, [`PlanningProblem::batch_growth`](mit_star_problems::PlanningProblem::batch_growth)
     /// — 0, fixed batches as in the papers, for box worlds and a planner built without a
     /// problem). Not in the paper.
     pub batch_growth: Option<f64>,
@@ -55,7 +55,7 @@ pub struct Parameters {
     /// best path rather than by the sampler: states on the segment between two of its vertices
     /// that are not neighbours on it (a shortcut), half of them displaced by a Gaussian step,
     /// kept if valid and inside the informed set (`None`: the problem's,
-    /// [`PlanningProblem::solution_samples`](problems::PlanningProblem::solution_samples) — 0,
+    /// [`PlanningProblem::solution_samples`](mit_star_problems::PlanningProblem::solution_samples) — 0,
     /// the papers' sampling, for box worlds and a planner built without a problem). The
     /// forward search then finds a shortcut that is free as a chain of graph edges. Such states
     /// do not count in the sample number `q` of `k(q)` and `r(q)`, so the uniform samples keep
@@ -70,7 +70,7 @@ pub struct Parameters {
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
     /// k-nearest or r-disc connection (`None`: the problem's,
-    /// [`PlanningProblem::radius_connection`](problems::PlanningProblem::radius_connection) —
+    /// [`PlanningProblem::radius_connection`](mit_star_problems::PlanningProblem::radius_connection) —
     /// r-disc on arms; k-nearest, the paper's, for box worlds and a planner built without a
     /// problem).
     pub connection: Option<Connection>,
@@ -96,7 +96,7 @@ pub struct Parameters {
     /// OMPL's AIT* default) or restart it from the goals (`false`: EIT*'s rule, the paper's,
     /// and the faster one for our AIT* in the box worlds,
     /// `docs/guide/src/reference/faithfulness-map.md` §6). `None` (the default): the problem
-    /// decides ([`PlanningProblem::repair_reverse_search`](problems::PlanningProblem::repair_reverse_search):
+    /// decides ([`PlanningProblem::repair_reverse_search`](mit_star_problems::PlanningProblem::repair_reverse_search):
     /// arms repair, the paper's problems restart); a planner built without a problem restarts.
     /// Without a reverse search (BIT*) there is nothing to repair. Not in the paper.
     pub repair_reverse_search: Option<bool>,
@@ -106,14 +106,14 @@ pub struct Parameters {
     pub bridge_checks: usize,
     /// Initial sparse spacing `Δ₀` of the length-related checker (MIT*'s sparse checks), in
     /// steps `L` (`None`: the problem's
-    /// [`sparse_spacing`](problems::PlanningProblem::sparse_spacing) — 2000, the MIT* authors'
+    /// [`sparse_spacing`](mit_star_problems::PlanningProblem::sparse_spacing) — 2000, the MIT* authors'
     /// constant, for the paper's problems; 4 for arms; 2000 for a planner built without a
     /// problem).
     pub sparse_initial_steps: Option<f64>,
     /// Refinement factor `Ω ∈ (0, 1)` of the length-related checker.
     pub sparse_factor: f64,
     /// Finest sparse spacing of the length-related checker, in steps `L` (`None`: the
-    /// problem's [`sparse_spacing`](problems::PlanningProblem::sparse_spacing) — 10 for the
+    /// problem's [`sparse_spacing`](mit_star_problems::PlanningProblem::sparse_spacing) — 10 for the
     /// paper's problems, 2 for arms; 10 without a problem).
     pub sparse_min_steps: Option<f64>,
     /// How the estimated informed set computes `e_γ`.
@@ -128,7 +128,7 @@ pub struct Parameters {
     pub eis_immediate_batch: bool,
     /// Certify the forward tree's edges on a grid this many times finer than the check step,
     /// when [`lazy_certification`](Self::lazy_certification) says (1: no certification;
-    /// `None`: the problem's [`certification`](problems::PlanningProblem::certification), 4
+    /// `None`: the problem's [`certification`](mit_star_problems::PlanningProblem::certification), 4
     /// for arms). Not in the paper: it makes returned paths hold at the finer grid too, for a
     /// few edges' work.
     pub certification: Option<u32>,
@@ -142,24 +142,24 @@ pub struct Parameters {
     /// way. Not in the paper.
     pub lazy_certification: bool,
     /// Fraction of the samples the EIT* family (MIT*, EIT*, AIT*, BIT*, ABIT*) draws near the
-    /// start and the goals, at every scale, through the [`NearTerminals`](samplers::NearTerminals)
+    /// start and the goals, at every scale, through the [`NearTerminals`](mit_star_samplers::NearTerminals)
     /// wrapper (0: no wrapper; `None`: the problem's
-    /// [`near_terminals`](problems::PlanningProblem::near_terminals), 0 for the paper's
+    /// [`near_terminals`](mit_star_problems::PlanningProblem::near_terminals), 0 for the paper's
     /// problems, 0.15 for arms). Not in the paper: it joins starts and goals that sit deep in
     /// pockets (grasps in shelf slots), which uniform samples in 7 dimensions seldom reach.
     pub near_terminals: Option<f64>,
     /// How many of the states its reverse search reached farthest from the goals the EIT*
-    /// family hands the [`NearTerminals`](samplers::NearTerminals) wrapper at the end of each
-    /// batch without a solution ([`Sampler::observe_frontier`](samplers::Sampler::observe_frontier)),
+    /// family hands the [`NearTerminals`](mit_star_samplers::NearTerminals) wrapper at the end of each
+    /// batch without a solution ([`Sampler::observe_frontier`](mit_star_samplers::Sampler::observe_frontier)),
     /// half of whose draws then centre on one of them (0: none, every draw centres on a
     /// terminal). No effect without the wrapper (`near_terminals` 0, the paper's problems).
     /// Not in the paper: a goal in a pocket is left one batch at a time.
     pub near_frontier: usize,
-    /// While the [`NearTerminals`](samplers::NearTerminals) wrapper has frontier states, half
+    /// While the [`NearTerminals`](mit_star_samplers::NearTerminals) wrapper has frontier states, half
     /// of its draws first try straight lines from them over the largest scale, up to
-    /// [`NearTerminals::RAY_TRIES`](samplers::NearTerminals::RAY_TRIES), and take two states
+    /// [`NearTerminals::RAY_TRIES`](mit_star_samplers::NearTerminals::RAY_TRIES), and take two states
     /// of the first line found free
-    /// ([`NearTerminals::with_frontier_rays`](samplers::NearTerminals::with_frontier_rays)):
+    /// ([`NearTerminals::with_frontier_rays`](mit_star_samplers::NearTerminals::with_frontier_rays)):
     /// RRT-Connect's extension as a sample. `true` by default (chosen by measurement on the
     /// Panda, the UR5 and the Fetch); `false` keeps every draw Gaussian. No effect without the
     /// wrapper or without frontier states. Not in the paper.
@@ -192,7 +192,7 @@ pub struct Parameters {
     /// Not in the paper.
     pub accelerated_checks: bool,
     /// RRT-Connect's maximum extension length (`None`: the problem's
-    /// [`default_range`](problems::PlanningProblem::default_range) — an arm's, measured per
+    /// [`default_range`](mit_star_problems::PlanningProblem::default_range) — an arm's, measured per
     /// robot — else [`default_range`](crate::default_range), the paper's per dimension or 0.2
     /// of the maximum extent). Unused by the EIT* family.
     pub range: Option<f64>,
@@ -397,7 +397,7 @@ impl Parameters {
     ///
     /// # Errors
     /// [`BuildError::Problem`] if the problem refuses its check step or certification.
-    pub(crate) fn for_problem<P: problems::PlanningProblem>(
+    pub(crate) fn for_problem<P: mit_star_problems::PlanningProblem>(
         &self,
         problem: &P,
     ) -> Result<Self, BuildError> {
@@ -426,9 +426,10 @@ impl Parameters {
     }
 
     /// Samples per batch: [`batch_size`](Self::batch_size), or the papers' 100
-    /// ([`problems::PAPER_BATCH_SIZE`]) where unset and no problem decided it.
+    /// ([`mit_star_problems::PAPER_BATCH_SIZE`]) where unset and no problem decided it.
     pub fn samples_per_batch(&self) -> usize {
-        self.batch_size.unwrap_or(problems::PAPER_BATCH_SIZE)
+        self.batch_size
+            .unwrap_or(mit_star_problems::PAPER_BATCH_SIZE)
     }
 
     /// The samples [`batch_growth`](Self::batch_growth) asks of a batch added to a graph of
@@ -790,7 +791,7 @@ pub fn k_nearest(q: usize, n: usize, eta: f64) -> usize {
 pub fn r_disc(q: usize, n: usize, eta: f64, measure: f64) -> f64 {
     let q = (q.max(2)) as f64;
     let nf = n.max(1) as f64;
-    let zeta = spaces::unit_ball_measure(n.max(1));
+    let zeta = mit_star_spaces::unit_ball_measure(n.max(1));
     eta * 2.0 * ((1.0 + 1.0 / nf) * measure / zeta * q.ln() / q).powf(1.0 / nf)
 }
 

@@ -1,8 +1,8 @@
 //! [`check_path`]: judge a path produced anywhere by the rules the planners' own paths pass.
 
-use problems::PlanningProblem;
-use spaces::{Never, StateSpace};
-use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_problems::PlanningProblem;
+use mit_star_spaces::{Never, StateSpace};
+use mit_star_validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::BuildError;
 
@@ -76,7 +76,7 @@ pub fn snap_ends<P: PlanningProblem>(problem: &P, path: &mut [Vec<f64>], toleran
 /// fewer than two states, or a state of the wrong dimension or not finite.
 ///
 /// ```
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let (start, goal) = (problem.start().to_vec(), problem.goals()[0].clone());
 /// // Straight through the walls.
 /// let verdict = mit_star::check_path(&problem, &[start, goal], 1e-9)?;

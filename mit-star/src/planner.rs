@@ -1,7 +1,7 @@
 //! The [`Planner`] trait every planner of the framework implements, and what `solve` returns.
 
-use spaces::{StateSpace, States};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, States};
+use mit_star_validity::StateValidity;
 
 use crate::{Counters, Endpoint, PlannerError, Snapshot, Termination, Trace};
 
@@ -172,12 +172,12 @@ pub(crate) fn offered_path_is_valid<S, V, E>(
     certification: u32,
     (start, goals): (&[f64], &[Vec<f64>]),
     path: &States,
-    progress: &mut Vec<validity::EdgeProgress>,
+    progress: &mut Vec<mit_star_validity::EdgeProgress>,
 ) -> bool
 where
     S: StateSpace,
     V: StateValidity,
-    E: validity::EdgeChecker<S, V>,
+    E: mit_star_validity::EdgeChecker<S, V>,
 {
     progress.clear();
     let n = space.dimension();
@@ -195,13 +195,13 @@ where
         return false;
     }
     path.iter().zip(path.iter().skip(1)).all(|(a, b)| {
-        let mut tested = validity::EdgeProgress::UNTESTED;
-        let never = &spaces::Never;
+        let mut tested = mit_star_validity::EdgeProgress::UNTESTED;
+        let never = &mit_star_spaces::Never;
         let valid = checker.check_full(space, validity, a, b, &mut tested, never)
-            == validity::EdgeStatus::Valid
+            == mit_star_validity::EdgeStatus::Valid
             && (certification <= 1
                 || checker.certify(space, validity, a, b, certification, never)
-                    == validity::EdgeStatus::Valid);
+                    == mit_star_validity::EdgeStatus::Valid);
         progress.push(tested);
         valid
     })

@@ -1,11 +1,11 @@
 //! [`Snapshot`]: a read-only copy of a planner's samples, trees and cost bounds, for pictures
 //! of runs and for inspection.
 
-use heuristics::Heuristic;
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::{StateSpace, States};
+use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 use petgraph::visit::NodeIndexable;
-use samplers::Sampler;
-use spaces::{StateSpace, States};
-use validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::NONE;
 use crate::informed_trees::Guidance;
@@ -21,7 +21,7 @@ use crate::{Eit, VertexKind};
 ///
 /// ```
 /// use mit_star::{EitStar, IterationLimit, Planner};
-/// let problem = problems::ObstacleFree::new(2).build()?;
+/// let problem = mit_star_problems::ObstacleFree::new(2).build()?;
 /// let mut planner = EitStar::for_problem(&problem).seed(1).build()?;
 /// planner.solve(&IterationLimit::new(200))?;
 /// let snapshot = planner.snapshot().expect("EIT* offers snapshots");
@@ -38,7 +38,7 @@ pub struct Snapshot {
     /// What each vertex stands for.
     pub kinds: Vec<VertexKind>,
     /// Which step of the sampler produced each vertex (the adaptive sampler's branches).
-    pub origins: Vec<samplers::SampleOrigin>,
+    pub origins: Vec<mit_star_samplers::SampleOrigin>,
     /// Forward-tree edges as `(parent, child)` indices into `states`.
     pub forward_edges: Vec<(usize, usize)>,
     /// Edges of the current reverse tree as `(parent, child)` indices into `states`; the parent

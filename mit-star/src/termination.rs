@@ -4,7 +4,7 @@
 use std::cell::Cell;
 use std::time::{Duration, Instant};
 
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 /// What a termination condition may look at: the state of the current `solve` call.
 #[derive(Debug, Clone, Copy, PartialEq)]

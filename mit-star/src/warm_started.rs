@@ -41,7 +41,7 @@ use crate::{
 ///
 /// ```
 /// use mit_star::{build_planner, Configuration, Parameters, Planner, TimeLimit};
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let parameters = Parameters { warm_start: true, ..Parameters::default() };
 /// let mut planner = build_planner(Configuration::MitStar, &problem, &parameters)?;
 /// let outcome = planner.solve(&TimeLimit::seconds(0.1))?;
@@ -241,8 +241,8 @@ mod tests {
         Configuration, FirstSolution, IterationLimit, Parameters, build_planner, build_planner_with,
     };
 
-    fn problem() -> problems::Problem {
-        problems::DividingWalls::new(2)
+    fn problem() -> mit_star_problems::Problem {
+        mit_star_problems::DividingWalls::new(2)
             .build()
             .and_then(|p| p.with_resolution(1e-4))
             .expect("a valid problem")

@@ -4,15 +4,15 @@
 use crate::common;
 
 use common::fingerprint;
-use heuristics::Euclidean;
 use mit_star::{
     Configuration, Counters, EffortInformed, Eit, FirstSolution, Guidance, IterationLimit,
     Parameters, Planner, Suspending, build_planner,
 };
-use problems::{DividingWalls, GoalEnclosure};
-use samplers::{InformedSampler, SampleOrigin};
-use spaces::RealVectorSpace;
-use validity::{AxisBox, FixedSparseChecker, World};
+use mit_star_heuristics::Euclidean;
+use mit_star_problems::{DividingWalls, GoalEnclosure};
+use mit_star_samplers::{InformedSampler, SampleOrigin};
+use mit_star_spaces::RealVectorSpace;
+use mit_star_validity::{AxisBox, FixedSparseChecker, World};
 
 /// Trace costs, path and counters after `iterations` more iterations.
 fn run(planner: &mut dyn Planner, iterations: u64) -> (Vec<u64>, Vec<u64>, Counters) {

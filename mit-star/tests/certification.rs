@@ -4,8 +4,8 @@
 //! certification step never lies across a returned path.
 
 use mit_star::{EitStar, FirstSolution, MitStar, Planner, TerminationExt, TimeLimit};
-use spaces::RealVectorSpace;
-use validity::{AxisBox, World};
+use mit_star_spaces::RealVectorSpace;
+use mit_star_validity::{AxisBox, World};
 
 /// The unit square with a wall across `y ∈ [0.1, 0.9]`: 0.02 thick (the planning grid sees
 /// it), except for a window `y ∈ [0.45, 0.55]` where it is 0.004 thick at x ∈ [0.503, 0.507]:

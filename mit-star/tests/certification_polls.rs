@@ -10,9 +10,11 @@ use mit_star::{
     Configuration, FirstSolution, IterationLimit, Parameters, Progress, Termination,
     TerminationExt, build_planner_with,
 };
-use problems::Problem;
-use spaces::{StateSpace, Stop};
-use validity::{AxisBox, EdgeStatus, MotionProgress, Preparation, Segment, StateValidity, World};
+use mit_star_problems::Problem;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{
+    AxisBox, EdgeStatus, MotionProgress, Preparation, Segment, StateValidity, World,
+};
 
 /// Obstacles of the world besides the wall: small cubes, none near the corridor the paths
 /// take, so that certifications examine them all and find the edges valid.

@@ -24,7 +24,7 @@ fn every_configuration_on_every_problem_family() {
         "random-rectangles",
     ] {
         for n in [2, 4, 8] {
-            let problem = problems::builtin(family, n, 1).expect("a built-in problem");
+            let problem = mit_star_problems::builtin(family, n, 1).expect("a built-in problem");
             for configuration in Configuration::ALL {
                 let parameters = Parameters {
                     seed: 7,

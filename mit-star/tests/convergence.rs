@@ -7,7 +7,7 @@ use common::{assert_solution_sound, assert_trace_monotone, path_is_valid};
 use mit_star::{
     Configuration, EitStar, IterationLimit, MitStar, Parameters, Planner, build_planner,
 };
-use problems::{ObstacleFree, Problem, WallGap};
+use mit_star_problems::{ObstacleFree, Problem, WallGap};
 
 /// Costs after successive iteration budgets, and the final relative gap to the optimum.
 fn costs_over_time(problem: &Problem, budgets: &[u64], seed: u64, mit: bool) -> Vec<f64> {
@@ -73,7 +73,7 @@ fn obstacle_free_r8_is_the_straight_line() {
 
 #[test]
 fn dividing_walls_r2_cost_converges_toward_the_optimum() {
-    let problem = problems::DividingWalls::new(2)
+    let problem = mit_star_problems::DividingWalls::new(2)
         .build()
         .unwrap()
         .with_resolution(1e-4)

@@ -61,7 +61,7 @@ proptest! {
         configuration in prop::sample::select(Configuration::ALL.to_vec()),
         seed in any::<u64>(),
     ) {
-        let problem = problems::builtin("wall-gap", 2, 0).unwrap();
+        let problem = mit_star_problems::builtin("wall-gap", 2, 0).unwrap();
         let parameters = with_field(field, float, count, seed);
         let clock = Scheduled::start();
         match build_planner(configuration, &problem, &parameters) {

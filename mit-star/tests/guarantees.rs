@@ -13,9 +13,9 @@ use mit_star::{
     IterationLimit, MitStar, MitStarSc, Observer, Parameters, Planner, PlannerError, SolutionEvent,
     TerminationExt, TimeLimit, build_planner,
 };
-use problems::{DividingWalls, GoalEnclosure, Problem};
-use spaces::{RealVectorSpace, SpaceError};
-use validity::{AxisBox, World};
+use mit_star_problems::{DividingWalls, GoalEnclosure, Problem};
+use mit_star_spaces::{RealVectorSpace, SpaceError};
+use mit_star_validity::{AxisBox, World};
 
 /// PDT's dividing walls in R^4 at the paper's resolution.
 fn dividing_walls_4() -> Problem {
@@ -273,7 +273,7 @@ fn the_observer_sees_every_improvement() {
 
 #[test]
 fn obstacle_free_queries_are_solved_optimally_at_once() {
-    let problem = problems::ObstacleFree::new(4).build().unwrap();
+    let problem = mit_star_problems::ObstacleFree::new(4).build().unwrap();
     let mut planner = MitStar::for_problem(&problem).build().unwrap();
     let outcome = planner.solve(&IterationLimit::new(10_000)).unwrap();
     // The straight edge is checked first; with the optimum found, solve returns at once.
@@ -419,8 +419,8 @@ fn bad_queries_are_typed_errors_naming_the_state() {
     ));
     // A planner assembled from parts re-checks the query in `solve`.
     let (space, world) = small_world();
-    let sampler = samplers::UniformSampler::new(0);
-    let checker = validity::DenseChecker::from_resolution(&space, 1e-3).unwrap();
+    let sampler = mit_star_samplers::UniformSampler::new(0);
+    let checker = mit_star_validity::DenseChecker::from_resolution(&space, 1e-3).unwrap();
     let mut planner = mit_star::Eit::<_, _, _, _, _, mit_star::EffortInformed>::with_parts(
         space,
         world,
@@ -428,7 +428,7 @@ fn bad_queries_are_typed_errors_naming_the_state() {
         vec![vec![0.05, 0.05]],
         sampler,
         checker,
-        heuristics::Euclidean,
+        mit_star_heuristics::Euclidean,
         mit_star::Parameters::default(),
     );
     let err = planner.solve(&IterationLimit::new(10)).unwrap_err();
@@ -462,9 +462,9 @@ fn r_disc_connection_finds_valid_paths() {
 /// wrapping, so the planner must use the space's metric and interpolation throughout.
 #[test]
 fn joint_spaces_use_their_own_metric() {
-    use spaces::{Joint, JointSpace, StateSpace};
+    use mit_star_spaces::{Joint, JointSpace, StateSpace};
     struct Block;
-    impl validity::StateValidity for Block {
+    impl mit_star_validity::StateValidity for Block {
         fn is_valid(&self, q: &[f64]) -> bool {
             !(q[0].abs() < 2.0 && q[1].abs() < 1.0)
         }
@@ -479,9 +479,9 @@ fn joint_spaces_use_their_own_metric() {
     type Planner = mit_star::Eit<
         JointSpace,
         Block,
-        samplers::InformedSampler,
-        validity::FixedSparseChecker,
-        heuristics::SpaceMetric,
+        mit_star_samplers::InformedSampler,
+        mit_star_validity::FixedSparseChecker,
+        mit_star_heuristics::SpaceMetric,
     >;
     let mut planner = Planner::builder(space.clone(), Block, start, vec![goal])
         .resolution(1e-4)
@@ -505,7 +505,7 @@ fn joint_spaces_use_their_own_metric() {
         for j in 0..=pieces {
             space.interpolate(a, b, j as f64 / pieces as f64, &mut x);
             assert!(
-                validity::StateValidity::is_valid(&Block, &x),
+                mit_star_validity::StateValidity::is_valid(&Block, &x),
                 "invalid at {x:?}"
             );
         }

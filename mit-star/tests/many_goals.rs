@@ -10,8 +10,8 @@ use std::time::Duration;
 
 use common::scheduled::Scheduled;
 use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
-use problems::Problem;
-use validity::{AxisBox, World};
+use mit_star_problems::Problem;
+use mit_star_validity::{AxisBox, World};
 
 /// A wall across `[-0.5, 0.5]^4` with gaps at its ends, the start on one side and `count` goals
 /// scattered (deterministically) on the other.

@@ -9,7 +9,7 @@ use mit_star::{
     Configuration, FirstSolution, Parameters, PathSimplifier, Planner, Solution, TerminationExt,
     TimeLimit, build_planner,
 };
-use spaces::States;
+use mit_star_spaces::States;
 
 fn states(rows: &[Vec<f64>]) -> States {
     let mut s = States::new(rows[0].len());
@@ -21,7 +21,7 @@ fn states(rows: &[Vec<f64>]) -> States {
 
 #[test]
 fn asymptotically_optimal_planners_take_shorter_valid_paths_and_refuse_bad_ones() {
-    let problem = problems::DividingWalls::new(2)
+    let problem = mit_star_problems::DividingWalls::new(2)
         .build()
         .unwrap()
         .with_resolution(1e-4)
@@ -54,7 +54,7 @@ fn asymptotically_optimal_planners_take_shorter_valid_paths_and_refuse_bad_ones(
         assert_eq!(planner.best_cost(), first.cost);
         let rows: Vec<Vec<f64>> = first.path.iter().map(<[f64]>::to_vec).collect();
         let shorter = PathSimplifier::new()
-            .simplify(&problem, &rows, &spaces::Never)
+            .simplify(&problem, &rows, &mit_star_spaces::Never)
             .unwrap();
         assert!(shorter.cost < first.cost);
         let offer = Solution {

@@ -7,9 +7,9 @@ use mit_star::{
     BatchEvent, EitStar, IterationLimit, KdTree, MitStar, NearestNeighbors, Neighbours, Observer,
     Planner, VertexKind,
 };
+use mit_star_samplers::CostBound;
+use mit_star_spaces::euclidean_distance;
 use proptest::prelude::*;
-use samplers::CostBound;
-use spaces::euclidean_distance;
 
 fn brute_force(points: &[Vec<f64>], query: &[f64], k: usize) -> Vec<u32> {
     let mut all: Vec<(f64, u32)> = points
@@ -95,7 +95,7 @@ proptest! {
     /// batch no vertex lies outside the informed set of that batch's bound.
     #[test]
     fn no_vertex_outside_the_informed_set_survives_pruning(seed in 0u64..1000, mit in any::<bool>()) {
-        let problem = problems::DividingWalls::new(2).build().unwrap().with_resolution(1e-4).unwrap();
+        let problem = mit_star_problems::DividingWalls::new(2).build().unwrap().with_resolution(1e-4).unwrap();
         let bounds = Bounds::default();
         let iterations = IterationLimit::new(6_000);
         let graph_check = |graph: &mit_star::RandomGeometricGraph, bound: f64| -> Result<(), TestCaseError> {

@@ -7,10 +7,10 @@ use mit_star::{
     BuildError, FirstSolution, Parameters, PathSimplifier, Planner, RrtConnect, TerminationExt,
     TimeLimit,
 };
-use problems::PlanningProblem;
-use spaces::{Deadline, StateSpace};
+use mit_star_problems::PlanningProblem;
+use mit_star_spaces::{Deadline, StateSpace};
 
-fn rrt_path(problem: &problems::Problem, seed: u64) -> Vec<Vec<f64>> {
+fn rrt_path(problem: &mit_star_problems::Problem, seed: u64) -> Vec<Vec<f64>> {
     let parameters = Parameters {
         seed,
         ..Parameters::default()
@@ -32,7 +32,7 @@ fn rrt_path(problem: &problems::Problem, seed: u64) -> Vec<Vec<f64>> {
 fn simplified_paths_keep_their_ends_get_no_longer_and_stay_valid() {
     let mut totals = (0.0, 0.0);
     for (dimension, seed) in [(2, 1), (2, 2), (4, 3), (8, 4)] {
-        let problem = problems::DividingWalls::new(dimension)
+        let problem = mit_star_problems::DividingWalls::new(dimension)
             .build()
             .unwrap()
             .with_resolution(1e-3)
@@ -75,7 +75,7 @@ fn simplified_paths_keep_their_ends_get_no_longer_and_stay_valid() {
 
 #[test]
 fn a_fired_stop_returns_the_path_unchanged() {
-    let problem = problems::DividingWalls::new(2)
+    let problem = mit_star_problems::DividingWalls::new(2)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -91,8 +91,8 @@ fn a_fired_stop_returns_the_path_unchanged() {
 
 #[test]
 fn bad_paths_are_typed_errors() {
-    let problem = problems::DividingWalls::new(2).build().unwrap();
-    let never = spaces::Never;
+    let problem = mit_star_problems::DividingWalls::new(2).build().unwrap();
+    let never = mit_star_spaces::Never;
     let simplifier = PathSimplifier::new();
     for (path, state) in [
         (vec![vec![0.1, 0.1]], 1),
@@ -112,7 +112,7 @@ fn bad_paths_are_typed_errors() {
 
 #[test]
 fn a_simplifying_planner_reports_shorter_valid_paths_at_every_solution() {
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -164,7 +164,7 @@ fn a_simplifying_planner_reports_shorter_valid_paths_at_every_solution() {
 
 #[test]
 fn a_simplifying_planner_smooths_unless_told_not_to() {
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -208,7 +208,7 @@ fn a_simplifying_planner_smooths_unless_told_not_to() {
 
 #[test]
 fn stages_report_whole_shortcuts_first_then_per_joint_ones_then_smoothing() {
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -222,9 +222,16 @@ fn stages_report_whole_shortcuts_first_then_per_joint_ones_then_smoothing() {
     let simplifier = PathSimplifier::new().seed(3).smoothing_rounds(2);
     let mut stages = Vec::new();
     let last = simplifier
-        .simplify_in_stages(space, validity, checks, &path, &spaces::Never, &mut |s| {
-            stages.push(s.clone());
-        })
+        .simplify_in_stages(
+            space,
+            validity,
+            checks,
+            &path,
+            &mit_star_spaces::Never,
+            &mut |s| {
+                stages.push(s.clone());
+            },
+        )
         .unwrap();
     // The first stage is what whole shortcuts alone make of the path, so a caller has it
     // before the slower per-joint shortcuts run.
@@ -232,7 +239,7 @@ fn stages_report_whole_shortcuts_first_then_per_joint_ones_then_smoothing() {
         .clone()
         .partial_shortcuts(false)
         .smoothing_rounds(0)
-        .simplify_in(space, validity, checks, &path, &spaces::Never)
+        .simplify_in(space, validity, checks, &path, &mit_star_spaces::Never)
         .unwrap();
     assert_eq!(stages[0], whole);
     assert_eq!(stages[0].partial_shortcuts, 0);
@@ -250,16 +257,23 @@ fn stages_report_whole_shortcuts_first_then_per_joint_ones_then_smoothing() {
     simplifier
         .partial_shortcuts(false)
         .smoothing_rounds(0)
-        .simplify_in_stages(space, validity, checks, &path, &spaces::Never, &mut |_| {
-            count += 1;
-        })
+        .simplify_in_stages(
+            space,
+            validity,
+            checks,
+            &path,
+            &mit_star_spaces::Never,
+            &mut |_| {
+                count += 1;
+            },
+        )
         .unwrap();
     assert_eq!(count, 1);
 }
 
 #[test]
 fn a_simplifying_planner_polishes_while_the_inner_planner_finds_nothing_cheaper() {
-    let problem = problems::DividingWalls::new(2)
+    let problem = mit_star_problems::DividingWalls::new(2)
         .build()
         .unwrap()
         .with_resolution(1e-3)

@@ -2,10 +2,10 @@
 //! valid, keep their ends and get no longer, whatever the smoothing moves.
 
 use mit_star::{PathSimplifier, SmoothingMoves};
-use problems::Problem;
+use mit_star_problems::Problem;
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{AxisBox, World};
 use proptest::prelude::*;
-use spaces::StateSpace;
-use validity::{AxisBox, World};
 
 /// A random instance: the dimension, the wall's height, boxes (centre, widths), waypoints on
 /// the near side, the crossing point's height above the wall, waypoints on the far side, the
@@ -116,7 +116,7 @@ proptest! {
             .attempts(0)
             .smoothing_moves(moves)
             .smoothing_rounds(20);
-        let smoothed = simplifier.simplify(&problem, &path, &spaces::Never).unwrap();
+        let smoothed = simplifier.simplify(&problem, &path, &mit_star_spaces::Never).unwrap();
         prop_assert_eq!(smoothed.path.first(), path.first());
         prop_assert_eq!(smoothed.path.last(), path.last());
         prop_assert!(smoothed.cost <= smoothed.original_cost + 1e-12);

@@ -7,13 +7,13 @@ use mit_star::{
     Configuration, IterationLimit, Parameters, TerminationExt, TimeLimit, build_planner,
 };
 
-fn problem(goals: &str) -> problems::Problem {
+fn problem(goals: &str) -> mit_star_problems::Problem {
     let text = format!(
         "name = 'start-is-goal'\nstart = [-0.2, 0.1]\n{goals}\n\
          [bounds]\nlower = [-0.5, -0.5]\nupper = [0.5, 0.5]\n\
          [[obstacles]]\ncenter = [0.2, 0.0]\nwidths = [0.1, 0.6]\n"
     );
-    problems::Problem::from_toml_str(&text).unwrap()
+    mit_star_problems::Problem::from_toml_str(&text).unwrap()
 }
 
 #[test]

@@ -69,10 +69,10 @@ fn describe_bytes(bytes: u64) -> String {
 /// std::fs::create_dir_all(&dir)?;
 /// let file = dir.join("p.toml");
 /// std::fs::write(&file, "name = 'x'\n")?;
-/// assert_eq!(problems::read_bounded(&file, 100, "problem file")?, "name = 'x'\n");
-/// let e = problems::read_bounded(&file, 4, "problem file").unwrap_err();
+/// assert_eq!(mit_star_problems::read_bounded(&file, 100, "problem file")?, "name = 'x'\n");
+/// let e = mit_star_problems::read_bounded(&file, 4, "problem file").unwrap_err();
 /// assert_eq!(e.to_string(), "it is larger than 4 bytes, the limit for a problem file");
-/// assert!(problems::read_bounded(&dir, 100, "problem file").is_err());
+/// assert!(mit_star_problems::read_bounded(&dir, 100, "problem file").is_err());
 /// # std::fs::remove_dir_all(&dir)?;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -124,8 +124,8 @@ pub fn read_bounded_bytes(
 /// length left out when cut: a line of a 200 KB input is not echoed whole.
 ///
 /// ```
-/// assert_eq!(problems::excerpt("short", 10), "short");
-/// assert_eq!(problems::excerpt("abcdefghij", 4), "abcd… (6 more characters)");
+/// assert_eq!(mit_star_problems::excerpt("short", 10), "short");
+/// assert_eq!(mit_star_problems::excerpt("abcdefghij", 4), "abcd… (6 more characters)");
 /// ```
 pub fn excerpt(text: &str, max: usize) -> String {
     match text.char_indices().nth(max) {

@@ -3,7 +3,7 @@
 
 use std::fmt::Display;
 
-use spaces::MemoryBudget;
+use mit_star_spaces::MemoryBudget;
 
 use crate::{
     CenterSquare, DividingWalls, DoubleEnclosure, FlankingGap, GoalEnclosure, NarrowPassage,
@@ -216,11 +216,11 @@ static FAMILIES: [Family; 12] = [
 /// Every built-in problem family, in a fixed order (PDT's four benchmark problems first).
 ///
 /// ```
-/// for family in problems::catalogue() {
+/// for family in mit_star_problems::catalogue() {
 ///     let problem = family.build(2, 0)?;
 ///     assert!(problem.validate().is_ok(), "{}", family.name());
 /// }
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 pub fn catalogue() -> &'static [Family] {
     &FAMILIES
@@ -234,10 +234,10 @@ pub fn catalogue() -> &'static [Family] {
 /// known names); otherwise as the family's `build` ([`ProblemError::Dimension`] if `n < 2`).
 ///
 /// ```
-/// let problem = problems::builtin("dividing-walls", 4, 0)?;
+/// let problem = mit_star_problems::builtin("dividing-walls", 4, 0)?;
 /// assert_eq!(problem.dimension(), 4);
-/// assert!(problems::builtin("dividing-wall", 4, 0).is_err());
-/// # Ok::<(), problems::ProblemError>(())
+/// assert!(mit_star_problems::builtin("dividing-wall", 4, 0).is_err());
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 pub fn builtin(name: &str, n: usize, seed: u64) -> Result<Problem, ProblemError> {
     match FAMILIES.iter().find(|family| family.name == name) {

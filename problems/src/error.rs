@@ -3,9 +3,9 @@
 use std::fmt;
 use std::path::PathBuf;
 
-use spaces::SpaceError;
+use mit_star_spaces::SpaceError;
+use mit_star_validity::ValidityError;
 use thiserror::Error;
-use validity::ValidityError;
 
 /// Which end of a problem a state is: the start, or the goal with the given index.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -34,9 +34,9 @@ fn count(n: usize, noun: &str) -> String {
     }
 }
 
-/// A number for a message ([`spaces::short_number`]).
+/// A number for a message ([`mit_star_spaces::short_number`]).
 pub(crate) fn short(value: f64) -> String {
-    spaces::short_number(value)
+    mit_star_spaces::short_number(value)
 }
 
 /// An optional extent for a message.

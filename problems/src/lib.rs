@@ -1,15 +1,15 @@
 //! Benchmark planning problems.
 //!
 //! A [`Problem`] is a named, fully specified planning problem in `R^n`: a box world
-//! ([`validity::World`]), a start, one or more goals, the collision-check resolution, and the
+//! ([`mit_star_validity::World`]), a start, one or more goals, the collision-check resolution, and the
 //! optimal cost when it is known exactly. Problems come from the built-in families of the
 //! Planner Developer Tools (PDT) benchmarks — each a parameter struct with PDT's defaults for
 //! any dimension `n ≥ 2` — or from a TOML [problem file](problem_file).
 //!
 //! ```
-//! use problems::{DividingWalls, Problem};
-//! use spaces::StateSpace;
-//! use validity::StateValidity;
+//! use mit_star_problems::{DividingWalls, Problem};
+//! use mit_star_spaces::StateSpace;
+//! use mit_star_validity::StateValidity;
 //!
 //! // PDT's dividing walls in R^4: the straight line is blocked.
 //! let problem = DividingWalls::new(4).build()?;
@@ -20,7 +20,7 @@
 //! assert!((problem.step() - 1e-5).abs() < 1e-18);
 //!
 //! // The same family by name, and the same problem through a problem file.
-//! assert_eq!(problems::builtin("dividing-walls", 4, 0)?, problem);
+//! assert_eq!(mit_star_problems::builtin("dividing-walls", 4, 0)?, problem);
 //! let text = problem.to_toml_string();
 //! assert_eq!(Problem::from_toml_str(&text)?, problem);
 //! assert_eq!(problem.space().dimension(), 4);

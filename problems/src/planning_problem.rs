@@ -1,7 +1,7 @@
 //! [`PlanningProblem`]: what every planner needs from a problem, whatever its space and world.
 
-use spaces::StateSpace;
-use validity::StateValidity;
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 
 use crate::{Problem, ProblemError};
 
@@ -14,15 +14,15 @@ use crate::{Problem, ProblemError};
 /// implementation, so every planner plans for every kind of problem through one front door.
 ///
 /// ```
-/// use problems::PlanningProblem;
-/// use spaces::StateSpace;
+/// use mit_star_problems::PlanningProblem;
+/// use mit_star_spaces::StateSpace;
 /// fn describe<P: PlanningProblem>(p: &P) -> String {
 ///     let step = p.check_step().unwrap();
 ///     format!("{}: {} dimensions, step {step}", p.name(), p.space().dimension())
 /// }
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-3)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-3)?;
 /// assert!(describe(&problem).starts_with("dividing-walls: 2 dimensions"));
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 pub trait PlanningProblem {
     /// The configuration space.
@@ -63,7 +63,7 @@ pub trait PlanningProblem {
     /// solution tree (1: not at all). A problem whose contacts can fall between grid points
     /// (an arm's spheres grazing a corner, a segment clipping a box's corner) asks for more.
     /// A validity checker that decides segments exactly (a box world) certifies exactly
-    /// whatever the factor (`validity::GridWalker::certify`).
+    /// whatever the factor (`mit_star_validity::GridWalker::certify`).
     fn certification(&self) -> u32 {
         1
     }
@@ -159,8 +159,8 @@ pub const PAPER_BATCH_SIZE: usize = 100;
 pub const PAPER_SPARSE_SPACING: (f64, f64) = (2000.0, 10.0);
 
 impl PlanningProblem for Problem {
-    type Space = spaces::RealVectorSpace;
-    type Validity = validity::World;
+    type Space = mit_star_spaces::RealVectorSpace;
+    type Validity = mit_star_validity::World;
 
     fn name(&self) -> &str {
         Problem::name(self)

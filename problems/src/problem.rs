@@ -1,7 +1,7 @@
 //! [`Problem`]: a named, fully specified planning problem in `R^n`.
 
-use spaces::{RealVectorSpace, StateSpace, euclidean_distance};
-use validity::{StateValidity, World};
+use mit_star_spaces::{RealVectorSpace, StateSpace, euclidean_distance};
+use mit_star_validity::{StateValidity, World};
 
 use crate::{Endpoint, ProblemError};
 
@@ -14,9 +14,9 @@ use crate::{Endpoint, ProblemError};
 /// that this stays true; [`validate`](Self::validate) re-checks it.
 ///
 /// ```
-/// use problems::Problem;
-/// use spaces::StateSpace;
-/// use validity::{AxisBox, StateValidity, World};
+/// use mit_star_problems::Problem;
+/// use mit_star_spaces::StateSpace;
+/// use mit_star_validity::{AxisBox, StateValidity, World};
 ///
 /// let world = World::new(vec![-0.5; 2], vec![0.5; 2])
 ///     .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.1, 0.8]))?;
@@ -67,7 +67,7 @@ impl Problem {
         let space = RealVectorSpace::new(world.lower().to_vec(), world.upper().to_vec())
             .map_err(ProblemError::Bounds)?;
         let resolution = Self::DEFAULT_RESOLUTION;
-        let step = validity::step_from_resolution(&space, resolution)?;
+        let step = mit_star_validity::step_from_resolution(&space, resolution)?;
         let problem = Self {
             name: name.into(),
             space,
@@ -95,7 +95,7 @@ impl Problem {
         if !(resolution > 0.0 && resolution < 1.0) {
             return Err(ProblemError::Resolution { value: resolution });
         }
-        self.step = validity::step_from_resolution(&self.space, resolution)?;
+        self.step = mit_star_validity::step_from_resolution(&self.space, resolution)?;
         self.resolution = resolution;
         Ok(self)
     }
@@ -134,7 +134,7 @@ impl Problem {
     /// or anti-obstacle, unless a coarse step was [allowed](Self::allowing_coarse_step).
     ///
     /// ```
-    /// use problems::Problem;
+    /// use mit_star_problems::Problem;
     /// let text = "name = 'thin'\nstart = [-0.3, 0.0]\ngoal = [0.3, 0.0]\n\
     ///             [bounds]\nlower = [-0.5, -0.5]\nupper = [0.5, 0.5]\n\
     ///             [[obstacles]]\ncenter = [0.0, 0.0]\nwidths = [1e-6, 1.0]\n";
@@ -234,7 +234,7 @@ impl Problem {
     }
 
     /// The full-resolution collision-check step `L = resolution × maximum extent`
-    /// ([`validity::step_from_resolution`]).
+    /// ([`mit_star_validity::step_from_resolution`]).
     pub fn step(&self) -> f64 {
         self.step
     }
@@ -281,8 +281,8 @@ impl Problem {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spaces::SpaceError;
-    use validity::AxisBox;
+    use mit_star_spaces::SpaceError;
+    use mit_star_validity::AxisBox;
 
     fn wall_world() -> World {
         World::new(vec![-0.5; 2], vec![0.5; 2])

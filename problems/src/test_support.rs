@@ -1,7 +1,7 @@
 //! Helpers for unit tests: polyline lengths and dense validity checks.
 
-use spaces::euclidean_distance;
-use validity::{StateValidity, World};
+use mit_star_spaces::euclidean_distance;
+use mit_star_validity::{StateValidity, World};
 
 /// Total length of a polyline.
 pub(crate) fn polyline_length(points: &[Vec<f64>]) -> f64 {

@@ -2,8 +2,8 @@
 
 use std::path::PathBuf;
 
-use problems::{Problem, WallGap};
-use validity::StateValidity;
+use mit_star_problems::{Problem, WallGap};
+use mit_star_validity::StateValidity;
 
 fn example(name: &str) -> Problem {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))

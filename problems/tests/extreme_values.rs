@@ -1,7 +1,7 @@
 //! Extreme values in every field of a problem file, and in every builder of a built-in
 //! family: a typed error or a correct problem, never a panic.
 
-use problems::{Problem, ProblemFileError};
+use mit_star_problems::{Problem, ProblemFileError};
 use proptest::prelude::*;
 
 /// The values a careless or hostile user writes.
@@ -96,7 +96,7 @@ proptest! {
         n in prop::sample::select(vec![0usize, 1, 2, 3, 5, 33, 100]),
         seed in any::<u64>(),
     ) {
-        let family = &problems::catalogue()[family];
+        let family = &mit_star_problems::catalogue()[family];
         match family.build(n, seed) {
             Ok(problem) => {
                 prop_assert_eq!(problem.dimension(), n);
@@ -109,7 +109,7 @@ proptest! {
 
 #[test]
 fn dimensions_no_machine_holds_are_refused() {
-    for family in problems::catalogue() {
+    for family in mit_star_problems::catalogue() {
         for n in [1_000_000, usize::MAX] {
             let e = family.build(n, 0).unwrap_err().to_string();
             assert!(e.contains("memory") || e.contains("dimensions"), "{e}");

@@ -2,14 +2,14 @@
 //! straight line blocked where the spec says so, gaps passable and enclosures closed, random
 //! rectangles a function of the seed, and problem files round-tripping every problem.
 
-use problems::{
+use mit_star_problems::{
     CenterSquare, DividingWalls, DoubleEnclosure, FlankingGap, GoalEnclosure, NarrowPassage,
     ObstacleFree, Problem, RandomRectangles, RepeatingRectangles, StartEnclosure, WallGap,
     catalogue,
 };
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 use proptest::prelude::*;
-use spaces::StateSpace;
-use validity::StateValidity;
 
 const DIMENSIONS: std::ops::RangeInclusive<usize> = 2..=16;
 

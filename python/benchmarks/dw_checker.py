@@ -11,7 +11,7 @@ import numpy as np
 import mit_star
 
 FREE = 1000  # the weight of an anti-obstacle in the vectorised score
-EPSILON = 1e-9  # validity::World's tolerance on box membership is tiny; agreement is checked
+EPSILON = 1e-9  # mit_star_validity::World's tolerance on box membership is tiny; agreement is checked
 
 
 def boxes(problem: mit_star.Problem, key: str) -> list[tuple[list[float], list[float]]]:

@@ -1,10 +1,10 @@
 //! [`box_world`]: a box-world [`Problem`] from numpy arrays (bounds, start, goals, obstacle
 //! and anti-obstacle centres and widths).
 
+use mit_star_problems::Problem;
+use mit_star_validity::{AxisBox, World};
 use numpy::ndarray::{ArrayView1, ArrayView2};
-use problems::Problem;
 use pyo3::prelude::*;
-use validity::{AxisBox, World};
 
 use crate::error::{BindingError, BindingResult};
 

@@ -33,10 +33,10 @@ pub enum BindingError {
     Planner(#[from] mit_star::PlannerError),
     /// A box world or problem could not be built.
     #[error(transparent)]
-    Problem(#[from] problems::ProblemError),
+    Problem(#[from] mit_star_problems::ProblemError),
     /// An obstacle the world refused.
     #[error(transparent)]
-    Validity(#[from] validity::ValidityError),
+    Validity(#[from] mit_star_validity::ValidityError),
     /// A Python exception (raised by a validity callback, or a failed conversion): passed on
     /// unchanged.
     #[error(transparent)]

@@ -52,7 +52,7 @@ fn planner_parameters(name: &str) -> PyResult<Vec<(String, String)>> {
 /// The built-in problem families (PDT's benchmark problems), as `(name, description)`.
 #[pyfunction]
 fn problem_families() -> Vec<(&'static str, &'static str)> {
-    problems::catalogue()
+    mit_star_problems::catalogue()
         .iter()
         .map(|f| (f.name(), f.description()))
         .collect()
@@ -61,7 +61,10 @@ fn problem_families() -> Vec<(&'static str, &'static str)> {
 /// The shipped robots (`panda`, `ur5`, `fetch`).
 #[pyfunction]
 fn robots() -> Vec<&'static str> {
-    robot::ShippedRobot::all().iter().map(|r| r.name).collect()
+    mit_star_robot::ShippedRobot::all()
+        .iter()
+        .map(|r| r.name)
+        .collect()
 }
 
 /// The module.

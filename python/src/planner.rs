@@ -84,10 +84,10 @@ impl PyPlanner {
                 )));
             }
         }
-        if batch == 0 || batch > validity::MAX_BATCH {
+        if batch == 0 || batch > mit_star_validity::MAX_BATCH {
             return Err(BindingError::Value(format!(
                 "batch must be between 1 and {}, not {batch}",
-                validity::MAX_BATCH
+                mit_star_validity::MAX_BATCH
             )));
         }
         let failure = Arc::new(CallbackFailure::default());

@@ -10,10 +10,10 @@ use numpy::ndarray::ArrayView2;
 use numpy::{PyArray1, PyArray2, PyReadonlyArray2};
 
 use crate::arrays::{matrix, vector};
-use problems::{PlanningProblem, Problem};
+use mit_star_problems::{PlanningProblem, Problem};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 use pyo3::prelude::*;
-use spaces::StateSpace;
-use validity::StateValidity;
 
 use crate::box_world::box_world;
 use crate::error::{BindingError, BindingResult};
@@ -34,7 +34,7 @@ pub struct PyProblem {
     /// A link's pose as the goal instead of the goal configuration (arms).
     pub(crate) pose_goal: Option<PoseGoalSpec>,
     /// Where an arm's visual mesh files are found, for `write_view`.
-    pub(crate) meshes: Option<robot::MeshResolver>,
+    pub(crate) meshes: Option<mit_star_robot::MeshResolver>,
 }
 
 impl PyProblem {
@@ -426,8 +426,8 @@ impl PyProblem {
 
 /// The points of an (N, 3) array (`float32` and `float64` read in place, anything else
 /// numpy can convert to `float64` converted first), under the file readers' rules (NaN rows
-/// dropped, at most `robot::MAX_CLOUD_POINTS`).
-fn cloud_points(array: &Bound<'_, PyAny>) -> BindingResult<robot::InputCloud> {
+/// dropped, at most `mit_star_robot::MAX_CLOUD_POINTS`).
+fn cloud_points(array: &Bound<'_, PyAny>) -> BindingResult<mit_star_robot::InputCloud> {
     if let Ok(a) = array.extract::<PyReadonlyArray2<'_, f32>>() {
         return points_of(&a.as_array());
     }
@@ -445,7 +445,9 @@ fn cloud_points(array: &Bound<'_, PyAny>) -> BindingResult<robot::InputCloud> {
     points_of(&a.as_array())
 }
 
-fn points_of<T: Copy + Into<f64>>(a: &ArrayView2<'_, T>) -> BindingResult<robot::InputCloud> {
+fn points_of<T: Copy + Into<f64>>(
+    a: &ArrayView2<'_, T>,
+) -> BindingResult<mit_star_robot::InputCloud> {
     if a.ncols() != 3 {
         return Err(BindingError::Value(format!(
             "cloud: an (N, 3) array, not ({}, {})",
@@ -454,8 +456,10 @@ fn points_of<T: Copy + Into<f64>>(a: &ArrayView2<'_, T>) -> BindingResult<robot:
         )));
     }
     match a.as_slice() {
-        Some(xyz) => robot::InputCloud::from_xyz("cloud", xyz),
-        None => robot::InputCloud::from_xyz("cloud", &a.iter().copied().collect::<Vec<T>>()),
+        Some(xyz) => mit_star_robot::InputCloud::from_xyz("cloud", xyz),
+        None => {
+            mit_star_robot::InputCloud::from_xyz("cloud", &a.iter().copied().collect::<Vec<T>>())
+        }
     }
     .map_err(|e| BindingError::Value(e.to_string()))
 }

@@ -1,6 +1,6 @@
 //! [`PythonValidity`]: a validity checker written in Python — a callable on one state and,
 //! optionally, a vectorised callable on an `(n, d)` array — that any planner uses through
-//! [`validity::StateValidity`].
+//! [`mit_star_validity::StateValidity`].
 //!
 //! The planner runs with the GIL released; each call takes the GIL only while the Python code
 //! runs. An exception raised by the callable is kept in the shared [`CallbackFailure`] (the
@@ -10,10 +10,10 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 
+use mit_star_validity::StateValidity;
 use numpy::ndarray::ArrayView2;
 use numpy::{PyArray1, PyReadonlyArray1, ToPyArray};
 use pyo3::prelude::*;
-use validity::StateValidity;
 
 /// The first Python exception raised while planning, shared by the checker that caught it and
 /// the termination condition that stops the planner.

@@ -4,10 +4,10 @@
 use std::path::PathBuf;
 
 use mit_star_benches::commands::{Corners, LimitArgs};
+use mit_star_robot::TrajectoryFile;
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use robot::TrajectoryFile;
 
 use crate::error::{BindingError, BindingResult};
 use crate::problem::PyProblem;
@@ -72,7 +72,7 @@ pub(crate) fn time_parameterise<'py>(
         acceleration_scaling,
     }
     .limits(arm)?;
-    let value = |e: robot::TrajectoryError| BindingError::Value(e.to_string());
+    let value = |e: mit_star_robot::TrajectoryError| BindingError::Value(e.to_string());
     let (trajectory, report) = py
         .detach(|| corners.time(arm, &limits, &path))
         .map_err(value)?;

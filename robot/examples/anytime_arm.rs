@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example anytime_arm -- target 20 aorrtc,mit-star 1.0
+//! cargo run --release -p mit-star-robot --example anytime_arm -- target 20 aorrtc,mit-star 1.0
 //! ```
 //!
 //! Runs each named configuration once (seed = the problem's index, one thread) on the first
@@ -24,9 +24,9 @@
 use std::io::Write;
 
 use mit_star::{Aorrtc, Configuration, Parameters, SmoothingMoves, TimeLimit, build_planner};
-use problems::PlanningProblem;
-use robot::{AuditVerdict, MotionAudit};
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{AuditVerdict, MotionAudit};
+use mit_star_spaces::StateSpace;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
@@ -115,15 +115,16 @@ fn main() {
                 let mut planner = match (configuration, aorrtc_moves) {
                     (Configuration::Aorrtc, Some(moves)) => {
                         let mut aorrtc = Aorrtc::for_problem(problem, &parameters).expect("builds");
-                        let smoothing =
-                            Aorrtc::<spaces::JointSpace, robot::ArmChecker>::smooths_solutions(
-                                &parameters,
-                            );
-                        let simplifier =
-                            Aorrtc::<spaces::JointSpace, robot::ArmChecker>::default_simplifier(
-                                parameters.seed,
-                                smoothing,
-                            );
+                        let smoothing = Aorrtc::<
+                            mit_star_spaces::JointSpace,
+                            mit_star_robot::ArmChecker,
+                        >::smooths_solutions(&parameters);
+                        let simplifier = Aorrtc::<
+                            mit_star_spaces::JointSpace,
+                            mit_star_robot::ArmChecker,
+                        >::default_simplifier(
+                            parameters.seed, smoothing
+                        );
                         aorrtc.set_simplifier(simplifier.smoothing_moves(moves));
                         Box::new(aorrtc)
                     }

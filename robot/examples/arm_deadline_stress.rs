@@ -3,8 +3,8 @@
 //! (the box-world half is `mit-star/examples/deadline_stress.rs`).
 //!
 //! ```text
-//! cargo run --release -p robot --example arm_deadline_stress
-//! cargo run --release -p robot --example arm_deadline_stress -- --budgets 0.01,0.1 --seeds 2
+//! cargo run --release -p mit-star-robot --example arm_deadline_stress
+//! cargo run --release -p mit-star-robot --example arm_deadline_stress -- --budgets 0.01,0.1 --seeds 2
 //! ```
 //!
 //! For every MotionBenchMaker scene shipped with the crate's tests (`tests/data/mbm/*_panda`,
@@ -31,9 +31,9 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use mit_star::{Configuration, Parameters};
-use problems::PlanningProblem;
-use robot::ArmProblem;
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::ArmProblem;
+use mit_star_spaces::StateSpace;
 
 #[path = "support/extra_cubes.rs"]
 mod extra_cubes;

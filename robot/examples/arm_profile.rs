@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example arm_profile -- target 100 rrt-connect 3
+//! cargo run --release -p mit-star-robot --example arm_profile -- target 100 rrt-connect 3
 //! ```
 //!
 //! Plans the named configuration (`rrt-connect` and `aorrtc` with range 1 unless `range=` is
@@ -34,9 +34,9 @@ use std::time::Instant;
 use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
-use problems::PlanningProblem;
-use spaces::StateSpace;
-use validity::StateValidity;
+use mit_star_problems::PlanningProblem;
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
@@ -139,7 +139,7 @@ fn main() {
                 if std::env::var_os("ARM_PROFILE_AUDIT").is_some()
                     && let Some(solution) = outcome.ok().and_then(|o| o.solution().cloned())
                 {
-                    let audit = robot::MotionAudit::new(problem.robot(), problem.scene());
+                    let audit = mit_star_robot::MotionAudit::new(problem.robot(), problem.scene());
                     let path: Vec<&[f64]> = solution.path.iter().collect();
                     for w in path.windows(2) {
                         let _ = audit.audit(w[0], w[1], 2_000_000);

@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example certification_cost -- target 20
+//! cargo run --release -p mit-star-robot --example certification_cost -- target 20
 //! ```
 //!
 //! Collects the edges arm planners certify — the edges of MIT*'s and RRT-Connect's first
@@ -18,10 +18,10 @@ use std::time::Instant;
 use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
-use problems::PlanningProblem;
-use robot::ArmProblem;
-use spaces::{Never, StateSpace};
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::ArmProblem;
+use mit_star_spaces::{Never, StateSpace};
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;

@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example check_density -- target 40
+//! cargo run --release -p mit-star-robot --example check_density -- target 40
 //! ```
 //!
 //! Plans RRT-Connect (range 1, to its first solution) and MIT* (to its first solution) on the
@@ -17,8 +17,8 @@ use std::time::Instant;
 use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
-use problems::PlanningProblem;
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_spaces::StateSpace;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
@@ -42,7 +42,7 @@ fn main() {
     println!("|---|---|---|---|---|---|");
     for configuration in [Configuration::RrtConnect, Configuration::MitStar] {
         for per_unit in [32.0, 16.0] {
-            for certification in [robot::CERTIFICATION, 1] {
+            for certification in [mit_star_robot::CERTIFICATION, 1] {
                 let mut times = Vec::new();
                 let mut certified = 0;
                 let started = Instant::now();

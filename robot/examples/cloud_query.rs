@@ -1,8 +1,8 @@
-//! `cloud_query`: the cost of one [`PointTree`](robot::PointTree) contact query on saved clouds,
+//! `cloud_query`: the cost of one [`PointTree`](mit_star_robot::PointTree) contact query on saved clouds,
 //! beside VAMP's CAPT on the same clouds and spheres (`benches/peers/vamp/capt_query.cc`).
 //!
 //! ```text
-//! cargo run --release -p robot --example cloud_query -- OUT/clouds/table_pick_0001.npy …
+//! cargo run --release -p mit-star-robot --example cloud_query -- OUT/clouds/table_pick_0001.npy …
 //! ```
 //!
 //! For each cloud file (PLY, PCD or `.npy`): the tree's build, then 4096 spheres in groups of
@@ -35,7 +35,7 @@ fn main() {
     const COUNT: usize = 4096;
     println!("file,points,build_us,ns_one,touching");
     for file in std::env::args().skip(1) {
-        let cloud = robot::read_cloud(std::path::Path::new(&file)).expect("a cloud file");
+        let cloud = mit_star_robot::read_cloud(std::path::Path::new(&file)).expect("a cloud file");
         let points = cloud.points;
         let (lo, hi) = points.iter().fold(
             (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
@@ -58,7 +58,7 @@ fn main() {
             }
         }
         let started = Instant::now();
-        let tree = robot::PointTree::new(&points);
+        let tree = mit_star_robot::PointTree::new(&points);
         let build_us = started.elapsed().as_secs_f64() * 1e6;
         let mut best = f64::INFINITY;
         let mut touching = 0;

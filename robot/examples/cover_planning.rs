@@ -4,8 +4,8 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/ur5/problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example cover_planning -- ur5 target/problems 20 1
-//! cargo run --release -p robot --example cover_planning -- target/ur5_mesh target/problems 20 1
+//! cargo run --release -p mit-star-robot --example cover_planning -- ur5 target/problems 20 1
+//! cargo run --release -p mit-star-robot --example cover_planning -- target/ur5_mesh target/problems 20 1
 //! ```
 //!
 //! Arguments: the robot (`ur5`, or a folder with a spherised URDF and an SRDF, as `--robot`
@@ -25,7 +25,7 @@
 use std::path::Path;
 
 use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
-use robot::{ArmProblem, RobotSource};
+use mit_star_robot::{ArmProblem, RobotSource};
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;

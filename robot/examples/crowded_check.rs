@@ -2,8 +2,8 @@
 //! Panda's checker in the MotionBenchMaker scenes and among thousands of small boxes.
 //!
 //! ```text
-//! cargo run --release -p robot --example crowded_check -- 20000
-//! cargo run --release -p robot --example crowded_check -- 300 0
+//! cargo run --release -p mit-star-robot --example crowded_check -- 20000
+//! cargo run --release -p mit-star-robot --example crowded_check -- 300 0
 //! ```
 //!
 //! For each scene shipped with the crate's tests (`tests/data/mbm/*_panda`, problem 1), as it
@@ -22,10 +22,10 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use problems::PlanningProblem;
-use robot::{ArmChecker, ArmProblem};
-use spaces::StateSpace;
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmChecker, ArmProblem};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 
 #[path = "support/extra_cubes.rs"]
 mod extra_cubes;
@@ -69,7 +69,8 @@ fn report(name: &str, problem: &ArmProblem, threshold: Option<usize>) {
     } else {
         problem.validity()
     };
-    let mut rng = <spaces::SeededRng as spaces::rand::SeedableRng>::seed_from_u64(7);
+    let mut rng =
+        <mit_star_spaces::SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(7);
     let mut states = vec![0.0; 7 * 2000];
     for q in states.chunks_exact_mut(7) {
         space.sample_uniform(&mut rng, q);
@@ -125,7 +126,7 @@ fn report(name: &str, problem: &ArmProblem, threshold: Option<usize>) {
     let mut certified = 0;
     for (a, b) in starts.iter().zip(&ends) {
         let mut progress = MotionProgress::new(0.0, 0.0);
-        let status = checker.certify_motion(space, a, b, &mut progress, &spaces::Never);
+        let status = checker.certify_motion(space, a, b, &mut progress, &mit_star_spaces::Never);
         certified += usize::from(status == Some(EdgeStatus::Valid));
     }
     let certify = clock.elapsed().as_secs_f64() / starts.len().max(1) as f64;

@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/fetch/problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example end_pockets -- fetch target/problems/bookshelf_small_fetch 3
+//! cargo run --release -p mit-star-robot --example end_pockets -- fetch target/problems/bookshelf_small_fetch 3
 //! ```
 //!
 //! First the share of 20 000 uniform configurations free of self-collision (no scene) and the
@@ -16,14 +16,19 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use problems::PlanningProblem;
-use spaces::rand::{RngExt, SeedableRng};
-use spaces::{SeededRng, StateSpace};
-use validity::StateValidity;
+use mit_star_problems::PlanningProblem;
+use mit_star_spaces::rand::{RngExt, SeedableRng};
+use mit_star_spaces::{SeededRng, StateSpace};
+use mit_star_validity::StateValidity;
 
 /// The share (%) of straight motions of length `length` from `end` in random directions that
 /// stay inside the limits and valid at 40 evenly spaced configurations.
-fn free_share(problem: &robot::ArmProblem, end: &[f64], length: f64, state: &mut SeededRng) -> f64 {
+fn free_share(
+    problem: &mit_star_robot::ArmProblem,
+    end: &[f64],
+    length: f64,
+    state: &mut SeededRng,
+) -> f64 {
     let (space, validity) = (problem.space(), problem.validity());
     let trials = 4000;
     let mut free = 0;
@@ -55,7 +60,7 @@ fn main() {
     let count: usize = args
         .get(3)
         .map_or(3, |c| c.parse().expect("a problem count"));
-    let model = robot::ShippedRobot::find(name)
+    let model = mit_star_robot::ShippedRobot::find(name)
         .expect("a shipped robot")
         .model(false)
         .expect("the shipped files load");
@@ -92,7 +97,8 @@ fn main() {
         "problem | uniform valid | start free at 0.05, 0.2, 0.5, 1 | goal free at 0.05, 0.2, 0.5, 1"
     );
     for index in 1..=count {
-        let problem = match robot::ArmProblem::mbm(model.clone(), Path::new(folder), index) {
+        let problem = match mit_star_robot::ArmProblem::mbm(model.clone(), Path::new(folder), index)
+        {
             Ok(p) if p.ends_are_valid() => p,
             _ => {
                 println!("#{index} | skipped");

@@ -3,7 +3,7 @@
 //! --problem mbm:FOLDER --robot URDF` plans and audits.
 //!
 //! ```text
-//! cargo run --release -p robot --example held_out -- ROBOT.urdf OUT_FOLDER [COUNT=24] [SEED=1] [SPREAD=1]
+//! cargo run --release -p mit-star-robot --example held_out -- ROBOT.urdf OUT_FOLDER [COUNT=24] [SEED=1] [SPREAD=1]
 //! ```
 //!
 //! For robots that ship nowhere in this repository (cuRobo's, converted by
@@ -27,8 +27,8 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use glam::{DAffine3, DQuat, DVec3};
-use robot::{ArmProblem, Kinematics, Obstacle, RobotModel, RobotSource, Scene, Shape};
-use spaces::JointKind;
+use mit_star_robot::{ArmProblem, Kinematics, Obstacle, RobotModel, RobotSource, Scene, Shape};
+use mit_star_spaces::JointKind;
 
 /// A seeded xorshift generator of uniform numbers.
 struct Uniform(u64);

@@ -2,7 +2,7 @@
 //! held-out arm given by its spherised URDF).
 //!
 //! ```text
-//! cargo run --release -p robot --example ik_bench -- [--n 10000] [--seed 1] \
+//! cargo run --release -p mit-star-robot --example ik_bench -- [--n 10000] [--seed 1] \
 //!     [--only panda] [--held-out URDF LINK] [--unchecked] [--out ik.json] \
 //!     [--restarts R] [--iterations I] [--damping D] [--max-step S] [--grasp]
 //! ```
@@ -34,13 +34,13 @@ use std::fmt::Write as _;
 use std::time::{Duration, Instant};
 
 use glam::DAffine3;
-use robot::{
+use mit_star_robot::{
     ArmChecker, IkSolver, Kinematics, OrientationTolerance, PoseTarget, PositionTolerance,
     RobotModel, Scene, ShippedRobot,
 };
-use spaces::rand::SeedableRng;
-use spaces::{Deadline, SeededRng, StateSpace};
-use validity::StateValidity;
+use mit_star_spaces::rand::SeedableRng;
+use mit_star_spaces::{Deadline, SeededRng, StateSpace};
+use mit_star_validity::StateValidity;
 
 /// A robot to test: name, model, frame, URDF path (for the JSON).
 struct Arm {
@@ -143,7 +143,7 @@ struct Settings {
 }
 
 impl Settings {
-    fn apply(&self, solver: IkSolver) -> Result<IkSolver, robot::IkError> {
+    fn apply(&self, solver: IkSolver) -> Result<IkSolver, mit_star_robot::IkError> {
         solver
             .restarts(self.restarts)
             .iterations(self.iterations)?
@@ -216,7 +216,7 @@ fn run(
         let deadline = Deadline::after(Duration::from_secs(1));
         let began = Instant::now();
         let validity: &dyn StateValidity = if unchecked {
-            &validity::AllValid
+            &mit_star_validity::AllValid
         } else {
             &checker
         };
@@ -255,8 +255,8 @@ fn run(
             }
             Err(e) => {
                 match e {
-                    robot::IkError::Stopped { .. } => stopped += 1,
-                    robot::IkError::Unreachable { rejected: r, .. } => rejected += r,
+                    mit_star_robot::IkError::Stopped { .. } => stopped += 1,
+                    mit_star_robot::IkError::Unreachable { rejected: r, .. } => rejected += r,
                     _ => {}
                 }
                 json.push_str("null}");

@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/ur5/problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example mesh_gaps -- target/problems 100
+//! cargo run --release -p mit-star-robot --example mesh_gaps -- target/problems 100
 //! ```
 //!
 //! First, per arm link, how many mesh vertices lie outside VAMP's hand-made spheres and how
@@ -19,10 +19,10 @@
 use std::path::Path;
 
 use glam::{DAffine3, DQuat};
+use mit_star_robot::{MbmProblem, ParryChecker, RobotModel};
 use parry3d_f64::math::Pose;
 use parry3d_f64::query::distance;
 use parry3d_f64::shape::{SharedShape, TriMesh};
-use robot::{MbmProblem, ParryChecker, RobotModel};
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
@@ -59,8 +59,9 @@ fn main() {
     let meshes: Vec<(usize, &str, SharedShape)> = LINKS
         .iter()
         .map(|(link, file)| {
-            let mesh = robot::read_stl(&data.join(format!("meshes/ur5/collision/{file}.stl")))
-                .expect("an STL");
+            let mesh =
+                mit_star_robot::read_stl(&data.join(format!("meshes/ur5/collision/{file}.stl")))
+                    .expect("an STL");
             let shape =
                 TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec()).expect("a mesh");
             let index = model.link_index(link).expect("a UR5 link");
@@ -71,7 +72,7 @@ fn main() {
     // by eye and make no promise to contain it).
     println!("link uncovered_vertices_of_all outside_max_mm");
     for (link, file) in LINKS {
-        let mesh = robot::read_stl(&data.join(format!("meshes/ur5/collision/{file}.stl")))
+        let mesh = mit_star_robot::read_stl(&data.join(format!("meshes/ur5/collision/{file}.stl")))
             .expect("an STL");
         let index = model.link_index(link).expect("a UR5 link");
         let outside: Vec<f64> = mesh
@@ -90,7 +91,7 @@ fn main() {
         let worst = outside.iter().copied().fold(0.0, f64::max);
         println!("{link} {uncovered}/{} {:.1}", outside.len(), worst * 1e3);
     }
-    let fk = robot::Kinematics::new(&model);
+    let fk = mit_star_robot::Kinematics::new(&model);
     let joints: Vec<&str> = model.joint_names().iter().map(String::as_str).collect();
     let mut poses = vec![DAffine3::IDENTITY; fk.link_count()];
     println!("scene instance which self_gap_mm pair obstacle_gap_mm obstacle_pair");

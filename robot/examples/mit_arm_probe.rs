@@ -3,7 +3,7 @@
 //! the budget.
 //!
 //! ```text
-//! cargo run --release -p robot --example mit_arm_probe -- target 5 mit-star 1.0 scenes=cage
+//! cargo run --release -p mit-star-robot --example mit_arm_probe -- target 5 mit-star 1.0 scenes=cage
 //! ```
 //!
 //! Arguments as `anytime_arm`'s (folder, problems per scene, one configuration, seconds, then
@@ -77,8 +77,8 @@ fn main() {
             let trace = planner.trace();
             let c = planner.counters();
             let line = {
-                use problems::PlanningProblem;
-                use spaces::StateSpace;
+                use mit_star_problems::PlanningProblem;
+                use mit_star_spaces::StateSpace;
                 problem
                     .space()
                     .distance(problem.start(), &problem.goals()[0])

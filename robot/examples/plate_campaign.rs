@@ -1,11 +1,11 @@
 //! `plate_campaign`: can a thin obstacle slip through the arm checker? Adversarial problems for
 //! the Panda, each a plate 1–5 mm thick across the straight motion between its start and goal,
 //! planned at every kind of resolution the tool accepts; every returned path is audited
-//! independently and continuously in `f64` ([`robot::MotionAudit`]).
+//! independently and continuously in `f64` ([`mit_star_robot::MotionAudit`]).
 //!
 //! ```text
-//! cargo run --release -p robot --example plate_campaign               # 1 000 problems
-//! cargo run --release -p robot --example plate_campaign -- 200 7      # 200 problems, seed 7
+//! cargo run --release -p mit-star-robot --example plate_campaign               # 1 000 problems
+//! cargo run --release -p mit-star-robot --example plate_campaign -- 200 7      # 200 problems, seed 7
 //! ```
 //!
 //! Each problem: a random start and goal of the Panda at least 1 rad apart; a configuration
@@ -27,10 +27,10 @@ use glam::{DAffine3, DQuat, DVec3};
 use mit_star::{
     Configuration, FirstSolution, Parameters, TerminationExt, TimeLimit, build_planner,
 };
-use robot::{ArmProblem, AuditVerdict, Kinematics, MotionAudit, Obstacle, Scene, Shape};
-use spaces::rand::{RngExt, SeedableRng};
-use spaces::{SeededRng, StateSpace};
-use validity::StateValidity;
+use mit_star_robot::{ArmProblem, AuditVerdict, Kinematics, MotionAudit, Obstacle, Scene, Shape};
+use mit_star_spaces::rand::{RngExt, SeedableRng};
+use mit_star_spaces::{SeededRng, StateSpace};
+use mit_star_validity::StateValidity;
 
 const RESOLUTIONS: [Option<f64>; 7] = [
     None,
@@ -77,7 +77,7 @@ fn main() {
                 .collect()
         };
         let (start, goal) = (draw(), draw());
-        if spaces::euclidean_distance(&start, &goal) < 1.0 {
+        if mit_star_spaces::euclidean_distance(&start, &goal) < 1.0 {
             continue;
         }
         let t = rng.random_range(0.2..0.8);
@@ -141,7 +141,7 @@ fn main() {
         };
         let label = |resolution: Option<f64>| {
             resolution.map_or_else(
-                || format!("1/{} rad", robot::CHECKS_PER_UNIT),
+                || format!("1/{} rad", mit_star_robot::CHECKS_PER_UNIT),
                 |r| r.to_string(),
             )
         };

@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/
-//! cargo run --release -p robot --example simplify_paths -- target 20 rrt-connect 0.1
+//! cargo run --release -p mit-star-robot --example simplify_paths -- target 20 rrt-connect 0.1
 //! ```
 //!
 //! Plans the named configuration on the first `N` problems of each of the five
@@ -21,9 +21,9 @@ use mit_star::{
     Configuration, FirstSolution, Parameters, PathSimplifier, SmoothingMoves, TerminationExt,
     TimeLimit, build_planner,
 };
-use problems::PlanningProblem;
-use robot::{AuditVerdict, MotionAudit};
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{AuditVerdict, MotionAudit};
+use mit_star_spaces::StateSpace;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
@@ -95,7 +95,7 @@ fn main() {
                 .simplify(
                     &problem,
                     &path,
-                    &spaces::Deadline::after(Duration::from_secs_f64(seconds)),
+                    &mit_star_spaces::Deadline::after(Duration::from_secs_f64(seconds)),
                 )
                 .expect("a path of the problem");
             took.push(started.elapsed().as_secs_f64() * 1e3);

@@ -2,17 +2,17 @@
 //!
 //! ```text
 //! mkdir -p target/mbm && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/mbm
-//! cargo run --release -p robot --example trajectory_peers -- plan target/mbm 20 target/peers
+//! cargo run --release -p mit-star-robot --example trajectory_peers -- plan target/mbm 20 target/peers
 //! /work/venv/bin/python benches/peers/toppra/compare.py target/peers
-//! cargo run --release -p robot --example trajectory_peers -- check target/mbm target/peers
+//! cargo run --release -p mit-star-robot --example trajectory_peers -- check target/mbm target/peers
 //! /work/venv/bin/python benches/peers/toppra/compare.py target/peers --table
 //! ```
 //!
 //! `plan`: on the first `N` problems of each of the seven MotionBenchMaker Panda scenes,
 //! plans with RRT-Connect (range 1, first solution, 1 s), simplifies the path (0.1 s), times
 //! it (stop at corners, and blended with certified blends) under the Panda URDF's velocity
-//! limits and MoveIt's Panda acceleration limits ([`robot::PANDA_JOINT_LIMITS`]), checks our
-//! trajectory with [`robot::check_trajectory`] at 1 ms samples, and writes per path
+//! limits and MoveIt's Panda acceleration limits ([`mit_star_robot::PANDA_JOINT_LIMITS`]), checks our
+//! trajectory with [`mit_star_robot::check_trajectory`] at 1 ms samples, and writes per path
 //! `SCENE/NNNN.path.json` (waypoints, limits, our durations, computation times and check) and
 //! `SCENE/NNNN.ours.json` (our blended trajectory sampled every 1 ms).
 //!
@@ -34,11 +34,11 @@ use mit_star::{
     Configuration, FirstSolution, Parameters, PathSimplifier, TerminationExt, TimeLimit,
     build_planner,
 };
-use robot::{
+use mit_star_robot::{
     ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS, Trajectory,
     TrajectoryFile, check_trajectory,
 };
-use spaces::StateSpace as _;
+use mit_star_spaces::StateSpace as _;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
@@ -104,10 +104,10 @@ fn plan(folder: &Path, count: usize, out: &Path) {
                 .simplify(
                     &problem,
                     &path,
-                    &spaces::Deadline::after(Duration::from_secs_f64(0.1)),
+                    &mit_star_spaces::Deadline::after(Duration::from_secs_f64(0.1)),
                 )
                 .expect("a path of the problem");
-            let path = robot::merge_repeated_waypoints(&simplified.path);
+            let path = mit_star_robot::merge_repeated_waypoints(&simplified.path);
             if path.len() < 2 {
                 continue;
             }
@@ -125,7 +125,7 @@ fn plan(folder: &Path, count: usize, out: &Path) {
                 problem.robot(),
                 problem.scene(),
                 &limits,
-                &robot::ArmChecker::new(problem.robot(), problem.scene()),
+                &mit_star_robot::ArmChecker::new(problem.robot(), problem.scene()),
             )
             .expect("checked");
             if !verdict.is_valid() {
@@ -201,7 +201,7 @@ fn check(folder: &Path, out: &Path) {
             let index: usize = name[..4].parse().expect("NNNN.toppra.json");
             let problem = ArmProblem::panda_mbm(&folder.join(&scene), index).expect("the problem");
             let samples = TrajectoryFile::read(&file).expect("TOPP-RA's samples");
-            let checker = robot::ArmChecker::new(problem.robot(), problem.scene());
+            let checker = mit_star_robot::ArmChecker::new(problem.robot(), problem.scene());
             let space = problem.robot().joint_space();
             let mut first = None;
             let mut outside = 0;
@@ -209,16 +209,16 @@ fn check(folder: &Path, out: &Path) {
                 if !space.contains(&w[1].position) {
                     outside += 1;
                 }
-                let mut progress = validity::MotionProgress::default();
-                let status = validity::StateValidity::certify_motion(
+                let mut progress = mit_star_validity::MotionProgress::default();
+                let status = mit_star_validity::StateValidity::certify_motion(
                     &checker,
                     space,
                     &w[0].position,
                     &w[1].position,
                     &mut progress,
-                    &spaces::Never,
+                    &mit_star_spaces::Never,
                 );
-                if first.is_none() && status != Some(validity::EdgeStatus::Valid) {
+                if first.is_none() && status != Some(mit_star_validity::EdgeStatus::Valid) {
                     first = Some(i + 1);
                 }
             }
@@ -264,7 +264,7 @@ fn retime(folder: &Path, out: &Path) {
             let problem = ArmProblem::panda_mbm(&folder.join(&scene), index).expect("problem");
             let limits = limits(&problem);
             let scene_of = if std::env::var_os("RETIME_EMPTY").is_some() {
-                robot::Scene::new(vec![])
+                mit_star_robot::Scene::new(vec![])
             } else {
                 problem.scene().clone()
             };
@@ -274,7 +274,7 @@ fn retime(folder: &Path, out: &Path) {
             took.push(started.elapsed().as_secs_f64() * 1e3);
             ratios.push(blended.duration() / toppra);
             if std::env::var_os("RETIME_CHECK").is_some() {
-                let checker = robot::ArmChecker::new(problem.robot(), problem.scene());
+                let checker = mit_star_robot::ArmChecker::new(problem.robot(), problem.scene());
                 for period in [None, Some(PERIOD)] {
                     let file = TrajectoryFile::of(&blended, period).expect("sampled");
                     let verdict = check_trajectory(
@@ -300,7 +300,8 @@ fn retime(folder: &Path, out: &Path) {
                 }
             }
             if std::env::var_os("RETIME_FREE").is_some() {
-                let free = BlendCertifier::new(problem.robot(), &robot::Scene::new(vec![]));
+                let free =
+                    BlendCertifier::new(problem.robot(), &mit_star_robot::Scene::new(vec![]));
                 let started = Instant::now();
                 let (_, report) = Trajectory::blended(&path, &limits, &free).expect("timed");
                 println!(

@@ -2,8 +2,8 @@
 //! visual element, what was loaded (triangles, colour) or why not; then the totals.
 //!
 //! ```text
-//! cargo run -p robot --example visual_meshes -- panda            # a shipped robot
-//! cargo run -p robot --example visual_meshes -- path/to/robot.urdf [PACKAGE_ROOT ...]
+//! cargo run -p mit-star-robot --example visual_meshes -- panda            # a shipped robot
+//! cargo run -p mit-star-robot --example visual_meshes -- path/to/robot.urdf [PACKAGE_ROOT ...]
 //! ```
 //!
 //! A URDF file must have spheres as its collision geometry (as `mit-star spherise` writes
@@ -14,7 +14,7 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use robot::{MeshResolver, RobotModel, ShippedRobot, VisualMeshes};
+use mit_star_robot::{MeshResolver, RobotModel, ShippedRobot, VisualMeshes};
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();

@@ -22,7 +22,7 @@ pub enum ArmError {
         /// `"start"` or `"goal"`.
         what: &'static str,
         /// What is wrong with it.
-        source: spaces::SpaceError,
+        source: mit_star_spaces::SpaceError,
     },
     /// A start or goal in collision ([`ArmProblem::check_ends`](crate::ArmProblem::check_ends)).
     #[error("problem `{problem}`: the {what} configuration collides with {with}")]

@@ -4,9 +4,9 @@
 use std::path::Path;
 use std::sync::Arc;
 
-use problems::{PlanningProblem, ProblemError};
-use spaces::{JointSpace, StateSpace};
-use validity::StateValidity;
+use mit_star_problems::{PlanningProblem, ProblemError};
+use mit_star_spaces::{JointSpace, StateSpace};
+use mit_star_validity::StateValidity;
 
 use crate::{ArmChecker, ArmError, LeverArms, MbmProblem, RobotModel, Scene};
 
@@ -35,14 +35,14 @@ pub const CERTIFICATION: u32 = 4;
 /// maximum extent instead (the paper's `5e-3`).
 ///
 /// ```
-/// use problems::PlanningProblem;
-/// use validity::StateValidity;
+/// use mit_star_problems::PlanningProblem;
+/// use mit_star_validity::StateValidity;
 /// let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/box_panda");
-/// let problem = robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
+/// let problem = mit_star_robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
 /// assert_eq!(problem.name(), "box_panda/0001");
 /// assert_eq!(problem.start().len(), 7);
 /// assert!(problem.validity().is_valid(problem.start()));
-/// # Ok::<(), robot::ArmError>(())
+/// # Ok::<(), mit_star_robot::ArmError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct ArmProblem {
@@ -319,7 +319,7 @@ impl ArmProblem {
             return Err(ArmError::Query {
                 problem: self.name.clone(),
                 what: "goal",
-                source: spaces::SpaceError::DimensionMismatch {
+                source: mit_star_spaces::SpaceError::DimensionMismatch {
                     expected: space.dimension(),
                     got: 0,
                 },
@@ -374,10 +374,10 @@ impl ArmProblem {
         if self.certification <= 1 {
             return true;
         }
-        let mut progress = validity::MotionProgress::new(0.0, 0.0);
+        let mut progress = mit_star_validity::MotionProgress::new(0.0, 0.0);
         self.checker
-            .certify_motion(self.space(), q, q, &mut progress, &spaces::Never)
-            != Some(validity::EdgeStatus::Invalid)
+            .certify_motion(self.space(), q, q, &mut progress, &mit_star_spaces::Never)
+            != Some(mit_star_validity::EdgeStatus::Invalid)
     }
 }
 
@@ -568,8 +568,8 @@ fn listed<T>(items: &[T], shown: usize, each: impl Fn(&T) -> String) -> String {
 fn snap_to_limits(space: &JointSpace, q: &mut [f64]) {
     for (v, joint) in q.iter_mut().zip(space.joints()) {
         match joint.kind {
-            spaces::JointKind::Revolute { lower, upper }
-            | spaces::JointKind::Prismatic { lower, upper } => {
+            mit_star_spaces::JointKind::Revolute { lower, upper }
+            | mit_star_spaces::JointKind::Prismatic { lower, upper } => {
                 let tolerance = ArmProblem::LIMIT_TOLERANCE;
                 if *v < lower && *v >= lower - tolerance {
                     *v = lower;
@@ -577,8 +577,10 @@ fn snap_to_limits(space: &JointSpace, q: &mut [f64]) {
                     *v = upper;
                 }
             }
-            spaces::JointKind::Continuous if v.is_finite() => *v = spaces::wrap_angle(*v),
-            spaces::JointKind::Continuous => {}
+            mit_star_spaces::JointKind::Continuous if v.is_finite() => {
+                *v = mit_star_spaces::wrap_angle(*v)
+            }
+            mit_star_spaces::JointKind::Continuous => {}
         }
     }
 }

@@ -2,15 +2,15 @@
 //!
 //! A robot is a kinematic tree read from URDF whose collision geometry is spheres (the
 //! "spherised" models of VAMP and MotionBenchMaker); its actuated joints span a
-//! [`spaces::JointSpace`]. A scene is a set of boxes, cylinders and spheres in the robot's base
+//! [`mit_star_spaces::JointSpace`]. A scene is a set of boxes, cylinders and spheres in the robot's base
 //! frame, read from MotionBenchMaker's MoveIt YAML. Checking a configuration places every
 //! sphere by forward kinematics and tests it against the scene and the robot itself. An
-//! [`ArmProblem`] is a [`problems::PlanningProblem`]: every planner plans for it.
+//! [`ArmProblem`] is a [`mit_star_problems::PlanningProblem`]: every planner plans for it.
 //!
 //! ```
 //! use mit_star::{FirstSolution, MitStar, Planner, TerminationExt};
 //! let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/table_pick_panda");
-//! let problem = robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
+//! let problem = mit_star_robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
 //! let mut planner = MitStar::for_problem(&problem).seed(1).build()?;
 //! let outcome = planner.solve(&FirstSolution.or(mit_star::TimeLimit::seconds(5.0)))?;
 //! assert!(outcome.is_solved());

@@ -4,8 +4,8 @@
 //! clearance and the contact's name. An ignored test prints both audits' times on a
 //! 2 832-sphere cover.
 
+use mit_star_robot::{ArmProblem, AuditVerdict, MotionAudit, RobotModel, Scene};
 use proptest::prelude::*;
-use robot::{ArmProblem, AuditVerdict, MotionAudit, RobotModel, Scene};
 
 use crate::arm_cases;
 use arm_cases::{edge, obstacle};
@@ -90,7 +90,7 @@ proptest! {
 
 /// Prints the audit's cost with and without its broad phase on a 2 832-sphere cover of the
 /// Panda (each sphere split into 48) among the obstacles of a MotionBenchMaker box problem:
-/// `cargo test -p robot --test audit_broad_phase -- --ignored --nocapture`.
+/// `cargo test -p mit-star-robot --test audit_broad_phase -- --ignored --nocapture`.
 #[test]
 #[ignore = "a measurement: prints times"]
 fn the_broad_phase_cost_on_a_large_cover() {
@@ -104,7 +104,7 @@ fn the_broad_phase_cost_on_a_large_cover() {
         problem.scene().obstacles().len()
     );
     let audit = MotionAudit::new(&robot, problem.scene());
-    let start = problems::PlanningProblem::start(&problem).to_vec();
+    let start = mit_star_problems::PlanningProblem::start(&problem).to_vec();
     let home = arm_cases::HOME.to_vec();
     let mut goal = home.clone();
     goal[0] += 0.5;

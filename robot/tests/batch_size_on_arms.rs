@@ -3,8 +3,8 @@
 //! set `batch_size` or `batch_growth` wins over either.
 
 use mit_star::{BatchEvent, Configuration, Parameters};
-use problems::{PAPER_BATCH_SIZE, PlanningProblem};
-use robot::ArmProblem;
+use mit_star_problems::{PAPER_BATCH_SIZE, PlanningProblem};
+use mit_star_robot::ArmProblem;
 
 use crate::cage_batches;
 use cage_batches::{batches, cage};
@@ -15,7 +15,7 @@ fn arm_problems_sample_smaller_growing_batches_unless_told_otherwise() {
     assert_eq!(arm.batch_size(), ArmProblem::BATCH_SIZE);
     assert_eq!(arm.batch_growth(), ArmProblem::BATCH_GROWTH);
     const { assert!(ArmProblem::BATCH_SIZE < PAPER_BATCH_SIZE && ArmProblem::BATCH_GROWTH > 0.0) };
-    let boxes = problems::DividingWalls::new(2).build().unwrap();
+    let boxes = mit_star_problems::DividingWalls::new(2).build().unwrap();
     assert_eq!(
         (boxes.batch_size(), boxes.batch_growth()),
         (PAPER_BATCH_SIZE, 0.0)

@@ -11,10 +11,10 @@
 //! bit for bit.
 
 use glam::DVec3;
+use mit_star_robot::{ArmChecker, Obstacle, ParryChecker, Scene, Shape};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{Preparation, Segment, StateValidity};
 use proptest::prelude::*;
-use robot::{ArmChecker, Obstacle, ParryChecker, Scene, Shape};
-use spaces::StateSpace;
-use validity::{Preparation, Segment, StateValidity};
 
 const TOLERANCE: f64 = 1e-4;
 

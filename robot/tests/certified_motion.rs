@@ -3,11 +3,11 @@
 //! millimetre is never refused.
 
 use glam::{DQuat, DVec3};
+use mit_star_robot::{ArmChecker, Obstacle, ParryChecker, Scene, Shape};
+use mit_star_spaces::{Never, Stop};
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 use proptest::prelude::*;
-use robot::{ArmChecker, Obstacle, ParryChecker, Scene, Shape};
-use spaces::{Never, Stop};
 use std::cell::Cell;
-use validity::{EdgeStatus, MotionProgress, StateValidity};
 
 use crate::arm_cases;
 use arm_cases::{HOME, edge, obstacle, panda, reference_hit, tab_scene};
@@ -74,7 +74,7 @@ fn a_stopped_certification_resumes_and_agrees() {
     // A ball on the base's axis, 0.2 mm beyond the margin from the nearest sphere at `HOME`:
     // turning the first joint keeps every distance to it, so the edge slides along it and
     // its certification takes many short pieces.
-    let fk = robot::Kinematics::new(&robot);
+    let fk = mit_star_robot::Kinematics::new(&robot);
     let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
     let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
     fk.sphere_centers_f64(&HOME, &mut links, &mut centres);
@@ -156,9 +156,9 @@ proptest! {
 
 /// A sphere placed `extra` beyond the checker's margin from the Panda's farthest sphere in `+x`
 /// at `HOME`: the problem from `HOME` to `HOME` in that scene.
-fn home_near_a_sphere(extra: f64) -> robot::ArmProblem {
+fn home_near_a_sphere(extra: f64) -> mit_star_robot::ArmProblem {
     let robot = panda();
-    let fk = robot::Kinematics::new(&robot);
+    let fk = mit_star_robot::Kinematics::new(&robot);
     let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
     let mut centers = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
     fk.sphere_centers_f64(&HOME, &mut links, &mut centers);
@@ -176,10 +176,11 @@ fn home_near_a_sphere(extra: f64) -> robot::ArmProblem {
             at,
             DQuat::IDENTITY,
         )]);
-        robot::ArmProblem::new("floor", robot.clone(), scene, HOME.to_vec(), HOME.to_vec()).unwrap()
+        mit_star_robot::ArmProblem::new("floor", robot.clone(), scene, HOME.to_vec(), HOME.to_vec())
+            .unwrap()
     };
     // The margin grows with the scene's extent: measured with the sphere nearly in place.
-    let margin = problems::PlanningProblem::validity(&build(extra)).margin();
+    let margin = mit_star_problems::PlanningProblem::validity(&build(extra)).margin();
     build(margin + extra)
 }
 
@@ -188,8 +189,8 @@ fn home_near_a_sphere(extra: f64) -> robot::ArmProblem {
 /// a millimetre's clearance more is accepted.
 #[test]
 fn an_end_within_the_certification_floor_is_refused() {
-    let close = home_near_a_sphere(0.5 * robot::CERTIFICATION_FLOOR);
-    let checker = problems::PlanningProblem::validity(&close);
+    let close = home_near_a_sphere(0.5 * mit_star_robot::CERTIFICATION_FLOOR);
+    let checker = mit_star_problems::PlanningProblem::validity(&close);
     assert!(checker.is_valid(&HOME), "free beyond the margin");
     let (status, _) = certify(checker, &HOME, &HOME, &Never);
     assert_eq!(
@@ -223,7 +224,7 @@ proptest! {
         turn in 0.0..std::f64::consts::TAU,
     ) {
         let robot = panda();
-        let fk = robot::Kinematics::new(&robot);
+        let fk = mit_star_robot::Kinematics::new(&robot);
         let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
         let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
         let q = |t: f64| -> Vec<f64> { a.iter().zip(&b).map(|(x, y)| x + (y - x) * t).collect() };

@@ -3,8 +3,8 @@
 //! counts, are read or refused with an error.
 
 use glam::Vec3;
+use mit_star_robot::{CloudFormat, PlyEncoding, parse_cloud};
 use proptest::prelude::*;
-use robot::{CloudFormat, PlyEncoding, parse_cloud};
 
 fn cloud() -> Vec<Vec3> {
     (0..40)
@@ -55,20 +55,20 @@ fn valid_files() -> Vec<(CloudFormat, Vec<u8>)> {
     vec![
         (
             CloudFormat::Ply,
-            robot::ply_bytes(&points, PlyEncoding::Ascii),
+            mit_star_robot::ply_bytes(&points, PlyEncoding::Ascii),
         ),
         (
             CloudFormat::Ply,
-            robot::ply_bytes(&points, PlyEncoding::BinaryLittleEndian),
+            mit_star_robot::ply_bytes(&points, PlyEncoding::BinaryLittleEndian),
         ),
         (
             CloudFormat::Ply,
-            robot::ply_bytes(&points, PlyEncoding::BinaryBigEndian),
+            mit_star_robot::ply_bytes(&points, PlyEncoding::BinaryBigEndian),
         ),
         (CloudFormat::Pcd, ascii),
         (CloudFormat::Pcd, binary),
         (CloudFormat::Pcd, compressed),
-        (CloudFormat::Npy, robot::npy_bytes(&points)),
+        (CloudFormat::Npy, mit_star_robot::npy_bytes(&points)),
     ]
 }
 
@@ -114,7 +114,7 @@ proptest! {
         }
         if let Ok(cloud) = parse_cloud(&bytes, format, "hostile") {
             prop_assert!(!cloud.points.is_empty());
-            prop_assert!(cloud.points.len() <= robot::MAX_CLOUD_POINTS);
+            prop_assert!(cloud.points.len() <= mit_star_robot::MAX_CLOUD_POINTS);
             prop_assert!(cloud.points.iter().all(|p| p.is_finite()));
         }
     }

@@ -4,9 +4,9 @@
 //! padding of a collision sphere.
 
 use glam::{DAffine3, DQuat, DVec3, Vec3};
+use mit_star_robot::{ArmProblem, Kinematics, Obstacle, SensorPose, Shape};
+use mit_star_spaces::StateSpace;
 use proptest::prelude::*;
-use robot::{ArmProblem, Kinematics, Obstacle, SensorPose, Shape};
-use spaces::StateSpace;
 
 fn shape() -> impl Strategy<Value = Shape> {
     prop_oneof![
@@ -83,7 +83,7 @@ proptest! {
 
     #[test]
     fn sampled_points_lie_on_the_surface(obstacle in obstacle(), seed in any::<u64>()) {
-        let cloud = robot::sample_surfaces(&[obstacle], 300, seed).unwrap();
+        let cloud = mit_star_robot::sample_surfaces(&[obstacle], 300, seed).unwrap();
         prop_assert_eq!(cloud.len(), 300);
         let inverse = obstacle.pose().inverse();
         for p in &cloud.points {
@@ -99,7 +99,7 @@ proptest! {
         size in 0.005..0.5f64,
     ) {
         let mut kept = input.clone();
-        let report = robot::voxel_downsample(&mut kept, size).unwrap();
+        let report = mit_star_robot::voxel_downsample(&mut kept, size).unwrap();
         prop_assert_eq!((report.before, report.after), (input.len(), kept.len()));
         let cell = |p: &Vec3| (p.as_dvec3() * (1.0 / size)).floor().as_i64vec3();
         let mut cells: Vec<_> = kept.iter().map(cell).collect();
@@ -126,7 +126,7 @@ proptest! {
         radius in 0.005..0.3f64,
     ) {
         let mut kept = input.clone();
-        robot::min_distance_downsample(&mut kept, radius).unwrap();
+        mit_star_robot::min_distance_downsample(&mut kept, radius).unwrap();
         for (i, a) in kept.iter().enumerate() {
             for b in &kept[i + 1..] {
                 prop_assert!(a.as_dvec3().distance(b.as_dvec3()) >= radius * (1.0 - 1e-12));
@@ -146,7 +146,7 @@ proptest! {
     ) {
         let center = DVec3::from_array(center);
         let mut ball = input.clone();
-        robot::crop_to_ball(&mut ball, center, radius).unwrap();
+        mit_star_robot::crop_to_ball(&mut ball, center, radius).unwrap();
         let inside: Vec<Vec3> = input
             .iter()
             .copied()
@@ -163,7 +163,7 @@ proptest! {
         let lower = DVec3::from_array(corners.0);
         let upper = lower + DVec3::from_array(corners.1);
         let mut boxed = input.clone();
-        robot::crop_to_box(&mut boxed, lower, upper).unwrap();
+        mit_star_robot::crop_to_box(&mut boxed, lower, upper).unwrap();
         let expected: Vec<Vec3> = input
             .iter()
             .copied()
@@ -213,7 +213,7 @@ proptest! {
             .map(|&(s, d)| (spheres[s].0 + DVec3::from_array(d)).as_vec3())
             .collect();
         let mut kept = input.clone();
-        let report = robot::remove_robot_points(&mut kept, &robot, &q, padding).unwrap();
+        let report = mit_star_robot::remove_robot_points(&mut kept, &robot, &q, padding).unwrap();
         let expected: Vec<Vec3> = input
             .iter()
             .copied()
@@ -228,18 +228,18 @@ proptest! {
 fn the_robot_filter_refuses_bad_configurations_and_padding() {
     let robot = ArmProblem::panda().unwrap();
     let mut points = vec![Vec3::ZERO];
-    assert!(robot::remove_robot_points(&mut points, &robot, &[0.0; 6], 0.0).is_err());
-    assert!(robot::remove_robot_points(&mut points, &robot, &[f64::NAN; 7], 0.0).is_err());
-    let e = robot::remove_robot_points(&mut points, &robot, &[0.0; 7], -0.01).unwrap_err();
+    assert!(mit_star_robot::remove_robot_points(&mut points, &robot, &[0.0; 6], 0.0).is_err());
+    assert!(mit_star_robot::remove_robot_points(&mut points, &robot, &[f64::NAN; 7], 0.0).is_err());
+    let e = mit_star_robot::remove_robot_points(&mut points, &robot, &[0.0; 7], -0.01).unwrap_err();
     assert!(e.to_string().starts_with("padding:"), "{e}");
     // The base sphere's centre: the point there goes.
     points[0] = Vec3::new(0.0, 0.0, 0.05);
-    let report = robot::remove_robot_points(&mut points, &robot, &[0.0; 7], 0.0).unwrap();
+    let report = mit_star_robot::remove_robot_points(&mut points, &robot, &[0.0; 7], 0.0).unwrap();
     assert_eq!((report.before, report.after), (1, 0));
-    assert!(robot::voxel_downsample(&mut points, 0.0).is_err());
-    assert!(robot::min_distance_downsample(&mut points, f64::NAN).is_err());
-    assert!(robot::crop_to_ball(&mut points, DVec3::ZERO, -1.0).is_err());
-    assert!(robot::crop_to_box(&mut points, DVec3::ONE, DVec3::ZERO).is_err());
+    assert!(mit_star_robot::voxel_downsample(&mut points, 0.0).is_err());
+    assert!(mit_star_robot::min_distance_downsample(&mut points, f64::NAN).is_err());
+    assert!(mit_star_robot::crop_to_ball(&mut points, DVec3::ZERO, -1.0).is_err());
+    assert!(mit_star_robot::crop_to_box(&mut points, DVec3::ONE, DVec3::ZERO).is_err());
 }
 
 /// VAMP's benchmark protocol on a MotionBenchMaker problem: 10 000 points on each primitive,
@@ -248,14 +248,16 @@ fn the_robot_filter_refuses_bad_configurations_and_padding() {
 /// removes nothing.
 #[test]
 fn the_benchmark_protocol_on_table_pick() {
-    use problems::PlanningProblem;
+    use mit_star_problems::PlanningProblem;
     let folder = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/data/mbm/table_pick_panda"
     );
     let problem = ArmProblem::panda_mbm(folder.as_ref(), 1).unwrap();
     let obstacles = problem.scene().obstacles();
-    let cloud = robot::sample_surfaces(obstacles, robot::DEFAULT_SAMPLES_PER_OBSTACLE, 0).unwrap();
+    let cloud =
+        mit_star_robot::sample_surfaces(obstacles, mit_star_robot::DEFAULT_SAMPLES_PER_OBSTACLE, 0)
+            .unwrap();
     assert_eq!(cloud.len(), obstacles.len() * 10_000);
     assert!(cloud.points.iter().all(|p| {
         obstacles
@@ -263,11 +265,13 @@ fn the_benchmark_protocol_on_table_pick() {
             .any(|o| o.distance_f64(p.as_dvec3()) <= 1e-5)
     }));
     let mut points = cloud.points;
-    let crop = robot::crop_to_ball(&mut points, DVec3::new(0.0, 0.0, 0.333), 1.19).unwrap();
+    let crop =
+        mit_star_robot::crop_to_ball(&mut points, DVec3::new(0.0, 0.0, 0.333), 1.19).unwrap();
     let mut voxels = points.clone();
-    let thin = robot::min_distance_downsample(&mut points, 0.02).unwrap();
+    let thin = mit_star_robot::min_distance_downsample(&mut points, 0.02).unwrap();
     let arm =
-        robot::remove_robot_points(&mut points, problem.robot(), problem.start(), 0.0).unwrap();
+        mit_star_robot::remove_robot_points(&mut points, problem.robot(), problem.start(), 0.0)
+            .unwrap();
     assert_eq!(arm.removed(), 0);
     assert!(thin.after < thin.before / 4, "{thin:?}");
     eprintln!(
@@ -280,7 +284,7 @@ fn the_benchmark_protocol_on_table_pick() {
         thin.elapsed,
         arm.elapsed
     );
-    let grid = robot::voxel_downsample(&mut voxels, 0.02).unwrap();
+    let grid = mit_star_robot::voxel_downsample(&mut voxels, 0.02).unwrap();
     eprintln!("  voxels of 2 cm: {} in {:?}", grid.after, grid.elapsed);
 }
 
@@ -293,9 +297,9 @@ proptest! {
     fn the_reach_ball_holds_every_robot_at_every_configuration(
         u in prop::collection::vec(0.0..=1.0f64, 32),
     ) {
-        for shipped in robot::ShippedRobot::all() {
+        for shipped in mit_star_robot::ShippedRobot::all() {
             let model = shipped.model(false).unwrap();
-            let (center, radius) = robot::reach_ball(&model);
+            let (center, radius) = mit_star_robot::reach_ball(&model);
             let space = model.joint_space();
             let q: Vec<f64> = (0..space.dimension())
                 .map(|j| space.lower()[j] + u[j % u.len()] * (space.upper()[j] - space.lower()[j]))
@@ -315,7 +319,7 @@ proptest! {
 }
 
 /// The farthest any sphere of `model` gets from `center` at `q`.
-fn farthest(model: &robot::RobotModel, center: DVec3, q: &[f64]) -> f64 {
+fn farthest(model: &mit_star_robot::RobotModel, center: DVec3, q: &[f64]) -> f64 {
     let fk = Kinematics::new(model);
     let mut links = vec![DAffine3::IDENTITY; fk.link_count()];
     let mut spheres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
@@ -331,11 +335,11 @@ fn farthest(model: &robot::RobotModel, center: DVec3, q: &[f64]) -> f64 {
 /// the UR5's bound is about 35% above the farthest configuration found, the Panda's 12%).
 #[test]
 fn the_reach_ball_holds_the_most_stretched_configurations() {
-    use spaces::rand::{RngExt, SeedableRng};
-    let mut rng = spaces::SeededRng::seed_from_u64(5);
-    for shipped in robot::ShippedRobot::all() {
+    use mit_star_spaces::rand::{RngExt, SeedableRng};
+    let mut rng = mit_star_spaces::SeededRng::seed_from_u64(5);
+    for shipped in mit_star_robot::ShippedRobot::all() {
         let model = shipped.model(false).unwrap();
-        let (center, radius) = robot::reach_ball(&model);
+        let (center, radius) = mit_star_robot::reach_ball(&model);
         let space = model.joint_space();
         let n = space.dimension();
         let mut best_q: Vec<f64> = (0..n)
@@ -368,7 +372,7 @@ fn the_reach_ball_holds_the_most_stretched_configurations() {
 
 #[test]
 fn the_pandas_reach_is_vamps() {
-    let (center, radius) = robot::reach_ball(&ArmProblem::panda().unwrap());
+    let (center, radius) = mit_star_robot::reach_ball(&ArmProblem::panda().unwrap());
     assert!(
         (center - DVec3::new(0.0, 0.0, 0.333)).length() < 1e-12,
         "{center}"

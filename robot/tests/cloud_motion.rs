@@ -4,13 +4,13 @@
 
 use glam::{DVec3, Vec3};
 use mit_star::{FirstSolution, Parameters, Planner, RrtConnect, TerminationExt, TimeLimit};
-use proptest::prelude::*;
-use robot::{
+use mit_star_robot::{
     ArmChecker, ArmProblem, AuditVerdict, CloudObstacle, MotionAudit, ParryChecker, PointCloud,
     RobotModel, Scene, StateDiagnosis,
 };
-use spaces::{Never, SeededRng, StateSpace};
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use mit_star_spaces::{Never, SeededRng, StateSpace};
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
+use proptest::prelude::*;
 
 const HOME: [f64; 7] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
 
@@ -21,8 +21,8 @@ fn panda() -> RobotModel {
 /// The surfaces of `boxes` boxes in front of the Panda, sampled at about `density` points a
 /// box (a camera's view of a cluttered table, from a seed).
 fn box_cloud(boxes: usize, density: usize, seed: u64) -> Vec<Vec3> {
-    let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed);
-    let mut unit = || spaces::rand::RngExt::random_range(&mut rng, -1.0_f32..1.0);
+    let mut rng = <SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(seed);
+    let mut unit = || mit_star_spaces::rand::RngExt::random_range(&mut rng, -1.0_f32..1.0);
     let mut points = Vec::new();
     for _ in 0..boxes {
         let centre = Vec3::new(0.5 + 0.2 * unit(), 0.5 * unit(), 0.35 + 0.35 * unit());
@@ -45,8 +45,8 @@ fn box_cloud(boxes: usize, density: usize, seed: u64) -> Vec<Vec3> {
 /// `sheets` square sheets of points 0.5 m wide, `spacing` apart, at random places and
 /// turns in the Panda's reach (walls a camera sees), from a seed.
 fn sheet_cloud(sheets: usize, spacing: f32, seed: u64) -> Vec<Vec3> {
-    let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed);
-    let mut unit = || spaces::rand::RngExt::random_range(&mut rng, -1.0_f32..1.0);
+    let mut rng = <SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(seed);
+    let mut unit = || mit_star_spaces::rand::RngExt::random_range(&mut rng, -1.0_f32..1.0);
     let mut points = Vec::new();
     let steps = (0.5 / spacing) as i32;
     for _ in 0..sheets {
@@ -98,7 +98,7 @@ proptest! {
         let scene = cloud_scene(box_cloud(boxes, density, seed));
         let checker = ArmChecker::new(&robot, &scene);
         let reference = ParryChecker::new(&robot, &scene);
-        let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed);
+        let mut rng = <SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(seed);
         let states: Vec<f64> = (0..64).flat_map(|_| random_state(&robot, &mut rng)).collect();
         let mut batched = vec![false; 64];
         checker.are_valid(&states, 7, &mut batched);
@@ -151,13 +151,13 @@ fn certify_and_audit(sheets: usize, spacing: f32, seed: u64) -> Audited {
     let scene = cloud_scene(sheet_cloud(sheets, spacing, seed));
     let checker = ArmChecker::new(&robot, &scene);
     let audit = MotionAudit::new(&robot, &scene);
-    let mut rng = <SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed ^ 5);
+    let mut rng = <SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(seed ^ 5);
     let mut found = Audited::default();
     for _ in 0..16 {
         let a = random_state(&robot, &mut rng);
         let mut b = random_state(&robot, &mut rng);
         // Edges of at most 1.5 rad, as planners' extensions are.
-        let length = spaces::euclidean_distance(&a, &b);
+        let length = mit_star_spaces::euclidean_distance(&a, &b);
         if length > 1.5 {
             for (x, y) in b.iter_mut().zip(&a) {
                 *x = y + (*x - y) * 1.5 / length;
@@ -210,7 +210,7 @@ fn random_edges_among_sheets_are_both_certified_and_refused() {
 #[test]
 fn the_diagnosis_names_the_cloud_and_the_point() {
     let robot = panda();
-    let fk = robot::Kinematics::new(&robot);
+    let fk = mit_star_robot::Kinematics::new(&robot);
     let mut poses = vec![glam::DAffine3::IDENTITY; fk.link_count()];
     let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
     fk.sphere_centers_f64(&HOME, &mut poses, &mut centres);
@@ -250,8 +250,8 @@ fn the_diagnosis_names_the_cloud_and_the_point() {
 #[test]
 fn a_plan_among_a_cloud_passes_the_audit() {
     let robot = panda();
-    let table = robot::Obstacle::new(
-        robot::Shape::Cuboid {
+    let table = mit_star_robot::Obstacle::new(
+        mit_star_robot::Shape::Cuboid {
             half_extents: DVec3::new(0.3, 0.6, 0.02),
         },
         DVec3::new(0.6, 0.0, -0.03),

@@ -3,8 +3,8 @@
 //! memory at 10⁶ points; and the errors of points that are not a cloud.
 
 use glam::{DVec3, Vec3};
+use mit_star_robot::{CloudError, CloudObstacle, PointCloud, PointTree};
 use proptest::prelude::*;
-use robot::{CloudError, CloudObstacle, PointCloud, PointTree};
 
 /// Points in a box of half side `spread` around `(0.4, 0, 0.4)`, some in tight clusters (as a
 /// surface sampled densely), from a seed.
@@ -174,7 +174,7 @@ fn bad_points_are_named_errors() {
 #[test]
 fn a_polled_build_stops() {
     struct Always;
-    impl spaces::Stop for Always {
+    impl mit_star_spaces::Stop for Always {
         fn should_stop(&self) -> bool {
             true
         }
@@ -183,7 +183,7 @@ fn a_polled_build_stops() {
     assert!(PointTree::new_polled(&points, &Always).is_none());
     let cloud = PointCloud::new(points.clone()).unwrap();
     assert!(CloudObstacle::new_polled("c", cloud.clone(), &Always).is_none());
-    let built = CloudObstacle::new_polled("c", cloud, &spaces::Never).unwrap();
+    let built = CloudObstacle::new_polled("c", cloud, &mit_star_spaces::Never).unwrap();
     let c = Vec3::new(0.1, 0.2, 0.3);
     let truth = points
         .iter()

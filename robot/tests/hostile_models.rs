@@ -2,7 +2,7 @@
 //! mimic factors, joint limits beyond any robot's, two `<robot>` roots, elements nested
 //! 30 000 deep (a stack overflow in the URDF parser before), a document too large.
 
-use robot::{ModelError, RobotModel};
+use mit_star_robot::{ModelError, RobotModel};
 
 const TWO_LINK: &str = include_str!("data/two_link.urdf");
 

@@ -6,14 +6,14 @@
 use std::f64::consts::PI;
 
 use glam::{DAffine3, DQuat, DVec3};
-use proptest::prelude::*;
-use robot::{
+use mit_star_robot::{
     ArmChecker, IkError, IkSolver, Kinematics, OrientationTolerance, PoseGoal, PoseTarget,
     PositionTolerance, RobotModel, Scene, ShippedRobot,
 };
-use spaces::rand::SeedableRng;
-use spaces::{SeededRng, StateSpace};
-use validity::StateValidity;
+use mit_star_spaces::rand::SeedableRng;
+use mit_star_spaces::{SeededRng, StateSpace};
+use mit_star_validity::StateValidity;
+use proptest::prelude::*;
 
 fn panda() -> RobotModel {
     ShippedRobot::find("panda").unwrap().model(false).unwrap()
@@ -56,7 +56,7 @@ fn solve(model: &RobotModel, link: &str, target: &PoseTarget, seed: u64) -> Vec<
     let mut rng = SeededRng::seed_from_u64(seed.wrapping_add(17));
     model.joint_space().sample_uniform(&mut rng, &mut start);
     let solution = solver
-        .solve(target, &start, &checker, &spaces::Never)
+        .solve(target, &start, &checker, &mit_star_spaces::Never)
         .unwrap_or_else(|e| panic!("{e}: {target:?}"));
     let q = solution.configuration;
     assert!(model.joint_space().contains(&q), "{q:?} outside the limits");
@@ -99,7 +99,7 @@ proptest! {
             .seed(seed)
             .restarts(500);
         let s = solver
-            .solve(&target, &model.default_configuration(), &checker, &spaces::Never)
+            .solve(&target, &model.default_configuration(), &checker, &mit_star_spaces::Never)
             .unwrap()
             .configuration;
         let reached = link_pose(&model, "gripper_link", &s) * tool;
@@ -175,7 +175,8 @@ fn a_pose_goal_gives_distinct_valid_solutions_deterministically() {
             .unwrap();
         for _ in 0..4 {
             assert!(
-                goal.next_solution(&checker, &spaces::Never).is_some(),
+                goal.next_solution(&checker, &mit_star_spaces::Never)
+                    .is_some(),
                 "{:?}",
                 goal.last_failure()
             );
@@ -261,9 +262,9 @@ fn bad_inputs_are_refused_by_name() {
     assert!(e.to_string().contains("cone half-angle"), "{e}");
 
     let mut solver = IkSolver::new(&model, "panda_hand").unwrap().restarts(3);
-    let never = spaces::Never;
+    let never = mit_star_spaces::Never;
     let e = solver
-        .solve(&target, &[0.0; 6], &validity::AllValid, &never)
+        .solve(&target, &[0.0; 6], &mit_star_validity::AllValid, &never)
         .unwrap_err();
     assert_eq!(
         e,
@@ -275,7 +276,7 @@ fn bad_inputs_are_refused_by_name() {
     let mut start = model.default_configuration();
     start[2] = f64::NAN;
     let e = solver
-        .solve(&target, &start, &validity::AllValid, &never)
+        .solve(&target, &start, &mit_star_validity::AllValid, &never)
         .unwrap_err();
     assert!(
         matches!(e, IkError::NonFiniteCoordinate { index: 2, .. }),
@@ -290,7 +291,7 @@ fn bad_inputs_are_refused_by_name() {
     // Ten metres away: unreachable, with the best error reached.
     let far = PoseTarget::new(DVec3::new(10.0, 0.0, 0.0), DQuat::IDENTITY).unwrap();
     let start = model.default_configuration();
-    match solver.solve(&far, &start, &validity::AllValid, &never) {
+    match solver.solve(&far, &start, &mit_star_validity::AllValid, &never) {
         Err(IkError::Unreachable {
             attempts: 4,
             position_error,
@@ -321,11 +322,14 @@ fn bad_inputs_are_refused_by_name() {
     // A stop that has fired: stopped, and a pose goal says why it gave up.
     let stop = || true;
     let e = solver
-        .solve(&far, &start, &validity::AllValid, &stop)
+        .solve(&far, &start, &mit_star_validity::AllValid, &stop)
         .unwrap_err();
     assert!(matches!(e, IkError::Stopped { .. }), "{e}");
     let mut goal = PoseGoal::new(solver, far);
-    assert!(goal.next_solution(&validity::AllValid, &stop).is_none());
+    assert!(
+        goal.next_solution(&mit_star_validity::AllValid, &stop)
+            .is_none()
+    );
     assert!(matches!(goal.last_failure(), Some(IkError::Stopped { .. })));
     assert!(goal.solutions().is_empty());
 }
@@ -367,7 +371,12 @@ fn continuous_joints_wrap() {
             .with_orientation_tolerance(OrientationTolerance::Free)
             .unwrap();
         let s = solver
-            .solve(&target, &start, &validity::AllValid, &spaces::Never)
+            .solve(
+                &target,
+                &start,
+                &mit_star_validity::AllValid,
+                &mit_star_spaces::Never,
+            )
             .unwrap()
             .configuration;
         assert!(s.iter().all(|x| x.abs() <= PI), "{s:?}");

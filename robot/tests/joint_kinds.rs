@@ -5,8 +5,8 @@
 use std::f64::consts::PI;
 
 use glam::{DAffine3, DVec3};
-use robot::{ArmProblem, Kinematics, ModelError, ModelWarning, RobotModel};
-use spaces::{JointKind, StateSpace};
+use mit_star_robot::{ArmProblem, Kinematics, ModelError, ModelWarning, RobotModel};
+use mit_star_spaces::{JointKind, StateSpace};
 
 /// A base; `turn` (revolute about z) carries `arm` with a sphere 0.5 m out along x;
 /// `spin` (continuous about x) carries `wrist`; `lift` (prismatic along z) carries `tray`;
@@ -200,7 +200,7 @@ fn a_request_holds_the_joints_outside_the_group_and_wraps_continuous_ones() {
         .with_group_str(SRDF, "reach")
         .unwrap();
     let problem = ArmProblem::mbm(robot, &dir, 1).unwrap();
-    use problems::PlanningProblem;
+    use mit_star_problems::PlanningProblem;
     assert!((problem.start()[1] - 1.0).abs() < 1e-12);
     assert!((problem.goals()[0][1] - (2.0 * PI - 4.0)).abs() < 1e-12);
     assert_eq!(

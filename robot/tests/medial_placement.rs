@@ -6,7 +6,7 @@ use std::path::Path;
 use std::sync::atomic::AtomicBool;
 
 use glam::DVec3;
-use robot::{CoverOptions, Placement, SphereCover, read_stl};
+use mit_star_robot::{CoverOptions, Placement, SphereCover, read_stl};
 
 /// Points on a triangle: its corners and a barycentric grid of `n` steps per edge.
 fn triangle_samples([a, b, c]: [DVec3; 3], n: u32) -> impl Iterator<Item = DVec3> {

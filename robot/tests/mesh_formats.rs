@@ -6,7 +6,9 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
-use robot::{CoverOptions, LinkSource, RobotModel, SpheriseError, SpheriseOptions, SpherisedUrdf};
+use mit_star_robot::{
+    CoverOptions, LinkSource, RobotModel, SpheriseError, SpheriseOptions, SpherisedUrdf,
+};
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("mesh-formats-{}-{name}", std::process::id()));
@@ -241,7 +243,7 @@ fn unreadable_meshes_fall_back_with_the_file_named_or_are_refused_saying_why() {
 
 /// Points spread over every triangle of a model's mesh: its vertices, and `n × n` points of
 /// a barycentric grid on each triangle.
-fn surface_samples(mesh: &robot::TriangleMesh, n: u32) -> Vec<DVec3> {
+fn surface_samples(mesh: &mit_star_robot::TriangleMesh, n: u32) -> Vec<DVec3> {
     let mut points = mesh.vertices().to_vec();
     for t in 0..mesh.triangles().len() {
         let [a, b, c] = mesh.corners(t);
@@ -290,7 +292,7 @@ fn a_sphere_budget_keeps_every_mesh_point_inside_and_reports_what_it_costs() {
             "{measured} {bound}"
         );
         // Still conservative: every vertex and a dense grid on every triangle is inside.
-        let mesh = robot::read_stl(&dir.join(format!("collision/{file}.stl"))).unwrap();
+        let mesh = mit_star_robot::read_stl(&dir.join(format!("collision/{file}.stl"))).unwrap();
         for p in surface_samples(&mesh, 6) {
             assert!(covered(&model, index, p), "{file}: {p}");
         }

@@ -3,9 +3,9 @@
 //! judged by forward kinematics (where the follower's link actually is).
 
 use glam::{DAffine3, DVec3};
+use mit_star_robot::{Kinematics, ModelError, ModelWarning, RobotModel};
+use mit_star_spaces::StateSpace;
 use proptest::prelude::*;
-use robot::{Kinematics, ModelError, ModelWarning, RobotModel};
-use spaces::StateSpace;
 
 /// `lead` slides along y; `f1` slides along z following it (`m1`, `o1`) and `f2` along x
 /// (`m2`, `o2`), each within its own limits. Every joint's origin is the root's: the link of a

@@ -2,8 +2,8 @@
 //! by hand, and every malformed input as a typed error.
 
 use glam::{Affine3A, DAffine3, DVec3, Vec3A};
-use robot::{Kinematics, ModelError, ModelWarning, RobotModel};
-use spaces::StateSpace;
+use mit_star_robot::{Kinematics, ModelError, ModelWarning, RobotModel};
+use mit_star_spaces::StateSpace;
 
 const PANDA_URDF: &str = include_str!("../data/panda/panda_spherized.urdf");
 const PANDA_SRDF: &str = include_str!("../data/panda/panda.srdf");

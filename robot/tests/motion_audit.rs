@@ -2,10 +2,10 @@
 //! every coarse grid misses, a motion it clears has no configuration in collision on a grid of
 //! 1e-4 rad, and a collision it reports is one.
 
+use mit_star_robot::{AuditVerdict, MotionAudit, ParryChecker, Scene};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 use proptest::prelude::*;
-use robot::{AuditVerdict, MotionAudit, ParryChecker, Scene};
-use spaces::StateSpace;
-use validity::StateValidity;
 
 use crate::arm_cases;
 use arm_cases::{HOME, edge, obstacle, panda, reference_hit, tab_scene};

@@ -4,10 +4,10 @@
 //! independent audit finds every edge certified clear.
 
 use glam::{DQuat, DVec3};
+use mit_star_robot::{ArmChecker, AuditVerdict, MotionAudit, Obstacle, Scene, Shape};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{MotionProgress, StateValidity};
 use proptest::prelude::*;
-use robot::{ArmChecker, AuditVerdict, MotionAudit, Obstacle, Scene, Shape};
-use spaces::StateSpace;
-use validity::{MotionProgress, StateValidity};
 
 use crate::arm_cases::{obstacle, panda};
 
@@ -65,7 +65,7 @@ proptest! {
         let on = ArmChecker::with_grid_threshold(&robot, &scene, 0);
         let off = ArmChecker::with_grid_threshold(&robot, &scene, usize::MAX);
         let space = robot.joint_space();
-        let mut rng = <spaces::SeededRng as spaces::rand::SeedableRng>::seed_from_u64(seed);
+        let mut rng = <mit_star_spaces::SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(seed);
         let mut states = vec![0.0; 7 * 96];
         for q in states.chunks_exact_mut(7) {
             space.sample_uniform(&mut rng, q);
@@ -103,17 +103,17 @@ proptest! {
         for (i, &length) in lengths.iter().enumerate() {
             let a = starts[i % starts.len()];
             let towards = &states[7 * ((i * 37 + 5) % 96)..][..7];
-            let norm = spaces::euclidean_distance(a, towards).max(1e-9);
+            let norm = mit_star_spaces::euclidean_distance(a, towards).max(1e-9);
             let b: Vec<f64> = a
                 .iter()
                 .zip(towards)
                 .map(|(x, y)| x + (y - x) * (length / norm).min(1.0))
                 .collect();
             let (mut p, mut q) = (MotionProgress::new(0.0, 0.0), MotionProgress::new(0.0, 0.0));
-            let status = on.certify_motion(space, a, &b, &mut p, &spaces::Never);
-            prop_assert_eq!(status, off.certify_motion(space, a, &b, &mut q, &spaces::Never));
+            let status = on.certify_motion(space, a, &b, &mut p, &mit_star_spaces::Never);
+            prop_assert_eq!(status, off.certify_motion(space, a, &b, &mut q, &mit_star_spaces::Never));
             prop_assert_eq!(p, q);
-            if status == Some(validity::EdgeStatus::Valid) {
+            if status == Some(mit_star_validity::EdgeStatus::Valid) {
                 certified += 1;
                 let verdict = audit.audit(a, &b, 2_000_000);
                 prop_assert!(matches!(verdict, AuditVerdict::Clear { .. }), "{:?}", verdict);

@@ -3,10 +3,10 @@
 //! (parry, no margin), and its single and eight-lane answers are the same.
 
 use glam::{DQuat, DVec3};
+use mit_star_robot::{ArmChecker, ArmProblem, Kinematics, Obstacle, ParryChecker, Scene, Shape};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 use proptest::prelude::*;
-use robot::{ArmChecker, ArmProblem, Kinematics, Obstacle, ParryChecker, Scene, Shape};
-use spaces::StateSpace;
-use validity::StateValidity;
 
 fn configuration() -> impl Strategy<Value = Vec<f64>> {
     let robot = ArmProblem::panda().unwrap();

@@ -4,9 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use mit_star::{FirstSolution, Parameters, Planner, TerminationExt, TimeLimit};
-use problems::PlanningProblem;
-use robot::{ArmError, ArmProblem, ModelError, ModelWarning, RobotModel, ShippedRobot};
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmError, ArmProblem, ModelError, ModelWarning, RobotModel, ShippedRobot};
+use mit_star_spaces::StateSpace;
 
 fn folder(scene: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -74,7 +74,7 @@ fn values_a_rounding_outside_the_limits_are_snapped_onto_them() {
     let on_a_lower_limit = goal
         .iter()
         .zip(problem.space().joints())
-        .any(|(v, j)| matches!(j.kind, spaces::JointKind::Revolute { lower, .. } if *v == lower));
+        .any(|(v, j)| matches!(j.kind, mit_star_spaces::JointKind::Revolute { lower, .. } if *v == lower));
     assert!(on_a_lower_limit, "{goal:?}");
 }
 

@@ -8,13 +8,13 @@
 //! generous by three orders of magnitude while still far below any sphere model's accuracy).
 
 use glam::{DQuat, DVec3, Vec3A};
+use mit_star_robot::{ArmChecker, Obstacle, ParryChecker, RobotModel, Scene, Shape};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 use parry3d_f64::math::Pose;
 use parry3d_f64::query::intersection_test;
 use parry3d_f64::shape::{Ball, Cuboid, Cylinder};
 use proptest::prelude::*;
-use robot::{ArmChecker, Obstacle, ParryChecker, RobotModel, Scene, Shape};
-use spaces::StateSpace;
-use validity::StateValidity;
 
 /// Metres: contacts closer than this to touching may be judged either way.
 const TOLERANCE: f64 = 1e-4;

@@ -3,8 +3,8 @@
 //! `connection` wins over either.
 
 use mit_star::{Configuration, Connection, Parameters};
-use problems::PlanningProblem;
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_spaces::StateSpace;
 
 use crate::cage_batches;
 use cage_batches::{batches, cage};
@@ -13,7 +13,7 @@ use cage_batches::{batches, cage};
 fn arm_problems_connect_by_radius_unless_told_otherwise() {
     let arm = cage();
     assert!(arm.radius_connection());
-    let boxes = problems::DividingWalls::new(2).build().unwrap();
+    let boxes = mit_star_problems::DividingWalls::new(2).build().unwrap();
     assert!(!boxes.radius_connection());
     let defaults = Parameters::default();
     assert_eq!(defaults.connection, None);

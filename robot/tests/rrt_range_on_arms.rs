@@ -3,9 +3,9 @@
 //! wins, and box worlds keep the planners' own rule.
 
 use mit_star::{Configuration, Parameters, default_range};
-use problems::PlanningProblem;
-use robot::{ArmProblem, RobotModel, ShippedRobot};
-use spaces::StateSpace;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmProblem, RobotModel, ShippedRobot};
+use mit_star_spaces::StateSpace;
 
 /// The range `configuration` runs with on `problem` given `parameters`.
 fn range<P: PlanningProblem>(
@@ -70,7 +70,7 @@ fn each_shipped_robot_steps_by_its_measured_range_unless_one_is_set() {
         distinct, 2,
         "the Panda's and the UR5's ranges differ from the planners'"
     );
-    let boxes = problems::DividingWalls::new(2).build().unwrap();
+    let boxes = mit_star_problems::DividingWalls::new(2).build().unwrap();
     assert_eq!(boxes.default_range(), None);
     assert_eq!(
         range(Configuration::RrtConnect, &boxes, &Parameters::default()),

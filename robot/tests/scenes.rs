@@ -3,10 +3,10 @@
 
 use std::path::{Path, PathBuf};
 
-use problems::PlanningProblem;
-use robot::{ArmError, ArmProblem, MbmProblem, ParryChecker, Scene, SceneError, Shape};
-use spaces::StateSpace;
-use validity::StateValidity;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmError, ArmProblem, MbmProblem, ParryChecker, Scene, SceneError, Shape};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 
 const SCENES: [&str; 5] = [
     "bookshelf_small_panda",
@@ -38,7 +38,7 @@ fn every_sample_problem_loads_with_valid_ends_under_both_checkers() {
             assert!(!problem.scene().obstacles().is_empty());
             // The default: `CHECKS_PER_UNIT` checks per unit of joint-space distance.
             let extent = problem.space().maximum_extent();
-            let per_unit = robot::CHECKS_PER_UNIT;
+            let per_unit = mit_star_robot::CHECKS_PER_UNIT;
             assert!((problem.resolution() * extent * per_unit - 1.0).abs() < 1e-12);
             let reference = ParryChecker::new(problem.robot(), problem.scene());
             for q in [problem.start(), &problem.goals()[0][..]] {

@@ -8,9 +8,9 @@ use mit_star::{
     AitStar, Aorrtc, BitStar, EitStar, InformedRrtStar, MitStar, Parameters, Planner, Progress,
     RrtConnect, Termination,
 };
-use problems::PlanningProblem;
-use robot::{ArmProblem, ParryChecker};
-use validity::StateValidity;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmProblem, ParryChecker};
+use mit_star_validity::StateValidity;
 
 /// Fires from its `polls`-th poll on; [`rearm`](Self::rearm) starts a new slice.
 struct Slice {
@@ -109,7 +109,9 @@ fn every_planner_solves_in_slices_of_a_few_polls() {
 fn assert_densely_clear(reference: &ParryChecker, path: &[Vec<f64>], name: &str) {
     for pair in path.windows(2) {
         let (a, b) = (&pair[0], &pair[1]);
-        let pieces = (spaces::euclidean_distance(a, b) / 1e-3).ceil().max(1.0) as u32;
+        let pieces = (mit_star_spaces::euclidean_distance(a, b) / 1e-3)
+            .ceil()
+            .max(1.0) as u32;
         for k in 0..=pieces {
             let t = f64::from(k) / f64::from(pieces);
             let q: Vec<f64> = a

@@ -4,9 +4,9 @@
 use std::time::Duration;
 
 use mit_star::PathSimplifier;
-use problems::PlanningProblem;
-use robot::{AuditVerdict, MotionAudit};
-use validity::StateValidity;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{AuditVerdict, MotionAudit};
+use mit_star_validity::StateValidity;
 
 use crate::arm_cases::first_mbm_path;
 
@@ -20,7 +20,7 @@ fn simplified_arm_paths_pass_the_continuous_audit() {
             .simplify(
                 &problem,
                 &path,
-                &spaces::Deadline::after(Duration::from_secs(2)),
+                &mit_star_spaces::Deadline::after(Duration::from_secs(2)),
             )
             .unwrap();
         assert_eq!(simplified.path.first(), path.first());

@@ -6,9 +6,9 @@
 use std::path::Path;
 
 use mit_star::{Configuration, IterationLimit, MitStar, Parameters, Planner};
-use problems::PlanningProblem;
-use robot::ArmProblem;
-use samplers::SampleOrigin;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::ArmProblem;
+use mit_star_samplers::SampleOrigin;
 
 use crate::cage_batches::cage;
 
@@ -29,7 +29,7 @@ fn arm_problems_place_states_along_the_path_unless_told_otherwise() {
     let arm = cage();
     assert_eq!(arm.solution_samples(), ArmProblem::SOLUTION_SAMPLES);
     const { assert!(ArmProblem::SOLUTION_SAMPLES > 0.0 && ArmProblem::SOLUTION_SAMPLES < 1.0) };
-    let boxes = problems::DividingWalls::new(2).build().unwrap();
+    let boxes = mit_star_problems::DividingWalls::new(2).build().unwrap();
     assert_eq!(boxes.solution_samples(), 0.0);
     let defaults = Parameters::default();
     let none = Parameters {

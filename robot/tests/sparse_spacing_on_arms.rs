@@ -5,8 +5,8 @@ use mit_star::{
     Configuration, Connection, Counters, FirstSolution, MitStar, Parameters, Planner,
     TerminationExt, TimeLimit, build_planner,
 };
-use problems::{PAPER_SPARSE_SPACING, PlanningProblem};
-use robot::ArmProblem;
+use mit_star_problems::{PAPER_SPARSE_SPACING, PlanningProblem};
+use mit_star_robot::ArmProblem;
 
 use crate::cage_batches;
 use cage_batches::cage;
@@ -49,7 +49,7 @@ fn tool_mit_star(spacing: Option<(f64, f64)>) -> f64 {
             sparse_initial_steps: spacing.map(|s| s.0),
             sparse_min_steps: spacing.map(|s| s.1),
             connection: Some(Connection::KNearest),
-            batch_size: Some(problems::PAPER_BATCH_SIZE),
+            batch_size: Some(mit_star_problems::PAPER_BATCH_SIZE),
             ..Parameters::default()
         };
         build_planner(Configuration::MitStar, &cage(), &parameters).unwrap()
@@ -80,7 +80,7 @@ fn arm_problems_check_sparsely_every_few_steps_unless_told_otherwise() {
             MitStar::for_problem(&cage())
                 .seed(seed)
                 .connection(Connection::KNearest)
-                .batch_size(problems::PAPER_BATCH_SIZE)
+                .batch_size(mit_star_problems::PAPER_BATCH_SIZE)
                 .build()
                 .unwrap(),
         )

@@ -8,11 +8,11 @@ use std::path::{Path, PathBuf};
 use std::sync::LazyLock;
 
 use glam::DVec3;
-use proptest::prelude::*;
-use robot::{
+use mit_star_robot::{
     CoverOptions, LinkSource, RobotModel, SphereCover, SpheriseError, SpheriseOptions,
     SpherisedUrdf, TriangleMesh, read_stl,
 };
+use proptest::prelude::*;
 
 const UR5_MESHES: [&str; 7] = [
     "base", "shoulder", "upperarm", "forearm", "wrist1", "wrist2", "wrist3",
@@ -235,7 +235,7 @@ fn every_vertex_is_covered_and_the_bounds_hold() {
 fn uncovered_sample(
     mesh: &TriangleMesh,
     closed: bool,
-    spheres: &[robot::CoverSphere],
+    spheres: &[mit_star_robot::CoverSphere],
     n: u32,
 ) -> Option<DVec3> {
     let covered = |p: DVec3| spheres.iter().any(|s| p.distance(s.centre) <= s.radius);
@@ -276,9 +276,9 @@ fn deterministic_samples_are_covered_and_a_shrunk_cover_is_caught() {
         );
         // Every sphere 1 mm smaller: the cover is no longer one. The construction leaves
         // little slack, and the samples find where.
-        let shrunk: Vec<robot::CoverSphere> = spheres
+        let shrunk: Vec<mit_star_robot::CoverSphere> = spheres
             .iter()
-            .map(|s| robot::CoverSphere {
+            .map(|s| mit_star_robot::CoverSphere {
                 radius: s.radius - 1e-3,
                 ..*s
             })

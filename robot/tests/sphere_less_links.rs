@@ -3,8 +3,8 @@
 //! never across branches with two moving joints between them. A hand-written dual arm whose
 //! shoulders overlap, and random trees against an independent brute-force rule.
 
+use mit_star_robot::{ArmChecker, RobotModel, Scene, StateDiagnosis};
 use proptest::prelude::*;
-use robot::{ArmChecker, RobotModel, Scene, StateDiagnosis};
 
 const DUAL_ARM: &str = include_str!("data/dual_arm.urdf");
 

@@ -9,12 +9,12 @@ use std::time::Duration;
 use mit_star::PathSimplifier;
 
 use crate::arm_cases::first_mbm_path;
-use proptest::prelude::*;
-use robot::{
+use mit_star_robot::{
     ArmChecker, ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS,
     Scene, Trajectory, TrajectoryError, TrajectoryFile, Violation, check_trajectory,
 };
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
+use proptest::prelude::*;
 
 /// The Panda's limits: the URDF's velocities, MoveIt's accelerations, scaled.
 fn panda_limits(velocity: f64, acceleration: f64) -> MotionLimits {
@@ -133,10 +133,10 @@ fn blended_panda_trajectories_pass_the_check() {
             .simplify(
                 &problem,
                 &path,
-                &spaces::Deadline::after(Duration::from_secs(1)),
+                &mit_star_spaces::Deadline::after(Duration::from_secs(1)),
             )
             .unwrap();
-        let path = robot::merge_repeated_waypoints(&simplified.path);
+        let path = mit_star_robot::merge_repeated_waypoints(&simplified.path);
         let limits = panda_limits(1.0, 1.0);
         let certifier = BlendCertifier::new(problem.robot(), problem.scene());
         let (trajectory, report) = Trajectory::blended(&path, &limits, &certifier).unwrap();
@@ -179,7 +179,7 @@ fn a_blend_through_an_obstacle_is_refused() {
         .find(|w| w[0].velocity[0] != 0.0 && w[1].velocity[1] != 0.0 && w[0].acceleration[1] != 0.0)
         .expect("a blend");
     let middle = timed.evaluate(0.5 * (blend[0].time + blend[1].time));
-    let fk = robot::Kinematics::new(&robot);
+    let fk = mit_star_robot::Kinematics::new(&robot);
     let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
     let mut centers = vec![(glam::DVec3::ZERO, 0.0); fk.sphere_count()];
     fk.sphere_centers_f64(&middle.position, &mut links, &mut centers);
@@ -191,15 +191,15 @@ fn a_blend_through_an_obstacle_is_refused() {
     let segments_clear = |scene: &Scene| {
         let checker = ArmChecker::new(&robot, scene);
         path.windows(2).all(|w| {
-            let mut progress = validity::MotionProgress::default();
-            validity::StateValidity::certify_motion(
+            let mut progress = mit_star_validity::MotionProgress::default();
+            mit_star_validity::StateValidity::certify_motion(
                 &checker,
                 robot.joint_space(),
                 &w[0],
                 &w[1],
                 &mut progress,
-                &spaces::Never,
-            ) == Some(validity::EdgeStatus::Valid)
+                &mit_star_spaces::Never,
+            ) == Some(mit_star_validity::EdgeStatus::Valid)
         })
     };
     assert!(segments_clear(&Scene::default()), "segments in free space");
@@ -209,8 +209,8 @@ fn a_blend_through_an_obstacle_is_refused() {
         .rev()
         .flat_map(|(&(mid, _), &(at_corner, _))| [mid, 2.0 * mid - at_corner])
         .map(|at| {
-            Scene::new(vec![robot::Obstacle::new(
-                robot::Shape::Sphere { radius: 0.005 },
+            Scene::new(vec![mit_star_robot::Obstacle::new(
+                mit_star_robot::Shape::Sphere { radius: 0.005 },
                 at,
                 glam::DQuat::IDENTITY,
             )])
@@ -363,7 +363,7 @@ fn a_long_path_is_timed_within_the_limits() {
         }
         path.push(at.clone());
     }
-    let path = robot::merge_repeated_waypoints(&path);
+    let path = mit_star_robot::merge_repeated_waypoints(&path);
     let limits = panda_limits(1.0, 1.0);
     let started = std::time::Instant::now();
     let certifier = BlendCertifier::new(&robot, &Scene::default());

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use glam::Vec3;
-use robot::{
+use mit_star_robot::{
     MeshLoadError, MeshResolver, ResolveError, RobotModel, ShippedRobot, VisualGeometry,
     VisualMeshes,
 };
@@ -120,7 +120,7 @@ fn visual_meshes_are_placed_coloured_and_their_failures_named() {
     assert_eq!(primitives.len(), 3);
     assert_eq!(primitives[0].triangle_count(), 12);
     assert_eq!(primitives[0].colour, Some([1.0, 0.0, 0.0, 1.0]));
-    let extent = |m: &robot::LinkMesh| {
+    let extent = |m: &mit_star_robot::LinkMesh| {
         (0..m.vertex_count())
             .map(|i| vertex(&m.positions, i).abs())
             .fold(Vec3::ZERO, Vec3::max)

@@ -1,7 +1,7 @@
 //! [`AdaptiveSampler`]: MIT*'s obstacle-based adaptive sampler (spec §4, paper Alg. 2).
 
-use spaces::{StateSpace, Stop};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::StateValidity;
 
 use crate::sampling_steps::InformedDraws;
 use crate::{
@@ -27,9 +27,9 @@ use crate::{
 /// the maximum extent, 8 bridge checks.
 ///
 /// ```
-/// use samplers::{AdaptiveSampler, CostBound, Sampler};
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::{AxisBox, StateValidity, World};
+/// use mit_star_samplers::{AdaptiveSampler, CostBound, Sampler};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::{AxisBox, StateValidity, World};
 ///
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
 /// let world = World::new(vec![0.0; 2], vec![1.0; 2])
@@ -176,8 +176,8 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spaces::{Never, RealVectorSpace};
-    use validity::{AxisBox, StateValidity, World};
+    use mit_star_spaces::{Never, RealVectorSpace};
+    use mit_star_validity::{AxisBox, StateValidity, World};
 
     #[test]
     fn parameters_are_validated_once() {

@@ -1,7 +1,7 @@
 //! [`BridgeSampler`]: Hsu et al.'s bridge test, restricted to the informed set.
 
-use spaces::{StateSpace, Stop};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::StateValidity;
 
 use crate::sampling_steps::InformedDraws;
 use crate::{
@@ -21,9 +21,9 @@ use crate::{
 /// condition ends the search there.
 ///
 /// ```
-/// use samplers::{BridgeSampler, CostBound, Sampler};
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::{AxisBox, StateValidity, World};
+/// use mit_star_samplers::{BridgeSampler, CostBound, Sampler};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::{AxisBox, StateValidity, World};
 ///
 /// // Two walls with a thin slot between them at x = 0.5.
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;

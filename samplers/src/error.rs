@@ -48,7 +48,7 @@ pub enum SamplerError {
     #[error("an informed set needs at least one goal, none was given")]
     NoGoals,
     /// A parameter that must be a finite positive number is not.
-    #[error("{name} must be finite and positive, got {}", spaces::short_number(*.value))]
+    #[error("{name} must be finite and positive, got {}", mit_star_spaces::short_number(*.value))]
     NotPositive {
         /// Which parameter.
         name: &'static str,
@@ -58,7 +58,7 @@ pub enum SamplerError {
     /// A cost given to the estimated informed set is negative or not finite.
     #[error(
         "{name} must be finite and non-negative, got {}",
-        spaces::short_number(*.value)
+        mit_star_spaces::short_number(*.value)
     )]
     NegativeCost {
         /// Which input.
@@ -71,7 +71,7 @@ pub enum SamplerError {
     #[error("the admissible solution cost is zero; the reliability γ = g / ŝ_adm is undefined")]
     ZeroAdmissibleCost,
     /// A fraction is outside `[0, 1)`.
-    #[error("{name} must lie in [0, 1), got {}", spaces::short_number(*.value))]
+    #[error("{name} must lie in [0, 1), got {}", mit_star_spaces::short_number(*.value))]
     Fraction {
         /// Which parameter.
         name: &'static str,

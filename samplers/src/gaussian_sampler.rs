@@ -1,7 +1,7 @@
 //! [`GaussianSampler`]: Boor et al.'s Gaussian sampling, restricted to the informed set.
 
-use spaces::{StateSpace, Stop};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::StateValidity;
 
 use crate::sampling_steps::InformedDraws;
 use crate::{
@@ -21,9 +21,9 @@ use crate::{
 /// the search there.
 ///
 /// ```
-/// use samplers::{CostBound, GaussianSampler, Sampler};
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::{AxisBox, StateValidity, World};
+/// use mit_star_samplers::{CostBound, GaussianSampler, Sampler};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::{AxisBox, StateValidity, World};
 ///
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
 /// let world = World::new(vec![0.0; 2], vec![1.0; 2])

@@ -1,7 +1,7 @@
 //! [`HaltonSequence`]: low-discrepancy points of the unit cube, randomly shifted per seed.
 
+use mit_star_spaces::SeededRng;
 use rand::{RngExt, SeedableRng};
-use spaces::SeededRng;
 
 /// The Halton sequence in `d` dimensions (coordinate `j` is the radical inverse of the point's
 /// index in the `j`-th prime), shifted modulo 1 by an offset per coordinate drawn from a seed
@@ -10,7 +10,7 @@ use spaces::SeededRng;
 /// a 16 × 16 grid of the square: 1 to 7 in every cell, where uniform draws leave cells empty).
 ///
 /// ```
-/// use samplers::HaltonSequence;
+/// use mit_star_samplers::HaltonSequence;
 /// let mut halton = HaltonSequence::new(2, 7);
 /// let mut p = [0.0; 2];
 /// for _ in 0..100 {

@@ -1,7 +1,7 @@
 //! [`InformedSampler`]: valid states uniform over the informed set of the cost bound.
 
-use spaces::{StateSpace, Stop};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::StateValidity;
 
 use crate::sampling_steps::InformedDraws;
 use crate::{CostBound, InformedSet, SampleError, Sampler, SamplerCounters, SamplerError};
@@ -16,15 +16,15 @@ use crate::{CostBound, InformedSet, SampleError, Sampler, SamplerCounters, Sampl
 /// rejection sampling.
 ///
 /// ```
-/// use samplers::{CostBound, InformedSampler, Sampler};
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::AllValid;
+/// use mit_star_samplers::{CostBound, InformedSampler, Sampler};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::AllValid;
 ///
 /// let space = RealVectorSpace::cube(2, -1.0, 1.0)?;
 /// let mut sampler = InformedSampler::new(&space, &[-0.5, 0.0], &[[0.5, 0.0]], 42)?;
 /// let mut x = [0.0; 2];
 /// sampler.sample(&space, &AllValid, CostBound::Estimated(1.2), &Never, &mut x)?;
-/// let cost = spaces::euclidean_distance(&x, &[-0.5, 0.0]) + spaces::euclidean_distance(&x, &[0.5, 0.0]);
+/// let cost = mit_star_spaces::euclidean_distance(&x, &[-0.5, 0.0]) + mit_star_spaces::euclidean_distance(&x, &[0.5, 0.0]);
 /// assert!(cost < 1.2);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

@@ -8,9 +8,9 @@
 //! sampling — lives in one place, [`InformedSet`], which all informed samplers compose.
 //!
 //! ```
-//! use samplers::{CostBound, InformedSampler, Sampler};
-//! use spaces::{Never, RealVectorSpace, StateSpace, euclidean_distance};
-//! use validity::{AxisBox, StateValidity, World};
+//! use mit_star_samplers::{CostBound, InformedSampler, Sampler};
+//! use mit_star_spaces::{Never, RealVectorSpace, StateSpace, euclidean_distance};
+//! use mit_star_validity::{AxisBox, StateValidity, World};
 //!
 //! // R^4, a box obstacle in the middle, start and goal on either side of it.
 //! let space = RealVectorSpace::cube(4, -1.0, 1.0)?;

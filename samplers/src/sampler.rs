@@ -1,8 +1,8 @@
 //! The [`Sampler`] trait, the [`CostBound`] a planner hands it, and [`SampleError`].
 
-use spaces::{StateSpace, Stop};
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::StateValidity;
 use thiserror::Error;
-use validity::StateValidity;
 
 /// The cost bound under which a planner asks for samples.
 ///
@@ -130,7 +130,7 @@ impl SampleOrigin {
     /// asymptotic optimality).
     ///
     /// ```
-    /// use samplers::SampleOrigin;
+    /// use mit_star_samplers::SampleOrigin;
     /// assert!(SampleOrigin::Drawn.counts_toward_density());
     /// assert!(SampleOrigin::Gaussian.counts_toward_density());
     /// assert!(!SampleOrigin::NearTerminal.counts_toward_density());

@@ -1,8 +1,8 @@
 //! [`UniformSampler`]: valid states uniform over the whole space.
 
+use mit_star_spaces::{SeededRng, StateSpace, Stop};
+use mit_star_validity::StateValidity;
 use rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, Stop};
-use validity::StateValidity;
 
 use crate::sampling_steps::Lookahead;
 use crate::{CostBound, HaltonSequence, SampleError, Sampler, SamplerCounters};
@@ -15,9 +15,9 @@ use crate::{CostBound, HaltonSequence, SampleError, Sampler, SamplerCounters};
 /// [`sampled_measure`](Sampler::sampled_measure) is always the space's measure.
 ///
 /// ```
-/// use samplers::{CostBound, Sampler, UniformSampler};
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::{AxisBox, StateValidity, World};
+/// use mit_star_samplers::{CostBound, Sampler, UniformSampler};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::{AxisBox, StateValidity, World};
 ///
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
 /// let world = World::new(vec![0.0; 2], vec![1.0; 2])

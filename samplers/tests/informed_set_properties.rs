@@ -1,15 +1,15 @@
 //! Properties of the informed-set geometry: rotations, containment, measure, empty sets, unions.
 
 use faer::Mat;
-use proptest::prelude::*;
-use rand::{RngExt, SeedableRng};
-use samplers::{
+use mit_star_samplers::{
     CostBound, InformedSampler, InformedSet, SampleError, Sampler, prolate_hyperspheroid_measure,
 };
-use spaces::{
+use mit_star_spaces::{
     Joint, JointSpace, Never, RealVectorSpace, SeededRng, StateSpace, euclidean_distance,
 };
-use validity::AllValid;
+use mit_star_validity::AllValid;
+use proptest::prelude::*;
+use rand::{RngExt, SeedableRng};
 
 /// A state with coordinates in `[lo, hi]`.
 fn state(n: usize, lo: f64, hi: f64) -> impl Strategy<Value = Vec<f64>> {

@@ -3,14 +3,16 @@
 
 use std::cell::Cell;
 
-use proptest::prelude::*;
-use samplers::{
+use mit_star_samplers::{
     AdaptiveSampler, BridgeSampler, CostBound, Estimated, GaussianSampler, InformedSampler,
     LazyPathFailure, NearTerminals, SampleError, Sampler, UniformSampler,
     prolate_hyperspheroid_measure,
 };
-use spaces::{Joint, JointSpace, Never, RealVectorSpace, StateSpace, Stop, euclidean_distance};
-use validity::{AxisBox, Counted, StateValidity, World};
+use mit_star_spaces::{
+    Joint, JointSpace, Never, RealVectorSpace, StateSpace, Stop, euclidean_distance,
+};
+use mit_star_validity::{AxisBox, Counted, StateValidity, World};
+use proptest::prelude::*;
 
 /// The cube `[-1, 1]^n` with a wall `|x0| ≤ 0.1` pierced by a slot `|x1| ≤ 0.02`, start and goal
 /// on either side of the wall, on the slot's axis: every informed set contains the slot, so
@@ -362,7 +364,7 @@ fn non_euclidean_spaces_use_rejection_in_their_own_metric() {
         sampler
             .sample(
                 &space,
-                &validity::AllValid,
+                &mit_star_validity::AllValid,
                 CostBound::Solution(cost),
                 &Never,
                 &mut x,
@@ -374,7 +376,7 @@ fn non_euclidean_spaces_use_rejection_in_their_own_metric() {
     }
     assert!(crossed, "no sample near the seam at ±π");
     assert_eq!(
-        Sampler::<JointSpace, validity::AllValid>::sampled_measure(
+        Sampler::<JointSpace, mit_star_validity::AllValid>::sampled_measure(
             &sampler,
             &space,
             CostBound::Unbounded

@@ -79,7 +79,7 @@ impl Joint {
 /// [`maximum_extent`](StateSpace::maximum_extent) are taken in that metric.
 ///
 /// ```
-/// use spaces::{Joint, JointSpace, StateSpace};
+/// use mit_star_spaces::{Joint, JointSpace, StateSpace};
 /// use std::f64::consts::PI;
 /// let space = JointSpace::new(vec![
 ///     Joint::revolute("shoulder", -2.0, 2.0),
@@ -88,7 +88,7 @@ impl Joint {
 /// // The wrist goes the short way round, across ±π.
 /// let d = space.distance(&[0.0, 3.0], &[0.0, -3.0]);
 /// assert!((d - (2.0 * PI - 6.0)).abs() < 1e-12);
-/// # Ok::<(), spaces::SpaceError>(())
+/// # Ok::<(), mit_star_spaces::SpaceError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct JointSpace {

@@ -6,7 +6,7 @@
 //! every long-running loop polls.
 //!
 //! ```
-//! use spaces::{RealVectorSpace, SeededRng, StateSpace, States};
+//! use mit_star_spaces::{RealVectorSpace, SeededRng, StateSpace, States};
 //! use rand::SeedableRng;
 //!
 //! let space = RealVectorSpace::cube(8, -0.5, 0.5)?;
@@ -20,7 +20,7 @@
 //! space.interpolate(&states[0], &states[1], 0.5, &mut mid);
 //! let half = space.distance(&states[0], &states[1]) / 2.0;
 //! assert!((space.distance(&states[0], &mid) - half).abs() < 1e-12);
-//! # Ok::<(), spaces::SpaceError>(())
+//! # Ok::<(), mit_star_spaces::SpaceError>(())
 //! ```
 //!
 //! # Catalogue

@@ -8,7 +8,7 @@
 /// exist to turn "abort on allocation" into a clear error, not to police every byte.
 ///
 /// ```
-/// use spaces::MemoryBudget;
+/// use mit_star_spaces::MemoryBudget;
 /// let budget = MemoryBudget::of_machine();
 /// assert!(budget.bytes() > 0);
 /// assert!(budget.fits(1 << 20));
@@ -37,7 +37,7 @@ impl MemoryBudget {
     /// definitions all check their sizes through it.
     ///
     /// ```
-    /// use spaces::MemoryBudget;
+    /// use mit_star_spaces::MemoryBudget;
     /// assert!(MemoryBudget::check_on_machine(Some(4096)).is_ok());
     /// assert!(MemoryBudget::check_on_machine(None).is_err());
     /// assert!(MemoryBudget::check_on_machine(Some(u64::MAX)).is_err());

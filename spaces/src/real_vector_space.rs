@@ -9,12 +9,12 @@ use crate::{SpaceError, StateSpace, reflect_into_interval};
 /// The dimension is chosen at run time (any `n ≥ 1`); states are `&[f64]` of length `n`.
 ///
 /// ```
-/// use spaces::{RealVectorSpace, StateSpace};
+/// use mit_star_spaces::{RealVectorSpace, StateSpace};
 /// let space = RealVectorSpace::cube(4, -0.5, 0.5)?;
 /// assert_eq!(space.dimension(), 4);
 /// assert!((space.maximum_extent() - 2.0).abs() < 1e-12); // diagonal of the unit 4-cube
 /// assert!((space.distance(&[0.0; 4], &[0.5, 0.0, 0.0, 0.0]) - 0.5).abs() < 1e-12);
-/// # Ok::<(), spaces::SpaceError>(())
+/// # Ok::<(), mit_star_spaces::SpaceError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct RealVectorSpace {

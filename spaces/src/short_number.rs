@@ -5,7 +5,7 @@
 /// `1.4142135623730951`. Integers below 10⁷ print whole.
 ///
 /// ```
-/// use spaces::short_number;
+/// use mit_star_spaces::short_number;
 /// assert_eq!(short_number(0.25), "0.25");
 /// assert_eq!(short_number(2f64.sqrt()), "1.414");
 /// assert_eq!(short_number(1234567.0), "1234567");

@@ -53,12 +53,12 @@ pub trait StateSpace {
     /// [`JointSpace`](crate::JointSpace) reflect.
     ///
     /// ```
-    /// use spaces::{RealVectorSpace, StateSpace};
+    /// use mit_star_spaces::{RealVectorSpace, StateSpace};
     /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
     /// let mut x = [-0.25, 3.5]; // 0.25 below the bounds, 2.5 above
     /// space.reflect_into_bounds(&mut x);
     /// assert_eq!(x, [0.25, 0.5]);
-    /// # Ok::<(), spaces::SpaceError>(())
+    /// # Ok::<(), mit_star_spaces::SpaceError>(())
     /// ```
     fn reflect_into_bounds(&self, state: &mut [f64]) {
         self.enforce_bounds(state);
@@ -164,9 +164,9 @@ impl<S: StateSpace + ?Sized> StateSpace for &S {
 /// finite.
 ///
 /// ```
-/// assert_eq!(spaces::reflect_into_interval(1.25, 0.0, 1.0), 0.75);
-/// assert_eq!(spaces::reflect_into_interval(-2.25, 0.0, 1.0), 0.25);
-/// assert_eq!(spaces::reflect_into_interval(0.5, 0.0, 1.0), 0.5);
+/// assert_eq!(mit_star_spaces::reflect_into_interval(1.25, 0.0, 1.0), 0.75);
+/// assert_eq!(mit_star_spaces::reflect_into_interval(-2.25, 0.0, 1.0), 0.25);
+/// assert_eq!(mit_star_spaces::reflect_into_interval(0.5, 0.0, 1.0), 0.5);
 /// ```
 #[inline]
 pub fn reflect_into_interval(x: f64, lower: f64, upper: f64) -> f64 {

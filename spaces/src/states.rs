@@ -7,7 +7,7 @@ use std::ops::{Index, IndexMut};
 /// over states never allocate or chase pointers.
 ///
 /// ```
-/// use spaces::States;
+/// use mit_star_spaces::States;
 /// let mut states = States::new(2);
 /// let a = states.push(&[0.0, 1.0]);
 /// let b = states.push(&[2.0, 3.0]);

@@ -5,9 +5,9 @@
 
 use std::f64::consts::PI;
 
+use mit_star_spaces::{Joint, JointSpace, RealVectorSpace, SeededRng, StateSpace};
 use proptest::prelude::*;
 use rand::SeedableRng;
-use spaces::{Joint, JointSpace, RealVectorSpace, SeededRng, StateSpace};
 
 const TOL: f64 = 1e-9;
 
@@ -112,7 +112,7 @@ proptest! {
         let mut kept = inside.clone();
         space.reflect_into_bounds(&mut kept);
         for (i, joint) in space.joints().iter().enumerate() {
-            if !matches!(joint.kind, spaces::JointKind::Continuous) {
+            if !matches!(joint.kind, mit_star_spaces::JointKind::Continuous) {
                 prop_assert_eq!(kept[i], inside[i]);
             }
         }

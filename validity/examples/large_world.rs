@@ -1,7 +1,7 @@
 //! `large_world`: state checks in a world of 100 000 boxes, hierarchy against linear scan.
 //!
 //! ```text
-//! cargo run --release -p validity --example large_world
+//! cargo run --release -p mit-star-validity --example large_world
 //! ```
 //!
 //! For R^2, R^4 and R^8: random boxes with sides 0.01–0.02 (so that states are in few of them)
@@ -11,7 +11,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use validity::{AxisBox, StateValidity, World};
+use mit_star_validity::{AxisBox, StateValidity, World};
 
 /// A small portable generator (SplitMix64), so the example needs no dependency.
 struct Mix(u64);

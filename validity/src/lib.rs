@@ -7,8 +7,8 @@
 //! check's work is never repeated by a later, finer check.
 //!
 //! ```
-//! use spaces::{Never, RealVectorSpace, StateSpace};
-//! use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, LengthAdaptiveChecker, StateValidity};
+//! use mit_star_spaces::{Never, RealVectorSpace, StateSpace};
+//! use mit_star_validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, LengthAdaptiveChecker, StateValidity};
 //!
 //! // A disc of radius 0.1 at the centre of the unit square is an obstacle.
 //! struct Disc;
@@ -25,7 +25,7 @@
 //! // The sparse check's first point is the midpoint, inside the disc.
 //! assert_eq!(checker.check_sparse(&space, &world, &a, &b, &mut progress, &Never), EdgeStatus::Invalid);
 //! assert_eq!(world.count(), 1);
-//! # Ok::<(), spaces::SpaceError>(())
+//! # Ok::<(), mit_star_spaces::SpaceError>(())
 //! ```
 //!
 //! # Catalogue
@@ -69,7 +69,7 @@ pub use state_validity::{AllValid, Counted, StateValidity};
 ///
 /// # Errors
 /// If `resolution` is not finite and positive.
-pub fn step_from_resolution<S: spaces::StateSpace + ?Sized>(
+pub fn step_from_resolution<S: mit_star_spaces::StateSpace + ?Sized>(
     space: &S,
     resolution: f64,
 ) -> Result<f64, ValidityError> {

@@ -2,7 +2,7 @@
 
 use std::cell::Cell;
 
-use spaces::{StateSpace, Stop};
+use mit_star_spaces::{StateSpace, Stop};
 
 use crate::{EdgeStatus, MotionProgress, Preparation, Segment};
 
@@ -33,7 +33,7 @@ pub trait StateValidity {
     /// stopping at the first invalid state.
     ///
     /// ```
-    /// use validity::{AllValid, StateValidity};
+    /// use mit_star_validity::{AllValid, StateValidity};
     /// struct RightHalf;
     /// impl StateValidity for RightHalf {
     ///     fn is_valid(&self, s: &[f64]) -> bool { s[0] >= 0.5 }
@@ -68,7 +68,7 @@ pub trait StateValidity {
     /// asks [`is_valid`](Self::is_valid) of each in turn.
     ///
     /// ```
-    /// use validity::StateValidity;
+    /// use mit_star_validity::StateValidity;
     /// struct RightHalf;
     /// impl StateValidity for RightHalf {
     ///     fn is_valid(&self, s: &[f64]) -> bool { s[0] >= 0.5 }
@@ -257,7 +257,7 @@ impl StateValidity for AllValid {
 /// counter is a [`Cell`]: one planner owns one checker, and the count costs one add.
 ///
 /// ```
-/// use validity::{AllValid, Counted, StateValidity};
+/// use mit_star_validity::{AllValid, Counted, StateValidity};
 /// let checker = Counted::new(AllValid);
 /// assert!(checker.is_valid(&[0.0, 0.0]));
 /// assert!(checker.is_valid(&[1.0, 0.0]));

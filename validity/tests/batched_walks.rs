@@ -9,12 +9,12 @@
 
 use std::cell::{Cell, RefCell};
 
-use proptest::prelude::*;
-use spaces::{Never, RealVectorSpace, Stop};
-use validity::{
+use mit_star_spaces::{Never, RealVectorSpace, Stop};
+use mit_star_validity::{
     AxisBox, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, FixedSparseChecker,
     LengthAdaptiveChecker, STOP_POLL, StateValidity, World,
 };
+use proptest::prelude::*;
 
 /// A world checked in batches of `width` (every state of a batch is tested, as SIMD lanes
 /// would be), recording each state asked about and each batch's size.

@@ -6,12 +6,12 @@
 
 use std::cell::RefCell;
 
-use proptest::prelude::*;
-use spaces::{Never, RealVectorSpace, StateSpace};
-use validity::{
+use mit_star_spaces::{Never, RealVectorSpace, StateSpace};
+use mit_star_validity::{
     AxisBox, DenseChecker, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, FixedSparseChecker,
     LengthAdaptiveChecker, StateValidity, World,
 };
+use proptest::prelude::*;
 
 /// Records every state it is asked about, delegating to a world.
 struct Recorder<'a> {

@@ -9,12 +9,12 @@
 
 use std::cell::RefCell;
 
-use proptest::prelude::*;
-use spaces::{Never, RealVectorSpace, StateSpace};
-use validity::{
+use mit_star_spaces::{Never, RealVectorSpace, StateSpace};
+use mit_star_validity::{
     DenseChecker, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, FixedSparseChecker,
     LengthAdaptiveChecker, StateValidity, canonical_ends,
 };
+use proptest::prelude::*;
 
 /// Records the grid index of every state it is asked about (fraction along the canonical
 /// direction, times `N`), answering valid except at one forbidden index.
@@ -28,7 +28,7 @@ struct Indexer<'a> {
 
 impl StateValidity for Indexer<'_> {
     fn is_valid(&self, state: &[f64]) -> bool {
-        let t = spaces::euclidean_distance(self.a, state) / self.length;
+        let t = mit_star_spaces::euclidean_distance(self.a, state) / self.length;
         let index = (t * self.intervals as f64).round() as u64;
         self.seen.borrow_mut().push(index);
         Some(index) != self.forbidden
@@ -161,7 +161,7 @@ fn the_issues_examples_are_fully_covered() {
             forbidden: None,
             seen: RefCell::new(Vec::new()),
         };
-        let mut walker = validity::GridWalker::new(step).unwrap();
+        let mut walker = mit_star_validity::GridWalker::new(step).unwrap();
         let mut progress = EdgeProgress::default();
         walker.advance(
             &space,

@@ -5,8 +5,8 @@
 
 use std::cell::Cell;
 
-use spaces::{Never, RealVectorSpace, Stop};
-use validity::{
+use mit_star_spaces::{Never, RealVectorSpace, Stop};
+use mit_star_validity::{
     AxisBox, EdgeProgress, EdgeStatus, GridWalker, Lattice, MotionProgress, Segment, StateValidity,
     World,
 };

@@ -8,11 +8,11 @@
 
 use std::cell::{Cell, RefCell};
 
-use proptest::prelude::*;
-use spaces::{Never, RealVectorSpace, Stop};
-use validity::{
+use mit_star_spaces::{Never, RealVectorSpace, Stop};
+use mit_star_validity::{
     AxisBox, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity, World,
 };
+use proptest::prelude::*;
 
 /// A world tested in batches of `width` points (through `first_invalid`'s default, one by
 /// one), recording every state asked about.

@@ -4,8 +4,8 @@
 //! nothing panics. So does an edge whose length overflows (finite ends 2e308 apart): it has no
 //! grid to test.
 
-use spaces::{Never, RealVectorSpace};
-use validity::{
+use mit_star_spaces::{Never, RealVectorSpace};
+use mit_star_validity::{
     AllValid, AxisBox, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, FixedSparseChecker,
     LengthAdaptiveChecker, StateValidity, World,
 };

@@ -2,8 +2,10 @@
 //! the segment finds invalid, the exact verdict finds too; where the verdict says invalid, the
 //! point test agrees next to that parameter.
 
+use mit_star_validity::{
+    AxisBox, EdgeGrid, Lattice, SegmentCause, SegmentVerdict, StateValidity, World,
+};
 use proptest::prelude::*;
-use validity::{AxisBox, EdgeGrid, Lattice, SegmentCause, SegmentVerdict, StateValidity, World};
 
 /// A random world in `[-0.5, 0.5]^n`: obstacles, anti-obstacles, sometimes a lattice.
 fn world() -> impl Strategy<Value = World> {
@@ -331,7 +333,7 @@ proptest! {
 }
 
 /// The tester's campaign: 40 000 far cases from a fixed seed, each against two grids; every
-/// one must be decided one-sidedly. Slow in debug builds: `cargo test --release -p validity
+/// one must be decided one-sidedly. Slow in debug builds: `cargo test --release -p mit-star-validity
 /// --test segment_validation -- --ignored`.
 #[test]
 #[ignore = "40 000 cases; run in release"]

@@ -1,8 +1,8 @@
 //! The bounding-volume hierarchy of large worlds answers exactly as a linear scan does: random
 //! worlds above and below the threshold, random states and states on faces and corners.
 
+use mit_star_validity::{AxisBox, StateValidity, TREE_THRESHOLD, World};
 use proptest::prelude::*;
-use validity::{AxisBox, StateValidity, TREE_THRESHOLD, World};
 
 /// The world's rule, written out: in bounds and (in some anti-obstacle or in no obstacle).
 fn reference(world: &World, x: &[f64]) -> bool {

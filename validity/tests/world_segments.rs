@@ -7,12 +7,12 @@
 //! broad phase drops contains no grid point; and whole walks — sparse checks, then a full check
 //! — give the same statuses, progress and point counts with acceleration on and off.
 
-use proptest::prelude::*;
-use spaces::{Never, RealVectorSpace, StateSpace};
-use validity::{
+use mit_star_spaces::{Never, RealVectorSpace, StateSpace};
+use mit_star_validity::{
     AxisBox, DenseChecker, EdgeChecker, EdgeGrid, EdgeProgress, LengthAdaptiveChecker, Preparation,
     Segment, StateValidity, World, canonical_ends,
 };
+use proptest::prelude::*;
 
 /// A coordinate: on a coarse lattice (so that box faces and edge ends coincide exactly) or
 /// anywhere in `[-0.6, 0.6]` (beyond the bounds of `[-0.5, 0.5]` too).
@@ -301,7 +301,7 @@ fn a_thin_wall_missed_by_the_head_is_found_exactly() {
             results.push((status, progress, c.counters().points_tested));
         }
         assert_eq!(results[0], results[1], "after {sparse_first} sparse checks");
-        assert_eq!(results[0].0, validity::EdgeStatus::Invalid);
+        assert_eq!(results[0].0, mit_star_validity::EdgeStatus::Invalid);
         assert!(results[0].2 > 255, "the head alone found the wall");
     }
 }
@@ -479,7 +479,7 @@ fn an_interrupted_scan_resumes_where_it_stopped() {
     let mut slow = DenseChecker::new(2e-5).unwrap().with_acceleration(false);
     let mut p = EdgeProgress::default();
     let expected = slow.check_full(&space, &world, &a, &b, &mut p, &Never);
-    assert_eq!(expected, validity::EdgeStatus::Valid);
+    assert_eq!(expected, mit_star_validity::EdgeStatus::Valid);
     let mut checker = DenseChecker::new(2e-5).unwrap();
     let mut progress = EdgeProgress::default();
     let polls = std::cell::Cell::new(0);
@@ -494,7 +494,7 @@ fn an_interrupted_scan_resumes_where_it_stopped() {
             polls.get() >= 2
         };
         let status = checker.check_full(&space, &world, &a, &b, &mut progress, &stop);
-        if status != validity::EdgeStatus::Unknown {
+        if status != mit_star_validity::EdgeStatus::Unknown {
             assert_eq!((status, progress), (expected, p));
             break;
         }

@@ -7,13 +7,13 @@
 //! - `stress_frames.html`, `stress_boxes.html`, `stress_cloud.html`, `stress_all.html`: a motion
 //!   of 10⁶ frames, 10⁵ boxes, a 10⁶-point cloud, and all three at once with 10⁶ search edges.
 //!
-//! `cargo run -p view --release --example sample_views -- FOLDER`
+//! `cargo run -p mit-star-view --release --example sample_views -- FOLDER`
 
 use std::f32::consts::PI;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use view::{
+use mit_star_view::{
     CloudView, InformedView, LinkView, MeshView, MotionView, RobotView, SearchOverlay, ShapeView,
     SolidView, ViewDocument, ViewError, ViewKind, ViewLimits,
 };

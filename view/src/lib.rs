@@ -6,7 +6,7 @@
 //! (`build.rs` runs esbuild on `view/web`, which needs Node.js and npm).
 //!
 //! ```
-//! use view::{MotionView, SceneView, ShapeView, SolidView, ViewDocument, ViewKind, ViewLimits};
+//! use mit_star_view::{MotionView, SceneView, ShapeView, SolidView, ViewDocument, ViewKind, ViewLimits};
 //!
 //! let mut doc = ViewDocument::new(ViewKind::World2d, "A point around a wall");
 //! doc.subtitle.push("planner: MIT*, cost 3.1".into());
@@ -34,7 +34,7 @@
 //! });
 //! let html = doc.to_html(ViewLimits::default())?;
 //! assert!(html.contains("<title>A point around a wall</title>"));
-//! # Ok::<(), view::ViewError>(())
+//! # Ok::<(), mit_star_view::ViewError>(())
 //! ```
 //!
 //! What the crate offers:

@@ -1,7 +1,7 @@
 //! Pages written to disk: the bytes reported, the embedded document read back, errors naming
 //! the path or the field.
 
-use view::{
+use mit_star_view::{
     LinkView, MotionView, RobotView, SceneView, ViewDocument, ViewError, ViewKind, ViewLimits,
 };
 

@@ -5,7 +5,7 @@
 #   benches/peers/curobo/run_all.sh [OUT=target/curobo]
 #
 # Needs the cuRobo mirror (convert.py says where), /work/venv with PyYAML and numpy, and
-#   cargo build --release --bin mit-star && cargo build --release -p robot --example held_out
+#   cargo build --release --bin mit-star && cargo build --release -p mit-star-robot --example held_out
 # Runs are pinned to CPU 1 at top priority (CPU=… overrides). Nothing of cuRobo is committed:
 # the converted models, meshes and problems stay under OUT.
 set -euo pipefail

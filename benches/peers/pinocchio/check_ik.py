@@ -1,6 +1,6 @@
 """Independent confirmation of `ik_bench`'s solutions with Pinocchio's forward kinematics.
 
-    cargo run --release -p robot --example ik_bench -- --out ik.json [--held-out URDF LINK]
+    cargo run --release -p mit-star-robot --example ik_bench -- --out ik.json [--held-out URDF LINK]
     /work/venv/bin/python benches/peers/pinocchio/check_ik.py ik.json [--urdf NAME=PATH ...]
 
 For every robot of the JSON file (its URDF, the solver's link, the planned joints in

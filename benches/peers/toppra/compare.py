@@ -1,8 +1,8 @@
 """Our certified trajectories beside TOPP-RA's on the same waypoints and limits.
 
-    cargo run --release -p robot --example trajectory_peers -- plan target/mbm 25 target/peers
+    cargo run --release -p mit-star-robot --example trajectory_peers -- plan target/mbm 25 target/peers
     /work/venv/bin/python benches/peers/toppra/compare.py target/peers          # run TOPP-RA
-    cargo run --release -p robot --example trajectory_peers -- check target/mbm target/peers
+    cargo run --release -p mit-star-robot --example trajectory_peers -- check target/mbm target/peers
     /work/venv/bin/python benches/peers/toppra/compare.py target/peers --table  # the table
 
 For each `SCENE/NNNN.path.json` the example wrote (a simplified Panda path, the Panda URDF's

@@ -626,7 +626,7 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
     let bad = || {
         HarnessError::Usage(format!(
             "--instances `{}`: give a count K or an inclusive range A-B (e.g. 1-100)",
-            problems::excerpt(text, 40)
+            mit_star_problems::excerpt(text, 40)
         ))
     };
     let number = |s: &str| s.trim().parse::<u64>().map_err(|_| bad());
@@ -634,7 +634,7 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
         crate::definition::problem_spec::check_instance_count(count).map_err(|message| {
             HarnessError::Usage(format!(
                 "--instances `{}` {message}",
-                problems::excerpt(text, 40)
+                mit_star_problems::excerpt(text, 40)
             ))
         })
     };
@@ -662,7 +662,7 @@ fn instance_range(text: &str, source: &ProblemSource) -> Result<Vec<u64>, Harnes
         return Err(HarnessError::Usage(format!(
             "--instances `{}`: `{}` holds {} problems ({} to {}); give at most {} or a range \
              of its indices",
-            problems::excerpt(text, 40),
+            mit_star_problems::excerpt(text, 40),
             folder.path().display(),
             indices.len(),
             indices.first().copied().unwrap_or(0),

@@ -93,13 +93,12 @@ impl CheckPathArgs {
                 (page, self.plot.as_deref()),
             );
         }
-        let text = problems::read_bounded(self.path(), PATH_FILE_LIMIT, "path file").map_err(
-            |source| HarnessError::InputFile {
+        let text = mit_star_problems::read_bounded(self.path(), PATH_FILE_LIMIT, "path file")
+            .map_err(|source| HarnessError::InputFile {
                 what: "path file",
                 path: self.path().to_path_buf(),
                 source,
-            },
-        )?;
+            })?;
         let dimension = instance.problem.dimension();
         let in_file = |message: String| {
             HarnessError::Usage(format!("path file `{}`: {message}", self.path().display()))
@@ -317,7 +316,7 @@ fn parse_paths(text: &str, dimension: usize) -> Result<Vec<Vec<Vec<f64>>>, Strin
                 format!(
                     "line {number}, coordinate {}: `{}` is not a number",
                     k + 1,
-                    problems::excerpt(token, 40)
+                    mit_star_problems::excerpt(token, 40)
                 )
             })?;
             if !x.is_finite() {

@@ -50,10 +50,10 @@ impl CheckStateArgs {
                 vec![("state".to_owned(), q)]
             }
             None => {
-                let problem = problems::PlanningProblem::start(&**arm).to_vec();
+                let problem = mit_star_problems::PlanningProblem::start(&**arm).to_vec();
                 std::iter::once(("start".to_owned(), problem))
                     .chain(
-                        problems::PlanningProblem::goals(&**arm)
+                        mit_star_problems::PlanningProblem::goals(&**arm)
                             .iter()
                             .enumerate()
                             .map(|(i, g)| (format!("goal {}", i + 1), g.clone())),
@@ -71,7 +71,7 @@ impl CheckStateArgs {
             if !joinable {
                 say!(
                     "  within the certification floor ({} µm beyond the margin): no certified motion reaches it",
-                    robot::CERTIFICATION_FLOOR * 1e6
+                    mit_star_robot::CERTIFICATION_FLOOR * 1e6
                 );
             }
         }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use glam::Vec3;
-use robot::ArmProblem;
+use mit_star_robot::ArmProblem;
 
 use crate::definition::cloud_spec::CloudSpec;
 use crate::definition::cloud_summary::CloudSummary;
@@ -137,6 +137,6 @@ fn parse_pose(text: &str) -> Result<[f64; 6], HarnessError> {
 fn pose_usage(text: &str) -> HarnessError {
     HarnessError::Usage(format!(
         "--sensor-pose `{}`: give six numbers x,y,z,roll,pitch,yaw",
-        problems::excerpt(text, 80)
+        mit_star_problems::excerpt(text, 80)
     ))
 }

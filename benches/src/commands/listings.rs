@@ -31,13 +31,14 @@ impl ProblemsArgs {
     /// [`HarnessError::Problem`] if a family cannot be built in `--dim` dimensions.
     pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
         if let Some(name) = &self.write {
-            let problem = problems::builtin(name, self.dim, self.instance).map_err(|source| {
-                HarnessError::Problem {
-                    name: name.clone(),
-                    dimension: self.dim,
-                    source,
-                }
-            })?;
+            let problem =
+                mit_star_problems::builtin(name, self.dim, self.instance).map_err(|source| {
+                    HarnessError::Problem {
+                        name: name.clone(),
+                        dimension: self.dim,
+                        source,
+                    }
+                })?;
             let text = problem.to_toml_string();
             say!("{}", text.trim_end());
             return Ok(CommandOutcome::Success);
@@ -46,7 +47,7 @@ impl ProblemsArgs {
             "Built-in problems (space [-0.5, 0.5]^n; defaults shown for n = {}):\n",
             self.dim
         );
-        for family in problems::catalogue() {
+        for family in mit_star_problems::catalogue() {
             let problem = family
                 .build(self.dim, 0)
                 .map_err(|source| HarnessError::Problem {
@@ -240,8 +241,10 @@ impl RobotsArgs {
 
 /// `mit-star robots ROBOT`: the robot's joints in coordinate order, spheres per link, groups;
 /// the robot described, for its view.
-fn describe_robot(text: &str) -> Result<(robot::RobotSource, robot::RobotModel), HarnessError> {
-    let source = robot::RobotSource::parse(text)?;
+fn describe_robot(
+    text: &str,
+) -> Result<(mit_star_robot::RobotSource, mit_star_robot::RobotModel), HarnessError> {
+    let source = mit_star_robot::RobotSource::parse(text)?;
     let model = source.load(false)?;
     say!("{} (robot `{}`)", source.label(), model.name());
     if let Some(srdf) = source.srdf() {
@@ -255,13 +258,13 @@ fn describe_robot(text: &str) -> Result<(robot::RobotSource, robot::RobotModel),
     let width = joints.iter().map(|j| j.name.len()).max().unwrap_or(0);
     for (i, joint) in joints.iter().enumerate() {
         let (kind, limits) = match joint.kind {
-            spaces::JointKind::Revolute { lower, upper } => {
+            mit_star_spaces::JointKind::Revolute { lower, upper } => {
                 ("revolute", format!("[{lower:.6}, {upper:.6}] rad"))
             }
-            spaces::JointKind::Prismatic { lower, upper } => {
+            mit_star_spaces::JointKind::Prismatic { lower, upper } => {
                 ("prismatic", format!("[{lower:.6}, {upper:.6}] m"))
             }
-            spaces::JointKind::Continuous => (
+            mit_star_spaces::JointKind::Continuous => (
                 "continuous",
                 "wraps at ±π (values in [-π, π], moved the short way round)".to_owned(),
             ),
@@ -309,14 +312,15 @@ fn print_robots() -> Result<CommandOutcome, HarnessError> {
     say!(
         "Shipped robots (`--robot NAME`; or `--robot PATH.urdf`, the SRDF beside it; or `--robot DIR`, a folder with one URDF and one SRDF; `mit-star robots NAME|URDF|DIR` describes one):\n"
     );
-    for shipped in robot::ShippedRobot::all() {
-        let model = shipped
-            .model(false)
-            .map_err(|source| robot::RobotSourceError::Model {
-                robot: shipped.name.to_owned(),
-                source,
-            })?;
-        let default = if shipped.name == robot::ShippedRobot::DEFAULT {
+    for shipped in mit_star_robot::ShippedRobot::all() {
+        let model =
+            shipped
+                .model(false)
+                .map_err(|source| mit_star_robot::RobotSourceError::Model {
+                    robot: shipped.name.to_owned(),
+                    source,
+                })?;
+        let default = if shipped.name == mit_star_robot::ShippedRobot::DEFAULT {
             " (default)"
         } else {
             ""

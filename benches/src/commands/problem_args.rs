@@ -4,7 +4,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use clap::Args;
-use problems::PlanningProblem;
+use mit_star_problems::PlanningProblem;
 
 use crate::budget::short_number;
 use crate::commands::cloud_args::CloudArgs;

@@ -44,18 +44,18 @@ pub struct SpheriseArgs {
     /// (both, keeping the cover with fewer spheres per mesh). Default: `fewest` under a
     /// sphere budget (--max-spheres, --max-mesh-spheres), `grid` otherwise.
     #[arg(long, value_name = "PLACEMENT", value_parser = parse_placement)]
-    pub placement: Option<robot::Placement>,
+    pub placement: Option<mit_star_robot::Placement>,
     /// Where to write the spherised URDF.
     #[arg(long, short)]
     pub output: PathBuf,
 }
 
 /// `grid`, `medial` or `fewest`.
-fn parse_placement(text: &str) -> Result<robot::Placement, String> {
+fn parse_placement(text: &str) -> Result<mit_star_robot::Placement, String> {
     match text {
-        "grid" => Ok(robot::Placement::Grid),
-        "medial" => Ok(robot::Placement::Medial),
-        "fewest" => Ok(robot::Placement::Fewest),
+        "grid" => Ok(mit_star_robot::Placement::Grid),
+        "medial" => Ok(mit_star_robot::Placement::Medial),
+        "fewest" => Ok(mit_star_robot::Placement::Fewest),
         _ => Err(format!("`{text}`: one of grid, medial, fewest")),
     }
 }
@@ -74,18 +74,17 @@ impl SpheriseArgs {
     /// does not load as a sphere model.
     pub fn run(&self, interrupt: &Arc<AtomicBool>) -> Result<CommandOutcome, HarnessError> {
         self.check_output()?;
-        let fallback =
-            match &self.fallback {
-                Some(path) => Some(std::fs::read_to_string(path).map_err(|source| {
-                    robot::SpheriseError::Io {
-                        path: path.clone(),
-                        source,
-                    }
-                })?),
-                None => None,
-            };
-        let options = robot::SpheriseOptions {
-            cover: robot::CoverOptions {
+        let fallback = match &self.fallback {
+            Some(path) => Some(std::fs::read_to_string(path).map_err(|source| {
+                mit_star_robot::SpheriseError::Io {
+                    path: path.clone(),
+                    source,
+                }
+            })?),
+            None => None,
+        };
+        let options = mit_star_robot::SpheriseOptions {
+            cover: mit_star_robot::CoverOptions {
                 tolerance: self.tolerance,
                 max_spheres: self.max_mesh_spheres,
             },
@@ -95,17 +94,18 @@ impl SpheriseArgs {
             placement: self.placement,
             stop: Some(Arc::clone(interrupt)),
         };
-        let spherised = match robot::SpherisedUrdf::from_file(&self.urdf, &options) {
-            Err(robot::SpheriseError::Stopped) => return Ok(CommandOutcome::Interrupted),
+        let spherised = match mit_star_robot::SpherisedUrdf::from_file(&self.urdf, &options) {
+            Err(mit_star_robot::SpheriseError::Stopped) => return Ok(CommandOutcome::Interrupted),
             result => result?,
         };
-        let model = robot::RobotModel::from_urdf_str(&spherised.text).map_err(|source| {
-            HarnessError::Usage(format!(
-                "the spherised URDF does not load as a sphere model: {source}"
-            ))
-        })?;
+        let model =
+            mit_star_robot::RobotModel::from_urdf_str(&spherised.text).map_err(|source| {
+                HarnessError::Usage(format!(
+                    "the spherised URDF does not load as a sphere model: {source}"
+                ))
+            })?;
         std::fs::write(&self.output, &spherised.text).map_err(|source| {
-            robot::SpheriseError::Io {
+            mit_star_robot::SpheriseError::Io {
                 path: self.output.clone(),
                 source,
             }
@@ -160,7 +160,7 @@ impl SpheriseArgs {
     }
 }
 
-fn print_table(links: &[robot::LinkReport]) {
+fn print_table(links: &[mit_star_robot::LinkReport]) {
     let width = links.iter().map(|l| l.link.len()).max().unwrap_or(4).max(4);
     say!(
         "{:width$}  {:>9}  {:>6}  {:>7}  {:>9}  {:>9}  {:>13}  {:>12}",
@@ -176,12 +176,14 @@ fn print_table(links: &[robot::LinkReport]) {
     let mm = |v: Option<f64>| v.map_or_else(|| "—".to_owned(), |v| format!("{:.1} mm", v * 1e3));
     for l in links {
         let (triangles, closed, tolerance) = match l.source {
-            robot::LinkSource::Covered => (
+            mit_star_robot::LinkSource::Covered => (
                 l.triangles.to_string(),
                 if l.closed { "yes" } else { "no" }.to_owned(),
                 mm(Some(l.tolerance)),
             ),
-            robot::LinkSource::Fallback => ("fallback".to_owned(), "—".to_owned(), "—".to_owned()),
+            mit_star_robot::LinkSource::Fallback => {
+                ("fallback".to_owned(), "—".to_owned(), "—".to_owned())
+            }
         };
         say!(
             "{:width$}  {triangles:>9}  {closed:>6}  {:>7}  {tolerance:>9}  {:>9}  {:>13}  {:>12}",

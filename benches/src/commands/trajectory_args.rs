@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
-use robot::{
+use mit_star_robot::{
     ArmChecker, ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, Trajectory,
     TrajectoryFile, check_trajectory, merge_repeated_waypoints,
 };
@@ -49,7 +49,7 @@ impl LimitArgs {
     /// # Errors
     /// [`HarnessError::Usage`] naming the file, the joint or the factor that is wrong.
     pub fn limits(&self, arm: &ArmProblem) -> Result<MotionLimits, HarnessError> {
-        let usage = |e: robot::TrajectoryError| HarnessError::Usage(e.to_string());
+        let usage = |e: mit_star_robot::TrajectoryError| HarnessError::Usage(e.to_string());
         let yaml = self
             .joint_limits
             .as_deref()
@@ -91,7 +91,8 @@ impl Corners {
         arm: &ArmProblem,
         limits: &MotionLimits,
         path: &[Vec<f64>],
-    ) -> Result<(Trajectory, Option<robot::BlendReport>), robot::TrajectoryError> {
+    ) -> Result<(Trajectory, Option<mit_star_robot::BlendReport>), mit_star_robot::TrajectoryError>
+    {
         let path = merge_repeated_waypoints(path);
         match self {
             Self::Stop => Ok((Trajectory::stop_at_corners(&path, limits)?, None)),
@@ -139,7 +140,7 @@ pub struct Timed {
     duration: f64,
     knots: usize,
     samples: usize,
-    report: Option<robot::BlendReport>,
+    report: Option<mit_star_robot::BlendReport>,
     trajectory: Trajectory,
     plot: Option<PathBuf>,
 }
@@ -233,7 +234,8 @@ impl TrajectoryArgs {
         let Some(file) = &self.trajectory else {
             return Ok(None);
         };
-        let usage = |e: robot::TrajectoryError| HarnessError::Usage(format!("--trajectory: {e}"));
+        let usage =
+            |e: mit_star_robot::TrajectoryError| HarnessError::Usage(format!("--trajectory: {e}"));
         let (trajectory, report) = self.corners.time(arm, limits, path).map_err(usage)?;
         let written = TrajectoryFile::of(&trajectory, self.sample_period).map_err(usage)?;
         written.write(file).map_err(usage)?;
@@ -279,7 +281,7 @@ pub(crate) fn check_trajectory_file(
     if let Some(plot) = plot {
         plot_name(plot, "--plot")?;
     }
-    let usage = |e: robot::TrajectoryError| HarnessError::Usage(e.to_string());
+    let usage = |e: mit_star_robot::TrajectoryError| HarnessError::Usage(e.to_string());
     let motion = limits.limits(arm)?;
     let trajectory = TrajectoryFile::read(file).map_err(usage)?;
     let checker = ArmChecker::new(arm.robot(), arm.scene());

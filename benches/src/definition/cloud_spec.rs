@@ -6,8 +6,10 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use glam::Vec3;
-use problems::PlanningProblem;
-use robot::{ArmProblem, CloudObstacle, FilterReport, PlyEncoding, PointCloud, SensorPose};
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{
+    ArmProblem, CloudObstacle, FilterReport, PlyEncoding, PointCloud, SensorPose,
+};
 use serde::{Deserialize, Serialize};
 
 use crate::definition::cloud_option::CloudOption;
@@ -294,7 +296,8 @@ impl CloudSpec {
         let mut points: Vec<Vec3> = Vec::new();
         for path in &self.files {
             let start = Instant::now();
-            let read = robot::read_cloud(path).map_err(|e| fail(CloudOption::Files, e.into()))?;
+            let read =
+                mit_star_robot::read_cloud(path).map_err(|e| fail(CloudOption::Files, e.into()))?;
             let (first, count) = (points.len(), read.points.len());
             if points.is_empty() {
                 points = read.points;
@@ -333,7 +336,7 @@ impl CloudSpec {
         if let Some(per) = self.scene_as_cloud {
             let start = Instant::now();
             let seed = self.seed.unwrap_or(index);
-            let sampled = robot::sample_surfaces(primitives, per, seed)
+            let sampled = mit_star_robot::sample_surfaces(primitives, per, seed)
                 .map_err(|e| fail(CloudOption::SceneAsCloud, e.into()))?;
             steps.push(format!(
                 "{} points sampled on the scene's {} primitives ({per} each, seed {seed}) in {}",
@@ -360,7 +363,7 @@ impl CloudSpec {
                 source,
                 HarnessError::Cloud {
                     name: "cloud".into(),
-                    source: robot::CloudError::Empty,
+                    source: mit_star_robot::CloudError::Empty,
                 },
             ));
         }
@@ -368,9 +371,9 @@ impl CloudSpec {
         if self.crop_reach {
             // Widened by the points' radius and a centimetre (far more than the checker's
             // margin): no point removed could ever touch a sphere.
-            let (center, reach) = robot::reach_ball(arm.robot());
+            let (center, reach) = mit_star_robot::reach_ball(arm.robot());
             let radius = reach + point_radius.max(0.0) + 0.01;
-            let report = robot::crop_to_ball(&mut points, center, radius)
+            let report = mit_star_robot::crop_to_ball(&mut points, center, radius)
                 .map_err(|e| fail(CloudOption::CropReach, e.into()))?;
             steps.push(step(
                 &format!("crop to the robot's reach ({radius:.3} m around its base)"),
@@ -381,8 +384,9 @@ impl CloudSpec {
             }
         }
         if let Some(padding) = self.remove_robot {
-            let report = robot::remove_robot_points(&mut points, arm.robot(), arm.start(), padding)
-                .map_err(|e| fail(CloudOption::RemoveRobot, e.into()))?;
+            let report =
+                mit_star_robot::remove_robot_points(&mut points, arm.robot(), arm.start(), padding)
+                    .map_err(|e| fail(CloudOption::RemoveRobot, e.into()))?;
             steps.push(step(
                 &format!("the robot's own points at the start ({padding} m padding)"),
                 &report,
@@ -392,12 +396,12 @@ impl CloudSpec {
             }
         }
         if let Some(size) = self.voxel {
-            let report = robot::voxel_downsample(&mut points, size)
+            let report = mit_star_robot::voxel_downsample(&mut points, size)
                 .map_err(|e| fail(CloudOption::Voxel, e.into()))?;
             steps.push(step(&format!("one point per {size} m voxel"), &report));
         }
         if let Some(radius) = self.min_distance {
-            let report = robot::min_distance_downsample(&mut points, radius)
+            let report = mit_star_robot::min_distance_downsample(&mut points, radius)
                 .map_err(|e| fail(CloudOption::MinDistance, e.into()))?;
             steps.push(step(&format!("points at least {radius} m apart"), &report));
         }
@@ -422,9 +426,9 @@ impl CloudSpec {
         if let Some(path) = save {
             let start = Instant::now();
             let written = match path.extension().and_then(|e| e.to_str()) {
-                Some("npy") => robot::write_npy(path, cloud.points()),
+                Some("npy") => mit_star_robot::write_npy(path, cloud.points()),
                 Some("ply") => {
-                    robot::write_ply(path, cloud.points(), PlyEncoding::BinaryLittleEndian)
+                    mit_star_robot::write_ply(path, cloud.points(), PlyEncoding::BinaryLittleEndian)
                 }
                 _ => {
                     return Err(fail(
@@ -471,7 +475,7 @@ impl CloudSpec {
 }
 
 /// The sensor pose of `x, y, z, roll, pitch, yaw`.
-fn sensor_pose(p: [f64; 6]) -> Result<SensorPose, robot::CloudInputError> {
+fn sensor_pose(p: [f64; 6]) -> Result<SensorPose, mit_star_robot::CloudInputError> {
     SensorPose::from_xyz_rpy([p[0], p[1], p[2]], [p[3], p[4], p[5]])
 }
 
@@ -519,7 +523,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("mit-star-cloud-spec-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let file = dir.join("one.npy");
-        robot::write_npy(&file, &[Vec3::new(0.0, 0.0, 3.0)]).unwrap();
+        mit_star_robot::write_npy(&file, &[Vec3::new(0.0, 0.0, 3.0)]).unwrap();
         let given = [Vec3::new(1.0, 0.0, 3.0), Vec3::new(2.0, 0.0, 3.0)];
         let spec = CloudSpec {
             files: vec![file],

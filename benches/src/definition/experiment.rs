@@ -59,15 +59,19 @@ impl Experiment {
     pub fn from_file(path: &Path) -> Result<Self, HarnessError> {
         // Not a file the user can give is an input error (exit code 2), not an I/O failure.
         // Bounded: `/dev/zero` or a 20 GB file is refused before it is read.
-        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "experiment file")
-            .map_err(|e| HarnessError::ExperimentFile {
-                file: path.display().to_string(),
-                message: if path.is_dir() {
-                    "is a folder, not an experiment file".into()
-                } else {
-                    format!("cannot be read: {e}")
-                },
-            })?;
+        let text = mit_star_problems::read_bounded(
+            path,
+            mit_star_problems::TEXT_INPUT_LIMIT,
+            "experiment file",
+        )
+        .map_err(|e| HarnessError::ExperimentFile {
+            file: path.display().to_string(),
+            message: if path.is_dir() {
+                "is a folder, not an experiment file".into()
+            } else {
+                format!("cannot be read: {e}")
+            },
+        })?;
         let origin = path.display().to_string();
         let stem = path
             .file_stem()
@@ -171,20 +175,23 @@ impl Experiment {
         // Every run's record is kept until the results are written: refuse, before allocating
         // the schedule, what could not fit (`runs = 1e12` aborted on allocation).
         let runs = self.runs as u64;
-        let bytes = spaces::MemoryBudget::bytes_for(&[
+        let bytes = mit_star_spaces::MemoryBudget::bytes_for(&[
             runs,
             self.planners.len() as u64,
             self.problems.len() as u64,
             crate::RUN_RECORD_BYTES,
         ]);
-        if let Err(budget) = spaces::MemoryBudget::check_on_machine(bytes) {
+        if let Err(budget) = mit_star_spaces::MemoryBudget::check_on_machine(bytes) {
             return Err(bad(
                 "runs",
                 format!(
                     "is {runs}: the runs' records would need about {} of memory per problem \
                      dimension, and this machine has {} available",
-                    bytes.map_or_else(|| "more than 16 EiB".into(), spaces::MemoryBudget::describe),
-                    spaces::MemoryBudget::describe(budget.bytes())
+                    bytes.map_or_else(
+                        || "more than 16 EiB".into(),
+                        mit_star_spaces::MemoryBudget::describe
+                    ),
+                    mit_star_spaces::MemoryBudget::describe(budget.bytes())
                 ),
             ));
         }
@@ -193,7 +200,7 @@ impl Experiment {
                 "confidence",
                 format!(
                     "is {}; it must lie in (0, 1), e.g. 0.99",
-                    spaces::short_number(self.confidence)
+                    mit_star_spaces::short_number(self.confidence)
                 ),
             ));
         }

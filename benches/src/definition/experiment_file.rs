@@ -211,7 +211,9 @@ impl ExperimentFile {
     pub fn parse(text: &str, origin: &str) -> Result<Self, HarnessError> {
         toml::from_str(text).map_err(|e| HarnessError::ExperimentFile {
             file: origin.to_owned(),
-            message: crate::error::clip_lines(&problems::humanise(e.to_string().trim_end())),
+            message: crate::error::clip_lines(&mit_star_problems::humanise(
+                e.to_string().trim_end(),
+            )),
         })
     }
 

@@ -4,8 +4,8 @@ use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
-use robot::RobotModel;
-use spaces::StateSpace;
+use mit_star_robot::RobotModel;
+use mit_star_spaces::StateSpace;
 
 use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::robot_choice::RobotChoice;
@@ -36,15 +36,16 @@ impl MbmFolder {
     /// first request; [`HarnessError::Robot`] for a robot that cannot be loaded.
     pub fn read(path: impl Into<PathBuf>, robot: &RobotChoice) -> Result<Self, HarnessError> {
         let path = path.into();
-        let arm = |e: robot::SceneError| HarnessError::Arm {
+        let arm = |e: mit_star_robot::SceneError| HarnessError::Arm {
             name: path.display().to_string(),
             source: e.into(),
         };
-        let indices = robot::MbmProblem::indices(&path).map_err(arm)?;
+        let indices = mit_star_robot::MbmProblem::indices(&path).map_err(arm)?;
         let mut choice = robot.clone();
         let mut model = robot.load()?;
         if robot.group().is_none()
-            && let Some(group) = robot::MbmProblem::group_of(&path, indices[0]).map_err(arm)?
+            && let Some(group) =
+                mit_star_robot::MbmProblem::group_of(&path, indices[0]).map_err(arm)?
         {
             match robot.clone().with_group(Some(&group)).load_quiet() {
                 Ok(grouped) if grouped.joint_names() != model.joint_names() => {
@@ -132,12 +133,12 @@ impl MbmFolder {
                 self.indices.len()
             )));
         };
-        let arm = |source: robot::ArmError| HarnessError::Arm {
+        let arm = |source: mit_star_robot::ArmError| HarnessError::Arm {
             name: format!("{}/{index:04}", self.path.display()),
             source,
         };
-        let mut problem =
-            robot::ArmProblem::mbm((*self.robot).clone(), &self.path, index).map_err(arm)?;
+        let mut problem = mit_star_robot::ArmProblem::mbm((*self.robot).clone(), &self.path, index)
+            .map_err(arm)?;
         let known = self.robot.warnings().len();
         if let Ok(mut noted) = self.noted.lock() {
             for warning in &problem.robot().warnings()[known..] {

@@ -145,7 +145,7 @@ impl ParameterOverrides {
                 requirement,
             } => HarnessError::Parameter {
                 key: name.to_owned(),
-                message: format!("is {}; {requirement}", spaces::short_number(value)),
+                message: format!("is {}; {requirement}", mit_star_spaces::short_number(value)),
             },
             other => HarnessError::Parameter {
                 key: "parameters".to_owned(),
@@ -171,7 +171,7 @@ fn kind(default: &toml::Value) -> &'static str {
 fn shown(value: &toml::Value) -> String {
     let text = match value {
         toml::Value::String(s) => format!("`{s}`"),
-        toml::Value::Float(f) => spaces::short_number(*f),
+        toml::Value::Float(f) => mit_star_spaces::short_number(*f),
         other => other.to_string(),
     };
     if text.chars().count() > 40 {
@@ -209,7 +209,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         truncation_scaling: Some(0.0),
         cascading_rewirings: Some(false),
         connection: Some(mit_star::Connection::KNearest),
-        batch_size: Some(problems::PAPER_BATCH_SIZE),
+        batch_size: Some(mit_star_problems::PAPER_BATCH_SIZE),
         batch_growth: Some(0.0),
         solution_samples: Some(0.0),
         neighbour_cap: Some(1.0),

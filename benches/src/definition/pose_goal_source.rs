@@ -7,9 +7,9 @@ use glam::DAffine3;
 use mit_star::{
     BuildError, Configuration, GoalSource, LazyGoals, Parameters, Planner, PlannerError,
 };
-use problems::PlanningProblem;
-use robot::{ArmProblem, Kinematics, PoseGoal, PoseTarget};
-use spaces::Stop;
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmProblem, Kinematics, PoseGoal, PoseTarget};
+use mit_star_spaces::Stop;
 
 use crate::definition::problem_kind::InstanceProblem;
 use crate::path_validation::PathValidation;
@@ -162,7 +162,7 @@ impl GoalSource for PoseGoalSource {
 /// A planner of `configuration` with `parameters` towards the pose goal `source` supplies, over `arm`
 /// otherwise ([`LazyGoals`]).
 pub fn pose_goal_planner(
-    arm: &Arc<robot::ArmProblem>,
+    arm: &Arc<mit_star_robot::ArmProblem>,
     source: PoseGoalSource,
     configuration: Configuration,
     parameters: Parameters,
@@ -173,10 +173,12 @@ pub fn pose_goal_planner(
             .clone()
             .with_goals(goals.to_vec())
             .map_err(|e| match e {
-                robot::ArmError::Query { source, .. } => BuildError::Query(PlannerError::State {
-                    endpoint: mit_star::Endpoint::Goal(goals.len().saturating_sub(1)),
-                    source,
-                }),
+                mit_star_robot::ArmError::Query { source, .. } => {
+                    BuildError::Query(PlannerError::State {
+                        endpoint: mit_star::Endpoint::Goal(goals.len().saturating_sub(1)),
+                        source,
+                    })
+                }
                 other => BuildError::Query(PlannerError::Internal(other.to_string())),
             })?;
         mit_star::build_planner(configuration, &problem, &parameters)

@@ -4,8 +4,10 @@
 use std::sync::Arc;
 
 use glam::{DAffine3, DQuat, DVec3};
-use problems::PlanningProblem;
-use robot::{ArmProblem, IkSolver, OrientationTolerance, PoseGoal, PoseTarget, PositionTolerance};
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{
+    ArmProblem, IkSolver, OrientationTolerance, PoseGoal, PoseTarget, PositionTolerance,
+};
 use serde::{Deserialize, Serialize};
 
 use crate::definition::pose_goal_source::PoseGoalSource;

@@ -92,7 +92,7 @@ impl ProblemInstance {
     }
 
     /// Where an arm instance's robot finds its visual mesh files (`None` for a box world).
-    pub fn mesh_resolver(&self) -> Option<robot::MeshResolver> {
+    pub fn mesh_resolver(&self) -> Option<mit_star_robot::MeshResolver> {
         match &self.source {
             ProblemSource::Mbm(folder) => Some(folder.robot().mesh_resolver()),
             _ => None,

@@ -3,14 +3,14 @@
 use std::sync::Arc;
 
 use mit_star::{BuildError, Configuration, Parameters, Planner};
-use problems::{PlanningProblem, Problem, ProblemError};
-use robot::{ArmProblem, MotionAudit};
+use mit_star_problems::{PlanningProblem, Problem, ProblemError};
+use mit_star_robot::{ArmProblem, MotionAudit};
 
 /// Configurations the continuous audit of an arm path may compute per segment before it calls
 /// the segment undecided (a failure): far more than a path with a millimetre of clearance
 /// needs.
 const AUDIT_BUDGET: u64 = 2_000_000;
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::path_validation::PathValidation;
 
@@ -73,7 +73,7 @@ impl InstanceProblem {
             joints.iter().map(|j| j.name.clone()).collect(),
             joints
                 .iter()
-                .map(|j| j.kind == spaces::JointKind::Continuous)
+                .map(|j| j.kind == mit_star_spaces::JointKind::Continuous)
                 .collect(),
         ))
     }
@@ -207,7 +207,7 @@ impl InstanceProblem {
         seed: u64,
         smoothing: bool,
     ) -> Result<mit_star::Simplified, BuildError> {
-        let stop = spaces::Deadline::after(std::time::Duration::from_secs_f64(seconds));
+        let stop = mit_star_spaces::Deadline::after(std::time::Duration::from_secs_f64(seconds));
         let mut simplifier = mit_star::PathSimplifier::new().seed(seed);
         if !smoothing {
             simplifier = simplifier.smoothing_rounds(0);
@@ -290,9 +290,9 @@ fn describe_arm(p: &ArmProblem) -> String {
     let mut kinds = [0usize; 3];
     for o in p.scene().obstacles() {
         kinds[match o.shape() {
-            robot::Shape::Cuboid { .. } => 0,
-            robot::Shape::Cylinder { .. } => 1,
-            robot::Shape::Sphere { .. } => 2,
+            mit_star_robot::Shape::Cuboid { .. } => 0,
+            mit_star_robot::Shape::Cylinder { .. } => 1,
+            mit_star_robot::Shape::Sphere { .. } => 2,
         }] += 1;
     }
     let clouds: Vec<String> = p

@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use problems::Problem;
+use mit_star_problems::Problem;
 
 use crate::definition::mbm_folder::MbmFolder;
 use crate::definition::problem_kind::InstanceProblem;
@@ -13,14 +13,14 @@ use crate::error::HarnessError;
 
 /// The built-in family names, comma separated.
 pub(crate) fn builtin_names() -> String {
-    problems::catalogue()
+    mit_star_problems::catalogue()
         .iter()
         .map(|f| f.name())
         .collect::<Vec<_>>()
         .join(", ")
 }
 
-/// A problem: a built-in family of [`problems::catalogue`] (built for any dimension), or a
+/// A problem: a built-in family of [`mit_star_problems::catalogue`] (built for any dimension), or a
 /// TOML problem file (its dimension is fixed by the file).
 ///
 /// ```
@@ -122,7 +122,10 @@ impl ProblemSource {
             };
             return MbmFolder::read(path, robot).map(Self::Mbm);
         }
-        if problems::catalogue().iter().any(|f| f.name() == text) {
+        if mit_star_problems::catalogue()
+            .iter()
+            .any(|f| f.name() == text)
+        {
             return Ok(Self::Builtin(text.to_owned()));
         }
         let path = match base {
@@ -149,7 +152,7 @@ impl ProblemSource {
     /// `true` if the problem's layout depends on a seed (random rectangles).
     pub fn is_seeded(&self) -> bool {
         match self {
-            Self::Builtin(name) => problems::catalogue()
+            Self::Builtin(name) => mit_star_problems::catalogue()
                 .iter()
                 .any(|f| f.name() == name && f.is_seeded()),
             Self::File(_) => false,
@@ -189,29 +192,27 @@ impl ProblemSource {
         if let Self::Mbm(folder) = self {
             return folder.build(dimension, instance, resolution);
         }
-        let problem = match self {
-            Self::Mbm(_) => unreachable!("built above"),
-            Self::Builtin(name) => {
-                problems::builtin(name, dimension, instance).map_err(|source| {
-                    HarnessError::Problem {
+        let problem =
+            match self {
+                Self::Mbm(_) => unreachable!("built above"),
+                Self::Builtin(name) => mit_star_problems::builtin(name, dimension, instance)
+                    .map_err(|source| HarnessError::Problem {
                         name: name.clone(),
                         dimension,
                         source,
+                    })?,
+                Self::File(file) => {
+                    let problem = file.problem();
+                    if problem.dimension() != dimension {
+                        return Err(HarnessError::Usage(format!(
+                            "problem file `{}` is {}-dimensional, not {dimension}-dimensional",
+                            file.path().display(),
+                            problem.dimension()
+                        )));
                     }
-                })?
-            }
-            Self::File(file) => {
-                let problem = file.problem();
-                if problem.dimension() != dimension {
-                    return Err(HarnessError::Usage(format!(
-                        "problem file `{}` is {}-dimensional, not {dimension}-dimensional",
-                        file.path().display(),
-                        problem.dimension()
-                    )));
+                    problem.clone()
                 }
-                problem.clone()
-            }
-        };
+            };
         match resolution {
             None => Ok(problem),
             Some(r) => problem
@@ -290,7 +291,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("mit-star-source-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("wall.toml");
-        let problem = problems::builtin("wall-gap", 2, 0).unwrap();
+        let problem = mit_star_problems::builtin("wall-gap", 2, 0).unwrap();
         std::fs::write(&path, problem.to_toml_string()).unwrap();
         let s = ProblemSource::parse("wall.toml", Some(&dir)).unwrap();
         assert_eq!(s, ProblemSource::file(&path).unwrap());

@@ -145,7 +145,7 @@ impl ProblemSpec {
                                 "problem `{}`: {note}",
                                 problem
                                     .as_arm()
-                                    .map_or("", |a| problems::PlanningProblem::name(&**a))
+                                    .map_or("", |a| mit_star_problems::PlanningProblem::name(&**a))
                             ),
                             1,
                         )),

@@ -2,7 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
-use robot::{RobotModel, RobotSource, ShippedRobot};
+use mit_star_robot::{RobotModel, RobotSource, ShippedRobot};
 
 use crate::error::HarnessError;
 
@@ -50,8 +50,8 @@ impl RobotChoice {
                 };
                 RobotSource::parse(&path.to_string_lossy()).map_err(|e| match e {
                     // Name what was written, not the joined path.
-                    robot::RobotSourceError::Unknown { known, .. } => {
-                        robot::RobotSourceError::Unknown {
+                    mit_star_robot::RobotSourceError::Unknown { known, .. } => {
+                        mit_star_robot::RobotSourceError::Unknown {
                             name: folder.to_owned(),
                             known,
                         }
@@ -69,7 +69,7 @@ impl RobotChoice {
 
     /// Where the robot's visual mesh files are found: a shipped robot's data folder (with
     /// the smaller meshes it ships in place of the URDF's), else the URDF's folder.
-    pub fn mesh_resolver(&self) -> robot::MeshResolver {
+    pub fn mesh_resolver(&self) -> mit_star_robot::MeshResolver {
         self.source.mesh_resolver()
     }
 

@@ -389,7 +389,7 @@ impl ResultsFolder {
         }
         if files.iter().any(|f| f.starts_with(self.path.join("views"))) {
             let viewer = self.path.join("views").join(VIEWER_FILE);
-            write_replacing(&viewer, view::viewer_script().as_bytes())?;
+            write_replacing(&viewer, mit_star_view::viewer_script().as_bytes())?;
             files.push(viewer);
         }
         let page = ReportPage {
@@ -618,7 +618,7 @@ fn differences(existing: &str, now: &str) -> String {
         line.split_once(" = ").map(|(k, _)| k.trim())
     }
     fn quote(line: &str) -> String {
-        format!("`{}`", problems::excerpt(line.trim(), 100))
+        format!("`{}`", mit_star_problems::excerpt(line.trim(), 100))
     }
     let mut said = Vec::new();
     let mut used = vec![false; only_new.len()];

@@ -7,9 +7,9 @@ use std::time::Instant;
 use mit_star::{
     Counters, FirstSolution, Planner, Progress, Termination, TerminationExt, TimeLimit, TracePoint,
 };
+use mit_star_spaces::SeededRng;
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
-use spaces::SeededRng;
 
 use crate::budget::deadline_after;
 use crate::definition::planner_spec::PlannerSpec;

@@ -92,8 +92,8 @@ fn foreign(path: &Path, entry: &JournalLine, what: &str) -> HarnessError {
         path.display(),
         entry.line,
         r.run,
-        problems::excerpt(&r.planner, 80),
-        problems::excerpt(&r.instance, 80),
+        mit_star_problems::excerpt(&r.planner, 80),
+        mit_star_problems::excerpt(&r.instance, 80),
     ))
 }
 

@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use view::escape_html as escape;
+use mit_star_view::escape_html as escape;
 
 /// One problem instance on the report: its figure and its view, as paths relative to the
 /// results folder.

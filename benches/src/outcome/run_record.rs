@@ -3,8 +3,8 @@
 use std::sync::LazyLock;
 
 use mit_star::{Configuration, Counters, TracePoint};
+use mit_star_validity::LENGTH_BUCKET_LABELS;
 use serde::{Deserialize, Serialize};
-use validity::LENGTH_BUCKET_LABELS;
 
 use crate::path_validation::PathValidation;
 
@@ -163,7 +163,7 @@ impl RunRecord {
 pub(crate) const COUNTERS: usize = 51;
 
 /// Names of the per-length counters: checks and points of sparse and full checks for each bucket
-/// of [`validity::LENGTH_BUCKET_BOUNDS`], named after [`validity::LENGTH_BUCKET_LABELS`]
+/// of [`mit_star_validity::LENGTH_BUCKET_BOUNDS`], named after [`mit_star_validity::LENGTH_BUCKET_LABELS`]
 /// (`sparse checks of edges under 2e3 points`, …).
 static BY_LENGTH: LazyLock<[[String; 5]; 4]> = LazyLock::new(|| {
     [

@@ -5,10 +5,10 @@
 use std::path::Path;
 
 use glam::{DAffine3, DVec3};
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmProblem, Kinematics, Shape};
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use problems::PlanningProblem;
-use robot::{ArmProblem, Kinematics, Shape};
 
 use crate::error::HarnessError;
 use crate::pictures::plot_style::{Figure, save_svg_and_png};

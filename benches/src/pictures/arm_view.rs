@@ -3,11 +3,11 @@
 
 use glam::{DAffine3, DQuat, DVec3};
 use mit_star::Snapshot;
-use problems::PlanningProblem;
-use robot::{ArmProblem, Kinematics, Motion, Obstacle, Shape};
-use spaces::StateSpace;
-use validity::StateValidity;
-use view::{
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmProblem, Kinematics, Motion, Obstacle, Shape};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
+use mit_star_view::{
     CloudView, LinkView, MotionView, RobotView, SceneView, SearchOverlay, ShapeView, SolidView,
     ViewDocument, ViewKind,
 };
@@ -37,12 +37,12 @@ impl<'a> ArmView<'a> {
     }
 
     /// The arm's joint space.
-    pub(crate) fn space(&self) -> &spaces::JointSpace {
+    pub(crate) fn space(&self) -> &mit_star_spaces::JointSpace {
         self.arm.space()
     }
 
     /// The robot.
-    pub(crate) fn robot(&self) -> &robot::RobotModel {
+    pub(crate) fn robot(&self) -> &mit_star_robot::RobotModel {
         self.arm.robot()
     }
 
@@ -148,16 +148,16 @@ const MESH_GREY: [f32; 3] = [0.72, 0.74, 0.78];
 /// mesh that cannot be loaded leaves its link drawn as spheres, with a note naming it.
 pub(crate) fn add_meshes(
     document: &mut ViewDocument,
-    robot: &robot::RobotModel,
-    resolver: &robot::MeshResolver,
+    robot: &mit_star_robot::RobotModel,
+    resolver: &mit_star_robot::MeshResolver,
 ) {
     let Some(drawn) = document.robot.as_mut() else {
         return;
     };
-    let loaded = robot::VisualMeshes::load(robot, resolver);
+    let loaded = mit_star_robot::VisualMeshes::load(robot, resolver);
     for mesh in loaded.meshes {
         if let Some(link) = drawn.links.get_mut(mesh.link) {
-            link.meshes.push(view::MeshView {
+            link.meshes.push(mit_star_view::MeshView {
                 positions: mesh.positions,
                 indices: mesh.indices,
                 colour: mesh.colour.map_or(MESH_GREY, |[r, g, b, _]| [r, g, b]),
@@ -188,7 +188,7 @@ pub(crate) fn add_meshes(
 
 /// The link with the most moving joints above it, the deepest such, preferring a link without
 /// spheres (a tool frame such as the Panda's `panda_grasptarget`): where an arm's tool is.
-fn tool_link(robot: &robot::RobotModel) -> usize {
+fn tool_link(robot: &mit_star_robot::RobotModel) -> usize {
     let links = robot.links();
     let mut moving = vec![0usize; links.len()];
     let mut depth = vec![0usize; links.len()];
@@ -210,7 +210,7 @@ fn push_pose(pose: &DAffine3, out: &mut Vec<f32>) {
 }
 
 /// The scene's solids and clouds.
-pub(crate) fn scene_view(scene: &robot::Scene) -> SceneView {
+pub(crate) fn scene_view(scene: &mit_star_robot::Scene) -> SceneView {
     let names = scene.ids();
     let solids = scene
         .obstacles()
@@ -285,13 +285,20 @@ mod tests {
     fn problem_among(obstacles: Vec<Obstacle>) -> ArmProblem {
         let urdf = include_str!("../../../robot/data/panda/panda_spherized.urdf");
         let srdf = include_str!("../../../robot/data/panda/panda.srdf");
-        let robot = robot::RobotModel::from_urdf_str(urdf)
+        let robot = mit_star_robot::RobotModel::from_urdf_str(urdf)
             .unwrap()
             .with_srdf_str(srdf)
             .unwrap();
         let start = vec![0.0, -0.5, 0.0, -2.0, 0.0, 1.6, 0.8];
         let goal = vec![1.0, -0.3, 0.0, -2.0, 0.0, 1.8, 0.8];
-        ArmProblem::new("wall", robot, robot::Scene::new(obstacles), start, goal).unwrap()
+        ArmProblem::new(
+            "wall",
+            robot,
+            mit_star_robot::Scene::new(obstacles),
+            start,
+            goal,
+        )
+        .unwrap()
     }
 
     #[test]

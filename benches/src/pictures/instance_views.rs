@@ -89,7 +89,7 @@ pub(crate) fn write_instance_view(
         view.path(label("worst", worst), &worst.path);
         what.push_str(" and worst run");
     }
-    view.write_with(page, view::Viewer::Beside(VIEWER_FILE))?;
+    view.write_with(page, mit_star_view::Viewer::Beside(VIEWER_FILE))?;
     Ok(Some(what))
 }
 

@@ -5,8 +5,8 @@
 use std::path::Path;
 
 use mit_star::Snapshot;
-use robot::Trajectory;
-use view::{ViewDocument, ViewLimits};
+use mit_star_robot::Trajectory;
+use mit_star_view::{ViewDocument, ViewLimits};
 
 use crate::definition::problem_kind::InstanceProblem;
 use crate::error::HarnessError;
@@ -73,7 +73,7 @@ impl<'a> PlanView<'a> {
     /// Draws the robot's visual meshes (its URDF's `<visual>` elements, files found by
     /// `resolver`) besides its spheres; a mesh that cannot be loaded leaves its link drawn as
     /// spheres, with a note on the page naming it. Nothing in a box world.
-    pub fn meshes(&mut self, resolver: &robot::MeshResolver) -> &mut Self {
+    pub fn meshes(&mut self, resolver: &mit_star_robot::MeshResolver) -> &mut Self {
         if let Drawer::Arm(arm) = &self.drawer {
             crate::pictures::arm_view::add_meshes(&mut self.document, arm.robot(), resolver);
         }
@@ -171,7 +171,7 @@ impl<'a> PlanView<'a> {
     /// # Errors
     /// [`HarnessError::View`] if the document is inconsistent or the file cannot be written.
     pub fn write(&self, path: &Path) -> Result<u64, HarnessError> {
-        self.write_with(path, view::Viewer::Embedded)
+        self.write_with(path, mit_star_view::Viewer::Embedded)
     }
 
     /// Writes the page to `path`, its viewer embedded or in a file beside it; its size in
@@ -179,7 +179,11 @@ impl<'a> PlanView<'a> {
     ///
     /// # Errors
     /// As [`write`](Self::write).
-    pub fn write_with(&self, path: &Path, viewer: view::Viewer<'_>) -> Result<u64, HarnessError> {
+    pub fn write_with(
+        &self,
+        path: &Path,
+        viewer: mit_star_view::Viewer<'_>,
+    ) -> Result<u64, HarnessError> {
         self.document
             .write_html_with(path, ViewLimits::default(), viewer)
             .map_err(|source| HarnessError::View {

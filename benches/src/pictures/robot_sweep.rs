@@ -4,8 +4,8 @@
 
 use std::path::Path;
 
-use robot::{ArmProblem, MeshResolver, RobotModel, Scene};
-use spaces::JointKind;
+use mit_star_robot::{ArmProblem, MeshResolver, RobotModel, Scene};
+use mit_star_spaces::JointKind;
 
 use crate::error::HarnessError;
 use crate::pictures::arm_view::{ArmView, add_meshes};
@@ -89,7 +89,7 @@ pub(crate) fn write_robot_sweep(
     let motion = view.path_motion("each joint through its range", &sweep(robot));
     document.motions.push(motion);
     document
-        .write_html(page, view::ViewLimits::default())
+        .write_html(page, mit_star_view::ViewLimits::default())
         .map_err(|source| HarnessError::View {
             path: page.to_path_buf(),
             source,
@@ -102,7 +102,7 @@ mod tests {
 
     #[test]
     fn the_sweep_visits_every_limit_and_returns() {
-        let robot = robot::ShippedRobot::find("panda")
+        let robot = mit_star_robot::ShippedRobot::find("panda")
             .unwrap()
             .model(false)
             .unwrap();
@@ -110,7 +110,7 @@ mod tests {
         let rest = rest_configuration(&robot);
         assert_eq!(path.len(), 1 + 3 * 7);
         assert_eq!(path.last(), Some(&rest));
-        assert!(spaces::StateSpace::check_state(robot.joint_space(), &rest).is_ok());
+        assert!(mit_star_spaces::StateSpace::check_state(robot.joint_space(), &rest).is_ok());
         for (i, joint) in robot.joint_space().joints().iter().enumerate() {
             if let JointKind::Revolute { lower, upper } = joint.kind {
                 assert_eq!(path[1 + 3 * i][i], lower);
@@ -118,7 +118,9 @@ mod tests {
             }
         }
         let page = std::env::temp_dir().join(format!("sweep-{}.html", std::process::id()));
-        let resolver = robot::ShippedRobot::find("panda").unwrap().mesh_resolver();
+        let resolver = mit_star_robot::ShippedRobot::find("panda")
+            .unwrap()
+            .mesh_resolver();
         let bytes = write_robot_sweep(&robot, "panda", &resolver, &page).unwrap();
         assert!(bytes > 100_000);
         std::fs::remove_file(page).unwrap();

@@ -4,11 +4,11 @@
 use std::path::Path;
 
 use mit_star::Snapshot;
+use mit_star_problems::Problem;
+use mit_star_samplers::SampleOrigin;
+use mit_star_validity::AxisBox;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use problems::Problem;
-use samplers::SampleOrigin;
-use validity::AxisBox;
 
 use crate::error::HarnessError;
 use crate::pictures::plot_style::{Figure, clip_segment, save_svg_and_png};
@@ -300,9 +300,9 @@ mod tests {
 
     #[test]
     fn only_2d_problems_are_drawn() {
-        let p = problems::builtin("obstacle-free", 3, 0).unwrap();
+        let p = mit_star_problems::builtin("obstacle-free", 3, 0).unwrap();
         let snapshot = Snapshot {
-            states: spaces::States::new(3),
+            states: mit_star_spaces::States::new(3),
             kinds: Vec::new(),
             origins: Vec::new(),
             forward_edges: Vec::new(),

@@ -2,7 +2,7 @@
 //! coloured by cost-to-come.
 
 use mit_star::Snapshot;
-use view::{InformedView, SearchOverlay};
+use mit_star_view::{InformedView, SearchOverlay};
 
 /// Each vertex's cost-to-come along the forward tree of `snapshot` (`∞` off the tree), the
 /// edge from vertex `a` to `b` costing `distance(a, b)`.
@@ -74,7 +74,7 @@ mod tests {
 
     #[test]
     fn costs_add_up_along_the_tree() {
-        let problem = problems::ObstacleFree::new(2).build().unwrap();
+        let problem = mit_star_problems::ObstacleFree::new(2).build().unwrap();
         let mut planner = EitStar::for_problem(&problem).seed(1).build().unwrap();
         planner.solve(&IterationLimit::new(200)).unwrap();
         let snapshot = planner.snapshot().unwrap();

@@ -4,9 +4,9 @@
 
 use std::path::Path;
 
+use mit_star_robot::Sample;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use robot::Sample;
 
 use crate::error::HarnessError;
 use crate::pictures::plot_style;
@@ -38,7 +38,7 @@ const JOINT_COLOURS: [RGBColor; 10] = [
 /// acceleration against time — with each joint's `±` velocity and acceleration limits dashed
 /// in its colour and the knots as grey vertical lines. Between two samples the motion drawn
 /// is the one of constant acceleration they give (`q + v τ + a τ² / 2`), as the trajectory's
-/// pieces are: exact for the knots of a [`robot::Trajectory`].
+/// pieces are: exact for the knots of a [`mit_star_robot::Trajectory`].
 #[derive(Debug, Clone)]
 pub(crate) struct TrajectoryPlot {
     title: String,
@@ -243,11 +243,17 @@ mod tests {
     use super::*;
 
     fn plot() -> TrajectoryPlot {
-        let limits =
-            robot::MotionLimits::new(vec!["a".into(), "b".into()], vec![1.0, 2.0], vec![2.0, 1.0])
-                .unwrap();
-        let t = robot::Trajectory::stop_at_corners(&[[0.0, 0.0], [1.0, 0.5], [0.2, 2.0]], &limits)
-            .unwrap();
+        let limits = mit_star_robot::MotionLimits::new(
+            vec!["a".into(), "b".into()],
+            vec![1.0, 2.0],
+            vec![2.0, 1.0],
+        )
+        .unwrap();
+        let t = mit_star_robot::Trajectory::stop_at_corners(
+            &[[0.0, 0.0], [1.0, 0.5], [0.2, 2.0]],
+            &limits,
+        )
+        .unwrap();
         TrajectoryPlot::new(
             "test".into(),
             limits.names().to_vec(),

@@ -1,7 +1,7 @@
 //! [`ViewFrames`]: the moments a view's slider steps through — a path's states and states
 //! interpolated between them (by length), or a timed trajectory's samples.
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 /// About how many frames a path is cut into: enough for smooth scrubbing, few enough that a
 /// page stays small (a path of more states keeps one frame per state; the page's limits
@@ -106,7 +106,7 @@ impl ViewFrames {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spaces::RealVectorSpace;
+    use mit_star_spaces::RealVectorSpace;
 
     #[test]
     fn frames_follow_length_and_keep_every_state() {

@@ -3,10 +3,12 @@
 
 use glam::DVec3;
 use mit_star::Snapshot;
-use problems::{PlanningProblem, Problem};
-use spaces::StateSpace;
-use validity::{AxisBox, StateValidity};
-use view::{InformedView, MotionView, SceneView, ShapeView, SolidView, ViewDocument, ViewKind};
+use mit_star_problems::{PlanningProblem, Problem};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{AxisBox, StateValidity};
+use mit_star_view::{
+    InformedView, MotionView, SceneView, ShapeView, SolidView, ViewDocument, ViewKind,
+};
 
 use crate::error::HarnessError;
 use crate::pictures::view_frames::ViewFrames;
@@ -37,7 +39,7 @@ impl<'a> WorldView<'a> {
     }
 
     /// The world's space.
-    pub(crate) fn space(&self) -> &spaces::RealVectorSpace {
+    pub(crate) fn space(&self) -> &mit_star_spaces::RealVectorSpace {
         self.problem.space()
     }
 
@@ -150,7 +152,7 @@ impl<'a> WorldView<'a> {
 
     /// The forward tree of `snapshot`, coloured by cost-to-come, with the informed set of its
     /// best cost (foci: the start and the first goal) when it has one.
-    pub(crate) fn search(&self, snapshot: &Snapshot) -> view::SearchOverlay {
+    pub(crate) fn search(&self, snapshot: &Snapshot) -> mit_star_view::SearchOverlay {
         let space = self.problem.space();
         let positions: Vec<DVec3> = (0..snapshot.states.len())
             .map(|i| self.point(&snapshot.states[i]))
@@ -178,7 +180,7 @@ mod tests {
 
     #[test]
     fn a_two_dimensional_world_lies_flat() {
-        let problem = problems::builtin("wall-gap", 2, 0).unwrap();
+        let problem = mit_star_problems::builtin("wall-gap", 2, 0).unwrap();
         let view = WorldView::new(&problem).unwrap();
         let document = view.document("wall gap");
         assert_eq!(document.kind, ViewKind::World2d);
@@ -193,7 +195,7 @@ mod tests {
 
     #[test]
     fn more_than_three_dimensions_is_refused() {
-        let problem = problems::builtin("obstacle-free", 4, 0).unwrap();
+        let problem = mit_star_problems::builtin("obstacle-free", 4, 0).unwrap();
         assert!(WorldView::new(&problem).is_err());
     }
 }

@@ -3,7 +3,7 @@
 //! every 0.1 s; each planner's success rate and median travelled cost over 30 trials.
 //!
 //! - [`ReplanningScene`], [`ReplanningSetup`] (`replanning_scene.rs`): the two scenes
-//!   (`horizontal`, `vertical`) — table, walls, moving boxes ([`robot::MovingScene`]), start
+//!   (`horizontal`, `vertical`) — table, walls, moving boxes ([`mit_star_robot::MovingScene`]), start
 //!   and goal.
 //! - [`ReplanningRules`], [`PlanningBudget`] (`rules.rs`): the control cycle, the planning
 //!   budget (wall clock, or iterations for deterministic runs), look-ahead, joint speeds,

@@ -1,9 +1,9 @@
 //! [`MotionJudge`]: whether an executed arm motion touched the moving obstacles, proven over
 //! time, and whether a path is clear of a scene.
 
-use robot::{ArmChecker, MovingScene, RobotModel, Scene};
-use spaces::{JointSpace, Never};
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use mit_star_robot::{ArmChecker, MovingScene, RobotModel, Scene};
+use mit_star_spaces::{JointSpace, Never};
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 
 use crate::replanning::timed_path::Piece;
 
@@ -95,7 +95,7 @@ fn motion_is_clear(checker: &ArmChecker, space: &JointSpace, a: &[f64], b: &[f64
 #[cfg(test)]
 mod tests {
     use glam::DVec3;
-    use robot::{ArmProblem, MovingObstacle};
+    use mit_star_robot::{ArmProblem, MovingObstacle};
 
     use super::*;
 

@@ -4,7 +4,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use mit_star::Configuration;
-use robot::{ArmProblem, MovingScene, Scene};
+use mit_star_robot::{ArmProblem, MovingScene, Scene};
 
 use crate::definition::cloud_spec::CloudSpec;
 use crate::definition::cloud_summary::CloudSummary;

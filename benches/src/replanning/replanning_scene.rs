@@ -4,7 +4,7 @@
 use std::f64::consts::FRAC_PI_4;
 
 use glam::{DAffine3, DQuat, DVec3};
-use robot::{ArmProblem, MovingObstacle, MovingScene, Obstacle, RobotModel, Shape};
+use mit_star_robot::{ArmProblem, MovingObstacle, MovingScene, Obstacle, RobotModel, Shape};
 
 use crate::error::HarnessError;
 
@@ -171,7 +171,7 @@ pub fn hand_position(robot: &RobotModel, q: &[f64]) -> DVec3 {
         .link_index("panda_grasptarget")
         .unwrap_or(links.len().saturating_sub(1));
     let mut poses = vec![DAffine3::IDENTITY; links.len()];
-    robot::Kinematics::new(robot).link_poses_f64(q, &mut poses);
+    mit_star_robot::Kinematics::new(robot).link_poses_f64(q, &mut poses);
     poses[hand].translation
 }
 
@@ -207,7 +207,7 @@ mod tests {
         for scene in ReplanningScene::ALL {
             let setup = scene.setup().unwrap();
             let straight = [setup.start.clone(), setup.goal.clone()];
-            let fixed = robot::Scene::new(setup.scene.fixed().to_vec());
+            let fixed = mit_star_robot::Scene::new(setup.scene.fixed().to_vec());
             assert!(
                 path_is_clear(&setup.robot, &fixed, &straight),
                 "{}",

@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use robot::{AuditVerdict, MotionAudit, Scene};
+use mit_star_robot::{AuditVerdict, MotionAudit, Scene};
 
 use crate::replanning::replanning_scene::ReplanningSetup;
 use crate::replanning::trial_record::TrialRecord;
@@ -76,7 +76,7 @@ impl StaticAudit {
         let clearance = if self.clearance.is_finite() {
             format!(
                 ", clearance ≥ {} mm",
-                spaces::short_number(self.clearance * 1e3)
+                mit_star_spaces::short_number(self.clearance * 1e3)
             )
         } else {
             String::new()

@@ -1,7 +1,7 @@
 //! [`TimedPath`]: a joint-space path timed at joint-speed limits, and [`Piece`], a straight
 //! stretch of motion between two times.
 
-use spaces::{JointSpace, StateSpace};
+use mit_star_spaces::{JointSpace, StateSpace};
 
 /// A straight motion in joint space from `a` at time `t0` to `b` at time `t1`, at constant
 /// speed (`a == b` holds still).
@@ -69,7 +69,7 @@ impl Piece {
 ///
 /// ```
 /// use mit_star_benches::replanning::TimedPath;
-/// use spaces::{Joint, JointSpace};
+/// use mit_star_spaces::{Joint, JointSpace};
 /// let joints = vec![Joint::revolute("a", -3.0, 3.0), Joint::revolute("b", -3.0, 3.0)];
 /// let space = JointSpace::new(joints).unwrap();
 /// let path = vec![vec![0.0, 0.0], vec![1.0, 0.5], vec![1.0, 1.5]];
@@ -197,8 +197,8 @@ mod tests {
 
     fn space() -> JointSpace {
         let joints = vec![
-            spaces::Joint::revolute("a", -3.0, 3.0),
-            spaces::Joint::revolute("b", -3.0, 3.0),
+            mit_star_spaces::Joint::revolute("a", -3.0, 3.0),
+            mit_star_spaces::Joint::revolute("b", -3.0, 3.0),
         ];
         JointSpace::new(joints).unwrap()
     }

@@ -5,7 +5,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use mit_star::{IterationLimit, Planner, TerminationExt as _, TimeLimit};
-use robot::{ArmProblem, Scene};
+use mit_star_robot::{ArmProblem, Scene};
 
 use crate::definition::planner_spec::PlannerSpec;
 use crate::error::HarnessError;
@@ -286,21 +286,21 @@ impl<'a> Trial<'a> {
 }
 
 /// The joint-space length of `path`.
-fn length(space: &spaces::JointSpace, path: &[Vec<f64>]) -> f64 {
+fn length(space: &mit_star_spaces::JointSpace, path: &[Vec<f64>]) -> f64 {
     path.windows(2)
         .map(|w| robot_distance(space, &w[0], &w[1]))
         .sum()
 }
 
 /// The joint-space distance the planners' cost measures.
-fn robot_distance(space: &spaces::JointSpace, a: &[f64], b: &[f64]) -> f64 {
-    spaces::StateSpace::distance(space, a, b)
+fn robot_distance(space: &mit_star_spaces::JointSpace, a: &[f64], b: &[f64]) -> f64 {
+    mit_star_spaces::StateSpace::distance(space, a, b)
 }
 
 #[cfg(test)]
 mod tests {
     use glam::DVec3;
-    use robot::{MovingObstacle, MovingScene};
+    use mit_star_robot::{MovingObstacle, MovingScene};
 
     use super::*;
     use crate::definition::parameter_overrides::ParameterOverrides;
@@ -350,8 +350,11 @@ mod tests {
         // One plan per cycle until the last leg is on its way.
         assert!(record.plans >= 2 && record.adopted >= 2);
         // The arm went there and back: at least twice the straight line.
-        let straight =
-            spaces::StateSpace::distance(setup.robot.joint_space(), &setup.start, &setup.goal);
+        let straight = mit_star_spaces::StateSpace::distance(
+            setup.robot.joint_space(),
+            &setup.start,
+            &setup.goal,
+        );
         assert!(
             record.travelled >= 2.0 * straight - 1e-9,
             "{}",

@@ -4,9 +4,9 @@
 use std::path::Path;
 
 use glam::DVec3;
+use mit_star_spaces::StateSpace;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use spaces::StateSpace;
 
 use crate::error::HarnessError;
 use crate::pictures::plot_style::{Figure, save_svg_and_png};

@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
-use robot::{ArmChecker, ArmProblem, Scene};
-use validity::StateValidity;
-use view::{ShapeView, SolidView};
+use mit_star_robot::{ArmChecker, ArmProblem, Scene};
+use mit_star_validity::StateValidity;
+use mit_star_view::{ShapeView, SolidView};
 
 use crate::error::HarnessError;
 use crate::pictures::arm_view::{ArmView, add_meshes};
@@ -48,7 +48,7 @@ pub fn write_trial_view(
         "{} · {} · trial {}",
         record.planner, setup.name, record.trial
     ));
-    if let Some(shipped) = robot::ShippedRobot::find(setup.robot.name()) {
+    if let Some(shipped) = mit_star_robot::ShippedRobot::find(setup.robot.name()) {
         add_meshes(&mut document, &setup.robot, &shipped.mesh_resolver());
     }
     document.subtitle.push(format!(
@@ -116,7 +116,7 @@ pub fn write_trial_view(
         .collect();
     document.motions.push(motion);
     document
-        .write_html(page, view::ViewLimits::default())
+        .write_html(page, mit_star_view::ViewLimits::default())
         .map(|_| ())
         .map_err(|source| HarnessError::View {
             path: page.to_path_buf(),

@@ -3,7 +3,7 @@
 //! and a message.
 
 use mit_star::{Configuration, Parameters};
-use problems::Problem;
+use mit_star_problems::Problem;
 
 /// The configuration named `name` (`mit-star`, `eit-star`, …).
 pub(crate) fn configuration(name: &str) -> Configuration {
@@ -20,7 +20,7 @@ pub(crate) fn problem(family: &str, dimension: usize) -> Problem {
         Some((f, l)) => (f, l.parse().unwrap_or(1)),
         None => (family, 1),
     };
-    problems::builtin(family, dimension, layout).unwrap_or_else(|e| {
+    mit_star_problems::builtin(family, dimension, layout).unwrap_or_else(|e| {
         eprintln!("{family} in {dimension} dimensions: {e}");
         std::process::exit(2)
     })

@@ -76,10 +76,10 @@ fn frames(bt: &Backtrace) -> String {
             [
                 "mit_star::",
                 "mit-star/src",
-                "samplers::",
+                "mit_star_samplers::",
                 "samplers/src",
-                "validity::",
-                "robot::",
+                "mit_star_validity::",
+                "mit_star_robot::",
                 "robot/src",
             ]
             .iter()
@@ -126,7 +126,7 @@ impl Termination for Gaps {
 /// cannot be read), so that another process on the core does not make a run late — a planner
 /// that skips its polls still does. The gaps are wall-clock.
 #[allow(dead_code)] // `poll_gaps` includes this file and measures its own way.
-pub(crate) fn measure<P: problems::PlanningProblem>(
+pub(crate) fn measure<P: mit_star_problems::PlanningProblem>(
     configuration: Configuration,
     problem: &P,
     parameters: &Parameters,

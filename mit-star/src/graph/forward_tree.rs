@@ -1,6 +1,6 @@
 //! The forward tree's links inside the [`RandomGeometricGraph`], and pruning.
 
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 use crate::graph::random_geometric_graph::RandomGeometricGraph;
 use crate::graph::vertex::NONE;
@@ -244,13 +244,16 @@ mod tests {
     fn pruning_detaches_orphans_and_keeps_protected_vertices() {
         let (mut g, [s, a, b, c, d]) = tree();
         // Admissible costs: a 2, b 4, c 6, d 3. Bound 3.5 removes b and c, keeps a and d.
-        assert_eq!(g.prune(3.5, &[], &spaces::Never), Pruning::Done(2));
+        assert_eq!(g.prune(3.5, &[], &mit_star_spaces::Never), Pruning::Done(2));
         assert_eq!(g.pruned(), [b, c]);
         assert_eq!(g.vertex_count(), 3);
         assert_eq!(g.vertex(a).first_child, d);
         // Protection keeps a vertex whatever its bound; detached subtrees lose their g.
         let (mut g, [_, a, b, c, _]) = tree();
-        assert_eq!(g.prune(1.0, &[b], &spaces::Never), Pruning::Done(3));
+        assert_eq!(
+            g.prune(1.0, &[b], &mit_star_spaces::Never),
+            Pruning::Done(3)
+        );
         assert_eq!(g.pruned(), [a, c, 4]);
         assert_eq!(g.vertex(b).g, f64::INFINITY);
         assert_eq!(g.vertex(b).parent, NONE);
@@ -259,7 +262,7 @@ mod tests {
 
     /// Fires on every poll.
     struct Fired;
-    impl spaces::Stop for Fired {
+    impl mit_star_spaces::Stop for Fired {
         fn should_stop(&self) -> bool {
             true
         }
@@ -279,12 +282,15 @@ mod tests {
         assert!(g.pruned().is_empty() && !g.is_pruning());
         assert_eq!(g.vertex_count(), count);
         // Without the stop, every sample goes.
-        assert_eq!(g.prune(0.5, &[], &spaces::Never), Pruning::Done(count - 1));
+        assert_eq!(
+            g.prune(0.5, &[], &mit_star_spaces::Never),
+            Pruning::Done(count - 1)
+        );
     }
 
     /// Fires from its `after`-th poll on.
     struct FiresAfter(std::cell::Cell<u32>);
-    impl spaces::Stop for FiresAfter {
+    impl mit_star_spaces::Stop for FiresAfter {
         fn should_stop(&self) -> bool {
             let left = self.0.get();
             self.0.set(left.saturating_sub(1));
@@ -332,7 +338,7 @@ mod tests {
         let count = 3000;
         for seed in 0..4 {
             let mut whole = forest(count, seed);
-            let Pruning::Done(removed) = whole.prune(5.0, &[7], &spaces::Never) else {
+            let Pruning::Done(removed) = whole.prune(5.0, &[7], &mit_star_spaces::Never) else {
                 panic!("an unstoppable pruning completes");
             };
             assert!(removed > 1000);

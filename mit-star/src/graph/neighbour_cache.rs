@@ -1,8 +1,8 @@
 //! The RGG's neighbour lists: computed on first expansion, cached per vertex, and brought up
 //! to date incrementally in later batches (dropping pruned vertices, merging new samples).
 
-use heuristics::Heuristic;
-use spaces::{StateSpace, Stop};
+use mit_star_heuristics::Heuristic;
+use mit_star_spaces::{StateSpace, Stop};
 
 use crate::graph::random_geometric_graph::{DEAD, Neighbour, Neighbourhood, RandomGeometricGraph};
 use crate::nearest::{Alive, Neighbours, Poll};
@@ -315,9 +315,9 @@ mod tests {
     use super::*;
     use crate::graph::forward_tree::Pruning;
     use crate::graph::vertex::{Vertex, VertexKind};
-    use heuristics::Euclidean;
-    use spaces::rand::{RngExt, SeedableRng};
-    use spaces::{Never, RealVectorSpace, SeededRng, euclidean_distance};
+    use mit_star_heuristics::Euclidean;
+    use mit_star_spaces::rand::{RngExt, SeedableRng};
+    use mit_star_spaces::{Never, RealVectorSpace, SeededRng, euclidean_distance};
 
     /// The ids of the `k` nearest vertices to `v` (or those within `r`), by brute force.
     fn brute(g: &RandomGeometricGraph, v: u32, rule: Neighbourhood) -> Vec<u32> {
@@ -382,7 +382,7 @@ mod tests {
                 // Prune a slice of the space now and then (ids get reused afterwards).
                 if batch % 8 == 5 {
                     let bound = 1.6 - 0.1 * (batch / 8) as f64;
-                    let outcome = g.prune(bound, &[], &spaces::Never);
+                    let outcome = g.prune(bound, &[], &mit_star_spaces::Never);
                     assert!(matches!(outcome, Pruning::Done(n) if n > 0));
                 }
             }
@@ -391,7 +391,7 @@ mod tests {
 
     #[test]
     fn weighted_joint_spaces_are_indexed_and_answer_as_a_scan() {
-        use spaces::{Joint, JointSpace, StateSpace};
+        use mit_star_spaces::{Joint, JointSpace, StateSpace};
         let weights = [1.0, 3.0, 0.5, 1.0, 2.0, 1.0, 0.7];
         let joints = weights
             .iter()

@@ -3,10 +3,10 @@
 
 use std::collections::HashMap;
 
+use mit_star_validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 use petgraph::Undirected;
 use petgraph::graph::NodeIndex;
 use petgraph::stable_graph::StableGraph;
-use validity::{EdgeGrid, EdgeProgress, EdgeStatus};
 
 use crate::graph::edge_hasher::{BuildEdgeHasher, edge_key};
 use crate::graph::neighbour_cache::MERGE_LIMIT;
@@ -87,7 +87,7 @@ pub struct RandomGeometricGraph {
     /// The metric is the plain Euclidean one (no scales).
     pub(crate) euclidean: bool,
     /// Neighbours come from `nn`'s kd-trees: a Euclidean metric, plain or weighted
-    /// ([`StateSpace::euclidean_scales`](spaces::StateSpace::euclidean_scales)).
+    /// ([`StateSpace::euclidean_scales`](mit_star_spaces::StateSpace::euclidean_scales)).
     pub(crate) indexed: bool,
     /// Cached neighbour list per id, nearest first (`neighbours_len` entries used this batch).
     pub(crate) lists: Chunked<Vec<Neighbour>>,
@@ -116,14 +116,14 @@ pub struct RandomGeometricGraph {
     /// The next of `prune_ids` to remove, while a pruning is interrupted.
     pub(crate) prune_next: Option<usize>,
     /// Live vertices whose states do not count toward the sampling density (drawn near the
-    /// terminals: [`SampleOrigin::counts_toward_density`](samplers::SampleOrigin)).
+    /// terminals: [`SampleOrigin::counts_toward_density`](mit_star_samplers::SampleOrigin)).
     clustered: usize,
 }
 
 impl RandomGeometricGraph {
     /// An empty graph for the states of `space`: neighbours found with kd-trees under a
     /// Euclidean metric, plain or weighted, otherwise by a linear scan with the space's metric.
-    pub(crate) fn for_space<S: spaces::StateSpace + ?Sized>(space: &S) -> Self {
+    pub(crate) fn for_space<S: mit_star_spaces::StateSpace + ?Sized>(space: &S) -> Self {
         let n = space.dimension();
         if space.is_euclidean() {
             return Self::new(n, true);
@@ -224,7 +224,7 @@ impl RandomGeometricGraph {
 
     /// Builds the committed samples waiting in the nearest-neighbour buffer into trees if the
     /// buffer is large, unless `stop` fires (then they stay in the exact linear buffer).
-    pub(crate) fn index_pending(&mut self, stop: &dyn spaces::Stop) {
+    pub(crate) fn index_pending(&mut self, stop: &dyn mit_star_spaces::Stop) {
         if self.indexed {
             self.nn.maintain(Alive::Current(&self.births), stop);
         }
@@ -346,7 +346,7 @@ impl RandomGeometricGraph {
 
     /// Number of vertices that count in the sample number `q` of the connection rules `k(q)`
     /// and `r(q)`: the start, the goals and every sample but those drawn near the terminals
-    /// ([`SampleOrigin::counts_toward_density`](samplers::SampleOrigin::counts_toward_density)),
+    /// ([`SampleOrigin::counts_toward_density`](mit_star_samplers::SampleOrigin::counts_toward_density)),
     /// which would make the graph look denser than the sampler's coverage of its set.
     pub fn density_count(&self) -> usize {
         self.vertex_count() - self.clustered
@@ -383,11 +383,11 @@ impl RandomGeometricGraph {
         self.live_vertex(v).map(|x| x.kind)
     }
 
-    /// Which step of the sampler produced a vertex's state ([`SampleOrigin::Drawn`](samplers::SampleOrigin) for
+    /// Which step of the sampler produced a vertex's state ([`SampleOrigin::Drawn`](mit_star_samplers::SampleOrigin) for
     /// the start, the goals and ids not in use).
-    pub fn origin(&self, v: VertexId) -> samplers::SampleOrigin {
+    pub fn origin(&self, v: VertexId) -> mit_star_samplers::SampleOrigin {
         self.live_vertex(v)
-            .map_or(samplers::SampleOrigin::Drawn, |x| x.origin)
+            .map_or(mit_star_samplers::SampleOrigin::Drawn, |x| x.origin)
     }
 
     /// The cost-to-come of a vertex in the forward tree (∞ if not in it).

@@ -38,7 +38,7 @@ pub enum VertexKind {
 pub(crate) struct Vertex {
     pub(crate) kind: VertexKind,
     /// Which step of the sampler produced the state (pictures).
-    pub(crate) origin: samplers::SampleOrigin,
+    pub(crate) origin: mit_star_samplers::SampleOrigin,
     /// `ĝ(x) = ĉ(start, x)`, the admissible cost-to-come bound.
     pub(crate) cost_to_come_bound: f64,
     /// `ĉ(x, goals)`, the admissible cost-to-go bound.
@@ -98,7 +98,7 @@ impl Vertex {
     ) -> Self {
         Self {
             kind,
-            origin: samplers::SampleOrigin::Drawn,
+            origin: mit_star_samplers::SampleOrigin::Drawn,
             cost_to_come_bound,
             cost_to_go_bound,
             effort_from_start,

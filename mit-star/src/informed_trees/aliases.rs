@@ -1,10 +1,10 @@
 //! The paper's configurations (spec §8) and its comparison planners AIT*, BIT* and ABIT* as
 //! type aliases of [`Eit`]: each is nothing but a choice of parts.
 
-use heuristics::Euclidean;
-use samplers::{AdaptiveSampler, Estimated, InformedSampler};
-use spaces::RealVectorSpace;
-use validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, World};
+use mit_star_heuristics::Euclidean;
+use mit_star_samplers::{AdaptiveSampler, Estimated, InformedSampler};
+use mit_star_spaces::RealVectorSpace;
+use mit_star_validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker, World};
 
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::{APriori, CostInformed, Suspending};
@@ -53,7 +53,7 @@ pub type AitStar<S = RealVectorSpace, V = World> =
 ///
 /// ```
 /// use mit_star::{BitStar, FirstSolution, Planner};
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let mut abit = BitStar::for_problem(&problem)
 ///     .abit_star()
 ///     .name("ABIT*")
@@ -70,7 +70,7 @@ pub type BitStar<S = RealVectorSpace, V = World> =
 ///
 /// ```
 /// use mit_star::{AitStarEis, FirstSolution, Planner};
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let mut planner = AitStarEis::for_problem(&problem).seed(3).build()?;
 /// assert_eq!(planner.name(), "AIT*[estimated(informed) sampler, dense checks]");
 /// let outcome = planner.solve(&FirstSolution)?;

@@ -1,10 +1,10 @@
 //! Adding a batch of samples — EIT*'s "improve approximation" (spec §3.4): prune, sample under
 //! the current bound, reconnect, restart both searches.
 
-use heuristics::Heuristic;
-use samplers::{CostBound, SampleError, Sampler};
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::{CostBound, SampleError, Sampler};
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::{NONE, Neighbourhood, Pruning};
 use crate::informed_trees::eit::Eit;
@@ -50,7 +50,7 @@ where
 
     /// Sets `k` or `r` for the current number of vertices `q` (start and goals included),
     /// counting only the vertices that stand for the sampler's coverage of its set: states
-    /// drawn near the terminals ([`NearTerminals`](samplers::NearTerminals)) are left out, so
+    /// drawn near the terminals ([`NearTerminals`](mit_star_samplers::NearTerminals)) are left out, so
     /// the rules keep the rewire factor `η` they are given for the wrapped sampler's density.
     pub(crate) fn update_neighbourhood(&mut self) -> f64 {
         let q = self.graph.density_count();

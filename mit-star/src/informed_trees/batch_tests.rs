@@ -1,22 +1,26 @@
 //! Tests of a batch: the sample count its connection rules use, and where ABIT*'s search of it
 //! ends.
 
-use heuristics::Euclidean;
-use samplers::{InformedSampler, NearTerminals, SampleOrigin};
-use spaces::StateSpace;
-use validity::{FixedSparseChecker, World};
+use mit_star_heuristics::Euclidean;
+use mit_star_samplers::{InformedSampler, NearTerminals, SampleOrigin};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{FixedSparseChecker, World};
 
 use crate::graph::Neighbourhood;
 use crate::termination::SolveStop;
 use crate::{BitStar, Connection, Eit, IterationLimit, k_nearest, r_disc};
 
 /// EIT* with half of its samples drawn near the start and the goal.
-type NearEit =
-    Eit<spaces::RealVectorSpace, World, NearTerminals<InformedSampler>, FixedSparseChecker>;
+type NearEit = Eit<
+    mit_star_spaces::RealVectorSpace,
+    World,
+    NearTerminals<InformedSampler>,
+    FixedSparseChecker,
+>;
 
 #[test]
 fn states_near_the_terminals_are_left_out_of_the_connection_rules() {
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -61,7 +65,7 @@ fn states_near_the_terminals_are_left_out_of_the_connection_rules() {
 
 #[test]
 fn abit_star_ends_a_batch_search_at_the_first_truncated_edge() {
-    let problem = problems::DividingWalls::new(2)
+    let problem = mit_star_problems::DividingWalls::new(2)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -113,10 +117,16 @@ fn abit_star_ends_a_batch_search_at_the_first_truncated_edge() {
 #[test]
 fn an_empty_forward_queue_suspends_the_reverse_search_by_the_rule_in_force() {
     use crate::{EffortInformed, Guidance, Suspending};
-    type Guided<G> =
-        Eit<spaces::RealVectorSpace, World, InformedSampler, FixedSparseChecker, Euclidean, G>;
+    type Guided<G> = Eit<
+        mit_star_spaces::RealVectorSpace,
+        World,
+        InformedSampler,
+        FixedSparseChecker,
+        Euclidean,
+        G,
+    >;
     fn continues<G: Guidance>(suspend: Option<bool>) -> bool {
-        let problem = problems::DividingWalls::new(4)
+        let problem = mit_star_problems::DividingWalls::new(4)
             .build()
             .unwrap()
             .with_resolution(1e-3)

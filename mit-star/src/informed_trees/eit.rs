@@ -3,11 +3,11 @@
 
 use std::time::Duration;
 
-use heuristics::{Euclidean, Heuristic};
-use samplers::Sampler;
-use spaces::rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, States};
-use validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
+use mit_star_heuristics::{Euclidean, Heuristic};
+use mit_star_samplers::Sampler;
+use mit_star_spaces::rand::SeedableRng;
+use mit_star_spaces::{SeededRng, StateSpace, States};
+use mit_star_validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidity};
 
 use crate::graph::{NONE, RandomGeometricGraph, Vertex};
 use crate::informed_trees::forward_queue::ForwardQueue;
@@ -63,8 +63,8 @@ use crate::{
 /// # Example
 /// ```
 /// use mit_star::{EitStar, IterationLimit, Planner};
-/// use spaces::RealVectorSpace;
-/// use validity::{AxisBox, World};
+/// use mit_star_spaces::RealVectorSpace;
+/// use mit_star_validity::{AxisBox, World};
 ///
 /// let space = RealVectorSpace::cube(2, -0.5, 0.5)?;
 /// let world = World::in_space(&space).with_obstacle(AxisBox::new(vec![0.0, -0.1], vec![0.1, 0.8]))?;
@@ -102,7 +102,7 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     /// A solution offered from outside ([`Planner::offer_solution`]) before the graph was
     /// built, with its edges' checking progress: the best one until `setup` grafts it into
     /// the forward tree ([`adopt_offer`](Self::adopt_offer)).
-    pub(crate) offered: Option<(Solution, Vec<validity::EdgeProgress>)>,
+    pub(crate) offered: Option<(Solution, Vec<mit_star_validity::EdgeProgress>)>,
     pub(crate) lower_bound: f64,
     pub(crate) last_prune_cost: f64,
     /// The informed set is empty: no better solution exists.
@@ -360,7 +360,7 @@ where
         // At least one block a call, then one more for every poll that lets it go on.
         let mut first = true;
         while self.goal_ids.len() < self.goals.len() {
-            if !std::mem::take(&mut first) && spaces::Stop::should_stop(stop) {
+            if !std::mem::take(&mut first) && mit_star_spaces::Stop::should_stop(stop) {
                 return Ok(());
             }
             let from = self.goal_ids.len();
@@ -448,7 +448,7 @@ where
     fn run_deferred(&mut self, stop: &SolveStop<'_>) {
         let pending = std::mem::take(&mut self.deferred);
         for (i, &(v, exclude, forward)) in pending.iter().enumerate() {
-            if spaces::Stop::should_stop(stop) {
+            if mit_star_spaces::Stop::should_stop(stop) {
                 // Keep the rest, ahead of anything deferred meanwhile.
                 let mut rest = pending[i..].to_vec();
                 rest.append(&mut self.deferred);
@@ -557,7 +557,7 @@ where
         // Not ready: the stop fired while the goals were being inserted; the next call goes on.
         while self.ready {
             stop.update(iterations, self.best_cost);
-            if spaces::Stop::should_stop(&stop) || self.is_optimal() {
+            if mit_star_spaces::Stop::should_stop(&stop) || self.is_optimal() {
                 break;
             }
             self.iterate(&stop);

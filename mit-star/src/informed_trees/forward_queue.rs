@@ -294,7 +294,7 @@ impl ForwardQueue {
     pub(crate) fn rekey_all(
         &mut self,
         mut keys_of: impl FnMut(&ForwardEdge) -> ForwardKeys,
-        stop: &dyn spaces::Stop,
+        stop: &dyn mit_star_spaces::Stop,
     ) -> bool {
         let Some(mut r) = self.rekeying.take() else {
             return true;
@@ -540,7 +540,7 @@ mod tests {
         assert_eq!(q.pop(Front::Optimal).unwrap().0.target, 6);
         q.begin_rekey_all();
         assert!(q.is_rekeying());
-        assert!(q.rekey_all(|_| keys(1.0, 1.0, 1), &spaces::Never));
+        assert!(q.rekey_all(|_| keys(1.0, 1.0, 1), &mit_star_spaces::Never));
         assert!(!q.is_rekeying());
         assert!(q.has_open_targets());
         assert_eq!(q.len(), 2);
@@ -550,7 +550,7 @@ mod tests {
 
     /// Fires on every poll.
     struct Fired;
-    impl spaces::Stop for Fired {
+    impl mit_star_spaces::Stop for Fired {
         fn should_stop(&self) -> bool {
             true
         }
@@ -580,7 +580,7 @@ mod tests {
         let mut whole = ForwardQueue::default();
         fill(&mut whole);
         whole.begin_rekey_all();
-        assert!(whole.rekey_all(new_keys, &spaces::Never));
+        assert!(whole.rekey_all(new_keys, &mit_star_spaces::Never));
         let mut pieces = ForwardQueue::default();
         fill(&mut pieces);
         pieces.begin_rekey_all();

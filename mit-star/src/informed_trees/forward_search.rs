@@ -1,10 +1,10 @@
 //! The forward search from the start (spec §3.3): full edge checks, effort-greedy before the
 //! first solution and A* after, and the reverse-search restart when a lazy edge is invalid.
 
-use heuristics::Heuristic;
-use samplers::{LazyPathFailure, Sampler};
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::{LazyPathFailure, Sampler};
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::RestartEvent;
 use crate::graph::{EdgeRecord, NONE};

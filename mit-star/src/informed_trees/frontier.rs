@@ -1,13 +1,13 @@
 //! The reverse search's frontier: the states it reached farthest from the goals, handed to the
 //! sampler at the end of a batch without a solution
-//! ([`Sampler::observe_frontier`](samplers::Sampler::observe_frontier)).
+//! ([`Sampler::observe_frontier`](mit_star_samplers::Sampler::observe_frontier)).
 
 use std::cmp::{Ordering, Reverse};
 
-use heuristics::Heuristic;
-use samplers::Sampler;
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
 
 use crate::Parameters;
 use crate::informed_trees::eit::Eit;

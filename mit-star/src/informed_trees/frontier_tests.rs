@@ -1,9 +1,9 @@
 //! Tests of the frontier the EIT* family hands its sampler: the reverse tree's farthest
 //! samples, and nothing once solved.
 
-use samplers::{CostBound, InformedSampler, SampleError, Sampler, SamplerCounters};
-use spaces::{StateSpace, Stop};
-use validity::{FixedSparseChecker, StateValidity, World};
+use mit_star_samplers::{CostBound, InformedSampler, SampleError, Sampler, SamplerCounters};
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{FixedSparseChecker, StateValidity, World};
 
 use crate::termination::SolveStop;
 use crate::{Eit, IterationLimit};
@@ -116,17 +116,18 @@ impl<S: StateSpace> crate::SamplerPart<S> for Recording {
     }
 }
 
-pub(super) type RecordingEit = Eit<spaces::RealVectorSpace, World, Recording, FixedSparseChecker>;
+pub(super) type RecordingEit =
+    Eit<mit_star_spaces::RealVectorSpace, World, Recording, FixedSparseChecker>;
 
 /// The planner of these tests, with the whole reverse tree's frontier (the default).
-fn make(frontier: usize) -> (RecordingEit, problems::Problem) {
+fn make(frontier: usize) -> (RecordingEit, mit_star_problems::Problem) {
     make_with(frontier, false)
 }
 
 /// The planner of these tests; `validated` sets
 /// [`validated_frontier`](crate::Parameters::validated_frontier).
-fn make_with(frontier: usize, validated: bool) -> (RecordingEit, problems::Problem) {
-    let problem = problems::DividingWalls::new(4)
+fn make_with(frontier: usize, validated: bool) -> (RecordingEit, mit_star_problems::Problem) {
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -213,7 +214,7 @@ fn vertex_at(planner: &RecordingEit, state: &[f64]) -> u32 {
 
 /// Whether every edge of the reverse tree from the vertex at `state` up to a goal is free,
 /// decided exactly (segment against boxes, no grid).
-fn confirmed(planner: &RecordingEit, problem: &problems::Problem, state: &[f64]) -> bool {
+fn confirmed(planner: &RecordingEit, problem: &mit_star_problems::Problem, state: &[f64]) -> bool {
     let graph = &planner.graph;
     let mut v = vertex_at(planner, state);
     while !graph.vertex(v).is_goal() {

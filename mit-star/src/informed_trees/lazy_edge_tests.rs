@@ -1,7 +1,7 @@
 //! Tests that the forward search is offered the first edge of every expanded vertex's lazy
 //! path, also after the reverse search changed it.
 
-use validity::EdgeStatus;
+use mit_star_validity::EdgeStatus;
 
 use crate::graph::NONE;
 use crate::termination::SolveStop;
@@ -63,21 +63,21 @@ macro_rules! lazy_edges_are_offered {
 
 lazy_edges_are_offered!(
     MitStar,
-    problems::DividingWalls::new(8),
+    mit_star_problems::DividingWalls::new(8),
     mit_star_offers_every_lazy_edge_among_dividing_walls
 );
 lazy_edges_are_offered!(
     EitStar,
-    problems::DividingWalls::new(8),
+    mit_star_problems::DividingWalls::new(8),
     eit_star_offers_every_lazy_edge_among_dividing_walls
 );
 lazy_edges_are_offered!(
     MitStar,
-    problems::RepeatingRectangles::new(4),
+    mit_star_problems::RepeatingRectangles::new(4),
     mit_star_offers_every_lazy_edge_among_repeating_rectangles
 );
 lazy_edges_are_offered!(
     EitStar,
-    problems::RepeatingRectangles::new(4),
+    mit_star_problems::RepeatingRectangles::new(4),
     eit_star_offers_every_lazy_edge_among_repeating_rectangles
 );

@@ -1,10 +1,10 @@
 //! Taking a path offered from outside ([`Planner::offer_solution`](crate::Planner)) into the
 //! forward tree, so the searches can improve on it locally.
 
-use heuristics::Heuristic;
-use samplers::{SampleOrigin, Sampler};
-use spaces::{StateSpace, States};
-use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::{SampleOrigin, Sampler};
+use mit_star_spaces::{StateSpace, States};
+use mit_star_validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::VertexKind;
 use crate::graph::EdgeRecord;
@@ -95,16 +95,16 @@ where
 
 #[cfg(test)]
 mod tests {
-    use samplers::SampleOrigin;
-    use spaces::States;
+    use mit_star_samplers::SampleOrigin;
+    use mit_star_spaces::States;
 
     use crate::{
         Configuration, EitStar, FirstSolution, IterationLimit, MitStar, Parameters, Planner,
         Solution, build_planner,
     };
 
-    fn problem() -> problems::Problem {
-        problems::DividingWalls::new(2)
+    fn problem() -> mit_star_problems::Problem {
+        mit_star_problems::DividingWalls::new(2)
             .build()
             .expect("builds")
             .with_resolution(1e-4)
@@ -112,7 +112,7 @@ mod tests {
     }
 
     /// A valid path for `problem` found by RRT-Connect (many corners: room to improve).
-    fn donated(problem: &problems::Problem, seed: u64) -> Solution {
+    fn donated(problem: &mit_star_problems::Problem, seed: u64) -> Solution {
         let parameters = Parameters {
             seed,
             ..Parameters::default()
@@ -195,7 +195,7 @@ mod tests {
         let simplified = crate::PathSimplifier::new()
             .attempts(0)
             .smoothing_rounds(0)
-            .simplify(&problem, &rows, &spaces::Never)
+            .simplify(&problem, &rows, &mit_star_spaces::Never)
             .expect("simplifies");
         assert!(
             simplified.cost < first.cost,

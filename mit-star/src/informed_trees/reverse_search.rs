@@ -1,9 +1,9 @@
 //! The lazy reverse search from the goals (spec §3.2): sparse checks only, keys `(k1, k2, k3)`.
 
-use heuristics::Heuristic;
-use samplers::Sampler;
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::graph::{EdgeRecord, NO_EFFORT, NONE, RandomGeometricGraph};
 use crate::informed_trees::eit::Eit;

@@ -8,15 +8,15 @@ use crate::{IterationLimit, MitStar, Planner, TimeLimit};
 
 /// Obstacle-free `[0, 1]^4` with the start at a corner and `count` goals spread
 /// (deterministically) over the far half.
-fn many_goals(count: usize) -> problems::Problem {
-    let world = validity::World::new(vec![0.0; 4], vec![1.0; 4]);
+fn many_goals(count: usize) -> mit_star_problems::Problem {
+    let world = mit_star_validity::World::new(vec![0.0; 4], vec![1.0; 4]);
     let goals = (0..count)
         .map(|i| {
             let t = i as f64 / count as f64;
             vec![0.6 + 0.3 * t, (7.0 * t).fract(), (13.0 * t).fract(), 0.5]
         })
         .collect();
-    problems::Problem::new("goals", world, vec![0.1; 4], goals).unwrap()
+    mit_star_problems::Problem::new("goals", world, vec![0.1; 4], goals).unwrap()
 }
 
 #[test]

@@ -20,10 +20,10 @@
 //! may have been dropped from the forward queue while those vertices were cheaper to reach):
 //! rare, as failures are — an edge valid at every check point and invalid between them.
 
-use heuristics::Heuristic;
-use samplers::Sampler;
-use spaces::StateSpace;
-use validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
 
 use crate::graph::NONE;
 use crate::informed_trees::eit::Eit;

@@ -2,11 +2,11 @@
 //! once a solution exists, part of each batch lies on shortcuts of its path, so the forward
 //! search can straighten it through the graph.
 
-use heuristics::Heuristic;
-use samplers::{SampleOrigin, Sampler};
-use spaces::rand::RngExt;
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::{SampleOrigin, Sampler};
+use mit_star_spaces::rand::RngExt;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::VertexKind;
 use crate::informed_trees::eit::Eit;
@@ -146,7 +146,7 @@ where
 }
 
 /// A standard normal draw (Box–Muller, one of the pair).
-fn gaussian(rng: &mut spaces::SeededRng) -> f64 {
+fn gaussian(rng: &mut mit_star_spaces::SeededRng) -> f64 {
     let u: f64 = 1.0 - rng.random::<f64>();
     let v: f64 = rng.random::<f64>();
     (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()

@@ -1,17 +1,17 @@
 //! Tests of the states a batch places along the best path (`solution_samples.rs`).
 
-use heuristics::{Euclidean, Heuristic};
-use samplers::SampleOrigin;
-use validity::StateValidity;
+use mit_star_heuristics::{Euclidean, Heuristic};
+use mit_star_samplers::SampleOrigin;
+use mit_star_validity::StateValidity;
 
 use crate::termination::SolveStop;
 use crate::{IterationLimit, MitStar, Planner};
-use problems::PlanningProblem;
+use mit_star_problems::PlanningProblem;
 
 /// MIT* on the dividing walls of R^4 with `fraction` of each batch along the best path, after
 /// iterations enough for a first solution, then one more batch.
-fn planner_after_a_batch(fraction: f64) -> (MitStar, problems::Problem) {
-    let problem = problems::DividingWalls::new(4)
+fn planner_after_a_batch(fraction: f64) -> (MitStar, mit_star_problems::Problem) {
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)

@@ -5,10 +5,10 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use heuristics::Heuristic;
-use samplers::Sampler;
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
 
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::forward_queue::bits;

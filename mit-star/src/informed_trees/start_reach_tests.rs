@@ -1,7 +1,7 @@
 //! Tests of the start's side of the frontier: a start in a pocket hands the sampler the
 //! states the start reaches, once the reverse tree holds most of the graph.
 
-use samplers::InformedSampler;
+use mit_star_samplers::InformedSampler;
 
 use crate::IterationLimit;
 use crate::informed_trees::frontier_tests::{Recording, RecordingEit};
@@ -14,7 +14,7 @@ const HOLLOW: f64 = 0.1;
 /// narrowed to 0.01 (a third of the samples in the start's hollow), has been searched without
 /// a solution and the second one added.
 fn searched(start_frontier: bool) -> RecordingEit {
-    let problem = problems::StartEnclosure::new(4)
+    let problem = mit_star_problems::StartEnclosure::new(4)
         .gap(0.01)
         .build()
         .unwrap()

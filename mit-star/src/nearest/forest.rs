@@ -1,7 +1,7 @@
 //! [`NearestNeighbors`]: exact nearest-neighbour search over points that arrive in batches and
 //! are removed by pruning.
 
-use spaces::{Never, Stop};
+use mit_star_spaces::{Never, Stop};
 
 use crate::nearest::kd_tree::{Alive, KdTree, Poll};
 use crate::nearest::kd_tree_build::{Parts, Spare, fresh};
@@ -413,8 +413,8 @@ fn merge(
 mod tests {
     use super::*;
     use crate::nearest::kd_tree::squared_distance;
-    use spaces::SeededRng;
-    use spaces::rand::{RngExt, SeedableRng};
+    use mit_star_spaces::SeededRng;
+    use mit_star_spaces::rand::{RngExt, SeedableRng};
 
     fn brute(
         points: &[f64],

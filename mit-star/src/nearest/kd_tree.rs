@@ -137,7 +137,7 @@ impl KdTree {
         Self::from_parts(
             dimension,
             &[(&ids, &births, &coordinates)],
-            &spaces::Never,
+            &mit_star_spaces::Never,
             &mut spare,
         )
         .unwrap_or_else(|| Self::empty(dimension))
@@ -273,7 +273,7 @@ impl KdTree {
             query,
             found,
             Alive::All,
-            &mut Poll::new(&spaces::Never, self.dimension),
+            &mut Poll::new(&mit_star_spaces::Never, self.dimension),
         );
     }
 
@@ -340,7 +340,7 @@ impl KdTree {
             radius * radius,
             found,
             Alive::All,
-            &mut Poll::new(&spaces::Never, self.dimension),
+            &mut Poll::new(&mit_star_spaces::Never, self.dimension),
         );
         found.sort();
     }
@@ -412,7 +412,7 @@ const QUERY_POLL: u32 = 16_384;
 /// of thousands of points in high dimension (where trees prune little) takes milliseconds, so
 /// the planner's queries can be abandoned — and the expansion that asked retried later.
 pub(crate) struct Poll<'a> {
-    stop: &'a dyn spaces::Stop,
+    stop: &'a dyn mit_star_spaces::Stop,
     /// Coordinates per point.
     dimension: u32,
     work: u32,
@@ -422,7 +422,7 @@ pub(crate) struct Poll<'a> {
 
 impl<'a> Poll<'a> {
     /// A fresh poll of `stop` for queries over points of `dimension` coordinates.
-    pub(crate) fn new(stop: &'a dyn spaces::Stop, dimension: usize) -> Self {
+    pub(crate) fn new(stop: &'a dyn mit_star_spaces::Stop, dimension: usize) -> Self {
         Self {
             stop,
             dimension: u32::try_from(dimension.max(1)).unwrap_or(u32::MAX),
@@ -451,8 +451,8 @@ impl<'a> Poll<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spaces::SeededRng;
-    use spaces::rand::{RngExt, SeedableRng};
+    use mit_star_spaces::SeededRng;
+    use mit_star_spaces::rand::{RngExt, SeedableRng};
 
     fn random_points(n: usize, count: usize, seed: u64) -> Vec<f64> {
         let mut rng = SeededRng::seed_from_u64(seed);

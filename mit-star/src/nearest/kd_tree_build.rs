@@ -1,7 +1,7 @@
 //! Building a [`KdTree`]: median splits along the widest coordinate, points partitioned in
 //! place, the stop condition polled as work accumulates.
 
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 use crate::nearest::kd_tree::{BUCKET, KdTree, LEAF, Node};
 use crate::nearest::lanes::{GROUP, push_point};

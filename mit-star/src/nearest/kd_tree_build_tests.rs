@@ -3,7 +3,7 @@
 
 use std::cell::Cell;
 
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 use crate::nearest::KdTree;
 use crate::nearest::kd_tree_build::{POLL_WORK, Spare};
@@ -111,7 +111,7 @@ fn a_build_stopped_inside_a_partition_is_abandoned_and_the_next_one_is_exact() {
     let tree = KdTree::from_owned(
         dimension,
         (ids, births, coordinates.clone()),
-        &spaces::Never,
+        &mit_star_spaces::Never,
         &mut spare,
     )
     .expect("built");

@@ -1,7 +1,7 @@
 //! [`CostTree`]: the tree of [`InformedRrtStar`](crate::InformedRrtStar) — an RRT tree with
 //! costs-to-come, children for rewiring, resumable cost propagation, and pruning.
 
-use spaces::{States, Stop};
+use mit_star_spaces::{States, Stop};
 
 use crate::rrt::tree::{ROOT, Tree};
 
@@ -220,7 +220,7 @@ impl CostTree {
 mod tests {
     use super::*;
     use crate::nearest::Neighbours;
-    use spaces::{Never, RealVectorSpace};
+    use mit_star_spaces::{Never, RealVectorSpace};
 
     #[test]
     fn rewiring_propagates_and_pruning_keeps_useful_branches() {

@@ -1,8 +1,10 @@
 //! [`RrtConnect`]: Kuffner and LaValle's bidirectional RRT (2000), from the framework's parts.
 
-use samplers::{CostBound, Sampler, UniformSampler};
-use spaces::{StateSpace, States, Stop};
-use validity::{Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_samplers::{CostBound, Sampler, UniformSampler};
+use mit_star_spaces::{StateSpace, States, Stop};
+use mit_star_validity::{
+    Counted, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity,
+};
 
 use crate::rrt::rrt_core::{RrtCore, problem_parts};
 use crate::rrt::tree::{ROOT, Tree, snapshot_of, steer};
@@ -39,7 +41,7 @@ use crate::{
 ///
 /// ```
 /// use mit_star::{FirstSolution, Planner, RrtConnect, TerminationExt, TimeLimit};
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let mut planner = RrtConnect::for_problem(&problem, &mit_star::Parameters::default())?;
 /// let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(5.0)))?;
 /// assert!(outcome.is_solved());
@@ -466,7 +468,7 @@ where
                 if !tree.certified[id as usize] {
                     // Polled between edges too: a certification on a grid of at most
                     // `STOP_POLL` new points does not poll.
-                    if spaces::Stop::should_stop(stop) {
+                    if mit_star_spaces::Stop::should_stop(stop) {
                         return;
                     }
                     match self.core.certify(tree.state(parent), tree.state(id), stop) {
@@ -520,7 +522,7 @@ where
         let mut iterations = 0;
         while self.core.solution.is_none() {
             stop.update(iterations, self.best_cost());
-            if spaces::Stop::should_stop(&stop) {
+            if mit_star_spaces::Stop::should_stop(&stop) {
                 break;
             }
             self.iterate(&stop);
@@ -599,7 +601,7 @@ where
     /// [`new`](Self::new).
     pub fn for_problem<P>(problem: &P, parameters: &Parameters) -> Result<Self, BuildError>
     where
-        P: problems::PlanningProblem<Space = S, Validity = V>,
+        P: mit_star_problems::PlanningProblem<Space = S, Validity = V>,
     {
         let (space, validity, query, parameters) = problem_parts(problem, parameters)?;
         Self::new(space, validity, query, parameters)
@@ -615,11 +617,11 @@ mod tests {
     fn goals_are_planted_in_polled_blocks_and_setup_resumes() {
         // 5 000 goals in R^4: blocks of 2 048 (64 KB of coordinates). Before blocks, every
         // goal was planted at once, the stop unread.
-        let world = validity::World::new(vec![0.0; 4], vec![1.0; 4]);
+        let world = mit_star_validity::World::new(vec![0.0; 4], vec![1.0; 4]);
         let goals = (0..5_000)
             .map(|i| vec![0.6 + 0.3 * (f64::from(i) / 5_000.0), 0.5, 0.5, 0.5])
             .collect();
-        let problem = problems::Problem::new("goals", world, vec![0.1; 4], goals).unwrap();
+        let problem = mit_star_problems::Problem::new("goals", world, vec![0.1; 4], goals).unwrap();
         let mut planner = RrtConnect::for_problem(&problem, &Parameters::default()).unwrap();
         let expired = TimeLimit::until(std::time::Instant::now());
         let fired = SolveStop::new(&expired);
@@ -644,7 +646,7 @@ mod tests {
 
     #[test]
     fn steps_are_at_most_the_range_and_the_first_solution_stays() {
-        let problem = problems::DividingWalls::new(2)
+        let problem = mit_star_problems::DividingWalls::new(2)
             .build()
             .unwrap()
             .with_resolution(1e-4)
@@ -681,7 +683,7 @@ mod tests {
 
     #[test]
     fn a_bad_range_is_a_typed_error() {
-        let problem = problems::DividingWalls::new(2).build().unwrap();
+        let problem = mit_star_problems::DividingWalls::new(2).build().unwrap();
         for range in [0.0, -1.0, f64::NAN, f64::INFINITY] {
             let parameters = Parameters {
                 range: Some(range),
@@ -694,7 +696,7 @@ mod tests {
 
     #[test]
     fn samples_are_checked_only_when_asked_and_paths_are_valid_from_any_draws() {
-        let problem = problems::DividingWalls::new(2)
+        let problem = mit_star_problems::DividingWalls::new(2)
             .build()
             .unwrap()
             .with_resolution(1e-4)
@@ -722,7 +724,7 @@ mod tests {
 
     #[test]
     fn the_unshifted_halton_sequence_takes_the_same_steps_for_every_seed() {
-        let problem = problems::DividingWalls::new(2)
+        let problem = mit_star_problems::DividingWalls::new(2)
             .build()
             .unwrap()
             .with_resolution(1e-4)
@@ -756,7 +758,7 @@ mod tests {
     /// balancing makes the goal tree (one state against the start tree's two) the only one
     /// that may grow.
     fn enclosed_goal_counters(n: usize, redraws: u32) -> crate::Counters {
-        let problem = problems::GoalEnclosure::new(n)
+        let problem = mit_star_problems::GoalEnclosure::new(n)
             .inside(0.02)
             .gap(0.01)
             .build()

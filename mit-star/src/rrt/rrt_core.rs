@@ -4,9 +4,9 @@
 
 use std::time::Duration;
 
-use samplers::Sampler;
-use spaces::{StateSpace, States, Stop};
-use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_samplers::Sampler;
+use mit_star_spaces::{StateSpace, States, Stop};
+use mit_star_validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::planner::validate_query;
 use crate::termination::SolveStop;
@@ -55,7 +55,7 @@ pub(crate) fn problem_parts<P>(
     parameters: &Parameters,
 ) -> Result<ProblemParts<P::Space, P::Validity>, BuildError>
 where
-    P: problems::PlanningProblem,
+    P: mit_star_problems::PlanningProblem,
 {
     Ok((
         problem.space().clone(),

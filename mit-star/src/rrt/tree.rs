@@ -2,7 +2,7 @@
 //! [`InformedRrtStar`](crate::InformedRrtStar)): a tree of states with its nearest-neighbour
 //! index, and steering by at most a range.
 
-use spaces::{StateSpace, States, Stop};
+use mit_star_spaces::{StateSpace, States, Stop};
 
 use crate::nearest::{Alive, NearestNeighbors, Neighbours};
 
@@ -143,7 +143,7 @@ pub(crate) fn snapshot_of(trees: &[Tree; 2], best_cost: f64) -> crate::Snapshot 
     let [forward_edges, reverse_edges] = edges;
     crate::Snapshot {
         states,
-        origins: vec![samplers::SampleOrigin::Drawn; kinds.len()],
+        origins: vec![mit_star_samplers::SampleOrigin::Drawn; kinds.len()],
         kinds,
         forward_edges,
         reverse_edges,
@@ -197,9 +197,9 @@ mod tests {
         assert_eq!(tree.parents, [ROOT, 0, 0]);
         assert_eq!(tree.certified, [true, false, true]);
         // The index knows only the states kept, under their new numbers.
-        let space = spaces::RealVectorSpace::cube(1, 0.0, 10.0).unwrap();
+        let space = mit_star_spaces::RealVectorSpace::cube(1, 0.0, 10.0).unwrap();
         let mut found = Neighbours::new();
-        assert!(tree.nearest(&space, &[4.6], 1, &mut found, &spaces::Never));
+        assert!(tree.nearest(&space, &[4.6], 1, &mut found, &mit_star_spaces::Never));
         assert_eq!(found.iter().next().map(|&(_, id)| id), Some(2));
     }
 }

@@ -1,8 +1,8 @@
 //! [`PathSimplifier`]: vertex reduction, random shortcuts and smoothing of a path,
 //! time-bounded.
 
-use spaces::{StateSpace, Stop};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::StateValidity;
 
 use super::path_smoothing::{PathSmoothing, SmoothingMoves};
 use super::simplification_run::{SimplificationRun, last_round, length};
@@ -42,13 +42,13 @@ const PARTIAL_STAGE_SEED: u64 = 0x6a09_e667_f3bc_c908;
 ///
 /// ```
 /// use mit_star::{FirstSolution, PathSimplifier, Planner, RrtConnect, TerminationExt, TimeLimit};
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let mut planner = RrtConnect::for_problem(&problem, &mit_star::Parameters::default())?;
 /// let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(5.0)))?;
 /// let path: Vec<Vec<f64>> = outcome.solution().unwrap().path.iter().map(<[f64]>::to_vec).collect();
 /// let simplified = PathSimplifier::new()
 ///     .seed(1)
-///     .simplify(&problem, &path, &spaces::Deadline::after(std::time::Duration::from_millis(100)))?;
+///     .simplify(&problem, &path, &mit_star_spaces::Deadline::after(std::time::Duration::from_millis(100)))?;
 /// assert!(simplified.cost <= simplified.original_cost);
 /// assert_eq!(simplified.path.first(), path.first());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -96,7 +96,7 @@ impl Simplified {
     /// The simplified path as a planner's [`Solution`](crate::Solution) in a space of
     /// `dimension` coordinates.
     pub fn solution(&self, dimension: usize) -> crate::Solution {
-        let mut path = spaces::States::with_capacity(dimension, self.path.len());
+        let mut path = mit_star_spaces::States::with_capacity(dimension, self.path.len());
         for state in &self.path {
             path.push(state);
         }
@@ -174,7 +174,7 @@ impl PathSimplifier {
     /// [`BuildError::Problem`] if the problem refuses its check step; [`BuildError::BadPath`]
     /// for a path of fewer than two states, or with a state of the wrong dimension or not
     /// finite.
-    pub fn simplify<P: problems::PlanningProblem>(
+    pub fn simplify<P: mit_star_problems::PlanningProblem>(
         &self,
         problem: &P,
         path: &[Vec<f64>],
@@ -279,18 +279,18 @@ impl PathSimplifier {
     ///
     /// ```
     /// use mit_star::PathSimplifier;
-    /// use validity::{AxisBox, World};
+    /// use mit_star_validity::{AxisBox, World};
     /// // A wall from the floor to y = 0.85, and a path high above it.
     /// let mut world = World::new(vec![0.0, 0.0], vec![1.0, 1.0]);
     /// world.add_obstacle(AxisBox::new(vec![0.5, 0.425], vec![0.002, 0.85]))?;
-    /// let problem = problems::Problem::new("wall", world, vec![0.2, 0.2], vec![vec![0.8, 0.2]])?
+    /// let problem = mit_star_problems::Problem::new("wall", world, vec![0.2, 0.2], vec![vec![0.8, 0.2]])?
     ///     .with_resolution(1e-4)?;
     /// let path = vec![vec![0.2, 0.2], vec![0.45, 0.9], vec![0.55, 0.9], vec![0.8, 0.2]];
-    /// let smoothed = PathSimplifier::new().smooth(&problem, &path, &spaces::Never)?;
+    /// let smoothed = PathSimplifier::new().smooth(&problem, &path, &mit_star_spaces::Never)?;
     /// assert!(smoothed.smoothing_moves > 0 && smoothed.cost < smoothed.original_cost);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn smooth<P: problems::PlanningProblem>(
+    pub fn smooth<P: mit_star_problems::PlanningProblem>(
         &self,
         problem: &P,
         path: &[Vec<f64>],

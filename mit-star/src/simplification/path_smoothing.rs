@@ -1,9 +1,9 @@
 //! [`PathSmoothing`]: the smoothing pass of [`PathSimplifier`](super::PathSimplifier) — interior
 //! states moved off the path to shorten it where shortcuts stall.
 
-use spaces::StateSpace;
-use spaces::rand::RngExt;
-use validity::{EdgeStatus, StateValidity};
+use mit_star_spaces::StateSpace;
+use mit_star_spaces::rand::RngExt;
+use mit_star_validity::{EdgeStatus, StateValidity};
 
 use super::simplification_run::{NEGLIGIBLE_GAIN, SimplificationRun};
 
@@ -238,9 +238,9 @@ impl PathSmoothing {
 mod tests {
     use std::cell::Cell;
 
-    use problems::Problem;
-    use spaces::StateSpace;
-    use validity::{AxisBox, World};
+    use mit_star_problems::Problem;
+    use mit_star_spaces::StateSpace;
+    use mit_star_validity::{AxisBox, World};
 
     use crate::{PathSimplifier, SmoothingMoves};
 
@@ -286,7 +286,7 @@ mod tests {
     fn smoothing_shortens_keeps_the_ends_and_never_cuts_through_a_thin_wall() {
         let problem = thin_wall();
         let path = over_the_wall();
-        let never = spaces::Never;
+        let never = mit_star_spaces::Never;
         let reduced = smoother(SmoothingMoves::Relax, 0)
             .simplify(&problem, &path, &never)
             .unwrap();
@@ -338,7 +338,7 @@ mod tests {
         let mut previous = length(&problem, &path);
         for rounds in 1..12 {
             let smoothed = smoother(SmoothingMoves::RelaxThenPerturb, rounds)
-                .simplify(&problem, &path, &spaces::Never)
+                .simplify(&problem, &path, &mit_star_spaces::Never)
                 .unwrap();
             assert!(smoothed.cost <= smoothed.original_cost);
             assert!(

@@ -2,9 +2,9 @@
 //! problem's grid, then certified), its random draws and counts — and the steps built on the
 //! check alone: vertex reduction and the shortcuts.
 
-use spaces::rand::{RngExt, SeedableRng};
-use spaces::{SeededRng, StateSpace, Stop};
-use validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_spaces::rand::{RngExt, SeedableRng};
+use mit_star_spaces::{SeededRng, StateSpace, Stop};
+use mit_star_validity::{DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::BuildError;
 
@@ -290,9 +290,9 @@ mod tests {
 
     #[test]
     fn shortcuts_that_would_gain_a_negligible_length_are_not_checked() {
-        let space = spaces::RealVectorSpace::new(vec![0.0; 2], vec![1.0; 2]).unwrap();
-        let validity = validity::AllValid;
-        let stop = spaces::Never;
+        let space = mit_star_spaces::RealVectorSpace::new(vec![0.0; 2], vec![1.0; 2]).unwrap();
+        let validity = mit_star_validity::AllValid;
+        let stop = mit_star_spaces::Never;
         // A path 0.8 long with a bump of 10⁻³: any shortcut gains a few 10⁻⁶, under 10⁻⁴ of
         // the length.
         let path = vec![

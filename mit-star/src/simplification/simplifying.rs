@@ -2,8 +2,8 @@
 
 use std::time::{Duration, Instant};
 
-use spaces::StateSpace;
-use validity::StateValidity;
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 
 use super::IdlePolish;
 use crate::planner::keep_if_cheaper;
@@ -123,7 +123,7 @@ where
         &mut self,
         simplifier: &PathSimplifier,
         path: &[Vec<f64>],
-        stop: &dyn spaces::Stop,
+        stop: &dyn mit_star_spaces::Stop,
         started: Instant,
     ) {
         let Self {

@@ -5,13 +5,13 @@
 pub mod scheduled;
 
 use mit_star::{Counters, Eit, Outcome, Planner, Solution};
-use spaces::{StateSpace, euclidean_distance};
-use validity::{StateValidity, World};
+use mit_star_spaces::{StateSpace, euclidean_distance};
+use mit_star_validity::{StateValidity, World};
 
 /// Independently re-validates a path: every segment is interpolated densely at a step of at
 /// most `step / 2` (endpoints included) and each point is tested with the world's own check.
 /// Shares no code with the planner's edge checkers.
-pub fn path_is_valid(world: &World, path: &spaces::States, step: f64) -> bool {
+pub fn path_is_valid(world: &World, path: &mit_star_spaces::States, step: f64) -> bool {
     let fine = step / 2.0;
     if path.is_empty() {
         return false;
@@ -40,7 +40,7 @@ pub fn path_is_valid(world: &World, path: &spaces::States, step: f64) -> bool {
 }
 
 /// Length of a path.
-pub fn path_length(path: &spaces::States) -> f64 {
+pub fn path_length(path: &mit_star_spaces::States) -> f64 {
     (1..path.len())
         .map(|i| euclidean_distance(&path[i - 1], &path[i]))
         .sum()
@@ -50,14 +50,20 @@ pub fn path_length(path: &spaces::States) -> f64 {
 /// goal, its cost is its length and at least the straight-line bound, it is valid by the
 /// independent check, and the planner full-checked (whitelisted) every edge of it.
 pub fn assert_solution_sound<Smp, E, H, G>(
-    planner: &Eit<spaces::RealVectorSpace, World, Smp, E, H, G>,
+    planner: &Eit<mit_star_spaces::RealVectorSpace, World, Smp, E, H, G>,
     solution: &Solution,
     start: &[f64],
     goals: &[Vec<f64>],
 ) where
-    Smp: samplers::Sampler<spaces::RealVectorSpace, validity::Counted<World>> + Clone,
-    E: validity::EdgeChecker<spaces::RealVectorSpace, validity::Counted<World>> + Clone,
-    H: heuristics::Heuristic<spaces::RealVectorSpace>,
+    Smp: mit_star_samplers::Sampler<
+            mit_star_spaces::RealVectorSpace,
+            mit_star_validity::Counted<World>,
+        > + Clone,
+    E: mit_star_validity::EdgeChecker<
+            mit_star_spaces::RealVectorSpace,
+            mit_star_validity::Counted<World>,
+        > + Clone,
+    H: mit_star_heuristics::Heuristic<mit_star_spaces::RealVectorSpace>,
     G: mit_star::Guidance,
 {
     let path = &solution.path;
@@ -95,7 +101,7 @@ pub fn assert_solution_sound<Smp, E, H, G>(
         let d = planner.space().distance(xa, xb);
         assert_eq!(
             planner.graph().edge_status(a, b, d, planner.step()),
-            validity::EdgeStatus::Valid,
+            mit_star_validity::EdgeStatus::Valid,
             "edge {a:?} → {b:?} of the path was not whitelisted"
         );
     }

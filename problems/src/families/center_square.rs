@@ -1,6 +1,6 @@
 //! [`CenterSquare`]: one cube in the middle of the space.
 
-use validity::AxisBox;
+use mit_star_validity::AxisBox;
 
 use crate::families::optimum::slab_crossing;
 use crate::families::shared::{axis_point, check_endpoints, check_positive, on_axis, unit_world};

@@ -119,7 +119,7 @@ impl DividingWalls {
     /// The closed-form optimum when start and goal differ only in `x` (type docs).
     fn optimum(&self) -> Option<f64> {
         if self.walls.is_empty() {
-            return Some(spaces::euclidean_distance(&self.start, &self.goal));
+            return Some(mit_star_spaces::euclidean_distance(&self.start, &self.goal));
         }
         let x_lo = self
             .walls
@@ -164,7 +164,7 @@ fn check_pairs(parameter: &'static str, pairs: &[(f64, f64)]) -> Result<(), Prob
 mod tests {
     use super::*;
     use crate::test_support::{polyline_is_valid, polyline_length};
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn walls_are_cut_by_every_gap() {

@@ -31,14 +31,14 @@ use crate::{Parameter, Problem, ProblemError};
 /// unknown.
 ///
 /// ```
-/// use problems::FlankingGap;
-/// use validity::StateValidity;
+/// use mit_star_problems::FlankingGap;
+/// use mit_star_validity::StateValidity;
 ///
 /// let problem = FlankingGap::new(4).build()?;
 /// assert!(problem.world().is_valid(&[0.0, 0.105, 0.0, 0.0])); // in the gap
 /// assert!(!problem.world().is_valid(&[0.0, 0.0, 0.0, 0.0])); // in the wall
 /// assert!((problem.optimum().unwrap() - 0.4606).abs() < 1e-4);
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct FlankingGap {
@@ -171,7 +171,7 @@ impl FlankingGap {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn planar_defaults_follow_pdt() {

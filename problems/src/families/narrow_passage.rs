@@ -125,7 +125,7 @@ impl NarrowPassage {
 mod tests {
     use super::*;
     use crate::test_support::{polyline_is_valid, polyline_length};
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn only_the_slot_crosses_the_wall() {

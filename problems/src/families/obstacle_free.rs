@@ -12,9 +12,9 @@ use crate::{Parameter, Problem, ProblemError};
 /// **Optimum.** The straight line, 0.8 by default.
 ///
 /// ```
-/// let problem = problems::ObstacleFree::new(16).build()?;
+/// let problem = mit_star_problems::ObstacleFree::new(16).build()?;
 /// assert_eq!(problem.optimum(), Some(0.8));
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct ObstacleFree {

@@ -1,8 +1,8 @@
 //! [`RandomRectangles`]: PDT's random rectangles — a seeded scatter of boxes.
 
+use mit_star_spaces::{SeededRng, StateSpace};
+use mit_star_validity::AxisBox;
 use rand::{RngExt, SeedableRng};
-use spaces::{SeededRng, StateSpace};
-use validity::AxisBox;
 
 use crate::families::shared::{check_endpoints, check_positive, unit_world};
 use crate::{Parameter, Problem, ProblemError};
@@ -28,14 +28,14 @@ use crate::{Parameter, Problem, ProblemError};
 /// The optimum is not known.
 ///
 /// ```
-/// use problems::RandomRectangles;
+/// use mit_star_problems::RandomRectangles;
 ///
 /// let a = RandomRectangles::new(4).seed(3).build()?;
 /// let b = RandomRectangles::new(4).seed(3).build()?;
 /// assert_eq!(a.world().obstacles().len(), 35);
 /// assert_eq!(a, b);
 /// assert_ne!(a.world(), RandomRectangles::new(4).seed(4).build()?.world());
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct RandomRectangles {
@@ -93,11 +93,11 @@ impl RandomRectangles {
     /// the space in `R^8` and above), so planners differ only in how fast they find it.
     ///
     /// ```
-    /// use problems::RandomRectangles;
+    /// use mit_star_problems::RandomRectangles;
     /// let p = RandomRectangles::cluttered(8).seed(1).build()?;
     /// assert_eq!(p.name(), "cluttered-rectangles-seed-1");
     /// assert_eq!(p.world().obstacles().len(), 110);
-    /// # Ok::<(), problems::ProblemError>(())
+    /// # Ok::<(), mit_star_problems::ProblemError>(())
     /// ```
     pub fn cluttered(n: usize) -> Self {
         let (count, min_side, max_side) = Self::cluttered_parameters(n);
@@ -212,8 +212,9 @@ impl RandomRectangles {
         }
 
         let mut world = unit_world(n);
-        let space = spaces::RealVectorSpace::new(world.lower().to_vec(), world.upper().to_vec())
-            .map_err(ProblemError::Bounds)?;
+        let space =
+            mit_star_spaces::RealVectorSpace::new(world.lower().to_vec(), world.upper().to_vec())
+                .map_err(ProblemError::Bounds)?;
         let mut rng = SeededRng::seed_from_u64(self.seed);
         let mut attempts = 0;
         while world.obstacles().len() < self.count {
@@ -243,7 +244,7 @@ impl RandomRectangles {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn the_cluttered_variant_follows_its_calibration() {
@@ -279,7 +280,7 @@ mod tests {
                     let p = make(n).seed(seed).build().unwrap();
                     !matches!(
                         p.world().segment_verdict(p.start(), &p.goals()[0]),
-                        validity::SegmentVerdict::Valid
+                        mit_star_validity::SegmentVerdict::Valid
                     )
                 })
                 .count()

@@ -1,6 +1,6 @@
 //! [`RepeatingRectangles`]: a regular lattice of small cubes.
 
-use validity::Lattice;
+use mit_star_validity::Lattice;
 
 use crate::families::shared::{axis_point, check_endpoints, check_positive, unit_world};
 use crate::{Parameter, Problem, ProblemError};
@@ -21,13 +21,13 @@ use crate::{Parameter, Problem, ProblemError};
 /// from start to goal is blocked. The optimum is not known.
 ///
 /// ```
-/// use problems::RepeatingRectangles;
-/// use validity::StateValidity;
+/// use mit_star_problems::RepeatingRectangles;
+/// use mit_star_validity::StateValidity;
 ///
 /// let problem = RepeatingRectangles::new(8).build()?;
 /// assert!(!problem.world().is_valid(&[0.0; 8])); // a cube's centre
 /// assert!(problem.world().is_valid(&[0.01; 8])); // between cubes
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct RepeatingRectangles {
@@ -128,7 +128,7 @@ impl RepeatingRectangles {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn planar_lattice_has_pitch_two_hundredths() {

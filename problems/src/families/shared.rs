@@ -1,7 +1,7 @@
 //! Shared plumbing of the problem families: the unit-cube world, walls and slots across it,
 //! parameter checks, and points on the x-axis.
 
-use validity::{AxisBox, World};
+use mit_star_validity::{AxisBox, World};
 
 use crate::ProblemError;
 

@@ -148,7 +148,7 @@ impl WallGap {
 mod tests {
     use super::*;
     use crate::test_support::{polyline_is_valid, polyline_length};
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn wall_slot_and_corridor() {

@@ -17,7 +17,7 @@
 //! | `[[lattices]]` `count`, `spacing`, `side` | no, repeated | `count^n` cubes of side `side`, centred at `lower_d + (j + 1)·spacing` |
 //!
 //! A state is valid iff it lies in the bounds and inside some anti-obstacle or inside no
-//! obstacle (PDT's semantics, [`validity::World`]); membership is closed. Integers are accepted
+//! obstacle (PDT's semantics, [`mit_star_validity::World`]); membership is closed. Integers are accepted
 //! wherever numbers are. A full example (also in `problems/examples/`):
 //!
 //! ```toml
@@ -48,9 +48,9 @@
 
 use std::path::Path;
 
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{AxisBox, Lattice, World};
 use serde::Deserialize;
-use spaces::StateSpace;
-use validity::{AxisBox, Lattice, World};
 
 use crate::{Endpoint, Location, Problem, ProblemError, ProblemFileError};
 
@@ -105,8 +105,8 @@ impl Problem {
     /// [module docs](crate::problem_file); examples in `problems/examples/`).
     ///
     /// ```
-    /// use problems::Problem;
-    /// use validity::StateValidity;
+    /// use mit_star_problems::Problem;
+    /// use mit_star_validity::StateValidity;
     ///
     /// let text = r#"
     ///     name = "wall-with-slot"
@@ -129,7 +129,7 @@ impl Problem {
     /// let err = Problem::from_toml_str(&text.replace("[0.2, 0.04]", "[0.2, 0.04, 1]"))
     ///     .unwrap_err();
     /// assert_eq!(err.to_string(), "`anti_obstacles[0].widths` has 3 values, but the bounds have 2");
-    /// # Ok::<(), problems::ProblemFileError>(())
+    /// # Ok::<(), mit_star_problems::ProblemFileError>(())
     /// ```
     ///
     /// # Errors
@@ -210,7 +210,7 @@ fn schema_error(text: &str, error: &toml::de::Error) -> ProblemFileError {
 /// 300-digit numbers. Shared by every TOML file format of the project.
 ///
 /// ```
-/// let m = problems::humanise("invalid type: floating point `100000000000000000000.0`, expected usize");
+/// let m = mit_star_problems::humanise("invalid type: floating point `100000000000000000000.0`, expected usize");
 /// assert_eq!(m, "invalid type: number `1e20`, expected a whole number, 0 or more");
 /// ```
 pub fn humanise(message: &str) -> String {
@@ -235,7 +235,7 @@ pub fn humanise(message: &str) -> String {
         let quoted = &rest[open + 1..open + 1 + close];
         out.push_str(&rest[..=open]);
         match quoted.parse::<f64>() {
-            Ok(value) if quoted.len() > 12 => out.push_str(&spaces::short_number(value)),
+            Ok(value) if quoted.len() > 12 => out.push_str(&mit_star_spaces::short_number(value)),
             _ => out.push_str(quoted),
         }
         out.push('`');
@@ -346,9 +346,9 @@ fn check_bounds(bounds: &BoundsSpec) -> Result<usize, ProblemFileError> {
 fn check_state(field: &str, state: &[f64], bounds: &BoundsSpec) -> Result<(), ProblemFileError> {
     check_length(field, state, bounds.lower.len())?;
     check_finite(field, state)?;
-    let space = spaces::RealVectorSpace::new(bounds.lower.clone(), bounds.upper.clone())
+    let space = mit_star_spaces::RealVectorSpace::new(bounds.lower.clone(), bounds.upper.clone())
         .map_err(ProblemError::Bounds)?;
-    if let Err(spaces::SpaceError::OutOfBounds {
+    if let Err(mit_star_spaces::SpaceError::OutOfBounds {
         index,
         value,
         lower,

@@ -2,8 +2,8 @@
 //! (`arm_deadline_stress --extra-boxes`, `crowded_check`): seeded 1 cm cubes around the robot.
 
 use glam::{DQuat, DVec3};
-use problems::PlanningProblem;
-use robot::{ArmProblem, Obstacle, Scene, Shape};
+use mit_star_problems::PlanningProblem;
+use mit_star_robot::{ArmProblem, Obstacle, Scene, Shape};
 
 /// `problem` with `count` seeded 1 cm cubes added within 1.2 m of the robot's base (up to
 /// 1.6 m high), less those touching its start or a goal (the fixed links would touch some in

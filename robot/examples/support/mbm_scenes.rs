@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use robot::ArmProblem;
+use mit_star_robot::ArmProblem;
 
 /// The five Panda scenes of the `panda-mbm` experiment and most arm tables, as folder names
 /// (`robot/data/panda/mbm_problems.tar.bz2` also has `bookshelf_thin` and `table_under_pick`).

@@ -1,6 +1,6 @@
 //! Certified motion for arms: proving every configuration of an edge collision-free, not only
 //! its grid points ([`ArmChecker`]'s
-//! [`StateValidity::certify_motion`](validity::StateValidity::certify_motion)).
+//! [`StateValidity::certify_motion`](mit_star_validity::StateValidity::certify_motion)).
 //!
 //! # The guarantee
 //! An arm edge certified valid has **every** configuration on it collision-free: the edge is
@@ -23,8 +23,8 @@
 //! The prefix and `w` are the whole state of the walk: a stopped certification keeps them in
 //! the caller's [`MotionProgress`] and the next call goes on from there.
 
-use spaces::{StateSpace, Stop, wrap_angle};
-use validity::{EdgeStatus, MotionProgress};
+use mit_star_spaces::{StateSpace, Stop, wrap_angle};
+use mit_star_validity::{EdgeStatus, MotionProgress};
 
 use crate::ArmChecker;
 use crate::checking::arm_checker::{Coordinate, Scratch, fill_on_line};
@@ -64,7 +64,7 @@ const FINAL_USEFUL: f64 = 1.1;
 const SPACING: f64 = 0.9;
 
 /// Batches between two polls of the stop condition (a batch is eight or sixteen
-/// configurations: about the [`STOP_POLL`](validity::STOP_POLL) state checks the grid walks poll
+/// configurations: about the [`STOP_POLL`](mit_star_validity::STOP_POLL) state checks the grid walks poll
 /// after, or twice that).
 const POLL_BATCHES: u32 = 4;
 

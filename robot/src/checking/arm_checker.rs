@@ -4,8 +4,8 @@ use std::ops::Range;
 use std::sync::Arc;
 
 use glam::Vec3A;
-use spaces::{StateSpace, Stop};
-use validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity};
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity};
 
 use wide::f64x4;
 
@@ -262,7 +262,7 @@ impl ArmChecker {
         let wraps = space
             .joints()
             .iter()
-            .map(|j| matches!(j.kind, spaces::JointKind::Continuous))
+            .map(|j| matches!(j.kind, mit_star_spaces::JointKind::Continuous))
             .collect();
         Self {
             shared: Arc::new(Shared {
@@ -513,7 +513,7 @@ pub(crate) fn fill_on_line(
             let x = match kind {
                 Coordinate::AsIs => x,
                 Coordinate::Between(low, high) => x.max(f64x4::splat(low)).min(f64x4::splat(high)),
-                Coordinate::Wrapped => f64x4::from(x.to_array().map(spaces::wrap_angle)),
+                Coordinate::Wrapped => f64x4::from(x.to_array().map(mit_star_spaces::wrap_angle)),
             };
             // Lanes `4h … 4h + 3`: cleared where outside the limits, the others kept.
             let within = (x.simd_ge(lo) & x.simd_le(hi)).to_bitmask();

@@ -1,8 +1,8 @@
 //! [`MotionAudit`]: an arm motion checked continuously in `f64`, independently of the planner's
 //! checker — the re-check the experiment harness applies to every returned arm path.
 
-use spaces::{JointKind, StateSpace, wrap_angle};
-use validity::StateValidity;
+use mit_star_spaces::{JointKind, StateSpace, wrap_angle};
+use mit_star_validity::StateValidity;
 
 use crate::checking::audit_broad_phase::{AuditBroadPhase, PairRates, Tests};
 use crate::{Motion, ParryChecker, RobotModel, Scene};
@@ -62,19 +62,19 @@ pub enum AuditVerdict {
 /// continuous joints the short way round.
 ///
 /// ```
-/// use robot::{AuditVerdict, MotionAudit};
+/// use mit_star_robot::{AuditVerdict, MotionAudit};
 /// let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/box_panda");
-/// let problem = robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
+/// let problem = mit_star_robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
 /// let audit = MotionAudit::new(problem.robot(), problem.scene());
-/// let start = problems::PlanningProblem::start(&problem).to_vec();
+/// let start = mit_star_problems::PlanningProblem::start(&problem).to_vec();
 /// let verdict = audit.audit(&start, &start, 1_000);
 /// assert!(matches!(verdict, AuditVerdict::Clear { .. }));
-/// # Ok::<(), robot::ArmError>(())
+/// # Ok::<(), mit_star_robot::ArmError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct MotionAudit {
     checker: ParryChecker,
-    space: spaces::JointSpace,
+    space: mit_star_spaces::JointSpace,
     dimension: usize,
     /// `speeds[s · dimension + j]`: how fast sphere `s`'s centre moves per unit of `q_j`.
     speeds: Vec<f64>,
@@ -201,7 +201,7 @@ impl MotionAudit {
 
     /// The joint space whose straight lines it audits (its metric measures a path's length:
     /// weighted, the short way round for continuous joints).
-    pub fn space(&self) -> &spaces::JointSpace {
+    pub fn space(&self) -> &mit_star_spaces::JointSpace {
         &self.space
     }
 

@@ -3,11 +3,11 @@
 use std::sync::Arc;
 
 use glam::{DAffine3, DQuat, DVec3};
+use mit_star_spaces::StateSpace;
+use mit_star_validity::StateValidity;
 use parry3d_f64::math::Pose;
 use parry3d_f64::query::{distance, intersection_test};
 use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape};
-use spaces::StateSpace;
-use validity::StateValidity;
 
 use crate::checking::audit_clouds::AuditClouds;
 use crate::checking::scratch_cell::ScratchCell;
@@ -43,13 +43,13 @@ struct Shared {
 /// robot sphere, which states the tolerance of a comparison on touching contacts.
 ///
 /// ```
-/// use validity::StateValidity;
+/// use mit_star_validity::StateValidity;
 /// let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/box_panda");
-/// let problem = robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
-/// let reference = robot::ParryChecker::new(problem.robot(), problem.scene());
-/// let start = problems::PlanningProblem::start(&problem).to_vec();
+/// let problem = mit_star_robot::ArmProblem::panda_mbm(folder.as_ref(), 1)?;
+/// let reference = mit_star_robot::ParryChecker::new(problem.robot(), problem.scene());
+/// let start = mit_star_problems::PlanningProblem::start(&problem).to_vec();
 /// assert!(reference.is_valid(&start));
-/// # Ok::<(), robot::ArmError>(())
+/// # Ok::<(), mit_star_robot::ArmError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct ParryChecker {

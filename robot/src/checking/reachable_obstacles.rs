@@ -16,7 +16,7 @@ use std::ops::Range;
 use std::sync::Arc;
 
 use glam::{DAffine3, Vec3A};
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::{CloudObstacle, Kinematics, LeverArms, Motion, Obstacle, RobotModel};
 
@@ -98,7 +98,7 @@ mod tests {
     use super::*;
     use crate::{ArmChecker, Scene, Shape};
     use glam::{DQuat, DVec3};
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     /// A box the arm cannot reach is dropped for every link; one at the base is kept for the
     /// base; the checker answers as without the culling on random configurations.
@@ -142,7 +142,8 @@ mod tests {
         let checker = ArmChecker::new(robot, &scene);
         let reference = crate::ParryChecker::new(robot, &scene);
         let space = robot.joint_space();
-        let mut rng = <spaces::SeededRng as spaces::rand::SeedableRng>::seed_from_u64(3);
+        let mut rng =
+            <mit_star_spaces::SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(3);
         let mut q = vec![0.0; 7];
         let mut invalid = 0;
         for _ in 0..2000 {

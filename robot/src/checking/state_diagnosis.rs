@@ -4,8 +4,8 @@
 use std::fmt;
 
 use glam::{DAffine3, DVec3};
-use spaces::JointKind;
-use validity::StateValidity;
+use mit_star_spaces::JointKind;
+use mit_star_validity::StateValidity;
 
 use crate::{ArmChecker, Kinematics, RobotModel, Scene};
 
@@ -45,10 +45,10 @@ pub struct Contact {
 /// the checker grows every sphere by it, so a gap that small is refused too.
 ///
 /// ```
-/// use robot::{ArmProblem, StateDiagnosis};
+/// use mit_star_robot::{ArmProblem, StateDiagnosis};
 /// let robot = ArmProblem::panda()?;
-/// let scene = robot::Scene::new(vec![]);
-/// let checker = robot::ArmChecker::new(&robot, &scene);
+/// let scene = mit_star_robot::Scene::new(vec![]);
+/// let checker = mit_star_robot::ArmChecker::new(&robot, &scene);
 /// let home = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
 /// let diagnosis = StateDiagnosis::of(&robot, &scene, &checker, &home);
 /// assert!(diagnosis.valid && diagnosis.limits.is_empty());

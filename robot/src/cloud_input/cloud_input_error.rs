@@ -17,7 +17,7 @@ pub enum CloudInputError {
     Io {
         /// The file.
         path: PathBuf,
-        /// The reason (a [`problems::BoundedReadError`] inside for a device or a size).
+        /// The reason (a [`mit_star_problems::BoundedReadError`] inside for a device or a size).
         source: std::io::Error,
     },
     /// The file's extension names no format this crate reads.

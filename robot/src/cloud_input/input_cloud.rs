@@ -139,10 +139,10 @@ impl InputCloud {
     /// an error. `name` names the array in errors.
     ///
     /// ```
-    /// let cloud = robot::InputCloud::from_xyz("camera", &[0.0_f32, 1.0, 2.0, f32::NAN, 0.0, 0.0])?;
+    /// let cloud = mit_star_robot::InputCloud::from_xyz("camera", &[0.0_f32, 1.0, 2.0, f32::NAN, 0.0, 0.0])?;
     /// assert_eq!((cloud.len(), cloud.dropped_non_finite), (1, 1));
-    /// assert!(robot::InputCloud::from_xyz("pairs", &[0.0_f64, 1.0]).is_err());
-    /// # Ok::<(), robot::CloudInputError>(())
+    /// assert!(mit_star_robot::InputCloud::from_xyz("pairs", &[0.0_f64, 1.0]).is_err());
+    /// # Ok::<(), mit_star_robot::CloudInputError>(())
     /// ```
     ///
     /// # Errors
@@ -180,8 +180,8 @@ impl InputCloud {
 /// std::fs::create_dir_all(&dir)?;
 /// let file = dir.join("two.ply");
 /// let points = [Vec3::new(0.1, 0.2, 0.3), Vec3::new(-1.0, 0.0, 2.5)];
-/// robot::write_ply(&file, &points, robot::PlyEncoding::BinaryLittleEndian)?;
-/// let cloud = robot::read_cloud(&file)?;
+/// mit_star_robot::write_ply(&file, &points, mit_star_robot::PlyEncoding::BinaryLittleEndian)?;
+/// let cloud = mit_star_robot::read_cloud(&file)?;
 /// assert_eq!(cloud.points, points);
 /// # std::fs::remove_dir_all(&dir)?;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -197,11 +197,12 @@ pub fn read_cloud(path: &Path) -> Result<InputCloud, CloudInputError> {
             .map(|e| e.to_string_lossy().to_lowercase())
             .unwrap_or_default(),
     })?;
-    let bytes = problems::read_bounded_bytes(path, MAX_CLOUD_FILE_BYTES, "point cloud file")
-        .map_err(|e| CloudInputError::Io {
-            path: path.to_owned(),
-            source: e.into(),
-        })?;
+    let bytes =
+        mit_star_problems::read_bounded_bytes(path, MAX_CLOUD_FILE_BYTES, "point cloud file")
+            .map_err(|e| CloudInputError::Io {
+                path: path.to_owned(),
+                source: e.into(),
+            })?;
     let origin = path.display().to_string();
     let sink = parse_with(&bytes, format, &origin)?;
     sink.finish(

@@ -25,7 +25,7 @@
 //!   a dependency (and `ndarray`) for that would cost more than the sixty lines it saves.
 //!
 //! # Limits and bad input
-//! Files are read whole through [`problems::read_bounded_bytes`] (a device, a pipe or a
+//! Files are read whole through [`mit_star_problems::read_bounded_bytes`] (a device, a pipe or a
 //! folder is refused; at most [`MAX_CLOUD_FILE_BYTES`]). A header's point count is checked
 //! against [`MAX_CLOUD_POINTS`] before anything is allocated, and binary data against the
 //! header before it is read: a count larger than the data is [`CloudInputError::Truncated`],

@@ -109,7 +109,7 @@ pub(super) fn parse_npy(bytes: &[u8], origin: &str) -> Result<PointSink, CloudIn
                 "descr",
                 format!(
                     "dtype `{}`: a cloud is float32 or float64 (`<f4`, `<f8`, `>f4`, `>f8`)",
-                    problems::excerpt(descr, 40)
+                    mit_star_problems::excerpt(descr, 40)
                 ),
             ));
         }
@@ -120,7 +120,7 @@ pub(super) fn parse_npy(bytes: &[u8], origin: &str) -> Result<PointSink, CloudIn
         other => {
             return Err(header_error(format!(
                 "fortran_order `{}`",
-                problems::excerpt(other, 20)
+                mit_star_problems::excerpt(other, 20)
             )));
         }
     };
@@ -136,7 +136,7 @@ pub(super) fn parse_npy(bytes: &[u8], origin: &str) -> Result<PointSink, CloudIn
         [n, "3"] => n.parse().map_err(|_| {
             header_error(format!(
                 "shape entry `{}` is not a count",
-                problems::excerpt(n, 30)
+                mit_star_problems::excerpt(n, 30)
             ))
         })?,
         _ => {
@@ -144,7 +144,7 @@ pub(super) fn parse_npy(bytes: &[u8], origin: &str) -> Result<PointSink, CloudIn
                 "shape",
                 format!(
                     "shape `{}`: a cloud is an N×3 array",
-                    problems::excerpt(shape, 40)
+                    mit_star_problems::excerpt(shape, 40)
                 ),
             ));
         }

@@ -178,7 +178,10 @@ pub(super) fn parse_pcd(bytes: &[u8], origin: &str) -> Result<PointSink, CloudIn
                         xyz[axis] = word.parse().map_err(|_| {
                             data_error(
                                 &location,
-                                format!("`{}` is not a number", problems::excerpt(word, 40)),
+                                format!(
+                                    "`{}` is not a number",
+                                    mit_star_problems::excerpt(word, 40)
+                                ),
                             )
                         })?;
                     }
@@ -265,7 +268,7 @@ fn parse_header<'a>(bytes: &'a [u8], origin: &str) -> Result<(Header, &'a [u8]),
                     _ => {
                         return Err(header_error(format!(
                             "line {number}: unknown DATA `{}` (ascii, binary or binary_compressed)",
-                            problems::excerpt(&rest.join(" "), 40)
+                            mit_star_problems::excerpt(&rest.join(" "), 40)
                         )));
                     }
                 };
@@ -274,7 +277,7 @@ fn parse_header<'a>(bytes: &'a [u8], origin: &str) -> Result<(Header, &'a [u8]),
             other => {
                 return Err(header_error(format!(
                     "line {number}: unknown header entry `{}`",
-                    problems::excerpt(other, 40)
+                    mit_star_problems::excerpt(other, 40)
                 )));
             }
         }

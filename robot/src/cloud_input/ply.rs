@@ -168,7 +168,7 @@ fn parse_header(bytes: &[u8]) -> Result<(Encoding, Vec<Element>, &[u8]), String>
             _ => {
                 return Err(format!(
                     "line {number}: cannot read `{}`",
-                    problems::excerpt(line, 80)
+                    mit_star_problems::excerpt(line, 80)
                 ));
             }
         }
@@ -360,7 +360,7 @@ impl Reader<'_> {
                                 xyz[axis] = w.parse().map_err(|_| {
                                     data_error(format!(
                                         "`{}` is not a number",
-                                        problems::excerpt(w, 40)
+                                        mit_star_problems::excerpt(w, 40)
                                     ))
                                 })?;
                             }
@@ -370,7 +370,7 @@ impl Reader<'_> {
                             let n: usize = w.parse().map_err(|_| {
                                 data_error(format!(
                                     "list count `{}` is not a count",
-                                    problems::excerpt(w, 40)
+                                    mit_star_problems::excerpt(w, 40)
                                 ))
                             })?;
                             for _ in 0..n {

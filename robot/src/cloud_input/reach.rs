@@ -2,7 +2,7 @@
 //! cloud to what the robot can touch.
 
 use glam::{DAffine3, DVec3};
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::{Motion, RobotModel};
 

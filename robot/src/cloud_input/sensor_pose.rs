@@ -10,14 +10,14 @@ use super::cloud_input_error::CloudInputError;
 /// ```
 /// use glam::{DQuat, DVec3, Vec3};
 /// // A camera 1 m above the base, looking down (its z axis along the base's −z).
-/// let pose = robot::SensorPose::new(
+/// let pose = mit_star_robot::SensorPose::new(
 ///     DVec3::new(0.0, 0.0, 1.0),
 ///     DQuat::from_rotation_x(std::f64::consts::PI),
 /// )?;
 /// let mut points = vec![Vec3::new(0.0, 0.0, 0.75)];
 /// pose.apply(&mut points);
 /// assert!((points[0] - Vec3::new(0.0, 0.0, 0.25)).length() < 1e-6);
-/// # Ok::<(), robot::CloudInputError>(())
+/// # Ok::<(), mit_star_robot::CloudInputError>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SensorPose {

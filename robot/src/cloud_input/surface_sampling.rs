@@ -2,8 +2,8 @@
 //! benchmark (`evaluate_mbm.py --pointcloud True`), seeded.
 
 use glam::{DVec3, Vec3};
-use spaces::SeededRng;
-use spaces::rand::{RngExt, SeedableRng};
+use mit_star_spaces::SeededRng;
+use mit_star_spaces::rand::{RngExt, SeedableRng};
 
 use super::cloud_input_error::CloudInputError;
 use super::input_cloud::{CloudOrigin, InputCloud, MAX_CLOUD_POINTS};
@@ -23,12 +23,12 @@ pub const DEFAULT_SAMPLES_PER_OBSTACLE: usize = 10_000;
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
-/// use robot::{Obstacle, Shape};
+/// use mit_star_robot::{Obstacle, Shape};
 /// let ball = Obstacle::new(Shape::Sphere { radius: 0.1 }, DVec3::X, DQuat::IDENTITY);
-/// let cloud = robot::sample_surfaces(&[ball], 1000, 7)?;
+/// let cloud = mit_star_robot::sample_surfaces(&[ball], 1000, 7)?;
 /// assert_eq!(cloud.len(), 1000);
 /// assert!(cloud.points.iter().all(|p| (p.as_dvec3().distance(DVec3::X) - 0.1).abs() < 1e-6));
-/// # Ok::<(), robot::CloudInputError>(())
+/// # Ok::<(), mit_star_robot::CloudInputError>(())
 /// ```
 ///
 /// # Errors

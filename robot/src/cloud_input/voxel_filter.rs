@@ -18,10 +18,10 @@ use super::filter_report::FilterReport;
 /// ```
 /// use glam::Vec3;
 /// let mut points = vec![Vec3::new(0.001, 0.0, 0.0), Vec3::new(0.015, 0.01, 0.0), Vec3::new(0.03, 0.0, 0.0)];
-/// let report = robot::voxel_downsample(&mut points, 0.02)?;
+/// let report = mit_star_robot::voxel_downsample(&mut points, 0.02)?;
 /// assert_eq!(points, [Vec3::new(0.001, 0.0, 0.0), Vec3::new(0.03, 0.0, 0.0)]);
 /// assert_eq!((report.before, report.after), (3, 2));
-/// # Ok::<(), robot::CloudInputError>(())
+/// # Ok::<(), mit_star_robot::CloudInputError>(())
 /// ```
 ///
 /// # Errors

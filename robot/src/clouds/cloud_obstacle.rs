@@ -14,7 +14,7 @@ use crate::{PointCloud, PointTree};
 ///
 /// ```
 /// use glam::Vec3;
-/// use robot::{CloudObstacle, PointCloud, Scene};
+/// use mit_star_robot::{CloudObstacle, PointCloud, Scene};
 /// let cloud = PointCloud::new(vec![Vec3::new(0.5, 0.0, 0.3), Vec3::new(0.5, 0.02, 0.3)])?;
 /// let obstacle = CloudObstacle::new("camera", cloud);
 /// assert!(obstacle.touches_sphere(Vec3::new(0.45, 0.0, 0.3), 0.048));
@@ -23,7 +23,7 @@ use crate::{PointCloud, PointTree};
 /// assert!(lower <= 0.1 - 0.0025 && lower > 0.0974);
 /// let scene = Scene::new(vec![]).with_cloud(obstacle);
 /// assert_eq!(scene.clouds().len(), 1);
-/// # Ok::<(), robot::CloudError>(())
+/// # Ok::<(), mit_star_robot::CloudError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct CloudObstacle {
@@ -56,7 +56,7 @@ impl CloudObstacle {
     pub fn new_polled(
         name: impl Into<String>,
         cloud: PointCloud,
-        stop: &dyn spaces::Stop,
+        stop: &dyn mit_star_spaces::Stop,
     ) -> Option<Self> {
         let tree = PointTree::new_polled(cloud.points(), stop)?;
         Some(Self::with_tree(name.into(), cloud, tree))

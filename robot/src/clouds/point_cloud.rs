@@ -13,7 +13,7 @@ use crate::CloudError;
 ///
 /// ```
 /// use glam::Vec3;
-/// use robot::{CloudError, PointCloud};
+/// use mit_star_robot::{CloudError, PointCloud};
 /// let cloud = PointCloud::new(vec![Vec3::new(0.5, 0.0, 0.2), Vec3::new(0.5, 0.1, 0.2)])?
 ///     .with_radius(0.005)?;
 /// assert_eq!(cloud.len(), 2);

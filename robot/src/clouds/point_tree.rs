@@ -2,7 +2,7 @@
 //! boxes over the points, laid out implicitly, with leaves of at most eight points.
 
 use glam::Vec3;
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 use crate::lane_f32::{LANES, LaneF32};
 
@@ -68,7 +68,7 @@ impl PointTree {
     /// If `points` is empty or holds more than `u32::MAX` points (a
     /// [`PointCloud`](crate::PointCloud) holds neither).
     pub fn new(points: &[Vec3]) -> Self {
-        Self::new_polled(points, &spaces::Never).expect("never stopped")
+        Self::new_polled(points, &mit_star_spaces::Never).expect("never stopped")
     }
 
     /// As [`new`](Self::new), polling `stop` every few thousand nodes: `None` if it said to

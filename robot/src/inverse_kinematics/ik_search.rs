@@ -4,8 +4,8 @@
 use std::f64::consts::TAU;
 
 use glam::DVec3;
-use spaces::{StateSpace, Stop, wrap_angle};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, Stop, wrap_angle};
+use mit_star_validity::StateValidity;
 
 use crate::inverse_kinematics::dls_step::dls_step;
 use crate::inverse_kinematics::ik_solver::Limits;

@@ -2,8 +2,8 @@
 //! settings and scratch. The search itself is in `ik_search.rs`.
 
 use glam::{DAffine3, DVec3};
-use spaces::rand::SeedableRng;
-use spaces::{JointKind, JointSpace, SeededRng};
+use mit_star_spaces::rand::SeedableRng;
+use mit_star_spaces::{JointKind, JointSpace, SeededRng};
 
 use crate::inverse_kinematics::ik_chain::IkChain;
 use crate::{IkError, RobotModel};
@@ -15,21 +15,21 @@ use crate::{IkError, RobotModel};
 /// analytic geometric Jacobian, the joint limits kept by clamping after every step
 /// (continuous joints wrap), random restarts from a seeded generator (the same calls give
 /// the same answers), and only configurations the given
-/// [`StateValidity`](validity::StateValidity) accepts returned. Nothing allocates per
+/// [`StateValidity`](mit_star_validity::StateValidity) accepts returned. Nothing allocates per
 /// iteration: the buffers live in the solver, which is why solving takes `&mut self`.
 ///
 /// Built argmin-style: [`new`](Self::new) with what is required, then chained setters, each
 /// checking its value.
 ///
 /// ```
-/// use robot::{IkSolver, PoseTarget, ShippedRobot};
+/// use mit_star_robot::{IkSolver, PoseTarget, ShippedRobot};
 /// let panda = ShippedRobot::find("panda").expect("shipped").model(false)?;
 /// let mut solver = IkSolver::new(&panda, "panda_hand")?.restarts(20).seed(7);
 /// // A reachable pose: the hand where a known configuration puts it.
 /// let known = [0.3, -0.4, 0.2, -2.0, 0.1, 1.8, 0.6];
 /// let target = PoseTarget::from_pose(&solver.frame_pose(&known)?)?;
 /// let start = panda.default_configuration();
-/// let solution = solver.solve(&target, &start, &validity::AllValid, &spaces::Never)?;
+/// let solution = solver.solve(&target, &start, &mit_star_validity::AllValid, &mit_star_spaces::Never)?;
 /// assert!(solution.position_error < 1e-5 && solution.orientation_error < 1e-4);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

@@ -1,7 +1,7 @@
 //! [`PoseGoal`]: a pose target as a source of goal configurations for planners.
 
-use spaces::Stop;
-use validity::StateValidity;
+use mit_star_spaces::Stop;
+use mit_star_validity::StateValidity;
 
 use crate::{IkError, IkSolver, PoseTarget};
 
@@ -16,13 +16,13 @@ use crate::{IkError, IkSolver, PoseTarget};
 /// the given stop condition); [`solutions`](Self::solutions) are the goals so far.
 ///
 /// ```
-/// use robot::{ArmChecker, IkSolver, PoseGoal, PoseTarget, Scene, ShippedRobot};
+/// use mit_star_robot::{ArmChecker, IkSolver, PoseGoal, PoseTarget, Scene, ShippedRobot};
 /// let panda = ShippedRobot::find("panda").expect("shipped").model(false)?;
 /// let checker = ArmChecker::new(&panda, &Scene::new(Vec::new()));
 /// let mut solver = IkSolver::new(&panda, "panda_hand")?.seed(3);
 /// let target = PoseTarget::from_pose(&solver.frame_pose(&panda.default_configuration())?)?;
 /// let mut goal = PoseGoal::new(solver, target);
-/// let deadline = spaces::Deadline::after(std::time::Duration::from_secs(5));
+/// let deadline = mit_star_spaces::Deadline::after(std::time::Duration::from_secs(5));
 /// let first = goal.next_solution(&checker, &deadline).expect("reachable").to_vec();
 /// let second = goal.next_solution(&checker, &deadline).expect("a redundant arm");
 /// assert_ne!(first, second);
@@ -79,7 +79,7 @@ impl PoseGoal {
             }
             None => {
                 let mut start = vec![0.0; self.solver.limits.len()];
-                spaces::StateSpace::sample_uniform(
+                mit_star_spaces::StateSpace::sample_uniform(
                     &self.solver.space,
                     &mut self.solver.rng,
                     &mut start,

@@ -17,7 +17,7 @@ use crate::{OrientationTolerance, PositionTolerance};
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
-/// use robot::{OrientationTolerance, PoseTarget, PositionTolerance};
+/// use mit_star_robot::{OrientationTolerance, PoseTarget, PositionTolerance};
 /// // The gripper 0.5 m ahead, pointing down (its z axis along −z), within 5°, spin free.
 /// let target = PoseTarget::new(DVec3::new(0.5, 0.0, 0.3), DQuat::from_rotation_x(std::f64::consts::PI))?
 ///     .with_position_tolerance(PositionTolerance::Ball { radius: 0.005 })?
@@ -27,7 +27,7 @@ use crate::{OrientationTolerance, PositionTolerance};
 ///     })?;
 /// assert_eq!(target.position(), DVec3::new(0.5, 0.0, 0.3));
 /// assert!(PoseTarget::new(DVec3::ZERO, DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0)).is_err());
-/// # Ok::<(), robot::IkError>(())
+/// # Ok::<(), mit_star_robot::IkError>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PoseTarget {

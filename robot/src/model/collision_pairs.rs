@@ -15,10 +15,10 @@ impl RobotModel {
     ///
     /// ```
     /// let urdf = include_str!("../../data/panda/panda_spherized.urdf");
-    /// let model = robot::RobotModel::from_urdf_str(urdf)?;
+    /// let model = mit_star_robot::RobotModel::from_urdf_str(urdf)?;
     /// assert!(model.clone().allow_collisions([("box_link", "panda_hand")]).is_ok());
     /// assert!(model.strict(true).allow_collisions([("box_link", "panda_hand")]).is_err());
-    /// # Ok::<(), robot::ModelError>(())
+    /// # Ok::<(), mit_star_robot::ModelError>(())
     /// ```
     #[must_use]
     pub fn strict(mut self, strict: bool) -> Self {

@@ -4,7 +4,7 @@
 
 use std::f64::consts::PI;
 
-use spaces::JointKind;
+use mit_star_spaces::JointKind;
 
 use crate::model::model_joint::ModelJoint;
 use crate::{ModelError, ModelWarning, RobotModel};

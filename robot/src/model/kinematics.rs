@@ -40,14 +40,14 @@ pub(crate) enum JointMotion {
 /// ```
 /// use glam::{Affine3A, Vec3A};
 /// let urdf = include_str!("../../data/panda/panda_spherized.urdf");
-/// let panda = robot::RobotModel::from_urdf_str(urdf)?;
-/// let fk = robot::Kinematics::new(&panda);
+/// let panda = mit_star_robot::RobotModel::from_urdf_str(urdf)?;
+/// let fk = mit_star_robot::Kinematics::new(&panda);
 /// let mut links = vec![Affine3A::IDENTITY; fk.link_count()];
 /// let mut centers = vec![Vec3A::ZERO; fk.sphere_count()];
 /// fk.sphere_centers(&[0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785], &mut links, &mut centers);
 /// // The base sphere does not move.
 /// assert!((centers[0] - Vec3A::new(0.0, 0.0, 0.05)).length() < 1e-6);
-/// # Ok::<(), robot::ModelError>(())
+/// # Ok::<(), mit_star_robot::ModelError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct Kinematics {

@@ -1,7 +1,7 @@
 //! [`LeverArms`]: how fast each link's collision spheres can move per unit of each joint
 //! coordinate, whatever the configuration — the bound that certified motion rests on.
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::{Motion, RobotModel};
 
@@ -24,15 +24,15 @@ use crate::{Motion, RobotModel};
 /// term is a length the joint values cannot change.
 ///
 /// ```
-/// let panda = robot::ArmProblem::panda()?;
-/// let levers = robot::LeverArms::new(&panda);
+/// let panda = mit_star_robot::ArmProblem::panda()?;
+/// let levers = mit_star_robot::LeverArms::new(&panda);
 /// let hand = panda.link_index("panda_hand").unwrap();
 /// // The hand hangs off all seven joints; the base moves with none.
 /// assert!((0..7).all(|j| levers.lever(hand, j) > 0.0));
 /// assert!((0..7).all(|j| levers.lever(0, j) == 0.0));
 /// // No point of the Panda is more than about 1.3 m from the first joint's axis.
 /// assert!(levers.lever(hand, 0) < 1.5);
-/// # Ok::<(), robot::ArmError>(())
+/// # Ok::<(), mit_star_robot::ArmError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct LeverArms {

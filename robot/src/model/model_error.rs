@@ -225,17 +225,19 @@ pub enum ModelError {
     },
     /// The joint space could not be made.
     #[error("joint space: {0}")]
-    Space(#[from] spaces::SpaceError),
+    Space(#[from] mit_star_spaces::SpaceError),
 }
 
 impl ModelError {
     /// The text of a robot description file (`what`: `"URDF"`, `"SRDF"`), read with
-    /// [`problems::read_bounded`] at [`problems::TEXT_INPUT_LIMIT`]: a device, a folder, a
+    /// [`mit_star_problems::read_bounded`] at [`mit_star_problems::TEXT_INPUT_LIMIT`]: a device, a folder, a
     /// binary or an oversized file is an [`Io`](Self::Io) error naming the file.
     pub(crate) fn read_text(path: &std::path::Path, what: &'static str) -> Result<String, Self> {
-        problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, what).map_err(|e| Self::Io {
-            path: path.to_path_buf(),
-            source: e.into(),
-        })
+        mit_star_problems::read_bounded(path, mit_star_problems::TEXT_INPUT_LIMIT, what).map_err(
+            |e| Self::Io {
+                path: path.to_path_buf(),
+                source: e.into(),
+            },
+        )
     }
 }

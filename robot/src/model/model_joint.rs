@@ -3,7 +3,7 @@
 //! following their leaders.
 
 use glam::{DAffine3, DVec3};
-use spaces::{Joint, JointKind, JointSpace, wrap_angle};
+use mit_star_spaces::{Joint, JointKind, JointSpace, wrap_angle};
 
 use crate::{LeverArms, ModelError, Motion, RobotModel};
 

@@ -2,7 +2,7 @@
 //! adjacent links, and pairs in collision in every configuration tried.
 
 use glam::{DAffine3, DVec3};
-use spaces::JointKind;
+use mit_star_spaces::JointKind;
 
 use crate::{Kinematics, ModelWarning, RobotModel};
 
@@ -114,12 +114,12 @@ impl RobotModel {
     /// ```
     /// let urdf = include_str!("../../data/ur5/ur5_spherized.urdf");
     /// let srdf = include_str!("../../data/ur5/ur5.srdf");
-    /// let ur5 = robot::RobotModel::from_urdf_str(urdf)?.with_srdf_str(srdf)?;
+    /// let ur5 = mit_star_robot::RobotModel::from_urdf_str(urdf)?.with_srdf_str(srdf)?;
     /// // The SRDF leaves wrist_2_link/fts_robotside checked; their spheres always overlap.
     /// assert_eq!(ur5.colliding_link_pairs(&ur5.default_configuration()).len(), 1);
     /// let ur5 = ur5.without_model_pairs();
     /// assert!(ur5.colliding_link_pairs(&ur5.default_configuration()).is_empty());
-    /// # Ok::<(), robot::ModelError>(())
+    /// # Ok::<(), mit_star_robot::ModelError>(())
     /// ```
     #[must_use]
     pub fn without_model_pairs(mut self) -> Self {

@@ -20,12 +20,12 @@ impl RobotModel {
     /// ```
     /// let urdf = include_str!("../../data/fetch/fetch_spherized.urdf");
     /// let srdf = include_str!("../../data/fetch/fetch.srdf");
-    /// let fetch = robot::RobotModel::from_urdf_str(urdf)?;
+    /// let fetch = mit_star_robot::RobotModel::from_urdf_str(urdf)?;
     /// assert_eq!(fetch.joint_names().len(), 8);
     /// let arm = fetch.with_group_str(srdf, "arm")?;
     /// assert_eq!(arm.joint_names().len(), 7);
     /// assert_eq!(arm.held_joints(), [("torso_lift_joint", 0.0)]);
-    /// # Ok::<(), robot::ModelError>(())
+    /// # Ok::<(), mit_star_robot::ModelError>(())
     /// ```
     ///
     /// # Errors

@@ -5,7 +5,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use glam::{DAffine3, DMat3, DQuat, DVec3};
-use spaces::{Joint, JointSpace};
+use mit_star_spaces::{Joint, JointSpace};
 
 use crate::model::joint_limits::{checked_limits, checked_mimic, keep_mimic_limits};
 use crate::model::link_visual::{LinkVisual, read_visuals};
@@ -73,10 +73,10 @@ pub struct LinkSphere {
 /// ```
 /// let urdf = include_str!("../../data/panda/panda_spherized.urdf");
 /// let srdf = include_str!("../../data/panda/panda.srdf");
-/// let panda = robot::RobotModel::from_urdf_str(urdf)?.with_srdf_str(srdf)?;
+/// let panda = mit_star_robot::RobotModel::from_urdf_str(urdf)?.with_srdf_str(srdf)?;
 /// assert_eq!(panda.joint_names().len(), 7);
 /// assert_eq!(panda.spheres().len(), 59);
-/// # Ok::<(), robot::ModelError>(())
+/// # Ok::<(), mit_star_robot::ModelError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct RobotModel {

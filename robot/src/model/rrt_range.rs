@@ -2,7 +2,7 @@
 //! ([`ShippedRobot::range`](crate::ShippedRobot::range)), a rule on the joints' spans for any
 //! other ([`RobotModel::range_rule`]).
 
-use spaces::{JointKind, JointSpace, StateSpace};
+use mit_star_spaces::{JointKind, JointSpace, StateSpace};
 
 use crate::RobotModel;
 
@@ -59,7 +59,7 @@ impl RobotModel {
 
 #[cfg(test)]
 mod tests {
-    use spaces::Joint;
+    use mit_star_spaces::Joint;
 
     use super::*;
 

@@ -9,13 +9,13 @@ use crate::{MeshResolver, RobotModel, RobotSourceError, ShippedRobot};
 /// `*_spherized.urdf` is preferred when there are several) and one `*.srdf`.
 ///
 /// ```
-/// let ur5 = robot::RobotSource::parse("ur5")?;
+/// let ur5 = mit_star_robot::RobotSource::parse("ur5")?;
 /// assert_eq!(ur5.label(), "ur5");
 /// let model = ur5.load(false)?;
 /// assert_eq!(model.joint_space().joints().len(), 6);
-/// let e = robot::RobotSource::parse("ur10").unwrap_err().to_string();
+/// let e = mit_star_robot::RobotSource::parse("ur10").unwrap_err().to_string();
 /// assert!(e.contains("panda, ur5, fetch, baxter"), "{e}");
-/// # Ok::<(), robot::RobotSourceError>(())
+/// # Ok::<(), mit_star_robot::RobotSourceError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum RobotSource {

@@ -8,11 +8,11 @@ use crate::{MeshResolver, ModelError, RobotModel};
 /// compiled in, and where its MotionBenchMaker problems are.
 ///
 /// ```
-/// let ur5 = robot::ShippedRobot::find("ur5").expect("shipped");
+/// let ur5 = mit_star_robot::ShippedRobot::find("ur5").expect("shipped");
 /// let model = ur5.model(false)?;
 /// assert_eq!(model.joint_names().len(), 6);
-/// assert!(robot::ShippedRobot::names().contains("fetch"));
-/// # Ok::<(), robot::ModelError>(())
+/// assert!(mit_star_robot::ShippedRobot::names().contains("fetch"));
+/// # Ok::<(), mit_star_robot::ModelError>(())
 /// ```
 #[derive(Debug)]
 pub struct ShippedRobot {

@@ -20,15 +20,15 @@ use crate::{Scene, SceneError};
 ///
 /// ```
 /// let folder = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/mbm/cage_panda");
-/// let indices = robot::MbmProblem::indices(folder.as_ref())?;
+/// let indices = mit_star_robot::MbmProblem::indices(folder.as_ref())?;
 /// assert_eq!(indices, [1, 2]);
-/// let problem = robot::MbmProblem::load(folder.as_ref(), 1)?;
+/// let problem = mit_star_robot::MbmProblem::load(folder.as_ref(), 1)?;
 /// assert_eq!(problem.name, "cage_panda/0001");
 /// let start = problem.start_for(&["panda_joint1", "panda_joint4"])?;
 /// assert_eq!(start.len(), 2);
 /// assert_eq!(problem.group.as_deref(), Some("panda_arm"));
-/// assert_eq!(robot::MbmProblem::group_of(folder.as_ref(), 2)?.as_deref(), Some("panda_arm"));
-/// # Ok::<(), robot::SceneError>(())
+/// assert_eq!(mit_star_robot::MbmProblem::group_of(folder.as_ref(), 2)?.as_deref(), Some("panda_arm"));
+/// # Ok::<(), mit_star_robot::SceneError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct MbmProblem {
@@ -87,12 +87,13 @@ struct JointConstraint {
 fn read_request(folder: &Path, index: usize) -> Result<(PathBuf, String, String), SceneError> {
     let request = folder.join(format!("request{index:04}.yaml"));
     let origin = request.display().to_string();
-    let text = problems::read_bounded(&request, problems::TEXT_INPUT_LIMIT, "request")
-        .map_err(std::io::Error::from)
-        .map_err(|source| SceneError::Io {
-            path: request.clone(),
-            source,
-        })?;
+    let text =
+        mit_star_problems::read_bounded(&request, mit_star_problems::TEXT_INPUT_LIMIT, "request")
+            .map_err(std::io::Error::from)
+            .map_err(|source| SceneError::Io {
+                path: request.clone(),
+                source,
+            })?;
     Ok((request, origin, text))
 }
 

@@ -17,7 +17,7 @@ use crate::{Obstacle, SceneError, Shape};
 ///
 /// ```
 /// use glam::DVec3;
-/// use robot::MovingObstacle;
+/// use mit_star_robot::MovingObstacle;
 /// let lift = MovingObstacle::new(
 ///     "lift",
 ///     DVec3::splat(0.05),
@@ -30,7 +30,7 @@ use crate::{Obstacle, SceneError, Shape};
 /// assert!((lift.center_at(3.0).z - 0.3).abs() < 1e-12); // coming down
 /// let (low, high) = lift.swept_bounds(1.5, 2.5); // over the top turn
 /// assert!((low.z - 0.35).abs() < 1e-12 && (high.z - 0.55).abs() < 1e-12);
-/// # Ok::<(), robot::SceneError>(())
+/// # Ok::<(), mit_star_robot::SceneError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct MovingObstacle {

@@ -13,7 +13,7 @@ use crate::{CloudObstacle, MovingObstacle, Obstacle, Scene};
 ///
 /// ```
 /// use glam::DVec3;
-/// use robot::{MovingObstacle, MovingScene};
+/// use mit_star_robot::{MovingObstacle, MovingScene};
 /// let slider = MovingObstacle::new(
 ///     "slider",
 ///     DVec3::splat(0.05),
@@ -25,7 +25,7 @@ use crate::{CloudObstacle, MovingObstacle, Obstacle, Scene};
 /// assert_eq!(scene.at(1.0).obstacles().len(), 1);
 /// let (_, high) = scene.moving()[0].swept_bounds(0.0, 1.0);
 /// assert!((high.y - 0.05).abs() < 1e-12);
-/// # Ok::<(), robot::SceneError>(())
+/// # Ok::<(), mit_star_robot::SceneError>(())
 /// ```
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct MovingScene {

@@ -34,7 +34,7 @@ pub enum Shape {
 ///
 /// ```
 /// use glam::{DQuat, DVec3, Vec3A};
-/// use robot::{Obstacle, Shape};
+/// use mit_star_robot::{Obstacle, Shape};
 /// let wall = Obstacle::new(
 ///     Shape::Cuboid { half_extents: DVec3::new(0.01, 0.5, 0.5) },
 ///     DVec3::new(0.5, 0.0, 0.0),

@@ -35,15 +35,15 @@ use crate::{CloudObstacle, Obstacle, SceneError, Shape};
 /// - The allowed-collision matrix is square, symmetric, and names each link once.
 ///
 /// ```
-/// let scene = robot::Scene::from_yaml_str(
+/// let scene = mit_star_robot::Scene::from_yaml_str(
 ///     "world:\n  collision_objects:\n    - id: table\n      primitives:\n        - type: box\n          dimensions: [1, 1, 0.1]\n      primitive_poses:\n        - position: [0.5, 0, -0.05]\n          orientation: [0, 0, 0, 1]\n",
 ///     "table.yaml",
 /// )?;
 /// assert_eq!(scene.obstacles().len(), 1);
 /// assert_eq!(scene.ids(), ["table"]);
-/// assert!(robot::Scene::from_yaml_str("world: null", "empty.yaml")?.obstacles().is_empty());
-/// assert!(robot::Scene::from_yaml_str("name: not a scene", "request.yaml").is_err());
-/// # Ok::<(), robot::SceneError>(())
+/// assert!(mit_star_robot::Scene::from_yaml_str("world: null", "empty.yaml")?.obstacles().is_empty());
+/// assert!(mit_star_robot::Scene::from_yaml_str("name: not a scene", "request.yaml").is_err());
+/// # Ok::<(), mit_star_robot::SceneError>(())
 /// ```
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Scene {
@@ -175,12 +175,16 @@ impl Scene {
     /// # Errors
     /// [`SceneError::Io`] if it cannot be read, else as [`from_yaml_str`](Self::from_yaml_str).
     pub fn from_yaml_file(path: &Path) -> Result<Self, SceneError> {
-        let text = problems::read_bounded(path, problems::TEXT_INPUT_LIMIT, "scene file")
-            .map_err(std::io::Error::from)
-            .map_err(|source| SceneError::Io {
-                path: path.to_path_buf(),
-                source,
-            })?;
+        let text = mit_star_problems::read_bounded(
+            path,
+            mit_star_problems::TEXT_INPUT_LIMIT,
+            "scene file",
+        )
+        .map_err(std::io::Error::from)
+        .map_err(|source| SceneError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
         Self::from_yaml_str(&text, &path.display().to_string())
     }
 
@@ -318,7 +322,7 @@ impl Scene {
 
     /// The scene without its primitives (boxes, cylinders, spheres): its clouds and allowed
     /// collisions stay. A scene seen only through a camera: sample a cloud on the primitives
-    /// first (`robot::sample_surfaces`), then add it to this.
+    /// first (`mit_star_robot::sample_surfaces`), then add it to this.
     #[must_use]
     pub fn without_primitives(mut self) -> Self {
         self.obstacles.clear();

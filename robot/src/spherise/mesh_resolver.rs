@@ -15,7 +15,7 @@ use thiserror::Error;
 ///
 /// ```
 /// use std::path::{Path, PathBuf};
-/// let resolver = robot::MeshResolver::new(None, vec![PathBuf::from(env!("CARGO_MANIFEST_DIR"))]);
+/// let resolver = mit_star_robot::MeshResolver::new(None, vec![PathBuf::from(env!("CARGO_MANIFEST_DIR"))]);
 /// let found = resolver.resolve("package://robot/Cargo.toml").unwrap();
 /// assert_eq!(found, Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.toml"));
 /// assert!(resolver.resolve("package://robot/missing.stl").is_err());

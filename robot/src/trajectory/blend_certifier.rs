@@ -1,8 +1,8 @@
 //! [`BlendCertifier`]: proves a parabolic blend collision-free by certifying a chord polyline
 //! of it with every sphere grown by more than the blend can stray from its chords.
 
-use spaces::{Never, StateSpace};
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use mit_star_spaces::{Never, StateSpace};
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 
 use crate::{ArmChecker, LeverArms, RobotModel, Sample, Scene};
 
@@ -29,7 +29,7 @@ pub struct BlendCertifier {
     /// Per growth `δ`: the checker of the grown robot.
     checkers: Vec<(f64, ArmChecker)>,
     levers: LeverArms,
-    space: spaces::JointSpace,
+    space: mit_star_spaces::JointSpace,
     /// The link indices with spheres.
     links: Vec<usize>,
 }

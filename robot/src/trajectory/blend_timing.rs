@@ -482,7 +482,7 @@ mod tests {
 
     #[test]
     fn blended_limits_hold_between_knots_and_ends_are_at_rest() {
-        use spaces::StateSpace as _;
+        use mit_star_spaces::StateSpace as _;
         // Random zigzags of three joints, certified in free space: at random instants (not
         // only knots) every velocity and acceleration is within its limit, the velocity is
         // the derivative of the position, and the motion starts and ends at rest at the ends.

@@ -23,13 +23,13 @@ use crate::TrajectoryError;
 /// (`max_position`, `has_jerk_limits`, …) and the top-level scaling defaults are ignored.
 ///
 /// ```
-/// let yaml = robot::JointLimitsYaml::parse(
+/// let yaml = mit_star_robot::JointLimitsYaml::parse(
 ///     "joint_limits:\n  j1: {has_velocity_limits: true, max_velocity: 2.0,\n       has_acceleration_limits: false, max_acceleration: 0}\n",
 ///     "text",
 /// )?;
 /// assert_eq!(yaml.velocity("j1"), Some(2.0));
 /// assert_eq!(yaml.acceleration("j1"), None);
-/// # Ok::<(), robot::TrajectoryError>(())
+/// # Ok::<(), mit_star_robot::TrajectoryError>(())
 /// ```
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct JointLimitsYaml {

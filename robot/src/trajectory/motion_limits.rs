@@ -15,9 +15,9 @@ use crate::{JointLimitsYaml, RobotModel, TrajectoryError};
 /// scaling factors.
 ///
 /// ```
-/// let panda = robot::ArmProblem::panda()?;
-/// let yaml = robot::JointLimitsYaml::parse(robot::PANDA_JOINT_LIMITS, "panda")?;
-/// let limits = robot::MotionLimits::for_robot(&panda, Some(&yaml), None)?.scaled(0.5, 1.0)?;
+/// let panda = mit_star_robot::ArmProblem::panda()?;
+/// let yaml = mit_star_robot::JointLimitsYaml::parse(mit_star_robot::PANDA_JOINT_LIMITS, "panda")?;
+/// let limits = mit_star_robot::MotionLimits::for_robot(&panda, Some(&yaml), None)?.scaled(0.5, 1.0)?;
 /// // The URDF's 2.3925 rad/s for panda_joint1, halved; MoveIt's 3.75 rad/s².
 /// assert!((limits.velocity()[0] - 0.5 * 2.3925).abs() < 1e-12);
 /// assert_eq!(limits.acceleration()[0], 3.75);

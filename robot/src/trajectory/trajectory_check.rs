@@ -1,8 +1,8 @@
 //! [`check_trajectory`]: a sampled trajectory checked against the robot, its limits and the
 //! scene — independently of how it was timed.
 
-use spaces::{JointKind, Never, StateSpace};
-use validity::{EdgeStatus, MotionProgress, StateValidity};
+use mit_star_spaces::{JointKind, Never, StateSpace};
+use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 
 use crate::{
     ArmChecker, AuditVerdict, BlendCertifier, MotionAudit, MotionLimits, RobotModel, Scene,

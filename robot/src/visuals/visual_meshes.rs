@@ -87,12 +87,12 @@ impl std::fmt::Display for MeshLoadFailure {
 /// detailed file stays large ([`triangle_count`](Self::triangle_count)).
 ///
 /// ```
-/// let panda = robot::ShippedRobot::find("panda").expect("shipped");
+/// let panda = mit_star_robot::ShippedRobot::find("panda").expect("shipped");
 /// let model = panda.model(false)?;
-/// let visuals = robot::VisualMeshes::load(&model, &panda.mesh_resolver());
+/// let visuals = mit_star_robot::VisualMeshes::load(&model, &panda.mesh_resolver());
 /// assert!(visuals.failures.is_empty(), "{:?}", visuals.failures);
 /// assert_eq!(visuals.meshes.len(), model.visuals().len());
-/// # Ok::<(), robot::ModelError>(())
+/// # Ok::<(), mit_star_robot::ModelError>(())
 /// ```
 #[derive(Debug, Default)]
 pub struct VisualMeshes {

@@ -6,9 +6,9 @@
 #![allow(dead_code)]
 
 use glam::{DQuat, DVec3};
+use mit_star_robot::{ArmProblem, Obstacle, ParryChecker, RobotModel, Scene, Shape};
+use mit_star_spaces::StateSpace;
 use proptest::prelude::*;
-use robot::{ArmProblem, Obstacle, ParryChecker, RobotModel, Scene, Shape};
-use spaces::StateSpace;
 
 pub(crate) fn panda() -> RobotModel {
     ArmProblem::panda().unwrap()
@@ -25,7 +25,7 @@ pub(crate) fn reference_hit(
     step: f64,
     grow: f64,
 ) -> Option<f64> {
-    let length = spaces::euclidean_distance(a, b);
+    let length = mit_star_spaces::euclidean_distance(a, b);
     let pieces = (length / step).ceil().max(1.0) as u64;
     let mut q = vec![0.0; a.len()];
     (0..=pieces).find_map(|k| {
@@ -46,7 +46,7 @@ pub(crate) fn reference_hit(
 /// (returned): no end touches it, and grids of 7 or more pieces walk past it.
 pub(crate) fn tab_scene(robot: &RobotModel) -> (Scene, [f64; 7], [f64; 7]) {
     // The sphere farthest from the first joint's axis, at the home configuration.
-    let fk = robot::Kinematics::new(robot);
+    let fk = mit_star_robot::Kinematics::new(robot);
     let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
     let mut centers = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
     fk.sphere_centers_f64(&HOME, &mut links, &mut centers);

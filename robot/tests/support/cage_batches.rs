@@ -10,7 +10,7 @@ use std::sync::{Arc, Mutex};
 use mit_star::{
     BatchEvent, Connection, FirstSolution, MitStar, Observer, Planner, TerminationExt, TimeLimit,
 };
-use robot::ArmProblem;
+use mit_star_robot::ArmProblem;
 
 /// The Panda's first MotionBenchMaker `cage` problem (the copy under `tests/data`).
 pub(crate) fn cage() -> ArmProblem {

@@ -52,7 +52,7 @@ pub enum ExpansionRule {
 /// [`InformedSet`](crate::InformedSet) sampled under [`CostBound::Estimated`].
 ///
 /// ```
-/// use samplers::{CostBound, EstimatedInformedSet, ExpansionForm};
+/// use mit_star_samplers::{CostBound, EstimatedInformedSet, ExpansionForm};
 /// let mut eis = EstimatedInformedSet::new();
 /// assert_eq!(eis.bound(), CostBound::Unbounded);
 /// // Half of a lazy solution of cost 2 was verified: γ = 0.5, e_γ = √1.25.
@@ -62,7 +62,7 @@ pub enum ExpansionRule {
 /// // The authors' form: e_γ = √1.5.
 /// let mut eis = EstimatedInformedSet::new().with_form(ExpansionForm::Authors);
 /// assert!((eis.create(1.0, 0.4, 0.6)? - 2.0 * 1.5f64.sqrt()).abs() < 1e-12);
-/// # Ok::<(), samplers::SamplerError>(())
+/// # Ok::<(), mit_star_samplers::SamplerError>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EstimatedInformedSet {

@@ -1,9 +1,9 @@
 //! Geometry of one prolate hyperspheroid (spec §7): its rotation, its measure, and uniform
 //! samples of the unit ball it is mapped from.
 
+use mit_star_spaces::unit_ball_measure;
 use rand::{Rng, RngExt};
 use rand_distr::{Distribution, StandardNormal};
-use spaces::unit_ball_measure;
 
 /// The rotation taking `e1` onto a unit vector `k1` by turning in the plane of the two (the
 /// identity on the orthogonal complement): `R = I + (c − 1)(e1 e1ᵀ + w wᵀ) + s (w e1ᵀ − e1 wᵀ)`
@@ -120,8 +120,8 @@ pub(crate) fn sample_unit_ball(rng: &mut dyn Rng, ball: &mut [f64]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use mit_star_spaces::SeededRng;
     use rand::SeedableRng;
-    use spaces::SeededRng;
     use std::f64::consts::PI;
 
     #[test]

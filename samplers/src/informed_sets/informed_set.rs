@@ -3,7 +3,7 @@
 use rand::{Rng, RngExt};
 use std::sync::Arc;
 
-use spaces::{StateSpace, Stop};
+use mit_star_spaces::{StateSpace, Stop};
 
 use crate::informed_sets::hyperspheroid::{
     dense_rotation, ln_unit_ball_measure, push_plane_rotation, rotate_about_centre,
@@ -27,8 +27,8 @@ use crate::{SampleError, SamplerCounters, SamplerError, prolate_hyperspheroid_me
 ///
 /// ```
 /// use rand::SeedableRng;
-/// use samplers::InformedSet;
-/// use spaces::{Never, RealVectorSpace, SeededRng, StateSpace};
+/// use mit_star_samplers::InformedSet;
+/// use mit_star_spaces::{Never, RealVectorSpace, SeededRng, StateSpace};
 ///
 /// let space = RealVectorSpace::cube(3, -1.0, 1.0)?;
 /// let mut set = InformedSet::new(&space, &[-0.5, 0.0, 0.0], &[[0.5, 0.0, 0.0]])?;
@@ -561,8 +561,8 @@ impl Metric {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use mit_star_spaces::{Never, RealVectorSpace, SeededRng};
     use rand::SeedableRng;
-    use spaces::{Never, RealVectorSpace, SeededRng};
     use std::f64::consts::PI;
 
     #[test]
@@ -670,7 +670,7 @@ mod tests {
         for _ in 0..500 {
             set.draw(&space, &mut rng, Some(0.8), &Never, &mut x)
                 .unwrap();
-            assert!(spaces::euclidean_distance(&x, &[0.1; 3]) < 0.4 + 1e-12);
+            assert!(mit_star_spaces::euclidean_distance(&x, &[0.1; 3]) < 0.4 + 1e-12);
         }
     }
 

@@ -1,9 +1,9 @@
 //! [`GaussianStep`]: the Gaussian perturbation shared by the Gaussian, bridge-test and adaptive
 //! samplers.
 
+use mit_star_spaces::StateSpace;
 use rand::Rng;
 use rand_distr::{Distribution, StandardNormal};
-use spaces::StateSpace;
 
 use crate::SamplerError;
 
@@ -19,8 +19,8 @@ use crate::SamplerError;
 ///
 /// ```
 /// use rand::SeedableRng;
-/// use samplers::GaussianStep;
-/// use spaces::{RealVectorSpace, SeededRng, StateSpace};
+/// use mit_star_samplers::GaussianStep;
+/// use mit_star_spaces::{RealVectorSpace, SeededRng, StateSpace};
 ///
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
 /// let step = GaussianStep::for_space(&space)?; // σ = 10 % of the diagonal
@@ -109,8 +109,8 @@ impl GaussianStep {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use mit_star_spaces::{RealVectorSpace, SeededRng};
     use rand::SeedableRng;
-    use spaces::{RealVectorSpace, SeededRng};
 
     #[test]
     fn rejects_bad_standard_deviations() {

@@ -1,9 +1,9 @@
 //! [`InformedDraws`]: what every informed sampler owns — the informed set, the seeded generator
 //! and the work counters — and the steps they share.
 
+use mit_star_spaces::{SeededRng, StateSpace, Stop};
+use mit_star_validity::StateValidity;
 use rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, Stop};
-use validity::StateValidity;
 
 use super::Lookahead;
 use crate::{

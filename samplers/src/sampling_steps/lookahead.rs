@@ -1,7 +1,7 @@
 //! [`Lookahead`]: candidates drawn ahead of need and checked together, one batch of the
 //! checker at a time.
 
-use validity::StateValidity;
+use mit_star_validity::StateValidity;
 
 use crate::SampleError;
 

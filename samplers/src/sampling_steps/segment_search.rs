@@ -1,8 +1,8 @@
 //! [`SegmentSearch`]: look for a valid state on the segment between two states, in bisection
 //! order — the bridge test's midpoint and the adaptive sampler's repair step.
 
-use spaces::{StateSpace, Stop};
-use validity::{EdgeGrid, StateValidity};
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{EdgeGrid, StateValidity};
 
 use super::lookahead::MOST_BATCHED;
 use crate::{SampleError, SamplerCounters, SamplerError};
@@ -16,12 +16,12 @@ use crate::{SampleError, SamplerCounters, SamplerError};
 /// bridge test's midpoint.
 ///
 /// ```
-/// use samplers::SegmentSearch;
+/// use mit_star_samplers::SegmentSearch;
 /// let search = SegmentSearch::new(8)?;
 /// let fractions: Vec<f64> = search.fractions().collect();
 /// assert_eq!(fractions, [0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875, 0.0625]);
 /// assert_eq!(SegmentSearch::midpoint().fractions().collect::<Vec<_>>(), [0.5]);
-/// # Ok::<(), samplers::SamplerError>(())
+/// # Ok::<(), mit_star_samplers::SamplerError>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct SegmentSearch {
@@ -139,7 +139,7 @@ impl SegmentSearch {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use spaces::{Never, RealVectorSpace};
+    use mit_star_spaces::{Never, RealVectorSpace};
 
     #[test]
     fn budget_is_validated() {

@@ -1,7 +1,7 @@
 //! [`Estimated`]: the sampler wrapper that gives any sampler MIT*'s estimated informed set.
 
-use spaces::{StateSpace, Stop};
-use validity::StateValidity;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::StateValidity;
 
 use crate::{
     CostBound, EstimatedInformedSet, ExpansionForm, ExpansionRule, LazyPathFailure, SampleError,
@@ -30,9 +30,9 @@ use crate::{
 /// `Estimated<InformedSampler>` MIT*-EIS's.
 ///
 /// ```
-/// use samplers::{CostBound, Estimated, InformedSampler, LazyPathFailure, Sampler};
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::AllValid;
+/// use mit_star_samplers::{CostBound, Estimated, InformedSampler, LazyPathFailure, Sampler};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::AllValid;
 ///
 /// let space = RealVectorSpace::cube(2, -1.0, 1.0)?;
 /// let inner = InformedSampler::new(&space, &[-0.5, 0.0], &[[0.5, 0.0]], 3)?;
@@ -47,7 +47,7 @@ use crate::{
 /// let cost = Sampler::<RealVectorSpace, AllValid>::estimated_cost(&sampler).unwrap();
 /// assert!((cost - estimate).abs() < 1e-12);
 /// sampler.sample(&space, &AllValid, CostBound::Unbounded, &Never, &mut x)?;
-/// let through = spaces::euclidean_distance(&x, &[-0.5, 0.0]) + spaces::euclidean_distance(&x, &[0.5, 0.0]);
+/// let through = mit_star_spaces::euclidean_distance(&x, &[-0.5, 0.0]) + mit_star_spaces::euclidean_distance(&x, &[0.5, 0.0]);
 /// assert!(through < cost);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -271,8 +271,8 @@ where
 mod tests {
     use super::*;
     use crate::{InformedSampler, UniformSampler};
-    use spaces::{Never, RealVectorSpace};
-    use validity::AllValid;
+    use mit_star_spaces::{Never, RealVectorSpace};
+    use mit_star_validity::AllValid;
 
     type Dyn = dyn Sampler<RealVectorSpace, AllValid>;
 
@@ -312,8 +312,8 @@ mod tests {
             .sample(&space, &AllValid, CostBound::Unbounded, &Never, &mut x)
             .unwrap();
         assert!(!sampler.wants_batch());
-        let through = spaces::euclidean_distance(&x, &[-0.5, 0.0])
-            + spaces::euclidean_distance(&x, &[0.5, 0.0]);
+        let through = mit_star_spaces::euclidean_distance(&x, &[-0.5, 0.0])
+            + mit_star_spaces::euclidean_distance(&x, &[0.5, 0.0]);
         assert!(through < cost);
     }
 

@@ -1,9 +1,9 @@
 //! [`NearTerminals`]: a wrapper that draws a fraction of the states close to the start and the
 //! goals, at every scale.
 
+use mit_star_spaces::{SeededRng, StateSpace, Stop};
+use mit_star_validity::StateValidity;
 use rand::RngExt;
-use spaces::{SeededRng, StateSpace, Stop};
-use validity::StateValidity;
 
 use crate::sampling_steps::{InformedDraws, MOST_BATCHED};
 use crate::{
@@ -63,9 +63,9 @@ use rays::RayScratch;
 /// sampler's random sequence untouched.
 ///
 /// ```
-/// use samplers::{CostBound, NearTerminals, SampleOrigin, Sampler, UniformSampler};
-/// use spaces::{Never, RealVectorSpace, StateSpace, euclidean_distance};
-/// use validity::World;
+/// use mit_star_samplers::{CostBound, NearTerminals, SampleOrigin, Sampler, UniformSampler};
+/// use mit_star_spaces::{Never, RealVectorSpace, StateSpace, euclidean_distance};
+/// use mit_star_validity::World;
 ///
 /// let space = RealVectorSpace::cube(7, 0.0, 10.0)?;
 /// let world = World::in_space(&space);

@@ -27,13 +27,13 @@ pub enum Preparation {
 /// The [`GridWalker`](crate::GridWalker) owns one and reuses it for every edge, so preparing an
 /// edge allocates nothing once the buffers have grown to the world's size. It is prepared only
 /// in spaces whose edges are straight lines
-/// ([`StateSpace::is_euclidean`](spaces::StateSpace::is_euclidean)); the points are computed
+/// ([`StateSpace::is_euclidean`](mit_star_spaces::StateSpace::is_euclidean)); the points are computed
 /// with exactly the floating-point operations of their `interpolate`,
 /// `x + (y − x)·t` per coordinate, so a prepared check answers bit for bit what interpolating
 /// and testing state by state would.
 ///
 /// ```
-/// use validity::Segment;
+/// use mit_star_validity::Segment;
 /// let mut segment = Segment::default();
 /// segment.set(&[0.0, 1.0], &[1.0, 3.0]);
 /// let mut point = [0.0; 2];

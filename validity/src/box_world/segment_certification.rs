@@ -19,7 +19,7 @@
 //! tests, in the same passes (only the first invalid fraction is not sought). Once the
 //! scratch's buffers have grown to the world, a certification allocates nothing.
 
-use spaces::Stop;
+use mit_star_spaces::Stop;
 
 use crate::box_world::segment_validation::{
     FRACTIONS, Interval, crossed_interval, intersect_into, lattice_cubes, lattice_slab,
@@ -347,7 +347,7 @@ impl World {
 
 #[cfg(test)]
 mod tests {
-    use spaces::{Never, RealVectorSpace};
+    use mit_star_spaces::{Never, RealVectorSpace};
 
     use super::*;
     use crate::{AxisBox, GridWalker, Lattice, StateValidity};

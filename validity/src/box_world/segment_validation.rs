@@ -78,7 +78,7 @@ impl World {
     /// docs: slab tests against every box, anti-obstacle coverage, bounds; no grid).
     ///
     /// ```
-    /// use validity::{AxisBox, SegmentCause, SegmentVerdict, World};
+    /// use mit_star_validity::{AxisBox, SegmentCause, SegmentVerdict, World};
     /// // A wall 1e-6 thick across the square: no grid at step 5e-6 sees it; this does.
     /// let world = World::new(vec![-0.5; 2], vec![0.5; 2])
     ///     .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![1e-6, 1.0]))?;
@@ -90,7 +90,7 @@ impl World {
     ///     SegmentVerdict::Valid => unreachable!(),
     /// }
     /// assert!(world.segment_verdict(&[-0.3, 0.0], &[-0.1, 0.2]).is_valid());
-    /// # Ok::<(), validity::ValidityError>(())
+    /// # Ok::<(), mit_star_validity::ValidityError>(())
     /// ```
     pub fn segment_verdict(&self, a: &[f64], b: &[f64]) -> SegmentVerdict {
         let n = self.dimension();

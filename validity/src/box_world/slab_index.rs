@@ -106,9 +106,9 @@ impl SlabIndex {
     /// 5 µs), and with 10⁵ large boxes in R^4 or R^8 it is 3–7× faster on average (its worst
     /// check about 0.1 ms).
     ///
-    /// Measured with `cargo test --release -p validity --lib slab_index -- --ignored
+    /// Measured with `cargo test --release -p mit-star-validity --lib slab_index -- --ignored
     /// --nocapture` (the mean over uniform points, and the worst of free points among many
-    /// boxes, a start state's place) and `cargo run --release -p validity --example
+    /// boxes, a start state's place) and `cargo run --release -p mit-star-validity --example
     /// large_world`.
     pub(crate) fn serves(count: usize, dimension: usize, side: f64) -> bool {
         Self::hierarchy_is_shallow(count, dimension) && side >= 0.1

@@ -1,13 +1,13 @@
 //! [`World`]: axis-aligned box obstacles and anti-obstacles in any dimension (PDT semantics).
 
-use spaces::{StateSpace, Stop};
+use mit_star_spaces::{StateSpace, Stop};
 
 use crate::box_world::box_set::BoxSet;
 use crate::{EdgeStatus, MotionProgress, Preparation, Segment, StateValidity, ValidityError};
 
 /// Above this many boxes a world checks states through a bounding-volume hierarchy; at or
 /// below it a linear scan of the contiguous rows is as fast. Measured with
-/// `LARGE_WORLD_BOXES=32 cargo run --release -p validity --example large_world` (and 33): about
+/// `LARGE_WORLD_BOXES=32 cargo run --release -p mit-star-validity --example large_world` (and 33): about
 /// 160 ns per check in R^4 either way; at 128 boxes the hierarchy is 4–9× faster.
 pub const TREE_THRESHOLD: usize = 32;
 
@@ -62,14 +62,14 @@ pub struct Lattice {
 /// scan with early exit and never allocates.
 ///
 /// ```
-/// use validity::{AxisBox, StateValidity, World};
+/// use mit_star_validity::{AxisBox, StateValidity, World};
 /// let world = World::new(vec![-0.5; 2], vec![0.5; 2])
 ///     .with_obstacle(AxisBox::new(vec![0.0, 0.0], vec![0.1, 1.0]))?
 ///     .with_anti_obstacle(AxisBox::new(vec![0.0, 0.2], vec![0.1, 0.05]))?;
 /// assert!(!world.is_valid(&[0.0, 0.0]));  // in the wall
 /// assert!(world.is_valid(&[0.0, 0.2]));   // in the gap
 /// assert!(!world.is_valid(&[0.7, 0.0]));  // out of bounds
-/// # Ok::<(), validity::ValidityError>(())
+/// # Ok::<(), mit_star_validity::ValidityError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct World {
@@ -179,7 +179,7 @@ impl World {
     /// boxes, and a slab index in many dimensions), which are otherwise built at the first
     /// check after a change: 0.2 s for 10⁵ boxes in R^32, which should not fall in the budget
     /// of the first planner that checks. Clones made afterwards share them.
-    /// `problems::Problem` calls it when a problem is made.
+    /// `mit_star_problems::Problem` calls it when a problem is made.
     pub fn build_indices(&self) {
         let n = self.lower.len();
         self.obstacles.build_indices(n);

@@ -1,6 +1,6 @@
 //! [`DenseChecker`]: OMPL-style fixed-resolution edge checking, no sparse phase.
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::{EdgeChecker, GridWalker, StateValidity, ValidityError};
 
@@ -10,15 +10,15 @@ use crate::{EdgeChecker, GridWalker, StateValidity, ValidityError};
 /// collision checking use it; for lazy planners it is the "no sparse checks" ablation.
 ///
 /// ```
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::{AllValid, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::{AllValid, DenseChecker, EdgeChecker, EdgeProgress, EdgeStatus};
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
 /// let mut checker = DenseChecker::from_resolution(&space, 0.01).unwrap();
 /// let mut progress = EdgeProgress::default();
 /// let status = checker.check_sparse(&space, &AllValid, &[0.0, 0.0], &[1.0, 1.0], &mut progress, &Never);
 /// assert_eq!(status, EdgeStatus::Valid);
 /// assert_eq!(progress.tested(), 99); // N = ceil(√2 / (0.01·√2)) = 100 intervals
-/// # Ok::<(), spaces::SpaceError>(())
+/// # Ok::<(), mit_star_spaces::SpaceError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct DenseChecker {

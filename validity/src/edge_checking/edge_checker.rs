@@ -1,6 +1,6 @@
 //! The [`EdgeChecker`] trait: sparse and full checks of an edge with per-edge memory.
 
-use spaces::{StateSpace, Stop};
+use mit_star_spaces::{StateSpace, Stop};
 
 use crate::{
     EdgeCounters, EdgeGrid, EdgeProgress, EdgeStatus, GridWalker, StateValidity, canonical_ends,

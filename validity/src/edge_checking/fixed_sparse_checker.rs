@@ -1,6 +1,6 @@
 //! [`FixedSparseChecker`]: EIT*'s sparse levels of 1, 3, 7, 15, … checks per edge.
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::{EdgeChecker, GridWalker, StateValidity, ValidityError};
 
@@ -8,8 +8,8 @@ use crate::{EdgeChecker, GridWalker, StateValidity, ValidityError};
 /// points of the edge's bisection order (1, 3, 7, 15, …), whatever the edge's length.
 ///
 /// ```
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::{AllValid, EdgeChecker, EdgeProgress, FixedSparseChecker};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::{AllValid, EdgeChecker, EdgeProgress, FixedSparseChecker};
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
 /// let mut checker = FixedSparseChecker::new(1e-3).unwrap();
 /// let mut progress = EdgeProgress::default();
@@ -17,7 +17,7 @@ use crate::{EdgeChecker, GridWalker, StateValidity, ValidityError};
 /// EdgeChecker::<RealVectorSpace, AllValid>::refine(&mut checker); // level 1: 3 checks
 /// checker.check_sparse(&space, &AllValid, &a, &b, &mut progress, &Never);
 /// assert_eq!(progress.tested(), 3);
-/// # Ok::<(), spaces::SpaceError>(())
+/// # Ok::<(), mit_star_spaces::SpaceError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct FixedSparseChecker {

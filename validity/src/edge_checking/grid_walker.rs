@@ -1,7 +1,7 @@
 //! The walk over an edge's canonical grid shared by every checker ([`GridWalker`]), the end it
 //! starts from ([`canonical_ends`]) and how often it polls the stop condition ([`STOP_POLL`]).
 
-use spaces::{StateSpace, Stop};
+use mit_star_spaces::{StateSpace, Stop};
 
 use crate::{
     EdgeGrid, EdgeProgress, EdgeStatus, LengthBuckets, MotionProgress, Preparation, Segment,
@@ -136,8 +136,8 @@ const SCAN_POLL: u64 = 1024;
 ///
 /// ```
 /// let (a, b) = ([0.5, 0.0], [0.1, 0.9]);
-/// assert_eq!(validity::canonical_ends(&a, &b), (&b[..], &a[..]));
-/// assert_eq!(validity::canonical_ends(&b, &a), (&b[..], &a[..]));
+/// assert_eq!(mit_star_validity::canonical_ends(&a, &b), (&b[..], &a[..]));
+/// assert_eq!(mit_star_validity::canonical_ends(&b, &a), (&b[..], &a[..]));
 /// ```
 #[inline]
 pub fn canonical_ends<'a>(a: &'a [f64], b: &'a [f64]) -> (&'a [f64], &'a [f64]) {
@@ -731,7 +731,7 @@ fn gcd(mut a: u64, mut b: u64) -> u64 {
 mod tests {
     use std::cell::Cell;
 
-    use spaces::{Never, RealVectorSpace};
+    use mit_star_spaces::{Never, RealVectorSpace};
 
     use super::*;
     use crate::{AllValid, Counted};

@@ -1,6 +1,6 @@
 //! [`LengthAdaptiveChecker`]: MIT*'s length-related adaptive sparse collision checks (spec §5).
 
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use crate::{EdgeChecker, GridWalker, StateValidity, ValidityError};
 
@@ -12,14 +12,14 @@ use crate::{EdgeChecker, GridWalker, StateValidity, ValidityError};
 /// `Ω = 0.5`, `Δ_min = 10 L`.
 ///
 /// ```
-/// use spaces::{Never, RealVectorSpace};
-/// use validity::{AllValid, EdgeChecker, EdgeProgress, LengthAdaptiveChecker};
+/// use mit_star_spaces::{Never, RealVectorSpace};
+/// use mit_star_validity::{AllValid, EdgeChecker, EdgeProgress, LengthAdaptiveChecker};
 /// let space = RealVectorSpace::cube(2, 0.0, 1.0)?;
 /// let checker = LengthAdaptiveChecker::new(1e-4).unwrap(); // Δ₀ = 0.2
 /// let budget = |d| EdgeChecker::<RealVectorSpace, AllValid>::sparse_budget(&checker, d);
 /// assert_eq!(budget(0.1), 1);
 /// assert_eq!(budget(0.5), 3);
-/// # Ok::<(), spaces::SpaceError>(())
+/// # Ok::<(), mit_star_spaces::SpaceError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct LengthAdaptiveChecker {

@@ -22,7 +22,7 @@ pub const LENGTH_BUCKET_LABELS: [&str; 5] = [
 /// points ([`LENGTH_BUCKET_BOUNDS`]): where a checker spends its work.
 ///
 /// ```
-/// use validity::LengthBuckets;
+/// use mit_star_validity::LengthBuckets;
 /// let mut buckets = LengthBuckets::default();
 /// buckets.count_sparse(1_500, 1);
 /// buckets.count_sparse(30_000, 15);

@@ -12,7 +12,7 @@
 /// [`GridWalker`](crate::GridWalker) keeps the progress of the last motion it was stopped on.
 ///
 /// ```
-/// let fresh = validity::MotionProgress::default();
+/// let fresh = mit_star_validity::MotionProgress::default();
 /// assert_eq!(fresh.certified(), 0.0);
 /// assert!(!fresh.is_complete());
 /// ```

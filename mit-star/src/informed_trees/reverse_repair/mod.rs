@@ -5,10 +5,10 @@
 //! The reverse tree keeps intrusive child lists ([`Vertex`](crate::graph::Vertex)'s
 //! `reverse_first_child`, …), so a repair costs the branch's size, not the graph's.
 
-use heuristics::Heuristic;
-use samplers::Sampler;
-use spaces::{StateSpace, Stop};
-use validity::{Counted, EdgeChecker, StateValidity};
+use mit_star_heuristics::Heuristic;
+use mit_star_samplers::Sampler;
+use mit_star_spaces::{StateSpace, Stop};
+use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::NONE;
 use crate::informed_trees::eit::Eit;

@@ -73,7 +73,7 @@ fn a_repaired_search_reaches_the_fixpoint_of_a_restart() {
     // r-disc neighbourhoods are symmetric, so the edges a repair offers a branch are exactly
     // those a restart's expansions would (within the first batch every tree edge is within
     // the radius too).
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)
@@ -142,7 +142,7 @@ fn a_repaired_search_reaches_the_fixpoint_of_a_restart() {
 
 #[test]
 fn restarting_instead_of_repairing_is_a_parameter() {
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)

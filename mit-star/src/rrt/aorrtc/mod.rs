@@ -5,10 +5,10 @@ mod search;
 #[cfg(test)]
 mod tests;
 
-use samplers::{InformedSampler, Sampler};
-use spaces::rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, States};
-use validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
+use mit_star_samplers::{InformedSampler, Sampler};
+use mit_star_spaces::rand::SeedableRng;
+use mit_star_spaces::{SeededRng, StateSpace, States};
+use mit_star_validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
 use crate::rrt::rrt_core::{RrtCore, problem_parts};
 use crate::simplification::IdlePolish;
@@ -71,7 +71,7 @@ const MAX_SEARCH_STATES: usize = 10_000;
 ///
 /// ```
 /// use mit_star::{Aorrtc, Parameters, Planner, TimeLimit};
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let mut planner = Aorrtc::for_problem(&problem, &Parameters::default())?;
 /// let outcome = planner.solve(&TimeLimit::seconds(0.2))?;
 /// // It keeps improving after the first solution.
@@ -344,7 +344,7 @@ where
         let mut iterations = 0;
         loop {
             stop.update(iterations, self.best_cost());
-            if spaces::Stop::should_stop(&stop) || !self.iterate(termination, &stop) {
+            if mit_star_spaces::Stop::should_stop(&stop) || !self.iterate(termination, &stop) {
                 break;
             }
             iterations += 1;
@@ -445,7 +445,7 @@ where
     /// [`new`](Self::new).
     pub fn for_problem<P>(problem: &P, parameters: &crate::Parameters) -> Result<Self, BuildError>
     where
-        P: problems::PlanningProblem<Space = S, Validity = V>,
+        P: mit_star_problems::PlanningProblem<Space = S, Validity = V>,
     {
         let (space, validity, query, parameters) = problem_parts(problem, parameters)?;
         Self::new(space, validity, query, parameters)

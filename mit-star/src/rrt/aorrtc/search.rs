@@ -2,10 +2,10 @@
 //! toward informed samples under a drawn cost bound per sample (the AO-x meta-algorithm's cost
 //! dimension), joined under the best solution's cost.
 
-use samplers::{CostBound, SampleError, Sampler};
-use spaces::rand::RngExt;
-use spaces::{StateSpace, States, Stop};
-use validity::{AllValid, Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_samplers::{CostBound, SampleError, Sampler};
+use mit_star_spaces::rand::RngExt;
+use mit_star_spaces::{StateSpace, States, Stop};
+use mit_star_validity::{AllValid, Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use super::Aorrtc;
 use crate::rrt::rrt_core::RrtCore;
@@ -100,7 +100,7 @@ impl AoxTrees {
 }
 
 /// A uniform draw in `[0, 1)` from the planner's own generator.
-fn unit(rng: &mut spaces::SeededRng) -> f64 {
+fn unit(rng: &mut mit_star_spaces::SeededRng) -> f64 {
     rng.random::<f64>()
 }
 

@@ -6,15 +6,15 @@ use crate::{FirstSolution, IterationLimit, Parameters, TerminationExt, TimeLimit
 mod scheduled;
 use scheduled::Scheduled;
 
-fn walls() -> problems::Problem {
-    problems::DividingWalls::new(2)
+fn walls() -> mit_star_problems::Problem {
+    mit_star_problems::DividingWalls::new(2)
         .build()
         .unwrap()
         .with_resolution(1e-4)
         .unwrap()
 }
 
-fn assert_valid(problem: &problems::Problem, path: &States) {
+fn assert_valid(problem: &mit_star_problems::Problem, path: &States) {
     assert_eq!(&path[0], problem.start());
     assert_eq!(&path[path.len() - 1], &problem.goals()[0][..]);
     for (a, b) in path.iter().zip(path.iter().skip(1)) {
@@ -55,7 +55,7 @@ fn improves_on_its_first_solution_with_valid_paths_only() {
 
 #[test]
 fn converges_toward_the_optimum_without_obstacles_and_stops_at_it() {
-    let problem = problems::ObstacleFree::new(4).build().unwrap();
+    let problem = mit_star_problems::ObstacleFree::new(4).build().unwrap();
     let mut planner = Aorrtc::for_problem(&problem, &Parameters::default()).unwrap();
     let clock = Scheduled::start();
     let outcome = planner.solve(&TimeLimit::seconds(5.0)).unwrap();
@@ -123,7 +123,7 @@ fn bad_parameters_are_typed_errors() {
 /// The trace of AORRTC's first solution on four dividing walls, with the switches
 /// `(simplify_smoothing, polish_when_idle)`.
 fn first_solution_trace(smoothing: bool, polish: bool) -> Vec<f64> {
-    let problem = problems::DividingWalls::new(4)
+    let problem = mit_star_problems::DividingWalls::new(4)
         .build()
         .unwrap()
         .with_resolution(1e-3)

@@ -2,10 +2,10 @@
 //! neighbourhood, choosing the parent, rewiring, recording solutions and pruning. Every phase
 //! but drawing can be interrupted by the stop and resumes at the next call.
 
-use samplers::{CostBound, SampleError, Sampler};
-use spaces::rand::RngExt;
-use spaces::{StateSpace, States, Stop};
-use validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
+use mit_star_samplers::{CostBound, SampleError, Sampler};
+use mit_star_spaces::rand::RngExt;
+use mit_star_spaces::{StateSpace, States, Stop};
+use mit_star_validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateValidity};
 
 use super::{InformedRrtStar, PRUNE_THRESHOLD};
 use crate::rrt::tree::steer;

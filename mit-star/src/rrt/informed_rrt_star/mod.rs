@@ -2,11 +2,11 @@
 //! framework's parts.
 
 #[cfg(doc)]
-use samplers::CostBound;
-use samplers::{InformedSampler, Sampler};
-use spaces::rand::SeedableRng;
-use spaces::{SeededRng, StateSpace, Stop};
-use validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
+use mit_star_samplers::CostBound;
+use mit_star_samplers::{InformedSampler, Sampler};
+use mit_star_spaces::rand::SeedableRng;
+use mit_star_spaces::{SeededRng, StateSpace, Stop};
+use mit_star_validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
 use crate::rrt::cost_tree::CostTree;
 use crate::rrt::rrt_core::{RrtCore, checked_range, problem_parts};
@@ -82,7 +82,7 @@ const COIN_STREAM: u64 = 0x9E37_79B9_7F4A_7C15;
 ///
 /// ```
 /// use mit_star::{InformedRrtStar, IterationLimit, Planner};
-/// let problem = problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
 /// let mut planner = InformedRrtStar::for_problem(&problem, &mit_star::Parameters::default())?;
 /// let first = planner.solve(&IterationLimit::new(3000))?;
 /// let later = planner.solve(&IterationLimit::new(3000))?;
@@ -253,7 +253,7 @@ where
         solution.reverse();
         Some(Snapshot {
             states: self.tree.states().clone(),
-            origins: vec![samplers::SampleOrigin::Drawn; kinds.len()],
+            origins: vec![mit_star_samplers::SampleOrigin::Drawn; kinds.len()],
             kinds,
             forward_edges,
             reverse_edges: Vec::new(),
@@ -301,7 +301,7 @@ impl<S: StateSpace, V: StateValidity> InformedRrtStar<S, V, InformedSampler, Den
     /// [`new`](Self::new).
     pub fn for_problem<P>(problem: &P, parameters: &Parameters) -> Result<Self, BuildError>
     where
-        P: problems::PlanningProblem<Space = S, Validity = V>,
+        P: mit_star_problems::PlanningProblem<Space = S, Validity = V>,
     {
         let (space, validity, query, parameters) = problem_parts(problem, parameters)?;
         Self::new(space, validity, query, parameters)

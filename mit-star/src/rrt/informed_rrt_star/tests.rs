@@ -7,7 +7,7 @@ use crate::{FirstSolution, IterationLimit, Solution, TerminationExt, TimeLimit};
 
 /// Every edge of the path valid in the world, the path from the start to a goal, its cost the
 /// sum of its edges.
-fn assert_valid(problem: &problems::Problem, solution: &Solution) {
+fn assert_valid(problem: &mit_star_problems::Problem, solution: &Solution) {
     let path = &solution.path;
     assert_eq!(&path[0], problem.start());
     assert!(
@@ -25,14 +25,14 @@ fn assert_valid(problem: &problems::Problem, solution: &Solution) {
 }
 
 /// PDT's dividing walls in R^2, at a coarse resolution to keep the tests quick.
-fn walls() -> problems::Problem {
-    let problem = problems::DividingWalls::new(2).build().unwrap();
+fn walls() -> mit_star_problems::Problem {
+    let problem = mit_star_problems::DividingWalls::new(2).build().unwrap();
     problem.with_resolution(1e-4).unwrap()
 }
 
 #[test]
 fn the_cost_falls_over_calls_towards_the_straight_line() {
-    let problem = problems::ObstacleFree::new(2).build().unwrap();
+    let problem = mit_star_problems::ObstacleFree::new(2).build().unwrap();
     let parameters = Parameters {
         seed: 5,
         ..Parameters::default()
@@ -125,7 +125,7 @@ fn interrupted_checks_resume_and_certification_is_counted() {
 
 #[test]
 fn bad_parameters_and_queries_are_typed_errors() {
-    let problem = problems::DividingWalls::new(2).build().unwrap();
+    let problem = mit_star_problems::DividingWalls::new(2).build().unwrap();
     for goal_bias in [-0.1, 1.5, f64::NAN] {
         let parameters = Parameters {
             goal_bias,

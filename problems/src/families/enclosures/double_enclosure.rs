@@ -40,7 +40,7 @@ impl Ends for BothEnclosed {
 mod tests {
     use super::*;
     use crate::test_support::{polyline_is_valid, polyline_length};
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn both_ends_are_enclosed() {

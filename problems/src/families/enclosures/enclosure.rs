@@ -3,7 +3,7 @@
 
 use std::marker::PhantomData;
 
-use validity::{AxisBox, World};
+use mit_star_validity::{AxisBox, World};
 
 use crate::families::optimum::enclosure_escape;
 use crate::families::shared::{axis_point, check_endpoints, check_positive, on_axis, unit_world};
@@ -187,7 +187,7 @@ impl Sizes {
         world: &mut World,
         center: &[f64],
         facing: f64,
-    ) -> Result<(), validity::ValidityError> {
+    ) -> Result<(), mit_star_validity::ValidityError> {
         world.add_obstacle(AxisBox::cube(center.to_vec(), self.outside))?;
         world.add_anti_obstacle(AxisBox::cube(center.to_vec(), self.inside))?;
         let shell = 0.5 * (self.outside - self.inside);
@@ -213,7 +213,7 @@ impl Sizes {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn opening_faces_the_requested_side() {

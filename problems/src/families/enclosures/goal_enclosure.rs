@@ -26,13 +26,13 @@ use crate::families::enclosures::enclosure::{EnclosedEnds, Enclosure, Ends};
 /// start's distance to the cube (≈ 0.7372 by default, in every dimension). Otherwise unknown.
 ///
 /// ```
-/// use problems::GoalEnclosure;
-/// use validity::StateValidity;
+/// use mit_star_problems::GoalEnclosure;
+/// use mit_star_validity::StateValidity;
 ///
 /// let problem = GoalEnclosure::new(2).start(vec![-0.4, 0.0]).goal(vec![0.1, 0.0]).build()?;
 /// assert!(!problem.world().is_valid(&[0.1, 0.11])); // the shell
 /// assert!(problem.world().is_valid(&[0.21, 0.0])); // the opening
-/// # Ok::<(), problems::ProblemError>(())
+/// # Ok::<(), mit_star_problems::ProblemError>(())
 /// ```
 pub type GoalEnclosure = Enclosure<GoalEnclosed>;
 
@@ -57,7 +57,7 @@ mod tests {
     use super::*;
     use crate::ProblemError;
     use crate::test_support::{polyline_is_valid, polyline_length};
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn goal_is_enclosed_with_an_opening_away_from_the_start() {

@@ -42,7 +42,7 @@ mod tests {
     use super::*;
     use crate::GoalEnclosure;
     use crate::test_support::{polyline_is_valid, polyline_length};
-    use validity::StateValidity;
+    use mit_star_validity::StateValidity;
 
     #[test]
     fn start_is_enclosed_with_an_opening_away_from_the_goal() {

@@ -1,7 +1,7 @@
 //! Tests of [`LocalSweep`]'s bounds against the `f64` kinematics, sampled finely.
 
 use glam::{DAffine3, DVec3};
-use spaces::StateSpace;
+use mit_star_spaces::StateSpace;
 
 use super::*;
 use crate::{ArmChecker, ArmProblem, Kinematics, Scene};
@@ -19,7 +19,7 @@ impl Lcg {
     }
 
     /// A configuration drawn uniformly within the joint limits of `space`.
-    fn configuration(&mut self, space: &spaces::JointSpace) -> Vec<f64> {
+    fn configuration(&mut self, space: &mit_star_spaces::JointSpace) -> Vec<f64> {
         (0..space.dimension())
             .map(|j| space.lower()[j] + self.unit() * (space.upper()[j] - space.lower()[j]))
             .collect()

@@ -1,9 +1,9 @@
 //! Frontier rays: [`NearTerminals`]'s draws along free straight lines out of the planner's
 //! frontier ([`with_frontier_rays`](NearTerminals::with_frontier_rays)).
 
+use mit_star_spaces::StateSpace;
+use mit_star_validity::{EdgeGrid, StateValidity};
 use rand::RngExt;
-use spaces::StateSpace;
-use validity::{EdgeGrid, StateValidity};
 
 use super::NearTerminals;
 

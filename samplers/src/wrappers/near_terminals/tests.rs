@@ -1,8 +1,8 @@
 //! Tests of [`NearTerminals`]: its fraction, its fallback to the wrapped sampler, its settings,
 //! and that its draws respect the effective bound and are reflected, not clamped, at the bounds.
 
-use spaces::{Never, RealVectorSpace, euclidean_distance};
-use validity::{AxisBox, Counted, World};
+use mit_star_spaces::{Never, RealVectorSpace, euclidean_distance};
+use mit_star_validity::{AxisBox, Counted, World};
 
 use super::*;
 use crate::{Estimated, InformedSampler, UniformSampler};
