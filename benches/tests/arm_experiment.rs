@@ -52,7 +52,7 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
         if run.status == RunStatus::Solved {
             solved += 1;
             let counters: Vec<(&str, u64)> = run.counter_values().to_vec();
-            let certified = counters.iter().find(|(n, _)| *n == "certified edges");
+            let certified = counters.iter().find(|(n, _)| *n == "certifications");
             assert!(certified.is_some_and(|&(_, c)| c > 0), "{counters:?}");
             // Arm problems ask the EIT* family for samples near the start and the goal.
             let near = counters

@@ -393,7 +393,7 @@ fn plan_prints_the_result_and_draws_2d_runs() {
         "{stdout}"
     );
     assert!(
-        stdout.contains("counters (zeros left out") && stdout.contains("state validity checks")
+        stdout.contains("counters (zeros left out") && stdout.contains("validity_checks")
     );
     // The independent check's time is shown apart from planning, and what it covered in a
     // box world's units: segments and the path's states.
