@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use mit_star_benches::{
-    ExecutionOptions, Executor, Experiment, ResultsFolder, RunStatus, ShippedExperiment,
+    ExecutionOptions, Executor, Experiment, Figures, ResultsFolder, RunStatus, ShippedExperiment,
 };
 
 /// The shipped experiment, pointed at the sample folders, two problems per scene, `budget` s.
@@ -75,7 +75,7 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("arm-experiment");
     let _ = std::fs::remove_dir_all(&dir);
     let mut folder = ResultsFolder::prepare(&dir).unwrap();
-    folder.write(&results, false).unwrap();
+    folder.write(&results, Figures::None).unwrap();
     let kpi = std::fs::read_to_string(dir.join("kpi.md")).unwrap();
     assert!(kpi.contains("## Problems with several layouts"), "{kpi}");
     for scene in [
