@@ -18,6 +18,7 @@ mod pose_goals;
 mod reliability;
 mod replanning;
 mod robots;
+mod scene_outputs;
 mod shards;
 mod single_writer;
 mod spherise_limits;

@@ -623,7 +623,7 @@ fn snap_to_limits(space: &JointSpace, q: &mut [f64]) {
                 }
             }
             mit_star_spaces::JointKind::Continuous if v.is_finite() => {
-                *v = mit_star_spaces::wrap_angle(*v)
+                *v = mit_star_spaces::wrap_angle(*v);
             }
             mit_star_spaces::JointKind::Continuous => {}
         }

@@ -11,6 +11,7 @@ mod cage_batches;
 mod audit_broad_phase;
 mod batch_size_on_arms;
 mod batches;
+mod budget_cover;
 mod certified_motion;
 mod cloud_input_hostile;
 mod cloud_input_properties;

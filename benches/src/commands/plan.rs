@@ -532,12 +532,12 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     say!("  counters (zeros left out; `--json` has them all):");
     for (name, value) in r.counter_values() {
         if value != 0 {
-            say!("    {name:<48} {value}");
+            say!("    {name:<32} {value}");
         }
     }
     for (name, value) in r.real_counter_values() {
         if let Some(value) = value {
-            say!("    {name:<48} {}", number(value));
+            say!("    {name:<32} {}", number(value));
         }
     }
     if !r.path.is_empty() {

@@ -160,7 +160,7 @@ impl ArmChecker {
                 *progress = progress.advanced(1.0, w);
                 return Some(EdgeStatus::Valid);
             }
-            if batches % POLL_BATCHES == 0 && stop.should_stop() {
+            if batches.is_multiple_of(POLL_BATCHES) && stop.should_stop() {
                 *progress = progress.advanced(t, w);
                 return Some(EdgeStatus::Unknown);
             }
