@@ -13,6 +13,7 @@ mod durability;
 mod extreme_values;
 mod hostile_inputs;
 mod outputs;
+mod padding;
 mod pose_goals;
 mod reliability;
 mod replanning;

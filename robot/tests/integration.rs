@@ -28,6 +28,7 @@ mod motion_audit;
 mod obstacle_grid;
 mod one_sided;
 mod other_robots;
+mod padding;
 mod parry_agreement;
 mod radius_connection_on_arms;
 mod reverse_repair_on_arms;

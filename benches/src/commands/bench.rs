@@ -115,6 +115,12 @@ pub struct BenchArgs {
     /// a robot relies on.
     #[arg(long)]
     pub allow_coarse_step: bool,
+    /// Keep every robot sphere this many metres from every obstacle, for every arm problem
+    /// (`0.01`: a centimetre; at most 1), certified along every edge and re-checked by the
+    /// `f64` audit; replaces an experiment file's `padding`. Recorded in the results folder,
+    /// which is not resumed with another.
+    #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
+    pub padding: Option<mit_star_robot::Padding>,
     /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
@@ -201,6 +207,11 @@ impl BenchArgs {
         if self.allow_coarse_step {
             for problem in &mut experiment.problems {
                 problem.allow_coarse_step = true;
+            }
+        }
+        if let Some(padding) = self.padding {
+            for problem in &mut experiment.problems {
+                problem.padding = padding;
             }
         }
         if !self.only.is_empty() {
@@ -334,6 +345,7 @@ impl BenchArgs {
                 instances,
                 resolution: self.resolution,
                 allow_coarse_step: self.allow_coarse_step,
+                padding: self.padding.unwrap_or_default(),
                 cloud: cloud.clone(),
                 pose_goal: None,
             });
@@ -344,8 +356,18 @@ impl BenchArgs {
             let more = if problems.len() > 1 { "-and-more" } else { "" };
             // Among a cloud, another experiment: another default folder.
             let cloud = if first.cloud.is_some() { "-cloud" } else { "" };
+            // Padded, another experiment: another default folder.
+            let padding = match self.padding {
+                Some(p) if !p.is_zero() => {
+                    format!(
+                        "-padding{}mm",
+                        mit_star_spaces::short_number(p.metres() * 1e3)
+                    )
+                }
+                _ => String::new(),
+            };
             crate::definition::experiment::safe_name(&format!(
-                "{}-{}{cloud}{more}",
+                "{}-{}{cloud}{padding}{more}",
                 first.source.label(),
                 dims.join("-")
             ))

@@ -85,7 +85,7 @@ impl PlanArgs {
     /// The pictures' file name without extension: the problem instance, the planner and the
     /// seed, then — when any other setting was given (`--set`, a budget other than 1 s,
     /// `--first-solution`, `--simplify`, the problem's options beyond its name and instance:
-    /// resolution, robot, group, clouds; a pose goal) — `-s` and eight hexadecimal digits
+    /// resolution, robot, group, clouds, padding; a pose goal) — `-s` and eight hexadecimal digits
     /// (CRC-32) of those settings, so that runs with different settings never share a file.
     fn picture_stem(&self, instance: &str, planner: &str) -> String {
         let stem = format!("{instance}-{}-seed{}", sanitise(planner), self.seed);
@@ -114,6 +114,9 @@ impl PlanArgs {
         }
         if self.pose.goal_pose.is_some() {
             settings.push(format!("{:?}", self.pose));
+        }
+        if let Some(padding) = p.padding.filter(|p| !p.is_zero()) {
+            settings.push(format!("padding={}", padding.metres()));
         }
         if settings.is_empty() {
             return stem;

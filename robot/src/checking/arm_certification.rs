@@ -7,7 +7,8 @@
 //! covered by pieces, and for each piece every sphere, grown by how far it can move within the
 //! piece (the local sweep and [`LeverArms`](crate::LeverArms) bounds) and by the checker's
 //! margin for `f32` rounding, is clear of the scene and of the other links at the piece's
-//! middle configuration.
+//! middle configuration — and, grown by the user's [padding](crate::Padding) too, clear of
+//! the scene: a padded checker's certified edges keep the padding at every configuration.
 //!
 //! # The walk
 //! Conservative advancement along the edge from its first end. Each batch evaluates a lane's worth
