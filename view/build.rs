@@ -1,8 +1,10 @@
 //! Bundles the page's JavaScript (view/web) with three.js into `$OUT_DIR/viewer.js`, and copies
 //! three.js's licence to `$OUT_DIR/three-license.txt`.
 //!
-//! Needs Node.js (>= 18) and npm: `npm ci` runs in view/web when its node_modules is missing or
-//! holds other versions than package-lock.json pins.
+//! Needs Node.js (>= 18) and npm. In a git checkout, `npm ci` runs in view/web when its
+//! node_modules is missing or holds other versions than package-lock.json pins. Built from a
+//! package (a registry download, `cargo package`'s verification), the crate's source is never
+//! written to: the page's sources are copied into `$OUT_DIR/web` and installed there.
 
 use std::env;
 use std::fs;
@@ -55,6 +57,41 @@ fn run(command: &mut Command, what: &str) {
     }
 }
 
+/// `npm ci` in `web`, then the check that it installed the pinned versions.
+fn install(web: &Path, pins: &[(String, String)], shown: &str) {
+    run(
+        Command::new("npm")
+            .args(["ci", "--no-audit", "--no-fund"])
+            .current_dir(web),
+        &format!("npm ci --no-audit --no-fund (in {shown})"),
+    );
+    assert!(
+        installed_matches(web, pins),
+        "view: after `npm ci`, {shown}/node_modules still differs from package-lock.json; {HOW}"
+    );
+}
+
+/// Copies `names` (files or folders) of `from` into `to`, replacing what `to` held.
+fn copy_tree(from: &Path, to: &Path, names: &[&str]) {
+    fn copy(from: &Path, to: &Path) -> std::io::Result<()> {
+        if from.is_dir() {
+            fs::create_dir_all(to)?;
+            for entry in fs::read_dir(from)? {
+                let entry = entry?;
+                copy(&entry.path(), &to.join(entry.file_name()))?;
+            }
+            Ok(())
+        } else {
+            fs::copy(from, to).map(drop)
+        }
+    }
+    fs::create_dir_all(to).unwrap_or_else(|e| panic!("view: cannot create {}: {e}", to.display()));
+    for name in names {
+        copy(&from.join(name), &to.join(name))
+            .unwrap_or_else(|e| panic!("view: cannot copy {} into {}: {e}", name, to.display()));
+    }
+}
+
 fn main() {
     let manifest = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets it"));
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets it"));
@@ -75,18 +112,17 @@ fn main() {
             name.to_ascii_uppercase()
         );
     }
-    if !installed_matches(&web, &pins) {
-        run(
-            Command::new("npm")
-                .args(["ci", "--no-audit", "--no-fund"])
-                .current_dir(&web),
-            "npm ci --no-audit --no-fund (in view/web)",
-        );
-        assert!(
-            installed_matches(&web, &pins),
-            "view: after `npm ci`, view/web/node_modules still differs from package-lock.json; {HOW}"
-        );
-    }
+    let web = if installed_matches(&web, &pins) {
+        web
+    } else if manifest.join("../.git").exists() {
+        install(&web, &pins, "view/web");
+        web
+    } else {
+        let copy = out.join("web");
+        copy_tree(&web, &copy, &["src", "package.json", "package-lock.json"]);
+        install(&copy, &pins, "$OUT_DIR/web");
+        copy
+    };
     let bundle = out.join("viewer.js");
     run(
         Command::new(web.join("node_modules/.bin/esbuild"))

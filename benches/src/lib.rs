@@ -60,12 +60,13 @@
 //! | [`RunRecord`], [`RunStatus`], [`PathValidation`], [`ValidationMethod`] | what one run measured; how it ended; the independent path check (exact for box worlds) |
 //! | [`ExperimentResults`], [`MachineInfo`], [`iso_timestamp`] | every finished run, with how, when and where it ran |
 //! | [`statistics`] | medians and their confidence intervals, Clopper–Pearson, anytime series |
+//! | [`Scene`], [`SceneSummary`], [`SceneRow`] | the instances of one problem in one dimension; the summary by scene `bench` prints |
 //! | [`KpiTable`], [`KpiRow`], [`t_init_gain`] | the paper's Table I and the full KPIs |
 //! | [`BenchmarkLog`] (+ [`PlannerLog`], [`Property`], [`PropertyType`], [`LogValue`], [`EnumType`], [`ExperimentProperty`]) | OMPL benchmark logs: write and parse |
 //! | [`PlannerArenaDatabase`] | the SQLite database Planner Arena reads |
 //! | [`write_runs_csv`], [`write_runs_jsonl`] | raw runs |
 //! | [`ExperimentFigure`], [`RunPicture`], [`ArmPicture`], [`planner_colours`] | figures of experiments; pictures of 2-D runs and of arm plans |
-//! | [`ResultsFolder`], [`kpi_markdown`], [`writable_folder`] | the results folder and its files |
+//! | [`ResultsFolder`], [`Figures`], [`kpi_markdown`], [`kpi_overview`], [`writable_folder`] | the results folder and its files; which figures it gets; `kpi.md` and its head |
 //! | [`Shard`], [`SHARD_FILE`], [`merge_parts`], [`MergeReport`] | one of N disjoint parts of an experiment (`bench --shard K/N`); the parts' folders combined into one |
 //! | [`CampaignComparison`], [`ComparedRow`], [`Change`] | two results folders side by side (`mit-star compare A B`) |
 //! | [`commands`] | the `mit-star` command line (`plan`, `check-path`, `bench`, `merge`, `compare`, `problems`, `planners`, `robots`, `experiments`, `replan`) |
@@ -108,8 +109,11 @@ pub use definition::robot_choice::RobotChoice;
 pub use definition::shipped_experiment::ShippedExperiment;
 pub use error::HarnessError;
 pub use execution::executor::{ExecutionOptions, Executor, RecordSink, RunKey};
+pub use execution::figures::Figures;
 pub use execution::interrupt::Interrupt;
-pub use execution::results_folder::{DATABASE_FILE, ResultsFolder, kpi_markdown, writable_folder};
+pub use execution::results_folder::{
+    DATABASE_FILE, ResultsFolder, kpi_markdown, kpi_overview, writable_folder,
+};
 pub use execution::run_job::{INSTANCE_SEED_STRIDE, RUN_RECORD_BYTES, RunJob};
 pub use execution::run_journal::{DATABASE_COMMIT_INTERVAL, RunJournal, results_from_records};
 pub use execution::shard::{SHARD_FILE, Shard};
@@ -122,9 +126,11 @@ pub use formats::ompl_log::log_value::{
 };
 pub use formats::planner_arena_database::PlannerArenaDatabase;
 pub use formats::raw_runs::{CSV_COLUMNS, write_runs_csv, write_runs_jsonl};
+pub use formats::scene_summary::{SceneRow, SceneSummary};
 pub use outcome::experiment_results::ExperimentResults;
 pub use outcome::machine_info::{MachineInfo, iso_timestamp};
 pub use outcome::run_record::{RunRecord, RunStatus};
+pub use outcome::scene::Scene;
 pub use path_validation::{PathValidation, ValidationMethod};
 pub use pictures::arm_picture::ArmPicture;
 pub use pictures::experiment_figure::ExperimentFigure;

@@ -23,8 +23,13 @@ pub enum ValidationMethod {
         /// Configurations whose distances were computed, over the whole path.
         configurations: u64,
         /// The smallest distance between the robot and an obstacle or itself along the path
-        /// (metres).
+        /// (metres), an obstacle's less the padding.
         clearance: f64,
+        /// The smallest distance between a robot sphere and an obstacle along the path
+        /// (metres), the padding not subtracted.
+        obstacle_clearance: f64,
+        /// The padding the path had to keep from obstacles (metres).
+        padding: f64,
     },
     /// Every segment re-checked at grid points `step` apart — at least 4× finer than the
     /// planner's step. A grid shares the planner's blind spot between points, so this is a
@@ -44,9 +49,24 @@ impl ValidationMethod {
             Self::ContinuousArm {
                 configurations,
                 clearance,
-            } => format!(
+                padding,
+                ..
+            } if *padding == 0.0 => format!(
                 "continuously in f64 (conservative advancement on parry distances, no grid: \
                  {configurations} configurations, clearance ≥ {} mm)",
+                mit_star_spaces::short_number(clearance * 1e3)
+            ),
+            Self::ContinuousArm {
+                configurations,
+                clearance,
+                obstacle_clearance,
+                padding,
+            } => format!(
+                "continuously in f64 (conservative advancement on parry distances, no grid: \
+                 {configurations} configurations, every sphere ≥ {} mm from obstacles with a \
+                 padding of {} mm, clearance beyond it ≥ {} mm)",
+                mit_star_spaces::short_number(obstacle_clearance * 1e3),
+                mit_star_spaces::short_number(padding * 1e3),
                 mit_star_spaces::short_number(clearance * 1e3)
             ),
             Self::Resampled { step } => format!(
@@ -163,6 +183,8 @@ impl PathValidation {
         budget: u64,
     ) -> Self {
         let clearance = Cell::new(f64::INFINITY);
+        let obstacle_clearance = Cell::new(f64::INFINITY);
+        let padding = audit.padding().metres();
         let mut result = Self::walk(
             (start, goals),
             path,
@@ -170,14 +192,18 @@ impl PathValidation {
             ValidationMethod::ContinuousArm {
                 configurations: 0,
                 clearance: f64::INFINITY,
+                obstacle_clearance: f64::INFINITY,
+                padding,
             },
             (audit, |a: &[f64], b: &[f64]| audit.space().distance(a, b)),
             |a, b, _| match audit.audit(a, b, budget) {
                 AuditVerdict::Clear {
                     configurations,
                     clearance: c,
+                    obstacle_clearance: o,
                 } => {
                     clearance.set(clearance.get().min(c));
+                    obstacle_clearance.set(obstacle_clearance.get().min(o));
                     Ok(configurations)
                 }
                 AuditVerdict::Collides {
@@ -196,6 +222,8 @@ impl PathValidation {
         result.method = ValidationMethod::ContinuousArm {
             configurations: result.states_checked,
             clearance: clearance.get(),
+            obstacle_clearance: obstacle_clearance.get(),
+            padding,
         };
         result
     }

@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use mit_star_benches::{
-    ExecutionOptions, Executor, Experiment, ResultsFolder, RunStatus, ShippedExperiment,
+    ExecutionOptions, Executor, Experiment, Figures, ResultsFolder, RunStatus, ShippedExperiment,
 };
 
 /// The shipped experiment, pointed at the sample folders, two problems per scene, `budget` s.
@@ -52,12 +52,12 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
         if run.status == RunStatus::Solved {
             solved += 1;
             let counters: Vec<(&str, u64)> = run.counter_values().to_vec();
-            let certified = counters.iter().find(|(n, _)| *n == "certified edges");
+            let certified = counters.iter().find(|(n, _)| *n == "certifications");
             assert!(certified.is_some_and(|&(_, c)| c > 0), "{counters:?}");
             // Arm problems ask the EIT* family for samples near the start and the goal.
             let near = counters
                 .iter()
-                .find(|(n, _)| *n == "sampler near terminal draws")
+                .find(|(n, _)| *n == "sampler_near_terminals")
                 .map(|&(_, c)| c);
             if run.planner == "RRT-Connect" || run.planner == "AORRTC" {
                 assert!(near.is_none_or(|c| c == 0), "{run:?}");
@@ -75,7 +75,7 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("arm-experiment");
     let _ = std::fs::remove_dir_all(&dir);
     let mut folder = ResultsFolder::prepare(&dir).unwrap();
-    folder.write(&results, false).unwrap();
+    folder.write(&results, Figures::None).unwrap();
     let kpi = std::fs::read_to_string(dir.join("kpi.md")).unwrap();
     assert!(kpi.contains("## Problems with several layouts"), "{kpi}");
     for scene in [

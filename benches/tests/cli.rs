@@ -393,7 +393,7 @@ fn plan_prints_the_result_and_draws_2d_runs() {
         "{stdout}"
     );
     assert!(
-        stdout.contains("counters (zeros left out") && stdout.contains("state validity checks")
+        stdout.contains("counters (zeros left out") && stdout.contains("validity_checks")
     );
     // The independent check's time is shown apart from planning, and what it covered in a
     // box world's units: segments and the path's states.
@@ -664,9 +664,9 @@ fn only_runs_some_planners_of_an_experiment_to_their_first_solution() {
     );
     let header = csv.lines().next().unwrap();
     for column in [
-        "sampler_gaussian_repairs",
-        "estimated_informed_set_initial_cost",
-        "full_points_of_edges_of_1e4_to_5e4_points",
+        "sampler_gaussian",
+        "estimate_initial",
+        "full_points_by_length_2",
     ] {
         assert!(header.contains(column), "{column} not in {header}");
     }

@@ -83,7 +83,7 @@ fn check_folder(dir: &Path) {
         let cells: Vec<&str> = row.split('|').map(str::trim).collect();
         let read: usize = cells[2].parse().unwrap();
         let kept: usize = cells[3].parse().unwrap();
-        assert!(read > 0 && read % 500 == 0, "{row}");
+        assert!(read > 0 && read.is_multiple_of(500), "{row}");
         assert!(kept > 0 && kept <= read, "{row}");
         let times: Vec<f64> = cells[5..7].iter().map(|c| c.parse().unwrap()).collect();
         assert!(times.iter().all(|&t| t > 0.0), "{row}");

@@ -7,8 +7,8 @@ use std::process::Command;
 use std::sync::OnceLock;
 
 use mit_star_benches::{
-    BenchmarkLog, ExecutionOptions, Executor, Experiment, ExperimentResults, INSTANCE_SEED_STRIDE,
-    LogValue, PathValidation, PlannerArenaDatabase, ResultsFolder, RunStatus,
+    BenchmarkLog, ExecutionOptions, Executor, Experiment, ExperimentResults, Figures,
+    INSTANCE_SEED_STRIDE, LogValue, PathValidation, PlannerArenaDatabase, ResultsFolder, RunStatus,
 };
 
 const TINY: &str = r#"
@@ -50,7 +50,7 @@ fn tiny() -> &'static (ExperimentResults, PathBuf) {
         let results = run_tiny();
         let dir = scratch("tiny");
         let mut folder = ResultsFolder::prepare(&dir).unwrap();
-        folder.write(&results, true).unwrap();
+        folder.write(&results, Figures::ScenesAndProblems).unwrap();
         (results, dir)
     })
 }
@@ -279,7 +279,10 @@ fn the_database_has_planner_arenas_schema_and_appends() {
     // A results folder refuses to rebuild (and so lose) a database holding runs its raw
     // files do not have.
     let mut folder = ResultsFolder::prepare(&copy).unwrap();
-    let refused = folder.write(results, false).unwrap_err().to_string();
+    let refused = folder
+        .write(results, Figures::None)
+        .unwrap_err()
+        .to_string();
     assert!(refused.contains("holds 8 runs"), "{refused}");
     drop(folder);
 
@@ -367,7 +370,7 @@ fn invalid_paths_are_flagged_in_every_output() {
     let (planner, run) = (victim.planner.clone(), victim.run);
     let dir = scratch("invalid");
     let mut folder = ResultsFolder::prepare(&dir).unwrap();
-    folder.write(&results, false).unwrap();
+    folder.write(&results, Figures::None).unwrap();
     let csv = std::fs::read_to_string(dir.join("runs.csv")).unwrap();
     assert!(csv.contains(",invalid-path,false,false,"), "{csv}");
     assert!(csv.contains("segment 2 → 3 collides (test)"));

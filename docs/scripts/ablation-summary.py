@@ -43,7 +43,7 @@ def median(values):
 
 
 COUNTERS = [
-    ("edge_points_tested", "points"),
+    ("points_tested", "points"),
     ("reverse_search_restarts", "restarts"),
     ("batches", "batches"),
     ("samples", "samples"),
@@ -140,7 +140,7 @@ def print_compact(rows, instances, confidence):
                     for r in rs
                 ]
                 med, (lo, hi) = median_interval(times, confidence)
-                pts = median(float(r["edge_points_tested"]) for r in rs)
+                pts = median(float(r["points_tested"]) for r in rs)
                 ok = sum(r["success"] == "true" for r in rs)
                 miss = "" if ok == len(rs) else f" ({len(rs) - ok} failed)"
                 cells.append(

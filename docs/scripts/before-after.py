@@ -43,7 +43,7 @@ def summary(runs):
         "runs": len(runs),
         "t_init": median(number(r, "initial_time") if r["success"] == "true" else math.inf for r in runs),
         "final": median(number(r, "final_cost") if r["success"] == "true" else math.inf for r in runs),
-        "points": median(float(r["edge_points_tested"]) for r in runs),
+        "points": median(float(r["points_tested"]) for r in runs),
         "invalid": sum(1 for r in solved if r["valid_path"] != "true"),
     }
 

@@ -47,7 +47,7 @@ impl StateValidity for Timed {
     fn is_valid(&self, state: &[f64]) -> bool {
         let calls = self.calls.get();
         self.calls.set(calls + 1);
-        if calls % SAMPLE != 0 {
+        if !calls.is_multiple_of(SAMPLE) {
             return self.world.is_valid(state);
         }
         let started = Instant::now();

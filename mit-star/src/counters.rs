@@ -243,6 +243,181 @@ impl Counters {
     }
 }
 
+/// How many integer counts [`Counters::counts`] lists.
+pub const COUNT_NAMES_LEN: usize = 52;
+
+/// The name of every integer count, as [`Counters::counts`] lists them: the field's name, and
+/// for the per-length arrays the field's name and the bucket's index
+/// (`sparse_checks_by_length_0` … `_4`, buckets of [`mit_star_validity::LENGTH_BUCKET_LABELS`]).
+/// The same names key Python's `counters()` dictionary, `runs.jsonl`'s counters (arrays
+/// there), the columns of `runs.csv` and `plan`'s listing.
+pub const COUNT_NAMES: [&str; COUNT_NAMES_LEN] = [
+    "iterations",
+    "batches",
+    "samples",
+    "samples_drawn",
+    "validity_checks",
+    "sparse_checks",
+    "full_checks",
+    "points_tested",
+    "points_culled",
+    "certifications",
+    "certification_failures",
+    "neighbour_queries",
+    "reverse_restarts",
+    "reverse_repairs",
+    "reverse_iterations",
+    "forward_iterations",
+    "pruned",
+    "solution_samples",
+    "vertices",
+    "edges",
+    "peak_vertices",
+    "peak_edges",
+    "sampler_checks",
+    "sampler_pre_valid",
+    "sampler_gaussian",
+    "sampler_bridge",
+    "sampler_near_terminals",
+    "sampler_near_frontier",
+    "start_frontiers",
+    "sampler_restarts",
+    "estimate_expansions",
+    "estimate_batches",
+    "sparse_checks_by_length_0",
+    "sparse_checks_by_length_1",
+    "sparse_checks_by_length_2",
+    "sparse_checks_by_length_3",
+    "sparse_checks_by_length_4",
+    "sparse_points_by_length_0",
+    "sparse_points_by_length_1",
+    "sparse_points_by_length_2",
+    "sparse_points_by_length_3",
+    "sparse_points_by_length_4",
+    "full_checks_by_length_0",
+    "full_checks_by_length_1",
+    "full_checks_by_length_2",
+    "full_checks_by_length_3",
+    "full_checks_by_length_4",
+    "full_points_by_length_0",
+    "full_points_by_length_1",
+    "full_points_by_length_2",
+    "full_points_by_length_3",
+    "full_points_by_length_4",
+];
+
+/// The names of the real-valued counters, as [`Counters::reals`] lists them.
+pub const REAL_NAMES: [&str; 2] = ["estimate_initial", "estimate_final"];
+
+impl Counters {
+    /// Every integer count with its name ([`COUNT_NAMES`]), in the struct's order, each
+    /// per-length array spread over its five buckets.
+    #[must_use]
+    pub fn counts(&self) -> [(&'static str, u64); COUNT_NAMES_LEN] {
+        // Destructured in full, so that a new counter cannot be left out.
+        let Self {
+            iterations,
+            batches,
+            samples,
+            samples_drawn,
+            validity_checks,
+            sparse_checks,
+            full_checks,
+            points_tested,
+            points_culled,
+            certifications,
+            certification_failures,
+            neighbour_queries,
+            reverse_restarts,
+            reverse_repairs,
+            reverse_iterations,
+            forward_iterations,
+            pruned,
+            solution_samples,
+            vertices,
+            edges,
+            peak_vertices,
+            peak_edges,
+            sampler_checks,
+            sampler_pre_valid,
+            sampler_gaussian,
+            sampler_bridge,
+            sampler_near_terminals,
+            sampler_near_frontier,
+            start_frontiers,
+            sampler_restarts,
+            estimate_expansions,
+            estimate_batches,
+            sparse_checks_by_length,
+            sparse_points_by_length,
+            full_checks_by_length,
+            full_points_by_length,
+            estimate_initial,
+            estimate_final,
+        } = *self;
+        let _ = (estimate_initial, estimate_final);
+        let scalars = [
+            iterations,
+            batches,
+            samples,
+            samples_drawn,
+            validity_checks,
+            sparse_checks,
+            full_checks,
+            points_tested,
+            points_culled,
+            certifications,
+            certification_failures,
+            neighbour_queries,
+            reverse_restarts,
+            reverse_repairs,
+            reverse_iterations,
+            forward_iterations,
+            pruned,
+            solution_samples,
+            vertices,
+            edges,
+            peak_vertices,
+            peak_edges,
+            sampler_checks,
+            sampler_pre_valid,
+            sampler_gaussian,
+            sampler_bridge,
+            sampler_near_terminals,
+            sampler_near_frontier,
+            start_frontiers,
+            sampler_restarts,
+            estimate_expansions,
+            estimate_batches,
+        ];
+        let mut values = [0; COUNT_NAMES_LEN];
+        values[..scalars.len()].copy_from_slice(&scalars);
+        let arrays = [
+            sparse_checks_by_length,
+            sparse_points_by_length,
+            full_checks_by_length,
+            full_points_by_length,
+        ];
+        for (i, value) in arrays.iter().flatten().enumerate() {
+            values[scalars.len() + i] = *value;
+        }
+        let mut out = [("", 0); COUNT_NAMES_LEN];
+        for (slot, (name, value)) in out.iter_mut().zip(COUNT_NAMES.iter().zip(values)) {
+            *slot = (name, value);
+        }
+        out
+    }
+
+    /// The real-valued counters with their names ([`REAL_NAMES`]); `None` where not measured.
+    #[must_use]
+    pub fn reals(&self) -> [(&'static str, Option<f64>); 2] {
+        [
+            (REAL_NAMES[0], self.estimate_initial),
+            (REAL_NAMES[1], self.estimate_final),
+        ]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -271,5 +446,53 @@ mod tests {
         assert_eq!(m.estimate_initial, Some(2.0));
         assert_eq!(m.estimate_final, Some(3.0));
         assert_eq!(Counters::default().merged(&b), b);
+    }
+    #[test]
+    fn the_named_counts_are_the_serialised_fields_with_arrays_spread() {
+        let mut c = Counters {
+            estimate_initial: Some(2.5),
+            ..Counters::default()
+        };
+        // Distinct values everywhere: a misplaced name would pair with the wrong value.
+        let mut next = 1;
+        let json = serde_json::to_value(c).unwrap();
+        let mut expected = std::collections::BTreeMap::new();
+        for (key, value) in json.as_object().unwrap() {
+            match value {
+                serde_json::Value::Array(items) => {
+                    for i in 0..items.len() {
+                        expected.insert(format!("{key}_{i}"), 0);
+                    }
+                }
+                serde_json::Value::Number(_) if !REAL_NAMES.contains(&key.as_str()) => {
+                    expected.insert(key.clone(), 0);
+                }
+                _ => assert!(REAL_NAMES.contains(&key.as_str()), "{key}"),
+            }
+        }
+        let names: std::collections::BTreeSet<&str> = COUNT_NAMES.iter().copied().collect();
+        assert_eq!(names.len(), COUNT_NAMES_LEN, "names repeat");
+        assert_eq!(
+            names,
+            expected.keys().map(String::as_str).collect(),
+            "COUNT_NAMES against the serialised fields"
+        );
+        for name in ["iterations", "solution_samples", "peak_edges", "estimate_batches"] {
+            let mut v = serde_json::to_value(c).unwrap();
+            v[name] = serde_json::json!(next);
+            c = serde_json::from_value(v).unwrap();
+            next += 1;
+        }
+        let mut v = serde_json::to_value(c).unwrap();
+        v["full_points_by_length"] = serde_json::json!([0, 0, 0, 7, 0]);
+        c = serde_json::from_value(v).unwrap();
+        let counts: std::collections::BTreeMap<_, _> = c.counts().into_iter().collect();
+        assert_eq!(counts["iterations"], 1);
+        assert_eq!(counts["solution_samples"], 2);
+        assert_eq!(counts["peak_edges"], 3);
+        assert_eq!(counts["estimate_batches"], 4);
+        assert_eq!(counts["full_points_by_length_3"], 7);
+        assert_eq!(counts.values().sum::<u64>(), 17);
+        assert_eq!(c.reals(), [("estimate_initial", Some(2.5)), ("estimate_final", None)]);
     }
 }

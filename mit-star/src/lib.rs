@@ -95,7 +95,7 @@ mod warm_started;
 pub use builder::Builder;
 pub use components::{CheckerPart, SamplerPart};
 pub use configuration::{Configuration, build_planner, build_planner_with};
-pub use counters::Counters;
+pub use counters::{COUNT_NAMES, COUNT_NAMES_LEN, Counters, REAL_NAMES};
 pub use error::{BuildError, Endpoint, PlannerError};
 pub use goal_source::GoalSource;
 pub use graph::{RandomGeometricGraph, VertexId, VertexKind};

@@ -56,6 +56,7 @@ fn run(args: &[String]) -> Result<(), String> {
         instance: arm.then_some(number),
         resolution: None,
         allow_coarse_step: false,
+        padding: None,
         clouds: CloudArgs::default(),
     }
     .build(1.0)

@@ -38,7 +38,7 @@ pub(crate) fn experiments() -> Vec<(&'static str, &'static str)> {
 /// applied to every planner (as `mit-star bench --set`). `threads` runs execute at once
 /// (default 1: concurrent runs perturb each other's timings). With `output`, the results
 /// folder `mit-star bench --output` writes is written there too (raw runs, OMPL logs, the
-/// Planner Arena database, `kpi.md`, and with `plots=True` the figures). Ctrl-C stops the
+/// Planner Arena database, `kpi.md`, and with `plots=True` one figure per scene). Ctrl-C stops the
 /// experiment and raises `KeyboardInterrupt`; finished runs are then lost unless `output` was
 /// given.
 #[pyfunction]
@@ -98,7 +98,12 @@ pub(crate) fn run_experiment(
     });
     let results = results?;
     if let Some(folder) = &mut folder {
-        folder.write(&results, plots)?;
+        let figures = if plots {
+            mit_star_benches::Figures::Scenes
+        } else {
+            mit_star_benches::Figures::None
+        };
+        folder.write(&results, figures)?;
     }
     if let Some(error) = signal {
         return Err(error.into());

@@ -89,9 +89,11 @@ impl PyProblem {
     /// `fetch`, `baxter`) or a folder holding one URDF and one SRDF; `group` plans only that
     /// SRDF planning group (the other joints held); `strict_robot` refuses SRDF entries
     /// naming links the robot lacks; `allow_coarse_step` allows a step coarser than the
-    /// thinnest obstacle (or an arm without certification).
+    /// thinnest obstacle (or an arm without certification); `padding` (metres, arm problems,
+    /// at most 1) is kept between every robot sphere and every obstacle along every path, as
+    /// `--padding` keeps it.
     #[new]
-    #[pyo3(signature = (name, dim=None, *, instance=None, resolution=None, robot=None, group=None, strict_robot=false, allow_coarse_step=false))]
+    #[pyo3(signature = (name, dim=None, *, instance=None, resolution=None, robot=None, group=None, strict_robot=false, allow_coarse_step=false, padding=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         name: &str,
@@ -102,9 +104,11 @@ impl PyProblem {
         group: Option<String>,
         strict_robot: bool,
         allow_coarse_step: bool,
+        padding: Option<f64>,
     ) -> BindingResult<Self> {
         let file = name.ends_with(".toml").then(|| PathBuf::from(name));
         Self::resolve(&ProblemArgs {
+            padding: padding_of(padding)?,
             problem: file.is_none().then(|| name.to_owned()),
             problem_file: file,
             robot,
@@ -136,6 +140,7 @@ impl PyProblem {
             instance: None,
             resolution,
             allow_coarse_step,
+            padding: None,
             clouds: CloudArgs::default(),
         })
     }
@@ -155,8 +160,12 @@ impl PyProblem {
     /// (metres, default 0.0025), and the filters `crop_reach`, `remove_robot` (padding, at the
     /// start), `voxel` and `min_distance` (metres); `drop_primitives` plans among the clouds
     /// alone, `save_cloud` writes the filtered cloud (`.ply` or `.npy`).
+    ///
+    /// `padding` (metres, at most 1) is kept between every robot sphere and every obstacle or
+    /// cloud point's ball along every path (certified, not between the robot's own links), as
+    /// `--padding` keeps it; a start or goal within it raises `ValueError` naming the padding.
     #[staticmethod]
-    #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None, cloud=None, cloud_files=None, sensor_pose=None, scene_as_cloud=None, point_radius=None, crop_reach=false, remove_robot=None, voxel=None, min_distance=None, drop_primitives=false, save_cloud=None))]
+    #[pyo3(signature = (folder, instance=None, *, robot=None, group=None, strict_robot=false, resolution=None, padding=None, cloud=None, cloud_files=None, sensor_pose=None, scene_as_cloud=None, point_radius=None, crop_reach=false, remove_robot=None, voxel=None, min_distance=None, drop_primitives=false, save_cloud=None))]
     #[allow(clippy::too_many_arguments)]
     fn mbm(
         folder: PathBuf,
@@ -165,6 +174,7 @@ impl PyProblem {
         group: Option<String>,
         strict_robot: bool,
         resolution: Option<f64>,
+        padding: Option<f64>,
         cloud: Option<&Bound<'_, PyAny>>,
         cloud_files: Option<Vec<PathBuf>>,
         sensor_pose: Option<[f64; 6]>,
@@ -205,6 +215,7 @@ impl PyProblem {
             instance,
             resolution,
             allow_coarse_step: false,
+            padding: padding_of(padding)?,
             clouds,
         })
     }
@@ -484,4 +495,17 @@ fn joined(values: &[f64]) -> String {
         .map(f64::to_string)
         .collect::<Vec<_>>()
         .join(",")
+}
+
+/// The `padding` argument as a [`mit_star_robot::Padding`] (`None`: none given).
+///
+/// # Errors
+/// `ValueError` naming `padding` for a value that is not a number, negative or above 1 m.
+fn padding_of(padding: Option<f64>) -> BindingResult<Option<mit_star_robot::Padding>> {
+    padding
+        .map(|p| {
+            mit_star_robot::Padding::new(p)
+                .map_err(|e| BindingError::Value(format!("padding: {e}")))
+        })
+        .transpose()
 }

@@ -35,6 +35,22 @@ pub enum ArmError {
         /// and `the scene: link l meets obstacle o (overlap 12.000 mm), …`.
         with: String,
     },
+    /// A start or goal free of collision, but within the collision padding of an obstacle
+    /// ([`ArmProblem::with_padding`](crate::ArmProblem::with_padding)): every configuration
+    /// of a path keeps the padding, so none can start or end there.
+    #[error(
+        "problem `{problem}`: the {what} configuration is within the collision padding ({padding_mm} mm) of {near}: lower the padding, or move the {what} away"
+    )]
+    EndWithinPadding {
+        /// The problem's name.
+        problem: String,
+        /// `"start"` or `"goal"`.
+        what: &'static str,
+        /// The padding, in millimetres.
+        padding_mm: f64,
+        /// The closest obstacles: `obstacle o (link l, gap 4.000 mm)`, closest first.
+        near: String,
+    },
     /// A start or goal free of collision, but so close to something that no certified motion
     /// reaches it ([`ArmProblem::check_ends`](crate::ArmProblem::check_ends)): its clearance
     /// beyond the checker's margin is below [`CERTIFICATION_FLOOR`](crate::CERTIFICATION_FLOOR).

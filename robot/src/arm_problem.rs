@@ -8,7 +8,7 @@ use mit_star_problems::{PlanningProblem, ProblemError};
 use mit_star_spaces::{JointSpace, StateSpace};
 use mit_star_validity::StateValidity;
 
-use crate::{ArmChecker, ArmError, LeverArms, MbmProblem, RobotModel, Scene};
+use crate::{ArmChecker, ArmError, LeverArms, MbmProblem, Padding, RobotModel, Scene};
 
 /// The default collision-check density of arm problems: 16 checks per unit of joint-space
 /// distance, half VAMP's 32. With certification on, the grid only finds collisions early — the
@@ -128,6 +128,8 @@ impl ArmProblem {
     ///
     /// # Errors
     /// [`ArmError::EndInCollision`] naming the end and what it collides with;
+    /// [`ArmError::EndWithinPadding`] for an end clear of everything but within the
+    /// [padding](Self::with_padding) of an obstacle, naming the obstacles;
     /// [`ArmError::EndWithinFloor`] naming the end and what it is closest to.
     pub fn check_ends(&self) -> Result<(), ArmError> {
         let ends =
@@ -137,8 +139,17 @@ impl ArmProblem {
                 if self.joinable(q) {
                     continue;
                 }
-                let reach = self.checker.margin() + crate::CERTIFICATION_FLOOR;
+                let padding = self.checker.padding().metres();
+                let reach = self.checker.margin() + padding + crate::CERTIFICATION_FLOOR;
                 let near = match self.diagnose(q).nearest.filter(|c| c.gap < reach) {
+                    Some(c) if padding > 0.0 => format!(
+                        "obstacle {} (link {}, gap {:.3} mm, margin {:.3} mm, padding {:.3} mm)",
+                        c.other,
+                        c.link,
+                        c.gap * 1e3,
+                        self.checker.margin() * 1e3,
+                        padding * 1e3
+                    ),
                     Some(c) => format!(
                         "obstacle {} (link {}, gap {:.3} mm, margin {:.3} mm)",
                         c.other,
@@ -155,10 +166,26 @@ impl ArmProblem {
                     near,
                 });
             }
+            let diagnosis = self.diagnose(q);
+            if diagnosis.only_padding() {
+                return Err(ArmError::EndWithinPadding {
+                    problem: self.name.clone(),
+                    what,
+                    padding_mm: diagnosis.padding * 1e3,
+                    near: listed(&diagnosis.scene, 3, |c| {
+                        format!(
+                            "obstacle {} (link {}, gap {:.3} mm)",
+                            c.other,
+                            c.link,
+                            c.gap * 1e3
+                        )
+                    }),
+                });
+            }
             return Err(ArmError::EndInCollision {
                 problem: self.name.clone(),
                 what,
-                with: collision_summary(&self.diagnose(q)),
+                with: collision_summary(&diagnosis),
             });
         }
         Ok(())
@@ -343,8 +370,26 @@ impl ArmProblem {
     #[must_use]
     pub fn with_scene(mut self, scene: Scene) -> Self {
         self.scene = Arc::new(scene);
-        self.checker = ArmChecker::new(&self.robot, &self.scene);
+        self.checker = ArmChecker::padded(&self.robot, &self.scene, self.checker.padding());
         self
+    }
+
+    /// The same problem keeping every robot sphere `padding` from every obstacle and point
+    /// cloud (beyond the checker's margin; the robot's own links are not padded): its checker
+    /// is [padded](ArmChecker::padded), so every configuration of every edge of a returned
+    /// path keeps that distance (certified), and so do the ends — check them with
+    /// [`check_ends`](Self::check_ends), which names an end within the padding
+    /// ([`ArmError::EndWithinPadding`]). Audit paths with [`MotionAudit::padded`](crate::MotionAudit::padded).
+    #[must_use]
+    pub fn with_padding(mut self, padding: Padding) -> Self {
+        self.checker = ArmChecker::padded(&self.robot, &self.scene, padding);
+        self
+    }
+
+    /// The padding kept from obstacles ([`Padding::ZERO`] unless set by
+    /// [`with_padding`](Self::with_padding)).
+    pub fn padding(&self) -> Padding {
+        self.checker.padding()
     }
 
     /// The robot (SRDF and the scene's allowed collisions applied).
@@ -578,7 +623,7 @@ fn snap_to_limits(space: &JointSpace, q: &mut [f64]) {
                 }
             }
             mit_star_spaces::JointKind::Continuous if v.is_finite() => {
-                *v = mit_star_spaces::wrap_angle(*v)
+                *v = mit_star_spaces::wrap_angle(*v);
             }
             mit_star_spaces::JointKind::Continuous => {}
         }

@@ -66,7 +66,7 @@ pub use arm_error::ArmError;
 pub use arm_problem::{ArmProblem, CERTIFICATION, CHECKS_PER_UNIT};
 pub use checking::{
     AUDIT_CONTACT, ArmChecker, AuditVerdict, CERTIFICATION_FLOOR, Contact, LimitViolation,
-    MotionAudit, ParryChecker, StateDiagnosis,
+    MAX_PADDING, MotionAudit, Padding, PaddingError, ParryChecker, StateDiagnosis,
 };
 pub use cloud_input::{
     CloudFormat, CloudInputError, CloudOrigin, DEFAULT_SAMPLES_PER_OBSTACLE, FilterReport,

@@ -41,6 +41,7 @@ fn the_one_millimetre_tab_is_found_and_a_free_motion_is_cleared() {
         AuditVerdict::Clear {
             configurations,
             clearance,
+            ..
         } => assert!(
             configurations < 2_000 && clearance > 0.0,
             "{configurations}"

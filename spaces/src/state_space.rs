@@ -192,8 +192,8 @@ pub fn reflect_into_interval(x: f64, lower: f64, upper: f64) -> f64 {
 /// Volume `ζ_n` of the unit ball in `R^n`: `π^(n/2) / Γ(n/2 + 1)`, by the recurrence
 /// `ζ_n = ζ_{n-2} · 2π / n` (exact for every `n`, no gamma function needed).
 pub fn unit_ball_measure(n: usize) -> f64 {
-    let mut volume = if n % 2 == 0 { 1.0 } else { 2.0 };
-    let mut k = if n % 2 == 0 { 2 } else { 3 };
+    let mut volume = if n.is_multiple_of(2) { 1.0 } else { 2.0 };
+    let mut k = if n.is_multiple_of(2) { 2 } else { 3 };
     while k <= n {
         volume *= 2.0 * std::f64::consts::PI / k as f64;
         k += 2;

@@ -43,7 +43,7 @@ struct Every {
 impl Stop for Every {
     fn should_stop(&self) -> bool {
         self.polls.set(self.polls.get() + 1);
-        self.polls.get() % self.every == 0
+        self.polls.get().is_multiple_of(self.every)
     }
 }
 

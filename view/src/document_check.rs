@@ -15,7 +15,7 @@ fn all_finite(field: &str, values: &[f32]) -> Checked {
 }
 
 fn multiple_of(field: &str, len: usize, k: usize, what: &str) -> Checked {
-    if len % k == 0 {
+    if len.is_multiple_of(k) {
         Ok(())
     } else {
         Err(ViewError::invalid(

@@ -34,7 +34,8 @@ convert --rev HEAD --yml curobo/content/configs/robot/simple_mimic_robot.yml \
 # the mirror: those three links keep cuRobo's spheres).
 mkdir -p "$out/kinova_gen3/capped"
 if [ ! -f "$out/kinova_gen3/capped/kinova_gen3_spherized.urdf" ]; then
-    "$mit" spherise "$out/kinova_gen3/kinova_gen3_mesh/kinova_gen3.urdf" --max-spheres 100 \
+    "$mit" spherise "$out/kinova_gen3/kinova_gen3_mesh/kinova_gen3.urdf" --tolerance 0.02 \
+        --max-spheres 100 \
         --fallback "$out/kinova_gen3/kinova_gen3_spherized.urdf" \
         --output "$out/kinova_gen3/capped/kinova_gen3_spherized.urdf"
 fi

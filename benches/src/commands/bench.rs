@@ -19,6 +19,7 @@ use crate::definition::robot_choice::RobotChoice;
 use crate::definition::shipped_experiment::ShippedExperiment;
 use crate::error::HarnessError;
 use crate::execution::executor::{ExecutionOptions, Executor};
+use crate::execution::figures::Figures;
 use crate::execution::results_folder::ResultsFolder;
 use crate::execution::run_job::RunJob;
 use crate::execution::run_journal::{RunJournal, results_from_records};
@@ -114,6 +115,12 @@ pub struct BenchArgs {
     /// a robot relies on.
     #[arg(long)]
     pub allow_coarse_step: bool,
+    /// Keep every robot sphere this many metres from every obstacle, for every arm problem
+    /// (`0.01`: a centimetre; at most 1), certified along every edge and re-checked by the
+    /// `f64` audit; replaces an experiment file's `padding`. Recorded in the results folder,
+    /// which is not resumed with another.
+    #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
+    pub padding: Option<mit_star_robot::Padding>,
     /// Parameter override for every planner, e.g. `--set batch_size=200` (repeatable).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
@@ -131,6 +138,11 @@ pub struct BenchArgs {
     /// Do not draw the figures.
     #[arg(long)]
     pub no_plots: bool,
+    /// Per-problem detail: print every problem's KPIs and list every file, and draw a figure
+    /// and a 3-D view of every problem instance besides each scene's (by default: the summary
+    /// by scene, one figure per scene; `kpi.md` always holds every problem's KPIs).
+    #[arg(long)]
+    pub per_problem: bool,
     /// No progress bar.
     #[arg(long, short)]
     pub quiet: bool,
@@ -195,6 +207,11 @@ impl BenchArgs {
         if self.allow_coarse_step {
             for problem in &mut experiment.problems {
                 problem.allow_coarse_step = true;
+            }
+        }
+        if let Some(padding) = self.padding {
+            for problem in &mut experiment.problems {
+                problem.padding = padding;
             }
         }
         if !self.only.is_empty() {
@@ -328,6 +345,7 @@ impl BenchArgs {
                 instances,
                 resolution: self.resolution,
                 allow_coarse_step: self.allow_coarse_step,
+                padding: self.padding.unwrap_or_default(),
                 cloud: cloud.clone(),
                 pose_goal: None,
             });
@@ -338,8 +356,18 @@ impl BenchArgs {
             let more = if problems.len() > 1 { "-and-more" } else { "" };
             // Among a cloud, another experiment: another default folder.
             let cloud = if first.cloud.is_some() { "-cloud" } else { "" };
+            // Padded, another experiment: another default folder.
+            let padding = match self.padding {
+                Some(p) if !p.is_zero() => {
+                    format!(
+                        "-padding{}mm",
+                        mit_star_spaces::short_number(p.metres() * 1e3)
+                    )
+                }
+                _ => String::new(),
+            };
             crate::definition::experiment::safe_name(&format!(
-                "{}-{}{cloud}{more}",
+                "{}-{}{cloud}{padding}{more}",
                 first.source.label(),
                 dims.join("-")
             ))
@@ -485,16 +513,26 @@ impl BenchArgs {
             RunJournal::read_records(folder.path())?,
             &results.instances,
         );
-        let files = folder.finish(&all, !self.no_plots)?;
+        let figures = Figures::from_flags(self.no_plots, self.per_problem);
+        let files = folder.finish(&all, figures)?;
         let table = KpiTable::from_results(&all);
-        say!("{}", crate::kpi_markdown(&all, &table));
+        if self.per_problem {
+            say!("{}", crate::kpi_markdown(&all, &table));
+        } else {
+            say!("{}\n", crate::kpi_overview(&all, &table, true).trim_end());
+        }
         say!(
             "Results in {} ({new_runs} runs added, {} recorded):",
             folder.path().display(),
             all.run_count()
         );
-        for f in files {
-            say!("  {}", f.display());
+        for line in file_listing(folder.path(), &files, self.per_problem) {
+            say!("  {line}");
+        }
+        if !self.per_problem {
+            say!(
+                "Every problem's KPIs are in kpi.md; --per-problem prints them and draws every problem."
+            );
         }
         if let Some(line) = audit_summary(&all) {
             say!("{line}");
@@ -523,6 +561,34 @@ impl BenchArgs {
         Ok(outcome)
     }
 }
+
+/// The lines listing `files` of the results folder `root`: every file with `per_problem`;
+/// else every file but those of a subfolder holding more than [`LISTED_PER_FOLDER`] of them,
+/// which gets one line with the count (`results/x/logs/ (100 files)`) where its first file
+/// would have been.
+pub(crate) fn file_listing(root: &Path, files: &[PathBuf], per_problem: bool) -> Vec<String> {
+    let folder_of = |f: &PathBuf| f.parent().map(Path::to_path_buf);
+    let count = |folder: &Option<PathBuf>| files.iter().filter(|f| folder_of(f) == *folder).count();
+    let mut lines = Vec::new();
+    let mut summarised: Vec<Option<PathBuf>> = Vec::new();
+    for f in files {
+        let folder = folder_of(f);
+        let n = count(&folder);
+        if per_problem || n <= LISTED_PER_FOLDER || folder.as_deref() == Some(root) {
+            lines.push(f.display().to_string());
+        } else if !summarised.contains(&folder) {
+            let name = folder
+                .as_deref()
+                .map_or(String::new(), |d| d.display().to_string());
+            lines.push(format!("{name}/ ({n} files)"));
+            summarised.push(folder);
+        }
+    }
+    lines
+}
+
+/// The most files of one folder [`file_listing`] lists one by one by default.
+pub(crate) const LISTED_PER_FOLDER: usize = 8;
 
 /// The runs of `shard` of `experiment` (all of them without one) and their total budget.
 fn shard_work(

@@ -69,8 +69,13 @@ impl CheckStateArgs {
             all_valid &= diagnosis.valid && joinable;
             say!("{what}: {diagnosis}");
             if !joinable {
+                let beyond = if arm.padding().is_zero() {
+                    "the margin".to_owned()
+                } else {
+                    format!("the margin and the padding of {}", arm.padding())
+                };
                 say!(
-                    "  within the certification floor ({} µm beyond the margin): no certified motion reaches it",
+                    "  within the certification floor ({} µm beyond {beyond}): no certified motion reaches it",
                     mit_star_robot::CERTIFICATION_FLOOR * 1e6
                 );
             }

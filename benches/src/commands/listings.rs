@@ -84,7 +84,7 @@ impl ProblemsArgs {
 /// # Errors
 /// Never; the signature matches the other commands.
 pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
-    say!("Planner configurations (spec mit-star.md §8):\n");
+    say!("Planner configurations (their parts: the guide's Composing a planner):\n");
     let parts = |c: Configuration| match c {
         Configuration::MitStar => {
             "adaptive sampler, estimated informed set, length-related sparse checks, reverse search yields while the forward queue is empty"

@@ -5,7 +5,9 @@ use std::path::PathBuf;
 use clap::Args;
 
 use crate::commands::CommandOutcome;
+use crate::commands::bench::file_listing;
 use crate::error::HarnessError;
+use crate::execution::figures::Figures;
 use crate::execution::shard_merge::merge_parts;
 use crate::formats::kpi_table::KpiTable;
 
@@ -21,6 +23,10 @@ pub struct MergeArgs {
     /// Do not draw the figures.
     #[arg(long)]
     pub no_plots: bool,
+    /// Per-problem detail, as `bench --per-problem`: every problem's KPIs printed, every
+    /// file listed, a figure and a 3-D view of every problem instance.
+    #[arg(long)]
+    pub per_problem: bool,
 }
 
 impl MergeArgs {
@@ -30,12 +36,18 @@ impl MergeArgs {
     /// Parts that do not make up one whole experiment (see [`merge_parts`]), and read or write
     /// errors.
     pub fn run(&self) -> Result<CommandOutcome, HarnessError> {
-        let report = merge_parts(&self.parts, &self.output, !self.no_plots)?;
+        let figures = Figures::from_flags(self.no_plots, self.per_problem);
+        let report = merge_parts(&self.parts, &self.output, figures)?;
         let results = &report.results;
-        say!(
-            "{}",
-            crate::kpi_markdown(results, &KpiTable::from_results(results))
-        );
+        let table = KpiTable::from_results(results);
+        if self.per_problem {
+            say!("{}", crate::kpi_markdown(results, &table));
+        } else {
+            say!(
+                "{}\n",
+                crate::kpi_overview(results, &table, true).trim_end()
+            );
+        }
         say!(
             "Merged {} shards ({} runs: {}) into {}:",
             self.parts.len(),
@@ -48,8 +60,8 @@ impl MergeArgs {
                 .join(" + "),
             self.output.display()
         );
-        for f in &report.files {
-            say!("  {}", f.display());
+        for line in file_listing(&self.output, &report.files, self.per_problem) {
+            say!("  {line}");
         }
         Ok(CommandOutcome::of_runs(
             false,

@@ -85,7 +85,7 @@ impl PlanArgs {
     /// The pictures' file name without extension: the problem instance, the planner and the
     /// seed, then — when any other setting was given (`--set`, a budget other than 1 s,
     /// `--first-solution`, `--simplify`, the problem's options beyond its name and instance:
-    /// resolution, robot, group, clouds; a pose goal) — `-s` and eight hexadecimal digits
+    /// resolution, robot, group, clouds, padding; a pose goal) — `-s` and eight hexadecimal digits
     /// (CRC-32) of those settings, so that runs with different settings never share a file.
     fn picture_stem(&self, instance: &str, planner: &str) -> String {
         let stem = format!("{instance}-{}-seed{}", sanitise(planner), self.seed);
@@ -114,6 +114,9 @@ impl PlanArgs {
         }
         if self.pose.goal_pose.is_some() {
             settings.push(format!("{:?}", self.pose));
+        }
+        if let Some(padding) = p.padding.filter(|p| !p.is_zero()) {
+            settings.push(format!("padding={}", padding.metres()));
         }
         if settings.is_empty() {
             return stem;
@@ -529,12 +532,12 @@ fn print_record(r: &RunRecord, instance: &ProblemInstance, files: &[PathBuf]) {
     say!("  counters (zeros left out; `--json` has them all):");
     for (name, value) in r.counter_values() {
         if value != 0 {
-            say!("    {name:<48} {value}");
+            say!("    {name:<32} {value}");
         }
     }
     for (name, value) in r.real_counter_values() {
         if let Some(value) = value {
-            say!("    {name:<48} {}", number(value));
+            say!("    {name:<32} {}", number(value));
         }
     }
     if !r.path.is_empty() {

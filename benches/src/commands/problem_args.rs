@@ -55,6 +55,12 @@ pub struct ProblemArgs {
     /// between checked points. Without it, a problem file's `allow_coarse_step` stands.
     #[arg(long)]
     pub allow_coarse_step: bool,
+    /// Keep every robot sphere this many metres from every obstacle and point cloud (arm
+    /// problems; `0.01`: a centimetre, at most 1): every configuration of every edge of the
+    /// path is certified to keep it, and the `f64` re-check measures it. The robot's own links
+    /// are not padded. Default 0.
+    #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
+    pub padding: Option<mit_star_robot::Padding>,
     /// Point clouds among the obstacles of an arm problem.
     #[command(flatten)]
     pub clouds: CloudArgs,
@@ -109,6 +115,9 @@ impl ProblemArgs {
         // The flag only ever allows: without it, the problem file's choice stands.
         if self.allow_coarse_step {
             problem = problem.allowing_coarse_step(true);
+        }
+        if let Some(padding) = self.padding {
+            problem = problem.with_padding(padding)?;
         }
         if (self.robot.is_some() || self.strict_robot || self.group.is_some())
             && !matches!(source, ProblemSource::Mbm(_))

@@ -97,7 +97,7 @@ impl Corners {
         match self {
             Self::Stop => Ok((Trajectory::stop_at_corners(&path, limits)?, None)),
             Self::Blend => {
-                let certifier = BlendCertifier::new(arm.robot(), arm.scene());
+                let certifier = BlendCertifier::padded(arm.robot(), arm.scene(), arm.padding());
                 let (t, r) = Trajectory::blended(&path, limits, &certifier)?;
                 Ok((t, Some(r)))
             }
@@ -284,7 +284,7 @@ pub(crate) fn check_trajectory_file(
     let usage = |e: mit_star_robot::TrajectoryError| HarnessError::Usage(e.to_string());
     let motion = limits.limits(arm)?;
     let trajectory = TrajectoryFile::read(file).map_err(usage)?;
-    let checker = ArmChecker::new(arm.robot(), arm.scene());
+    let checker = ArmChecker::padded(arm.robot(), arm.scene(), arm.padding());
     let check = check_trajectory(&trajectory, arm.robot(), arm.scene(), &motion, &checker)
         .map_err(usage)?;
     say!(

@@ -369,10 +369,11 @@ impl CloudSpec {
         }
         let point_radius = self.point_radius.unwrap_or(PointCloud::DEFAULT_RADIUS);
         if self.crop_reach {
-            // Widened by the points' radius and a centimetre (far more than the checker's
-            // margin): no point removed could ever touch a sphere.
+            // Widened by the points' radius, the problem's collision padding and a centimetre
+            // (far more than the checker's margin): no point removed could ever come within
+            // the padding of a sphere.
             let (center, reach) = mit_star_robot::reach_ball(arm.robot());
-            let radius = reach + point_radius.max(0.0) + 0.01;
+            let radius = reach + point_radius.max(0.0) + arm.padding().metres() + 0.01;
             let report = mit_star_robot::crop_to_ball(&mut points, center, radius)
                 .map_err(|e| fail(CloudOption::CropReach, e.into()))?;
             steps.push(step(

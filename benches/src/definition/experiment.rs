@@ -346,6 +346,10 @@ impl Experiment {
                 if p.allow_coarse_step {
                     e.insert("allow_coarse_step".into(), true.into());
                 }
+                // Recorded whenever set: a folder is never resumed with another padding.
+                if !p.padding.is_zero() {
+                    e.insert("padding".into(), p.padding.metres().into());
+                }
                 e.into()
             })
             .collect();

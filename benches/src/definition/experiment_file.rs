@@ -28,6 +28,8 @@
 //! # allow_coarse_step = true          # allow checks that can miss thin obstacles: a step
 //! #                                   # coarser than the thinnest box, an arm planned with
 //! #                                   # certification off (default false)
+//! # padding = 0.01                    # arms: metres every robot sphere keeps from every
+//! #                                   # obstacle, certified (default 0, at most 1)
 //! # robot = "ur5"                     # `name = "mbm:PATH"` only: a shipped robot (panda, the
 //! #                                   # default, ur5, fetch, baxter) or a folder with a URDF
 //! #                                   # and SRDF
@@ -151,6 +153,8 @@ pub struct ProblemEntry {
     /// Allow checks that can miss thin obstacles (a coarse step; an arm without
     /// certification).
     pub allow_coarse_step: Option<bool>,
+    /// Metres every robot sphere keeps from every obstacle (arm problems only; default 0).
+    pub padding: Option<f64>,
     /// The robot a MotionBenchMaker folder is planned for: a shipped name (`panda`, the
     /// default, `ur5`, `fetch`, `baxter`) or a folder with a URDF and an SRDF (relative to the file).
     pub robot: Option<String>,
@@ -437,6 +441,18 @@ fn problem_spec(
             Some(pose)
         }
     };
+    let padding = mit_star_robot::Padding::new(p.padding.unwrap_or(0.0))
+        .map_err(|e| bad(".padding", HarnessError::Usage(e.to_string())))?;
+    if !padding.is_zero() && !matches!(source, ProblemSource::Mbm(_)) {
+        return Err(bad(
+            ".padding",
+            HarnessError::Usage(format!(
+                "a collision padding applies to arm problems (`name = \"mbm:PATH\"`); `{}` is \
+                 a box world",
+                source.label()
+            )),
+        ));
+    }
     if instances.len() > 1 && !source.is_seeded() {
         return Err(bad(
             ".instances",
@@ -453,6 +469,7 @@ fn problem_spec(
         instances,
         resolution: p.resolution,
         allow_coarse_step: p.allow_coarse_step.unwrap_or(false),
+        padding,
         cloud,
         pose_goal,
     })

@@ -12,6 +12,7 @@ use mit_star_robot::{ArmProblem, MotionAudit};
 const AUDIT_BUDGET: u64 = 2_000_000;
 use mit_star_spaces::StateSpace;
 
+use crate::error::HarnessError;
 use crate::path_validation::PathValidation;
 
 /// The problem of one [`ProblemInstance`](crate::ProblemInstance): a box world (the PDT
@@ -89,6 +90,31 @@ impl InstanceProblem {
                 Arc::unwrap_or_clone(p).allowing_uncertified_motion(allow),
             )),
         }
+    }
+
+    /// The problem keeping `padding` from every obstacle ([`ArmProblem::with_padding`]); a box
+    /// world is a point among boxes and takes no padding.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] for a padding above zero on a box world.
+    pub fn with_padding(self, padding: mit_star_robot::Padding) -> Result<Self, HarnessError> {
+        match self {
+            Self::Boxes(_) if !padding.is_zero() => Err(HarnessError::Usage(
+                "a collision padding (`--padding`, `padding =`) applies to arm problems \
+                 (mbm:PATH): a box world's robot is a point"
+                    .into(),
+            )),
+            Self::Boxes(p) => Ok(Self::Boxes(p)),
+            Self::Arm(p) => Ok(Self::Arm(Arc::new(
+                Arc::unwrap_or_clone(p).with_padding(padding),
+            ))),
+        }
+    }
+
+    /// The padding kept from obstacles (zero for box worlds).
+    pub fn padding(&self) -> mit_star_robot::Padding {
+        self.as_arm()
+            .map_or(mit_star_robot::Padding::ZERO, |a| a.padding())
     }
 
     /// The collision-check step, or why the problem refuses it ([`PlanningProblem::check_step`]).
@@ -251,7 +277,8 @@ impl InstanceProblem {
     }
 
     /// Validates a returned path independently of the planner: exactly for box worlds,
-    /// continuously in `f64` for arms ([`PathValidation::check_continuous`]).
+    /// continuously in `f64` for arms ([`PathValidation::check_continuous`]), keeping the
+    /// problem's padding from obstacles ([`MotionAudit::padded`]).
     ///
     /// The check's own time is recorded in [`PathValidation::seconds`], so that reports
     /// show it apart from planning.
@@ -260,7 +287,7 @@ impl InstanceProblem {
         let mut validation = match self {
             Self::Boxes(p) => PathValidation::check(p, path, reported_cost),
             Self::Arm(p) => PathValidation::check_continuous(
-                &MotionAudit::new(p.robot(), p.scene()),
+                &MotionAudit::padded(p.robot(), p.scene(), p.padding()),
                 (p.start(), p.goals()),
                 path,
                 reported_cost,
@@ -309,7 +336,7 @@ fn describe_arm(p: &ArmProblem) -> String {
         .collect();
     format!(
         "name = \"{}\"\nrobot = \"{}\"\njoints = {}\nspheres = {}\nself_collision_pairs = {}\n\
-         obstacles = {{ boxes = {}, cylinders = {}, spheres = {} }}\n{}start = {}\ngoal = {}\nresolution = {}\n",
+         obstacles = {{ boxes = {}, cylinders = {}, spheres = {} }}\n{}start = {}\ngoal = {}\nresolution = {}\n{}",
         p.name(),
         p.robot().name(),
         p.space().dimension(),
@@ -325,6 +352,11 @@ fn describe_arm(p: &ArmProblem) -> String {
         },
         numbers(p.start()),
         numbers(&p.goals()[0]),
-        p.resolution()
+        p.resolution(),
+        if p.padding().is_zero() {
+            String::new()
+        } else {
+            format!("padding = {}\n", p.padding().metres())
+        }
     )
 }

@@ -45,6 +45,7 @@ pub(crate) fn check_instance_count(count: Option<u64>) -> Result<(), String> {
 ///     instances: vec![0, 1, 2],
 ///     resolution: None,
 ///     allow_coarse_step: false,
+///     padding: mit_star_robot::Padding::ZERO,
 ///     cloud: None,
 ///     pose_goal: None,
 /// };
@@ -71,6 +72,9 @@ pub struct ProblemSpec {
     /// ([`ProblemInstance`]'s `allowing_coarse_step`). A problem file's own
     /// `allow_coarse_step` stands either way.
     pub allow_coarse_step: bool,
+    /// The collision padding every arm instance keeps from its obstacles
+    /// ([`mit_star_robot::ArmProblem::with_padding`]; zero: none). Box worlds take none.
+    pub padding: mit_star_robot::Padding,
     /// A point cloud among the obstacles of every instance (MotionBenchMaker problems only),
     /// prepared once per instance when it is built.
     pub cloud: Option<CloudSpec>,
@@ -118,6 +122,7 @@ impl ProblemSpec {
                 if self.allow_coarse_step {
                     problem = problem.allowing_coarse_step(true);
                 }
+                problem = problem.with_padding(self.padding)?;
                 let mut cloud = None;
                 if let Some(spec) = &self.cloud {
                     let named = format!("`{label}` #{instance}");
@@ -203,6 +208,7 @@ mod tests {
             instances,
             resolution: None,
             allow_coarse_step: false,
+            padding: mit_star_robot::Padding::ZERO,
             cloud: None,
             pose_goal: None,
         }

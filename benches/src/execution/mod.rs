@@ -8,6 +8,8 @@
 //! - [`run_journal`] (with `run_journal/repair.rs`): every finished run appended to
 //!   `runs.jsonl`/`runs.csv` before the next starts and committed to the database in batches;
 //!   reading them back, repairing a torn last line and runs recorded twice.
+//! - [`figures`]: which figures and 3-D views a results folder gets (by scene, or every
+//!   problem too).
 //! - [`results_folder`] (with `results_folder/folder_lock.rs`, one writer per folder, and
 //!   `results_folder/agreement.rs`, whether journal, CSV and database agree): where the outputs
 //!   go, checked before work starts, and rebuilt from the journal at the end.
@@ -20,6 +22,7 @@
 //! [`crate::error`]. Not the command line.
 
 pub(crate) mod executor;
+pub(crate) mod figures;
 pub(crate) mod interrupt;
 pub(crate) mod results_folder;
 pub(crate) mod run_job;

@@ -10,13 +10,17 @@ use folder_lock::FolderLock;
 
 use crate::definition::experiment::Experiment;
 use crate::error::HarnessError;
+use crate::execution::figures::Figures;
 use crate::execution::run_journal::{RunJournal, results_from_records};
 use crate::execution::shard::Shard;
 use crate::formats::kpi_table::KpiTable;
 use crate::formats::ompl_log::benchmark_log::BenchmarkLog;
 use crate::formats::planner_arena_database::PlannerArenaDatabase;
 use crate::formats::report_page::{ReportInstance, ReportPage};
+use crate::formats::scene_summary::SceneSummary;
 use crate::outcome::experiment_results::ExperimentResults;
+use crate::outcome::run_record::RunRecord;
+use crate::outcome::scene::Scene;
 use crate::pictures::experiment_figure::ExperimentFigure;
 use crate::pictures::instance_views::{VIEWER_FILE, write_instance_view};
 
@@ -32,10 +36,11 @@ pub const DATABASE_FILE: &str = "benchmark.db";
 /// | `runs.jsonl` | one JSON object per run, appended likewise, with the trace, the path and the validation: the journal every summary is rebuilt from |
 /// | `logs/<instance>.log` | one OMPL benchmark log per problem instance, rebuilt from every recorded run |
 /// | `benchmark.db` | the Planner Arena database: runs committed in batches while they finish (at most 10 s behind), then rebuilt from every recorded run |
-/// | `plots/<instance>.svg`, `.png` | the figure of each problem instance |
-/// | `kpi.md` | the KPI tables |
-/// | `report.html` | the KPI tables, each instance's figure and a link to its 3-D view, on one page |
-/// | `views/<instance>.html`, `views/viewer.js` | the 3-D view of the instance's best and worst run (arms, 2-D and 3-D box worlds), sharing one viewer |
+/// | `plots/<scene>.svg`, `.png` | the figure of each scene, its instances pooled (a box world is a scene of its own, named as its instance) |
+/// | `plots/<instance>.svg`, `.png` | the figure of each instance of a scene of several (with [`Figures::ScenesAndProblems`] only) |
+/// | `kpi.md` | the summary by scene, the KPI tables |
+/// | `report.html` | the KPI tables, each scene's figure and a link to a 3-D view, on one page |
+/// | `views/<instance>.html`, `views/viewer.js` | the 3-D view of an instance's best and worst run (arms, 2-D and 3-D box worlds), sharing one viewer: each scene's hardest instance, or every instance with [`Figures::ScenesAndProblems`] |
 /// | `shard.toml` | which part of the experiment's runs the folder holds (`bench --shard K/N` only) |
 /// | `.mit-star.lock` | the lock of the one process writing the folder, with its process id and command line while it runs |
 ///
@@ -103,7 +108,7 @@ impl ResultsFolder {
     pub fn write(
         &mut self,
         results: &ExperimentResults,
-        plots: bool,
+        figures: Figures,
     ) -> Result<Vec<PathBuf>, HarnessError> {
         self.claim(&results.experiment)?;
         let mut journal = RunJournal::open(&self.path, &results.experiment, &results.instances)?;
@@ -120,7 +125,7 @@ impl ResultsFolder {
             RunJournal::read_records(&self.path)?,
             &results.instances,
         );
-        self.finish(&all, plots)
+        self.finish(&all, figures)
     }
 
     /// Every run recorded in the results folder `path`, as results of the experiment in its
@@ -244,15 +249,16 @@ impl ResultsFolder {
     }
 
     /// Rebuilds everything derived from the raw runs — one OMPL `.log` per instance, the
-    /// Planner Arena database, plots and `kpi.md`, each replaced atomically — from `results`,
-    /// every run recorded in the folder. The raw files are the journal's and are not touched.
+    /// Planner Arena database, the `figures` and `kpi.md`, each replaced atomically — from
+    /// `results`, every run recorded in the folder. The raw files are the journal's and are
+    /// not touched.
     ///
     /// # Errors
     /// Whatever cannot be written.
     pub fn finish(
         &mut self,
         results: &ExperimentResults,
-        plots: bool,
+        figures: Figures,
     ) -> Result<Vec<PathBuf>, HarnessError> {
         let mut files = vec![
             self.path.join("experiment.toml"),
@@ -276,12 +282,6 @@ impl ResultsFolder {
             write_replacing(&path, log.to_text().as_bytes())?;
             files.push(path);
             database.insert(&log)?;
-            if plots {
-                let svg = self.path.join("plots").join(format!("{}.svg", instance.id));
-                let png = svg.with_extension("png");
-                ExperimentFigure::from_results(results, index).save(&svg, &png)?;
-                files.extend([svg, png]);
-            }
         }
         drop(database);
         let target = self.path.join(DATABASE_FILE);
@@ -291,43 +291,101 @@ impl ResultsFolder {
         })?;
         self.database = PlannerArenaDatabase::open(&target)?;
         files.push(target);
+        let scenes: Vec<Scene> = Scene::of(&results.instances)
+            .into_iter()
+            .filter(|s| s.instances.iter().any(|&i| !results.runs[i].is_empty()))
+            .collect();
+        if figures.any() {
+            for scene in &scenes {
+                let figure = ExperimentFigure::from_scene(results, scene);
+                files.extend(self.save_figure(&figure, &scene.id)?);
+                if figures.per_problem() && scene.instances.len() > 1 {
+                    for &index in &scene.instances {
+                        if !results.runs[index].is_empty() {
+                            let figure = ExperimentFigure::from_results(results, index);
+                            files.extend(self.save_figure(&figure, &results.instances[index].id)?);
+                        }
+                    }
+                }
+            }
+        }
         let kpi = kpi_markdown(results, &KpiTable::from_results(results));
         let path = self.path.join("kpi.md");
         write_replacing(&path, kpi.as_bytes())?;
         files.push(path);
-        files.extend(self.write_report(results, kpi, plots)?);
+        files.extend(self.write_report(results, &scenes, kpi, figures)?);
         Ok(files)
     }
 
-    /// Writes `report.html` (the KPI tables `kpi`, each instance's figure when `plots`) and,
-    /// when `plots`, the 3-D view of each instance's best and worst run in `views/`; the
-    /// files written.
+    /// Saves `figure` as `plots/<id>.svg` and `.png`; the two files.
+    fn save_figure(
+        &self,
+        figure: &ExperimentFigure,
+        id: &str,
+    ) -> Result<[PathBuf; 2], HarnessError> {
+        let svg = self.path.join("plots").join(format!("{id}.svg"));
+        let png = svg.with_extension("png");
+        figure.save(&svg, &png)?;
+        Ok([svg, png])
+    }
+
+    /// Writes `report.html` (the KPI tables `kpi`, each scene's figure when `figures` asks for
+    /// any, each instance's too with [`Figures::ScenesAndProblems`]) and the 3-D views they
+    /// link to in `views/`: each scene's hardest instance (`hardest_instance`), and every
+    /// instance with [`Figures::ScenesAndProblems`]; the files written.
     fn write_report(
         &self,
         results: &ExperimentResults,
+        scenes: &[Scene],
         kpi: String,
-        plots: bool,
+        figures: Figures,
     ) -> Result<Vec<PathBuf>, HarnessError> {
         let mut files = Vec::new();
-        let mut instances = Vec::with_capacity(results.instances.len());
-        for (index, instance) in results.instances.iter().enumerate() {
-            let has_runs = !results.runs[index].is_empty();
-            let figure = (plots && has_runs).then(|| format!("plots/{}.svg", instance.id));
+        let mut entries = Vec::with_capacity(scenes.len());
+        let view_of = |index: usize, files: &mut Vec<PathBuf>| {
+            let id = &results.instances[index].id;
+            let link = format!("views/{id}.html");
+            let page = self.path.join(&link);
+            writable_folder(&self.path.join("views"))?;
+            let written = write_instance_view(results, index, &page)?;
+            if written.is_some() && !files.contains(&page) {
+                files.push(page);
+            }
+            Ok::<_, HarnessError>(written.map(|what| (link, what)))
+        };
+        for scene in scenes {
             let mut view = None;
-            if plots && has_runs {
-                let link = format!("views/{}.html", instance.id);
-                let page = self.path.join(&link);
-                writable_folder(&self.path.join("views"))?;
-                if let Some(what) = write_instance_view(results, index, &page)? {
-                    files.push(page);
-                    view = Some((link, what));
+            if figures.any() {
+                let hardest = hardest_instance(results, &scene.instances);
+                view = view_of(hardest, &mut files)?;
+                if scene.instances.len() > 1
+                    && let Some((_, what)) = &mut view
+                {
+                    let noun = if scene.arm { "problem" } else { "layout" };
+                    *what = format!(
+                        "its hardest {noun}, {}: {what}",
+                        results.instances[hardest].title()
+                    );
                 }
             }
-            instances.push(ReportInstance {
-                title: instance.title(),
-                figure,
+            entries.push(ReportInstance {
+                title: scene.title.clone(),
+                figure: figures.any().then(|| format!("plots/{}.svg", scene.id)),
                 view,
             });
+            if figures.per_problem() && scene.instances.len() > 1 {
+                for &index in &scene.instances {
+                    if results.runs[index].is_empty() {
+                        continue;
+                    }
+                    let instance = &results.instances[index];
+                    entries.push(ReportInstance {
+                        title: instance.title(),
+                        figure: Some(format!("plots/{}.svg", instance.id)),
+                        view: view_of(index, &mut files)?,
+                    });
+                }
+            }
         }
         if files.iter().any(|f| f.starts_with(self.path.join("views"))) {
             let viewer = self.path.join("views").join(VIEWER_FILE);
@@ -337,13 +395,43 @@ impl ResultsFolder {
         let page = ReportPage {
             title: results.experiment.name.clone(),
             kpi_markdown: kpi,
-            instances,
+            instances: entries,
         };
         let path = self.path.join("report.html");
         write_replacing(&path, page.to_html().as_bytes())?;
         files.push(path);
         Ok(files)
     }
+}
+
+/// The hardest of `indices` that has a path to show: an instance with a path that failed the
+/// validation if there is one, else, among those with a solved run, the one with the greatest
+/// median time to the first solution over all its runs (failed runs count as `∞`; the first
+/// such instance on ties); the first of `indices` if no run solved.
+pub(crate) fn hardest_instance(results: &ExperimentResults, indices: &[usize]) -> usize {
+    let invalid = indices.iter().copied().find(|&i| {
+        results.runs[i]
+            .iter()
+            .any(|r| r.status == crate::RunStatus::InvalidPath)
+    });
+    invalid.unwrap_or_else(|| {
+        let median = |i: usize| {
+            let times: Vec<f64> = results.runs[i]
+                .iter()
+                .map(|r| r.initial_time_or_inf())
+                .collect();
+            crate::statistics::MedianEstimate::of(&times, 0.5)
+                .map_or(f64::NEG_INFINITY, |m| m.median)
+        };
+        let solved = |i: &usize| results.runs[*i].iter().any(RunRecord::is_success);
+        let mut hardest: Option<usize> = None;
+        for i in indices.iter().copied().filter(solved) {
+            if hardest.is_none_or(|h| median(i) > median(h)) {
+                hardest = Some(i);
+            }
+        }
+        hardest.unwrap_or(indices[0])
+    })
 }
 
 /// Writes `bytes` to `path` by writing a temporary file beside it and renaming it over
@@ -378,8 +466,32 @@ pub fn writable_folder(path: &Path) -> Result<(), HarnessError> {
     std::fs::remove_file(&probe).map_err(fail)
 }
 
-/// `kpi.md`: how the experiment ran, then the paper-style table and the full table.
+/// `kpi.md`: how the experiment ran, the summary by scene, then the paper-style table, the
+/// problems with several layouts and the full table.
 pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
+    let mut s = kpi_overview(results, table, false);
+    if let Some(families) = table.families_markdown() {
+        let _ = writeln!(
+            s,
+            "## Problems with several layouts\n\nEvery layout pooled (a MotionBenchMaker scene's \
+             problems, random rectangles' seeds); failed runs count as ∞.\n\n{families}"
+        );
+    }
+    let _ = writeln!(
+        s,
+        "## All KPIs\n\nmin, median [{:.0} % confidence interval], max.\n\n{}",
+        100.0 * table.confidence,
+        table.full_markdown()
+    );
+    s
+}
+
+/// The head of `kpi.md`, what `bench` prints by default: how the experiment ran (point
+/// clouds and invalid paths included), the summary by scene ([`SceneSummary`]), and the
+/// medians in the paper's Table I layout — always in `kpi.md` (`brief` false), and with
+/// `brief` only when it has the t_init gain column (MIT* and EIT* both ran), one row per
+/// scene.
+pub fn kpi_overview(results: &ExperimentResults, table: &KpiTable, brief: bool) -> String {
     let e = &results.experiment;
     let mut s = format!("# {}\n\n", e.name);
     if !e.description.is_empty() {
@@ -434,26 +546,29 @@ pub fn kpi_markdown(results: &ExperimentResults, table: &KpiTable) -> String {
         }
         s.push('\n');
     }
+    let summary = SceneSummary::from_results(results);
     let _ = writeln!(
         s,
-        "## Medians (paper's Table I layout)\n\nMedian time to the first solution `t_init` [s], \
-         median first-solution cost `c_init`, median final cost `c_final`; failed runs count \
-         as ∞. t_init gain = 1 − t_MIT / t_EIT.\n\n{}",
-        table.paper_markdown()
+        "## Summary by {}\n\n{}Failed runs count as ∞. Planning includes construction; the \
+         independent audit of a path is timed apart, in no planner's time.\n\n{}",
+        if summary.pooled { "scene" } else { "problem" },
+        if summary.pooled {
+            "A planner's runs on every instance of a scene (its problems, or a problem's \
+             layouts) pooled. "
+        } else {
+            ""
+        },
+        summary.markdown()
     );
-    if let Some(families) = table.families_markdown() {
+    if !brief || table.has_gain() {
         let _ = writeln!(
             s,
-            "## Problems with several layouts\n\nEvery layout pooled (a MotionBenchMaker scene's \
-             problems, random rectangles' seeds); failed runs count as ∞.\n\n{families}"
+            "## Medians (paper's Table I layout)\n\nMedian time to the first solution `t_init` [s], \
+             median first-solution cost `c_init`, median final cost `c_final`; failed runs count \
+             as ∞. t_init gain = 1 − t_MIT / t_EIT.\n\n{}",
+            table.paper_markdown()
         );
     }
-    let _ = writeln!(
-        s,
-        "## All KPIs\n\nmin, median [{:.0} % confidence interval], max.\n\n{}",
-        100.0 * table.confidence,
-        table.full_markdown()
-    );
     s
 }
 

@@ -349,6 +349,7 @@ mod tests {
             instances: vec![0],
             resolution: Some(resolution),
             allow_coarse_step: false,
+            padding: mit_star_robot::Padding::ZERO,
             cloud: None,
             pose_goal: None,
         }

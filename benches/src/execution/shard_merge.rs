@@ -28,7 +28,7 @@ pub struct MergeReport {
 }
 
 /// Combines the results folders `parts` of `bench --shard K/N` runs into `output`: raw runs,
-/// one OMPL log per problem instance, the Planner Arena database, plots (if `plots`) and the
+/// one OMPL log per problem instance, the Planner Arena database, the `figures` and the
 /// KPI tables, exactly as if the experiment had run whole on one machine (runs in schedule
 /// order, each with the seed and outcome its shard recorded).
 ///
@@ -46,7 +46,7 @@ pub struct MergeReport {
 pub fn merge_parts(
     parts: &[PathBuf],
     output: &Path,
-    plots: bool,
+    figures: crate::execution::figures::Figures,
 ) -> Result<MergeReport, HarnessError> {
     let shards = shards_of(parts)?;
     // No part changes while it is read: a shard still being written is refused.
@@ -170,7 +170,7 @@ pub fn merge_parts(
         machine: MachineInfo::detect(),
     };
     let results = results_from_records(&template, RunJournal::read_records(output)?, &instances);
-    let files = folder.finish(&results, plots)?;
+    let files = folder.finish(&results, figures)?;
     Ok(MergeReport {
         results,
         runs_per_part,

@@ -149,7 +149,7 @@ impl KpiTable {
     }
 
     /// `true` if the gain column applies (MIT* and EIT* both present).
-    fn has_gain(&self) -> bool {
+    pub(crate) fn has_gain(&self) -> bool {
         let has = |c| self.rows.iter().any(|r| r.configuration == c);
         has(Configuration::MitStar) && has(Configuration::EitStar)
     }
@@ -303,7 +303,7 @@ fn row(
 }
 
 /// The `q`-quantile of `values` by nearest rank (`∞` for no values; NaN counts as ∞).
-fn percentile(mut values: Vec<f64>, q: f64) -> f64 {
+pub(crate) fn percentile(mut values: Vec<f64>, q: f64) -> f64 {
     if values.is_empty() {
         return f64::INFINITY;
     }

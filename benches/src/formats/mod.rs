@@ -9,7 +9,8 @@
 //!   the JSON `plan --json` and `runs.jsonl` write) and the robot's coordinate order.
 //! - [`raw_runs`]: `runs.csv` (one row per run) and `runs.jsonl` (one JSON object per run):
 //!   their columns, rows and lines, and reading the CSV back.
-//! - [`kpi_table`]: the KPI tables (`kpi.md`, the paper's Table I and the full KPIs);
+//! - [`scene_summary`]: the summary by scene `bench` prints and `kpi.md` opens with;
+//!   [`kpi_table`]: the KPI tables (`kpi.md`, the paper's Table I and the full KPIs);
 //!   [`campaign_comparison`]: two results folders' KPIs side by side (`mit-star compare`).
 //! - [`report_page`]: `report.html`, the KPI tables, the figures and the links to the 3-D
 //!   views of each instance on one page.
@@ -26,3 +27,4 @@ pub(crate) mod path_joints;
 pub(crate) mod planner_arena_database;
 pub(crate) mod raw_runs;
 pub(crate) mod report_page;
+pub(crate) mod scene_summary;

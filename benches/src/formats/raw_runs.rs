@@ -49,7 +49,7 @@ pub(crate) fn csv_header() -> Vec<String> {
         RunRecord::counter_names()
             .iter()
             .chain(&RunRecord::real_counter_names())
-            .map(|n| n.replace(' ', "_")),
+            .map(|n| (*n).to_owned()),
     );
     header.push("trace".into());
     header

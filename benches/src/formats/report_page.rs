@@ -1,6 +1,6 @@
 //! [`ReportPage`]: `report.html`, an experiment's results on one page — the KPI tables, each
-//! problem instance's figure (cost and success over time per planner, first solutions) and
-//! links to the 3-D views of its best and worst runs.
+//! scene's figure (cost and success over time per planner, first solutions; each problem
+//! instance's too with `--per-problem`) and links to the 3-D views of best and worst runs.
 
 use std::fmt::Write as _;
 
@@ -49,14 +49,11 @@ impl ReportPage {
         );
         let _ = writeln!(
             s,
-            "<nav><a href=\"#tables\">Tables</a><a href=\"#instances\">Problem instances</a></nav>"
+            "<nav><a href=\"#tables\">Tables</a><a href=\"#instances\">Figures</a></nav>"
         );
         let _ = writeln!(s, "<section id=\"tables\">");
         s.push_str(&markdown_html(&self.kpi_markdown));
-        let _ = writeln!(
-            s,
-            "</section>\n<section id=\"instances\"><h2>Problem instances</h2>"
-        );
+        let _ = writeln!(s, "</section>\n<section id=\"instances\"><h2>Figures</h2>");
         if self.instances.iter().all(|i| i.figure.is_none()) {
             let _ = writeln!(
                 s,

@@ -7,6 +7,8 @@
 //! - [`experiment_results`]: [`ExperimentResults`](crate::ExperimentResults), every finished
 //!   run of an experiment per problem instance, with how, when and where it ran.
 //! - [`machine_info`]: the host, its CPU and the date, as benchmark logs record them.
+//! - [`scene`]: the instances of one problem in one dimension ([`Scene`](crate::Scene)), which
+//!   `bench` summarises and draws together.
 //!
 //! May use: [`crate::definition`] (the experiment and its instances),
 //! [`crate::path_validation`], and from execution only the names of a run and of a part
@@ -15,3 +17,4 @@
 pub(crate) mod experiment_results;
 pub(crate) mod machine_info;
 pub(crate) mod run_record;
+pub(crate) mod scene;

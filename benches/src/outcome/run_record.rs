@@ -1,9 +1,7 @@
 //! [`RunRecord`] and [`RunStatus`]: everything measured in one run of one planner.
 
-use std::sync::LazyLock;
 
-use mit_star::{Configuration, Counters, TracePoint};
-use mit_star_validity::LENGTH_BUCKET_LABELS;
+use mit_star::{COUNT_NAMES_LEN, Configuration, Counters, TracePoint};
 use serde::{Deserialize, Serialize};
 
 use crate::path_validation::PathValidation;
@@ -160,80 +158,17 @@ impl RunRecord {
 }
 
 /// How many integer counters a run records.
-pub(crate) const COUNTERS: usize = 51;
-
-/// Names of the per-length counters: checks and points of sparse and full checks for each bucket
-/// of [`mit_star_validity::LENGTH_BUCKET_BOUNDS`], named after [`mit_star_validity::LENGTH_BUCKET_LABELS`]
-/// (`sparse checks of edges under 2e3 points`, …).
-static BY_LENGTH: LazyLock<[[String; 5]; 4]> = LazyLock::new(|| {
-    [
-        "sparse checks",
-        "sparse points",
-        "full checks",
-        "full points",
-    ]
-    .map(|kind| LENGTH_BUCKET_LABELS.map(|label| format!("{kind} of edges {label}")))
-});
+pub(crate) const COUNTERS: usize = COUNT_NAMES_LEN;
 
 /// The real-valued counters of a planner, named.
 fn real_counter_list(c: &Counters) -> [(&'static str, Option<f64>); 2] {
-    [
-        ("estimated informed set initial cost", c.estimate_initial),
-        ("estimated informed set final cost", c.estimate_final),
-    ]
+    c.reals()
 }
 
-/// The counters of a planner, named.
+/// The counters of a planner, named as everywhere else ([`mit_star::COUNT_NAMES`]: the
+/// fields of [`Counters`], as Python's `counters()` and `runs.jsonl` key them).
 fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
-    let by_length = [
-        c.sparse_checks_by_length,
-        c.sparse_points_by_length,
-        c.full_checks_by_length,
-        c.full_points_by_length,
-    ];
-    let mut list = [("", 0); COUNTERS];
-    let named = [
-        ("iterations", c.iterations),
-        ("batches", c.batches),
-        ("samples", c.samples),
-        ("samples drawn", c.samples_drawn),
-        ("state validity checks", c.validity_checks),
-        ("sparse edge checks", c.sparse_checks),
-        ("full edge checks", c.full_checks),
-        ("edge points tested", c.points_tested),
-        ("edge points culled", c.points_culled),
-        ("certified edges", c.certifications),
-        ("certification failures", c.certification_failures),
-        ("nearest neighbour queries", c.neighbour_queries),
-        ("reverse search restarts", c.reverse_restarts),
-        ("reverse search repairs", c.reverse_repairs),
-        ("reverse search iterations", c.reverse_iterations),
-        ("forward search iterations", c.forward_iterations),
-        ("pruned vertices", c.pruned),
-        ("graph states", c.vertices),
-        ("graph motions", c.edges),
-        ("peak graph states", c.peak_vertices),
-        ("peak graph motions", c.peak_edges),
-        ("sampler validity checks", c.sampler_checks),
-        ("sampler valid draws", c.sampler_pre_valid),
-        ("sampler gaussian repairs", c.sampler_gaussian),
-        ("sampler bridge repairs", c.sampler_bridge),
-        ("sampler near terminal draws", c.sampler_near_terminals),
-        ("sampler near frontier draws", c.sampler_near_frontier),
-        ("start frontiers", c.start_frontiers),
-        ("sampler failed repairs", c.sampler_restarts),
-        ("estimated informed set expansions", c.estimate_expansions),
-        ("estimated informed set batches", c.estimate_batches),
-    ];
-    list[..named.len()].copy_from_slice(&named);
-    let mut i = named.len();
-    for (names, values) in BY_LENGTH.iter().zip(by_length) {
-        for (name, value) in names.iter().zip(values) {
-            list[i] = (name.as_str(), value);
-            i += 1;
-        }
-    }
-    list
+    c.counts()
 }
 
 #[cfg(test)]
@@ -292,6 +227,6 @@ mod tests {
         assert_eq!(RunStatus::Unsolved.ompl_status(), 4);
         assert_eq!(RunStatus::Error.name(), "error");
         let names: Vec<&str> = ok.counter_values().iter().map(|c| c.0).collect();
-        assert!(names.contains(&"graph states") && names.contains(&"graph motions"));
+        assert!(names.contains(&"vertices") && names.contains(&"sparse_checks_by_length_4"));
     }
 }

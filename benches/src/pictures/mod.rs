@@ -1,7 +1,9 @@
 //! Pictures, in SVG and PNG.
 //!
-//! - [`experiment_figure`]: the figure of one problem instance of an experiment (median cost
-//!   and success rate over time, initial solutions), one per instance in `plots/`.
+//! - [`experiment_figure`]: the figure of a scene or a problem instance of an experiment
+//!   (median cost and success rate over time, initial solutions) in `plots/`, drawn with
+//!   [`plot_axes`] (1-2-5 log ticks, ranges fitted to the data) and [`step_curves`]
+//!   (piecewise-constant curves and their bands).
 //! - [`run_picture`]: one run on a 2-D problem (obstacles, samples, trees, informed sets, the
 //!   path), drawn by `mit-star plan`.
 //! - [`arm_picture`]: an arm plan (the scene, the arm's spheres along the path, the hand's
@@ -26,10 +28,12 @@ pub(crate) mod arm_view;
 pub(crate) mod experiment_figure;
 pub(crate) mod instance_views;
 pub(crate) mod plan_view;
+pub(crate) mod plot_axes;
 pub(crate) mod plot_style;
 pub(crate) mod robot_sweep;
 pub(crate) mod run_picture;
 pub(crate) mod search_view;
+pub(crate) mod step_curves;
 pub(crate) mod trajectory_plot;
 pub(crate) mod view_frames;
 pub(crate) mod world_view;

@@ -88,7 +88,7 @@ where
         let mut stopped = false;
         while let Some(v) = walk.pop() {
             walked += 1;
-            if walked % FRONTIER_POLL == 0 && stop.should_stop() {
+            if walked.is_multiple_of(FRONTIER_POLL) && stop.should_stop() {
                 stopped = true;
                 break;
             }

@@ -62,19 +62,19 @@ where
         out: &mut [f64],
     ) -> Result<(), SampleError> {
         self.count += 1;
-        if self.count % 3 == 0 {
-            if let Some((centre, half)) = self.pocket.take() {
-                loop {
-                    for (x, c) in out.iter_mut().zip(&centre) {
-                        *x = c + half * self.unit();
-                    }
-                    if validity.is_valid(out) {
-                        break;
-                    }
+        if self.count.is_multiple_of(3)
+            && let Some((centre, half)) = self.pocket.take()
+        {
+            loop {
+                for (x, c) in out.iter_mut().zip(&centre) {
+                    *x = c + half * self.unit();
                 }
-                self.pocket = Some((centre, half));
-                return Ok(());
+                if validity.is_valid(out) {
+                    break;
+                }
             }
+            self.pocket = Some((centre, half));
+            return Ok(());
         }
         self.inner.sample(space, validity, bound, stop, out)
     }

@@ -70,7 +70,7 @@ where
                 continue;
             }
             settled += 1;
-            if settled > cap || (settled % REACH_POLL == 0 && stop.should_stop()) {
+            if settled > cap || (settled.is_multiple_of(REACH_POLL) && stop.should_stop()) {
                 complete = false;
                 break;
             }

@@ -326,7 +326,9 @@ where
                 && self.landing[t] >= MIN_LANDING
             {
                 redraws += 1;
-                if redraws % REDRAW_POLL == 0 && stop.should_stop() || !self.draw_target(stop) {
+                if redraws.is_multiple_of(REDRAW_POLL) && stop.should_stop()
+                    || !self.draw_target(stop)
+                {
                     return Some(Step::Stopped);
                 }
                 continue;

@@ -7,7 +7,8 @@
 //! covered by pieces, and for each piece every sphere, grown by how far it can move within the
 //! piece (the local sweep and [`LeverArms`](crate::LeverArms) bounds) and by the checker's
 //! margin for `f32` rounding, is clear of the scene and of the other links at the piece's
-//! middle configuration.
+//! middle configuration — and, grown by the user's [padding](crate::Padding) too, clear of
+//! the scene: a padded checker's certified edges keep the padding at every configuration.
 //!
 //! # The walk
 //! Conservative advancement along the edge from its first end. Each batch evaluates a lane's worth
@@ -159,7 +160,7 @@ impl ArmChecker {
                 *progress = progress.advanced(1.0, w);
                 return Some(EdgeStatus::Valid);
             }
-            if batches % POLL_BATCHES == 0 && stop.should_stop() {
+            if batches.is_multiple_of(POLL_BATCHES) && stop.should_stop() {
                 *progress = progress.advanced(t, w);
                 return Some(EdgeStatus::Unknown);
             }

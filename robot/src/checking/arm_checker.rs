@@ -14,7 +14,7 @@ use crate::checking::local_sweep::LocalSweep;
 use crate::checking::obstacle_grid::{Candidates, GRID_THRESHOLD, ObstacleGrid, widest};
 use crate::checking::reachable_obstacles::reachable_obstacles;
 use crate::checking::scratch_cell::ScratchCell;
-use crate::{CloudObstacle, Kinematics, LeverArms, Obstacle, RobotModel, Scene};
+use crate::{CloudObstacle, Kinematics, LeverArms, Obstacle, Padding, RobotModel, Scene};
 
 /// What the checks share between clones: the kinematics, the scene, the pair lists and the
 /// bounds certification uses.
@@ -53,8 +53,14 @@ pub(crate) struct Shared {
     /// How much every sphere is grown in every test, covering the `f32` rounding of the
     /// kinematics and of the contact tests (see [`ArmChecker::margin`]).
     pub(crate) margin: f64,
-    /// The margin per entry of `links`, in every lane: the growth of a plain check.
+    /// The user's padding: spheres are grown by it, beyond the margin, in every test against
+    /// the scene (not between links).
+    pub(crate) padding: Padding,
+    /// The margin and the padding per entry of `links`, in every lane (rounded up): the growth
+    /// of a plain check against the scene.
     plain: Vec<LaneF32>,
+    /// The margin in every lane: the growth of each sphere of a self-collision pair.
+    pair_grow: LaneF32,
     /// Per entry of `links`, per coordinate: the link's lever arm ([`LeverArms`]).
     pub(crate) levers: Vec<f64>,
     /// Per entry of `pairs`, per coordinate: how fast the pair's links can move relative to
@@ -143,6 +149,11 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// is proven collision-free, not only its grid points (see [`LeverArms`] for the bound and
 /// `arm_certification.rs` for the walk).
 ///
+/// **Padding** ([`padded`](Self::padded)): every sphere is grown by a user's [`Padding`] too
+/// in every test against the scene (plain checks, batches and certification), not between
+/// the robot's links, so a padded checker's certified edges keep the padding from every
+/// obstacle at every configuration.
+///
 /// Clones share the model and scene (an [`Arc`]) and own their scratch buffers, so a check
 /// never allocates. The scratch sits behind a mutex so that problems holding a checker
 /// can be shared between threads; each planner owns its own clone, so the lock is never
@@ -155,9 +166,19 @@ pub struct ArmChecker {
 }
 
 impl ArmChecker {
-    /// The checker of `robot` (its self-collision pairs as they stand) in `scene`.
+    /// The checker of `robot` (its self-collision pairs as they stand) in `scene`, without
+    /// padding.
     pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
-        Self::with_grid_threshold(robot, scene, GRID_THRESHOLD)
+        Self::build(robot, scene, GRID_THRESHOLD, Padding::ZERO)
+    }
+
+    /// The checker of `robot` in `scene` keeping every sphere `padding` (beyond the
+    /// [margin](Self::margin)) from every obstacle and point cloud: a configuration is valid
+    /// only with every sphere grown by the margin and the padding clear of the scene (and, grown
+    /// by the margin only, of the other links of its self-collision pairs), and a certified
+    /// motion keeps that at every configuration.
+    pub fn padded(robot: &RobotModel, scene: &Scene, padding: Padding) -> Self {
+        Self::build(robot, scene, GRID_THRESHOLD, padding)
     }
 
     /// [`new`](Self::new) with a grid over a link's reachable obstacles from `threshold` of
@@ -165,6 +186,11 @@ impl ArmChecker {
     /// answers are the same either way.
     #[doc(hidden)]
     pub fn with_grid_threshold(robot: &RobotModel, scene: &Scene, threshold: usize) -> Self {
+        Self::build(robot, scene, threshold, Padding::ZERO)
+    }
+
+    /// [`with_grid_threshold`](Self::with_grid_threshold) with `padding`.
+    fn build(robot: &RobotModel, scene: &Scene, threshold: usize, padding: Padding) -> Self {
         let fk = Kinematics::new(robot);
         let bounds = robot.link_bounding_spheres();
         let links: Vec<(usize, Range<usize>, Vec3A, f32)> = (0..robot.links().len())
@@ -225,8 +251,8 @@ impl ArmChecker {
         let (reachable, reachable_clouds) = reachable_obstacles(
             (robot, &fk, &arms),
             &links,
-            scene.obstacles(),
-            scene.clouds(),
+            (scene.obstacles(), scene.clouds()),
+            padding.metres(),
         );
         let grids: Vec<Option<ObstacleGrid>> = reachable
             .iter()
@@ -275,12 +301,17 @@ impl ArmChecker {
                 grids,
                 clouds: scene.clouds().to_vec(),
                 reachable_clouds,
-                plain: vec![LaneF32::splat(margin as f32); links.len()],
+                plain: vec![
+                    LaneF32::splat(((margin + padding.metres()) * (1.0 + 1e-6)) as f32);
+                    links.len()
+                ],
+                pair_grow: LaneF32::splat(margin as f32),
                 links,
                 spheres,
                 reaches,
                 pairs,
                 margin,
+                padding,
                 levers,
                 pair_levers,
                 local,
@@ -301,6 +332,12 @@ impl ArmChecker {
     /// MotionBenchMaker scene).
     pub fn margin(&self) -> f64 {
         self.shared.margin
+    }
+
+    /// The [padding](Self::padded) kept from the scene's obstacles beyond the margin
+    /// ([`Padding::ZERO`] unless built padded).
+    pub fn padding(&self) -> Padding {
+        self.shared.padding
     }
 }
 
@@ -422,7 +459,8 @@ impl ArmChecker {
 
 /// Bit `l` set if configuration `l` of `chunk` (at most [`LANES`] configurations of
 /// `dimension` values) is invalid with every sphere of the link in entry `k` of
-/// `Shared::links` grown by `grow[k]` (the same in every lane). [`Wanted::First`]: exact for
+/// `Shared::links` grown by `grow[k]` (the same in every lane) against the scene, and by the
+/// margin against the other link of a self-collision pair. [`Wanted::First`]: exact for
 /// every lane up to the first invalid one. [`Wanted::Any`]: nonzero exactly when some lane is
 /// invalid, and every bit set is an invalid lane. [`Wanted::All`]: exact for every lane. A
 /// chunk of the wrong dimension is invalid in every lane.
@@ -672,7 +710,7 @@ fn invalid_filled(
     }
     for &(a, b) in &s.pairs {
         let (la, lb) = (&s.links[a], &s.links[b]);
-        let grown = grow[a] + grow[b];
+        let grown = s.pair_grow + s.pair_grow;
         let reach = LaneF32::splat(la.3 + lb.3) + grown;
         let bound_b = lane_bounds[b];
         if distance_squared(&lane_bounds[a], &bound_b)

@@ -53,6 +53,26 @@ pub(super) struct AuditBroadPhase {
     /// and its entries in `sphere_pairs`.
     pairs: Vec<(usize, usize, Range<usize>)>,
     sphere_pairs: Vec<(usize, usize)>,
+    /// The padding (metres) every sphere and bound is grown by against the obstacles.
+    padding: f64,
+}
+
+/// The smallest gaps a motion's measurements found so far, in metres: from a robot sphere,
+/// grown by the padding, to an obstacle (`scene`), and between the spheres of a checked pair
+/// (`own`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Clearances {
+    pub(super) scene: f64,
+    pub(super) own: f64,
+}
+
+impl Default for Clearances {
+    fn default() -> Self {
+        Self {
+            scene: f64::INFINITY,
+            own: f64::INFINITY,
+        }
+    }
 }
 
 /// What one audit's measurements reuse from one configuration to the next.
@@ -125,6 +145,7 @@ impl AuditBroadPhase {
             links,
             pairs,
             sphere_pairs: checker.sphere_pairs().to_vec(),
+            padding: checker.padding().metres(),
         }
     }
 
@@ -133,9 +154,10 @@ impl AuditBroadPhase {
         self.obstacles.len() + self.clouds.len()
     }
 
-    /// The gap between the ball (`center`, `radius`) and obstacle `o` (primitives first, then
-    /// clouds), 0 if they touch or overlap.
+    /// The gap between the ball (`center`, `radius`), grown by the padding, and obstacle `o`
+    /// (primitives first, then clouds), 0 if they touch or overlap.
     fn gap(&self, o: usize, center: DVec3, radius: f64) -> f64 {
+        let radius = radius + self.padding;
         match self.obstacles.get(o) {
             Some((op, shape)) => {
                 let (pose, ball) = (Pose::from_translation(center), Ball::new(radius));
@@ -168,7 +190,7 @@ impl AuditBroadPhase {
 
     /// Measures configuration `q`: lowers `advance` to the longest advance no sphere can use
     /// to close its gap (each sphere's gap over its `speed`, each sphere pair's over the sum
-    /// of its spheres' `rates`) and `clearance` to the smallest gap, as the exhaustive
+    /// of its spheres' `rates`) and `clearances` to the smallest gaps, as the exhaustive
     /// measurement would.
     /// Returns `true` as soon as a gap is at most [`AUDIT_CONTACT`] (the values are then
     /// partial: measure exhaustively for the contact's name).
@@ -178,7 +200,7 @@ impl AuditBroadPhase {
         (speed, rates): (&[f64], &[PairRates]),
         scratch: &mut BroadScratch,
         advance: &mut f64,
-        clearance: &mut f64,
+        clearances: &mut Clearances,
         tests: &mut Tests,
     ) -> bool {
         let s = scratch;
@@ -215,7 +237,12 @@ impl AuditBroadPhase {
             // Every gap it bounds is at least `lower`: none can lower the clearance, nor the
             // advance (each over a speed at most `fastest`). A contact is at most
             // AUDIT_CONTACT < clearance, so it cannot hide here either.
-            if lower >= *clearance && lower / fastest >= *advance {
+            let clearance = if obstacle {
+                clearances.scene
+            } else {
+                clearances.own
+            };
+            if lower >= clearance && lower / fastest >= *advance {
                 continue;
             }
             if obstacle {
@@ -227,7 +254,7 @@ impl AuditBroadPhase {
                     if gap <= AUDIT_CONTACT {
                         return true;
                     }
-                    *clearance = clearance.min(gap);
+                    clearances.scene = clearances.scene.min(gap);
                     *advance = advance.min(gap / speed[k]);
                 }
             } else {
@@ -241,7 +268,7 @@ impl AuditBroadPhase {
                     let size = ci.length() + bound.length() + radius + ri;
                     let lower = slack(ci.distance(bound) - ri - radius, size);
                     tests.bounds += 1;
-                    if lower >= *clearance && lower / fastest >= *advance {
+                    if lower >= clearances.own && lower / fastest >= *advance {
                         continue;
                     }
                     let first = entries.start + row * columns;
@@ -253,7 +280,7 @@ impl AuditBroadPhase {
                         if gap <= AUDIT_CONTACT {
                             return true;
                         }
-                        *clearance = clearance.min(gap);
+                        clearances.own = clearances.own.min(gap);
                         *advance = advance.min(gap / (rate_a[row] + rate_b[column]));
                     }
                 }

@@ -5,7 +5,8 @@
 //! # The radius
 //! At a configuration `m` of the edge (a fraction of it), let `c_k` be the clearance of link
 //! entry `k`: the smallest distance from one of its spheres to an obstacle, less the sphere's
-//! radius and the checker's margin. Over the piece `[m − h, m + h]` its spheres move at most
+//! radius, the checker's margin and the user's [padding](crate::Padding) (the pairs below are
+//! not padded). Over the piece `[m − h, m + h]` its spheres move at most
 //! `B_k(h) = min(h · A_k + h² · Q_k, h · S_k)` (the local sweep bound, with `A_k` measured at
 //! `m`, and the lever-arm bound `S_k`: see `local_sweep.rs`). So the piece is clear of the
 //! scene for link `k` while `B_k(h) ≤ c_k`.
@@ -92,8 +93,10 @@ pub(crate) fn certified_radii(
         *bound = lane_poses[*link].point(*center);
     }
     placed.fill(false);
-    // Rounded up, as the plain checks' margin.
+    // Rounded up, as the plain checks' margin: `margin` between links (and for the rounding of
+    // poses), `keep` (the margin and the padding) from the scene.
     let margin = LaneF32::splat((s.margin * (1.0 + 1e-6)) as f32);
+    let keep = LaneF32::splat(((s.margin + s.padding.metres()) * (1.0 + 1e-6)) as f32);
     let floor = LaneF32::splat(floor as f32);
     // Per lane, the smallest radius so far: no lane's is sought beyond `useful`.
     let mut radius = LaneF32::splat(useful as f32);
@@ -110,7 +113,7 @@ pub(crate) fn certified_radii(
         // the others.
         let list = &s.reachable[k];
         let near = s.grids[k].as_ref().is_some_and(|grid| {
-            let loose = radius * sweep + floor + floor + margin + r;
+            let loose = radius * sweep + floor + floor + keep + r;
             grid.candidates(&lane_bounds[k], live, widest(loose), &mut candidates.0)
         });
         let (every, picked): (&[crate::Obstacle], &[u32]) = if near {
@@ -124,7 +127,7 @@ pub(crate) fn certified_radii(
             // the lane's radius so far (and twice the floor, safe from rounding): the others
             // cannot lower the radius. Spheres of the link are no closer than its bounding
             // sphere.
-            let loose = radius * sweep + floor + floor + margin + r;
+            let loose = radius * sweep + floor + floor + keep + r;
             if obstacle.may_be_within_lanes(&lane_bounds[k], loose) & live == 0 {
                 continue;
             }
@@ -153,7 +156,7 @@ pub(crate) fn certified_radii(
             // twice the floor) cannot lower the radius.
             let limit =
                 (radius * speed + radius * radius * second).min(radius * sweep) + floor + floor;
-            let outer = limit + margin + r;
+            let outer = limit + keep + r;
             if excess.simd_lt(outer * outer).to_bitmask() & live == 0 {
                 continue;
             }
@@ -166,7 +169,7 @@ pub(crate) fn certified_radii(
             {
                 // A sphere whose link's bounding centre is far enough that the sphere is clear
                 // by `limit` in every lane cannot lower the radius (nor is it near the floor).
-                let far = limit + margin + LaneF32::splat(extent);
+                let far = limit + keep + LaneF32::splat(extent);
                 if excess.simd_lt(far * far).to_bitmask() & live == 0 {
                     continue;
                 }
@@ -174,7 +177,7 @@ pub(crate) fn certified_radii(
                 let distance = obstacle.distances_local_lanes(&local);
                 let gap = distance - LaneF32::splat(sphere.1);
                 nearest = nearest.min(gap);
-                let clear = gap - margin;
+                let clear = gap - keep;
                 if clear.simd_lt(limit).to_bitmask() & live == 0 {
                     continue;
                 }
@@ -204,7 +207,7 @@ pub(crate) fn certified_radii(
         // cloud is not convex), from a lower bound of each sphere's distance to the cloud.
         for &cloud in &s.reachable_clouds[k] {
             let cloud = &s.clouds[cloud];
-            let loose = radius * sweep + floor + floor + margin + r;
+            let loose = radius * sweep + floor + floor + keep + r;
             let lower = cloud.distance_lower_bounds_lanes(&lane_bounds[k], loose, live);
             if lower.simd_lt(loose).to_bitmask() & live == 0 {
                 continue;
@@ -220,7 +223,7 @@ pub(crate) fn certified_radii(
             });
             let limit =
                 (radius * m.speed + radius * radius * m.second).min(radius * sweep) + floor + floor;
-            if lower.simd_lt(limit + margin + r).to_bitmask() & live == 0 {
+            if lower.simd_lt(limit + keep + r).to_bitmask() & live == 0 {
                 continue;
             }
             place_link(s, k, lane_poses, lane_centers, placed);
@@ -232,7 +235,7 @@ pub(crate) fn certified_radii(
                 // The sphere's ball is no nearer the cloud than the bounding centre's bound
                 // less its extent: clear by `limit` in every lane, it cannot lower the radius.
                 if lower
-                    .simd_lt(limit + margin + LaneF32::splat(extent))
+                    .simd_lt(limit + keep + LaneF32::splat(extent))
                     .to_bitmask()
                     & live
                     == 0
@@ -241,16 +244,16 @@ pub(crate) fn certified_radii(
                 }
                 let own = LaneF32::splat(sphere.1);
                 let gap =
-                    cloud.distance_lower_bounds_lanes(c, limit + margin + own + floor, live) - own;
+                    cloud.distance_lower_bounds_lanes(c, limit + keep + own + floor, live) - own;
                 nearest = nearest.min(gap);
-                let clear = gap - margin;
+                let clear = gap - keep;
                 if clear.simd_lt(limit).to_bitmask() & live == 0 {
                     continue;
                 }
                 radius = radius.min(reach(clear, m.speed, m.second, edge.sweep[k] as f32));
             }
         }
-        refused |= (nearest - margin).simd_lt(floor).to_bitmask() & live;
+        refused |= (nearest - keep).simd_lt(floor).to_bitmask() & live;
     }
     for (p, &(a, b)) in s.pairs.iter().enumerate() {
         let (la, lb) = (&s.links[a], &s.links[b]);

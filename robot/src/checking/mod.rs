@@ -24,6 +24,9 @@
 //!   `f64` (`mit-star check-state`).
 //! - `audit_clouds.rs`: the reference checker's and the audit's own view of point clouds,
 //!   every point in `f64` by brute force (no code shared with `clouds::PointTree`).
+//! - [`Padding`] (`padding.rs`): the clearance a user asks paths to keep from every obstacle
+//!   (environment only, not between the robot's links), which every check, certification and
+//!   reference check above grows the robot's spheres by against the scene.
 //! - `scratch_cell.rs`: the per-clone scratch buffers both checkers keep behind a mutex.
 //!
 //! May use: `model` (the robot, its kinematics and lever arms), `scenes` (the obstacles),
@@ -40,6 +43,7 @@ mod lanes;
 mod local_sweep;
 mod motion_audit;
 mod obstacle_grid;
+mod padding;
 mod parry_checker;
 mod reachable_obstacles;
 mod scratch_cell;
@@ -48,5 +52,6 @@ mod state_diagnosis;
 pub use arm_certification::FLOOR as CERTIFICATION_FLOOR;
 pub use arm_checker::ArmChecker;
 pub use motion_audit::{AUDIT_CONTACT, AuditVerdict, MotionAudit};
+pub use padding::{MAX_PADDING, Padding, PaddingError};
 pub use parry_checker::ParryChecker;
 pub use state_diagnosis::{Contact, LimitViolation, StateDiagnosis};

@@ -4,8 +4,8 @@
 use mit_star_spaces::{JointKind, StateSpace, wrap_angle};
 use mit_star_validity::StateValidity;
 
-use crate::checking::audit_broad_phase::{AuditBroadPhase, PairRates, Tests};
-use crate::{Motion, ParryChecker, RobotModel, Scene};
+use crate::checking::audit_broad_phase::{AuditBroadPhase, Clearances, PairRates, Tests};
+use crate::{Motion, Padding, ParryChecker, RobotModel, Scene};
 
 /// Closer than this (metres) counts as contact: the audit does not chase a gap that small.
 pub const AUDIT_CONTACT: f64 = 1e-9;
@@ -17,11 +17,17 @@ pub enum AuditVerdict {
     Clear {
         /// Configurations whose distances were computed.
         configurations: u64,
-        /// The smallest distance (metres) seen between a robot sphere and an obstacle or
-        /// between the spheres of a checked self-collision pair.
+        /// The smallest gap (metres) the audit kept: between a robot sphere and an obstacle
+        /// less the [padding](MotionAudit::padded), or between the spheres of a checked
+        /// self-collision pair.
         clearance: f64,
+        /// The smallest distance (metres) seen between a robot sphere and an obstacle, the
+        /// padding not subtracted (`f64::INFINITY` in a scene without obstacles): at least the
+        /// padding.
+        obstacle_clearance: f64,
     },
-    /// A configuration of the motion is in collision (or closer than [`AUDIT_CONTACT`]).
+    /// A configuration of the motion is in collision (or closer than [`AUDIT_CONTACT`]), or a
+    /// robot sphere is within the padding of an obstacle.
     Collides {
         /// Where along the motion, in `[0, 1]`.
         t: f64,
@@ -85,6 +91,8 @@ pub struct MotionAudit {
     pair_links: Vec<PairLinks>,
     /// Its own broad phase: per-link bounding spheres before sphere-by-sphere distances.
     broad: AuditBroadPhase,
+    /// Kept from the scene's obstacles (metres).
+    padding: f64,
 }
 
 /// A checked pair of links, as the audit bounds how fast their spheres close in.
@@ -104,6 +112,15 @@ struct PairLinks {
 impl MotionAudit {
     /// The audit of motions of `robot` (its self-collision pairs as they stand) in `scene`.
     pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
+        Self::padded(robot, scene, Padding::ZERO)
+    }
+
+    /// The audit of motions that must keep every robot sphere `padding` from every obstacle
+    /// and point cloud (the robot's own pairs are not padded): a configuration where a sphere
+    /// comes within the padding (plus [`AUDIT_CONTACT`]) of an obstacle counts as a contact.
+    /// Each sphere is measured grown by the padding, in `f64`, as [`ParryChecker::padded`]
+    /// measures it; nothing is shared with the planners' padded checker.
+    pub fn padded(robot: &RobotModel, scene: &Scene, padding: Padding) -> Self {
         let links = robot.links();
         let space = robot.joint_space().clone();
         let dimension = space.dimension();
@@ -164,7 +181,7 @@ impl MotionAudit {
             }
             out
         };
-        let checker = ParryChecker::new(robot, scene);
+        let checker = ParryChecker::padded(robot, scene, padding);
         let mut next = 0;
         let pair_links: Vec<PairLinks> = robot
             .self_collision_pairs()
@@ -185,6 +202,7 @@ impl MotionAudit {
         let broad = AuditBroadPhase::new(robot, scene, &checker);
         Self {
             broad,
+            padding: padding.metres(),
             checker,
             space,
             dimension,
@@ -192,6 +210,11 @@ impl MotionAudit {
             sphere_links,
             pair_links,
         }
+    }
+
+    /// The padding it keeps from the scene.
+    pub fn padding(&self) -> Padding {
+        self.checker.padding()
     }
 
     /// The reference checker the audit measures with (for the states of a path).
@@ -312,7 +335,18 @@ impl MotionAudit {
         // Allocated at the first exhaustive measurement only.
         let (mut obstacle_gaps, mut pair_gaps) = (Vec::new(), Vec::new());
         let mut q = a.to_vec();
-        let (mut t, mut configurations, mut clearance) = (0.0_f64, 0_u64, f64::INFINITY);
+        let (mut t, mut configurations) = (0.0_f64, 0_u64);
+        let mut clearances = Clearances::default();
+        // A sphere whose gap (grown by the padding) is this small meets the obstacle, or, with
+        // a padding, comes within it.
+        let meets = if self.padding > 0.0 {
+            format!(
+                "comes within the padding ({}) of an obstacle",
+                self.checker.padding()
+            )
+        } else {
+            "meets an obstacle".to_owned()
+        };
         loop {
             if configurations >= budget {
                 return AuditVerdict::Undecided { t, configurations };
@@ -323,9 +357,9 @@ impl MotionAudit {
             let mut advance = f64::INFINITY;
             if let Some(scratch) = scratch.as_mut() {
                 let bounds = (&speed[..], &rates[..]);
-                let (found, now) = (&mut clearance, &mut advance);
+                let (found, now) = (&mut clearances, &mut advance);
                 if !self.broad.measure(&q, bounds, scratch, now, found, tests) {
-                    if let Some(verdict) = self.step(&mut t, advance, configurations, clearance) {
+                    if let Some(verdict) = self.step(&mut t, advance, configurations, clearances) {
                         return verdict;
                     }
                     continue;
@@ -339,11 +373,10 @@ impl MotionAudit {
             tests.exact += (obstacle_gaps.len() * self.broad_obstacles() + pair_gaps.len()) as u64;
             for (s, (&gap, &v)) in obstacle_gaps.iter().zip(&speed).enumerate() {
                 if gap <= AUDIT_CONTACT {
-                    let contact =
-                        format!("a sphere of `{}` meets an obstacle", self.sphere_links[s]);
+                    let contact = format!("a sphere of `{}` {meets}", self.sphere_links[s]);
                     return collides(t, q, contact);
                 }
-                clearance = clearance.min(gap);
+                clearances.scene = clearances.scene.min(gap);
                 advance = advance.min(gap / v);
             }
             for (pair, (rate_a, rate_b)) in self.pair_links.iter().zip(&rates) {
@@ -357,11 +390,11 @@ impl MotionAudit {
                         );
                         return collides(t, q, contact);
                     }
-                    clearance = clearance.min(gap);
+                    clearances.own = clearances.own.min(gap);
                     advance = advance.min(gap / (rate_a[i - first_a] + rate_b[j - first_b]));
                 }
             }
-            if let Some(verdict) = self.step(&mut t, advance, configurations, clearance) {
+            if let Some(verdict) = self.step(&mut t, advance, configurations, clearances) {
                 return verdict;
             }
         }
@@ -374,12 +407,13 @@ impl MotionAudit {
         t: &mut f64,
         advance: f64,
         configurations: u64,
-        clearance: f64,
+        clearances: Clearances,
     ) -> Option<AuditVerdict> {
         if *t >= 1.0 {
             return Some(AuditVerdict::Clear {
                 configurations,
-                clearance,
+                clearance: clearances.scene.min(clearances.own),
+                obstacle_clearance: clearances.scene + self.padding,
             });
         }
         *t = if *t + advance >= 1.0 {

@@ -11,7 +11,7 @@ use parry3d_f64::shape::{Ball, Cuboid, Cylinder, SharedShape};
 
 use crate::checking::audit_clouds::AuditClouds;
 use crate::checking::scratch_cell::ScratchCell;
-use crate::{Kinematics, RobotModel, Scene, Shape};
+use crate::{Kinematics, Padding, RobotModel, Scene, Shape};
 
 /// Per-clone scratch: link poses, and sphere centres with radii.
 type Placed = (Vec<DAffine3>, Vec<(DVec3, f64)>);
@@ -30,6 +30,9 @@ struct Shared {
     pairs: Vec<(usize, usize)>,
     /// The self-collision pairs as pairs of sphere indices.
     sphere_pairs: Vec<(usize, usize)>,
+    /// Kept from the scene (not between links): spheres are grown by it against obstacles
+    /// and clouds.
+    padding: Padding,
 }
 
 /// The reference checker: the same model and scene as [`ArmChecker`](crate::ArmChecker), but
@@ -89,6 +92,13 @@ impl ParryChecker {
 
     /// The reference checker of `robot` (its self-collision pairs as they stand) in `scene`.
     pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
+        Self::padded(robot, scene, Padding::ZERO)
+    }
+
+    /// The reference checker of `robot` in `scene` with every sphere grown by `padding`
+    /// against the scene's obstacles and clouds (not against the robot's other links), as
+    /// [`ArmChecker::padded`](crate::ArmChecker::padded) pads.
+    pub fn padded(robot: &RobotModel, scene: &Scene, padding: Padding) -> Self {
         let fk = Kinematics::new(robot);
         let obstacles = Self::obstacle_shapes(scene);
         let space = robot.joint_space();
@@ -119,13 +129,15 @@ impl ParryChecker {
                 link_spheres,
                 pairs,
                 sphere_pairs,
+                padding,
             }),
             scratch: ScratchCell::new(scratch),
         }
     }
 
     /// Validity with every robot sphere's radius changed by `margin` (metres; a sphere whose
-    /// radius would not stay positive is a point). `margin = 0` is [`is_valid`](StateValidity::is_valid).
+    /// radius would not stay positive is a point), and by the padding too against the scene.
+    /// `margin = 0` is [`is_valid`](StateValidity::is_valid).
     pub fn is_valid_with_margin(&self, q: &[f64], margin: f64) -> bool {
         let s = &*self.shared;
         if q.len() != s.lower.len()
@@ -147,12 +159,13 @@ impl ParryChecker {
             // Balls, cuboids and cylinders are all supported by the default dispatcher.
             intersection_test(p1, g1, p2, g2).is_ok_and(|i| i.intersecting)
         };
-        for sphere in centers.iter() {
-            let (p, b) = ball(sphere);
+        let padding = s.padding.metres();
+        for &(c, r) in centers.iter() {
+            let (p, b) = ball(&(c, r + padding));
             if s.obstacles
                 .iter()
                 .any(|(op, shape)| meets(&p, &b, op, shape.as_ref()))
-                || s.clouds.touches(sphere.0, b.radius)
+                || s.clouds.touches(c, b.radius)
             {
                 return false;
             }
@@ -178,6 +191,11 @@ impl ParryChecker {
         &self.shared.clouds
     }
 
+    /// The padding kept from the scene ([`Padding::ZERO`] unless built [padded](Self::padded)).
+    pub fn padding(&self) -> Padding {
+        self.shared.padding
+    }
+
     /// The self-collision pairs as pairs of indices into [`RobotModel::spheres`]: every
     /// sphere of one link of a checked pair with every sphere of the other.
     pub fn sphere_pairs(&self) -> &[(usize, usize)] {
@@ -185,8 +203,9 @@ impl ParryChecker {
     }
 
     /// Separation distances at `q`, in `f64` with parry's distance queries:
-    /// `obstacle_gaps[s]` is the distance from robot sphere `s` ([`RobotModel::spheres`]) to
-    /// the nearest obstacle (`f64::INFINITY` in an empty scene, 0 if they touch or overlap),
+    /// `obstacle_gaps[s]` is the distance from robot sphere `s` ([`RobotModel::spheres`]),
+    /// grown by the [padding](Self::padding), to the nearest obstacle (`f64::INFINITY` in an
+    /// empty scene, 0 if they touch or overlap),
     /// and `pair_gaps[k]` the gap between the two spheres of the `k`-th
     /// [sphere pair](Self::sphere_pairs) (negative if they overlap). Joint limits are not
     /// looked at.
@@ -200,6 +219,7 @@ impl ParryChecker {
         let (links, centers) = &mut *guard;
         s.fk.sphere_centers_f64(q, links, centers);
         for (gap, &(c, r)) in obstacle_gaps.iter_mut().zip(centers.iter()) {
+            let r = r + s.padding.metres();
             let (pose, ball) = (Pose::from_translation(c), Ball::new(r));
             *gap = s
                 .obstacles

@@ -25,14 +25,14 @@ use crate::{CloudObstacle, Kinematics, LeverArms, Motion, Obstacle, RobotModel};
 const SLACK: f64 = 1e-3;
 
 /// Per entry of `links` (the checker's links with spheres: link index, sphere range, local
-/// bounding sphere), the obstacles of `obstacles` it can reach, in their original order, and
-/// the clouds of `clouds` with a point's ball it can reach (as indices); `fk` and `levers`
-/// are `robot`'s.
+/// bounding sphere), the obstacles of `obstacles` it can reach with its spheres grown by
+/// `padding` (metres), in their original order, and the clouds of `clouds` with a point's ball
+/// it can reach so (as indices); `fk` and `levers` are `robot`'s.
 pub(crate) fn reachable_obstacles(
     (robot, fk, levers): (&RobotModel, &Kinematics, &LeverArms),
     links: &[(usize, Range<usize>, Vec3A, f32)],
-    obstacles: &[Obstacle],
-    clouds: &[Arc<CloudObstacle>],
+    (obstacles, clouds): (&[Obstacle], &[Arc<CloudObstacle>]),
+    padding: f64,
 ) -> (Vec<Vec<Obstacle>>, Vec<Vec<usize>>) {
     let frames = robot.links();
     // Any configuration places the fixed frames: the middle of the limits.
@@ -75,7 +75,7 @@ pub(crate) fn reachable_obstacles(
                         f64::from(radius),
                     ),
                 };
-                let rho = rho + SLACK;
+                let rho = rho + padding + SLACK;
                 let near = obstacles
                     .iter()
                     .filter(|o| o.distance_f64(p) <= rho)
@@ -129,7 +129,7 @@ mod tests {
             .filter_map(|l| bounds[l].map(|(c, r)| (l, 0..0, c.as_vec3a(), r as f32)))
             .collect();
         let parts = (robot, &Kinematics::new(robot), &LeverArms::new(robot));
-        let (kept, _) = reachable_obstacles(parts, &links, &[far, base, near], &[]);
+        let (kept, _) = reachable_obstacles(parts, &links, (&[far, base, near], &[]), 0.0);
         assert!(
             kept.iter()
                 .all(|k| k.iter().all(|o| o.pose() != far.pose()))

@@ -41,8 +41,9 @@ pub struct Contact {
 /// each other (those the model checks: its self-collision pairs after the SRDF and the
 /// scene's allowed-collision matrix) — and, for a valid one, the nearest obstacle.
 ///
-/// A contact is reported when its gap is at most the checker's [margin](ArmChecker::margin):
-/// the checker grows every sphere by it, so a gap that small is refused too.
+/// A contact is reported when its gap is at most the checker's [margin](ArmChecker::margin)
+/// (for an obstacle, the margin and the checker's [padding](ArmChecker::padding)): the checker
+/// grows every sphere by it, so a gap that small is refused too.
 ///
 /// ```
 /// use mit_star_robot::{ArmProblem, StateDiagnosis};
@@ -60,15 +61,30 @@ pub struct StateDiagnosis {
     pub valid: bool,
     /// Joints outside their limits.
     pub limits: Vec<LimitViolation>,
-    /// Links meeting obstacles (gap at most the margin), closest first.
+    /// Links meeting obstacles (gap at most the margin and the padding), closest first.
     pub scene: Vec<Contact>,
     /// Pairs of links meeting each other (gap at most the margin), closest first.
     pub itself: Vec<Contact>,
     /// The link and obstacle closest to each other, if the scene has obstacles.
     pub nearest: Option<Contact>,
+    /// The checker's margin, metres.
+    pub margin: f64,
+    /// The checker's padding from obstacles, metres (0 without one).
+    pub padding: f64,
 }
 
 impl StateDiagnosis {
+    /// `true` if the configuration is refused only for coming within the padding of the
+    /// scene: within the joint limits, clear of itself, and every contact with an obstacle
+    /// further than the margin.
+    pub fn only_padding(&self) -> bool {
+        !self.valid
+            && self.limits.is_empty()
+            && self.itself.is_empty()
+            && !self.scene.is_empty()
+            && self.scene.iter().all(|c| c.gap > self.margin)
+    }
+
     /// The diagnosis of configuration `q` of `robot` in `scene`, with `checker` (built from
     /// the two) giving the verdict and the margin. A configuration of the wrong length is
     /// invalid, with nothing else said.
@@ -80,6 +96,8 @@ impl StateDiagnosis {
             scene: Vec::new(),
             itself: Vec::new(),
             nearest: None,
+            margin: checker.margin(),
+            padding: checker.padding().metres(),
         };
         if q.len() != space.joints().len() || q.iter().any(|x| !x.is_finite()) {
             return diagnosis;
@@ -103,6 +121,7 @@ impl StateDiagnosis {
         fk.sphere_centers_f64(q, &mut poses, &mut centers);
         let links = robot.links();
         let margin = checker.margin();
+        let keep = margin + checker.padding().metres();
         let with_spheres = (0..links.len()).filter(|&l| !robot.link_sphere_range(l).is_empty());
         for link in with_spheres {
             for (obstacle, id) in scene.obstacles().iter().zip(scene.ids()) {
@@ -115,7 +134,7 @@ impl StateDiagnosis {
                     other: id.clone(),
                     gap,
                 };
-                if gap <= margin {
+                if gap <= keep {
                     diagnosis.scene.push(contact.clone());
                 }
                 if diagnosis.nearest.as_ref().is_none_or(|n| gap < n.gap) {
@@ -139,7 +158,7 @@ impl StateDiagnosis {
                     other: format!("{} point {point}", cloud.name()),
                     gap,
                 };
-                if gap <= margin {
+                if gap <= keep {
                     diagnosis.scene.push(contact.clone());
                 }
                 if diagnosis.nearest.as_ref().is_none_or(|n| gap < n.gap) {
@@ -189,12 +208,22 @@ impl fmt::Display for StateDiagnosis {
             ));
         }
         for c in &self.scene {
-            lines.push(format!(
-                "  link {} meets obstacle {} ({})",
-                c.link,
-                c.other,
-                mm(c.gap)
-            ));
+            lines.push(if c.gap > self.margin {
+                format!(
+                    "  link {} is within the padding ({} mm) of obstacle {} ({})",
+                    c.link,
+                    mit_star_spaces::short_number(self.padding * 1e3),
+                    c.other,
+                    mm(c.gap)
+                )
+            } else {
+                format!(
+                    "  link {} meets obstacle {} ({})",
+                    c.link,
+                    c.other,
+                    mm(c.gap)
+                )
+            });
         }
         for c in &self.itself {
             lines.push(format!(

@@ -149,7 +149,7 @@ impl InputCloud {
     /// [`CloudInputError::Parameter`] for a length that is not a multiple of 3 or more than
     /// [`MAX_CLOUD_POINTS`] points; [`CloudInputError::Empty`] if no point is left.
     pub fn from_xyz<T: Copy + Into<f64>>(name: &str, xyz: &[T]) -> Result<Self, CloudInputError> {
-        if xyz.len() % 3 != 0 || xyz.len() / 3 > MAX_CLOUD_POINTS {
+        if !xyz.len().is_multiple_of(3) || xyz.len() / 3 > MAX_CLOUD_POINTS {
             return Err(CloudInputError::Parameter {
                 what: "point coordinates",
                 message: format!(

@@ -172,7 +172,7 @@ impl CellGrid {
         let count = (self.n[0] + 1) * (self.n[1] + 1) * (self.n[2] + 1);
         self.inside = vec![false; count];
         self.trusted = vec![false; count];
-        if !solid.has_inside() {
+        if !solid.has_inside() && !solid.is_filled() {
             return Ok(());
         }
         for i in 0..=self.n[0] {
@@ -186,7 +186,7 @@ impl CellGrid {
                     let near = solid.surface_distance(p) <= solid.near();
                     match &crossings {
                         Some(column) => {
-                            self.inside[index] = near || column.inside(p.z);
+                            self.inside[index] = near || column.inside(p.z) || solid.in_fill(p);
                             self.trusted[index] = self.inside[index];
                         }
                         // Undecided: count the point as inside (the cover then contains

@@ -6,6 +6,9 @@ use glam::{DVec2, DVec3};
 use parry3d_f64::query::PointQuery;
 use parry3d_f64::shape::TriMesh;
 
+use std::sync::atomic::AtomicBool;
+
+use super::enclosed_fill::EnclosedFill;
 use super::spherise_error::SpheriseError;
 use super::triangle_mesh::TriangleMesh;
 
@@ -25,6 +28,8 @@ pub(super) struct Solid {
     near: f64,
     /// A ray passing this close to a projected edge grazes it, and is moved.
     graze: f64,
+    /// The space the mesh walls in, counted as solid ([`with_fill`](Self::with_fill)).
+    fill: Option<EnclosedFill>,
 }
 
 /// One connected component of the mesh.
@@ -90,7 +95,33 @@ impl Solid {
             shells,
             near: 1e-8 * scale,
             graze: 1e-11 * scale,
+            fill: None,
         })
+    }
+
+    /// The solid with the space its walls enclose filled, openings narrower than about
+    /// `2·seal` sealed (`enclosed_fill.rs`): a hollow housing counts as its full volume.
+    ///
+    /// # Errors
+    /// [`SpheriseError::Stopped`] once `stop` is raised.
+    pub(super) fn with_fill(mut self, seal: f64, stop: &AtomicBool) -> Result<Self, SpheriseError> {
+        self.fill = EnclosedFill::new(&self, seal, stop)?;
+        Ok(self)
+    }
+
+    /// Whether some space walled in by the mesh is counted as solid.
+    pub(super) fn is_filled(&self) -> bool {
+        self.fill.is_some()
+    }
+
+    /// A lower bound on `p`'s depth in the filled space (positive only inside it).
+    fn fill_depth(&self, p: DVec3) -> f64 {
+        self.fill.as_ref().map_or(f64::NEG_INFINITY, |f| f.depth(p))
+    }
+
+    /// Whether `p` lies in the filled space beyond the mesh's own solid (certainly).
+    pub(super) fn in_fill(&self, p: DVec3) -> bool {
+        self.fill_depth(p) > 0.0
     }
 
     /// The mesh.
@@ -122,7 +153,7 @@ impl Solid {
     /// Whether `p` is in the solid: inside a closed shell by ray parity, or within
     /// [`near`](Self::near) of the surface. `None` if every ray tried grazed an edge.
     pub(super) fn contains(&self, p: DVec3) -> Option<bool> {
-        if self.surface_distance(p) <= self.near {
+        if self.surface_distance(p) <= self.near || self.in_fill(p) {
             return Some(true);
         }
         if !self.has_inside() {
@@ -135,6 +166,13 @@ impl Solid {
     /// (the largest such shell distance), or, outside (or undecided, or within
     /// [`near`](Self::near) of the surface), minus the distance to the surface.
     pub(super) fn depth(&self, p: DVec3) -> f64 {
+        let filled = self.fill_depth(p);
+        let own = self.own_depth(p);
+        if filled > 0.0 { own.max(filled) } else { own }
+    }
+
+    /// [`depth`](Self::depth) in the mesh's own solid (the fill left out).
+    fn own_depth(&self, p: DVec3) -> f64 {
         let d = self.surface_distance(p);
         if d <= self.near || !self.has_inside() {
             return -d;
@@ -156,7 +194,8 @@ impl Solid {
             && shell.closed
         {
             let d = self.surface_distance(p);
-            return if d <= self.near { -d } else { d - self.near };
+            let own = if d <= self.near { -d } else { d - self.near };
+            return own.max(self.fill_depth(p));
         }
         self.depth(p)
     }

@@ -10,12 +10,17 @@ use std::sync::atomic::AtomicBool;
 
 use glam::DVec3;
 
+use super::budget_allocation::{Rung, allocate};
 use super::mesh_file::read_mesh;
 use super::sphere_budget::fit_budget;
 use super::sphere_cover::{CoverOptions, CoverSphere, Placement, SphereCover, check_work};
 use super::spherise_error::SpheriseError;
 use super::triangle_mesh::TriangleMesh;
 use super::urdf_collisions::{Geometry, LinkCollisions, read_collisions, resolve};
+
+/// The tolerances, as factors of the common one a budget found, at which every link is
+/// covered again for the per-link choice (`budget_allocation.rs`).
+const LADDER: [f64; 6] = [0.85, 0.92, 1.08, 1.17, 1.27, 1.4];
 
 /// Sides of the prism a cylinder is covered as (circumscribed, so it contains the cylinder).
 const CYLINDER_SIDES: u32 = 32;
@@ -33,7 +38,10 @@ pub struct SpheriseOptions {
     pub fallback: Option<String>,
     /// The most spheres in the whole model (`--max-spheres`): the tolerance is raised, the
     /// same for every link, until the covers together fit (kept sphere elements and fallback
-    /// spheres count too). Each link's report gives the tolerance used and what it measured.
+    /// spheres count too); then every link is covered again at a few tolerances about that
+    /// one, and each link's cover is chosen among them so that the worst measured outward
+    /// error is the least that fits, the spheres left over going where they cut a link's
+    /// error most. Each link's report gives the tolerance used and what it measured.
     pub max_spheres: Option<usize>,
     /// Where the spheres are placed; `None` takes [`Placement::Fewest`] under a sphere
     /// budget (`max_spheres` or the cover's own) and [`Placement::Grid`] otherwise.
@@ -73,8 +81,17 @@ pub struct LinkReport {
     /// The guaranteed bound on how far any sphere reaches beyond the link's geometry
     /// (`None` for fallback spheres).
     pub max_protrusion: Option<f64>,
-    /// The largest protrusion measured on the union's surface.
+    /// The outward error, guaranteed: no point of the boundary of the link's spheres' union
+    /// lies farther than this from its meshes' surfaces (the largest of its covers'
+    /// [`SphereCover::outward_error`]; `None` for fallback spheres).
+    pub outward_error: Option<f64>,
+    /// The largest distance from the meshes reached by a point of that boundary.
     pub measured_max: Option<f64>,
+    /// Whether a mesh of the link walls in space (a hollow housing) that its cover fills.
+    pub filled: bool,
+    /// The largest distance within which a mesh's vertices were merged to close it (0 if
+    /// none was).
+    pub weld: f64,
     /// The mean protrusion measured there.
     pub measured_mean: Option<f64>,
     /// For a [`LinkSource::Fallback`] link: its mesh files that are missing (the name) or
@@ -197,11 +214,38 @@ impl SpherisedUrdf {
             None => cover_all(options.cover.tolerance)?,
             Some(budget) => {
                 let minimum = sources.iter().map(|(_, s)| s.least_spheres()).sum();
-                fit_budget(budget, minimum, options.cover.tolerance, |tolerance| {
-                    let covers = cover_all(tolerance)?;
-                    let total = covers.iter().map(|(_, r)| r.spheres).sum();
-                    Ok((total, covers))
-                })?
+                let (found, covers) =
+                    fit_budget(budget, minimum, options.cover.tolerance, |tolerance| {
+                        let covers = cover_all(tolerance)?;
+                        let total = covers.iter().map(|(_, r)| r.spheres).sum();
+                        Ok((total, (tolerance, covers)))
+                    })?;
+                // Each link's cover chosen among a ladder of tolerances about the common
+                // one, by measured outward error (`budget_allocation.rs`).
+                let mut ladder = vec![covers];
+                for factor in LADDER {
+                    let tolerance = found * factor;
+                    if tolerance >= options.cover.tolerance {
+                        ladder.push(cover_all(tolerance)?);
+                    }
+                }
+                let rungs: Vec<Vec<Rung>> = (0..sources.len())
+                    .map(|l| {
+                        ladder
+                            .iter()
+                            .map(|covers| Rung {
+                                spheres: covers[l].1.spheres,
+                                error: covers[l].1.outward_error.unwrap_or(0.0),
+                            })
+                            .collect()
+                    })
+                    .collect();
+                let picks = allocate(&rungs, budget).unwrap_or_else(|| vec![0; sources.len()]);
+                picks
+                    .iter()
+                    .enumerate()
+                    .map(|(l, &k)| ladder[k][l].clone())
+                    .collect()
             }
         };
         let mut edits: Vec<(std::ops::Range<usize>, String)> = Vec::new();
@@ -321,7 +365,10 @@ fn covered(
         spheres: 0,
         tolerance: 0.0,
         max_protrusion: Some(0.0),
+        outward_error: Some(0.0),
         measured_max: Some(0.0),
+        filled: false,
+        weld: 0.0,
         measured_mean: None,
         unusable: Vec::new(),
     };
@@ -335,6 +382,9 @@ fn covered(
                 report.tolerance = report.tolerance.max(cover.tolerance);
                 report.max_protrusion = report.max_protrusion.map(|m| m.max(cover.max_protrusion));
                 report.measured_max = report.measured_max.map(|m| m.max(cover.measured_max));
+                report.outward_error = report.outward_error.map(|m| m.max(cover.outward_error));
+                report.filled |= cover.filled;
+                report.weld = report.weld.max(cover.weld);
                 weighted_mean += cover.measured_mean * cover.spheres.len() as f64;
                 weight += cover.spheres.len() as f64;
                 spheres.extend(cover.spheres);
@@ -411,7 +461,10 @@ fn fallen_back(
         spheres: elements.len(),
         tolerance: 0.0,
         max_protrusion: None,
+        outward_error: None,
         measured_max: None,
+        filled: false,
+        weld: 0.0,
         measured_mean: None,
         unusable: unusable.to_vec(),
     };

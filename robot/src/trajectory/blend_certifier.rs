@@ -4,7 +4,7 @@
 use mit_star_spaces::{Never, StateSpace};
 use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 
-use crate::{ArmChecker, LeverArms, RobotModel, Sample, Scene};
+use crate::{ArmChecker, LeverArms, Padding, RobotModel, Sample, Scene};
 
 /// Certifies blends (motions at constant acceleration) for a robot in a scene.
 ///
@@ -43,9 +43,19 @@ impl BlendCertifier {
 
     /// The certifier of `robot` (its self-collision pairs as they stand) in `scene`.
     pub fn new(robot: &RobotModel, scene: &Scene) -> Self {
+        Self::padded(robot, scene, Padding::ZERO)
+    }
+
+    /// The certifier of blends that keep every sphere `padding` from the scene, as a
+    /// [padded checker](ArmChecker::padded)'s certified edges do: each chord's checker is
+    /// padded too.
+    pub fn padded(robot: &RobotModel, scene: &Scene, padding: Padding) -> Self {
         let checkers = Self::GROWTHS
             .iter()
-            .map(|&g| (g, ArmChecker::new(&robot.with_grown_spheres(g), scene)))
+            .map(|&g| {
+                let grown = robot.with_grown_spheres(g);
+                (g, ArmChecker::padded(&grown, scene, padding))
+            })
             .collect();
         let links = (0..robot.links().len())
             .filter(|&l| !robot.link_sphere_range(l).is_empty())

@@ -116,7 +116,8 @@ impl TrajectoryCheck {
 /// velocities, velocities with each other, under the acceleration limit), at rest at both
 /// ends, and the straight motion between consecutive samples' positions certified
 /// collision-free ([`StateValidity::certify_motion`]), or else found clear by the continuous
-/// [`MotionAudit`] in `f64`.
+/// [`MotionAudit`] in `f64` — both keeping the checker's [padding](ArmChecker::padding) from
+/// the scene, as do the blends' certifications.
 ///
 /// The collision check is of the sampled polyline, not of the curve between samples: sample
 /// densely (or at the knots of a stop-at-corner trajectory, whose motions are straight).
@@ -155,7 +156,7 @@ pub fn check_trajectory(
     }
     let space = robot.joint_space();
     let auditor: std::cell::OnceCell<MotionAudit> = std::cell::OnceCell::new();
-    let blends = BlendCertifier::new(robot, scene);
+    let blends = BlendCertifier::padded(robot, scene, checker.padding());
     let names = robot.joint_names();
     let (v_max, a_max) = (limits.velocity(), limits.acceleration());
     let mut check = TrajectoryCheck {
@@ -238,7 +239,7 @@ pub fn check_trajectory(
         if certified {
             return Verdict::Certified;
         }
-        let audit = auditor.get_or_init(|| MotionAudit::new(robot, scene));
+        let audit = auditor.get_or_init(|| MotionAudit::padded(robot, scene, checker.padding()));
         if matches!(
             audit.audit(a, b, AUDIT_BUDGET),
             AuditVerdict::Clear { clearance, .. } if clearance >= STRAIGHT_CLEARANCE

@@ -130,7 +130,7 @@ impl TrajectoryFile {
             .split(',')
             .map(str::trim)
             .collect();
-        if header.first() != Some(&"time") || (header.len() - 1) % 3 != 0 {
+        if header.first() != Some(&"time") || !(header.len() - 1).is_multiple_of(3) {
             return Err(format(
                 origin,
                 "the header is not `time,position.…,velocity.…,acceleration.…`".into(),

@@ -67,7 +67,11 @@ pub(crate) fn dense_rotation((c, s, w): (f64, f64, &[f64])) -> Vec<f64> {
 /// `ln ζ_n` by the recurrence `ζ_n = ζ_{n−2} · 2π / n`, summed in log space (no underflow in
 /// high dimension).
 pub(crate) fn ln_unit_ball_measure(n: usize) -> f64 {
-    let (mut ln, mut k) = if n % 2 == 0 { (0.0, 2) } else { (2f64.ln(), 3) };
+    let (mut ln, mut k) = if n.is_multiple_of(2) {
+        (0.0, 2)
+    } else {
+        (2f64.ln(), 3)
+    };
     while k <= n {
         ln += (2.0 * std::f64::consts::PI / k as f64).ln();
         k += 2;

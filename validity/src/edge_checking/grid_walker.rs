@@ -280,7 +280,8 @@ impl GridWalker {
         let mut position = start;
         for index in grid.order(start, target) {
             let walked = position - start;
-            if walked % STOP_POLL == 0 && (walked > 0 || polls_first) && stop.should_stop() {
+            if walked.is_multiple_of(STOP_POLL) && (walked > 0 || polls_first) && stop.should_stop()
+            {
                 break;
             }
             space.interpolate(a, b, grid.fraction(index), &mut self.scratch);
@@ -562,7 +563,10 @@ impl GridWalker {
             if filled == 0 {
                 break;
             }
-            if walked % period == 0 && (walked > 0 || batches.polls_first) && stop.should_stop() {
+            if walked.is_multiple_of(period)
+                && (walked > 0 || batches.polls_first)
+                && stop.should_stop()
+            {
                 return Walked::Stopped(walked);
             }
             let found = if batches.prepared {
