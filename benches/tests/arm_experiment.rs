@@ -41,7 +41,7 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
         ..ExecutionOptions::default()
     };
     let results = Executor::new(options).run(&experiment, instances).unwrap();
-    assert_eq!(results.run_count(), 5 * 10);
+    assert_eq!(results.run_count(), 5 * 12);
     let mut solved = 0;
     let mut drew_near_terminals = 0;
     for run in results.all_runs() {
@@ -68,10 +68,10 @@ fn the_arm_experiment_runs_every_scene_without_invalid_paths() {
     }
     // Most runs solve their problem in 1 s, even in an unoptimised test build (this checks that
     // planning happens; success rates are the benchmark's business).
-    assert!(solved >= 25, "{solved} of 50 solved");
+    assert!(solved >= 30, "{solved} of 60 solved");
     // Every informed-trees run that samples at all draws some near the terminals (a problem
     // whose straight line is free is solved before the first batch).
-    assert!(drew_near_terminals >= 15, "{drew_near_terminals} of 30");
+    assert!(drew_near_terminals >= 20, "{drew_near_terminals} of 40");
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("arm-experiment");
     let _ = std::fs::remove_dir_all(&dir);
     let mut folder = ResultsFolder::prepare(&dir).unwrap();

@@ -6,8 +6,9 @@ use mit_star_samplers::Sampler;
 use mit_star_spaces::StateSpace;
 use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
-use crate::components::configuration_name;
-use crate::informed_trees::{EffortInformed, Guidance};
+use crate::components::graph_configuration_name;
+use crate::informed_trees::NeighbourRule;
+use crate::informed_trees::{EffortInformed, Guidance, RandomGeometric};
 use crate::planner::validate_query;
 use crate::{
     BuildError, CheckerPart, Connection, EisExpansionForm, EisExpansionRule, Eit, Observer,
@@ -40,7 +41,7 @@ use crate::{
 /// assert_eq!(err.to_string(), "parameter `batch_size` is 0; it must be at least 1");
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub struct Builder<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
+pub struct Builder<S, V, Smp, E, H = Euclidean, G = EffortInformed, N = RandomGeometric> {
     space: S,
     validity: V,
     start: Vec<f64>,
@@ -54,16 +55,17 @@ pub struct Builder<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     /// What was wrong with the problem given to [`Eit::for_problem`], reported by `build`.
     problem_error: Option<BuildError>,
     guidance: std::marker::PhantomData<fn() -> G>,
+    neighbours: std::marker::PhantomData<fn() -> N>,
 }
 
-impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
+impl<S, V, Smp, E, H: Default, G, N: Default> Eit<S, V, Smp, E, H, G, N> {
     /// Starts building a planner for the query `start → goals` in `space` with `validity`.
     pub fn builder(
         space: S,
         validity: V,
         start: Vec<f64>,
         goals: Vec<Vec<f64>>,
-    ) -> Builder<S, V, Smp, E, H, G> {
+    ) -> Builder<S, V, Smp, E, H, G, N> {
         Builder {
             space,
             validity,
@@ -77,11 +79,12 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
             name: None,
             problem_error: None,
             guidance: std::marker::PhantomData,
+            neighbours: std::marker::PhantomData,
         }
     }
 }
 
-impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
+impl<S, V, Smp, E, H: Default, G, N: Default> Eit<S, V, Smp, E, H, G, N> {
     /// Starts building a planner for a [`PlanningProblem`] — a box-world benchmark
     /// [`Problem`](mit_star_problems::Problem), a robot-arm problem, or your own: its space, validity
     /// checker, start, goals and resolution, and the certification, reverse-search repair,
@@ -98,7 +101,7 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     /// assert!(outcome.cost() >= problem.optimum().unwrap());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn for_problem<P>(problem: &P) -> Builder<S, V, Smp, E, H, G>
+    pub fn for_problem<P>(problem: &P) -> Builder<S, V, Smp, E, H, G, N>
     where
         P: PlanningProblem<Space = S, Validity = V>,
         S: Clone,
@@ -125,7 +128,7 @@ impl<S, V, Smp, E, H: Default, G> Eit<S, V, Smp, E, H, G> {
     }
 }
 
-impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
+impl<S, V, Smp, E, H, G, N> Builder<S, V, Smp, E, H, G, N> {
     /// Replaces every parameter.
     pub fn parameters(mut self, parameters: Parameters) -> Self {
         self.parameters = parameters;
@@ -305,7 +308,7 @@ impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G> {
     }
 }
 
-impl<S, V, Smp, E, H, G> Builder<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Builder<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -313,6 +316,7 @@ where
     E: EdgeChecker<S, Counted<V>> + CheckerPart<S> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule + Default,
 {
     /// Validates the parameters and the query and builds the planner.
     ///
@@ -320,7 +324,9 @@ where
     /// [`BuildError::Parameter`] for a parameter out of range, [`BuildError::Query`] for a
     /// malformed query, and the parts' own errors ([`BuildError::Sampler`],
     /// [`BuildError::Validity`]).
-    pub fn build(self) -> Result<Eit<S, V, Smp, E, H, G>, BuildError> {
+    // Seven parts are seven type parameters; an alias would only hide which planner it is.
+    #[allow(clippy::type_complexity)]
+    pub fn build(self) -> Result<Eit<S, V, Smp, E, H, G, N>, BuildError> {
         if let Some(error) = self.problem_error {
             return Err(error);
         }
@@ -339,9 +345,10 @@ where
             Some(checker) => checker,
             None => E::build_part(&self.space, &self.parameters)?,
         };
-        let name = self
-            .name
-            .unwrap_or_else(|| configuration_name(&G::name(), &Smp::part_name(), E::NAME));
+        let name = self.name.unwrap_or_else(|| {
+            let parts = (G::name(), Smp::part_name(), E::NAME);
+            graph_configuration_name(&parts.0, &parts.1, parts.2, N::default().part_name())
+        });
         let mut planner = Eit::with_parts(
             self.space,
             self.validity,

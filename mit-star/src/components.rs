@@ -209,6 +209,23 @@ pub(crate) fn configuration_name(guidance: &str, sampler: &str, checker: &str) -
     }
 }
 
+/// [`configuration_name`] on a graph whose neighbours the rule named `neighbours` decides
+/// ([`NeighbourRule::part_name`](crate::NeighbourRule::part_name); empty for the random
+/// geometric graph, whose names these are): FCIT*'s parts are `FCIT*`, others the name of
+/// their random-geometric counterpart with the rule in brackets.
+pub(crate) fn graph_configuration_name(
+    guidance: &str,
+    sampler: &str,
+    checker: &str,
+    neighbours: &str,
+) -> String {
+    match (guidance, sampler, checker, neighbours) {
+        (g, s, c, "") => configuration_name(g, s, c),
+        ("a-priori", "informed", "dense", "fully connected") => "FCIT*".into(),
+        (g, s, c, n) => format!("{}[{n}]", configuration_name(g, s, c)),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -247,6 +264,18 @@ mod tests {
             "AIT*"
         );
         assert_eq!(configuration_name("a-priori", "informed", "dense"), "BIT*");
+        assert_eq!(
+            graph_configuration_name("a-priori", "informed", "dense", ""),
+            "BIT*"
+        );
+        assert_eq!(
+            graph_configuration_name("a-priori", "informed", "dense", "fully connected"),
+            "FCIT*"
+        );
+        assert_eq!(
+            graph_configuration_name("cost-informed", "informed", "dense", "fully connected"),
+            "AIT*[fully connected]"
+        );
         type Mit = Estimated<AdaptiveSampler>;
         assert_eq!(
             configuration_name(

@@ -14,15 +14,15 @@ use mit_star_spaces::StateSpace;
 use mit_star_validity::{Counted, EdgeChecker};
 
 use crate::{
-    AitStar, Aorrtc, BitStar, BuildError, CheckerPart, Eit, EitStar, Guidance, InformedRrtStar,
-    MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr, Parameters, Planner, RrtConnect,
-    SamplerPart,
+    AitStar, Aorrtc, BitStar, BuildError, CheckerPart, Eit, EitStar, FcitStar, Guidance,
+    InformedRrtStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr, NeighbourRule,
+    Parameters, Planner, RrtConnect, SamplerPart,
 };
 
 /// A configuration of the MIT*/EIT* family, or a comparison planner, for choosing one at run
 /// time (command lines, benchmark files). The names are `mit-star`, `eit-star`, `mit-star-as`,
 /// `mit-star-eis`, `mit-star-sc`, `mit-star-sr`, `rrt-connect`, `aorrtc`, `bit-star`, `abit-star`,
-/// `ait-star` and `informed-rrt-star`.
+/// `ait-star`, `informed-rrt-star` and `fcit-star`.
 ///
 /// ```
 /// use mit_star::Configuration;
@@ -63,11 +63,14 @@ pub enum Configuration {
     /// Informed RRT* (Gammell et al. 2014): RRT* with k-nearest rewiring, goal bias, direct
     /// informed sampling and pruning.
     InformedRrtStar,
+    /// FCIT* (Wilson et al. 2025): BIT*'s search on a fully connected graph, each vertex's
+    /// edges queued one at a time.
+    FcitStar,
 }
 
 impl Configuration {
     /// Every configuration, MIT* first.
-    pub const ALL: [Self; 12] = [
+    pub const ALL: [Self; 13] = [
         Self::MitStar,
         Self::EitStar,
         Self::MitStarAs,
@@ -80,6 +83,7 @@ impl Configuration {
         Self::AbitStar,
         Self::AitStar,
         Self::InformedRrtStar,
+        Self::FcitStar,
     ];
 
     /// The command-line name (`mit-star`, …).
@@ -97,6 +101,7 @@ impl Configuration {
             Self::AbitStar => "abit-star",
             Self::AitStar => "ait-star",
             Self::InformedRrtStar => "informed-rrt-star",
+            Self::FcitStar => "fcit-star",
         }
     }
 
@@ -131,6 +136,7 @@ impl Configuration {
             Self::AbitStar => "ABIT*",
             Self::AitStar => "AIT*",
             Self::InformedRrtStar => "Informed RRT*",
+            Self::FcitStar => "FCIT*",
         }
     }
 }
@@ -152,7 +158,7 @@ impl FromStr for Configuration {
                 name: s.to_string(),
                 expected: "mit-star, eit-star, mit-star-as, mit-star-eis, mit-star-sc, mit-star-sr, \
                            rrt-connect, aorrtc, \
-                           bit-star, abit-star, ait-star, informed-rrt-star",
+                           bit-star, abit-star, ait-star, informed-rrt-star, fcit-star",
             })
     }
 }
@@ -259,6 +265,7 @@ where
         Configuration::BitStar => BitStar::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::AbitStar => BitStar::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::AitStar => AitStar::<P::Space, V>::boxed(query, parameters, label)?,
+        Configuration::FcitStar => FcitStar::<P::Space, V>::boxed(query, parameters, label)?,
         Configuration::RrtConnect => {
             let (space, validity, start, goals) = query;
             let mut planner = RrtConnect::new(space, validity, (start, goals), parameters)?;
@@ -294,7 +301,7 @@ trait FamilyMember<S, V> {
     ) -> Result<Box<dyn Planner + Send>, BuildError>;
 }
 
-impl<S, V, Smp, E, H, G> FamilyMember<S, V> for Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> FamilyMember<S, V> for Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace + Send + 'static,
     V: StateValidity + Send + 'static,
@@ -302,6 +309,7 @@ where
     E: EdgeChecker<S, Counted<V>> + CheckerPart<S> + Clone + Send + 'static,
     H: Heuristic<S> + Default + Send + 'static,
     G: Guidance + Send + 'static,
+    N: NeighbourRule + Default + Send + 'static,
 {
     fn boxed(
         parts: Parts<S, V>,
@@ -309,15 +317,15 @@ where
         label: &str,
     ) -> Result<Box<dyn Planner + Send>, BuildError> {
         if parameters.near_terminals.unwrap_or(0.0) > 0.0 {
-            built::<S, V, NearTerminals<Smp>, E, H, G>(parts, parameters, label)
+            built::<S, V, NearTerminals<Smp>, E, H, G, N>(parts, parameters, label)
         } else {
-            built::<S, V, Smp, E, H, G>(parts, parameters, label)
+            built::<S, V, Smp, E, H, G, N>(parts, parameters, label)
         }
     }
 }
 
 /// `Eit` with exactly these parts, named `label`.
-fn built<S, V, Smp, E, H, G>(
+fn built<S, V, Smp, E, H, G, N>(
     (space, validity, start, goals): Parts<S, V>,
     parameters: Parameters,
     label: &str,
@@ -329,9 +337,10 @@ where
     E: EdgeChecker<S, Counted<V>> + CheckerPart<S> + Clone + Send + 'static,
     H: Heuristic<S> + Default + Send + 'static,
     G: Guidance + Send + 'static,
+    N: NeighbourRule + Default + Send + 'static,
 {
     Ok(Box::new(
-        Eit::<S, V, Smp, E, H, G>::builder(space, validity, start, goals)
+        Eit::<S, V, Smp, E, H, G, N>::builder(space, validity, start, goals)
             .parameters(parameters)
             .name(label)
             .build()?,

@@ -39,6 +39,26 @@ const INFORMED_TREES: &[&str] = &[
     "cascading_rewirings",
 ];
 
+/// Read by FCIT*: those of [`INFORMED_TREES`] but the graph's connections (`rewire_factor`,
+/// `connection`, `neighbour_cap`), which a fully connected graph has no use for.
+const FULLY_CONNECTED_TREES: &[&str] = &[
+    "batch_size",
+    "batch_growth",
+    "solution_samples",
+    "solution_corner_pulls",
+    "pruning",
+    "lazy_certification",
+    "near_terminals",
+    "near_frontier",
+    "frontier_rays",
+    "start_frontier",
+    "validated_frontier",
+    "initial_inflation",
+    "inflation_scaling",
+    "truncation_scaling",
+    "cascading_rewirings",
+];
+
 /// Read by the informed trees with a reverse search (all but BIT* and ABIT*).
 const REVERSE_SEARCH: &[&str] = &[
     "suspend_reverse_when_forward_empty",
@@ -89,6 +109,7 @@ impl Configuration {
             Self::RrtConnect => groups.push(RRT_CONNECT),
             Self::Aorrtc => groups.extend([RRT_CONNECT, AORRTC]),
             Self::InformedRrtStar => groups.push(INFORMED_RRT_STAR),
+            Self::FcitStar => groups.push(FULLY_CONNECTED_TREES),
             _ => groups.push(INFORMED_TREES),
         }
         if self.is_informed_tree() && !matches!(self, Self::BitStar | Self::AbitStar) {
@@ -119,6 +140,7 @@ impl Configuration {
     /// assert!(Configuration::MitStar.reads("eis_expansion_rule"));
     /// assert!(!Configuration::EitStar.reads("eis_expansion_rule"));
     /// assert!(Configuration::EitStar.reads("seed"));
+    /// assert!(!Configuration::FcitStar.reads("rewire_factor"));
     /// ```
     pub fn reads(self, name: &str) -> bool {
         self.parameter_groups()

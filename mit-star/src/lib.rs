@@ -100,8 +100,9 @@ pub use error::{BuildError, Endpoint, PlannerError};
 pub use goal_source::GoalSource;
 pub use graph::{RandomGeometricGraph, VertexId, VertexKind};
 pub use informed_trees::{
-    APriori, AitStar, AitStarEis, BitStar, CostInformed, EffortInformed, Eit, EitStar, Guidance,
-    MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr, ReverseSearch, Suspending,
+    APriori, AitStar, AitStarEis, BatchDensity, BitStar, Connectivity, CostInformed,
+    EffortInformed, Eit, EitStar, FcitStar, FullyConnected, Guidance, MitStar, MitStarAs,
+    MitStarEis, MitStarSc, MitStarSr, NeighbourRule, RandomGeometric, ReverseSearch, Suspending,
 };
 pub use lazy_goals::LazyGoals;
 pub use nearest::{KdTree, NearestNeighbors, Neighbours};

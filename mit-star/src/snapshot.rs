@@ -9,6 +9,7 @@ use petgraph::visit::NodeIndexable;
 
 use crate::graph::NONE;
 use crate::informed_trees::Guidance;
+use crate::informed_trees::NeighbourRule;
 use crate::{Eit, VertexKind};
 
 /// A copy of what a planner holds at one moment: every vertex of its graph, the forward tree,
@@ -52,7 +53,7 @@ pub struct Snapshot {
     pub estimated_informed_cost: Option<f64>,
 }
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -60,6 +61,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// A [`Snapshot`] of the planner's graph, trees and cost bounds.
     pub fn graph_snapshot(&self) -> Snapshot {

@@ -11,6 +11,7 @@ mod certification_polls;
 mod conformance;
 mod convergence;
 mod extreme_values;
+mod fully_connected;
 mod guarantees;
 mod many_goals;
 mod offered_solutions;

@@ -50,6 +50,7 @@ __all__ = [
     "BitStar",
     "EitStar",
     "ExperimentResults",
+    "FcitStar",
     "InformedRrtStar",
     "MitStar",
     "MitStarAs",
@@ -115,3 +116,4 @@ BitStar = _configuration("bit-star", "BitStar")
 AbitStar = _configuration("abit-star", "AbitStar")
 AitStar = _configuration("ait-star", "AitStar")
 InformedRrtStar = _configuration("informed-rrt-star", "InformedRrtStar")
+FcitStar = _configuration("fcit-star", "FcitStar")

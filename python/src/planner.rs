@@ -22,7 +22,7 @@ use crate::solve_result::{SolveResult, counters_dict, trace_pairs};
 ///
 /// `configuration` is a name of `mit_star.planners()` (`mit-star`, `eit-star`, the ablations
 /// `mit-star-as`, `-eis`, `-sc`, `-sr`, `rrt-connect`, `aorrtc`, `bit-star`, `abit-star`,
-/// `ait-star`, `informed-rrt-star`); every other keyword is a planner parameter, as
+/// `ait-star`, `informed-rrt-star`, `fcit-star`); every other keyword is a planner parameter, as
 /// `mit-star plan --set NAME=VALUE` takes it (`batch_size`, `rewire_factor`, `range`, …).
 ///
 /// `validity`, a callable on one state (a float array of shape (d,)) returning whether it is

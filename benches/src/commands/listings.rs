@@ -113,6 +113,9 @@ pub(crate) fn print_planners() -> Result<CommandOutcome, HarnessError> {
         Configuration::AitStar => {
             "informed sampler, unchecked lazy reverse search as the forward search's heuristic, full forward checks"
         }
+        Configuration::FcitStar => {
+            "BIT*'s search (g + ĉ + ĥ order, full checks) on a fully connected graph: every sample a neighbour of every other, no radius or k; each vertex's edges queued one at a time (parameters: batch_size, 200 unless set; pruning)"
+        }
         Configuration::InformedRrtStar => {
             "RRT* with k-nearest rewiring, goal bias, direct informed sampling, pruning (parameters: range, goal_bias, rrt_rewire_factor, pruning)"
         }

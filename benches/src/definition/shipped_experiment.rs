@@ -54,7 +54,7 @@ static SHIPPED: [ShippedExperiment; 7] = [
     },
     ShippedExperiment {
         name: "panda-mbm",
-        summary: "the Franka Panda in five of MotionBenchMaker's seven scenes (bookshelf_small, bookshelf_tall, box, cage, table_pick) × 100 problems: MIT*, EIT*, BIT*, RRT-Connect and AORRTC, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 16 minutes on 2 cores)",
+        summary: "the Franka Panda in five of MotionBenchMaker's seven scenes (bookshelf_small, bookshelf_tall, box, cage, table_pick) × 100 problems: MIT*, EIT*, BIT*, FCIT*, RRT-Connect and AORRTC, 1 s, 1 run (extract robot/data/panda/mbm_problems.tar.bz2 into target/ first; about 20 minutes on 2 cores)",
         text: include_str!("../../experiments/panda-mbm.toml"),
         data: Some(
             "MotionBenchMaker scene folders in target/: `mkdir -p target && tar xjf robot/data/panda/mbm_problems.tar.bz2 -C target/`",

@@ -110,6 +110,7 @@ fn configuration_colour(c: Configuration) -> RGBColor {
         Configuration::AbitStar => RGBColor(227, 119, 194),
         Configuration::AitStar => RGBColor(188, 189, 34),
         Configuration::InformedRrtStar => RGBColor(127, 127, 127),
+        Configuration::FcitStar => RGBColor(100, 60, 20),
     }
 }
 

@@ -199,6 +199,7 @@ impl RandomGeometricGraph {
             }
             Neighbourhood::Nearest(_) => f64::INFINITY,
         };
+        let complete = self.neighbourhood == Neighbourhood::Radius(f64::INFINITY);
         let order =
             |a: &Neighbour, b: &Neighbour| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id));
         let mut squared = std::mem::take(&mut self.merge_distances);
@@ -207,7 +208,10 @@ impl RandomGeometricGraph {
             if w == v || self.births[w as usize] != birth {
                 return;
             }
-            if space.distance(x, &self.states[w as usize]) <= bound {
+            if complete {
+                // A complete graph (FCIT*): every sample enters, and its lists need no order.
+                list.push(self.entry(v, w, space, heuristic));
+            } else if space.distance(x, &self.states[w as usize]) <= bound {
                 // Few candidates pass the bound: insert each in order.
                 let n = self.entry(v, w, space, heuristic);
                 let at = list.partition_point(|m| order(m, &n).is_lt());
@@ -385,6 +389,45 @@ mod tests {
                     let outcome = g.prune(bound, &[], &mit_star_spaces::Never);
                     assert!(matches!(outcome, Pruning::Done(n) if n > 0));
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn an_infinite_radius_joins_every_live_vertex_across_batches_and_pruning() {
+        let space = RealVectorSpace::cube(3, -0.5, 0.5).unwrap();
+        let mut g = RandomGeometricGraph::new(3, true);
+        g.set_neighbourhood(Neighbourhood::Radius(f64::INFINITY));
+        let mut rng = SeededRng::seed_from_u64(3);
+        let mut x = vec![0.0; 3];
+        for batch in 0..6 {
+            let ids: Vec<u32> = (0..40)
+                .map(|_| {
+                    x.iter_mut().for_each(|c| *c = rng.random_range(-0.5..0.5));
+                    let cost = x[0] + 0.5;
+                    g.add_vertex(&x, Vertex::new(VertexKind::Sample, cost, cost, 0))
+                })
+                .collect();
+            g.commit(&ids);
+            g.new_batch();
+            if batch == 3 {
+                assert!(matches!(g.prune(1.4, &[], &Never), Pruning::Done(n) if n > 0));
+                g.new_batch();
+            }
+            for v in [0u32, 5, ids[0]] {
+                if !g
+                    .graph
+                    .contains_node(petgraph::graph::NodeIndex::new(v as usize))
+                {
+                    continue;
+                }
+                let len = g.neighbours(v, &space, &Euclidean, &Never).unwrap();
+                let mut got: Vec<u32> = (0..len).map(|i| g.neighbour(v, i).id).collect();
+                got.sort_unstable();
+                let mut want = brute(&g, v, Neighbourhood::Radius(f64::INFINITY));
+                want.sort_unstable();
+                assert_eq!(got, want, "batch {batch} v {v}");
+                assert_eq!(len, g.vertex_count() - 1);
             }
         }
     }

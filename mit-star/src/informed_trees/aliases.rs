@@ -8,6 +8,7 @@ use mit_star_validity::{DenseChecker, FixedSparseChecker, LengthAdaptiveChecker,
 
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::{APriori, CostInformed, Suspending};
+use crate::informed_trees::neighbour_rule::FullyConnected;
 
 /// **MIT*** (Zhang et al. 2025): adaptive sampler inside the estimated informed set
 /// ([`Estimated`] wrapper), length-related sparse collision checks, and the MIT* authors'
@@ -79,3 +80,23 @@ pub type BitStar<S = RealVectorSpace, V = World> =
 /// ```
 pub type AitStarEis<S = RealVectorSpace, V = World> =
     Eit<S, V, Estimated<InformedSampler>, DenseChecker, Euclidean, CostInformed>;
+
+/// **FCIT*** (Wilson, Thomason, Kingston, Kavraki and Gammell, ICRA 2025) as VAMP's code has
+/// it: BIT*'s parts — direct informed sampling, no reverse search ([`APriori`]: edges in order
+/// of `g + ĉ + ĥ` with the straight-line `ĥ`), full checks of the edges the forward search
+/// takes — on a fully connected graph ([`FullyConnected`]): every sample is a neighbour of
+/// every other, with no radius, no `k` and no neighbour queries beyond a scan, and each
+/// expanded vertex's edges are queued one at a time, best first. How faithful this is to the
+/// paper: the guide's *Faithfulness* chapter.
+///
+/// ```
+/// use mit_star::{FcitStar, FirstSolution, Planner};
+/// let problem = mit_star_problems::DividingWalls::new(2).build()?.with_resolution(1e-4)?;
+/// let mut planner = FcitStar::for_problem(&problem).seed(3).build()?;
+/// assert_eq!(planner.name(), "FCIT*");
+/// let outcome = planner.solve(&FirstSolution)?;
+/// assert!(outcome.cost() >= problem.optimum().unwrap());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub type FcitStar<S = RealVectorSpace, V = World> =
+    Eit<S, V, InformedSampler, DenseChecker, Euclidean, APriori, FullyConnected>;

@@ -7,9 +7,11 @@ use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::{NONE, Neighbourhood, Pruning};
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
-use crate::{BatchEvent, Connection, VertexKind, k_nearest, r_disc};
+use crate::informed_trees::{BatchDensity, Connectivity};
+use crate::{BatchEvent, Connection, VertexKind};
 
 /// Samples of a batch made visible to neighbour queries (and indexed) at a time.
 const INDEX_CHUNK: usize = 4096;
@@ -29,7 +31,7 @@ pub(crate) fn commit_chunk(dimension: usize) -> usize {
 /// The most vertices a batch reserves room for before it samples (see `add_batch`).
 const RESERVE_AHEAD: usize = 1 << 16;
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -37,6 +39,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// The bound samples are drawn under: the best solution's cost if there is one; otherwise
     /// unbounded (an estimated-informed-set sampler substitutes its estimate).
@@ -48,33 +51,44 @@ where
         }
     }
 
-    /// Sets `k` or `r` for the current number of vertices `q` (start and goals included),
-    /// counting only the vertices that stand for the sampler's coverage of its set: states
-    /// drawn near the terminals ([`NearTerminals`](mit_star_samplers::NearTerminals)) are left out, so
-    /// the rules keep the rewire factor `η` they are given for the wrapped sampler's density.
+    /// Sets the current batch's neighbourhood — `k`, `r` or a complete graph, as the
+    /// [`NeighbourRule`] decides it — for the current number of vertices `q` (start and goals
+    /// included), counting only the vertices that stand for the sampler's coverage of its set:
+    /// states drawn near the terminals ([`NearTerminals`](mit_star_samplers::NearTerminals)) are left
+    /// out, so the rules keep the rewire factor `η` they are given for the wrapped sampler's
+    /// density. Returns `k`, `r`, or `∞` for a complete graph (the observer's
+    /// [`BatchEvent::connection`]).
     pub(crate) fn update_neighbourhood(&mut self) -> f64 {
-        let q = self.graph.density_count();
-        let n = self.space.dimension();
-        let eta = self.parameters.rewire_factor;
-        match self.parameters.connection.unwrap_or(Connection::KNearest) {
-            Connection::KNearest => {
-                let k = k_nearest(q, n, eta);
+        let density = BatchDensity {
+            vertices: self.graph.density_count(),
+            dimension: self.space.dimension(),
+            rewire_factor: self.parameters.rewire_factor,
+            connection: self.parameters.connection.unwrap_or(Connection::KNearest),
+            neighbour_cap: self.parameters.neighbour_cap,
+        };
+        let measure = || {
+            let bound = self.sampling_bound();
+            self.sampler
+                .sampled_measure(&self.space, bound)
+                .min(self.space.measure())
+        };
+        match self.neighbour_rule.connectivity(&density, &measure) {
+            Connectivity::Nearest(k) => {
                 self.graph.set_neighbourhood(Neighbourhood::Nearest(k));
                 k as f64
             }
-            Connection::RDisc => {
-                let bound = self.sampling_bound();
-                let measure = self
-                    .sampler
-                    .sampled_measure(&self.space, bound)
-                    .min(self.space.measure());
-                let r = r_disc(q, n, eta, measure);
-                self.graph.set_neighbourhood(Neighbourhood::Radius(r));
-                let cap = self.parameters.neighbour_cap.map_or(usize::MAX, |c| {
-                    (c * k_nearest(q, n, eta) as f64).ceil() as usize
-                });
+            Connectivity::Radius { radius, cap } => {
+                self.graph.set_neighbourhood(Neighbourhood::Radius(radius));
                 self.graph.set_neighbour_cap(cap);
-                r
+                radius
+            }
+            Connectivity::Complete => {
+                // Every vertex within an infinite radius: the cached lists, their incremental
+                // updates and the searches need nothing else.
+                self.graph
+                    .set_neighbourhood(Neighbourhood::Radius(f64::INFINITY));
+                self.graph.set_neighbour_cap(usize::MAX);
+                f64::INFINITY
             }
         }
     }

@@ -12,6 +12,8 @@ use mit_star_validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidit
 use crate::graph::{NONE, RandomGeometricGraph, Vertex};
 use crate::informed_trees::forward_queue::ForwardQueue;
 use crate::informed_trees::guidance::{EffortInformed, Guidance};
+use crate::informed_trees::lazy_successors::Successors;
+use crate::informed_trees::neighbour_rule::{NeighbourRule, RandomGeometric};
 use crate::informed_trees::reverse_queue::ReverseQueue;
 use crate::informed_trees::start_reach::StartReach;
 use crate::planner::validate_query;
@@ -32,6 +34,8 @@ use crate::{
 /// | `Smp` | sampler (uniform, informed, adaptive, estimated informed set) | [`Sampler`] |
 /// | `E` | edge checker (fixed or length-related sparse levels, dense) | [`EdgeChecker`] |
 /// | `H` | admissible heuristic | [`Heuristic`] |
+/// | `G` | how the forward search is led to the goals | [`Guidance`] |
+/// | `N` | which vertices are neighbours (an RGG, or FCIT*'s complete graph) | [`NeighbourRule`] |
 ///
 /// MIT*, EIT* and the paper's ablations are type aliases choosing the parts
 /// ([`MitStar`](crate::MitStar), [`EitStar`](crate::EitStar), [`MitStarAs`](crate::MitStarAs),
@@ -77,13 +81,15 @@ use crate::{
 /// assert!(solution.cost >= 0.8);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
+pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed, N = RandomGeometric> {
     pub(crate) space: S,
     pub(crate) validity: Counted<V>,
     pub(crate) sampler: Smp,
     pub(crate) checker: E,
     pub(crate) heuristic: H,
     pub(crate) guidance: std::marker::PhantomData<fn() -> G>,
+    /// Which vertices each vertex is joined to in a batch.
+    pub(crate) neighbour_rule: N,
     pub(crate) parameters: Parameters,
     pub(crate) name: String,
     pub(crate) start: Vec<f64>,
@@ -152,6 +158,11 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed> {
     pub(crate) path_rng: SeededRng,
     /// Scratch: the best path's states, `dimension` coordinates each.
     pub(crate) path_states: Vec<f64>,
+    /// Each expanded vertex's outgoing edges in the order they are queued, one at a time,
+    /// where the neighbour rule asks for it (`lazy_successors.rs`; FCIT*).
+    pub(crate) successors: Vec<Successors>,
+    /// Scratch: `(ĉ + ĥ, position)` of a list being sorted.
+    pub(crate) successor_keys: Vec<(f64, u32)>,
 }
 
 /// The generator of the states placed along the best path, from the planner's seed (its own
@@ -160,7 +171,7 @@ fn path_rng(seed: u64) -> SeededRng {
     SeededRng::seed_from_u64(seed ^ 0x5eed_0f5a_7a11)
 }
 
-impl<S, V, Smp, E, H, G> std::fmt::Debug for Eit<S, V, Smp, E, H, G> {
+impl<S, V, Smp, E, H, G, N> std::fmt::Debug for Eit<S, V, Smp, E, H, G, N> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Eit")
             .field("name", &self.name)
@@ -171,7 +182,7 @@ impl<S, V, Smp, E, H, G> std::fmt::Debug for Eit<S, V, Smp, E, H, G> {
     }
 }
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -179,6 +190,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule + Default,
 {
     /// Whether this planner's reverse search yields while the forward queue is empty when
     /// [`suspend_reverse_when_forward_empty`](Parameters::suspend_reverse_when_forward_empty)
@@ -213,6 +225,7 @@ where
             checker,
             heuristic,
             guidance: std::marker::PhantomData,
+            neighbour_rule: N::default(),
             inflation: parameters.initial_inflation.unwrap_or(1.0),
             truncation: 1.0,
             final_search: false,
@@ -254,9 +267,22 @@ where
             start_reach: StartReach::default(),
             path_rng: path_rng(parameters_seed),
             path_states: Vec::new(),
+            successors: Vec::new(),
+            successor_keys: Vec::new(),
         }
     }
+}
 
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
+where
+    S: StateSpace,
+    V: StateValidity,
+    Smp: Sampler<S, Counted<V>> + Clone,
+    E: EdgeChecker<S, Counted<V>> + Clone,
+    H: Heuristic<S>,
+    G: Guidance,
+    N: NeighbourRule,
+{
     /// Sets the name reports print.
     pub fn set_name(&mut self, name: impl Into<String>) {
         self.name = name.into();
@@ -537,7 +563,7 @@ where
     }
 }
 
-impl<S, V, Smp, E, H, G> Planner for Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Planner for Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -545,6 +571,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     fn name(&self) -> &str {
         &self.name
@@ -598,6 +625,7 @@ where
         self.counters = Counters::default();
         self.elapsed = Duration::ZERO;
         self.path_rng = path_rng(self.parameters.seed);
+        self.successors.clear();
     }
 
     fn best_cost(&self) -> f64 {

@@ -8,13 +8,14 @@ use mit_star_validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateVal
 
 use crate::RestartEvent;
 use crate::graph::{EdgeRecord, NONE};
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::forward_queue::{ForwardEdge, Front};
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 use crate::informed_trees::reverse_search::forward_keys;
 use crate::termination::SolveStop;
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -22,6 +23,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// The front selection: BIT*'s (inflated) cost order with the a-priori guidance; else
     /// `ε = ∞` (effort-greedy, EIT*) or A* before the first solution, A* after.
@@ -50,7 +52,7 @@ where
     }
 
     /// Queues `edge` with its current keys.
-    fn queue_forward(&mut self, edge: ForwardEdge) {
+    pub(crate) fn queue_forward(&mut self, edge: ForwardEdge) {
         let keys = forward_keys(&self.graph, self.key_rule(), &edge);
         let open = !self.graph.vertex(edge.target).is_closed(self.reverse_tag);
         self.forward.insert_or_update(edge, keys, open);
@@ -73,7 +75,14 @@ where
             || self.parameters.cascading_rewirings.unwrap_or(false)
             || !self.graph.vertex(v).rewiring_expanded;
         let mut rewired = false;
-        for i in 0..len {
+        // FCIT*'s complete graph: one edge of the list queued at a time (`lazy_successors.rs`).
+        let listed = if self.lazy_successors() {
+            self.expand_forward_lazily(v, len, exclude);
+            0
+        } else {
+            len
+        };
+        for i in 0..listed {
             let n = self.graph.neighbour(v, i);
             if n.id == exclude || self.is_blacklisted(v, n.id) {
                 continue;
@@ -147,13 +156,13 @@ where
 
     /// `true` if the edge `v → w` would rewire the forward tree: `w` is in it, and not as a
     /// child of `v`.
-    fn is_rewiring(&self, v: u32, w: u32) -> bool {
+    pub(crate) fn is_rewiring(&self, v: u32, w: u32) -> bool {
         let x = self.graph.vertex(w);
         x.g.is_finite() && x.parent != v
     }
 
     /// `true` if the edge `v — w` is known invalid.
-    fn is_blacklisted(&self, v: u32, w: u32) -> bool {
+    pub(crate) fn is_blacklisted(&self, v: u32, w: u32) -> bool {
         self.graph
             .edge(v, w)
             .is_some_and(|r| r.status == EdgeStatus::Invalid)
@@ -189,6 +198,9 @@ where
             return;
         };
         let (u, v) = (edge.source, edge.target);
+        if self.lazy_successors() {
+            self.advance_successors(u, v);
+        }
         let target = self.graph.vertex(v);
         // A forward-tree edge (the tree persists across batches): just continue through it.
         if target.parent == u {
@@ -362,8 +374,15 @@ where
             return;
         }
         let len = x.neighbours_len as usize;
+        // With lazy successors, one edge of the list is queued, and perhaps none yet.
+        let listed = if self.lazy_successors() {
+            self.refresh_successor(d);
+            0
+        } else {
+            len
+        };
         let (graph, rule) = (&self.graph, self.key_rule());
-        for i in 0..len {
+        for i in 0..listed {
             let n = graph.neighbour(d, i);
             let edge = ForwardEdge {
                 source: d,

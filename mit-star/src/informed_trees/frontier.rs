@@ -10,6 +10,7 @@ use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
 
 use crate::Parameters;
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::forward_queue::bits;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
@@ -31,7 +32,7 @@ pub(crate) fn keep_farthest(best: &mut Vec<(f64, u32)>, wanted: usize, entry: (f
     best.insert(at, entry);
 }
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -39,6 +40,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// Hands the sampler the frontier of the reverse search that just ended: without a
     /// solution, the [`near_frontier`](crate::Parameters::near_frontier) samples of the reverse

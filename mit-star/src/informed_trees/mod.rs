@@ -7,6 +7,9 @@
 //! - `guidance.rs`: [`Guidance`] and its four parts ([`EffortInformed`], [`Suspending`],
 //!   [`CostInformed`], [`APriori`]): how the forward search is led to the goals, the part that
 //!   tells EIT*, MIT*, AIT* and BIT* apart.
+//! - `neighbour_rule.rs`: [`NeighbourRule`] and its two parts, [`RandomGeometric`] (the
+//!   k-nearest or r-disc graph of EIT*, MIT*, AIT*, BIT*) and [`FullyConnected`] (FCIT*'s
+//!   complete graph): which vertices are neighbours in a batch.
 //! - `aliases.rs`: the paper's configurations ([`MitStar`], [`EitStar`], the MIT* ablations)
 //!   and comparison planners ([`AitStar`], [`BitStar`]) as type aliases of [`Eit`].
 //! - `forward_search.rs` and `forward_queue.rs`: the forward search from the start (full edge
@@ -14,6 +17,8 @@
 //! - `reverse_search.rs` and `reverse_queue.rs`: the lazy reverse search from the goals
 //!   (sparse checks) and its edge queue; `reverse_repair/`: AIT*'s in-place repair of the
 //!   reverse tree, with its tests.
+//! - `lazy_successors.rs`: FCIT*'s forward expansion on a complete graph — each vertex's
+//!   edges sorted once, queued one at a time; `lazy_successors_tests.rs`, its tests.
 //! - `offered_path.rs`: a path offered from outside (a warm start's, a simplified solution)
 //!   grafted into the forward tree as the best solution.
 //! - `frontier.rs`: the states the reverse search reached farthest from the goals, handed to
@@ -44,6 +49,10 @@ mod frontier_tests;
 mod guidance;
 #[cfg(test)]
 mod lazy_edge_tests;
+mod lazy_successors;
+#[cfg(test)]
+mod lazy_successors_tests;
+mod neighbour_rule;
 mod offered_path;
 mod reverse_queue;
 mod reverse_repair;
@@ -59,7 +68,11 @@ mod start_reach;
 mod start_reach_tests;
 
 pub use aliases::{
-    AitStar, AitStarEis, BitStar, EitStar, MitStar, MitStarAs, MitStarEis, MitStarSc, MitStarSr,
+    AitStar, AitStarEis, BitStar, EitStar, FcitStar, MitStar, MitStarAs, MitStarEis, MitStarSc,
+    MitStarSr,
 };
 pub use eit::Eit;
 pub use guidance::{APriori, CostInformed, EffortInformed, Guidance, ReverseSearch, Suspending};
+pub use neighbour_rule::{
+    BatchDensity, Connectivity, FullyConnected, NeighbourRule, RandomGeometric,
+};

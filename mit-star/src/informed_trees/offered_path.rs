@@ -8,10 +8,11 @@ use mit_star_validity::{Counted, EdgeChecker, EdgeProgress, EdgeStatus, StateVal
 
 use crate::VertexKind;
 use crate::graph::EdgeRecord;
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::Guidance;
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -19,6 +20,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// Grafts `path` — checked at full resolution and certified, from the start to a goal,
     /// `progress[i]` the checking progress of its edge `i` — into the forward tree as the

@@ -6,6 +6,7 @@ use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::{Counted, EdgeChecker, EdgeGrid, EdgeProgress, EdgeStatus, StateValidity};
 
 use crate::graph::{EdgeRecord, NO_EFFORT, NONE, RandomGeometricGraph};
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::forward_queue::{ForwardEdge, ForwardKeys};
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
@@ -52,7 +53,7 @@ pub(crate) fn forward_keys(
     }
 }
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -60,6 +61,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// `true` if a reverse-queue entry is still worth processing: its source has not been
     /// expanded again since, and it could lead to a better solution.

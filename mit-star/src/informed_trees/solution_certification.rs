@@ -26,11 +26,12 @@ use mit_star_spaces::StateSpace;
 use mit_star_validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
 
 use crate::graph::NONE;
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::Guidance;
 use crate::termination::SolveStop;
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -38,6 +39,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// `true` if edges join the forward tree uncertified and solutions' paths are certified
     /// before they are recorded.

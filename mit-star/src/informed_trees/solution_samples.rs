@@ -9,6 +9,7 @@ use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::VertexKind;
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::Guidance;
 
@@ -20,7 +21,7 @@ const TRIES_PER_STATE: usize = 4;
 /// (the step's standard deviation is uniform between 0 and this).
 const DISPLACEMENT: f64 = 0.2;
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -28,6 +29,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// The states of `size` a batch places along the best path: none without a solution or
     /// with a path of fewer than three states (a straight one cannot be shortened).

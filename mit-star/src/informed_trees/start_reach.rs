@@ -10,6 +10,7 @@ use mit_star_samplers::Sampler;
 use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::{Counted, EdgeChecker, EdgeStatus, StateValidity};
 
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::forward_queue::bits;
 use crate::informed_trees::frontier::keep_farthest;
@@ -30,7 +31,7 @@ pub(crate) struct StartReach {
     pub(crate) farthest: Vec<(f64, u32)>,
 }
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -38,6 +39,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// Searches from the start, cheapest first, over the current neighbour lists and the
     /// edges that pass the sparse checks of the current level (storing what the checks

@@ -49,8 +49,8 @@ pub fn path_length(path: &mit_star_spaces::States) -> f64 {
 /// Everything a test asserts about a reported solution: it starts at the start and ends at a
 /// goal, its cost is its length and at least the straight-line bound, it is valid by the
 /// independent check, and the planner full-checked (whitelisted) every edge of it.
-pub fn assert_solution_sound<Smp, E, H, G>(
-    planner: &Eit<mit_star_spaces::RealVectorSpace, World, Smp, E, H, G>,
+pub fn assert_solution_sound<Smp, E, H, G, N>(
+    planner: &Eit<mit_star_spaces::RealVectorSpace, World, Smp, E, H, G, N>,
     solution: &Solution,
     start: &[f64],
     goals: &[Vec<f64>],
@@ -65,6 +65,7 @@ pub fn assert_solution_sound<Smp, E, H, G>(
         > + Clone,
     H: mit_star_heuristics::Heuristic<mit_star_spaces::RealVectorSpace>,
     G: mit_star::Guidance,
+    N: mit_star::NeighbourRule,
 {
     let path = &solution.path;
     assert!(path.len() >= 2, "a path has at least two states");

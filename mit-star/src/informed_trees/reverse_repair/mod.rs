@@ -11,6 +11,7 @@ use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::NONE;
+use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 use crate::informed_trees::reverse_search::forward_keys;
@@ -18,7 +19,7 @@ use crate::informed_trees::reverse_search::forward_keys;
 /// Branch vertices invalidated or re-seeded between two polls of the termination condition.
 const REPAIR_POLL: usize = 32;
 
-impl<S, V, Smp, E, H, G> Eit<S, V, Smp, E, H, G>
+impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
     S: StateSpace,
     V: StateValidity,
@@ -26,6 +27,7 @@ where
     E: EdgeChecker<S, Counted<V>> + Clone,
     H: Heuristic<S>,
     G: Guidance,
+    N: NeighbourRule,
 {
     /// `true` if an invalid reverse-tree edge is repaired in place rather than restarting the
     /// reverse search ([`Parameters::repair_reverse_search`](crate::Parameters)).

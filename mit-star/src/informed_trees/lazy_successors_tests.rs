@@ -1,0 +1,86 @@
+//! Tests of FCIT*'s lazy successors: on the complete graph, the forward queue holds about one
+//! edge per expanded vertex, and the search finds what queueing every edge finds.
+
+use mit_star_heuristics::Euclidean;
+use mit_star_samplers::InformedSampler;
+use mit_star_validity::{DenseChecker, World};
+
+use crate::informed_trees::{APriori, BatchDensity, Connectivity, Eit, NeighbourRule};
+use crate::termination::SolveStop;
+use crate::{FcitStar, IterationLimit, Parameters};
+
+/// The complete graph with every edge of an expanded vertex queued at once.
+#[derive(Debug, Clone, Copy, Default)]
+struct EagerComplete;
+
+impl NeighbourRule for EagerComplete {
+    fn part_name(&self) -> &'static str {
+        "eager complete"
+    }
+
+    fn connectivity(&self, _: &BatchDensity, _: &dyn Fn() -> f64) -> Connectivity {
+        Connectivity::Complete
+    }
+}
+
+type Eager = Eit<
+    mit_star_spaces::RealVectorSpace,
+    World,
+    InformedSampler,
+    DenseChecker,
+    Euclidean,
+    APriori,
+    EagerComplete,
+>;
+
+#[test]
+fn the_queue_holds_about_one_edge_per_expanded_vertex() {
+    let problem = mit_star_problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let parameters = Parameters {
+        batch_size: Some(100),
+        ..Parameters::default()
+    };
+    let mut lazy = FcitStar::for_problem(&problem)
+        .parameters(parameters.clone())
+        .build()
+        .unwrap();
+    let mut eager = Eager::for_problem(&problem)
+        .parameters(parameters)
+        .build()
+        .unwrap();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    lazy.setup(&stop).unwrap();
+    eager.setup(&stop).unwrap();
+    let (mut lazy_peak, mut eager_peak) = (0, 0);
+    for _ in 0..4_000 {
+        lazy.iterate(&stop);
+        eager.iterate(&stop);
+        let expanded = lazy
+            .successors
+            .iter()
+            .filter(|s| s.tag == lazy.graph.tag)
+            .count();
+        // One list edge per expanded vertex, plus tree edges queued beside the lists.
+        assert!(
+            lazy.forward.len() <= expanded + lazy.graph.vertex_count(),
+            "{} queued for {expanded} expanded vertices",
+            lazy.forward.len()
+        );
+        lazy_peak = lazy_peak.max(lazy.forward.len());
+        eager_peak = eager_peak.max(eager.forward.len());
+    }
+    assert!(
+        eager_peak > 10 * lazy_peak,
+        "eager peak {eager_peak}, lazy peak {lazy_peak}"
+    );
+    // Both searches found a path through the walls, neither shorter than the optimum.
+    let optimum = problem.optimum().unwrap();
+    for cost in [lazy.best_cost, eager.best_cost] {
+        assert!(cost.is_finite() && cost >= optimum - 1e-9, "{cost}");
+    }
+}
