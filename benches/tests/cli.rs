@@ -392,9 +392,7 @@ fn plan_prints_the_result_and_draws_2d_runs() {
         stdout.contains("EIT* on goal-enclosure R^2 (seed 3, budget 0.05 s)"),
         "{stdout}"
     );
-    assert!(
-        stdout.contains("counters (zeros left out") && stdout.contains("validity_checks")
-    );
+    assert!(stdout.contains("counters (zeros left out") && stdout.contains("validity_checks"));
     // The independent check's time is shown apart from planning, and what it covered in a
     // box world's units: segments and the path's states.
     assert!(stdout.contains("apart from planning)"), "{stdout}");

@@ -477,7 +477,12 @@ mod tests {
             expected.keys().map(String::as_str).collect(),
             "COUNT_NAMES against the serialised fields"
         );
-        for name in ["iterations", "solution_samples", "peak_edges", "estimate_batches"] {
+        for name in [
+            "iterations",
+            "solution_samples",
+            "peak_edges",
+            "estimate_batches",
+        ] {
             let mut v = serde_json::to_value(c).unwrap();
             v[name] = serde_json::json!(next);
             c = serde_json::from_value(v).unwrap();
@@ -493,6 +498,9 @@ mod tests {
         assert_eq!(counts["estimate_batches"], 4);
         assert_eq!(counts["full_points_by_length_3"], 7);
         assert_eq!(counts.values().sum::<u64>(), 17);
-        assert_eq!(c.reals(), [("estimate_initial", Some(2.5)), ("estimate_final", None)]);
+        assert_eq!(
+            c.reals(),
+            [("estimate_initial", Some(2.5)), ("estimate_final", None)]
+        );
     }
 }

@@ -1,6 +1,5 @@
 //! [`RunRecord`] and [`RunStatus`]: everything measured in one run of one planner.
 
-
 use mit_star::{COUNT_NAMES_LEN, Configuration, Counters, TracePoint};
 use serde::{Deserialize, Serialize};
 
