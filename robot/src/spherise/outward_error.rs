@@ -69,7 +69,7 @@ impl Ord for Patch {
 
 /// The unit direction of point `(u, v)` of cube face `face` (`±x, ±y, ±z`).
 fn direction(face: usize, u: f64, v: f64) -> DVec3 {
-    let s = if face % 2 == 0 { 1.0 } else { -1.0 };
+    let s = if face.is_multiple_of(2) { 1.0 } else { -1.0 };
     match face / 2 {
         0 => DVec3::new(s, u, v),
         1 => DVec3::new(u, s, v),
@@ -157,7 +157,7 @@ pub(super) fn outward_error(
             settled = settled.max(patch.upper);
             break;
         }
-        if measured % 4096 == 0 {
+        if measured.is_multiple_of(4096) {
             check(stop)?;
         }
         let (um, vm) = (
