@@ -102,7 +102,7 @@ fn a_step_coarser_than_the_thinnest_obstacle_is_refused() {
     assert!(stdout.contains("no solution"), "{stdout}{stderr}");
     let failures: u64 = stdout
         .lines()
-        .find_map(|l| l.trim().strip_prefix("certification failures"))
+        .find_map(|l| l.trim().strip_prefix("certification_failures"))
         .and_then(|v| v.trim().parse().ok())
         .unwrap_or(0);
     assert!(failures > 0, "certification found the wall: {stdout}");

@@ -44,14 +44,14 @@ def median(values):
 
 COUNTERS = [
     ("points_tested", "points"),
-    ("reverse_search_restarts", "restarts"),
+    ("reverse_restarts", "restarts"),
     ("batches", "batches"),
     ("samples", "samples"),
-    ("sampler_gaussian_repairs", "gauss"),
-    ("sampler_bridge_repairs", "bridge"),
-    ("estimated_informed_set_initial_cost", "s_est0"),
-    ("estimated_informed_set_final_cost", "s_est"),
-    ("estimated_informed_set_batches", "EIS batches"),
+    ("sampler_gaussian", "gauss"),
+    ("sampler_bridge", "bridge"),
+    ("estimate_initial", "s_est0"),
+    ("estimate_final", "s_est"),
+    ("estimate_batches", "EIS batches"),
 ]
 
 
