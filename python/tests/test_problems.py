@@ -11,7 +11,8 @@ from conftest import REPOSITORY
 
 def test_listings_name_every_planner_and_family() -> None:
     assert mit_star.planners()[:2] == ["mit-star", "eit-star"]
-    assert len(mit_star.planners()) == 12
+    assert len(mit_star.planners()) == 13
+    assert "fcit-star" in mit_star.planners()
     names = [name for name, _ in mit_star.problem_families()]
     assert "dividing-walls" in names and "goal-enclosure" in names
     assert "panda" in mit_star.robots()
