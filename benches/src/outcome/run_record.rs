@@ -1,6 +1,6 @@
 //! [`RunRecord`] and [`RunStatus`]: everything measured in one run of one planner.
 
-use mit_star::{COUNT_NAMES_LEN, Configuration, Counters, TracePoint};
+use mit_star::{COUNT_NAMES, COUNT_NAMES_LEN, Configuration, Counters, REAL_NAMES, TracePoint};
 use serde::{Deserialize, Serialize};
 
 use crate::path_validation::PathValidation;
@@ -133,42 +133,31 @@ impl RunRecord {
         }
     }
 
-    /// The work counters as `(property name, value)`, in a fixed order: the one list every
-    /// output (CSV, OMPL log, database) takes them from.
+    /// The work counters as `(name, value)`, in a fixed order ([`mit_star::COUNT_NAMES`]):
+    /// the one list every output (CSV, OMPL log, database, `plan`) takes them from.
     pub fn counter_values(&self) -> [(&'static str, u64); COUNTERS] {
-        counter_list(&self.counters)
+        self.counters.counts()
     }
 
     /// The names of [`counter_values`](Self::counter_values), in order.
     pub fn counter_names() -> [&'static str; COUNTERS] {
-        counter_list(&Counters::default()).map(|(name, _)| name)
+        COUNT_NAMES
     }
 
     /// The real-valued counters (the estimated informed set's first and last cost, `None`
-    /// when the planner never created one) as `(property name, value)`, in a fixed order.
+    /// when the planner never created one) as `(name, value)`, in a fixed order.
     pub fn real_counter_values(&self) -> [(&'static str, Option<f64>); 2] {
-        real_counter_list(&self.counters)
+        self.counters.reals()
     }
 
     /// The names of [`real_counter_values`](Self::real_counter_values), in order.
     pub fn real_counter_names() -> [&'static str; 2] {
-        real_counter_list(&Counters::default()).map(|(name, _)| name)
+        REAL_NAMES
     }
 }
 
 /// How many integer counters a run records.
 pub(crate) const COUNTERS: usize = COUNT_NAMES_LEN;
-
-/// The real-valued counters of a planner, named.
-fn real_counter_list(c: &Counters) -> [(&'static str, Option<f64>); 2] {
-    c.reals()
-}
-
-/// The counters of a planner, named as everywhere else ([`mit_star::COUNT_NAMES`]: the
-/// fields of [`Counters`], as Python's `counters()` and `runs.jsonl` key them).
-fn counter_list(c: &Counters) -> [(&'static str, u64); COUNTERS] {
-    c.counts()
-}
 
 #[cfg(test)]
 impl RunRecord {
