@@ -1,7 +1,7 @@
 """A small ablation from Python: MIT* against EIT* and two of MIT*'s ablations on PDT's
 dividing walls in R^4, a few seeds each; plots the median cost over time (a PNG).
 
-    pip install ./python matplotlib
+    pip install "./python[examples]"     # the package and matplotlib
     python examples/python/ablation_plot.py --seeds 5 --time 1.0 --output target/ablation.png
 """
 
