@@ -10,7 +10,7 @@ asserted equal to that of the pure-Python scalar checker handed the same batches
 compare like for like; against the built-in world the time of the scalar search is
 subtracted (about 1 % of the vectorised run's).
 
-    python python/benchmarks/callbacks.py --iterations 20000 --seeds 3
+    python python/benchmarks/callbacks.py --iterations 1000 --seeds 3 --batch 64
 """
 
 from __future__ import annotations
