@@ -15,17 +15,14 @@ const EVERY_PLANNER: &[&str] = &[
     "polish_when_idle",
 ];
 
-/// Read by every planner of the EIT* family (MIT*, EIT*, their ablations, BIT*, ABIT*, AIT*):
-/// batches, the graph's connections, pruning, samples near the terminals and the frontier,
-/// certification of solutions, and the inflated and truncated searches.
+/// Read by every planner of the EIT* family (MIT*, EIT*, their ablations, BIT*, ABIT*, AIT*,
+/// FCIT*): batches, pruning, samples near the terminals and the frontier, certification of
+/// solutions, and the inflated and truncated searches.
 const INFORMED_TREES: &[&str] = &[
     "batch_size",
     "batch_growth",
     "solution_samples",
     "solution_corner_pulls",
-    "rewire_factor",
-    "connection",
-    "neighbour_cap",
     "pruning",
     "lazy_certification",
     "near_terminals",
@@ -39,25 +36,9 @@ const INFORMED_TREES: &[&str] = &[
     "cascading_rewirings",
 ];
 
-/// Read by FCIT*: those of [`INFORMED_TREES`] but the graph's connections (`rewire_factor`,
-/// `connection`, `neighbour_cap`), which a fully connected graph has no use for.
-const FULLY_CONNECTED_TREES: &[&str] = &[
-    "batch_size",
-    "batch_growth",
-    "solution_samples",
-    "solution_corner_pulls",
-    "pruning",
-    "lazy_certification",
-    "near_terminals",
-    "near_frontier",
-    "frontier_rays",
-    "start_frontier",
-    "validated_frontier",
-    "initial_inflation",
-    "inflation_scaling",
-    "truncation_scaling",
-    "cascading_rewirings",
-];
+/// Read by the informed trees on a random geometric graph (all but FCIT*, whose graph is
+/// fully connected): its connections.
+const RANDOM_GEOMETRIC_GRAPH: &[&str] = &["rewire_factor", "connection", "neighbour_cap"];
 
 /// Read by the informed trees with a reverse search (all but BIT* and ABIT*).
 const REVERSE_SEARCH: &[&str] = &[
@@ -109,8 +90,8 @@ impl Configuration {
             Self::RrtConnect => groups.push(RRT_CONNECT),
             Self::Aorrtc => groups.extend([RRT_CONNECT, AORRTC]),
             Self::InformedRrtStar => groups.push(INFORMED_RRT_STAR),
-            Self::FcitStar => groups.push(FULLY_CONNECTED_TREES),
-            _ => groups.push(INFORMED_TREES),
+            Self::FcitStar => groups.push(INFORMED_TREES),
+            _ => groups.extend([INFORMED_TREES, RANDOM_GEOMETRIC_GRAPH]),
         }
         if self.is_informed_tree() && !matches!(self, Self::BitStar | Self::AbitStar) {
             groups.push(REVERSE_SEARCH);
