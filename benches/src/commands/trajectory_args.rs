@@ -425,3 +425,58 @@ fn in_robot_order(file: &TrajectoryFile, robot: &[String]) -> Option<Vec<Vec<f64
         .map(|s| order.iter().map(|&k| s.position.get(k).copied()).collect())
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(blend_room: Option<f64>, corners: Corners) -> TrajectoryArgs {
+        TrajectoryArgs {
+            trajectory: Some("t.json".into()),
+            sample_period: None,
+            corners,
+            blend_room,
+            trajectory_plot: None,
+            limits: LimitArgs {
+                joint_limits: None,
+                max_acceleration: Some(2.0),
+                velocity_scaling: 1.0,
+                acceleration_scaling: 1.0,
+            },
+        }
+    }
+
+    #[test]
+    fn the_blend_room_adds_to_the_problems_padding() {
+        let arm = ArmProblem::panda_mbm(
+            concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../robot/tests/data/mbm/table_pick_panda"
+            )
+            .as_ref(),
+            1,
+        )
+        .unwrap();
+        let room = |r: Option<f64>, corners, arm: &ArmProblem| args(r, corners).blend_room(arm);
+        assert_eq!(room(None, Corners::Blend, &arm).unwrap(), None);
+        let padding = room(Some(0.01), Corners::Blend, &arm).unwrap().unwrap();
+        assert_eq!(padding.metres(), 0.01);
+        let padded = arm.clone().with_padding(Padding::new(0.02).unwrap());
+        let padding = room(Some(0.01), Corners::Blend, &padded).unwrap().unwrap();
+        assert!((padding.metres() - 0.03).abs() < 1e-15);
+        for (bad, corners, says) in [
+            (-0.01, Corners::Blend, "negative"),
+            (f64::NAN, Corners::Blend, "not a number"),
+            (0.995, Corners::Blend, "larger than"),
+            (0.01, Corners::Stop, "--corners stop"),
+        ] {
+            let error = room(Some(bad), corners, &padded).unwrap_err().to_string();
+            assert!(error.contains(says), "{bad}: {error}");
+        }
+        assert!(
+            args(Some(-1.0), Corners::Blend)
+                .prepare(Some(&arm))
+                .is_err()
+        );
+    }
+}
