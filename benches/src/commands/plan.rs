@@ -86,8 +86,9 @@ impl PlanArgs {
     /// The pictures' file name without extension: the problem instance, the planner and the
     /// seed, then — when any other setting was given (`--set`, a budget other than 1 s,
     /// `--first-solution`, `--simplify`, the problem's options beyond its name and instance:
-    /// resolution, robot, group, clouds, padding; a pose goal; a blend room) — `-s` and eight hexadecimal digits
-    /// (CRC-32) of those settings, so that runs with different settings never share a file.
+    /// resolution, robot, group, clouds, padding; a pose goal; a blend room) — `-s` and eight
+    /// hexadecimal digits (CRC-32) of those settings, so that runs with different settings
+    /// never share a file.
     fn picture_stem(&self, instance: &str, planner: &str) -> String {
         let stem = format!("{instance}-{}-seed{}", sanitise(planner), self.seed);
         let mut settings: Vec<String> = self.set.clone();
