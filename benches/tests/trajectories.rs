@@ -243,3 +243,36 @@ fn trajectory_options_are_checked_before_planning() {
         &["arm problems"],
     );
 }
+
+#[test]
+fn blend_room_simplifies_with_room_and_is_refused_where_meaningless() {
+    let roomy = planned("roomy.json", &["--blend-room", "0.005"]);
+    assert!(roomy.exists());
+    let out = check(&roomy);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    let problem = problem();
+    let base = [
+        "plan",
+        "--planner",
+        "rrt-connect",
+        "--problem",
+        &problem,
+        "--no-picture",
+        "--trajectory",
+        "t.json",
+    ];
+    let with = |extra: &[&'static str]| -> Vec<&str> {
+        base.iter().copied().chain(extra.iter().copied()).collect()
+    };
+    // Not a padding, with stops (no blends), or without `--simplify`: refused.
+    refused(
+        &with(&["--simplify", "--blend-room", "-0.01"]),
+        &["--blend-room -0.01", "negative"],
+    );
+    refused(
+        &with(&["--simplify", "--blend-room", "0.01", "--corners", "stop"]),
+        &["--blend-room", "--corners stop"],
+    );
+    refused(&with(&["--blend-room", "0.01"]), &["--simplify"]);
+}

@@ -16,6 +16,13 @@
 //! `SCENE/NNNN.path.json` (waypoints, limits, our durations, computation times and check) and
 //! `SCENE/NNNN.ours.json` (our blended trajectory sampled every 1 ms).
 //!
+//! `plan ... ROOM` (metres, e.g. `0.01`): room for the blends, as `mit-star plan --blend-room`
+//! makes it — the path is simplified on the problem [padded](ArmProblem::with_padding) by
+//! `ROOM`, so every edge the simplifier adds keeps that much more from obstacles, and the blends
+//! are certified against the scene as it is. Planning is unchanged; with `PLAN_ROOMY=1` the
+//! path is also planned on the padded problem where its ends keep the room (the table counts
+//! the problems whose ends do not). Both sides time the same (roomy) paths.
+//!
 //! `check`: certifies each `SCENE/NNNN.toppra.json` (TOPP-RA's trajectory sampled by
 //! `compare.py`) as a polyline against the problem's scene, and writes
 //! `SCENE/NNNN.toppra_check.json`.
@@ -35,8 +42,8 @@ use mit_star::{
     build_planner,
 };
 use mit_star_robot::{
-    ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS, Trajectory,
-    TrajectoryFile, check_trajectory,
+    ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, PANDA_JOINT_LIMITS, Padding,
+    Trajectory, TrajectoryFile, check_trajectory,
 };
 use mit_star_spaces::StateSpace as _;
 
@@ -54,11 +61,14 @@ fn main() {
             Path::new(&args[1]),
             args[2].parse().expect("a problem count"),
             Path::new(&args[3]),
+            args.get(4).map(|r| {
+                Padding::new(r.parse().expect("a room in metres")).expect("a room in metres")
+            }),
         ),
         Some("check") => check(Path::new(&args[1]), Path::new(&args[2])),
         Some("retime") => retime(Path::new(&args[1]), Path::new(&args[2])),
         _ => panic!(
-            "usage: trajectory_peers plan MBM_FOLDER N OUT | check MBM_FOLDER OUT | retime MBM_FOLDER OUT"
+            "usage: trajectory_peers plan MBM_FOLDER N OUT [ROOM] | check MBM_FOLDER OUT | retime MBM_FOLDER OUT"
         ),
     }
 }
@@ -68,18 +78,18 @@ fn limits(problem: &ArmProblem) -> MotionLimits {
     MotionLimits::for_robot(problem.robot(), Some(&yaml), None).expect("the Panda's limits")
 }
 
-fn plan(folder: &Path, count: usize, out: &Path) {
+fn plan(folder: &Path, count: usize, out: &Path, room: Option<Padding>) {
     println!(
-        "| scene | paths | median waypoints | median stop (s) | median blended (s) | blends certified / shrunk / stopped | median timing (ms) | median certifier build (ms) | failed checks |"
+        "| scene | paths | median length (rad) | ends within the room | median waypoints | median stop (s) | median blended (s) | blends certified / shrunk / stopped | median timing (ms) | median certifier build (ms) | failed checks |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|");
     for scene in SEVEN_SCENES {
         let scene = format!("{scene}_panda");
         let dir = out.join(&scene);
         std::fs::create_dir_all(&dir).expect("an output folder");
         let (mut stops, mut blends, mut points, mut took, mut builds) =
             (vec![], vec![], vec![], vec![], vec![]);
-        let (mut corners, mut failed) = ([0; 3], 0);
+        let (mut corners, mut failed, mut ends_within, mut lengths) = ([0; 3], 0, 0, vec![]);
         for index in 1..=count {
             let Ok(problem) = ArmProblem::panda_mbm(&folder.join(&scene), index) else {
                 continue;
@@ -92,8 +102,19 @@ fn plan(folder: &Path, count: usize, out: &Path) {
                 range: Some(1.0),
                 ..Parameters::default()
             };
+            // With room: the path simplified (and with `PLAN_ROOMY`, planned when its ends keep
+            // the room) on the padded problem; the blends certified against the scene as it is.
+            let roomy = room.map(|r| problem.clone().with_padding(r));
+            let planned_on = match &roomy {
+                Some(roomy) if !roomy.ends_are_valid() => {
+                    ends_within += 1;
+                    &problem
+                }
+                Some(roomy) if std::env::var_os("PLAN_ROOMY").is_some() => roomy,
+                _ => &problem,
+            };
             let mut planner =
-                build_planner(Configuration::RrtConnect, &problem, &parameters).expect("builds");
+                build_planner(Configuration::RrtConnect, planned_on, &parameters).expect("builds");
             let outcome = planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)));
             let Some(solution) = outcome.ok().and_then(|o| o.solution().cloned()) else {
                 continue;
@@ -102,7 +123,7 @@ fn plan(folder: &Path, count: usize, out: &Path) {
             let simplified = PathSimplifier::new()
                 .seed(index as u64)
                 .simplify(
-                    &problem,
+                    roomy.as_ref().unwrap_or(&problem),
                     &path,
                     &mit_star_spaces::Deadline::after(Duration::from_secs_f64(0.1)),
                 )
@@ -149,6 +170,8 @@ fn plan(folder: &Path, count: usize, out: &Path) {
                 "timing_seconds": timing,
                 "certifier_build_seconds": build,
                 "blends": [report.blended, report.shrunk, report.stopped],
+                "room": room.map_or(0.0, mit_star_robot::Padding::metres),
+                "length": simplified.cost,
                 "check_valid": verdict.is_valid(),
                 "check_velocity_excess": verdict.velocity_excess,
                 "check_acceleration_excess": verdict.acceleration_excess,
@@ -159,6 +182,7 @@ fn plan(folder: &Path, count: usize, out: &Path) {
             )
             .expect("written");
             stops.push(stop.duration());
+            lengths.push(simplified.cost);
             blends.push(blended.duration());
             points.push(path.len() as f64);
             took.push(timing * 1e3);
@@ -168,9 +192,10 @@ fn plan(folder: &Path, count: usize, out: &Path) {
             corners[2] += report.stopped;
         }
         println!(
-            "| {} | {} | {} | {:.3} | {:.3} | {} / {} / {} | {:.3} | {:.1} | {failed} |",
+            "| {} | {} | {:.3} | {ends_within} | {} | {:.3} | {:.3} | {} / {} / {} | {:.3} | {:.1} | {failed} |",
             scene.trim_end_matches("_panda"),
             stops.len(),
+            mbm_scenes::median(&mut lengths),
             mbm_scenes::median(&mut points),
             mbm_scenes::median(&mut stops),
             mbm_scenes::median(&mut blends),

@@ -14,6 +14,7 @@ use crate::definition::parameter_overrides::ParameterOverrides;
 use crate::definition::planner_spec::{PlannerSpec, parse_configuration};
 use crate::definition::pose_goal_source::PoseGoalSource;
 use crate::definition::problem_instance::ProblemInstance;
+use crate::definition::problem_kind::InstanceProblem;
 use crate::definition::problem_source::sanitise;
 use crate::error::HarnessError;
 use crate::execution::interrupt::ReadingInputs;
@@ -85,8 +86,9 @@ impl PlanArgs {
     /// The pictures' file name without extension: the problem instance, the planner and the
     /// seed, then — when any other setting was given (`--set`, a budget other than 1 s,
     /// `--first-solution`, `--simplify`, the problem's options beyond its name and instance:
-    /// resolution, robot, group, clouds, padding; a pose goal) — `-s` and eight hexadecimal digits
-    /// (CRC-32) of those settings, so that runs with different settings never share a file.
+    /// resolution, robot, group, clouds, padding; a pose goal; a blend room) — `-s` and eight
+    /// hexadecimal digits (CRC-32) of those settings, so that runs with different settings
+    /// never share a file.
     fn picture_stem(&self, instance: &str, planner: &str) -> String {
         let stem = format!("{instance}-{}-seed{}", sanitise(planner), self.seed);
         let mut settings: Vec<String> = self.set.clone();
@@ -117,6 +119,9 @@ impl PlanArgs {
         }
         if let Some(padding) = p.padding.filter(|p| !p.is_zero()) {
             settings.push(format!("padding={}", padding.metres()));
+        }
+        if let Some(room) = self.timing.blend_room {
+            settings.push(format!("blend-room={room}"));
         }
         if settings.is_empty() {
             return stem;
@@ -305,6 +310,7 @@ impl PlanArgs {
                             "partial_shortcuts": s.partial_shortcuts,
                             "smoothing_moves": s.smoothing_moves,
                             "edges_checked": s.edges_checked,
+                            "blend_room": self.timing.blend_room,
                             "valid": validation.valid,
                             "validation_failure": validation.failure,
                         }),
@@ -323,6 +329,12 @@ impl PlanArgs {
             }
             if let Some((s, validation)) = &simplified {
                 print_simplified(s, validation);
+                if let Some(room) = self.timing.blend_room {
+                    say!(
+                        "  blend room: every edge the simplifier added keeps {} m more from obstacles",
+                        number(room)
+                    );
+                }
             }
             if let Some(t) = &timed {
                 say!("{}", t.line());
@@ -363,8 +375,16 @@ impl PlanArgs {
         if !self.simplify || record.path.len() < 2 {
             return Ok(None);
         }
-        let simplified = instance
-            .problem
+        // With `--blend-room`, the simplifier's problem keeps the room too.
+        let roomy = match instance.problem.as_arm() {
+            Some(arm) => self.timing.blend_room(arm)?.map(|padding| {
+                InstanceProblem::Arm(std::sync::Arc::new((**arm).clone().with_padding(padding)))
+            }),
+            None => None,
+        };
+        let simplified = roomy
+            .as_ref()
+            .unwrap_or(&instance.problem)
             .simplify(&record.path, self.simplify_time, self.seed, smoothing)
             .map_err(|source| HarnessError::Build {
                 planner: "path simplifier".to_owned(),

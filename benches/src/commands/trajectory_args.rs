@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 use mit_star_robot::{
-    ArmChecker, ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, Trajectory,
+    ArmChecker, ArmProblem, BlendCertifier, JointLimitsYaml, MotionLimits, Padding, Trajectory,
     TrajectoryFile, check_trajectory, merge_repeated_waypoints,
 };
 
@@ -123,6 +123,22 @@ pub struct TrajectoryArgs {
     /// How to pass the corners.
     #[arg(long, value_enum, default_value = "blend", requires = "trajectory")]
     pub corners: Corners,
+    /// Room for the blends, in metres (e.g. 0.005–0.01): `--simplify` keeps every robot
+    /// sphere this much further from obstacles (beyond the problem's `--padding`) on every edge
+    /// it adds, and the blends are then certified against the problem as given — so the
+    /// corners of the simplified path do not wrap tightly around obstacles and their blends
+    /// need not shrink. It trades path length (the shortcuts keep clear of obstacles) for
+    /// speed through the corners: on 175 simplified MotionBenchMaker Panda paths, 0.01 m made
+    /// them 0.5 % longer (median) and the trajectories 2.5 % faster; 0.02 m made both longer.
+    /// Planning is unchanged, and edges of the planned path the simplifier keeps (near an end
+    /// within the room, say) keep only the problem's padding.
+    #[arg(
+        long,
+        value_name = "METRES",
+        requires_all = ["trajectory", "simplify"],
+        allow_negative_numbers = true
+    )]
+    pub blend_room: Option<f64>,
     /// Also draw the trajectory — each joint's position, velocity and acceleration against
     /// time, its velocity and acceleration limits dashed, the knots marked — into this PNG
     /// (or `.svg`) file.
@@ -210,6 +226,7 @@ impl TrajectoryArgs {
         if let Some(plot) = &self.trajectory_plot {
             plot_name(plot, "--trajectory-plot")?;
         }
+        self.blend_room(arm)?;
         if let Some(p) = self.sample_period
             && !(p > 0.0 && p.is_finite())
         {
@@ -218,6 +235,31 @@ impl TrajectoryArgs {
             )));
         }
         self.limits.limits(arm).map(Some)
+    }
+
+    /// The padding `--simplify` keeps for `--blend-room`: `arm`'s padding plus the room;
+    /// `None` without the option.
+    ///
+    /// # Errors
+    /// [`HarnessError::Usage`] for a room that is not a [`Padding`] (negative, not a number,
+    /// above [`MAX_PADDING`](mit_star_robot::MAX_PADDING) with the padding) or with
+    /// `--corners stop` (no blends to make room for).
+    pub fn blend_room(&self, arm: &ArmProblem) -> Result<Option<Padding>, HarnessError> {
+        let Some(room) = self.blend_room else {
+            return Ok(None);
+        };
+        if self.corners == Corners::Stop {
+            return Err(HarnessError::Usage(
+                "--blend-room makes room for blends: it does nothing with --corners stop".into(),
+            ));
+        }
+        let usage = |e: mit_star_robot::PaddingError| {
+            HarnessError::Usage(format!("--blend-room {room}: {e}"))
+        };
+        Padding::new(room).map_err(usage)?;
+        Padding::new(arm.padding().metres() + room)
+            .map(Some)
+            .map_err(usage)
     }
 
     /// Times `path` on `arm` under `limits` and writes the file.
@@ -382,4 +424,59 @@ fn in_robot_order(file: &TrajectoryFile, robot: &[String]) -> Option<Vec<Vec<f64
         .iter()
         .map(|s| order.iter().map(|&k| s.position.get(k).copied()).collect())
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(blend_room: Option<f64>, corners: Corners) -> TrajectoryArgs {
+        TrajectoryArgs {
+            trajectory: Some("t.json".into()),
+            sample_period: None,
+            corners,
+            blend_room,
+            trajectory_plot: None,
+            limits: LimitArgs {
+                joint_limits: None,
+                max_acceleration: Some(2.0),
+                velocity_scaling: 1.0,
+                acceleration_scaling: 1.0,
+            },
+        }
+    }
+
+    #[test]
+    fn the_blend_room_adds_to_the_problems_padding() {
+        let arm = ArmProblem::panda_mbm(
+            concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/../robot/tests/data/mbm/table_pick_panda"
+            )
+            .as_ref(),
+            1,
+        )
+        .unwrap();
+        let room = |r: Option<f64>, corners, arm: &ArmProblem| args(r, corners).blend_room(arm);
+        assert_eq!(room(None, Corners::Blend, &arm).unwrap(), None);
+        let padding = room(Some(0.01), Corners::Blend, &arm).unwrap().unwrap();
+        assert_eq!(padding.metres(), 0.01);
+        let padded = arm.clone().with_padding(Padding::new(0.02).unwrap());
+        let padding = room(Some(0.01), Corners::Blend, &padded).unwrap().unwrap();
+        assert!((padding.metres() - 0.03).abs() < 1e-15);
+        for (bad, corners, says) in [
+            (-0.01, Corners::Blend, "negative"),
+            (f64::NAN, Corners::Blend, "not a number"),
+            (0.995, Corners::Blend, "larger than"),
+            (0.01, Corners::Stop, "--corners stop"),
+        ] {
+            let error = room(Some(bad), corners, &padded).unwrap_err().to_string();
+            assert!(error.contains(says), "{bad}: {error}");
+        }
+        assert!(
+            args(Some(-1.0), Corners::Blend)
+                .prepare(Some(&arm))
+                .is_err()
+        );
+    }
 }

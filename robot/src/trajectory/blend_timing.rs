@@ -24,7 +24,10 @@
 //! `corner_search.rs`: exactly the best over a grid (dynamic programming along the chain of
 //! corners), refined around the best. On the Panda's simplified MotionBenchMaker paths this
 //! took the median duration from 1.084 times TOPP-RA's (coordinate sweeps over corner factors
-//! and speed ratios, as before) to 1.031 (`benches/peers/toppra/README.md`). Velocity is
+//! and speed ratios, as before) to 1.041 (`benches/peers/toppra/README.md`); most of what is
+//! left is blends shrunk where the simplified path wraps a corner tightly around an obstacle,
+//! and with a path simplified keeping 1 cm of room from obstacles (`mit-star plan
+//! --blend-room`) the median is 0.992. Velocity is
 //! linear in a blend between two velocities within the limits and each blend's acceleration
 //! is `(v_out − v_in) / τ_k`: the limits hold exactly (limits rounded down, durations up, by
 //! a relative 10⁻¹²).
@@ -311,6 +314,12 @@ impl Trajectory {
     ///
     /// Every configuration is on a segment of `path` or on a certified blend; the limits hold
     /// exactly. See [`Trajectory`]'s docs for the guarantee.
+    ///
+    /// A blend cuts inside its corner: where `path` wraps a corner tightly around an obstacle
+    /// (as simplified paths do, grazing it at the checker's margin) the blend is shrunk and the
+    /// motion slows there. A path simplified on the problem [padded](crate::ArmProblem::with_padding)
+    /// by a little room (`mit-star plan --blend-room`), timed with a certifier of the problem
+    /// as given, leaves its blends that room.
     ///
     /// # Errors
     /// As [`stop_at_corners`](Self::stop_at_corners).
