@@ -8,7 +8,7 @@
 //! diff old.txt new.txt
 //! ```
 //!
-//! Six lazy-search configurations × four problems × batch sizes 20 and 100 × seeds 0–2, each
+//! Seven configurations of the informed trees (six lazy searches and FCIT*) × four problems × batch sizes 20 and 100 × seeds 0–2, each
 //! stopped after 30 000 iterations: most runs prune and restart their reverse search, so the
 //! digest covers pruning, re-keying and the neighbour caches.
 use mit_star::{Configuration, IterationLimit, Parameters, build_planner};
@@ -21,6 +21,7 @@ fn main() {
         "bit-star",
         "ait-star",
         "abit-star",
+        "fcit-star",
     ] {
         let configuration: Configuration = name.parse().unwrap();
         for (family, n) in [

@@ -30,89 +30,14 @@
 #include <vamp/collision/factory.hh>
 #include <vamp/planning/aorrtc.hh>
 #include <vamp/random/halton.hh>
-#include <vamp/robots/panda.hh>
 
-using Robot = vamp::robots::Panda;
+#include "mbm_problems.hh"
+
+using mbm::Robot;
 static constexpr std::size_t rake = vamp::FloatVectorWidth;
-using EnvIn = vamp::collision::Environment<float>;
 using EnvVec = vamp::collision::Environment<vamp::FloatVector<rake>>;
 using Planner = vamp::planning::AORRTC<Robot, rake, Robot::resolution>;
 using Connect = vamp::planning::RRTC<Robot, rake, Robot::resolution>;
-namespace vf = vamp::collision::factory;
-
-struct Problem
-{
-    std::string scene;
-    int index = 0;
-    bool valid = false;
-    Robot::ConfigurationArray start{};
-    std::vector<Robot::ConfigurationArray> goals;
-    EnvIn env;
-};
-
-static std::array<float, 3> three(std::istringstream &s)
-{
-    std::array<float, 3> a{};
-    s >> a[0] >> a[1] >> a[2];
-    return a;
-}
-
-static Robot::ConfigurationArray configuration(std::istringstream &s)
-{
-    Robot::ConfigurationArray a{};
-    for (auto &x : a) s >> x;
-    return a;
-}
-
-static std::vector<Problem> read(const char *file)
-{
-    std::ifstream in(file);
-    std::vector<Problem> all;
-    std::string line;
-    while (std::getline(in, line))
-    {
-        std::istringstream ss(line);
-        std::string tag;
-        ss >> tag;
-        if (tag == "P")
-        {
-            all.emplace_back();
-            int valid, goals;
-            ss >> all.back().scene >> all.back().index >> valid >> goals;
-            all.back().valid = valid;
-            continue;
-        }
-        if (all.empty()) continue;
-        auto &p = all.back();
-        if (tag == "S") p.start = configuration(ss);
-        else if (tag == "G") p.goals.push_back(configuration(ss));
-        else if (tag == "sphere")
-        {
-            auto c = three(ss);
-            float r;
-            ss >> r;
-            p.env.spheres.emplace_back(vf::sphere::array(c, r));
-        }
-        else if (tag == "capsule")
-        {
-            auto c = three(ss), e = three(ss);
-            float r, l;
-            ss >> r >> l;
-            auto shape = vf::cylinder::center::array(c, e, r, l);
-            if (shape.xv == 0. and shape.yv == 0.) p.env.z_aligned_capsules.emplace_back(shape);
-            else p.env.capsules.emplace_back(shape);
-        }
-        else if (tag == "cuboid")
-        {
-            auto c = three(ss), e = three(ss), h = three(ss);
-            auto shape = vf::cuboid::array(c, e, h);
-            if (shape.axis_3_z == 1.) p.env.z_aligned_cuboids.emplace_back(shape);
-            else p.env.cuboids.emplace_back(shape);
-        }
-        p.env.sort();
-    }
-    return all;
-}
 
 int main(int argc, char **argv)
 {
@@ -130,7 +55,7 @@ int main(int argc, char **argv)
     const bool first_paths = std::getenv("VAMP_FIRST_PATHS") != nullptr;
     std::cout << (first_paths ? "scene,index,raw_cost,simplified_cost,simplify_us,solved\n"
                               : "scene,index,limit,time_us,cost,solved\n");
-    for (const auto &p : read(argv[1]))
+    for (const auto &p : mbm::read(argv[1]))
     {
         if (not p.valid or taken[p.scene] >= per_scene) continue;
         ++taken[p.scene];

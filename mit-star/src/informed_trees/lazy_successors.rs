@@ -22,7 +22,7 @@ use crate::informed_trees::reverse_search::forward_keys;
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Successors {
     /// Positions in the vertex's neighbour list, best `ĉ + ĥ` first.
-    order: Vec<u32>,
+    pub(crate) order: Vec<u32>,
     /// The next position of `order` to try.
     next: u32,
     /// The batch tag the order was made in (another: the order is stale).
@@ -52,16 +52,27 @@ where
 
     /// Sorts the first `len` neighbours of `v` by `ĉ + ĥ` and queues the best edge that passes
     /// the expansion's rules (not to `exclude`, not blacklisted, a rewiring only where allowed).
+    ///
+    /// Where `v` may not rewire (every expansion after its first in BIT*'s default), the edges
+    /// into the forward tree other than to `v`'s children are left out of the order: the scan
+    /// of [`queue_next_successor`](Self::queue_next_successor) would skip them anyway, and on a
+    /// complete graph whose tree holds most vertices (a batch without a solution) sorting and
+    /// scanning them was most of a re-expansion's time. The order of the edges kept is the
+    /// same.
     pub(crate) fn expand_forward_lazily(&mut self, v: u32, len: usize, exclude: u32) {
         let index = v as usize;
         if self.successors.len() <= index {
             self.successors.resize_with(index + 1, Successors::default);
         }
+        let rewirings = self.may_rewire(v);
         let mut keyed = std::mem::take(&mut self.successor_keys);
         keyed.clear();
-        keyed.extend((0..len).map(|i| {
+        keyed.extend((0..len).filter_map(|i| {
             let n = self.graph.neighbour(v, i);
-            (n.cost + self.graph.vertex(n.id).cost_to_go_bound, i as u32)
+            if !rewirings && self.is_rewiring(v, n.id) {
+                return None;
+            }
+            Some((n.cost + self.graph.vertex(n.id).cost_to_go_bound, i as u32))
         }));
         keyed.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let tag = self.graph.tag;
@@ -91,8 +102,7 @@ where
         let exclude = successors.exclude;
         let mut next = successors.next as usize;
         let g = self.graph.vertex(v).g;
-        let rewirings = self.parameters.cascading_rewirings.unwrap_or(false)
-            || !self.graph.vertex(v).rewiring_expanded;
+        let rewirings = self.may_rewire(v);
         let mut queued = None;
         while let Some(&i) = self.successors[index].order.get(next) {
             let n = self.graph.neighbour(v, i as usize);
@@ -101,13 +111,12 @@ where
                 break;
             }
             next += 1;
-            if n.id == exclude || self.is_blacklisted(v, n.id) {
+            // The cheap tests first: `is_blacklisted` looks the edge up.
+            let rewiring = self.is_rewiring(v, n.id);
+            if n.id == exclude || (rewiring && !rewirings) || self.is_blacklisted(v, n.id) {
                 continue;
             }
-            if self.is_rewiring(v, n.id) {
-                if !rewirings {
-                    continue;
-                }
+            if rewiring {
                 self.graph.vertex_mut(v).rewiring_expanded = true;
             }
             queued = Some(ForwardEdge {
@@ -125,6 +134,13 @@ where
         if let Some(edge) = queued {
             self.queue_forward(edge);
         }
+    }
+
+    /// `true` if an expansion of `v` may queue edges that rewire the forward tree: with
+    /// cascading rewirings, or until one of `v`'s expansions has queued such an edge.
+    fn may_rewire(&self, v: u32) -> bool {
+        self.parameters.cascading_rewirings.unwrap_or(false)
+            || !self.graph.vertex(v).rewiring_expanded
     }
 
     /// After the edge `u → v` left the queue: if it was `u`'s queued successor, queue the next.

@@ -5,6 +5,7 @@ use mit_star_heuristics::Euclidean;
 use mit_star_samplers::InformedSampler;
 use mit_star_validity::{DenseChecker, World};
 
+use crate::graph::NONE;
 use crate::informed_trees::{APriori, BatchDensity, Connectivity, Eit, NeighbourRule};
 use crate::termination::SolveStop;
 use crate::{FcitStar, IterationLimit, Parameters};
@@ -83,4 +84,59 @@ fn the_queue_holds_about_one_edge_per_expanded_vertex() {
     for cost in [lazy.best_cost, eager.best_cost] {
         assert!(cost.is_finite() && cost >= optimum - 1e-9, "{cost}");
     }
+}
+
+#[test]
+fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
+    let problem = mit_star_problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let mut planner = FcitStar::for_problem(&problem)
+        .parameters(Parameters {
+            batch_size: Some(100),
+            ..Parameters::default()
+        })
+        .build()
+        .unwrap();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    planner.setup(&stop).unwrap();
+    for _ in 0..4_000 {
+        planner.iterate(&stop);
+    }
+    let v = planner.start_id;
+    let len = planner
+        .graph
+        .neighbours(v, &planner.space, &planner.heuristic, &stop)
+        .unwrap();
+    let into_tree = |p: &FcitStar, i: usize| p.is_rewiring(v, p.graph.neighbour(v, i).id);
+    let mut kept: Vec<u32> = (0..len)
+        .filter(|&i| !into_tree(&planner, i))
+        .map(|i| i as u32)
+        .collect();
+    assert!(
+        kept.len() < len,
+        "the tree holds some of the start's neighbours"
+    );
+    // Its first expansion orders every edge; once it has rewired, only those out of the tree.
+    planner.graph.vertex_mut(v).rewiring_expanded = false;
+    planner.expand_forward_lazily(v, len, NONE);
+    assert_eq!(planner.successors[v as usize].order.len(), len);
+    planner.graph.vertex_mut(v).rewiring_expanded = true;
+    planner.expand_forward_lazily(v, len, NONE);
+    let mut order = planner.successors[v as usize].order.clone();
+    // The edges left are in the order of their keys, as in the full order.
+    let keys: Vec<f64> = order
+        .iter()
+        .map(|&i| {
+            let n = planner.graph.neighbour(v, i as usize);
+            n.cost + planner.graph.vertex(n.id).cost_to_go_bound
+        })
+        .collect();
+    assert!(keys.windows(2).all(|w| w[0] <= w[1]), "{keys:?}");
+    order.sort_unstable();
+    kept.sort_unstable();
+    assert_eq!(order, kept);
 }
