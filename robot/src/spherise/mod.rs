@@ -41,6 +41,7 @@
 
 mod budget_allocation;
 mod cell_grid;
+mod cover_search;
 mod enclosed_fill;
 mod medial_cover;
 mod mesh_file;
