@@ -8,7 +8,7 @@ use mit_star_robot::TriangleMesh;
 use proptest::prelude::*;
 
 /// The closest point of triangle `abc` to `p` (Ericson, Real-Time Collision Detection 5.1.5).
-pub fn closest_on_triangle(p: DVec3, [a, b, c]: [DVec3; 3]) -> DVec3 {
+pub(crate) fn closest_on_triangle(p: DVec3, [a, b, c]: [DVec3; 3]) -> DVec3 {
     let (ab, ac, ap) = (b - a, c - a, p - a);
     let (d1, d2) = (ab.dot(ap), ac.dot(ap));
     if d1 <= 0.0 && d2 <= 0.0 {
@@ -40,7 +40,7 @@ pub fn closest_on_triangle(p: DVec3, [a, b, c]: [DVec3; 3]) -> DVec3 {
     a + ab * (vb * denominator) + ac * (vc * denominator)
 }
 
-pub fn surface_distance(mesh: &TriangleMesh, p: DVec3) -> f64 {
+pub(crate) fn surface_distance(mesh: &TriangleMesh, p: DVec3) -> f64 {
     (0..mesh.triangles().len())
         .map(|t| p.distance(closest_on_triangle(p, mesh.corners(t))))
         .fold(f64::INFINITY, f64::min)
@@ -48,7 +48,7 @@ pub fn surface_distance(mesh: &TriangleMesh, p: DVec3) -> f64 {
 
 /// Whether `p` is inside one of the mesh's closed shells (connected components, which may
 /// overlap).
-pub fn inside(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
+pub(crate) fn inside(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
     let mut undecided = false;
     for shell in mesh.components().iter().filter(|s| s.is_closed()) {
         match inside_shell(shell, p) {
@@ -62,7 +62,7 @@ pub fn inside(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
 
 /// Whether `p` is inside the closed shell: the parity of a ray's crossings, along the first
 /// of several fixed directions whose ray passes clear of every edge (`None` if none does).
-pub fn inside_shell(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
+pub(crate) fn inside_shell(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
     let directions = [
         DVec3::new(0.267, 0.534, 0.802),
         DVec3::new(-0.613, 0.239, 0.753),
@@ -101,17 +101,17 @@ pub fn inside_shell(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
 }
 
 /// A box of half extents `half` about the origin.
-pub fn cube(half: DVec3) -> TriangleMesh {
+pub(crate) fn cube(half: DVec3) -> TriangleMesh {
     TriangleMesh::cuboid(half).unwrap()
 }
 
 /// A prism of `sides` sides around a cylinder of `radius` and `length` along z.
-pub fn prism(radius: f64, length: f64, sides: usize) -> TriangleMesh {
+pub(crate) fn prism(radius: f64, length: f64, sides: u32) -> TriangleMesh {
     TriangleMesh::cylinder(radius, length, sides).unwrap()
 }
 
 /// A box of half extents `half` without its last face (two triangles): an open mesh.
-pub fn open_box(half: DVec3) -> TriangleMesh {
+pub(crate) fn open_box(half: DVec3) -> TriangleMesh {
     let closed = cube(half);
     TriangleMesh::new(
         closed.vertices().to_vec(),
@@ -122,19 +122,19 @@ pub fn open_box(half: DVec3) -> TriangleMesh {
 
 /// A shape: `kind` 0 a box, 1 a prism, 2 a hollow box of six plates.
 #[derive(Debug, Clone)]
-pub struct Part {
+pub(crate) struct Part {
     /// 0 a box, 1 a prism, 2 a hollow box.
-    pub kind: u8,
+    pub(crate) kind: u8,
     /// Half extents (a prism: radius, unused, half length).
-    pub size: [f64; 3],
+    pub(crate) size: [f64; 3],
     /// Where its centre is.
-    pub at: [f64; 3],
+    pub(crate) at: [f64; 3],
     /// A turn about z, and 0.7 of it about x (radians).
-    pub turn: f64,
+    pub(crate) turn: f64,
 }
 
 /// One to three random parts within about 0.15 m of the origin.
-pub fn parts() -> impl Strategy<Value = Vec<Part>> {
+pub(crate) fn parts() -> impl Strategy<Value = Vec<Part>> {
     prop::collection::vec(
         (
             0_u8..3,
@@ -154,7 +154,7 @@ pub fn parts() -> impl Strategy<Value = Vec<Part>> {
 
 /// The parts as one mesh; with `jitter`, as a triangle soup whose every corner is moved by
 /// up to `jitter` (cracks a vertex merge closes).
-pub fn mesh_of(parts: &[Part], jitter: f64) -> TriangleMesh {
+pub(crate) fn mesh_of(parts: &[Part], jitter: f64) -> TriangleMesh {
     let (mut vertices, mut triangles): (Vec<DVec3>, Vec<[u32; 3]>) = (Vec::new(), Vec::new());
     let mut add = |m: TriangleMesh, rotation: DMat3, at: DVec3| {
         let m = m.transformed(rotation, at, DVec3::ONE);
