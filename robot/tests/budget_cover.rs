@@ -9,48 +9,11 @@
 //!   distance to the nearest triangle;
 //! - the budget is kept.
 
-use glam::{DMat3, DVec3};
+use glam::DVec3;
 use mit_star_robot::{CoverOptions, SphereCover, TriangleMesh};
 use proptest::prelude::*;
 
-/// The closest point of triangle `abc` to `p` (by regions of the triangle's plane).
-fn closest_on_triangle(p: DVec3, [a, b, c]: [DVec3; 3]) -> DVec3 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return a;
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return b;
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return c;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return a + ab * (d1 / (d1 - d3));
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return a + ac * (d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let denom = 1.0 / (va + vb + vc);
-    a + ab * (vb * denom) + ac * (vc * denom)
-}
-
-fn surface_distance(mesh: &TriangleMesh, p: DVec3) -> f64 {
-    (0..mesh.triangles().len())
-        .map(|t| p.distance(closest_on_triangle(p, mesh.corners(t))))
-        .fold(f64::INFINITY, f64::min)
-}
+use crate::test_meshes::{Part, mesh_of, parts, surface_distance};
 
 /// `n` points spread over the unit sphere.
 fn unit_sphere(n: usize) -> impl Iterator<Item = DVec3> {
@@ -61,90 +24,6 @@ fn unit_sphere(n: usize) -> impl Iterator<Item = DVec3> {
         let (s, c) = (golden * i as f64).sin_cos();
         DVec3::new(r * c, r * s, z)
     })
-}
-
-/// A shape: `kind` 0 a box, 1 a prism, 2 a hollow box of six plates.
-#[derive(Debug, Clone)]
-struct Part {
-    kind: u8,
-    size: [f64; 3],
-    at: [f64; 3],
-    turn: f64,
-}
-
-fn parts() -> impl Strategy<Value = Vec<Part>> {
-    prop::collection::vec(
-        (
-            0_u8..3,
-            [0.02..0.09_f64, 0.02..0.09_f64, 0.02..0.12_f64],
-            [-0.06..0.06_f64, -0.06..0.06_f64, -0.06..0.06_f64],
-            0.0..3.0_f64,
-        )
-            .prop_map(|(kind, size, at, turn)| Part {
-                kind,
-                size,
-                at,
-                turn,
-            }),
-        1..4,
-    )
-}
-
-/// The parts as one mesh; with `jitter`, as a triangle soup whose every corner is moved by
-/// up to `jitter` (cracks a vertex merge closes).
-fn mesh_of(parts: &[Part], jitter: f64) -> TriangleMesh {
-    let (mut vertices, mut triangles): (Vec<DVec3>, Vec<[u32; 3]>) = (Vec::new(), Vec::new());
-    let mut add = |m: TriangleMesh, rotation: DMat3, at: DVec3| {
-        let m = m.transformed(rotation, at, DVec3::ONE);
-        let base = u32::try_from(vertices.len()).unwrap();
-        vertices.extend(m.vertices());
-        triangles.extend(m.triangles().iter().map(|t| t.map(|v| v + base)));
-    };
-    for p in parts {
-        let rotation = DMat3::from_rotation_z(p.turn) * DMat3::from_rotation_x(p.turn * 0.7);
-        let [x, y, z] = p.size;
-        let at = DVec3::from(p.at);
-        match p.kind {
-            0 => add(
-                TriangleMesh::cuboid(DVec3::new(x, y, z)).unwrap(),
-                rotation,
-                at,
-            ),
-            1 => add(
-                TriangleMesh::cylinder(x, 2.0 * z, 12).unwrap(),
-                rotation,
-                at,
-            ),
-            _ => {
-                for axis in 0..3 {
-                    for sign in [-1.0, 1.0] {
-                        let mut half = DVec3::new(x, y, z) + DVec3::splat(0.01);
-                        half[axis] = 0.004;
-                        let mut offset = DVec3::ZERO;
-                        offset[axis] = sign * (DVec3::new(x, y, z)[axis] + 0.006);
-                        add(
-                            TriangleMesh::cuboid(half).unwrap(),
-                            rotation,
-                            at + rotation * offset,
-                        );
-                    }
-                }
-            }
-        }
-    }
-    let mesh = TriangleMesh::new(vertices, triangles).unwrap();
-    if jitter == 0.0 {
-        return mesh;
-    }
-    let soup: Vec<[DVec3; 3]> = (0..mesh.triangles().len())
-        .map(|t| {
-            mesh.corners(t).map(|c| {
-                let s = (c.x * 71.0 + c.y * 113.0 + c.z * 37.0 + t as f64 * 0.1).sin();
-                c + DVec3::new(s, -s, 0.5 * s) * jitter
-            })
-        })
-        .collect();
-    TriangleMesh::from_soup(&soup).unwrap()
 }
 
 fn check_cover(mesh: &TriangleMesh, options: &CoverOptions) -> Result<(), TestCaseError> {

@@ -7,6 +7,8 @@
 mod arm_cases;
 #[path = "support/cage_batches.rs"]
 mod cage_batches;
+#[path = "support/test_meshes.rs"]
+mod test_meshes;
 
 mod audit_broad_phase;
 mod batch_size_on_arms;
@@ -34,6 +36,7 @@ mod radius_connection_on_arms;
 mod reverse_repair_on_arms;
 mod rrt_range_on_arms;
 mod scenes;
+mod searched_cover;
 mod short_slices;
 mod simplified_arm_paths;
 mod solution_samples_on_arms;

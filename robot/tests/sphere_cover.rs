@@ -14,6 +14,8 @@ use mit_star_robot::{
 };
 use proptest::prelude::*;
 
+use crate::test_meshes::{cube, inside, open_box, prism, surface_distance};
+
 const UR5_MESHES: [&str; 7] = [
     "base", "shoulder", "upperarm", "forearm", "wrist1", "wrist2", "wrist3",
 ];
@@ -36,13 +38,6 @@ static COVERED: LazyLock<Vec<Covered>> = LazyLock::new(|| {
         tolerance: TOLERANCE,
         max_spheres: None,
     };
-    let mut open_box = TriangleMesh::cuboid(DVec3::new(0.05, 0.08, 0.03)).unwrap();
-    // Without its last face (two triangles) the box is open: only its surface is covered.
-    open_box = TriangleMesh::new(
-        open_box.vertices().to_vec(),
-        open_box.triangles()[..10].to_vec(),
-    )
-    .unwrap();
     let mut meshes: Vec<(String, TriangleMesh)> = UR5_MESHES
         .iter()
         .map(|name| {
@@ -50,15 +45,9 @@ static COVERED: LazyLock<Vec<Covered>> = LazyLock::new(|| {
             ((*name).to_owned(), read_stl(&path).unwrap())
         })
         .collect();
-    meshes.push((
-        "cube".into(),
-        TriangleMesh::cuboid(DVec3::splat(0.07)).unwrap(),
-    ));
-    meshes.push((
-        "prism".into(),
-        TriangleMesh::cylinder(0.04, 0.3, 20).unwrap(),
-    ));
-    meshes.push(("open box".into(), open_box));
+    meshes.push(("cube".into(), cube(DVec3::splat(0.07))));
+    meshes.push(("prism".into(), prism(0.04, 0.3, 20)));
+    meshes.push(("open box".into(), open_box(DVec3::new(0.05, 0.08, 0.03))));
     let mut covered: Vec<Covered> = meshes
         .into_iter()
         .map(|(name, mesh)| {
@@ -99,99 +88,6 @@ fn in_cover(cover: &SphereCover, p: DVec3) -> bool {
         .spheres
         .iter()
         .any(|s| p.distance(s.centre) <= s.radius)
-}
-
-/// The closest point of triangle `abc` to `p` (Ericson, Real-Time Collision Detection 5.1.5).
-fn closest_on_triangle(p: DVec3, [a, b, c]: [DVec3; 3]) -> DVec3 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return a;
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return b;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return a + ab * (d1 / (d1 - d3));
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return c;
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return a + ac * (d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let denominator = 1.0 / (va + vb + vc);
-    a + ab * (vb * denominator) + ac * (vc * denominator)
-}
-
-fn surface_distance(mesh: &TriangleMesh, p: DVec3) -> f64 {
-    (0..mesh.triangles().len())
-        .map(|t| p.distance(closest_on_triangle(p, mesh.corners(t))))
-        .fold(f64::INFINITY, f64::min)
-}
-
-/// Whether `p` is inside one of the mesh's closed shells (connected components, which may
-/// overlap).
-fn inside(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
-    let mut undecided = false;
-    for shell in mesh.components().iter().filter(|s| s.is_closed()) {
-        match inside_shell(shell, p) {
-            Some(true) => return Some(true),
-            Some(false) => {}
-            None => undecided = true,
-        }
-    }
-    (!undecided).then_some(false)
-}
-
-/// Whether `p` is inside the closed shell: the parity of a ray's crossings, along the first
-/// of several fixed directions whose ray passes clear of every edge (`None` if none does).
-fn inside_shell(mesh: &TriangleMesh, p: DVec3) -> Option<bool> {
-    let directions = [
-        DVec3::new(0.267, 0.534, 0.802),
-        DVec3::new(-0.613, 0.239, 0.753),
-        DVec3::new(0.871, -0.402, 0.283),
-        DVec3::new(-0.118, -0.929, -0.351),
-    ];
-    'direction: for d in directions {
-        let d = d.normalize();
-        let mut hits = 0;
-        for t in 0..mesh.triangles().len() {
-            let [a, b, c] = mesh.corners(t);
-            let (e1, e2) = (b - a, c - a);
-            let h = d.cross(e2);
-            let det = e1.dot(h);
-            if det.abs() < 1e-14 {
-                continue;
-            }
-            let s = p - a;
-            let u = s.dot(h) / det;
-            let q = s.cross(e1);
-            let v = d.dot(q) / det;
-            let w = 1.0 - u - v;
-            let t_hit = e2.dot(q) / det;
-            let margin = 1e-9;
-            let grazes = [u, v, w].iter().any(|x| x.abs() < margin) || t_hit.abs() < 1e-12;
-            if grazes && u > -margin && v > -margin && w > -margin && t_hit > -1e-12 {
-                continue 'direction;
-            }
-            if u > 0.0 && v > 0.0 && w > 0.0 && t_hit > 0.0 {
-                hits += 1;
-            }
-        }
-        return Some(hits % 2 == 1);
-    }
-    None
 }
 
 /// The distance from `p` to the solid (the surface of an open mesh).

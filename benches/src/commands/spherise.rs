@@ -40,9 +40,11 @@ pub struct SpheriseArgs {
     #[arg(long, value_name = "URDF")]
     pub fallback: Option<PathBuf>,
     /// Where the spheres are placed: `grid` (greedy over a grid's corners), `medial`
-    /// (candidates on an approximate medial axis, a finer grid, pairs merged) or `fewest`
-    /// (both, keeping the cover with fewer spheres per mesh). Default: `fewest` under a
-    /// sphere budget (--max-spheres, --max-mesh-spheres), `grid` otherwise.
+    /// (candidates on an approximate medial axis, a finer grid, pairs merged), `fewest`
+    /// (both, keeping the cover with fewer spheres per mesh) or `searched` (the medial
+    /// candidates, the greedy cover improved by a local search: fewest spheres, slowest).
+    /// Default: `searched` under a sphere budget (--max-spheres, --max-mesh-spheres), `grid`
+    /// otherwise.
     #[arg(long, value_name = "PLACEMENT", value_parser = parse_placement)]
     pub placement: Option<mit_star_robot::Placement>,
     /// Where to write the spherised URDF.
@@ -50,13 +52,14 @@ pub struct SpheriseArgs {
     pub output: PathBuf,
 }
 
-/// `grid`, `medial` or `fewest`.
+/// `grid`, `medial`, `fewest` or `searched`.
 fn parse_placement(text: &str) -> Result<mit_star_robot::Placement, String> {
     match text {
         "grid" => Ok(mit_star_robot::Placement::Grid),
         "medial" => Ok(mit_star_robot::Placement::Medial),
         "fewest" => Ok(mit_star_robot::Placement::Fewest),
-        _ => Err(format!("`{text}`: one of grid, medial, fewest")),
+        "searched" => Ok(mit_star_robot::Placement::Searched),
+        _ => Err(format!("`{text}`: one of grid, medial, fewest, searched")),
     }
 }
 

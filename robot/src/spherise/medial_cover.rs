@@ -60,6 +60,23 @@ pub(super) fn medial_cover(
     tolerance: f64,
     stop: &AtomicBool,
 ) -> Result<(Vec<CoverSphere>, f64), SpheriseError> {
+    let (grid, candidates, tolerance) = medial_grid(solid, tolerance, stop)?;
+    let mut picked = greedy(solid, &grid, &candidates, tolerance, stop)?;
+    merge_pairs(&grid, &candidates, &mut picked, stop)?;
+    Ok((shrink_and_prune(solid, &grid, &picked, stop)?, tolerance))
+}
+
+/// The medial placement's grid (cells [`REFINE`] times finer than the grid placement's, at
+/// most [`MAX_MEDIAL_CELLS`]), its candidates, and the tolerance they keep (larger when the
+/// cap coarsened the grid).
+///
+/// # Errors
+/// [`SpheriseError::Stopped`] once `stop` is raised.
+pub(super) fn medial_grid(
+    solid: &Solid,
+    tolerance: f64,
+    stop: &AtomicBool,
+) -> Result<(CellGrid, Vec<Candidate>, f64), SpheriseError> {
     let coarse = cell_edge(tolerance);
     let (lo, hi) = solid.mesh().bounds();
     let mut h = coarse / REFINE;
@@ -70,9 +87,7 @@ pub(super) fn medial_cover(
     // A grid coarsened by its own cap needs a larger tolerance for every cell to be coverable.
     let tolerance = tolerance.max(grid.h * 3f64.sqrt());
     let candidates = medial_candidates(solid, &grid, tolerance, stop)?;
-    let mut picked = greedy(solid, &grid, &candidates, tolerance, stop)?;
-    merge_pairs(&grid, &candidates, &mut picked, stop)?;
-    Ok((shrink_and_prune(solid, &grid, &picked, stop)?, tolerance))
+    Ok((grid, candidates, tolerance))
 }
 
 /// The depth field at every corner of the grid: the depth of a trusted inside corner, minus

@@ -16,7 +16,9 @@
 //! - [`SphereCover`] (`sphere_cover.rs`): few spheres containing every cell's box, each
 //!   protruding by at most the tolerance, with [`CoverOptions`] and [`CoverSphere`];
 //!   [`Placement`] chooses between its grid placement and `medial_cover.rs`'s medial one
-//!   (candidates on an approximate medial axis, a finer grid, pairs merged).
+//!   (candidates on an approximate medial axis, a finer grid, pairs merged) and
+//!   `cover_search.rs`'s searched one (the medial candidates, the greedy cover improved by a
+//!   local search for a cover with fewer spheres: what a sphere budget uses).
 //! - `outward_error.rs`: a cover's outward error measured by branch and bound over the
 //!   spheres' surfaces (the largest distance from the union's boundary to the mesh).
 //! - [`SpherisedUrdf`] (`spherised_urdf.rs`): a URDF's collision meshes and primitives
@@ -41,6 +43,7 @@
 
 mod budget_allocation;
 mod cell_grid;
+mod cover_search;
 mod enclosed_fill;
 mod medial_cover;
 mod mesh_file;

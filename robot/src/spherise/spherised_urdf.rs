@@ -43,7 +43,7 @@ pub struct SpheriseOptions {
     /// error is the least that fits, the spheres left over going where they cut a link's
     /// error most. Each link's report gives the tolerance used and what it measured.
     pub max_spheres: Option<usize>,
-    /// Where the spheres are placed; `None` takes [`Placement::Fewest`] under a sphere
+    /// Where the spheres are placed; `None` takes [`Placement::Searched`] under a sphere
     /// budget (`max_spheres` or the cover's own) and [`Placement::Grid`] otherwise.
     pub placement: Option<Placement>,
     /// Raised to stop (a SIGINT/SIGTERM handler): covers poll it in every long loop and
@@ -185,7 +185,7 @@ impl SpherisedUrdf {
         }
         let placement = options.placement.unwrap_or(
             if options.max_spheres.is_some() || options.cover.max_spheres.is_some() {
-                Placement::Fewest
+                Placement::Searched
             } else {
                 Placement::Grid
             },
