@@ -13,6 +13,7 @@ mod batch_size_on_arms;
 mod batches;
 mod budget_cover;
 mod certified_motion;
+mod cloud_affordances;
 mod cloud_input_hostile;
 mod cloud_input_properties;
 mod cloud_motion;
