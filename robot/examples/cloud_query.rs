@@ -91,7 +91,11 @@ fn main() {
                 out.iter().filter(|&&t| t).count()
             });
             let fours = best_of_five(|| {
-                for ((c, r), o) in centers.chunks(4).zip(radii.chunks(4)).zip(out.chunks_mut(4)) {
+                for ((c, r), o) in centers
+                    .chunks(4)
+                    .zip(radii.chunks(4))
+                    .zip(out.chunks_mut(4))
+                {
                     obstacle.touches_spheres(black_box(c), r, o);
                 }
                 out.iter().filter(|&&t| t).count()

@@ -15,8 +15,7 @@ fn cloud_points(count: usize, spread: f32, seed: u64) -> Vec<Vec3> {
         state ^= state >> 12;
         state ^= state << 25;
         state ^= state >> 27;
-        ((state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 40) as f32 / (1u64 << 24) as f32) * 2.0
-            - 1.0
+        ((state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 40) as f32 / (1u64 << 24) as f32) * 2.0 - 1.0
     };
     let mut points = Vec::with_capacity(count);
     while points.len() < count {
@@ -30,7 +29,11 @@ fn cloud_points(count: usize, spread: f32, seed: u64) -> Vec<Vec3> {
         } else if kind > -0.3 {
             // A patch of a plane z = const (the coordinates repeat exactly).
             for _ in 0..30.min(count - points.len()) {
-                points.push(Vec3::new(centre.x + 0.1 * next(), centre.y + 0.1 * next(), centre.z));
+                points.push(Vec3::new(
+                    centre.x + 0.1 * next(),
+                    centre.y + 0.1 * next(),
+                    centre.z,
+                ));
             }
         } else {
             points.push(centre);
@@ -51,7 +54,11 @@ fn brute(points: &[Vec3], c: Vec3, reach: f32) -> bool {
 /// Queries: centres anywhere around the cloud, at a point (its coordinates are split values),
 /// or a point moved along one axis (on a split plane); reaches anywhere up to the bound, or at
 /// the exact `f32` distance of a point, a unit in the last place either side.
-fn queries(points: &[Vec3], reach_max: f32, raw: &[(f32, f32, f32, f32, u8, u16)]) -> Vec<(Vec3, f32)> {
+fn queries(
+    points: &[Vec3],
+    reach_max: f32,
+    raw: &[(f32, f32, f32, f32, u8, u16)],
+) -> Vec<(Vec3, f32)> {
     raw.iter()
         .map(|&(x, y, z, f, kind, pick)| {
             let p = points[pick as usize % points.len()];
@@ -81,7 +88,14 @@ fn queries(points: &[Vec3], reach_max: f32, raw: &[(f32, f32, f32, f32, u8, u16)
 
 fn raw_queries() -> impl Strategy<Value = Vec<(f32, f32, f32, f32, u8, u16)>> {
     prop::collection::vec(
-        (-0.4..1.2_f32, -0.8..0.8_f32, -0.4..1.2_f32, 0.0..1.0_f32, any::<u8>(), any::<u16>()),
+        (
+            -0.4..1.2_f32,
+            -0.8..0.8_f32,
+            -0.4..1.2_f32,
+            0.0..1.0_f32,
+            any::<u8>(),
+            any::<u16>(),
+        ),
         1..120,
     )
 }
@@ -165,7 +179,10 @@ fn a_million_points_stay_within_64_bytes_each() {
     assert!(per_point <= 64.0, "{per_point} bytes a point");
     let c = sparse[123_456] + Vec3::new(5e-5, 0.0, 0.0);
     assert_eq!(affordances.any_within(c, 1e-4), Some(true));
-    assert_eq!(affordances.any_within(c, 2e-5), Some(brute(&sparse, c, 2e-5)));
+    assert_eq!(
+        affordances.any_within(c, 2e-5),
+        Some(brute(&sparse, c, 2e-5))
+    );
 }
 
 /// A build told to stop stops.

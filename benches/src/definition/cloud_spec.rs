@@ -451,14 +451,10 @@ impl CloudSpec {
         }
         let (count, radius) = (cloud.len(), cloud.radius());
         let start = Instant::now();
-        let obstacle = CloudObstacle::new("cloud", cloud).with_affordances(arm.cloud_contact_radius());
+        let obstacle = CloudObstacle::new("cloud", cloud);
         let build = start.elapsed();
-        let affordances = match obstacle.affordances() {
-            Some(a) => format!(" and its affordances ({} points listed)", a.listed()),
-            None => String::new(),
-        };
         steps.push(format!(
-            "tree of {count} points of radius {:.1} mm{affordances} built in {}",
+            "tree of {count} points of radius {:.1} mm built in {}",
             radius * 1e3,
             millis(build)
         ));

@@ -178,7 +178,12 @@ impl AffordanceTree {
         active: u32,
     ) -> Option<u32> {
         let r2 = reach * reach;
-        if r2.simd_le(LaneF32::splat(self.reach_max_squared)).to_bitmask() & active != active {
+        if r2
+            .simd_le(LaneF32::splat(self.reach_max_squared))
+            .to_bitmask()
+            & active
+            != active
+        {
             return None;
         }
         let (xs, ys, zs) = (
@@ -383,18 +388,27 @@ mod tests {
             assert_eq!(tree.any_within(c, 0.201), None);
             // Lanes: this centre and others nearby, every other lane active.
             let lanes = [0, 1, 2].map(|k| {
-                LaneF32::new(std::array::from_fn(|l| c[k] + 0.003 * l as f32 * (k as f32 - 1.0)))
+                LaneF32::new(std::array::from_fn(|l| {
+                    c[k] + 0.003 * l as f32 * (k as f32 - 1.0)
+                }))
             });
             let active = 0x5555_5555 & ((1_u64 << LANES) - 1) as u32;
             let found = tree
                 .any_within_lanes(&lanes, LaneF32::splat(reach), active)
                 .unwrap();
             for l in 0..LANES {
-                let lane = Vec3::new(lanes[0].to_array()[l], lanes[1].to_array()[l], lanes[2].to_array()[l]);
+                let lane = Vec3::new(
+                    lanes[0].to_array()[l],
+                    lanes[1].to_array()[l],
+                    lanes[2].to_array()[l],
+                );
                 let expected = active & (1 << l) != 0 && brute(lane, reach);
                 assert_eq!(found & (1 << l) != 0, expected, "lane {l}");
             }
-            assert_eq!(tree.any_within_lanes(&lanes, LaneF32::splat(0.25), active), None);
+            assert_eq!(
+                tree.any_within_lanes(&lanes, LaneF32::splat(0.25), active),
+                None
+            );
         }
         assert!(hits > 10 && hits < 290, "{hits}");
     }

@@ -201,9 +201,9 @@ impl CloudObstacle {
     /// would save).
     #[inline]
     pub(crate) fn worth_bounding(&self, bound: f32, active: u32) -> bool {
-        self.affordances.as_ref().is_none_or(|a| {
-            active.count_ones() > AFFORDED_LANES || a.answers(bound + self.radius)
-        })
+        self.affordances
+            .as_ref()
+            .is_none_or(|a| active.count_ones() > AFFORDED_LANES || a.answers(bound + self.radius))
     }
 
     /// Per lane of `live`, [`distance_lower_bound`](Self::distance_lower_bound).

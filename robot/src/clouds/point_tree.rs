@@ -47,8 +47,9 @@ const POLL_NODES: usize = 1 << 12;
 ///
 /// This is our own structure, written from reading VAMP's CAPT (Ramsey et al., RSS 2024),
 /// which precomputes per leaf of a kd-tree the points a sphere of the robot's radii could
-/// touch; we keep the plain tree (no precomputed affordance sets, so memory stays small and
-/// any radius can be asked), and answer distances as well as booleans.
+/// touch; the plain tree keeps memory small, answers any radius, distances as well as
+/// booleans, and a batch of lanes in one walk. The precomputed sets are the
+/// [`AffordanceTree`](crate::AffordanceTree), which a cloud obstacle may add beside it.
 #[derive(Debug, Clone)]
 pub struct PointTree {
     xs: Vec<f32>,
