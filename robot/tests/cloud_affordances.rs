@@ -106,7 +106,7 @@ proptest! {
     /// Every answer within the bound is brute force's and the tree's; beyond it, `None`.
     #[test]
     fn answers_are_brute_force(
-        count in 1..4000_usize,
+        count in 1..2500_usize,
         spread in 0.005..0.6_f32,
         seed in any::<u64>(),
         reach_max in 0.0..0.2_f32,
@@ -114,8 +114,13 @@ proptest! {
     ) {
         let points = cloud_points(count, spread, seed);
         let tree = PointTree::new(&points);
-        let affordances =
-            AffordanceTree::new_polled(&tree, reach_max, &mit_star_spaces::Never).unwrap();
+        let built = AffordanceTree::new_polled(&tree, reach_max, &mit_star_spaces::Never);
+        // Over the 8 MiB budget only if the lists (at most every point in each of at most
+        // n/4 leaves, 12 bytes each) could be.
+        let Some(affordances) = built else {
+            prop_assert!(count > 1600, "{} points over budget", count);
+            return Ok(());
+        };
         prop_assert!(affordances.listed() >= points.len());
         for (c, reach) in queries(&points, reach_max, &raw) {
             let truth = brute(&points, c, reach);
@@ -143,7 +148,7 @@ proptest! {
         let cloud = PointCloud::new(points.clone()).unwrap().with_radius(point_radius).unwrap();
         let plain = CloudObstacle::new("plain", cloud.clone());
         let fast = CloudObstacle::new("fast", cloud).with_affordances(max_radius);
-        prop_assert!(fast.affordances().is_some());
+        prop_assert!(fast.affordances().is_some() || count > 1600, "{} points", count);
         let asked = queries(&points, max_radius * 1.2, &raw);
         let centers: Vec<Vec3> = asked.iter().map(|q| q.0).collect();
         let radii: Vec<f32> = asked.iter().map(|q| q.1).collect();
