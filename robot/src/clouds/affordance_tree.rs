@@ -162,10 +162,9 @@ impl AffordanceTree {
     #[inline]
     pub fn any_within(&self, center: Vec3, reach: f32) -> Option<bool> {
         let r2 = reach * reach;
-        if !(r2 <= self.reach_max_squared) {
-            return None;
-        }
-        Some(self.contact(center.to_array(), r2))
+        // `None` for a NaN reach too.
+        self.answers(reach)
+            .then(|| self.contact(center.to_array(), r2))
     }
 
     /// Bit `l` set if lane `l` of `active` has a point within `reach[l]` of its centre, or
@@ -309,8 +308,7 @@ impl Builder<'_> {
         ];
         for _ in 0..count.div_ceil(LANES) {
             let mut chunk = [[f32::INFINITY; LANES]; 3];
-            for l in 0..LANES {
-                let Some(p) = lists.next() else { break };
+            for (l, p) in (0..LANES).zip(lists.by_ref()) {
                 for k in 0..3 {
                     chunk[k][l] = p[k];
                     bounds[k] = bounds[k].min(p[k]);
