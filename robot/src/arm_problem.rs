@@ -392,6 +392,23 @@ impl ArmProblem {
         self.checker.padding()
     }
 
+    /// The largest radius a contact query of this problem's checker asks of a point cloud
+    /// when checking configurations: its largest sphere grown by the padding and the
+    /// [margin](ArmChecker::margin), rounded up by a tenth of a millimetre. The radius to build
+    /// a cloud's [affordances](crate::CloudObstacle::with_affordances) for; larger queries (a
+    /// link's bounding sphere, a sphere grown by the sweep of a certified motion) are answered
+    /// by the cloud's tree.
+    pub fn cloud_contact_radius(&self) -> f32 {
+        let largest = self
+            .robot
+            .spheres()
+            .iter()
+            .map(|s| s.radius)
+            .fold(0.0, f64::max);
+        let grown = largest + self.checker.padding().metres() + self.checker.margin();
+        (grown * (1.0 + 1e-6) + 1e-4) as f32
+    }
+
     /// The robot (SRDF and the scene's allowed collisions applied).
     pub fn robot(&self) -> &RobotModel {
         &self.robot

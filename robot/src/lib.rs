@@ -24,7 +24,7 @@
 //! | [`Kinematics`] | forward kinematics: link poses and sphere centres, `f32` and `f64`, no allocation |
 //! | [`Obstacle`], [`Shape`] | boxes, cylinders and spheres with poses; exact sphere contact tests |
 //! | [`Scene`] | a MoveIt planning scene (MotionBenchMaker YAML): obstacles and allowed collisions, and point clouds |
-//! | [`PointCloud`], [`CloudObstacle`], [`PointTree`], [`CloudError`] | point clouds as obstacles: validated points with a radius, named in a scene, and the tree the checker's sphere queries and certified motion's distance bounds walk |
+//! | [`PointCloud`], [`CloudObstacle`], [`PointTree`], [`AffordanceTree`], [`CloudError`] | point clouds as obstacles: validated points with a radius, named in a scene, the tree the checker's sphere queries and certified motion's distance bounds walk, and the affordances that answer the contacts of the robot's spheres faster |
 //! | [`MbmProblem`] | a MotionBenchMaker scene + request pair |
 //! | [`MovingObstacle`], [`MovingScene`] | boxes going back and forth along lines; a scene at a time or swept over an interval (the re-planning experiment) |
 //! | [`ArmChecker`] | the collision checker: joint limits, scene and self-collision with broad phases, one-sided (a margin covers `f32` rounding), and certified motion (every configuration of an edge, not only grid points) |
@@ -75,7 +75,7 @@ pub use cloud_input::{
     read_cloud, remove_robot_points, sample_obstacle_surface, sample_surfaces, voxel_downsample,
     write_npy, write_ply,
 };
-pub use clouds::{CloudError, CloudObstacle, PointCloud, PointTree};
+pub use clouds::{AffordanceTree, CloudError, CloudObstacle, PointCloud, PointTree};
 pub use inverse_kinematics::{
     IkError, IkSolution, IkSolver, OrientationTolerance, PoseGoal, PoseTarget, PositionTolerance,
 };

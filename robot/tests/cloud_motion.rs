@@ -119,6 +119,35 @@ proptest! {
         prop_assert!(invalid < 64);
     }
 
+    /// A checker among a cloud with affordances (for the Panda's largest sphere) decides
+    /// every state as one among the same cloud without: one at a time (one lane, answered
+    /// by the affordances), in batches (the tree) and the first invalid of a batch.
+    #[test]
+    fn affordances_change_no_state_decision(
+        boxes in 1..5_usize,
+        density in 50..800_usize,
+        seed in any::<u64>(),
+    ) {
+        let robot = panda();
+        let points = box_cloud(boxes, density, seed);
+        let plain = ArmChecker::new(&robot, &cloud_scene(points.clone()));
+        let cloud = PointCloud::new(points).unwrap();
+        let afforded = Scene::new(vec![])
+            .with_cloud(CloudObstacle::new("camera", cloud).with_affordances(0.0801));
+        prop_assert!(afforded.clouds()[0].affordances().is_some());
+        let fast = ArmChecker::new(&robot, &afforded);
+        let mut rng = <SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(seed);
+        let states: Vec<f64> = (0..48).flat_map(|_| random_state(&robot, &mut rng)).collect();
+        let (mut a, mut b) = (vec![false; 48], vec![false; 48]);
+        plain.are_valid(&states, 7, &mut a);
+        fast.are_valid(&states, 7, &mut b);
+        prop_assert_eq!(&a, &b);
+        for (q, &expected) in states.chunks(7).zip(&a) {
+            prop_assert_eq!(fast.is_valid(q), expected, "{:?}", q);
+        }
+        prop_assert_eq!(fast.first_invalid(&states, 7), plain.first_invalid(&states, 7));
+    }
+
     /// Certified edges among a random cloud (planner-free): the independent audit (`f64`,
     /// every point, continuous) finds no configuration of them within a point's radius of a
     /// point, and measures every sphere clear of every point's ball by half the checker's

@@ -15,6 +15,7 @@ mod batch_size_on_arms;
 mod batches;
 mod budget_cover;
 mod certified_motion;
+mod cloud_affordances;
 mod cloud_input_hostile;
 mod cloud_input_properties;
 mod cloud_motion;

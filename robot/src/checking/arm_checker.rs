@@ -681,11 +681,17 @@ fn invalid_filled(
         } else {
             test_each!(list);
         }
-        // Point clouds: the link's bounding sphere first, then its spheres, each a walk of the
-        // cloud's tree for the lanes still undecided.
+        // Point clouds: the link's bounding sphere first, then its spheres, each a query of
+        // the cloud for the lanes still undecided (the bound skipped where the cloud's
+        // affordances answer the spheres but not the bound).
         for &cloud in &s.reachable_clouds[k] {
             let cloud = &s.clouds[cloud];
-            if active == 0 || cloud.touches_lanes(&bounding, bound, active) == 0 {
+            if active == 0 {
+                break;
+            }
+            if cloud.worth_bounding(bound.to_array()[0], active)
+                && cloud.touches_lanes(&bounding, bound, active) == 0
+            {
                 continue;
             }
             if !placed[k] {

@@ -47,8 +47,9 @@ const POLL_NODES: usize = 1 << 12;
 ///
 /// This is our own structure, written from reading VAMP's CAPT (Ramsey et al., RSS 2024),
 /// which precomputes per leaf of a kd-tree the points a sphere of the robot's radii could
-/// touch; we keep the plain tree (no precomputed affordance sets, so memory stays small and
-/// any radius can be asked), and answer distances as well as booleans.
+/// touch; the plain tree keeps memory small, answers any radius, distances as well as
+/// booleans, and a batch of lanes in one walk. The precomputed sets are the
+/// [`AffordanceTree`](crate::AffordanceTree), which a cloud obstacle may add beside it.
 #[derive(Debug, Clone)]
 pub struct PointTree {
     xs: Vec<f32>,
@@ -118,6 +119,13 @@ impl PointTree {
             order: items.iter().map(|&(_, i)| i).collect(),
             boxes,
         })
+    }
+
+    /// The points, in the tree's order.
+    pub(crate) fn points(&self) -> Vec<Vec3> {
+        (0..self.len())
+            .map(|j| Vec3::new(self.xs[j], self.ys[j], self.zs[j]))
+            .collect()
     }
 
     /// How many points.
@@ -319,6 +327,31 @@ impl PointTree {
         best.sqrt() * LaneF32::splat(LOWER)
     }
 
+    /// Appends to `out` every point whose squared distance to the box `cell`
+    /// (`[min x, min y, min z, max x, max y, max z]`, infinite sides allowed) is at most `r2`
+    /// in `f32`: a walk skipping the nodes whose boxes are farther (never computed nearer than
+    /// their points, so none is missed).
+    pub(crate) fn points_near_box(&self, cell: &[f32; 6], r2: f32, out: &mut Vec<Vec3>) {
+        let mut walk = Walk::new(self.len());
+        while let Some((node, lo, hi)) = walk.pop() {
+            if box_box_squared(&self.boxes[node], cell) > r2 {
+                continue;
+            }
+            if hi - lo <= LEAF {
+                for j in lo..hi {
+                    let p = Vec3::new(self.xs[j], self.ys[j], self.zs[j]);
+                    if box_distance_squared(cell, p) <= r2 {
+                        out.push(p);
+                    }
+                }
+                continue;
+            }
+            let mid = lo + (hi - lo) / 2;
+            walk.push(2 * node + 2, mid, hi);
+            walk.push(2 * node + 1, lo, mid);
+        }
+    }
+
     #[inline(always)]
     fn distance_lanes(&self, j: usize, [x, y, z]: &[LaneF32; 3]) -> LaneF32 {
         let dx = *x - LaneF32::splat(self.xs[j]);
@@ -344,6 +377,16 @@ fn box_distance_squared(b: &[f32; 6], c: Vec3) -> f32 {
     let dx = (b[0] - c.x).max(c.x - b[3]).max(0.0);
     let dy = (b[1] - c.y).max(c.y - b[4]).max(0.0);
     let dz = (b[2] - c.z).max(c.z - b[5]).max(0.0);
+    dx * dx + dy * dy + dz * dz
+}
+
+/// The squared distance between two boxes (0 if they meet), never above the squared
+/// distance from a point of `a` to the box `b`.
+#[inline(always)]
+fn box_box_squared(a: &[f32; 6], b: &[f32; 6]) -> f32 {
+    let dx = (b[0] - a[3]).max(a[0] - b[3]).max(0.0);
+    let dy = (b[1] - a[4]).max(a[1] - b[4]).max(0.0);
+    let dz = (b[2] - a[5]).max(a[2] - b[5]).max(0.0);
     dx * dx + dy * dy + dz * dz
 }
 
