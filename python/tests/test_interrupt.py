@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import _thread
+import signal
 import threading
 import time
 
@@ -10,6 +11,16 @@ import numpy as np
 import pytest
 
 import mit_star
+
+
+@pytest.fixture(autouse=True)
+def python_handles_ctrl_c():
+    """Python's own SIGINT handler, as at a terminal. A process started in the background by a
+    non-interactive shell inherits SIGINT ignored, and Python then leaves it ignored: Ctrl-C
+    (and `_thread.interrupt_main`) would do nothing, whatever the planner does."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
 
 
 def interrupt_after(seconds: float) -> threading.Timer:
