@@ -70,7 +70,7 @@ const SPACING: f64 = 0.9;
 const POLL_BATCHES: u32 = 4;
 
 /// Buffers of the walk, per clone of the checker.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub(crate) struct CertifyScratch {
     /// The edge's joint displacements (the short way round for wrapping joints).
     delta: Vec<f64>,
@@ -91,6 +91,14 @@ impl CertifyScratch {
             pair_sweep: vec![0.0; pairs],
             terms: EdgeTerms::default(),
         }
+    }
+}
+
+impl Clone for CertifyScratch {
+    /// New buffers of the same sizes, as [`new`](Self::new) makes them: every walk writes
+    /// what it reads, so the contents are not worth copying.
+    fn clone(&self) -> Self {
+        Self::new(self.delta.len(), self.sweep.len(), self.pair_sweep.len())
     }
 }
 

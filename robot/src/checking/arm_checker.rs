@@ -91,7 +91,7 @@ pub(crate) struct Scratch {
 /// The lane checks' buffers: link poses, sphere centres, link bounding-sphere centres
 /// (and whether a link's sphere centres are placed for the current batch), joint values by
 /// coordinate.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub(crate) struct LaneScratch {
     pub(crate) lane_poses: Vec<LanePose>,
     pub(crate) lane_centers: Vec<LanePoint>,
@@ -106,6 +106,45 @@ pub(crate) struct LaneScratch {
     /// The obstacles a link's grid returned (indices into its reachable list), with room for
     /// the longest list that has a grid: a query never allocates.
     pub(crate) candidates: Candidates,
+}
+
+impl LaneScratch {
+    /// Buffers for `links` links, `spheres` spheres, `entries` links with spheres and
+    /// `dimension` joints, with room for `candidates` obstacles from a grid.
+    fn new(
+        links: usize,
+        spheres: usize,
+        entries: usize,
+        dimension: usize,
+        candidates: usize,
+    ) -> Self {
+        Self {
+            lane_poses: vec![LanePose::IDENTITY; links],
+            lane_centers: vec![[LaneF32::ZERO; 3]; spheres],
+            lane_bounds: vec![[LaneF32::ZERO; 3]; entries],
+            placed: vec![false; entries],
+            lane_q: vec![LaneF32::ZERO; dimension],
+            last_hit: usize::MAX,
+            candidates: Candidates::with_capacity(candidates),
+        }
+    }
+}
+
+impl Clone for LaneScratch {
+    /// New buffers of the same sizes, as [`new`](Self::new) makes them, not copies: a check
+    /// writes every buffer before it reads it, so copying the contents (about 25 KB on the
+    /// Panda at sixteen lanes) would only cost time — and it did: building a planner clones
+    /// its problem's checker, and the copy of this scratch, cold in cache, was six tenths of
+    /// RRT-Connect's construction.
+    fn clone(&self) -> Self {
+        Self::new(
+            self.lane_poses.len(),
+            self.lane_centers.len(),
+            self.lane_bounds.len(),
+            self.lane_q.len(),
+            self.candidates.0.capacity(),
+        )
+    }
 }
 
 /// Smallest growth of the spheres in every test, in metres: covers the `f32` rounding of the
@@ -265,15 +304,13 @@ impl ArmChecker {
             .collect();
         let longest = grids.iter().flatten().map(ObstacleGrid::len).max();
         let scratch = Scratch {
-            lanes: LaneScratch {
-                lane_poses: vec![LanePose::IDENTITY; fk.link_count()],
-                lane_centers: vec![[LaneF32::ZERO; 3]; fk.sphere_count()],
-                lane_bounds: vec![[LaneF32::ZERO; 3]; links.len()],
-                placed: vec![false; links.len()],
-                lane_q: vec![LaneF32::ZERO; dimension],
-                last_hit: usize::MAX,
-                candidates: Candidates::with_capacity(longest.unwrap_or(0)),
-            },
+            lanes: LaneScratch::new(
+                fk.link_count(),
+                fk.sphere_count(),
+                links.len(),
+                dimension,
+                longest.unwrap_or(0),
+            ),
             certify: crate::checking::arm_certification::CertifyScratch::new(
                 dimension,
                 links.len(),
