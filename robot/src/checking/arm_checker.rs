@@ -132,7 +132,7 @@ impl LaneScratch {
 
 impl Clone for LaneScratch {
     /// New buffers of the same sizes, as [`new`](Self::new) makes them, not copies: a check
-    /// writes every buffer before it reads it, so copying the contents (about 25 KB on the
+    /// writes every buffer before it reads it, so copying the contents (about 23 KB on the
     /// Panda at sixteen lanes) would only cost time — and it did: building a planner clones
     /// its problem's checker, and the copy of this scratch, cold in cache, was six tenths of
     /// RRT-Connect's construction.
