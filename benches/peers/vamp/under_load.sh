@@ -62,7 +62,8 @@ stop_load() {
   wait "$loader" 2> /dev/null || true
   loader=""
 }
-trap stop_load EXIT
+# The build loops' target folders are scratch (hundreds of MB each): gone at the end.
+trap 'stop_load; rm -rf "$OUT"/load-target-*' EXIT
 
 # Busy share of CPU LOAD_CPU between two reads of /proc/stat.
 cpu_ticks() { awk -v c="cpu$LOAD_CPU" '$1 == c { idle = $5 + $6; t = 0; for (i = 2; i <= NF; i++) t += $i; print t, idle }' /proc/stat; }

@@ -75,6 +75,12 @@ def read(folder, scenes):
     return m, per_run
 
 
+def dashes(row):
+    """A table row with "–" where a measure has no data (the loop's two missing scenes, a run
+    without LOOP)."""
+    return row.replace("nan×", "–").replace("nan", "–")
+
+
 def median_of_medians(measure, scene):
     v = [st.median(x) for k, x in measure.items() if scene == "all" or k[0] == scene]
     return (st.median(v), p95(v)) if v else (math.nan, math.nan)
@@ -108,9 +114,9 @@ def main():
             loop_vamp = median_of_medians(
                 {k: x for k, x in m["vamp"].items()
                  if any(key[0] == k[0] for key in m["loop"])}, s)[0]
-            print(f"| {s} | {v:.0f} ({vp:.0f}) | {o:.0f} ({op:.0f}) | {c:.0f} ({cp:.0f}) "
-                  f"| {o / v:.2f}× | {c / v:.2f}× | {setup:.0f} | {audit:.0f} | {wall:.0f} "
-                  f"| {loop:.0f} | {loop / loop_vamp:.2f}× |")
+            print(dashes(f"| {s} | {v:.0f} ({vp:.0f}) | {o:.0f} ({op:.0f}) | {c:.0f} ({cp:.0f}) "
+                         f"| {o / v:.2f}× | {c / v:.2f}× | {setup:.0f} | {audit:.0f} | {wall:.0f} "
+                         f"| {loop:.0f} | {loop / loop_vamp:.2f}× |"))
         print()
     for loaded in (c for c in conditions if c != "idle" and "idle" in data):
         print(f"### {loaded} / idle: how much each side slows down")
@@ -122,7 +128,7 @@ def main():
                 idle = median_of_medians(data["idle"][0][key], s)[0]
                 load = median_of_medians(data[loaded][0][key], s)[0]
                 row.append(f"{load / idle:.2f}×")
-            print(f"| {s} | " + " | ".join(row) + " |")
+            print(dashes(f"| {s} | " + " | ".join(row) + " |"))
         print()
     unsolved = {c: sum(1 for d in (out / c).glob("ours_*/*/runs.csv")
                        for r in csv.DictReader(open(d)) if r["success"] != "true")
