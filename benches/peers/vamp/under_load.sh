@@ -11,7 +11,7 @@
 # session at the highest priority, under each condition:
 # - idle: nothing else runs;
 # - busy: a loop compiles this workspace from scratch on the other CPU (`cargo build --release
-#   -j1` into OUT/load-target, pinned to CPU ${LOAD_CPU:-1} at normal priority), as the issue
+#   -j1` into OUT/load-target-busy, pinned to CPU ${LOAD_CPU:-1} at normal priority), as the issue
 #   asks: a developer's build beside the planner;
 # - crowded: the same loop with `-j4` and no pinning, so that compilers also share the planner's
 #   CPU (a load average near 4 on two CPUs, as on a machine running perception, control and
@@ -25,9 +25,10 @@
 # of the five scenes `arm_profile` knows, pinned like the others: it tells the planner's own
 # sensitivity from the harness's (the audit and recording between two runs).
 #
-# Then `under_load_table.py OUT` prints, per scene and pooled, each side's median under both
-# conditions, how much each slows down under load, and our time outside the solve
-# (construction, audit, recording) apart.
+# Then `under_load_table.py OUT` prints, per scene and pooled, each side's median under each
+# condition, how much each slows down under each load, and our time outside the solve
+# (construction, audit, the bench process's wall time per run) apart. The build loops' target
+# folders are removed at the end.
 set -euo pipefail
 OUT=${1:?usage: under_load.sh OUT}
 : "${W:?set W to the VAMP work folder}" "${BIN:?set BIN to the mit-star binary}" "${MBM:?set MBM}"
