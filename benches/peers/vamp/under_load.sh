@@ -14,7 +14,7 @@
 #   -j1` into OUT/load-target-busy, pinned to CPU ${LOAD_CPU:-1} at normal priority), as the issue
 #   asks: a developer's build beside the planner;
 # - crowded: the same loop with `-j4` and no pinning, so that compilers also share the planner's
-#   CPU (a load average near 4 on two CPUs, as on a machine running perception, control and
+#   CPU (a load average about 3 on two CPUs, as on a machine running perception, control and
 #   logging beside the planner).
 # The conditions and the sides alternate from round to round so that drift on the machine hits
 # all alike. A build loop is started before a round's first run and stopped after its last;
