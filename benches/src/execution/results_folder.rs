@@ -273,6 +273,9 @@ impl ResultsFolder {
             let _ = std::fs::remove_file(stale);
         }
         let mut database = PlannerArenaDatabase::open(&fresh)?;
+        // One transaction for every instance (a file left unfinished by an error is never
+        // renamed into place).
+        database.begin()?;
         for (index, instance) in results.instances.iter().enumerate() {
             if results.runs[index].is_empty() {
                 continue;
@@ -283,6 +286,7 @@ impl ResultsFolder {
             files.push(path);
             database.insert(&log)?;
         }
+        database.commit()?;
         drop(database);
         let target = self.path.join(DATABASE_FILE);
         std::fs::rename(&fresh, &target).map_err(|source| HarnessError::Io {

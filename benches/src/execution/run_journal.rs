@@ -32,7 +32,7 @@ pub const DATABASE_COMMIT_INTERVAL: Duration = Duration::from_secs(10);
 /// job's time limit loses at most the runs in flight.
 ///
 /// The Planner Arena database follows in batches: the runs appended since the last commit go
-/// to it together, one transaction per instance (its experiment row created by its first run,
+/// to it together, in one transaction (each instance's experiment row created by its first run,
 /// or continued if an earlier `bench` created it, and its `runcount` kept to the runs
 /// recorded), when [`DATABASE_COMMIT_INTERVAL`] has passed since the last commit (or the
 /// interval [`commit_every`](Self::commit_every) sets). A transaction between two runs leaves
@@ -285,18 +285,27 @@ impl RunJournal {
         Ok(())
     }
 
-    /// Commits the runs appended since the last commit to the database now, one transaction
-    /// per instance.
+    /// Commits the runs appended since the last commit to the database now, in one
+    /// transaction (a few disk syncs, however many instances the runs are on).
     ///
     /// # Errors
-    /// [`HarnessError::Database`].
+    /// [`HarnessError::Database`] (nothing of these runs is in the database then; the raw
+    /// files hold them, and the database is rebuilt from those when `bench` ends or resumes).
     pub fn commit(&mut self, results: &ExperimentResults) -> Result<(), HarnessError> {
         let mut by_instance: BTreeMap<usize, Vec<RunRecord>> = BTreeMap::new();
         for (index, record) in std::mem::take(&mut self.uncommitted) {
             by_instance.entry(index).or_default().push(record);
         }
-        for (index, records) in by_instance {
-            self.commit_instance(results, index, &records)?;
+        self.database.begin()?;
+        let written = by_instance
+            .into_iter()
+            .try_for_each(|(index, records)| self.commit_instance(results, index, &records))
+            .and_then(|()| self.database.commit());
+        if let Err(e) = written {
+            self.database.rollback();
+            // Rows and counts remembered from the rolled-back writes are not in the database.
+            self.experiments.clear();
+            return Err(e);
         }
         self.committed_at = Instant::now();
         Ok(())
@@ -330,8 +339,8 @@ impl RunJournal {
         Ok(())
     }
 
-    /// Commits `records`, runs on instance `index`, to the database under the instance's
-    /// experiment row, in one transaction.
+    /// Writes `records`, runs on instance `index`, to the database under the instance's
+    /// experiment row (inside [`commit`](Self::commit)'s transaction).
     fn commit_instance(
         &mut self,
         results: &ExperimentResults,
@@ -697,6 +706,37 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(message.contains("holds 1 runs"), "{message}");
+        let _ = std::fs::remove_dir_all(&folder);
+    }
+
+    #[test]
+    fn a_transaction_keeps_its_writes_together() {
+        let (folder, results) = setup("transaction");
+        let mut database = PlannerArenaDatabase::open(&folder.join(DATABASE_FILE)).unwrap();
+        let mut one = results.clone();
+        one.runs[0].push(record(&results, 0, 0));
+        let log = BenchmarkLog::from_results(&one, 0);
+        database.begin().unwrap();
+        let id = database.insert(&log).unwrap();
+        database.append_runs(id, &log, 2, 1.0).unwrap();
+        database.insert(&log).unwrap();
+        database.rollback();
+        assert_eq!(database.count("experiments").unwrap(), 0);
+        assert_eq!(database.count("runs").unwrap(), 0);
+        database.begin().unwrap();
+        let id = database.insert(&log).unwrap();
+        database.append_runs(id, &log, 2, 1.0).unwrap();
+        database.insert(&log).unwrap();
+        assert!(database.begin().is_err(), "a transaction is already open");
+        database.commit().unwrap();
+        assert_eq!(database.count("experiments").unwrap(), 2);
+        assert_eq!(database.count("runs").unwrap(), 3);
+        // Outside a transaction each write is its own.
+        database.insert(&log).unwrap();
+        drop(database);
+        let database = PlannerArenaDatabase::open(&folder.join(DATABASE_FILE)).unwrap();
+        assert_eq!(database.count("experiments").unwrap(), 3);
+        assert_eq!(database.count("runs").unwrap(), 4);
         let _ = std::fs::remove_dir_all(&folder);
     }
 

@@ -75,7 +75,15 @@ impl PlannerArenaDatabase {
         connection
             .execute_batch("PRAGMA foreign_keys = ON;")
             .map_err(fail)?;
-        connection.execute_batch(SCHEMA).map_err(fail)?;
+        // The tables in one transaction: one set of disk syncs, not one per table.
+        connection
+            .execute_batch(&format!("BEGIN; {SCHEMA} COMMIT;"))
+            .map_err(|e| {
+                if !connection.is_autocommit() {
+                    let _ = connection.execute_batch("ROLLBACK");
+                }
+                fail(e)
+            })?;
         Ok(Self {
             path: path.to_path_buf(),
             connection,
@@ -122,35 +130,84 @@ impl PlannerArenaDatabase {
         Ok(names)
     }
 
-    /// Adds `column` of SQL type `kind` to `table` unless it exists.
-    fn ensure_column(&self, table: &str, column: &str, kind: &str) -> Result<(), rusqlite::Error> {
-        if !self.columns(table)?.iter().any(|c| c == column) {
-            self.connection.execute(
-                &format!("ALTER TABLE \"{table}\" ADD \"{column}\" {kind}"),
-                [],
-            )?;
+    /// Adds to `table` each `(column, SQL type)` it lacks, in the order given (its columns
+    /// read once).
+    fn ensure_columns<'k>(
+        &self,
+        table: &str,
+        wanted: impl IntoIterator<Item = (String, &'k str)>,
+    ) -> Result<(), rusqlite::Error> {
+        let mut have = self.columns(table)?;
+        for (column, kind) in wanted {
+            if !have.contains(&column) {
+                self.connection.execute(
+                    &format!("ALTER TABLE \"{table}\" ADD \"{column}\" {kind}"),
+                    [],
+                )?;
+                have.push(column);
+            }
         }
         Ok(())
     }
 
-    /// Appends one log (one experiment) in a single transaction; returns the new experiment's
-    /// id.
+    /// Appends one log (one experiment) atomically — its own transaction, or part of the one
+    /// [`begin`](Self::begin) opened; returns the new experiment's id.
     ///
     /// # Errors
-    /// [`HarnessError::Database`] if SQLite refuses (nothing is written then).
+    /// [`HarnessError::Database`] if SQLite refuses (nothing of the log is written then).
     pub fn insert(&mut self, log: &BenchmarkLog) -> Result<i64, HarnessError> {
+        self.atomically(|| self.insert_inner(log))
+    }
+
+    /// Opens a transaction that the writes up to [`commit`](Self::commit) join, so that they
+    /// reach the disk together: SQLite syncs the file three or four times per transaction,
+    /// and a results folder's hundreds of instances committed one transaction each made
+    /// hundreds of syncs, each a wait on a disk that other programs keep busy.
+    ///
+    /// # Errors
+    /// [`HarnessError::Database`] if a transaction is already open or SQLite refuses.
+    pub(crate) fn begin(&mut self) -> Result<(), HarnessError> {
         self.connection
             .execute_batch("BEGIN")
+            .map_err(|e| self.fail(e))
+    }
+
+    /// Commits the transaction [`begin`](Self::begin) opened; if that fails, rolls it back.
+    ///
+    /// # Errors
+    /// [`HarnessError::Database`] if SQLite refuses (nothing of the transaction is written
+    /// then).
+    pub(crate) fn commit(&mut self) -> Result<(), HarnessError> {
+        self.connection.execute_batch("COMMIT").map_err(|e| {
+            self.rollback();
+            self.fail(e)
+        })
+    }
+
+    /// Rolls back the transaction [`begin`](Self::begin) opened (nothing if none is open).
+    pub(crate) fn rollback(&mut self) {
+        if !self.connection.is_autocommit() {
+            let _ = self.connection.execute_batch("ROLLBACK");
+        }
+    }
+
+    /// Runs `work` under a savepoint: its writes are kept together or not at all, as a
+    /// transaction of its own or inside an open one.
+    fn atomically<T>(
+        &self,
+        work: impl FnOnce() -> Result<T, rusqlite::Error>,
+    ) -> Result<T, HarnessError> {
+        let c = &self.connection;
+        c.execute_batch("SAVEPOINT arena_write")
             .map_err(|e| self.fail(e))?;
-        match self.insert_inner(log) {
-            Ok(id) => {
-                self.connection
-                    .execute_batch("COMMIT")
+        match work() {
+            Ok(value) => {
+                c.execute_batch("RELEASE arena_write")
                     .map_err(|e| self.fail(e))?;
-                Ok(id)
+                Ok(value)
             }
             Err(e) => {
-                let _ = self.connection.execute_batch("ROLLBACK");
+                let _ = c.execute_batch("ROLLBACK TO arena_write; RELEASE arena_write");
                 Err(self.fail(e))
             }
         }
@@ -208,9 +265,12 @@ impl PlannerArenaDatabase {
             .map(|p| (p.name.replace('-', "_"), p))
             .collect();
         properties.sort_by(|a, b| a.0.cmp(&b.0));
-        for (column, p) in &properties {
-            self.ensure_column("experiments", column, p.kind.word())?;
-        }
+        self.ensure_columns(
+            "experiments",
+            properties
+                .iter()
+                .map(|(column, p)| (column.clone(), p.kind.word())),
+        )?;
         for p in &log.properties {
             names.push(p.name.replace('-', "_"));
             values.push(sql(&p.value));
@@ -268,12 +328,12 @@ impl PlannerArenaDatabase {
         Ok(Some((id, counts)))
     }
 
-    /// Appends the runs of `log` to the existing experiment `experiment` in one transaction
-    /// and sets its `runcount` and `totaltime` — how a results folder's journal commits a batch
-    /// of finished runs.
+    /// Appends the runs of `log` to the existing experiment `experiment` and sets its
+    /// `runcount` and `totaltime`, atomically (as [`insert`](Self::insert)) — how a results
+    /// folder's journal commits a batch of finished runs.
     ///
     /// # Errors
-    /// [`HarnessError::Database`] if SQLite refuses (nothing is written then).
+    /// [`HarnessError::Database`] if SQLite refuses (nothing of the log is written then).
     pub fn append_runs(
         &mut self,
         experiment: i64,
@@ -281,27 +341,15 @@ impl PlannerArenaDatabase {
         run_count: usize,
         total_time: f64,
     ) -> Result<(), HarnessError> {
-        self.connection
-            .execute_batch("BEGIN")
-            .map_err(|e| self.fail(e))?;
-        let result = self.insert_planners(experiment, log).and_then(|()| {
+        self.atomically(|| {
+            self.insert_planners(experiment, log)?;
             self.connection
                 .execute(
                     "UPDATE experiments SET runcount = ?1, totaltime = ?2 WHERE id = ?3",
                     rusqlite::params![run_count as i64, total_time, experiment],
                 )
                 .map(|_| ())
-        });
-        match result {
-            Ok(()) => self
-                .connection
-                .execute_batch("COMMIT")
-                .map_err(|e| self.fail(e)),
-            Err(e) => {
-                let _ = self.connection.execute_batch("ROLLBACK");
-                Err(self.fail(e))
-            }
-        }
+        })
     }
 
     /// Inserts the planner configurations, runs and progress samples of `log` under
@@ -328,32 +376,40 @@ impl PlannerArenaDatabase {
                 }
             };
             let mut columns = vec!["experimentid".to_owned(), "plannerid".to_owned()];
-            for p in &planner.run_properties {
-                self.ensure_column("runs", &p.column(), p.kind.word())?;
-                columns.push(p.column());
-            }
-            let run_sql = insert("runs", &columns);
+            self.ensure_columns(
+                "runs",
+                planner
+                    .run_properties
+                    .iter()
+                    .map(|p| (p.column(), p.kind.word())),
+            )?;
+            columns.extend(planner.run_properties.iter().map(|p| p.column()));
+            let mut insert_run = c.prepare_cached(&insert("runs", &columns))?;
             let mut run_ids = Vec::with_capacity(planner.runs.len());
             for run in &planner.runs {
                 let mut row = vec![Value::Integer(experiment), Value::Integer(planner_id)];
                 row.extend(run.iter().map(sql));
-                c.execute(&run_sql, params_from_iter(row))?;
+                insert_run.execute(params_from_iter(row))?;
                 run_ids.push(c.last_insert_rowid());
             }
             if planner.progress_properties.is_empty() {
                 continue;
             }
             let mut columns = vec!["runid".to_owned()];
-            for p in &planner.progress_properties {
-                self.ensure_column("progress", &p.column(), p.kind.word())?;
-                columns.push(p.column());
-            }
-            let progress_sql = insert("progress", &columns);
+            self.ensure_columns(
+                "progress",
+                planner
+                    .progress_properties
+                    .iter()
+                    .map(|p| (p.column(), p.kind.word())),
+            )?;
+            columns.extend(planner.progress_properties.iter().map(|p| p.column()));
+            let mut insert_progress = c.prepare_cached(&insert("progress", &columns))?;
             for (run_id, samples) in run_ids.iter().zip(&planner.progress) {
                 for sample in samples {
                     let mut row = vec![Value::Integer(*run_id)];
                     row.extend(sample.iter().map(sql));
-                    c.execute(&progress_sql, params_from_iter(row))?;
+                    insert_progress.execute(params_from_iter(row))?;
                 }
             }
         }
