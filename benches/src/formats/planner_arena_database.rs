@@ -159,14 +159,15 @@ impl PlannerArenaDatabase {
         self.atomically(|| self.insert_inner(log))
     }
 
-    /// Opens a transaction that the writes up to [`commit`](Self::commit) join, so that they
-    /// reach the disk together: SQLite syncs the file three or four times per transaction,
-    /// and a results folder's hundreds of instances committed one transaction each made
-    /// hundreds of syncs, each a wait on a disk that other programs keep busy.
+    /// Opens a transaction that the [`insert`](Self::insert)s and
+    /// [`append_runs`](Self::append_runs) up to [`commit`](Self::commit) join, so that they
+    /// reach the disk together. SQLite syncs the file three or four times per transaction:
+    /// hundreds of logs inserted one by one wait that many times on the disk, which other
+    /// programs may keep busy (a results folder's database is written this way).
     ///
     /// # Errors
     /// [`HarnessError::Database`] if a transaction is already open or SQLite refuses.
-    pub(crate) fn begin(&mut self) -> Result<(), HarnessError> {
+    pub fn begin(&mut self) -> Result<(), HarnessError> {
         self.connection
             .execute_batch("BEGIN")
             .map_err(|e| self.fail(e))
@@ -177,7 +178,7 @@ impl PlannerArenaDatabase {
     /// # Errors
     /// [`HarnessError::Database`] if SQLite refuses (nothing of the transaction is written
     /// then).
-    pub(crate) fn commit(&mut self) -> Result<(), HarnessError> {
+    pub fn commit(&mut self) -> Result<(), HarnessError> {
         self.connection.execute_batch("COMMIT").map_err(|e| {
             self.rollback();
             self.fail(e)
@@ -185,7 +186,7 @@ impl PlannerArenaDatabase {
     }
 
     /// Rolls back the transaction [`begin`](Self::begin) opened (nothing if none is open).
-    pub(crate) fn rollback(&mut self) {
+    pub fn rollback(&mut self) {
         if !self.connection.is_autocommit() {
             let _ = self.connection.execute_batch("ROLLBACK");
         }
