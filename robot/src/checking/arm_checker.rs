@@ -719,16 +719,20 @@ fn invalid_filled(
             test_each!(list);
         }
         // Point clouds: the link's bounding sphere first, then its spheres, each a query of
-        // the cloud for the lanes still undecided (the bound skipped where the cloud's
-        // affordances answer the spheres but not the bound).
+        // the cloud for the lanes still undecided whose bound meets a point (the bound's
+        // answer is exact per lane; skipped where the cloud's affordances answer the spheres
+        // but not the bound).
         for &cloud in &s.reachable_clouds[k] {
             let cloud = &s.clouds[cloud];
             if active == 0 {
                 break;
             }
-            if cloud.worth_bounding(bound.to_array()[0], active)
-                && cloud.touches_lanes(&bounding, bound, active) == 0
-            {
+            let touched = if cloud.worth_bounding(bound.to_array()[0], active) {
+                cloud.touches_lanes(&bounding, bound, active)
+            } else {
+                active
+            };
+            if touched == 0 {
                 continue;
             }
             if !placed[k] {
@@ -739,7 +743,11 @@ fn invalid_filled(
                 .iter()
                 .zip(&s.spheres[range.clone()])
             {
-                let hit = cloud.touches_lanes(c, LaneF32::splat(sphere.1) + grown, active);
+                let open = active & touched;
+                if open == 0 {
+                    break;
+                }
+                let hit = cloud.touches_lanes(c, LaneF32::splat(sphere.1) + grown, open);
                 if hit != 0 {
                     invalid |= hit;
                     active = undecided(invalid);

@@ -233,18 +233,20 @@ pub(crate) fn certified_radii(
                 .zip(s.spheres[range.clone()].iter().zip(reaches))
             {
                 // The sphere's ball is no nearer the cloud than the bounding centre's bound
-                // less its extent: clear by `limit` in every lane, it cannot lower the radius.
-                if lower
+                // less its extent: clear by `limit` in a lane, it cannot lower the radius
+                // there, so the walk follows only the other lanes (the rest get a value
+                // between their true distance and the limit: not below `limit + keep`,
+                // which changes neither the radius nor the refusal).
+                let near = lower
                     .simd_lt(limit + keep + LaneF32::splat(extent))
                     .to_bitmask()
-                    & live
-                    == 0
-                {
+                    & live;
+                if near == 0 {
                     continue;
                 }
                 let own = LaneF32::splat(sphere.1);
                 let gap =
-                    cloud.distance_lower_bounds_lanes(c, limit + keep + own + floor, live) - own;
+                    cloud.distance_lower_bounds_lanes(c, limit + keep + own + floor, near) - own;
                 nearest = nearest.min(gap);
                 let clear = gap - keep;
                 if clear.simd_lt(limit).to_bitmask() & live == 0 {
