@@ -5,11 +5,11 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use rusqlite::types::Value;
-use rusqlite::{Connection, OptionalExtension as _, params_from_iter};
+use rusqlite::{CachedStatement, Connection, OptionalExtension as _, params_from_iter};
 
 use crate::error::HarnessError;
 use crate::formats::ompl_log::benchmark_log::BenchmarkLog;
-use crate::formats::ompl_log::log_value::LogValue;
+use crate::formats::ompl_log::log_value::{LogValue, Property};
 
 /// The tables, exactly as OMPL's log reader creates them.
 const SCHEMA: &str = "
@@ -353,6 +353,26 @@ impl PlannerArenaDatabase {
         })
     }
 
+    /// The statement inserting a row of `table` (prepared once per connection): the `leading`
+    /// columns, then one per property, each added to the table if it lacks it.
+    fn row_insert(
+        &self,
+        table: &str,
+        leading: &[&str],
+        properties: &[Property],
+    ) -> Result<CachedStatement<'_>, rusqlite::Error> {
+        self.ensure_columns(
+            table,
+            properties.iter().map(|p| (p.column(), p.kind.word())),
+        )?;
+        let columns: Vec<String> = leading
+            .iter()
+            .map(|&c| c.to_owned())
+            .chain(properties.iter().map(Property::column))
+            .collect();
+        self.connection.prepare_cached(&insert(table, &columns))
+    }
+
     /// Inserts the planner configurations, runs and progress samples of `log` under
     /// `experiment`.
     fn insert_planners(&self, experiment: i64, log: &BenchmarkLog) -> Result<(), rusqlite::Error> {
@@ -376,16 +396,11 @@ impl PlannerArenaDatabase {
                     c.last_insert_rowid()
                 }
             };
-            let mut columns = vec!["experimentid".to_owned(), "plannerid".to_owned()];
-            self.ensure_columns(
+            let mut insert_run = self.row_insert(
                 "runs",
-                planner
-                    .run_properties
-                    .iter()
-                    .map(|p| (p.column(), p.kind.word())),
+                &["experimentid", "plannerid"],
+                &planner.run_properties,
             )?;
-            columns.extend(planner.run_properties.iter().map(|p| p.column()));
-            let mut insert_run = c.prepare_cached(&insert("runs", &columns))?;
             let mut run_ids = Vec::with_capacity(planner.runs.len());
             for run in &planner.runs {
                 let mut row = vec![Value::Integer(experiment), Value::Integer(planner_id)];
@@ -396,16 +411,8 @@ impl PlannerArenaDatabase {
             if planner.progress_properties.is_empty() {
                 continue;
             }
-            let mut columns = vec!["runid".to_owned()];
-            self.ensure_columns(
-                "progress",
-                planner
-                    .progress_properties
-                    .iter()
-                    .map(|p| (p.column(), p.kind.word())),
-            )?;
-            columns.extend(planner.progress_properties.iter().map(|p| p.column()));
-            let mut insert_progress = c.prepare_cached(&insert("progress", &columns))?;
+            let mut insert_progress =
+                self.row_insert("progress", &["runid"], &planner.progress_properties)?;
             for (run_id, samples) in run_ids.iter().zip(&planner.progress) {
                 for sample in samples {
                     let mut row = vec![Value::Integer(*run_id)];
