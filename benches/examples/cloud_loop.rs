@@ -20,21 +20,12 @@
 
 use std::io::BufRead;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
-use clap::Parser;
-use mit_star_benches::commands::ProblemArgs;
-use mit_star_benches::{
-    HarnessError, InstanceProblem, ParameterOverrides, PlannerSpec, RunJob, parse_configuration,
-};
+use mit_star_benches::{HarnessError, PlannerSpec, ProblemInstance, RunJob};
 
-/// One run's problem options, as `plan` takes them.
-#[derive(Debug, Parser)]
-struct Run {
-    #[command(flatten)]
-    problem: ProblemArgs,
-}
+#[path = "support/cloud_runs.rs"]
+mod cloud_runs;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -42,27 +33,17 @@ fn main() {
         eprintln!("usage: cloud_loop PLANNER OUT [--set KEY=VALUE]… < RUNS");
         std::process::exit(2);
     };
-    let mut overrides = ParameterOverrides::default();
-    for pair in args[2..].chunks(2) {
-        match pair {
-            [flag, value] if flag == "--set" => overrides.push_assignment(value).expect("--set"),
-            _ => panic!("expected --set KEY=VALUE, got {pair:?}"),
-        }
-    }
-    let configuration = parse_configuration(planner).expect("a planner");
-    let spec = PlannerSpec::new(configuration, None, &overrides).expect("parameters");
+    let spec = cloud_runs::planner_spec(planner, &args[2..]);
     let out = PathBuf::from(out);
     std::fs::create_dir_all(&out).expect("the output folder");
     for line in std::io::stdin().lock().lines() {
         let line = line.expect("standard input");
         let mut words = line.split_whitespace();
         let Some(name) = words.next() else { continue };
-        let options = std::iter::once("cloud_loop").chain(words);
-        let (json, err) = match Run::try_parse_from(options) {
-            Ok(run) => match run_one(run.problem, &spec) {
-                Ok((json, lines)) => (json, lines.join("\n")),
-                Err(e) => (String::new(), format!("error: {e}")),
-            },
+        let (json, err) = match cloud_runs::problem_with_cloud("cloud_loop", words)
+            .and_then(|(instance, lines)| Ok((run_one(&instance, &spec)?, lines)))
+        {
+            Ok((json, lines)) => (json, lines.join("\n")),
             Err(e) => (String::new(), format!("error: {e}")),
         };
         write(&out, name, "json", &json);
@@ -70,25 +51,8 @@ fn main() {
     }
 }
 
-/// Plans one problem; the record as JSON and the cloud's lines.
-fn run_one(
-    mut problem: ProblemArgs,
-    spec: &PlannerSpec,
-) -> Result<(String, Vec<String>), HarnessError> {
-    let clouds = std::mem::take(&mut problem.clouds);
-    let mut instance = problem.build(1.0)?;
-    let mut lines = Vec::new();
-    if clouds.any() {
-        let arm = instance
-            .problem
-            .as_arm()
-            .ok_or_else(|| HarnessError::Usage("clouds need an arm problem".into()))?;
-        let label = format!("#{}", instance.instance);
-        let (with_cloud, summary) = clouds.apply(arm, instance.instance, &label)?;
-        lines.extend(summary.steps.iter().map(|s| format!("cloud: {s}")));
-        with_cloud.check_ends().map_err(HarnessError::ArmEnd)?;
-        instance.problem = InstanceProblem::Arm(Arc::new(with_cloud));
-    }
+/// Plans one problem; the record as JSON.
+fn run_one(instance: &ProblemInstance, spec: &PlannerSpec) -> Result<String, HarnessError> {
     let job = RunJob {
         instance: 0,
         planner: 0,
@@ -97,13 +61,12 @@ fn run_one(
         first_solution: true,
     };
     let record = job
-        .execute(&instance, spec, &AtomicBool::new(false))
+        .execute(instance, spec, &AtomicBool::new(false))
         .expect("not interrupted");
-    let json = serde_json::to_string(&record).map_err(|e| HarnessError::Serialise {
+    serde_json::to_string(&record).map_err(|e| HarnessError::Serialise {
         path: "record".into(),
         message: e.to_string(),
-    })?;
-    Ok((json, lines))
+    })
 }
 
 fn write(dir: &Path, name: &str, extension: &str, text: &str) {

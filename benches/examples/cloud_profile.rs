@@ -20,17 +20,11 @@
 use std::io::BufRead;
 use std::time::Instant;
 
-use clap::Parser;
 use mit_star::{FirstSolution, TerminationExt as _, TimeLimit, build_planner};
-use mit_star_benches::commands::ProblemArgs;
-use mit_star_benches::{ParameterOverrides, PlannerSpec, parse_configuration};
+use mit_star_benches::{HarnessError, PlannerSpec};
 
-/// One problem's options, as `plan` takes them.
-#[derive(Debug, Parser)]
-struct Run {
-    #[command(flatten)]
-    problem: ProblemArgs,
-}
+#[path = "support/cloud_runs.rs"]
+mod cloud_runs;
 
 /// The median of `values` (sorted in place; 0 if empty).
 fn median(values: &mut [f64]) -> f64 {
@@ -38,32 +32,31 @@ fn median(values: &mut [f64]) -> f64 {
     values.get(values.len() / 2).copied().unwrap_or(0.0)
 }
 
-/// The solve times (µs) of the problem `options` give, with seeds `0..seeds`; why not, if the
-/// options, the problem, its cloud or its ends are refused.
+/// The solve times (µs) of the problem `words` give, with seeds `0..seeds`.
+///
+/// # Errors
+/// What `plan` refuses (options, problem, cloud, an end touching the cloud), and a problem
+/// that is not an arm's.
 fn solves<'a>(
-    options: impl Iterator<Item = &'a str>,
-    name: &str,
+    words: impl Iterator<Item = &'a str>,
     spec: &PlannerSpec,
     seeds: u64,
-) -> Result<Vec<f64>, String> {
-    let mut problem = Run::try_parse_from(options)
-        .map_err(|e| e.to_string())?
-        .problem;
-    let clouds = std::mem::take(&mut problem.clouds);
-    let instance = problem.build(1.0).map_err(|e| e.to_string())?;
+) -> Result<Vec<f64>, HarnessError> {
+    let (instance, _) = cloud_runs::problem_with_cloud("cloud_profile", words)?;
     let arm = instance
         .problem
         .as_arm()
-        .ok_or("point clouds need an arm problem")?;
-    let (arm, _) = clouds
-        .apply(arm, instance.instance, name)
-        .map_err(|e| e.to_string())?;
-    arm.check_ends().map_err(|e| e.to_string())?;
+        .ok_or_else(|| HarnessError::Usage("point clouds need an arm problem".into()))?;
     let mut times = Vec::new();
     for seed in 0..seeds {
         let parameters = spec.parameters_for_seed(seed);
         let mut planner =
-            build_planner(spec.configuration(), &arm, &parameters).map_err(|e| e.to_string())?;
+            build_planner(spec.configuration(), &**arm, &parameters).map_err(|source| {
+                HarnessError::Build {
+                    planner: spec.name().to_owned(),
+                    source,
+                }
+            })?;
         let started = Instant::now();
         let _ = planner.solve(&FirstSolution.or(TimeLimit::seconds(1.0)));
         times.push(started.elapsed().as_secs_f64() * 1e6);
@@ -78,22 +71,13 @@ fn main() {
         std::process::exit(2);
     };
     let seeds: u64 = seeds.parse().expect("SEEDS, a count");
-    let mut overrides = ParameterOverrides::default();
-    for pair in args[2..].chunks(2) {
-        match pair {
-            [flag, value] if flag == "--set" => overrides.push_assignment(value).expect("--set"),
-            _ => panic!("expected --set KEY=VALUE, got {pair:?}"),
-        }
-    }
-    let configuration = parse_configuration(planner).expect("a planner");
-    let spec = PlannerSpec::new(configuration, None, &overrides).expect("parameters");
+    let spec = cloud_runs::planner_spec(planner, &args[2..]);
     let mut all = Vec::new();
     for line in std::io::stdin().lock().lines() {
         let line = line.expect("standard input");
         let mut words = line.split_whitespace();
         let Some(name) = words.next() else { continue };
-        let options = std::iter::once("cloud_profile").chain(words);
-        match solves(options, name, &spec, seeds) {
+        match solves(words, &spec, seeds) {
             Ok(mut times) => {
                 all.extend_from_slice(&times);
                 println!(
