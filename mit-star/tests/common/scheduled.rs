@@ -12,6 +12,13 @@
 //! whatever else runs. Where the file cannot be read (not Linux, or a kernel without scheduler
 //! statistics) the clock falls back to wall-clock time, and says so in [`Scheduled::source`].
 //!
+//! What the clock cannot see is a stall of the machine that the thread sits through on its
+//! core: a virtual machine's hypervisor taking the core away (steal time), a page fault served
+//! from a busy disk. Such a stall is rare and does not come back; a planner's own gap between
+//! polls comes back every time the same run is repeated (a run's work up to its deadline
+//! does not depend on the clock). [`least_of`] measures a late run again and judges the
+//! quickest attempt, so a deadline test fails on the planner's gaps and not on the machine's.
+//!
 //! Shared by `mit-star`'s integration tests (`tests/common`) and its unit tests (included by
 //! path), so that every timed assertion of the suite is judged the same way.
 
@@ -63,6 +70,25 @@ impl Scheduled {
             "wall-clock time (no scheduler statistics here)"
         }
     }
+}
+
+/// Runs `attempt` (which times itself on a [`Scheduled`] clock and returns what it took) up
+/// to `attempts` times while it takes `bound` or longer, and returns the least time taken:
+/// one stall of the machine does not fail a deadline test, a planner's own stall (which every
+/// repetition of the same run meets again) still does.
+pub fn least_of(
+    attempts: usize,
+    bound: Duration,
+    mut attempt: impl FnMut() -> Duration,
+) -> Duration {
+    let mut least = Duration::MAX;
+    for _ in 0..attempts.max(1) {
+        least = least.min(attempt());
+        if least < bound {
+            break;
+        }
+    }
+    least
 }
 
 /// The calling thread's total wait in the run queue so far, if the kernel reports it.
