@@ -195,17 +195,6 @@ impl CloudObstacle {
             .unwrap_or_else(|| self.tree.any_within_lanes(center, reach, active))
     }
 
-    /// `true` if a link's bounding sphere of radius `bound` is worth asking before its
-    /// spheres, for the lanes of `active`: unless the affordances would answer the spheres but
-    /// not the bound (the tree's walk for the bound costs more than the spheres' queries it
-    /// would save).
-    #[inline]
-    pub(crate) fn worth_bounding(&self, bound: f32, active: u32) -> bool {
-        self.affordances
-            .as_ref()
-            .is_none_or(|a| active.count_ones() > AFFORDED_LANES || a.answers(bound + self.radius))
-    }
-
     /// Per lane of `live`, [`distance_lower_bound`](Self::distance_lower_bound).
     #[inline]
     pub(crate) fn distance_lower_bounds_lanes(
