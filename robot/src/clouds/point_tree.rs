@@ -318,8 +318,8 @@ impl PointTree {
             }
             if hi - lo <= LEAF {
                 for j in lo..hi {
-                    // `fast_min` returns its right-hand side where either is NaN: `best`,
-                    // never NaN, as `min` would.
+                    // `fast_min` returns its right-hand side where either is NaN: `best`
+                    // (not NaN for a limit that is not), as `min` would.
                     best = self.distance_lanes(j, point).fast_min(best);
                 }
                 continue;
