@@ -300,22 +300,14 @@ impl PointTree {
         live: u32,
     ) -> LaneF32 {
         let mut best = limit * limit;
-        let mut walk = Walk::new(self.len());
+        if box_lanes(&self.boxes[0], point).simd_lt(best).to_bitmask() & live == 0 {
+            return best.sqrt() * LaneF32::splat(LOWER);
+        }
         let first = live.trailing_zeros() as usize % LANES;
-        let lead = Vec3::new(
-            point[0].to_array()[first],
-            point[1].to_array()[first],
-            point[2].to_array()[first],
-        );
+        // Children are tested when their parent is reached, in every lane against the best so
+        // far, and only the near ones pushed (the nearer first for the first live lane).
+        let mut walk = Walk::new(self.len());
         while let Some((node, lo, hi)) = walk.pop() {
-            if box_lanes(&self.boxes[node], point)
-                .simd_lt(best)
-                .to_bitmask()
-                & live
-                == 0
-            {
-                continue;
-            }
             if hi - lo <= LEAF {
                 for j in lo..hi {
                     // `fast_min` returns its right-hand side where either is NaN: `best`
@@ -324,7 +316,26 @@ impl PointTree {
                 }
                 continue;
             }
-            self.push_children(&mut walk, (node, lo, hi), lead);
+            let mid = lo + (hi - lo) / 2;
+            let (left, right) = (2 * node + 1, 2 * node + 2);
+            let to_left = box_lanes(&self.boxes[left], point);
+            let to_right = box_lanes(&self.boxes[right], point);
+            let near_left = to_left.simd_lt(best).to_bitmask() & live != 0;
+            let near_right = to_right.simd_lt(best).to_bitmask() & live != 0;
+            match (near_left, near_right) {
+                (true, true) => {
+                    if to_left.to_array()[first] <= to_right.to_array()[first] {
+                        walk.push(right, mid, hi);
+                        walk.push(left, lo, mid);
+                    } else {
+                        walk.push(left, lo, mid);
+                        walk.push(right, mid, hi);
+                    }
+                }
+                (true, false) => walk.push(left, lo, mid),
+                (false, true) => walk.push(right, mid, hi),
+                (false, false) => {}
+            }
         }
         best.sqrt() * LaneF32::splat(LOWER)
     }
