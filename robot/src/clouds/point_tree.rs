@@ -228,6 +228,38 @@ impl PointTree {
         }
     }
 
+    /// The lane walks' step at an inner node: tests both children's boxes in every lane at
+    /// once (`near` says, from a child's squared box distances, whether some lane needs it)
+    /// and pushes the near ones, the nearer for lane `first` last (popped first).
+    #[inline(always)]
+    fn push_near_children(
+        &self,
+        walk: &mut Walk,
+        (node, lo, hi): (usize, usize, usize),
+        point: &[LaneF32; 3],
+        first: usize,
+        near: impl Fn(LaneF32) -> bool,
+    ) {
+        let mid = lo + (hi - lo) / 2;
+        let (left, right) = (2 * node + 1, 2 * node + 2);
+        let to_left = box_lanes(&self.boxes[left], point);
+        let to_right = box_lanes(&self.boxes[right], point);
+        match (near(to_left), near(to_right)) {
+            (true, true) => {
+                if to_left.to_array()[first] <= to_right.to_array()[first] {
+                    walk.push(right, mid, hi);
+                    walk.push(left, lo, mid);
+                } else {
+                    walk.push(left, lo, mid);
+                    walk.push(right, mid, hi);
+                }
+            }
+            (true, false) => walk.push(left, lo, mid),
+            (false, true) => walk.push(right, mid, hi),
+            (false, false) => {}
+        }
+    }
+
     #[inline(always)]
     fn distance_squared(&self, j: usize, c: Vec3) -> f32 {
         let (dx, dy, dz) = (c.x - self.xs[j], c.y - self.ys[j], c.z - self.zs[j]);
@@ -265,27 +297,10 @@ impl PointTree {
                 }
                 continue;
             }
-            let mid = lo + (hi - lo) / 2;
-            let (left, right) = (2 * node + 1, 2 * node + 2);
-            let to_left = box_lanes(&self.boxes[left], center);
-            let to_right = box_lanes(&self.boxes[right], center);
-            let near_left = to_left.simd_le(r2).to_bitmask() & open != 0;
-            let near_right = to_right.simd_le(r2).to_bitmask() & open != 0;
-            match (near_left, near_right) {
-                (true, true) => {
-                    let first = open.trailing_zeros() as usize;
-                    if to_left.to_array()[first] <= to_right.to_array()[first] {
-                        walk.push(right, mid, hi);
-                        walk.push(left, lo, mid);
-                    } else {
-                        walk.push(left, lo, mid);
-                        walk.push(right, mid, hi);
-                    }
-                }
-                (true, false) => walk.push(left, lo, mid),
-                (false, true) => walk.push(right, mid, hi),
-                (false, false) => {}
-            }
+            let first = open.trailing_zeros() as usize;
+            self.push_near_children(&mut walk, (node, lo, hi), center, first, |d| {
+                d.simd_le(r2).to_bitmask() & open != 0
+            });
         }
         found
     }
@@ -316,26 +331,9 @@ impl PointTree {
                 }
                 continue;
             }
-            let mid = lo + (hi - lo) / 2;
-            let (left, right) = (2 * node + 1, 2 * node + 2);
-            let to_left = box_lanes(&self.boxes[left], point);
-            let to_right = box_lanes(&self.boxes[right], point);
-            let near_left = to_left.simd_lt(best).to_bitmask() & live != 0;
-            let near_right = to_right.simd_lt(best).to_bitmask() & live != 0;
-            match (near_left, near_right) {
-                (true, true) => {
-                    if to_left.to_array()[first] <= to_right.to_array()[first] {
-                        walk.push(right, mid, hi);
-                        walk.push(left, lo, mid);
-                    } else {
-                        walk.push(left, lo, mid);
-                        walk.push(right, mid, hi);
-                    }
-                }
-                (true, false) => walk.push(left, lo, mid),
-                (false, true) => walk.push(right, mid, hi),
-                (false, false) => {}
-            }
+            self.push_near_children(&mut walk, (node, lo, hi), point, first, |d| {
+                d.simd_lt(best).to_bitmask() & live != 0
+            });
         }
         best.sqrt() * LaneF32::splat(LOWER)
     }
