@@ -13,7 +13,7 @@ const LEAF: usize = 8;
 /// Leaves emitted between two polls of the stop condition.
 const POLL_LEAVES: usize = 1 << 10;
 
-/// Bytes a point the structure may take (beside the [`PointTree`](crate::PointTree)'s 22–28:
+/// Bytes a point the structure may take (beside the [`PointTree`](crate::PointTree)'s 19–22:
 /// both together stay within 64 bytes a point), unless the whole is below [`FLOOR_BYTES`].
 const BYTES_PER_POINT: usize = 36;
 
@@ -50,7 +50,7 @@ type Chunk = [LaneF32; 3];
 /// [`PointTree`](crate::PointTree) for the points within `reach_max` of its cell (the tree's
 /// boxes skip the rest): about `n/8` leaves listing `L` points in all. Its memory is `12 L`
 /// bytes and 36 a leaf; a build that would take more than its budget (36 bytes a point, so
-/// that with the tree's 22–28 a cloud takes at most 64; or 8 MiB for clouds of fewer than
+/// that with the tree's 19–22 a cloud takes at most 64; or 8 MiB for clouds of fewer than
 /// 233 000 points) stops and returns `None` (dense clouds of millions of points, where the
 /// lists grow with the density).
 #[derive(Debug, Clone)]
