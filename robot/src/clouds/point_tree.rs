@@ -248,7 +248,8 @@ impl PointTree {
         let to_right = box_lanes(&self.boxes[right], point);
         match (near(to_left), near(to_right)) {
             (true, true) => {
-                if to_left.to_array()[first] <= to_right.to_array()[first] {
+                // Lane `first`'s order, read off one comparison of every lane.
+                if to_left.simd_le(to_right).to_bitmask() >> first & 1 != 0 {
                     walk.push(right, mid, hi);
                     walk.push(left, lo, mid);
                 } else {
