@@ -12,7 +12,8 @@ use crate::lane_f32::{LANES, LaneF32};
 const LEAF: usize = 16;
 
 /// Deepest traversal stack: a tree of [`PointCloud::MAX_POINTS`](crate::PointCloud::MAX_POINTS)
-/// points is 21 levels deep, and a depth-first walk holds at most one entry per level plus one.
+/// points is at most 21 levels deep, and a depth-first walk holds at most one entry per level
+/// plus one.
 const STACK: usize = 48;
 
 /// What a computed distance is multiplied by before it is handed out as a lower bound: covers
