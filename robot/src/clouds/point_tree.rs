@@ -1,10 +1,12 @@
 //! [`PointTree`]: points arranged for sphere queries — a balanced binary tree of axis-aligned
 //! boxes over the points, laid out implicitly, with leaves of at most sixteen points.
 
+use std::ops::Range;
+
 use glam::Vec3;
 use mit_star_spaces::Stop;
 
-use crate::lane_f32::{LANES, LaneF32};
+use crate::lane_f32::LaneF32;
 
 /// Most points in a leaf. Sixteen rather than eight: one level fewer to walk for a leaf scan
 /// twice as long, and RRT-Connect among the seven Panda scenes' clouds 7 % faster in all
@@ -289,13 +291,9 @@ impl PointTree {
         let mut walk = Walk::new(self.len());
         while let Some((node, lo, hi)) = walk.pop() {
             if hi - lo <= LEAF {
-                // The leaf's nearest point per lane, then one test: `fast_min` keeps its
-                // right-hand side where the distance is NaN (a NaN centre), which then stays
-                // infinite and is no contact, as `NaN ≤ r²` is not.
-                let mut nearest = LaneF32::splat(f32::INFINITY);
-                for j in lo..hi {
-                    nearest = self.distance_lanes(j, center).fast_min(nearest);
-                }
+                // The leaf's nearest point per lane, then one test (a NaN centre's lane stays
+                // infinite: no contact, as `NaN ≤ r²` is not).
+                let nearest = self.leaf_nearest(lo..hi, center, LaneF32::splat(f32::INFINITY));
                 let hit = nearest.simd_le(r2).to_bitmask() & open;
                 if hit != 0 {
                     found |= hit;
@@ -327,17 +325,14 @@ impl PointTree {
         if box_lanes(&self.boxes[0], point).simd_lt(best).to_bitmask() & live == 0 {
             return best.sqrt() * LaneF32::splat(LOWER);
         }
-        let first = live.trailing_zeros() as usize % LANES;
+        // A lane of `live` passed the root's test: `first` is one of the lanes.
+        let first = live.trailing_zeros() as usize;
         // Children are tested when their parent is reached, in every lane against the best so
         // far, and only the near ones pushed (the nearer first for the first live lane).
         let mut walk = Walk::new(self.len());
         while let Some((node, lo, hi)) = walk.pop() {
             if hi - lo <= LEAF {
-                for j in lo..hi {
-                    // `fast_min` returns its right-hand side where either is NaN: `best`
-                    // (not NaN for a limit that is not), as `min` would.
-                    best = self.distance_lanes(j, point).fast_min(best);
-                }
+                best = self.leaf_nearest(lo..hi, point, best);
                 continue;
             }
             self.push_near_children(&mut walk, (node, lo, hi), point, first, |d| {
@@ -370,6 +365,17 @@ impl PointTree {
             walk.push(2 * node + 2, mid, hi);
             walk.push(2 * node + 1, lo, mid);
         }
+    }
+
+    /// Per lane, the least of `init` and the squared distances to the stored points `range`
+    /// (a leaf's). `fast_min` keeps its right-hand side where the distance is NaN (a NaN
+    /// centre): that lane keeps `init`'s value, as `min` would give for an `init` that is
+    /// not NaN.
+    #[inline(always)]
+    fn leaf_nearest(&self, range: Range<usize>, point: &[LaneF32; 3], init: LaneF32) -> LaneF32 {
+        range.fold(init, |least, j| {
+            self.distance_lanes(j, point).fast_min(least)
+        })
     }
 
     #[inline(always)]
