@@ -317,8 +317,9 @@ impl PointTree {
             return 0;
         }
         let mut found = 0;
-        // Children are tested when their parent is reached, both boxes at once in every lane,
-        // and only the near ones pushed (the nearer first for the first open lane).
+        // A node's grandchildren are tested when it is reached, their four boxes at once in
+        // every lane, and only the near ones pushed (leftmost first); where a child is a leaf,
+        // its two children (the nearer first for the first open lane).
         let mut walk = Walk::new(self.len());
         while let Some((node, lo, hi)) = walk.pop() {
             if hi - lo <= LEAF {
