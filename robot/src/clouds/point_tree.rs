@@ -113,7 +113,7 @@ impl PointTree {
             } else {
                 2
             };
-            let mid = lo + (hi - lo) / 2;
+            let mid = split(lo, hi);
             range.select_nth_unstable_by(mid - lo, |a, b| a.0[axis].total_cmp(&b.0[axis]));
             stack.push((2 * node + 2, mid, hi));
             stack.push((2 * node + 1, lo, mid));
@@ -221,7 +221,7 @@ impl PointTree {
     /// Pushes the two children of an inner node, the nearer to `point` last (popped first).
     #[inline]
     fn push_children(&self, walk: &mut Walk, (node, lo, hi): (usize, usize, usize), point: Vec3) {
-        let mid = lo + (hi - lo) / 2;
+        let mid = split(lo, hi);
         let (left, right) = (2 * node + 1, 2 * node + 2);
         let near_left = box_distance_squared(&self.boxes[left], point)
             <= box_distance_squared(&self.boxes[right], point);
@@ -246,7 +246,7 @@ impl PointTree {
         first: usize,
         near: impl Fn(LaneF32) -> bool,
     ) {
-        let mid = lo + (hi - lo) / 2;
+        let mid = split(lo, hi);
         let (left, right) = (2 * node + 1, 2 * node + 2);
         let to_left = box_lanes(&self.boxes[left], point);
         let to_right = box_lanes(&self.boxes[right], point);
@@ -283,9 +283,8 @@ impl PointTree {
         point: &[LaneF32; 3],
         near: impl Fn(LaneF32) -> bool,
     ) {
-        let mid = lo + (hi - lo) / 2;
-        let (left_mid, right_mid) = (lo + (mid - lo) / 2, mid + (hi - mid) / 2);
-        let cuts = [lo, left_mid, mid, right_mid, hi];
+        let mid = split(lo, hi);
+        let cuts = [lo, split(lo, mid), mid, split(mid, hi), hi];
         // Node `i`'s grandchildren are `4i + 3 .. 4i + 7`, side by side in the array.
         let base = 4 * node + 3;
         let boxes = &self.boxes[base..base + 4];
@@ -337,7 +336,8 @@ impl PointTree {
                 continue;
             }
             let near = |d: LaneF32| d.simd_le(r2).to_bitmask() & open != 0;
-            if (hi - lo) / 2 > LEAF {
+            // Both children inner nodes: the left, the smaller, holds more than a leaf.
+            if split(lo, hi) - lo > LEAF {
                 self.push_near_grandchildren(&mut walk, (node, lo, hi), center, near);
             } else {
                 let first = open.trailing_zeros() as usize;
@@ -396,7 +396,7 @@ impl PointTree {
                 }
                 continue;
             }
-            let mid = lo + (hi - lo) / 2;
+            let mid = split(lo, hi);
             walk.push(2 * node + 2, mid, hi);
             walk.push(2 * node + 1, lo, mid);
         }
@@ -420,6 +420,13 @@ impl PointTree {
         let dz = *z - LaneF32::splat(self.zs[j]);
         dx * dx + dy * dy + dz * dz
     }
+}
+
+/// Where a node of the points `[lo, hi)` splits: its children hold `[lo, mid)` and `[mid, hi)`.
+/// The build and every walk share it, so that a walk's ranges are the build's.
+#[inline(always)]
+fn split(lo: usize, hi: usize) -> usize {
+    lo + (hi - lo) / 2
 }
 
 /// Nodes of the implicit tree of `n` points: a complete tree as deep as the deepest leaf.
