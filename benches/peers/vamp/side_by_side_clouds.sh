@@ -10,8 +10,10 @@
 # one variant are made in one process, as VAMP's loop makes them; without it, one `plan` process
 # a problem (cold caches and first-touched memory on every solve).
 #
-# Each round, alternating which side goes first, every side pinned to one CPU at the highest
-# priority (`pinned`, common.sh), one problem at a time:
+# Each round goes scene by scene: for each scene VAMP's runs and ours back to back (VAMP first
+# in odd rounds, ours first in even ones), so that a slow spell of a shared machine falls on
+# both sides of a scene rather than on one side's block of the round. Every side is pinned to
+# one CPU at the highest priority (`pinned`, common.sh), one problem at a time:
 # - VAMP (vamp_clouds.py, VAMP's Python module): evaluate_mbm.py --pointcloud True's protocol —
 #   10 000 points on each primitive, filter_pointcloud (0.02 m, culled at 1.19 m), the CAPT of
 #   points of radius 2.5 mm, RRT-Connect. It writes each problem's filtered cloud to
@@ -45,15 +47,13 @@ OUT=$(cd "$OUT" && pwd)
 BIN=$(cd "$(dirname "$BIN")" && pwd)/$(basename "$BIN")
 export BIN MBM OUT
 
-vamp_round() { # ROUND
-  local raw=()
-  [ "$1" = 1 ] && [ "$RAW" = 1 ] && raw=(--raw "$OUT/raw")
+vamp_scene() { # ROUND SCENE: VAMP's runs of one scene, added to OUT/vamp_ROUND
+  local keep=()
+  # The clouds are seeded (the same every round): round 1 keeps them, for our side.
+  [ "$1" = 1 ] && keep=(--clouds "$OUT/clouds")
+  [ "$1" = 1 ] && [ "$RAW" = 1 ] && keep+=(--raw "$OUT/raw")
   pinned "$W/venv/bin/python" "$HERE/vamp_clouds.py" "$W/src/resources/panda/problems.pkl" \
-    "$OUT/vamp_$1" --clouds "$OUT/clouds_$1" "${raw[@]}" --scenes "${SCENES// /,}" \
-    > "$OUT/vamp_$1.log" 2>&1
-  pinned "$W/cpp/vamp_mbm" "$W/cpp/panda_mbm.txt" 1 > "$OUT/vamp_prim_$1.csv"
-  [ -d "$OUT/clouds" ] || mv "$OUT/clouds_$1" "$OUT/clouds"
-  rm -rf "$OUT/clouds_$1"
+    "$OUT/vamp_$1" "${keep[@]}" --scenes "$2" --append >> "$OUT/vamp_$1.log" 2>&1
 }
 
 # One of our runs: VARIANT PLANNER SCENE INDEX [ARGUMENT…]; JSON on stdout, cloud steps on stderr.
@@ -89,7 +89,7 @@ runs_of() { # VARIANT
 }
 export -f runs_of
 
-ours_round() { # ROUND: every problem VAMP had as valid, in VAMP's order of scenes
+ours_round() { # ROUND, with SCENES: every problem VAMP had as valid, in VAMP's order of scenes
   local v p
   for vp in same/rrt-connect same/aorrtc same/mit-star prim/rrt-connect own/rrt-connect raw/rrt-connect; do
     v=${vp%/*}; p=${vp#*/}
@@ -110,17 +110,25 @@ ours_round() { # ROUND: every problem VAMP had as valid, in VAMP's order of scen
 export -f ours_round
 export SCENES LOOP
 
+ALL_SCENES=$SCENES
 for i in $(seq 1 "$ROUNDS"); do
   echo "round $i, load $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$OUT/load.txt" >&2
-  if [ "$i" = 1 ] || [ $((i % 2)) = 1 ]; then
-    vamp_round "$i"
-    ROUND=$i pinned bash -c ours_round
-  else
-    ROUND=$i pinned bash -c ours_round
-    vamp_round "$i"
-  fi
+  rm -f "$OUT/vamp_$i/vamp.csv" "$OUT/vamp_$i.log"
+  for scene in $ALL_SCENES; do
+    # Round 1 needs VAMP's clouds before our runs among them, so VAMP goes first there.
+    if [ $((i % 2)) = 1 ]; then
+      vamp_scene "$i" "$scene"
+      SCENES=$scene ROUND=$i pinned bash -c ours_round
+    else
+      SCENES=$scene ROUND=$i pinned bash -c ours_round
+      vamp_scene "$i" "$scene"
+    fi
+  done
+  # VAMP among the primitives (the shared vamp_mbm harness), a reference for prim/rrt-connect.
+  pinned "$W/cpp/vamp_mbm" "$W/cpp/panda_mbm.txt" 1 > "$OUT/vamp_prim_$i.csv"
   echo "round $i done, load $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$OUT/load.txt" >&2
 done
+SCENES=$ALL_SCENES
 
 # Fidelity, untimed: every path against the scene's true primitives (no cloud).
 check() { # PATHFILE SCENE INDEX OUTFILE [ARGUMENT…]

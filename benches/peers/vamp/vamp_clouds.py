@@ -18,7 +18,10 @@ DIR/SCENE_NNNN.npy (float32, N×3) — and with --raw DIR the cloud before filte
 side to plan among the same points. NNNN is the problem's index, as in the MotionBenchMaker
 folders' request files.
 
-    python vamp_clouds.py PROBLEMS.pkl OUT [--clouds DIR] [--raw DIR] [--scenes a,b,…]
+With --append the lines are added to an existing OUT/vamp.csv (its header written only when
+the file is new): side_by_side_clouds.sh runs one scene at a time, each beside our runs of it.
+
+    python vamp_clouds.py PROBLEMS.pkl OUT [--clouds DIR] [--raw DIR] [--scenes a,b,…] [--append]
 """
 import argparse
 import csv
@@ -41,6 +44,7 @@ def main():
     parser.add_argument("--clouds")
     parser.add_argument("--raw")
     parser.add_argument("--scenes", default="")
+    parser.add_argument("--append", action="store_true")
     args = parser.parse_args()
     with open(args.problems, "rb") as f:
         problems = pickle.load(f)["problems"]
@@ -53,10 +57,13 @@ def main():
     module, plan, settings, _ = vamp.configure_robot_and_planner_with_kwargs("panda", "rrtc")
     sampler = module.halton()
     r_min, r_max = module.min_max_radii()
-    with open(out / "vamp.csv", "w", newline="") as f:
+    table = out / "vamp.csv"
+    header = not (args.append and table.exists() and table.stat().st_size > 0)
+    with open(table, "a" if args.append else "w", newline="") as f:
         rows = csv.writer(f)
-        rows.writerow(["scene", "index", "sampled", "filtered", "filter_us", "build_us",
-                       "plan_us", "iterations", "solved", "valid_among_primitives"])
+        if header:
+            rows.writerow(["scene", "index", "sampled", "filtered", "filter_us", "build_us",
+                           "plan_us", "iterations", "solved", "valid_among_primitives"])
         for scene in scenes:
             for data in problems[scene]:
                 if not data["valid"]:
