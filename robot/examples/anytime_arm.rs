@@ -17,7 +17,9 @@
 //! `range=2` (RRT-Connect's and AORRTC's; 1 by default, as VAMP's scripts), `batch_size=200`,
 //! `rewire_factor=1.5`, `near_terminals=0.3`, `connection=k-nearest`, …; `aorrtc_moves=perturb|relax|relax-then-perturb`
 //! for AORRTC's smoothing moves, `relax` by default; `scenes=cage,box` for some scenes only;
-//! `seed=K` adds `K` to every run's seed, for repeats with other random draws); `csv=FILE` also
+//! `seed=K` adds `K` to every run's seed, for repeats with other random draws; `robot=ur5` or
+//! `robot=fetch` for another shipped robot's problems, read from `FOLDER/<scene>_<robot>` as
+//! `robot/data/<robot>/problems.tar.bz2` unpacks them under `problems/`); `csv=FILE` also
 //! writes one line per run (`scene,index,planner,first_ms,cost_10ms,cost_100ms,cost_1s`) for
 //! `benches/peers/vamp/anytime_table.py` (and, over several seeds, `seed_spread.py`).
 
@@ -32,7 +34,7 @@ use mit_star_spaces::StateSpace;
 mod mbm_scenes;
 #[path = "support/parameter_switches.rs"]
 mod parameter_switches;
-use mbm_scenes::{SCENES, median, problems};
+use mbm_scenes::{SCENES, median, problems, problems_of};
 use parameter_switches::set_parameter;
 
 /// The times at which the best cost is read, in seconds.
@@ -50,7 +52,11 @@ fn main() {
     let mut csv = None;
     let mut seed_offset: u64 = 0;
     let mut aorrtc_moves = None;
-    let mut scenes: Vec<String> = SCENES.iter().map(|s| (*s).to_owned()).collect();
+    let mut scenes: Vec<String> = SCENES
+        .iter()
+        .map(|s| s.trim_end_matches("_panda").to_owned())
+        .collect();
+    let mut robot = None;
     for setting in args {
         let (key, value) = setting.split_once('=').expect("key=value");
         if key == "seed" {
@@ -58,7 +64,15 @@ fn main() {
             continue;
         }
         if key == "scenes" {
-            scenes = value.split(',').map(|v| format!("{v}_panda")).collect();
+            scenes = value.split(',').map(str::to_owned).collect();
+            continue;
+        }
+        if key == "robot" {
+            let shipped = mit_star_robot::ShippedRobot::find(value).expect("a shipped robot");
+            robot = Some((
+                value.to_owned(),
+                shipped.model(false).expect("its files load"),
+            ));
             continue;
         }
         if key == "aorrtc_moves" {
@@ -95,7 +109,10 @@ fn main() {
     println!("|---|---|---|---|---|---|---|---|---|");
     let mut pooled = vec![Vec::new(); configurations.len() * MOMENTS.len()];
     for scene in &scenes {
-        let loaded = problems(&folder, scene, count);
+        let loaded = match &robot {
+            None => problems(&folder, &format!("{scene}_panda"), count),
+            Some((name, model)) => problems_of(model, &folder, &format!("{scene}_{name}"), count),
+        };
         for (p, &configuration) in configurations.iter().enumerate() {
             let (mut first, mut line) = (Vec::new(), Vec::new());
             let mut at = vec![Vec::new(); MOMENTS.len()];
@@ -135,11 +152,10 @@ fn main() {
                 first.push(trace.initial().map_or(f64::INFINITY, |p| p.time * 1e3));
                 if let Some(file) = csv.as_mut() {
                     let costs = MOMENTS.map(|m| trace.cost_at(m).to_string()).join(",");
-                    let name = scene.trim_end_matches("_panda");
                     let planner = configuration.name();
                     writeln!(
                         file,
-                        "{name},{index},{planner},{},{costs}",
+                        "{scene},{index},{planner},{},{costs}",
                         first[first.len() - 1]
                     )
                     .expect("the CSV file takes a line");
@@ -165,7 +181,7 @@ fn main() {
             let [a, b, c] = [0, 1, 2].map(|m| median(&mut at[m]));
             println!(
                 "| {} | {} | {solved}/{} | {:.2} | {a:.2} | {b:.2} | {c:.2} | {:.2} | {failed} |",
-                scene.trim_end_matches("_panda"),
+                scene,
                 configuration.label(),
                 loaded.len(),
                 median(&mut first),

@@ -1,6 +1,8 @@
-// The Panda MotionBenchMaker problems as the shared export_problems.py writes them (one `P`
-// line per problem, then its start `S`, goals `G` and obstacles), read into VAMP's types; shared
-// by the harnesses of this folder (vamp_anytime.cc, vamp_fcit.cc).
+// The MotionBenchMaker problems as the shared export_problems.py writes them (one `P` line per
+// problem, then its start `S`, goals `G` and obstacles), read into VAMP's types; shared by the
+// harnesses of this folder (vamp_anytime.cc, vamp_fcit.cc). The robot is the Panda unless the
+// build says otherwise: `-DMBM_ROBOT=UR5 -DMBM_ROBOT_HEADER='<vamp/robots/ur5.hh>'` (or
+// `Fetch`, `<vamp/robots/fetch.hh>`), for the problems of that robot exported the same way.
 #pragma once
 
 #include <array>
@@ -10,11 +12,15 @@
 #include <vector>
 
 #include <vamp/collision/factory.hh>
-#include <vamp/robots/panda.hh>
+#ifndef MBM_ROBOT
+#define MBM_ROBOT Panda
+#define MBM_ROBOT_HEADER <vamp/robots/panda.hh>
+#endif
+#include MBM_ROBOT_HEADER
 
 namespace mbm
 {
-    using Robot = vamp::robots::Panda;
+    using Robot = vamp::robots::MBM_ROBOT;
     using EnvIn = vamp::collision::Environment<float>;
     namespace vf = vamp::collision::factory;
 

@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use mit_star_robot::ArmProblem;
+use mit_star_robot::{ArmProblem, RobotModel};
 
 /// The five Panda scenes of the `panda-mbm` experiment and most arm tables, as folder names
 /// (`robot/data/panda/mbm_problems.tar.bz2` also has `bookshelf_thin` and `table_under_pick`).
@@ -34,6 +34,23 @@ pub(crate) fn problems(folder: &str, scene: &str, count: usize) -> Vec<(usize, A
     (1..=count)
         .filter_map(|index| {
             let problem = ArmProblem::panda_mbm(&Path::new(folder).join(scene), index).ok()?;
+            problem.ends_are_valid().then_some((index, problem))
+        })
+        .collect()
+}
+
+/// Problems `1..=count` of `scene` (a folder name with the robot's suffix) under `folder` for
+/// `robot` that load and have a valid start and goal, with their 1-based index.
+pub(crate) fn problems_of(
+    robot: &RobotModel,
+    folder: &str,
+    scene: &str,
+    count: usize,
+) -> Vec<(usize, ArmProblem)> {
+    (1..=count)
+        .filter_map(|index| {
+            let problem =
+                ArmProblem::mbm(robot.clone(), &Path::new(folder).join(scene), index).ok()?;
             problem.ends_are_valid().then_some((index, problem))
         })
         .collect()
