@@ -155,6 +155,28 @@ for s in rows:
           f"{st.median(o):.0f} · {p95(o):.0f} | {solved(same, s)} | {st.median(o) / st.median(v):.2f}× | "
           f"{p95(o) / p95(v):.2f}× | {st.median(w):.0f} · {p95(w):.0f} | {solved(own, s)} |")
 
+# Round by round: how much of the ratio is the run's own spread (pooled, RRT-Connect among
+# VAMP's points; each round's solved problems of the chosen scenes).
+by_round = []
+for f in sorted(glob.glob(f"{OUT}/vamp_*/vamp.csv")):
+    r = f.split(os.sep)[-2][len("vamp_"):]
+    v = [float(x["plan_us"]) for x in csv.DictReader(open(f))
+         if x["scene"] in SCENES and x["solved"] == "1"]
+    o = []
+    for g in glob.glob(f"{OUT}/ours_{r}/same/rrt-connect/*.json"):
+        if g.split(os.sep)[-1][:-5].rsplit("_", 1)[0] not in SCENES:
+            continue
+        try:
+            record = json.load(open(g))
+        except (json.JSONDecodeError, OSError):
+            continue
+        if record["status"] == "solved":
+            o.append((record["initial_time"] - record["setup_time"]) * 1e6)
+    if v and o:
+        by_round.append(f"round {r} {st.median(o) / st.median(v):.2f}× · {p95(o) / p95(v):.2f}×")
+if by_round:
+    print("\nPooled ours / VAMP (median · p95), round by round: " + "; ".join(by_round))
+
 print("\nOurs to the first solution among VAMP's points, microseconds (median · p95); solved/valid\n")
 print("| scene | AORRTC | solved | MIT* | solved |")
 print("|---|---|---|---|---|")
