@@ -27,14 +27,14 @@ use std::io::Write;
 
 use mit_star::{Aorrtc, Configuration, Parameters, SmoothingMoves, TimeLimit, build_planner};
 use mit_star_problems::PlanningProblem;
-use mit_star_robot::{AuditVerdict, MotionAudit};
+use mit_star_robot::{ArmProblem, AuditVerdict, MotionAudit};
 use mit_star_spaces::StateSpace;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
 #[path = "support/parameter_switches.rs"]
 mod parameter_switches;
-use mbm_scenes::{SCENES, median, problems, problems_of};
+use mbm_scenes::{SCENES, median, problems_of};
 use parameter_switches::set_parameter;
 
 /// The times at which the best cost is read, in seconds.
@@ -56,7 +56,10 @@ fn main() {
         .iter()
         .map(|s| s.trim_end_matches("_panda").to_owned())
         .collect();
-    let mut robot = None;
+    let mut robot = (
+        "panda".to_owned(),
+        ArmProblem::panda().expect("the shipped Panda loads"),
+    );
     for setting in args {
         let (key, value) = setting.split_once('=').expect("key=value");
         if key == "seed" {
@@ -69,10 +72,10 @@ fn main() {
         }
         if key == "robot" {
             let shipped = mit_star_robot::ShippedRobot::find(value).expect("a shipped robot");
-            robot = Some((
+            robot = (
                 value.to_owned(),
                 shipped.model(false).expect("its files load"),
-            ));
+            );
             continue;
         }
         if key == "aorrtc_moves" {
@@ -109,10 +112,7 @@ fn main() {
     println!("|---|---|---|---|---|---|---|---|---|");
     let mut pooled = vec![Vec::new(); configurations.len() * MOMENTS.len()];
     for scene in &scenes {
-        let loaded = match &robot {
-            None => problems(&folder, &format!("{scene}_panda"), count),
-            Some((name, model)) => problems_of(model, &folder, &format!("{scene}_{name}"), count),
-        };
+        let loaded = problems_of(&robot.1, &folder, &format!("{scene}_{}", robot.0), count);
         for (p, &configuration) in configurations.iter().enumerate() {
             let (mut first, mut line) = (Vec::new(), Vec::new());
             let mut at = vec![Vec::new(); MOMENTS.len()];

@@ -29,14 +29,10 @@ pub(crate) const SEVEN_SCENES: [&str; 7] = [
 ];
 
 /// Problems `1..=count` of `scene` under `folder` that load and have a valid start and goal,
-/// with their 1-based index.
+/// with their 1-based index: [`problems_of`] for the shipped Panda.
 pub(crate) fn problems(folder: &str, scene: &str, count: usize) -> Vec<(usize, ArmProblem)> {
-    (1..=count)
-        .filter_map(|index| {
-            let problem = ArmProblem::panda_mbm(&Path::new(folder).join(scene), index).ok()?;
-            problem.ends_are_valid().then_some((index, problem))
-        })
-        .collect()
+    let panda = ArmProblem::panda().expect("the shipped Panda loads");
+    problems_of(&panda, folder, scene, count)
 }
 
 /// Problems `1..=count` of `scene` (a folder name with the robot's suffix) under `folder` for
