@@ -32,7 +32,11 @@ def add(table, key, field, value):
 
 
 vamp = {}  # (scene, index) -> field -> [values over rounds]
+# Round -> side -> RRT-Connect's planning times among VAMP's points, the chosen scenes' solved
+# problems: the pooled ratio round by round.
+by_round = {}
 for f in glob.glob(f"{OUT}/vamp_*/vamp.csv"):
+    round_ = f.split(os.sep)[-2][len("vamp_"):]
     for r in csv.DictReader(open(f)):
         k = (r["scene"], int(r["index"]))
         for field in ("filtered", "filter_us", "build_us"):
@@ -40,6 +44,8 @@ for f in glob.glob(f"{OUT}/vamp_*/vamp.csv"):
         add(vamp, k, "solved", int(r["solved"]))
         if r["solved"] == "1":
             add(vamp, k, "plan_us", float(r["plan_us"]))
+            if r["scene"] in SCENES:
+                add(by_round, round_, "vamp", float(r["plan_us"]))
 
 vamp_prim = {}  # (scene, index) -> plan_us over rounds: the shared vamp_mbm among primitives
 for f in glob.glob(f"{OUT}/vamp_prim_*.csv"):
@@ -74,6 +80,8 @@ for f in glob.glob(f"{OUT}/ours_*/*/*/*.json"):
     if record["status"] == "solved":
         plan_us = (record["initial_time"] - record["setup_time"]) * 1e6
         add(table, k, "plan_us", plan_us)
+        if tag == "same/rrt-connect" and scene in SCENES:
+            add(by_round, parts[-4][len("ours_"):], "ours", plan_us)
         checks = record["counters"]["validity_checks"]
         add(table, k, "checks", checks)
         add(table, k, "ns_per_check", plan_us * 1e3 / max(checks, 1))
@@ -155,27 +163,12 @@ for s in rows:
           f"{st.median(o):.0f} · {p95(o):.0f} | {solved(same, s)} | {st.median(o) / st.median(v):.2f}× | "
           f"{p95(o) / p95(v):.2f}× | {st.median(w):.0f} · {p95(w):.0f} | {solved(own, s)} |")
 
-# Round by round: how much of the ratio is the run's own spread (pooled, RRT-Connect among
-# VAMP's points; each round's solved problems of the chosen scenes).
-by_round = []
-for f in sorted(glob.glob(f"{OUT}/vamp_*/vamp.csv")):
-    r = f.split(os.sep)[-2][len("vamp_"):]
-    v = [float(x["plan_us"]) for x in csv.DictReader(open(f))
-         if x["scene"] in SCENES and x["solved"] == "1"]
-    o = []
-    for g in glob.glob(f"{OUT}/ours_{r}/same/rrt-connect/*.json"):
-        if g.split(os.sep)[-1][:-5].rsplit("_", 1)[0] not in SCENES:
-            continue
-        try:
-            record = json.load(open(g))
-        except (json.JSONDecodeError, OSError):
-            continue
-        if record["status"] == "solved":
-            o.append((record["initial_time"] - record["setup_time"]) * 1e6)
-    if v and o:
-        by_round.append(f"round {r} {st.median(o) / st.median(v):.2f}× · {p95(o) / p95(v):.2f}×")
-if by_round:
-    print("\nPooled ours / VAMP (median · p95), round by round: " + "; ".join(by_round))
+# How much of the ratio is the run's own spread.
+spread = [f"round {r} {st.median(t['ours']) / st.median(t['vamp']):.2f}× · "
+          f"{p95(t['ours']) / p95(t['vamp']):.2f}×"
+          for r, t in sorted(by_round.items()) if "ours" in t and "vamp" in t]
+if spread:
+    print("\nPooled ours / VAMP (median · p95), round by round: " + "; ".join(spread))
 
 print("\nOurs to the first solution among VAMP's points, microseconds (median · p95); solved/valid\n")
 print("| scene | AORRTC | solved | MIT* | solved |")
