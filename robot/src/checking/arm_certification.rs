@@ -23,8 +23,8 @@
 //!
 //! The pieces beyond a gap are kept: the next batches fill the gap and step over them. Where an
 //! edge passes close to something in one place, the batch that finds the narrow place has
-//! certified most of the rest of the edge already, and throwing those pieces away made a third
-//! of all configurations evaluated wasted work (RRT-Connect among the Panda's point clouds).
+//! certified most of the rest of the edge already; walking over those pieces again was most of
+//! certification's work among point clouds (the figures are in the guide's point-clouds page).
 //!
 //! A stopped certification keeps the prefix and `w` in the caller's [`MotionProgress`], and
 //! the pieces beyond in the checker's scratch: the next call for the same motion and progress
@@ -55,9 +55,9 @@ const FIRST_SWEEP: f64 = 0.1;
 
 /// The widest piece a batch seeks, in spacings `w`: limits how far clearances are sought, and
 /// so how much of the scene each batch looks at. A wide piece lets the next spacing grow.
-/// With [`SPACING`], measured on RRT-Connect among the Panda's point clouds (callgrind,
-/// problems of the seven scenes, pieces beyond gaps kept): 2.0 and 0.7 take 5 % of the solves'
-/// instructions off 2.5 and 0.9, and certification's share falls from 33 % to 27 %.
+/// With [`SPACING`], chosen with the pieces beyond gaps kept by callgrind counts of
+/// RRT-Connect's solves among the Panda's point clouds (a scan of both; the guide's
+/// point-clouds page has the counts of the change as a whole).
 const USEFUL: f64 = 2.0;
 
 /// The widest piece sought by a batch whose pieces reach the edge's end, in spacings `w`.
