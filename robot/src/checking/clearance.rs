@@ -26,7 +26,10 @@
 //! the obstacle) times the speed bound `A_k`, a thousandth of `A_k`, and `4 δ` per unit of
 //! the link's joint rates. The radius of `s` against `o` is the larger of this one and the
 //! one of `B_k` (both hold); at the closest approach of a graze `n · v` is about zero, and the piece is about
-//! `√(2 c / Acc)` long instead of `c / |v|`.
+//! `√(2 c / Acc)` long instead of `c / |v|`. A point cloud is not convex, but each point's
+//! ball is: a sphere is judged so against every point within the bound `B_k` of its piece
+//! (a walk of the cloud's tree whose reach shrinks with the radius), its radius the least
+//! over those points of the larger of the two radii.
 //!
 //! A self-collision pair `(a, b)` only moves apart
 //! or together through the joints above one link and not the other (those above both carry
@@ -181,18 +184,7 @@ pub(crate) fn certified_radii(
                 if clear.simd_lt(limit).to_bitmask() & live == 0 {
                     continue;
                 }
-                // The sphere centre's velocity: the bounding centre's, plus the link's turn
-                // about it.
-                let arm = [
-                    c[0] - lane_bounds[k][0],
-                    c[1] - lane_bounds[k][1],
-                    c[2] - lane_bounds[k][2],
-                ];
-                let moving = [
-                    velocity[0] + angular[1] * arm[2] - angular[2] * arm[1],
-                    velocity[1] + angular[2] * arm[0] - angular[0] * arm[2],
-                    velocity[2] + angular[0] * arm[1] - angular[1] * arm[0],
-                ];
+                let moving = centre_velocity(&LaneMotion { velocity, angular }, c, &lane_bounds[k]);
                 let rate = obstacle.rates_local_lanes(&local, distance, &moving);
                 // The direction from the solid is known to within `4 δ / d` for a centre `d`
                 // from it placed within `δ` (the margin) of where it is.
@@ -203,8 +195,10 @@ pub(crate) fn certified_radii(
                     radius.min(reach(clear, speed, second, edge.sweep[k] as f32).max(directional));
             }
         }
-        // Point clouds: only the bound that holds whatever the direction of motion (a
-        // cloud is not convex), from a lower bound of each sphere's distance to the cloud.
+        // Point clouds: a cloud is not convex, but each point's ball is. A lower bound of
+        // the bounding centre's distance to the cloud rules out the links far from it; then
+        // each sphere is judged against every point within the limit, as against a convex
+        // solid.
         for &cloud in &s.reachable_clouds[k] {
             let cloud = &s.clouds[cloud];
             let loose = radius * sweep + floor + floor + keep + r;
@@ -245,14 +239,40 @@ pub(crate) fn certified_radii(
                     continue;
                 }
                 let own = LaneF32::splat(sphere.1);
-                let gap =
-                    cloud.distance_lower_bounds_lanes(c, limit + keep + own + floor, near) - own;
-                nearest = nearest.min(gap);
-                let clear = gap - keep;
-                if clear.simd_lt(limit).to_bitmask() & live == 0 {
-                    continue;
-                }
-                radius = radius.min(reach(clear, m.speed, m.second, edge.sweep[k] as f32));
+                // Each point's ball is convex: the bound of the module docs for a convex
+                // solid, per point within the limit, judged by how fast the sphere approaches
+                // it (the direction from the point, computed in `f32` from a centre within
+                // the margin of its true place, is allowed for as for the primitives).
+                let moving = centre_velocity(&m.motion, c, &lane_bounds[k]);
+                let sweep_k = edge.sweep[k] as f32;
+                let four = LaneF32::splat(4.0);
+                let infinite = LaneF32::splat(f32::INFINITY);
+                let half_acceleration = m.acceleration * LaneF32::splat(0.5);
+                let start = limit + keep + own + floor;
+                cloud.visit_balls_lanes(c, start, near, |ball, n, within| {
+                    let gap = ball - own;
+                    nearest = nearest.min(within.bitselect(gap, infinite));
+                    let clear = gap - keep;
+                    let rate = n[0] * moving[0] + n[1] * moving[1] + n[2] * moving[2];
+                    let aim = margin * four / (ball - margin).max(margin);
+                    let approach = rate.abs() + m.slack + aim * m.speed;
+                    // Where the bound holds over a piece of the lane's radius so far, the
+                    // point cannot lower it (no root needed).
+                    let holds = (radius * approach + radius * radius * half_acceleration)
+                        .simd_le(clear)
+                        .to_bitmask();
+                    if within.to_bitmask() & !holds != 0 {
+                        let directional = reach_approaching(clear, approach, m.acceleration);
+                        let piece = reach(clear, m.speed, m.second, sweep_k).max(directional);
+                        radius = radius.min(within.bitselect(piece, infinite));
+                    }
+                    (radius * m.speed + radius * radius * m.second).min(radius * sweep)
+                        + floor
+                        + floor
+                        + keep
+                        + own
+                        + floor
+                });
             }
         }
         refused |= (nearest - keep).simd_lt(floor).to_bitmask() & live;
@@ -342,6 +362,19 @@ fn link_motion(
         slack: speed * LaneF32::splat(DIRECTION_ROUNDING)
             + margin * LaneF32::splat(4.0 * terms.rates(k) as f32),
     }
+}
+
+/// The velocity of a sphere centre `c` of a link whose bounding centre `bound` moves and
+/// turns as `motion` says: the bounding centre's velocity plus the turn about it.
+#[inline]
+fn centre_velocity(motion: &LaneMotion, c: &LanePoint, bound: &LanePoint) -> [LaneF32; 3] {
+    let LaneMotion { velocity, angular } = motion;
+    let arm = [c[0] - bound[0], c[1] - bound[1], c[2] - bound[2]];
+    [
+        velocity[0] + angular[1] * arm[2] - angular[2] * arm[1],
+        velocity[1] + angular[2] * arm[0] - angular[0] * arm[2],
+        velocity[2] + angular[0] * arm[1] - angular[1] * arm[0],
+    ]
 }
 
 /// Per lane, the largest `h` with `min(h · speed + h² · second, h · sweep) ≤ clear` (0 for a

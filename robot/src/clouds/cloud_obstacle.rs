@@ -208,6 +208,39 @@ impl CloudObstacle {
         self.tree.lower_bounds_lanes(point, widened + r, live) - r
     }
 
+    /// Calls `visit` for each point whose ball may lie within `limit` of the centre of a lane
+    /// of `live` (`limit[l]` for lane `l`), with per lane a lower bound of the distance from
+    /// the centre to the ball (as [`distance_lower_bound`](Self::distance_lower_bound)'s),
+    /// the unit direction from the point to the centre as computed in `f32` (its error is
+    /// the caller's to allow for), and the mask of the lanes of `live` within the limit;
+    /// `visit` returns the limit for the rest of the walk, which may only shrink. Every
+    /// point whose ball is nearer than the limit in a lane of `live` is visited.
+    #[inline]
+    pub(crate) fn visit_balls_lanes(
+        &self,
+        center: &[LaneF32; 3],
+        limit: LaneF32,
+        live: u32,
+        mut visit: impl FnMut(LaneF32, [LaneF32; 3], LaneF32) -> LaneF32,
+    ) {
+        let r = LaneF32::splat(self.radius);
+        let widen =
+            |limit: LaneF32| limit * LaneF32::splat(WIDER) + r * LaneF32::splat(WIDER - 1.0) + r;
+        let [x, y, z] = *center;
+        self.tree
+            .visit_within_lanes(center, widen(limit), live, |p, d2, within| {
+                let d = d2.sqrt();
+                let inverse = LaneF32::ONE / d.max(LaneF32::splat(f32::MIN_POSITIVE));
+                let direction = [
+                    (x - LaneF32::splat(p.x)) * inverse,
+                    (y - LaneF32::splat(p.y)) * inverse,
+                    (z - LaneF32::splat(p.z)) * inverse,
+                ];
+                let ball = d * LaneF32::splat(crate::clouds::point_tree::LOWER) - r;
+                widen(visit(ball, direction, within))
+            });
+    }
+
     /// The point whose ball is nearest `point`, in `f64` by brute force over every point
     /// (diagnoses): its index in the cloud and the distance from `point` to its ball
     /// (negative inside).

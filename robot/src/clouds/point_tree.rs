@@ -21,14 +21,15 @@ const STACK: usize = 48;
 
 /// What a computed distance is multiplied by before it is handed out as a lower bound: covers
 /// the `f32` rounding of the squared distance (a few units in the last place) with room.
-const LOWER: f32 = 1.0 - 1e-6;
+pub(crate) const LOWER: f32 = 1.0 - 1e-6;
 
 /// Nodes built between two polls of the stop condition.
 const POLL_NODES: usize = 1 << 12;
 
 /// The point structure of cloud obstacles, built for the queries the arm checker asks:
 /// *is any point within `reach` of this centre* (one centre, or one per lane of a batch of
-/// configurations) and *how far is the nearest point, at least* (for certified motion).
+/// configurations), *how far is the nearest point, at least*, and *which points are within
+/// this reach of these centres* (both for certified motion).
 ///
 /// # Layout
 /// The points are reordered by recursive median splits along the longest side of their box
@@ -377,6 +378,48 @@ impl PointTree {
         best.sqrt() * LaneF32::splat(LOWER)
     }
 
+    /// Calls `visit` for each stored point within `reach` of the centre of a lane of `live`
+    /// (`reach[l]` for lane `l`; squared distances compared in `f32`), with the point, every
+    /// lane's squared distance to it, and the mask (all bits set) of the lanes of `live`
+    /// within reach; `visit` returns the reach for the rest of the walk, which may only shrink
+    /// (a larger one is not honoured). Nodes whose boxes lie beyond the reach in every lane of
+    /// `live` are skipped (never computed nearer than their points, so no point within the
+    /// reach is missed).
+    pub(crate) fn visit_within_lanes(
+        &self,
+        center: &[LaneF32; 3],
+        reach: LaneF32,
+        live: u32,
+        mut visit: impl FnMut(Vec3, LaneF32, LaneF32) -> LaneF32,
+    ) {
+        let mut r2 = reach * reach;
+        if live == 0 || box_lanes(&self.boxes[0], center).simd_lt(r2).to_bitmask() & live == 0 {
+            return;
+        }
+        let lanes = LaneF32::new(std::array::from_fn(|l| {
+            f32::from_bits(if live >> l & 1 != 0 { u32::MAX } else { 0 })
+        }));
+        let first = live.trailing_zeros() as usize;
+        let mut walk = Walk::new(self.len());
+        while let Some((node, lo, hi)) = walk.pop() {
+            if hi - lo <= LEAF {
+                for j in lo..hi {
+                    let d2 = self.distance_lanes(j, center);
+                    let within = d2.simd_lt(r2) & lanes;
+                    if within.to_bitmask() != 0 {
+                        let point = Vec3::new(self.xs[j], self.ys[j], self.zs[j]);
+                        let next = visit(point, d2, within);
+                        r2 = r2.min(next * next);
+                    }
+                }
+                continue;
+            }
+            self.push_near_children(&mut walk, (node, lo, hi), center, first, |d| {
+                d.simd_lt(r2).to_bitmask() & live != 0
+            });
+        }
+    }
+
     /// Appends to `out` every point whose squared distance to the box `cell`
     /// (`[min x, min y, min z, max x, max y, max z]`, infinite sides allowed) is at most `r2`
     /// in `f32`: a walk skipping the nodes whose boxes are farther (never computed nearer than
@@ -542,6 +585,65 @@ mod tests {
             assert_eq!(points[index].distance_squared(c), brute);
             let lower = tree.distance_lower_bound(c, 0.05);
             assert!(lower <= brute.sqrt() && lower >= brute.sqrt().min(0.05) * 0.99999);
+        }
+    }
+
+    /// The visit of a batch reaches every point within each live lane's reach, marks exactly
+    /// the live lanes within it, and honours a reach that shrinks on the way.
+    #[test]
+    fn the_visit_meets_every_point_within_reach() {
+        use crate::lane_f32::LANES;
+        let points: Vec<Vec3> = (0..2000)
+            .map(|i| {
+                let f = i as f32;
+                Vec3::new((f * 0.37).sin(), (f * 0.71).cos(), (f * 0.13).sin() * 0.5)
+            })
+            .collect();
+        let tree = PointTree::new(&points);
+        for q in 0..40 {
+            let centre = |l: usize| {
+                let f = (q * LANES + l) as f32;
+                Vec3::new((f * 1.1).cos(), (f * 0.3).sin(), (f * 0.77).cos() * 0.5)
+            };
+            let lanes = [
+                LaneF32::new(std::array::from_fn(|l| centre(l).x)),
+                LaneF32::new(std::array::from_fn(|l| centre(l).y)),
+                LaneF32::new(std::array::from_fn(|l| centre(l).z)),
+            ];
+            let reach: [f32; LANES] = std::array::from_fn(|l| 0.05 + 0.01 * (l % 5) as f32);
+            let live = 0b1011_0110_1101_0111 & ((1u32 << LANES) - 1);
+            let mut seen = vec![0u32; points.len()];
+            tree.visit_within_lanes(&lanes, LaneF32::new(reach), live, |p, d2, within| {
+                let i = points.iter().position(|&x| x == p).unwrap();
+                let mask = within.to_bitmask();
+                assert_eq!(mask & !live, 0);
+                for (l, (reach, d2)) in reach.iter().zip(d2.to_array()).enumerate() {
+                    let inside = points[i].distance_squared(centre(l)) < reach * reach;
+                    assert_eq!(mask >> l & 1 != 0, inside && live >> l & 1 != 0);
+                    assert_eq!(d2, points[i].distance_squared(centre(l)));
+                }
+                seen[i] |= mask;
+                LaneF32::new(reach)
+            });
+            for (i, p) in points.iter().enumerate() {
+                let wanted = (0..LANES)
+                    .filter(|&l| live >> l & 1 != 0)
+                    .filter(|&l| p.distance_squared(centre(l)) < reach[l] * reach[l])
+                    .fold(0, |m, l| m | 1 << l);
+                assert_eq!(seen[i], wanted, "point {i}");
+            }
+            // A reach that shrinks to a tenth after the first point: every later point
+            // visited is within it.
+            let mut first = true;
+            tree.visit_within_lanes(&lanes, LaneF32::new(reach), live, |_, d2, within| {
+                if !first {
+                    let small = LaneF32::new(reach) * LaneF32::splat(0.1);
+                    let ok = d2.simd_lt(small * small).to_bitmask();
+                    assert_eq!(within.to_bitmask() & !ok, 0);
+                }
+                first = false;
+                LaneF32::new(reach) * LaneF32::splat(0.1)
+            });
         }
     }
 }
