@@ -10,7 +10,7 @@ use proptest::prelude::*;
 use std::cell::Cell;
 
 use crate::arm_cases;
-use arm_cases::{HOME, edge, obstacle, panda, reference_hit, tab_scene};
+use arm_cases::{Graze, HOME, edge, graze, obstacle, panda, reference_hit, tab_scene};
 
 fn certify(
     checker: &ArmChecker,
@@ -224,22 +224,10 @@ proptest! {
         turn in 0.0..std::f64::consts::TAU,
     ) {
         let robot = panda();
-        let fk = mit_star_robot::Kinematics::new(&robot);
-        let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
-        let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
-        let q = |t: f64| -> Vec<f64> { a.iter().zip(&b).map(|(x, y)| x + (y - x) * t).collect() };
-        let e = 1e-6;
-        fk.sphere_centers_f64(&q(at + e), &mut links, &mut centres);
-        let ahead = centres.clone();
-        fk.sphere_centers_f64(&q(at), &mut links, &mut centres);
-        let i = pick % centres.len();
-        let (c, r) = centres[i];
-        let velocity = (ahead[i].0 - c) / e;
-        prop_assume!(velocity.length() > 0.05);
-        // A direction across the motion.
-        let u = velocity.normalize();
-        let side = u.any_orthonormal_vector();
-        let across = side * turn.cos() + u.cross(side) * turn.sin();
+        let graze = graze(&robot, (&a, &b), at, pick, turn);
+        prop_assume!(graze.is_some());
+        let Graze { centres, index, across } = graze.unwrap();
+        let (c, r) = centres[index];
         let radius = 0.04;
         let ball = Obstacle::new(
             Shape::Sphere { radius },

@@ -12,11 +12,7 @@ use mit_star_spaces::{Never, SeededRng, StateSpace};
 use mit_star_validity::{EdgeStatus, MotionProgress, StateValidity};
 use proptest::prelude::*;
 
-const HOME: [f64; 7] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
-
-fn panda() -> RobotModel {
-    ArmProblem::panda().unwrap()
-}
+use crate::arm_cases::{Graze, HOME, edge, graze, panda};
 
 /// The surfaces of `boxes` boxes in front of the Panda, sampled at about `density` points a
 /// box (a camera's view of a cluttered table, from a seed).
@@ -177,7 +173,7 @@ proptest! {
     /// into the path is never certified.
     #[test]
     fn grazing_points_are_judged_exactly(
-        seed in any::<u64>(),
+        (a, b) in edge(),
         at in 0.15..0.85_f64,
         depth in prop_oneof![-1e-3..4e-3_f64, 0.0..1e-4_f64],
         pick in 0..1000_usize,
@@ -185,34 +181,15 @@ proptest! {
         spacing in 0.002..0.02_f64,
     ) {
         let robot = panda();
-        let mut rng = <SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(seed);
-        let a = random_state(&robot, &mut rng);
-        let mut b = random_state(&robot, &mut rng);
-        let length = mit_star_spaces::euclidean_distance(&a, &b);
-        if length > 1.0 {
-            for (x, y) in b.iter_mut().zip(&a) {
-                *x = y + (*x - y) / length;
-            }
-        }
-        let fk = mit_star_robot::Kinematics::new(&robot);
-        let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
-        let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
-        let q = |t: f64| -> Vec<f64> { a.iter().zip(&b).map(|(x, y)| x + (y - x) * t).collect() };
-        let e = 1e-6;
-        fk.sphere_centers_f64(&q(at + e), &mut links, &mut centres);
-        let ahead = centres.clone();
-        fk.sphere_centers_f64(&q(at), &mut links, &mut centres);
-        let i = pick % centres.len();
-        let (c, r) = centres[i];
-        let velocity = (ahead[i].0 - c) / e;
-        prop_assume!(velocity.length() > 0.05);
-        let u = velocity.normalize();
-        let side = u.any_orthonormal_vector();
-        let across = side * turn.cos() + u.cross(side) * turn.sin();
+        let graze = graze(&robot, (&a, &b), at, pick, turn);
+        prop_assume!(graze.is_some());
+        let Graze { centres, index, across } = graze.unwrap();
+        let (c, r) = centres[index];
         // The patch: a disc of 3 cm in the plane tangent to the sphere (grown by `depth` and
         // the points' radius) across the motion; its centre is its point nearest the sphere.
         let nearest = c + across * (r + PointCloud::DEFAULT_RADIUS + depth);
-        let (v, w) = (across.any_orthonormal_vector(), across.cross(across.any_orthonormal_vector()));
+        let v = across.any_orthonormal_vector();
+        let w = across.cross(v);
         let steps = (0.03 / spacing) as i32;
         let mut points = Vec::new();
         for j in -steps..=steps {
@@ -222,13 +199,16 @@ proptest! {
                 // Only where the grazing sphere is the nearest to the point at `at` (others of
                 // the link bulge towards the plane elsewhere).
                 let own = p.distance(c) - r;
-                let others = centres.iter().enumerate().filter(|&(j, _)| j != i);
-                if offset.length() <= 0.03 && others.clone().all(|(_, s)| p.distance(s.0) - s.1 > own) {
+                let nearest_sphere = centres
+                    .iter()
+                    .enumerate()
+                    .all(|(s, &(centre, radius))| s == index || p.distance(centre) - radius > own);
+                if offset.length() <= 0.03 && nearest_sphere {
                     points.push(p.as_vec3());
                 }
             }
         }
-        // The point nearest the sphere is kept (the disc's centre, first of its row).
+        // The disc's centre, the point nearest the sphere, is kept.
         prop_assume!(points.contains(&nearest.as_vec3()));
         let scene = cloud_scene(points);
         let checker = ArmChecker::new(&robot, &scene);

@@ -157,8 +157,7 @@ pub(crate) fn certified_radii(
             // How far the link's spheres move over a piece of the lane's radius so far, by the
             // bounds that hold whatever the direction of motion: a sphere clear by this (and
             // twice the floor) cannot lower the radius.
-            let limit =
-                (radius * speed + radius * radius * second).min(radius * sweep) + floor + floor;
+            let limit = m.sweep_over(radius, sweep) + floor + floor;
             let outer = limit + keep + r;
             if excess.simd_lt(outer * outer).to_bitmask() & live == 0 {
                 continue;
@@ -215,8 +214,7 @@ pub(crate) fn certified_radii(
                     margin,
                 )
             });
-            let limit =
-                (radius * m.speed + radius * radius * m.second).min(radius * sweep) + floor + floor;
+            let limit = m.sweep_over(radius, sweep) + floor + floor;
             if lower.simd_lt(limit + keep + r).to_bitmask() & live == 0 {
                 continue;
             }
@@ -266,12 +264,7 @@ pub(crate) fn certified_radii(
                         let piece = reach(clear, m.speed, m.second, sweep_k).max(directional);
                         radius = radius.min(within.bitselect(piece, infinite));
                     }
-                    (radius * m.speed + radius * radius * m.second).min(radius * sweep)
-                        + floor
-                        + floor
-                        + keep
-                        + own
-                        + floor
+                    m.sweep_over(radius, sweep) + floor + floor + keep + own + floor
                 });
             }
         }
@@ -337,6 +330,16 @@ struct LinkMotion {
     second: LaneF32,
     acceleration: LaneF32,
     slack: LaneF32,
+}
+
+impl LinkMotion {
+    /// How far the link's spheres move over a piece of radius `radius` (per lane), by the
+    /// bounds that hold whatever the direction of motion: the local sweep bound, or the
+    /// lever-arm one (`sweep`, the link's over the whole edge) where that is smaller.
+    #[inline]
+    fn sweep_over(&self, radius: LaneF32, sweep: LaneF32) -> LaneF32 {
+        (radius * self.speed + radius * radius * self.second).min(radius * sweep)
+    }
 }
 
 /// Link entry `k`'s motion at the lanes' configurations (its poses and bounding centre

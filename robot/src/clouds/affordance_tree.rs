@@ -351,12 +351,7 @@ mod tests {
     /// brute force's, the batched ones too, and a reach beyond the bound is refused.
     #[test]
     fn queries_are_brute_force() {
-        let points: Vec<Vec3> = (0..1000)
-            .map(|i| {
-                let f = i as f32;
-                Vec3::new((f * 0.37).sin(), (f * 0.71).cos(), (f * 0.13).sin() * 0.5)
-            })
-            .collect();
+        let points = crate::clouds::point_tree::curve_points(1000);
         let tree = AffordanceTree::new_polled(
             &crate::PointTree::new(&points),
             0.2,

@@ -204,8 +204,9 @@ impl CloudObstacle {
         live: u32,
     ) -> LaneF32 {
         let r = LaneF32::splat(self.radius);
-        let widened = limit * LaneF32::splat(WIDER) + r * LaneF32::splat(WIDER - 1.0);
-        self.tree.lower_bounds_lanes(point, widened + r, live) - r
+        self.tree
+            .lower_bounds_lanes(point, widened_lanes(limit, r) + r, live)
+            - r
     }
 
     /// Calls `visit` for each point whose ball may lie within `limit` of the centre of a lane
@@ -224,11 +225,12 @@ impl CloudObstacle {
         mut visit: impl FnMut(LaneF32, [LaneF32; 3], LaneF32) -> LaneF32,
     ) {
         let r = LaneF32::splat(self.radius);
-        let widen =
-            |limit: LaneF32| limit * LaneF32::splat(WIDER) + r * LaneF32::splat(WIDER - 1.0) + r;
         let [x, y, z] = *center;
-        self.tree
-            .visit_within_lanes(center, widen(limit), live, |p, d2, within| {
+        self.tree.visit_within_lanes(
+            center,
+            widened_lanes(limit, r) + r,
+            live,
+            |p, d2, within| {
                 let d = d2.sqrt();
                 let inverse = LaneF32::ONE / d.max(LaneF32::splat(f32::MIN_POSITIVE));
                 let direction = [
@@ -237,8 +239,9 @@ impl CloudObstacle {
                     (z - LaneF32::splat(p.z)) * inverse,
                 ];
                 let ball = d * LaneF32::splat(crate::clouds::point_tree::LOWER) - r;
-                widen(visit(ball, direction, within))
-            });
+                widened_lanes(visit(ball, direction, within), r) + r
+            },
+        );
     }
 
     /// The point whose ball is nearest `point`, in `f64` by brute force over every point
@@ -270,10 +273,16 @@ const AFFORDED_LANES: u32 = 4;
 /// knows the cloud is that far.
 const WIDER: f32 = 1.0 + 1e-5;
 
-/// `limit` widened by [`WIDER`] (the lane version's arithmetic, one lane).
+/// `limit` widened by [`WIDER`] (the arithmetic of [`widened_lanes`], one lane).
 #[inline]
 fn widened(limit: f32, r: f32) -> f32 {
     limit * WIDER + r * (WIDER - 1.0)
+}
+
+/// [`widened`], a lane at a time.
+#[inline]
+fn widened_lanes(limit: LaneF32, r: LaneF32) -> LaneF32 {
+    limit * LaneF32::splat(WIDER) + r * LaneF32::splat(WIDER - 1.0)
 }
 
 /// Up to [`LANES`] points as lanes (padding lanes repeat the first), and the lanes in use.

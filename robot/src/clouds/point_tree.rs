@@ -553,6 +553,18 @@ impl Walk {
     }
 }
 
+/// `n` points on a jittered curve about the origin (within a unit box): the point queries'
+/// test cloud.
+#[cfg(test)]
+pub(crate) fn curve_points(n: usize) -> Vec<Vec3> {
+    (0..n)
+        .map(|i| {
+            let f = i as f32;
+            Vec3::new((f * 0.37).sin(), (f * 0.71).cos(), (f * 0.13).sin() * 0.5)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -560,12 +572,7 @@ mod tests {
     /// Points on a jittered grid, and queries around them: every answer is brute force's.
     #[test]
     fn queries_are_brute_force() {
-        let points: Vec<Vec3> = (0..1000)
-            .map(|i| {
-                let f = i as f32;
-                Vec3::new((f * 0.37).sin(), (f * 0.71).cos(), (f * 0.13).sin() * 0.5)
-            })
-            .collect();
+        let points = curve_points(1000);
         let tree = PointTree::new(&points);
         assert_eq!(tree.len(), 1000);
         for q in 0..300 {
@@ -593,12 +600,7 @@ mod tests {
     #[test]
     fn the_visit_meets_every_point_within_reach() {
         use crate::lane_f32::LANES;
-        let points: Vec<Vec3> = (0..2000)
-            .map(|i| {
-                let f = i as f32;
-                Vec3::new((f * 0.37).sin(), (f * 0.71).cos(), (f * 0.13).sin() * 0.5)
-            })
-            .collect();
+        let points = curve_points(2000);
         let tree = PointTree::new(&points);
         for q in 0..40 {
             let centre = |l: usize| {

@@ -126,6 +126,48 @@ pub(crate) fn edge() -> impl Strategy<Value = (Vec<f64>, Vec<f64>)> {
         })
 }
 
+/// Where a test places an obstacle to graze the edge `a → b`: at the fraction `at` of it, the
+/// sphere `index` and a unit direction `across` its motion there.
+pub(crate) struct Graze {
+    /// Every sphere's centre and radius at `at`.
+    pub(crate) centres: Vec<(DVec3, f64)>,
+    pub(crate) index: usize,
+    pub(crate) across: DVec3,
+}
+
+/// The graze of sphere `pick` (modulo the number of spheres) at the fraction `at` of `a → b`,
+/// its direction across the motion turned by `turn` about it; `None` where that sphere moves
+/// less than 5 cm per unit of the edge (its direction of motion is then ill-defined).
+pub(crate) fn graze(
+    robot: &RobotModel,
+    (a, b): (&[f64], &[f64]),
+    at: f64,
+    pick: usize,
+    turn: f64,
+) -> Option<Graze> {
+    let fk = mit_star_robot::Kinematics::new(robot);
+    let mut links = vec![glam::DAffine3::IDENTITY; fk.link_count()];
+    let mut centres = vec![(DVec3::ZERO, 0.0); fk.sphere_count()];
+    let q = |t: f64| -> Vec<f64> { a.iter().zip(b).map(|(x, y)| x + (y - x) * t).collect() };
+    let e = 1e-6;
+    fk.sphere_centers_f64(&q(at + e), &mut links, &mut centres);
+    let ahead = centres.clone();
+    fk.sphere_centers_f64(&q(at), &mut links, &mut centres);
+    let index = pick % centres.len();
+    let velocity = (ahead[index].0 - centres[index].0) / e;
+    if velocity.length() <= 0.05 {
+        return None;
+    }
+    let u = velocity.normalize();
+    let side = u.any_orthonormal_vector();
+    let across = side * turn.cos() + u.cross(side) * turn.sin();
+    Some(Graze {
+        centres,
+        index,
+        across,
+    })
+}
+
 /// Problem 1 of the MotionBenchMaker folder `scene` (in `tests/data/mbm`) and RRT-Connect's
 /// first path on it (range 1, seeded), within 10 s.
 pub(crate) fn first_mbm_path(scene: &str, seed: u64) -> (ArmProblem, Vec<Vec<f64>>) {
