@@ -19,7 +19,8 @@
 //! asking only whether any of the batch is invalid,
 //! and batched over valid configurations only. Run it under `perf record` for
 //! the shares of kinematics, sphere tests, nearest neighbours and bookkeeping
-//! (`ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
+//! (`robot=ur5` or `robot=fetch` plans that shipped robot's problems of the seven scenes, read
+//! from `FOLDER/<scene>_<robot>`; `ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
 //! per-configuration table; `ARM_PROFILE_AUDIT=1` audits every path with parry between runs,
 //! as the benchmark harness does; `ARM_PROFILE_TIME=30` gives each solve 30 s instead of 1 s,
 //! so that under valgrind no solve is cut short by its deadline; `ARM_PROFILE_CSV=FILE` writes
@@ -40,7 +41,7 @@ use mit_star_validity::StateValidity;
 
 #[path = "support/mbm_scenes.rs"]
 mod mbm_scenes;
-use mbm_scenes::{SCENES, median, problems};
+use mbm_scenes::{SCENES, SEVEN_SCENES, median, problems_of};
 #[path = "support/parameter_switches.rs"]
 mod parameter_switches;
 use parameter_switches::set_parameter;
@@ -60,8 +61,25 @@ fn main() {
     // Then parameters as `name=value` (`rrt_balance=false`, `lazy_certification=false`,
     // `sparse_initial_steps=4`, `connection=k-nearest`, …).
     let mut base = Parameters::default();
+    let mut robot = (
+        "panda".to_owned(),
+        mit_star_robot::ArmProblem::panda().expect("the shipped Panda loads"),
+    );
+    let mut scenes: Vec<String> = SCENES.iter().map(|s| (*s).to_owned()).collect();
     for setting in args {
         let (name, value) = setting.split_once('=').expect("name=value");
+        if name == "robot" {
+            let shipped = mit_star_robot::ShippedRobot::find(value).expect("a shipped robot");
+            robot = (
+                value.to_owned(),
+                shipped.model(false).expect("its files load"),
+            );
+            scenes = SEVEN_SCENES
+                .iter()
+                .map(|s| format!("{s}_{value}"))
+                .collect();
+            continue;
+        }
         assert!(
             set_parameter(&mut base, name, value),
             "unknown parameter {name}"
@@ -89,11 +107,13 @@ fn main() {
     let mut setups = Vec::new();
     let mut first_problems = Vec::new();
     let only = std::env::var("ARM_PROFILE_SCENES").unwrap_or_default();
-    for scene in SCENES {
+    let suffix = format!("_{}", robot.0);
+    for scene in &scenes {
+        let scene = scene.as_str();
         if !only.is_empty() && !only.split(',').any(|s| scene.starts_with(s)) {
             continue;
         }
-        let problems = problems(&folder, scene, count);
+        let problems = problems_of(&robot.1, &folder, scene, count);
         if let Some((_, first)) = problems.first() {
             first_problems.push((scene, first.clone()));
         }
@@ -122,7 +142,7 @@ fn main() {
                 let c = planner.counters();
                 if let Some(file) = csv.as_mut() {
                     let solved = outcome.as_ref().is_ok_and(|o| o.solution().is_some());
-                    let name = scene.trim_end_matches("_panda");
+                    let name = scene.trim_end_matches(&suffix);
                     writeln!(
                         file,
                         "{name},{index},{},{t:.3},{},{},{},{},{}",
@@ -165,7 +185,7 @@ fn main() {
             rows.map(|mut r| median(&mut r));
         println!(
             "| {} | {n} | {t:.0} | {checks:.0} | {points:.0} | {certified:.0} | {queries:.0} | {iterations:.0} | {states:.0} | {per:.3} |",
-            scene.trim_end_matches("_panda")
+            scene.trim_end_matches(&suffix)
         );
     }
     println!(
@@ -242,7 +262,7 @@ fn main() {
         let all_valid = started.elapsed().as_secs_f64() * 1e9 / (5.0 * count as f64);
         println!(
             "| {} | {scalar:.0} | {batched:.0} | {:.2} | {any:.0} | {all_valid:.0} |",
-            scene.trim_end_matches("_panda"),
+            scene.trim_end_matches(&suffix),
             valid as f64 / 4096.0
         );
     }

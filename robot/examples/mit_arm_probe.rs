@@ -7,7 +7,8 @@
 //! ```
 //!
 //! Arguments as `anytime_arm`'s (folder, problems per scene, one configuration, seconds, then
-//! `key=value` parameters and `scenes=`). Prints per problem the first-solution time, the
+//! `key=value` parameters, `scenes=` and `robot=ur5|fetch` for another shipped robot's problems,
+//! read from `FOLDER/<scene>_<robot>`). Prints per problem the first-solution time, the
 //! cost at 10 ms, 100 ms and the end, the number of improvements, and the counters: batches,
 //! samples, vertices, pruned, reverse and forward iterations, reverse restarts and repairs,
 //! sparse and full checks, grid points tested, validity checks (sampler's apart) and
@@ -19,7 +20,7 @@ use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
 mod mbm_scenes;
 #[path = "support/parameter_switches.rs"]
 mod parameter_switches;
-use mbm_scenes::problems;
+use mbm_scenes::problems_of;
 use parameter_switches::set_parameter;
 
 fn main() {
@@ -29,11 +30,23 @@ fn main() {
     let name = args.next().unwrap_or_else(|| "mit-star".into());
     let seconds: f64 = args.next().map_or(1.0, |a| a.parse().expect("seconds"));
     let mut base = Parameters::default();
-    let mut scenes = vec!["cage_panda".to_owned()];
+    let mut scenes = vec!["cage".to_owned()];
+    let mut robot = (
+        "panda".to_owned(),
+        mit_star_robot::ArmProblem::panda().expect("the shipped Panda loads"),
+    );
     for setting in args {
         let (key, value) = setting.split_once('=').expect("key=value");
         if key == "scenes" {
-            scenes = value.split(',').map(|v| format!("{v}_panda")).collect();
+            scenes = value.split(',').map(str::to_owned).collect();
+            continue;
+        }
+        if key == "robot" {
+            let shipped = mit_star_robot::ShippedRobot::find(value).expect("a shipped robot");
+            robot = (
+                value.to_owned(),
+                shipped.model(false).expect("its files load"),
+            );
             continue;
         }
         assert!(set_parameter(&mut base, key, value), "unknown {key}");
@@ -43,7 +56,8 @@ fn main() {
         "scene idx first_ms c10 c100 cend line impr batches samples verts pruned rev_it fwd_it restarts repairs sparse full points vchecks smp_checks nn"
     );
     for scene in &scenes {
-        for (index, problem) in problems(&folder, scene, count) {
+        let folder_name = format!("{scene}_{}", robot.0);
+        for (index, problem) in problems_of(&robot.1, &folder, &folder_name, count) {
             let parameters = Parameters {
                 seed: index as u64,
                 range: base.range.or(matches!(
@@ -85,7 +99,7 @@ fn main() {
             };
             println!(
                 "{} {index} {:.3} {:.3} {:.3} {:.3} {:.3} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {}",
-                scene.trim_end_matches("_panda"),
+                scene,
                 trace.initial().map_or(f64::INFINITY, |p| p.time * 1e3),
                 trace.cost_at(0.01),
                 trace.cost_at(0.1),

@@ -38,6 +38,7 @@ mod reverse_repair_on_arms;
 mod rrt_range_on_arms;
 mod scenes;
 mod searched_cover;
+mod self_grazes;
 mod short_slices;
 mod simplified_arm_paths;
 mod solution_samples_on_arms;

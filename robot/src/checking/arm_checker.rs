@@ -9,6 +9,7 @@ use mit_star_validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateV
 
 use wide::f64x4;
 
+use crate::checking::clearance::LinkMotion;
 use crate::checking::lanes::{LANES, LaneF32, LaneKinematics, LanePoint, LanePose};
 use crate::checking::local_sweep::LocalSweep;
 use crate::checking::obstacle_grid::{Candidates, GRID_THRESHOLD, ObstacleGrid, widest};
@@ -106,6 +107,9 @@ pub(crate) struct LaneScratch {
     /// The obstacles a link's grid returned (indices into its reachable list), with room for
     /// the longest list that has a grid: a query never allocates.
     pub(crate) candidates: Candidates,
+    /// Per link entry, its motion at the batch's configurations once certification has
+    /// computed it (reset per batch): obstacles and self-collision pairs share it.
+    pub(crate) motions: Vec<Option<LinkMotion>>,
 }
 
 impl LaneScratch {
@@ -126,6 +130,7 @@ impl LaneScratch {
             lane_q: vec![LaneF32::ZERO; dimension],
             last_hit: usize::MAX,
             candidates: Candidates::with_capacity(candidates),
+            motions: vec![None; entries],
         }
     }
 }
@@ -634,6 +639,7 @@ fn invalid_filled(
         lane_q,
         last_hit,
         candidates,
+        ..
     } = scratch;
     let undecided = |invalid: u32| undecided(invalid, live, wanted);
     let mut active = undecided(invalid);

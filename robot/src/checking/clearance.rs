@@ -34,7 +34,14 @@
 //! A self-collision pair `(a, b)` only moves apart
 //! or together through the joints above one link and not the other (those above both carry
 //! the two rigidly): with `S_ab` the lever-arm sweep of those joints over the edge, the piece
-//! is clear for the pair while `h · S_ab ≤ c_ab`, the pair's clearance less two margins. The
+//! is clear for the pair while `h · S_ab ≤ c_ab`, the pair's clearance less two margins. That
+//! bound too ignores the direction: the UR5's base and upper arm stay about 2 mm apart as its
+//! shoulder turns, and it cut every edge into pieces of a fiftieth of a degree. So each pair
+//! of spheres `(s, s')` is also judged as a sphere against a ball (convex): their centres'
+//! difference `r` moves at `v_s − v_s'` and accelerates at most `Acc_a + Acc_b`, so they stay
+//! clear while `h · |n · (v_s − v_s')| + h² · (Acc_a + Acc_b) / 2 ≤ c_ss'`, `n = r / |r|`,
+//! with both links' slacks and speeds added, and the direction's error doubled (two centres,
+//! each placed within `δ`). The pair of spheres gets the larger of the two radii. The
 //! lane's radius is the smallest of its links', its spheres' and its pairs' radii, each
 //! solved in closed form and rounded down.
 //!
@@ -89,9 +96,11 @@ pub(crate) fn certified_radii(
         placed,
         lane_q,
         candidates,
+        motions,
         ..
     } = lanes;
     s.lanes.link_poses(lane_q, lane_poses);
+    motions.fill(None);
     for (bound, (link, _, center, _)) in lane_bounds.iter_mut().zip(&s.links) {
         *bound = lane_poses[*link].point(*center);
     }
@@ -106,9 +115,9 @@ pub(crate) fn certified_radii(
     for (k, (_, range, _, bound_radius)) in s.links.iter().enumerate() {
         let sweep = LaneF32::splat(edge.sweep[k] as f32);
         let r = LaneF32::splat(*bound_radius);
-        // The link's motion at the lanes' configurations, computed when a first obstacle
-        // comes near enough to need it (a link near none needs no more than the tests below).
-        let mut moving: Option<LinkMotion> = None;
+        // The link's motion at the lanes' configurations (`motions[k]`), computed when a
+        // first obstacle comes near enough to need it (a link near none needs no more than
+        // the tests below).
         let mut nearest = LaneF32::splat(f32::INFINITY);
         // Obstacles out of the link's reach in every configuration cannot limit its radius.
         // Among many, only those the grid finds within the loosest bound below of a lane
@@ -138,15 +147,13 @@ pub(crate) fn certified_radii(
             if excess.simd_lt(loose * loose).to_bitmask() & live == 0 {
                 continue;
             }
-            let m = *moving.get_or_insert_with(|| {
-                link_motion(
-                    s,
-                    k,
-                    (&lane_poses[..], &lane_bounds[k]),
-                    (edge, &mut *terms),
-                    margin,
-                )
-            });
+            let m = motion_of(
+                s,
+                k,
+                (lane_poses, lane_bounds),
+                (edge, terms),
+                (motions, margin),
+            );
             let LinkMotion {
                 speed,
                 motion: LaneMotion { velocity, angular },
@@ -205,15 +212,13 @@ pub(crate) fn certified_radii(
             if lower.simd_lt(loose).to_bitmask() & live == 0 {
                 continue;
             }
-            let m = *moving.get_or_insert_with(|| {
-                link_motion(
-                    s,
-                    k,
-                    (&lane_poses[..], &lane_bounds[k]),
-                    (edge, &mut *terms),
-                    margin,
-                )
-            });
+            let m = motion_of(
+                s,
+                k,
+                (lane_poses, lane_bounds),
+                (edge, terms),
+                (motions, margin),
+            );
             let limit = m.sweep_over(radius, sweep) + floor + floor;
             if lower.simd_lt(limit + keep + r).to_bitmask() & live == 0 {
                 continue;
@@ -274,45 +279,79 @@ pub(crate) fn certified_radii(
         let (la, lb) = (&s.links[a], &s.links[b]);
         // Joints above both links move them rigidly together: only the pair's relative sweep
         // counts.
-        let sweep = edge.pair_sweep[p] as f32;
+        let pair_sweep = edge.pair_sweep[p] as f32;
+        let sweep = LaneF32::splat(pair_sweep);
         let margins = margin + margin;
-        // As for the links: clear by the sweep over a piece of the lane's radius so far, the
-        // pair limits nothing.
-        let mut best = radius * LaneF32::splat(sweep) + floor + floor + margins;
+        // As for the links: clear by the sweep over a piece of the lane's radius so far (and
+        // twice the floor), a pair of spheres limits nothing.
+        let limit = |radius: LaneF32| radius * sweep + floor + floor + margins;
         let reach_ab = LaneF32::splat(la.3 + lb.3);
-        if closer(&lane_bounds[a], &lane_bounds[b], best + reach_ab) & live == 0 {
-            // Clear by more than that in every lane (twice the floor more): neither the
-            // radius nor a refusal can come from this pair.
+        if closer(&lane_bounds[a], &lane_bounds[b], limit(radius) + reach_ab) & live == 0 {
+            // Clear by more than that in every lane: neither the radius nor a refusal can
+            // come from this pair.
             continue;
         }
         for k in [a, b] {
             place_link(s, k, lane_poses, lane_centers, placed);
         }
+        let ma = motion_of(
+            s,
+            a,
+            (lane_poses, lane_bounds),
+            (edge, terms),
+            (motions, margin),
+        );
+        let mb = motion_of(
+            s,
+            b,
+            (lane_poses, lane_bounds),
+            (edge, terms),
+            (motions, margin),
+        );
+        // Judged by their rate of approach as a sphere against a convex solid, with the two
+        // links' accelerations, slacks and speeds added (the relative motion's bounds), and
+        // the direction's error doubled (both centres placed within the margin).
+        let acceleration = ma.acceleration + mb.acceleration;
+        let slack = ma.slack + mb.slack;
+        let speed = ma.speed + mb.speed;
         let (spheres_a, spheres_b) = (&s.spheres[la.1.clone()], &s.spheres[lb.1.clone()]);
         let (centers_a, centers_b) = (&lane_centers[la.1.clone()], &lane_centers[lb.1.clone()]);
-        let bound_b = &lane_bounds[b];
+        let (bound_a, bound_b) = (&lane_bounds[a], &lane_bounds[b]);
+        let mut nearest = LaneF32::splat(f32::INFINITY);
         for (ca, sa) in centers_a.iter().zip(spheres_a) {
             let ri = sa.1;
-            if closer(ca, bound_b, best + LaneF32::splat(ri + lb.3)) & live == 0 {
+            if closer(ca, bound_b, limit(radius) + LaneF32::splat(ri + lb.3)) & live == 0 {
                 continue;
             }
+            let va = centre_velocity(&ma.motion, ca, bound_a);
             for (cb, sb) in centers_b.iter().zip(spheres_b) {
                 let reach = LaneF32::splat(ri + sb.1);
-                // No square root where no lane's gap could be below the best so far.
-                if closer(ca, cb, best + reach) & live == 0 {
+                // No square root where no lane's gap could lower the radius.
+                if closer(ca, cb, limit(radius) + reach) & live == 0 {
                     continue;
                 }
-                best = best.min(distance_squared(ca, cb).sqrt() - reach);
+                let apart = [ca[0] - cb[0], ca[1] - cb[1], ca[2] - cb[2]];
+                let distance = distance_squared(ca, cb).sqrt();
+                let gap = distance - reach;
+                nearest = nearest.min(gap);
+                let clear = gap - margins;
+                let linear = if pair_sweep > 0.0 {
+                    clear.max(LaneF32::ZERO) / sweep
+                } else {
+                    LaneF32::splat(f32::INFINITY)
+                };
+                let vb = centre_velocity(&mb.motion, cb, bound_b);
+                let rate = (apart[0] * (va[0] - vb[0])
+                    + apart[1] * (va[1] - vb[1])
+                    + apart[2] * (va[2] - vb[2]))
+                    / distance.max(margins);
+                let aim = margins * LaneF32::splat(4.0) / (distance - margins).max(margin);
+                let approach = rate.abs() + slack + aim * speed;
+                let directional = reach_approaching(clear, approach, acceleration);
+                radius = radius.min(linear.max(directional));
             }
         }
-        let clear = best - margins;
-        refused |= clear.simd_lt(floor).to_bitmask() & live;
-        let linear = if sweep > 0.0 {
-            clear.max(LaneF32::ZERO) / LaneF32::splat(sweep)
-        } else {
-            LaneF32::splat(f32::INFINITY)
-        };
-        radius = radius.min(linear);
+        refused |= (nearest - margins).simd_lt(floor).to_bitmask() & live;
     }
     let radius = radius.to_array();
     let radii = std::array::from_fn(|l| f64::from(radius[l]) * (1.0 - 1e-4));
@@ -323,8 +362,8 @@ pub(crate) fn certified_radii(
 /// (the local sweep's first-order term), how its bounding centre moves and turns, the
 /// second-order term and acceleration bound of the edge, and the rounding a computed rate of
 /// approach may miss.
-#[derive(Clone, Copy)]
-struct LinkMotion {
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LinkMotion {
     speed: LaneF32,
     motion: LaneMotion,
     second: LaneF32,
@@ -365,6 +404,21 @@ fn link_motion(
         slack: speed * LaneF32::splat(DIRECTION_ROUNDING)
             + margin * LaneF32::splat(4.0 * terms.rates(k) as f32),
     }
+}
+
+/// Link entry `k`'s motion at the batch's configurations: `motions[k]`, computed by
+/// [`link_motion`] the first time the batch needs it.
+#[inline]
+fn motion_of(
+    s: &Shared,
+    k: usize,
+    (lane_poses, lane_bounds): (&[crate::checking::lanes::LanePose], &[LanePoint]),
+    (edge, terms): (&EdgeBounds<'_>, &mut EdgeTerms),
+    (motions, margin): (&mut [Option<LinkMotion>], LaneF32),
+) -> LinkMotion {
+    *motions[k].get_or_insert_with(|| {
+        link_motion(s, k, (lane_poses, &lane_bounds[k]), (edge, terms), margin)
+    })
 }
 
 /// The velocity of a sphere centre `c` of a link whose bounding centre `bound` moves and
