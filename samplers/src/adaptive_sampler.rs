@@ -3,7 +3,7 @@
 use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::StateValidity;
 
-use crate::sampling_steps::InformedDraws;
+use crate::sampling_steps::{GaussianPartners, InformedDraws, Partner};
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, Sampler, SamplerCounters,
     SamplerError, SegmentSearch,
@@ -17,6 +17,8 @@ use crate::{
 ///    [`CostBound::Solution`] (case 4).
 /// 2. If `x_pre` is valid, return it.
 /// 3. Else draw `x_temp ~ N(x_pre, δ² I)` clamped into the bounds; if it is valid, return it.
+///    (Candidates are drawn and checked a batch of the checker at a time, and so are the
+///    `x_temp` of a batch's invalid ones: each drawn from its own `x_pre`, the same in law.)
 /// 4. Else search the segment `x_pre → x_temp` in bisection order (midpoint, quarter points, …)
 ///    for at most `bridge_checks` points and return the first valid one.
 /// 5. Else start over.
@@ -47,6 +49,8 @@ pub struct AdaptiveSampler {
     draws: InformedDraws,
     step: GaussianStep,
     search: SegmentSearch,
+    /// The `x_temp` of a batch's invalid candidates, drawn and checked together.
+    partners: GaussianPartners,
     /// Scratch: `x_pre` once found invalid, and `x_temp`.
     pre: Vec<f64>,
     temp: Vec<f64>,
@@ -72,6 +76,7 @@ impl AdaptiveSampler {
             draws,
             step: GaussianStep::for_space(space)?,
             search: SegmentSearch::new(Self::DEFAULT_BRIDGE_CHECKS)?,
+            partners: GaussianPartners::default(),
             pre: vec![0.0; n],
             temp: vec![0.0; n],
         })
@@ -133,11 +138,30 @@ where
                 return self.draws.returned();
             }
             self.pre.copy_from_slice(out);
-            self.draws
-                .perturb(&self.step, space, &self.pre, &mut self.temp);
-            if !self.draws.set.contains(space, cost, &self.temp) {
-                self.draws.reject();
-            } else if self.draws.check(validity, &self.temp) {
+            // `x_temp`: drawn with the batch's other invalid candidates' and checked with
+            // them, or alone where no batch holds `x_pre`.
+            let parts = (&self.step, space, validity);
+            let valid = match self
+                .draws
+                .partner(&mut self.partners, parts, cost, &mut self.temp)
+            {
+                Some(Partner::Checked(valid)) => valid,
+                Some(Partner::Outside) => {
+                    self.draws.reject();
+                    false
+                }
+                Some(Partner::None) | None => {
+                    self.draws
+                        .perturb(&self.step, space, &self.pre, &mut self.temp);
+                    if self.draws.set.contains(space, cost, &self.temp) {
+                        self.draws.check(validity, &self.temp)
+                    } else {
+                        self.draws.reject();
+                        false
+                    }
+                }
+            };
+            if valid {
                 out.copy_from_slice(&self.temp);
                 self.draws.own_counters().gaussian_valid += 1;
                 self.draws.origin = SampleOrigin::Gaussian;

@@ -5,7 +5,7 @@ use mit_star_spaces::{SeededRng, StateSpace, Stop};
 use mit_star_validity::StateValidity;
 use rand::SeedableRng;
 
-use super::Lookahead;
+use super::{GaussianPartners, Lookahead, Partner, PartnerDraw};
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, SamplerCounters, SamplerError,
     SegmentSearch,
@@ -125,6 +125,41 @@ impl InformedDraws {
     /// Drops the candidates drawn ahead (what they were drawn from changed).
     pub(crate) fn clear_ahead(&mut self) {
         self.ahead.clear();
+    }
+
+    /// The Gaussian partner of the candidate [`draw_checked`](Self::draw_checked) returned
+    /// last, drawn under `cost` with `step` ([`GaussianPartners::partner`]: the first call for
+    /// a batch draws and checks the partners of its invalid candidates together), written
+    /// into `out`; `None` where the batch does not hold it (then draw one with
+    /// [`perturb`](Self::perturb)).
+    pub(crate) fn partner<S, V>(
+        &mut self,
+        partners: &mut GaussianPartners,
+        (step, space, validity): (&GaussianStep, &S, &V),
+        cost: Option<f64>,
+        out: &mut [f64],
+    ) -> Option<Partner>
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        let Self {
+            set,
+            rng,
+            counters,
+            ahead,
+            ..
+        } = self;
+        let draw = PartnerDraw {
+            step,
+            space,
+            validity,
+            set,
+            cost,
+            rng,
+            counters,
+        };
+        partners.partner(ahead.batch(out.len()), ahead.last_index(), draw, out)
     }
 
     /// Writes a Gaussian neighbour of `from` into `to` and counts it as drawn.

@@ -35,6 +35,9 @@ pub(crate) struct Lookahead {
     next: usize,
     /// The cost bound they were drawn under, as bits (`None`: unbounded).
     drawn_under: Option<u64>,
+    /// How many batches have been drawn: names the batch held, for what a sampler keeps
+    /// about its candidates (their Gaussian partners).
+    generation: u64,
 }
 
 impl Lookahead {
@@ -72,6 +75,7 @@ impl Lookahead {
             || self.states.len() != MOST_BATCHED * dimension
         {
             self.clear();
+            self.generation += 1;
             self.states.resize(MOST_BATCHED * dimension, 0.0);
             self.drawn_under = under;
             let width = validity.batch_width().clamp(1, MOST_BATCHED);
@@ -97,6 +101,22 @@ impl Lookahead {
     /// was centred) finds it there.
     pub(crate) fn last_index(&self) -> usize {
         self.next.saturating_sub(1)
+    }
+
+    /// The batch held: its [generation](Self::generation) and its candidates in drawn order
+    /// (`dimension` coordinates each) with their validity. Empty without a batch (a dimension
+    /// of 0 draws none ahead).
+    pub(crate) fn batch(&self, dimension: usize) -> (u64, &[f64], &[bool]) {
+        let held = if self.states.len() == MOST_BATCHED * dimension && dimension > 0 {
+            self.held
+        } else {
+            0
+        };
+        (
+            self.generation,
+            &self.states[..held * dimension],
+            &self.valid[..held],
+        )
     }
 }
 

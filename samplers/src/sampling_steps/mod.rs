@@ -6,6 +6,8 @@
 //!   check, search a segment, count).
 //! - `lookahead.rs`: `Lookahead`, candidates drawn ahead and decided a checker's batch at a
 //!   time (the informed draws' and the uniform sampler's draw-and-check).
+//! - `gaussian_partners.rs`: `GaussianPartners`, the Gaussian neighbours of a lookahead batch's
+//!   invalid candidates, drawn and checked together (the adaptive sampler's repair).
 //! - [`GaussianStep`] (`gaussian_step.rs`): the Gaussian perturbation of the Gaussian,
 //!   bridge-test and adaptive samplers and of [`NearTerminals`](crate::NearTerminals).
 //! - [`SegmentSearch`] (`segment_search.rs`): a valid state on a segment, in bisection order —
@@ -16,11 +18,13 @@
 //! crates. Knows no sampler: used by the informed, Gaussian, bridge-test and adaptive samplers
 //! and by `wrappers`.
 
+mod gaussian_partners;
 mod gaussian_step;
 mod informed_draws;
 mod lookahead;
 mod segment_search;
 
+pub(crate) use gaussian_partners::{GaussianPartners, Partner, PartnerDraw};
 pub use gaussian_step::GaussianStep;
 pub(crate) use informed_draws::InformedDraws;
 pub(crate) use lookahead::{Lookahead, MOST_BATCHED};
