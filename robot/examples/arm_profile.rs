@@ -69,11 +69,7 @@ fn main() {
     for setting in args {
         let (name, value) = setting.split_once('=').expect("name=value");
         if name == "robot" {
-            let shipped = mit_star_robot::ShippedRobot::find(value).expect("a shipped robot");
-            robot = (
-                value.to_owned(),
-                shipped.model(false).expect("its files load"),
-            );
+            robot = mbm_scenes::shipped_robot(value);
             scenes = SEVEN_SCENES
                 .iter()
                 .map(|s| format!("{s}_{value}"))

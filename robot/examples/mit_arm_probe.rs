@@ -42,11 +42,7 @@ fn main() {
             continue;
         }
         if key == "robot" {
-            let shipped = mit_star_robot::ShippedRobot::find(value).expect("a shipped robot");
-            robot = (
-                value.to_owned(),
-                shipped.model(false).expect("its files load"),
-            );
+            robot = mbm_scenes::shipped_robot(value);
             continue;
         }
         assert!(set_parameter(&mut base, key, value), "unknown {key}");

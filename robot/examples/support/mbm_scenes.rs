@@ -52,6 +52,14 @@ pub(crate) fn problems_of(
         .collect()
 }
 
+/// The robot `robot=NAME` names for the arm examples: its name (the folders' suffix) and the
+/// shipped model.
+pub(crate) fn shipped_robot(name: &str) -> (String, RobotModel) {
+    let shipped = mit_star_robot::ShippedRobot::find(name).expect("a shipped robot");
+    let model = shipped.model(false).expect("its files load");
+    (name.to_owned(), model)
+}
+
 /// The median of `values` (sorted in place); NaN if there are none.
 pub(crate) fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
