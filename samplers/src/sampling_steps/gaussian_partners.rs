@@ -64,7 +64,7 @@ impl GaussianPartners {
         &mut self,
         (generation, candidates, valid): (u64, &[f64], &[bool]),
         index: usize,
-        draw: PartnerDraw<'_, S, V>,
+        mut draw: PartnerDraw<'_, S, V>,
         out: &mut [f64],
     ) -> Option<Partner>
     where
@@ -77,7 +77,7 @@ impl GaussianPartners {
         }
         if self.generation != Some(generation) {
             self.generation = Some(generation);
-            self.draw_all((candidates, valid), index, draw, dimension);
+            self.draw_all((candidates, valid), index, &mut draw, dimension);
         }
         let verdict = self.verdicts[index];
         if verdict != Partner::None {
@@ -92,21 +92,12 @@ impl GaussianPartners {
         &mut self,
         (candidates, valid): (&[f64], &[bool]),
         first: usize,
-        draw: PartnerDraw<'_, S, V>,
+        draw: &mut PartnerDraw<'_, S, V>,
         dimension: usize,
     ) where
         S: StateSpace + ?Sized,
         V: StateValidity + ?Sized,
     {
-        let PartnerDraw {
-            step,
-            space,
-            validity,
-            set,
-            cost,
-            rng,
-            counters,
-        } = draw;
         self.states.resize(MOST_BATCHED * dimension, 0.0);
         self.verdicts = [Partner::None; MOST_BATCHED];
         self.packed.clear();
@@ -116,9 +107,9 @@ impl GaussianPartners {
                 continue;
             }
             let partner = &mut self.states[i * dimension..(i + 1) * dimension];
-            step.perturb(space, rng, candidate, partner);
-            counters.drawn += 1;
-            if set.contains(space, cost, partner) {
+            draw.step.perturb(draw.space, draw.rng, candidate, partner);
+            draw.counters.drawn += 1;
+            if draw.set.contains(draw.space, draw.cost, partner) {
                 self.packed.extend_from_slice(partner);
                 self.packed_of.push(i);
             } else {
@@ -129,8 +120,9 @@ impl GaussianPartners {
         if count == 0 {
             return;
         }
-        validity.are_valid(&self.packed, dimension, &mut self.packed_valid[..count]);
-        counters.validity_checks += count as u64;
+        draw.validity
+            .are_valid(&self.packed, dimension, &mut self.packed_valid[..count]);
+        draw.counters.validity_checks += count as u64;
         for (&i, &ok) in self.packed_of.iter().zip(&self.packed_valid) {
             self.verdicts[i] = Partner::Checked(ok);
         }
@@ -140,34 +132,16 @@ impl GaussianPartners {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sampling_steps::test_checkers::RightHalf;
     use mit_star_spaces::RealVectorSpace;
     use rand::SeedableRng;
-
-    /// Valid when the first coordinate is at least one half; records the sizes of the batches
-    /// it was asked about.
-    struct RightHalf(std::cell::RefCell<Vec<usize>>);
-
-    impl StateValidity for RightHalf {
-        fn is_valid(&self, s: &[f64]) -> bool {
-            s[0] >= 0.5
-        }
-        fn batch_width(&self) -> usize {
-            8
-        }
-        fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
-            self.0.borrow_mut().push(states.len() / dimension);
-            for (s, v) in states.chunks_exact(dimension).zip(valid) {
-                *v = self.is_valid(s);
-            }
-        }
-    }
 
     #[test]
     fn the_invalid_candidates_from_the_first_asked_get_partners_checked_together() {
         let space = RealVectorSpace::cube(2, 0.0, 1.0).unwrap();
         let set = InformedSet::new(&space, &[0.1, 0.5], &[[0.9, 0.5]]).unwrap();
         let step = GaussianStep::new(0.3).unwrap();
-        let checker = RightHalf(Default::default());
+        let checker = RightHalf::new(8);
         let mut rng = SeededRng::seed_from_u64(7);
         let mut counters = SamplerCounters::default();
         // Five candidates: valid, invalid, invalid, valid, invalid.
@@ -211,11 +185,11 @@ mod tests {
             ask(&mut partners, &mut rng, &mut counters, 1, 5, &mut out),
             None
         );
-        assert_eq!(*checker.0.borrow(), [2]);
+        assert_eq!(checker.batches(), [2]);
         assert_eq!((counters.drawn, counters.validity_checks), (2, 2));
         // A new batch draws again.
         ask(&mut partners, &mut rng, &mut counters, 2, 0, &mut out).unwrap();
-        assert_eq!(*checker.0.borrow(), [2, 3]);
+        assert_eq!(checker.batches(), [2, 3]);
         assert_eq!((counters.drawn, counters.validity_checks), (5, 5));
     }
 }

@@ -123,29 +123,11 @@ impl Lookahead {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Valid when the first coordinate is at least one half; batches of four; records the
-    /// sizes of the batches it was asked about.
-    struct RightHalf(std::cell::RefCell<Vec<usize>>);
-
-    impl StateValidity for RightHalf {
-        fn is_valid(&self, s: &[f64]) -> bool {
-            s[0] >= 0.5
-        }
-        fn batch_width(&self) -> usize {
-            4
-        }
-        fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
-            self.0.borrow_mut().push(states.len() / dimension);
-            for (s, v) in states.chunks_exact(dimension).zip(valid) {
-                *v = self.is_valid(s);
-            }
-        }
-    }
+    use crate::sampling_steps::test_checkers::RightHalf;
 
     #[test]
     fn hands_out_candidates_in_drawn_order_a_batch_at_a_time() {
-        let checker = RightHalf(Default::default());
+        let checker = RightHalf::new(4);
         let mut ahead = Lookahead::default();
         let mut counter = 0.0;
         let mut draw = |x: &mut [f64]| {
@@ -165,7 +147,7 @@ mod tests {
         let expected = [0.25, 0.5, 0.75, 1.0, 1.25, 1.5];
         let want: Vec<_> = expected.iter().map(|&c| (c, c % 1.0 >= 0.5)).collect();
         assert_eq!(seen, want);
-        assert_eq!(*checker.0.borrow(), [4, 4]);
+        assert_eq!(checker.batches(), [4, 4]);
         assert_eq!(checks, 8);
         // The sixth candidate handed out was the second of the second batch's draws.
         assert_eq!(ahead.last_index(), 1);
@@ -173,7 +155,7 @@ mod tests {
 
     #[test]
     fn another_bound_drops_what_was_drawn_under_the_last() {
-        let checker = RightHalf(Default::default());
+        let checker = RightHalf::new(4);
         let mut ahead = Lookahead::default();
         let (mut checks, mut out) = (0, [0.0]);
         let mut draws = 0;
@@ -193,7 +175,7 @@ mod tests {
 
     #[test]
     fn a_failed_draw_ends_the_batch_and_is_met_again() {
-        let checker = RightHalf(Default::default());
+        let checker = RightHalf::new(4);
         let mut ahead = Lookahead::default();
         let (mut checks, mut out) = (0, [0.0]);
         let mut left = 2;

@@ -23,6 +23,8 @@ mod gaussian_step;
 mod informed_draws;
 mod lookahead;
 mod segment_search;
+#[cfg(test)]
+mod test_checkers;
 
 pub(crate) use gaussian_partners::{GaussianPartners, Partner, PartnerDraw};
 pub use gaussian_step::GaussianStep;
