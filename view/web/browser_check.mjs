@@ -136,7 +136,7 @@ async function checkPage(page, file) {
     if (screenshots) await page.screenshot({ path: join(screenshots, `${basename(file, '.html')}_${id}.png`) });
     await box.click();
     if (!(share > MIN_CHANGED)) errors.push(`toggling #${id} changes ${(100 * share).toFixed(3)} % of pixels`);
-    toggled.push(id.replace('-toggle', ''));
+    toggled.push(`${id.replace('-toggle', '')} ${(100 * share).toFixed(3)} %`);
   }
   if (frames > 1) {
     await page.evaluate(() => window.mitStarView.setFrame(0));
@@ -153,7 +153,7 @@ async function checkPage(page, file) {
   }
   const motions = await page.evaluate(() => window.mitStarView.motionCount());
   for (let k = 1; k < motions; k++) await page.evaluate((m) => window.mitStarView.setMotion(m), k);
-  const line = `${file}: load ${loadMs} ms${phases}, ${bytes} bytes, ${frames} frames, ${motions} motions, pixel std ${std.toFixed(1)}, changed first→others ${share === null ? '-' : (100 * share).toFixed(2) + ' %'}, toggles checked: ${toggled.join(' ') || '-'}`;
+  const line = `${file}: load ${loadMs} ms${phases}, ${bytes} bytes, ${frames} frames, ${motions} motions, pixel std ${std.toFixed(1)}, changed first→others ${share === null ? '-' : (100 * share).toFixed(2) + ' %'}, toggles checked: ${toggled.join(', ') || '-'}`;
   if (errors.length > 0) throw new Error(`${errors.length} errors: ${errors.slice(0, 5).join(' | ')}\n  ${line}`);
   if (!(std > MIN_STD)) throw new Error(`blank canvas: pixel std ${std.toFixed(2)} ≤ ${MIN_STD}\n  ${line}`);
   if (share !== null && !(share > MIN_CHANGED)) throw new Error(`every twelfth of the motion looks like its first frame: ${(100 * share).toFixed(3)} % of pixels changed ≤ ${100 * MIN_CHANGED} %\n  ${line}`);
