@@ -222,7 +222,8 @@ impl RandomGeometricGraph {
         // column by column, rule out most samples before their log entries are even read; the
         // margins cover the rounding of both measures, and the space's own distance decides
         // every sample that passes, so the list is exactly the one it would give.
-        let measured = if self.indexed {
+        // (A complete graph takes every sample: nothing to rule out.)
+        let measured = if self.indexed && !complete {
             self.recent.squared_distances(from, x, &mut squared)
         } else {
             None
