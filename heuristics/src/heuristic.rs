@@ -15,6 +15,15 @@ pub trait Heuristic<S: StateSpace + ?Sized> {
     /// Lower bound `ĉ(a, b)` on the cost of any path from `a` to `b`.
     fn edge_cost(&self, space: &S, a: &[f64], b: &[f64]) -> f64;
 
+    /// `ĉ(a, b)` when the space's distance between them, `distance = space.distance(a, b)`, is
+    /// already known: where the bound is that distance (a Euclidean bound in a Euclidean space,
+    /// the space's own metric), it is returned without measuring again. The default measures.
+    #[inline]
+    fn edge_cost_given_distance(&self, space: &S, a: &[f64], b: &[f64], distance: f64) -> f64 {
+        let _ = distance;
+        self.edge_cost(space, a, b)
+    }
+
     /// Lower bound on the cost to come from `start` to `x`.
     fn cost_to_come(&self, space: &S, start: &[f64], x: &[f64]) -> f64 {
         self.edge_cost(space, start, x)
@@ -46,6 +55,9 @@ pub fn grid_points(length: f64, step: f64) -> u64 {
 impl<S: StateSpace + ?Sized, H: Heuristic<S> + ?Sized> Heuristic<S> for &H {
     fn edge_cost(&self, space: &S, a: &[f64], b: &[f64]) -> f64 {
         (**self).edge_cost(space, a, b)
+    }
+    fn edge_cost_given_distance(&self, space: &S, a: &[f64], b: &[f64], distance: f64) -> f64 {
+        (**self).edge_cost_given_distance(space, a, b, distance)
     }
     fn cost_to_come(&self, space: &S, start: &[f64], x: &[f64]) -> f64 {
         (**self).cost_to_come(space, start, x)

@@ -17,6 +17,16 @@ impl<S: StateSpace + ?Sized> Heuristic<S> for Euclidean {
     fn edge_cost(&self, _space: &S, a: &[f64], b: &[f64]) -> f64 {
         euclidean_distance(a, b)
     }
+
+    /// The known distance itself where the space's metric is the Euclidean norm.
+    #[inline]
+    fn edge_cost_given_distance(&self, space: &S, a: &[f64], b: &[f64], distance: f64) -> f64 {
+        if space.is_euclidean() {
+            distance
+        } else {
+            euclidean_distance(a, b)
+        }
+    }
 }
 
 /// The space's own metric ([`StateSpace::distance`]): for path length, the cost of the straight
@@ -29,6 +39,11 @@ impl<S: StateSpace + ?Sized> Heuristic<S> for SpaceMetric {
     #[inline]
     fn edge_cost(&self, space: &S, a: &[f64], b: &[f64]) -> f64 {
         space.distance(a, b)
+    }
+
+    #[inline]
+    fn edge_cost_given_distance(&self, _space: &S, _a: &[f64], _b: &[f64], distance: f64) -> f64 {
+        distance
     }
 }
 
@@ -45,6 +60,34 @@ mod tests {
         assert!((e - SpaceMetric.edge_cost(&space, &a, &b)).abs() < 1e-15);
         let goals = vec![vec![1.0, 1.0, 1.0], b.to_vec()];
         assert!((Euclidean.cost_to_go(&space, &a, &goals) - e).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_known_distance_is_reused_only_where_it_is_the_bound() {
+        let plain = JointSpace::new(vec![
+            Joint::revolute("a", -2.0, 2.0),
+            Joint::prismatic("b", 0.0, 1.0),
+        ])
+        .unwrap();
+        let weighted = JointSpace::new(vec![
+            Joint::revolute("a", -2.0, 2.0).weight(3.0),
+            Joint::prismatic("b", 0.0, 1.0),
+        ])
+        .unwrap();
+        let (a, b) = ([-1.3, 0.1], [0.7, 0.9]);
+        // Unit weights: the space's distance is the Euclidean bound, to the last bit.
+        let d = plain.distance(&a, &b);
+        assert_eq!(Euclidean.edge_cost_given_distance(&plain, &a, &b, d), d);
+        assert_eq!(Euclidean.edge_cost(&plain, &a, &b).to_bits(), d.to_bits());
+        // A weighted metric is longer than the Euclidean bound, which is measured instead.
+        let d = weighted.distance(&a, &b);
+        let bound = Euclidean.edge_cost_given_distance(&weighted, &a, &b, d);
+        assert_eq!(bound, Euclidean.edge_cost(&weighted, &a, &b));
+        assert!(bound < d);
+        assert_eq!(
+            SpaceMetric.edge_cost_given_distance(&weighted, &a, &b, d),
+            d
+        );
     }
 
     #[test]

@@ -30,6 +30,9 @@ impl<S: StateSpace + ?Sized, H: Heuristic<S>> Heuristic<S> for Weighted<H> {
     fn edge_cost(&self, space: &S, a: &[f64], b: &[f64]) -> f64 {
         self.inner.edge_cost(space, a, b)
     }
+    fn edge_cost_given_distance(&self, space: &S, a: &[f64], b: &[f64], distance: f64) -> f64 {
+        self.inner.edge_cost_given_distance(space, a, b, distance)
+    }
     fn cost_to_come(&self, space: &S, start: &[f64], x: &[f64]) -> f64 {
         self.inner.cost_to_come(space, start, x)
     }

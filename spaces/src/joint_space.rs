@@ -4,7 +4,7 @@ use std::f64::consts::{PI, TAU};
 
 use rand::{Rng, RngExt};
 
-use crate::{SpaceError, StateSpace, reflect_into_interval};
+use crate::{SpaceError, StateSpace, euclidean_distance, reflect_into_interval};
 
 /// How a joint moves.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -198,6 +198,11 @@ impl StateSpace for JointSpace {
 
     #[inline]
     fn distance(&self, a: &[f64], b: &[f64]) -> f64 {
+        if self.euclidean {
+            // Unit weights, no wrapping: the same sums in the same order, without the
+            // per-joint tests.
+            return euclidean_distance(a, b);
+        }
         let mut sum = 0.0;
         for i in 0..a.len() {
             let delta = if self.wraps[i] {
@@ -324,6 +329,28 @@ mod tests {
             assert!((-PI..PI).contains(&y), "{x} -> {y}");
             assert!((((x - y) / TAU).round() * TAU - (x - y)).abs() < 1e-9);
         }
+    }
+
+    #[test]
+    fn unit_weights_measure_the_weighted_sum_to_the_last_bit() {
+        let joints = |w: f64| {
+            (0..7)
+                .map(|i| Joint::revolute(format!("j{i}"), -3.0, 3.0).weight(w))
+                .collect::<Vec<_>>()
+        };
+        let unit = JointSpace::new(joints(1.0)).unwrap();
+        let doubled = JointSpace::new(joints(2.0)).unwrap();
+        assert!(unit.is_euclidean() && !doubled.is_euclidean());
+        let a = [0.3, -1.7, 2.9, 0.0, -0.1, 1.1, -2.5];
+        let b = [-2.2, 0.4, 1.3, -3.0, 0.7, 1.1, 2.75];
+        let mut sum = 0.0;
+        for (x, y) in a.iter().zip(&b) {
+            let delta = 1.0 * (y - x);
+            sum += delta * delta;
+        }
+        assert_eq!(unit.distance(&a, &b).to_bits(), sum.sqrt().to_bits());
+        // Doubling every weight doubles the distance exactly (powers of two scale exactly).
+        assert_eq!(doubled.distance(&a, &b), 2.0 * unit.distance(&a, &b));
     }
 
     #[test]
