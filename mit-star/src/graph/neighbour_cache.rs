@@ -120,6 +120,11 @@ impl RandomGeometricGraph {
         S: StateSpace + ?Sized,
         H: Heuristic<S> + ?Sized,
     {
+        if self.neighbourhood == Neighbourhood::Radius(f64::INFINITY) {
+            return self
+                .every_vertex(v, space, heuristic, stop, out)
+                .then_some(0);
+        }
         let mut found = std::mem::take(&mut self.found);
         let wanted = match self.neighbourhood {
             Neighbourhood::Nearest(k) => k + SLACK,
@@ -251,10 +256,45 @@ impl RandomGeometricGraph {
                 wanted
             }
             Neighbourhood::Radius(r) => {
-                list.retain(|n| n.distance <= r);
+                if !complete {
+                    list.retain(|n| n.distance <= r);
+                }
                 0
             }
         }
+    }
+
+    /// A complete graph's (FCIT*'s) list for `v` in `out`: every other vertex, in no order
+    /// (ordered by distance only if the lists are capped), without a nearest-neighbour query.
+    /// `false` if `stop` fired.
+    fn every_vertex<S, H>(
+        &mut self,
+        v: u32,
+        space: &S,
+        heuristic: &H,
+        stop: &dyn Stop,
+        out: &mut Vec<Neighbour>,
+    ) -> bool
+    where
+        S: StateSpace + ?Sized,
+        H: Heuristic<S> + ?Sized,
+    {
+        let mut poll = Poll::new(stop, self.states[v as usize].len());
+        out.reserve(self.graph.node_count());
+        for node in self.graph.node_indices() {
+            if poll.tick(1) {
+                return false;
+            }
+            let w = node.index() as u32;
+            debug_assert_ne!(self.births[w as usize], DEAD);
+            if w != v {
+                out.push(self.entry(v, w, space, heuristic));
+            }
+        }
+        if self.neighbour_cap != usize::MAX {
+            out.sort_unstable_by(|a, b| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id)));
+        }
+        true
     }
 
     /// A list entry for the neighbour `w` of `v`.
@@ -264,11 +304,12 @@ impl RandomGeometricGraph {
         H: Heuristic<S> + ?Sized,
     {
         let (a, b) = (&self.states[v as usize], &self.states[w as usize]);
+        let distance = space.distance(a, b);
         Neighbour {
             id: w,
             birth: self.births[w as usize],
-            cost: heuristic.edge_cost(space, a, b),
-            distance: space.distance(a, b),
+            cost: heuristic.edge_cost_given_distance(space, a, b, distance),
+            distance,
         }
     }
 

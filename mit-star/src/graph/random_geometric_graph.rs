@@ -275,6 +275,13 @@ impl RandomGeometricGraph {
         self.lists[v as usize][i]
     }
 
+    /// The first `len` cached neighbours of `v`, nearest first (in no order on a complete
+    /// graph).
+    #[inline]
+    pub(crate) fn neighbour_slice(&self, v: u32, len: usize) -> &[Neighbour] {
+        &self.lists[v as usize][..len]
+    }
+
     /// `true` if `w` is in `v`'s neighbour list of the current batch (`false` while `v` has
     /// none).
     pub(crate) fn in_neighbour_list(&self, v: u32, w: u32) -> bool {

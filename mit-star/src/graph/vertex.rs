@@ -204,6 +204,13 @@ impl Vertex {
         self.reverse_prev_sibling = NONE;
     }
 
+    /// `true` if an edge from `v` into this vertex would rewire the forward tree: the vertex is
+    /// in it, and not as a child of `v`.
+    #[inline]
+    pub(crate) fn rewired_from(&self, v: u32) -> bool {
+        self.g.is_finite() && self.parent != v
+    }
+
     /// `true` for the start and goal vertices (never pruned).
     #[inline]
     pub(crate) fn is_terminal(&self) -> bool {

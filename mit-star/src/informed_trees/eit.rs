@@ -162,7 +162,7 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed, N = RandomGeomet
     /// where the neighbour rule asks for it (`lazy_successors.rs`; FCIT*).
     pub(crate) successors: Vec<Successors>,
     /// Scratch: `(ĉ + ĥ, position)` of a list being sorted.
-    pub(crate) successor_keys: Vec<(f64, u32)>,
+    pub(crate) successor_keys: Vec<(u64, u32)>,
 }
 
 /// The generator of the states placed along the best path, from the planner's seed (its own

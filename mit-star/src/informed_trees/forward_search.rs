@@ -157,8 +157,7 @@ where
     /// `true` if the edge `v → w` would rewire the forward tree: `w` is in it, and not as a
     /// child of `v`.
     pub(crate) fn is_rewiring(&self, v: u32, w: u32) -> bool {
-        let x = self.graph.vertex(w);
-        x.g.is_finite() && x.parent != v
+        self.graph.vertex(w).rewired_from(v)
     }
 
     /// `true` if the edge `v — w` is known invalid.

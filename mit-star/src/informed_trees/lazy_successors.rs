@@ -67,14 +67,17 @@ where
         let rewirings = self.may_rewire(v);
         let mut keyed = std::mem::take(&mut self.successor_keys);
         keyed.clear();
-        keyed.extend((0..len).filter_map(|i| {
-            let n = self.graph.neighbour(v, i);
-            if !rewirings && self.is_rewiring(v, n.id) {
-                return None;
+        keyed.reserve(len);
+        // One pass over the list, reading each neighbour's vertex once.
+        for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
+            let target = self.graph.vertex(n.id);
+            if !rewirings && target.rewired_from(v) {
+                continue;
             }
-            Some((n.cost + self.graph.vertex(n.id).cost_to_go_bound, i as u32))
-        }));
-        keyed.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            keyed.push((order_bits(n.cost + target.cost_to_go_bound), i));
+        }
+        // Integer keys order as `total_cmp` would, and compare faster.
+        keyed.sort_unstable();
         let tag = self.graph.tag;
         let successors = &mut self.successors[index];
         successors.order.clear();
@@ -179,5 +182,46 @@ where
         };
         let keys = forward_keys(&self.graph, self.key_rule(), &edge);
         self.forward.update(d, queued, keys);
+    }
+}
+
+/// `x`'s bits, ordered as [`f64::total_cmp`] orders the numbers.
+#[inline]
+fn order_bits(x: f64) -> u64 {
+    let bits = x.to_bits();
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | 1 << 63
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::order_bits;
+
+    #[test]
+    fn order_bits_orders_as_total_cmp() {
+        let xs = [
+            f64::NEG_INFINITY,
+            -3.5,
+            -1e-300,
+            -0.0,
+            0.0,
+            1e-300,
+            0.25,
+            0.25 + f64::EPSILON,
+            7.0,
+            f64::INFINITY,
+        ];
+        for a in xs {
+            for b in xs {
+                assert_eq!(
+                    order_bits(a).cmp(&order_bits(b)),
+                    a.total_cmp(&b),
+                    "{a} {b}"
+                );
+            }
+        }
     }
 }

@@ -396,7 +396,9 @@ where
                 self.extras.push(p);
             }
         }
-        if self.extras.is_empty() {
+        // A list of every other vertex (a complete graph's) holds them all already.
+        if self.extras.is_empty() || len + 1 == self.graph.vertex_count() {
+            self.extras.clear();
             return;
         }
         let graph = &self.graph;
