@@ -264,9 +264,10 @@ impl RandomGeometricGraph {
         }
     }
 
-    /// A complete graph's (FCIT*'s) list for `v` in `out`: every other vertex, in no order
-    /// (ordered by distance only if the lists are capped), without a nearest-neighbour query.
-    /// `false` if `stop` fired.
+    /// A complete graph's (FCIT*'s) list for `v` in `out`: every other live vertex the log
+    /// holds (those committed, as a query would find them), in log order (ordered by distance
+    /// only if the lists are capped), without a nearest-neighbour query. `false` if `stop`
+    /// fired.
     fn every_vertex<S, H>(
         &mut self,
         v: u32,
@@ -281,13 +282,11 @@ impl RandomGeometricGraph {
     {
         let mut poll = Poll::new(stop, self.states[v as usize].len());
         out.reserve(self.graph.node_count());
-        for node in self.graph.node_indices() {
+        for &(w, birth) in self.log.iter_from(0) {
             if poll.tick(1) {
                 return false;
             }
-            let w = node.index() as u32;
-            debug_assert_ne!(self.births[w as usize], DEAD);
-            if w != v {
+            if w != v && self.births[w as usize] == birth {
                 out.push(self.entry(v, w, space, heuristic));
             }
         }
