@@ -34,7 +34,6 @@ pub(crate) struct FolderLock(Arc<Held>);
 /// The open lock file and how it is held.
 #[derive(Debug)]
 struct Held {
-    folder: PathBuf,
     file: File,
     exclusive: bool,
 }
@@ -48,8 +47,11 @@ impl Drop for Held {
     }
 }
 
-/// Locks held by this process, by canonical folder.
-static HELD: Mutex<Vec<Weak<Held>>> = Mutex::new(Vec::new());
+/// Locks held by this process, by canonical folder. The folder is kept beside each weak
+/// reference so that a lookup upgrades only the lock it is after: upgrading every entry to
+/// read its folder made a lookup of one folder a holder, for a moment, of all the others, and
+/// a lock dropped in that moment outlived its last clone.
+static HELD: Mutex<Vec<(PathBuf, Weak<Held>)>> = Mutex::new(Vec::new());
 
 impl FolderLock {
     /// Takes `folder` (which must exist) for writing: waits a little for readers, refuses
@@ -171,27 +173,23 @@ impl FolderLock {
 }
 
 /// A live lock of `canonical` held by this process (dropping dead entries).
-fn find(held: &mut Vec<Weak<Held>>, canonical: &Path) -> Option<FolderLock> {
-    held.retain(|w| w.strong_count() > 0);
+fn find(held: &mut Vec<(PathBuf, Weak<Held>)>, canonical: &Path) -> Option<FolderLock> {
+    held.retain(|(_, w)| w.strong_count() > 0);
     held.iter()
-        .filter_map(Weak::upgrade)
-        .find(|h| h.folder == canonical)
+        .filter(|(folder, _)| folder == canonical)
+        .find_map(|(_, w)| w.upgrade())
         .map(FolderLock)
 }
 
 /// Records a lock this process now holds.
 fn register(
-    held: &mut Vec<Weak<Held>>,
+    held: &mut Vec<(PathBuf, Weak<Held>)>,
     folder: PathBuf,
     file: File,
     exclusive: bool,
 ) -> FolderLock {
-    let lock = Arc::new(Held {
-        folder,
-        file,
-        exclusive,
-    });
-    held.push(Arc::downgrade(&lock));
+    let lock = Arc::new(Held { file, exclusive });
+    held.push((folder, Arc::downgrade(&lock)));
     FolderLock(lock)
 }
 
@@ -265,7 +263,10 @@ mod tests {
         let again = FolderLock::exclusive(&dir).unwrap();
         let reader = FolderLock::shared(&dir).unwrap().unwrap();
         assert!(Arc::ptr_eq(&again.0, &mine.0) && Arc::ptr_eq(&reader.0, &mine.0));
-        assert_eq!(mine.0.folder, dir.canonicalize().unwrap());
+        let canonical = dir.canonicalize().unwrap();
+        assert!(HELD.lock().unwrap().iter().any(|(folder, held)| {
+            *folder == canonical && held.upgrade().is_some_and(|h| Arc::ptr_eq(&h, &mine.0))
+        }));
         // Another open file description is another holder, as another process would be.
         let other = File::open(dir.join(LOCK_FILE)).unwrap();
         assert!(matches!(
