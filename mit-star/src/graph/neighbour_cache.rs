@@ -159,9 +159,10 @@ impl RandomGeometricGraph {
             self.found = found;
             return None;
         }
+        let a = &self.states[v as usize];
         for &(_, w) in found.iter() {
             if w != v {
-                out.push(self.entry(v, w, space, heuristic));
+                out.push(self.entry(a, w, self.births[w as usize], space, heuristic));
             }
         }
         let capped = matches!(self.neighbourhood, Neighbourhood::Radius(_))
@@ -215,10 +216,10 @@ impl RandomGeometricGraph {
             }
             if complete {
                 // A complete graph (FCIT*): every sample enters, and its lists need no order.
-                list.push(self.entry(v, w, space, heuristic));
+                list.push(self.entry(x, w, birth, space, heuristic));
             } else if space.distance(x, &self.states[w as usize]) <= bound {
                 // Few candidates pass the bound: insert each in order.
-                let n = self.entry(v, w, space, heuristic);
+                let n = self.entry(x, w, birth, space, heuristic);
                 let at = list.partition_point(|m| order(m, &n).is_lt());
                 list.insert(at, n);
             }
@@ -280,14 +281,15 @@ impl RandomGeometricGraph {
         S: StateSpace + ?Sized,
         H: Heuristic<S> + ?Sized,
     {
-        let mut poll = Poll::new(stop, self.states[v as usize].len());
+        let a = &self.states[v as usize];
+        let mut poll = Poll::new(stop, a.len());
         out.reserve(self.graph.node_count());
         for &(w, birth) in self.log.iter_from(0) {
             if poll.tick(1) {
                 return false;
             }
             if w != v && self.births[w as usize] == birth {
-                out.push(self.entry(v, w, space, heuristic));
+                out.push(self.entry(a, w, birth, space, heuristic));
             }
         }
         if self.neighbour_cap != usize::MAX {
@@ -296,17 +298,18 @@ impl RandomGeometricGraph {
         true
     }
 
-    /// A list entry for the neighbour `w` of `v`.
-    fn entry<S, H>(&self, v: u32, w: u32, space: &S, heuristic: &H) -> Neighbour
+    /// A list entry for the neighbour `w`, born `birth`, of the vertex at state `a`.
+    #[inline]
+    fn entry<S, H>(&self, a: &[f64], w: u32, birth: u32, space: &S, heuristic: &H) -> Neighbour
     where
         S: StateSpace + ?Sized,
         H: Heuristic<S> + ?Sized,
     {
-        let (a, b) = (&self.states[v as usize], &self.states[w as usize]);
+        let b = &self.states[w as usize];
         let distance = space.distance(a, b);
         Neighbour {
             id: w,
-            birth: self.births[w as usize],
+            birth,
             cost: heuristic.edge_cost_given_distance(space, a, b, distance),
             distance,
         }
