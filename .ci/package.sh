@@ -7,6 +7,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 target=${1:-target}
 version=$(sed -n 's/^version = "\(.*\)"$/\1/p' Cargo.toml | head -1)
+# Cargo unpacks a crate of a registry into CARGO_HOME once per name and version and reuses the
+# unpacked sources after: a workspace crate's sources from an earlier run (the crates are
+# always 0.1.0 here) would be compiled instead of this run's, and a change that one crate's API
+# makes for another fails the verification. Drop them, so that this run's are unpacked.
+cargo_home=${CARGO_HOME:-$HOME/.cargo}
+rm -rf "$cargo_home"/registry/src/*/mit-star*-"$version" "$cargo_home"/registry/cache/*/mit-star*-"$version".crate
 cargo package --workspace --locked --target-dir "$target"
 patches=()
 for dir in "$target"/package/mit-star*-"$version"; do
