@@ -168,7 +168,7 @@ impl RandomGeometricGraph {
         let capped = matches!(self.neighbourhood, Neighbourhood::Radius(_))
             && self.neighbour_cap != usize::MAX;
         if (self.indexed && !self.euclidean) || capped {
-            out.sort_unstable_by(|a, b| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id)));
+            out.sort_unstable_by(nearest_first);
             if let Neighbourhood::Radius(r) = self.neighbourhood {
                 out.retain(|n| n.distance <= r);
             }
@@ -206,8 +206,6 @@ impl RandomGeometricGraph {
             Neighbourhood::Nearest(_) => f64::INFINITY,
         };
         let complete = self.neighbourhood == Neighbourhood::Radius(f64::INFINITY);
-        let order =
-            |a: &Neighbour, b: &Neighbour| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id));
         let mut squared = std::mem::take(&mut self.merge_distances);
         let x = &self.states[v as usize];
         let mut offer = |w: u32, birth: u32| {
@@ -220,7 +218,7 @@ impl RandomGeometricGraph {
             } else if space.distance(x, &self.states[w as usize]) <= bound {
                 // Few candidates pass the bound: insert each in order.
                 let n = self.entry(x, w, birth, space, heuristic);
-                let at = list.partition_point(|m| order(m, &n).is_lt());
+                let at = list.partition_point(|m| nearest_first(m, &n).is_lt());
                 list.insert(at, n);
             }
         };
@@ -270,7 +268,7 @@ impl RandomGeometricGraph {
     /// only if the lists are capped), without a nearest-neighbour query. `false` if `stop`
     /// fired.
     fn every_vertex<S, H>(
-        &mut self,
+        &self,
         v: u32,
         space: &S,
         heuristic: &H,
@@ -293,7 +291,7 @@ impl RandomGeometricGraph {
             }
         }
         if self.neighbour_cap != usize::MAX {
-            out.sort_unstable_by(|a, b| a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id)));
+            out.sort_unstable_by(nearest_first);
         }
         true
     }
@@ -356,6 +354,11 @@ impl RandomGeometricGraph {
         }
         true
     }
+}
+
+/// The order of a list: nearest first, ties by id.
+fn nearest_first(a: &Neighbour, b: &Neighbour) -> std::cmp::Ordering {
+    a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id))
 }
 
 #[cfg(test)]
