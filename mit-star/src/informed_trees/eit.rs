@@ -161,8 +161,6 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed, N = RandomGeomet
     /// Each expanded vertex's outgoing edges in the order they are queued, one at a time,
     /// where the neighbour rule asks for it (`lazy_successors.rs`; FCIT*).
     pub(crate) successors: Vec<Successors>,
-    /// Scratch: `(ĉ + ĥ, position)` of a list being sorted.
-    pub(crate) successor_keys: Vec<(u64, u32)>,
 }
 
 /// The generator of the states placed along the best path, from the planner's seed (its own
@@ -268,7 +266,6 @@ where
             path_rng: path_rng(parameters_seed),
             path_states: Vec::new(),
             successors: Vec::new(),
-            successor_keys: Vec::new(),
         }
     }
 }

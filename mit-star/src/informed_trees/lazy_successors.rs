@@ -6,6 +6,9 @@
 //! queue hands out edges in the same order as if all were queued, with at most one queued edge
 //! per expanded vertex (plus the few tree edges queued beside the lists).
 
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
 use mit_star_heuristics::Heuristic;
 use mit_star_samplers::Sampler;
 use mit_star_spaces::StateSpace;
@@ -18,19 +21,51 @@ use crate::informed_trees::forward_queue::ForwardEdge;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 use crate::informed_trees::reverse_search::forward_keys;
 
+/// An edge of an order: its sort key ([`order_bits`] of `ĉ + ĥ`), its position in the
+/// neighbour list, its target. Tuples order by key, then position.
+type Ranked = (u64, u32, u32);
+
 /// One vertex's outgoing edges in the order they are tried in the current batch.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Successors {
-    /// Positions in the vertex's neighbour list, best `ĉ + ĥ` first.
-    pub(crate) order: Vec<u32>,
+    /// The edges out of the tree (and to the vertex's children), best `ĉ + ĥ` first; with
+    /// cascading rewirings, every edge.
+    pub(crate) order: Vec<Ranked>,
     /// The next position of `order` to try.
     next: u32,
+    /// While the vertex may still queue its one rewiring: its edges into the tree, a min-heap
+    /// merged into `order` as the walk goes. Emptied once a rewiring is queued, since every
+    /// edge left in it would be passed over.
+    pub(crate) rewirings: BinaryHeap<Reverse<Ranked>>,
     /// The batch tag the order was made in (another: the order is stale).
     pub(crate) tag: u32,
     /// The neighbour left out of this expansion (the tree parent it was reached from).
     exclude: u32,
-    /// The target of the edge queued from `order`, or `NONE`.
+    /// The target of the edge queued from the order, or `NONE`.
     pub(crate) queued: u32,
+    /// That edge's position in the neighbour list.
+    queued_hint: u32,
+}
+
+impl Successors {
+    /// The next edge to try: the least of `order`'s next and the rewirings' least.
+    fn peek(&self) -> Option<Ranked> {
+        let listed = self.order.get(self.next as usize).copied();
+        let rewiring = self.rewirings.peek().map(|r| r.0);
+        match (listed, rewiring) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
+    /// Passes over `edge`, the one [`peek`](Self::peek) returned.
+    fn advance(&mut self, edge: Ranked) {
+        if self.rewirings.peek().is_some_and(|r| r.0 == edge) {
+            self.rewirings.pop();
+        } else {
+            self.next += 1;
+        }
+    }
 }
 
 impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
@@ -53,40 +88,54 @@ where
     /// Sorts the first `len` neighbours of `v` by `ĉ + ĥ` and queues the best edge that passes
     /// the expansion's rules (not to `exclude`, not blacklisted, a rewiring only where allowed).
     ///
-    /// Where `v` may not rewire (every expansion after its first in BIT*'s default), the edges
-    /// into the forward tree other than to `v`'s children are left out of the order: the scan
-    /// of [`queue_next_successor`](Self::queue_next_successor) would skip them anyway, and on a
-    /// complete graph whose tree holds most vertices (a batch without a solution) sorting and
-    /// scanning them was most of a re-expansion's time. The order of the edges kept is the
-    /// same.
+    /// A vertex queues at most one rewiring, in the first expansion that meets one it may
+    /// queue (BIT*'s rule without cascading rewirings, one edge at a time). So the edges into
+    /// the forward tree other than to `v`'s children are not sorted: where `v` may no longer
+    /// rewire they are left out (the walk of
+    /// [`queue_next_successor`](Self::queue_next_successor) would pass over them), and where
+    /// it may they go to a heap, which hands them out in order until one is queued and is
+    /// then emptied. On a complete graph whose tree holds most vertices (a batch without a
+    /// solution) those edges were most of each order: sorting them and walking past them
+    /// took a third of a run. The edges are tried in the order a full sort gives.
     pub(crate) fn expand_forward_lazily(&mut self, v: u32, len: usize, exclude: u32) {
         let index = v as usize;
         if self.successors.len() <= index {
             self.successors.resize_with(index + 1, Successors::default);
         }
         let rewirings = self.may_rewire(v);
-        let mut keyed = std::mem::take(&mut self.successor_keys);
-        keyed.clear();
-        keyed.reserve(len);
+        // With cascading rewirings every edge into the tree may be queued: all are sorted.
+        let apart = rewirings && !self.parameters.cascading_rewirings.unwrap_or(false);
+        let successors = &mut self.successors[index];
+        let mut order = std::mem::take(&mut successors.order);
+        let mut heap = std::mem::take(&mut successors.rewirings).into_vec();
+        order.clear();
+        heap.clear();
+        order.reserve(len);
         // One pass over the list, reading each neighbour's vertex once.
         for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
             let target = self.graph.vertex(n.id);
-            if !rewirings && target.rewired_from(v) {
-                continue;
+            let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
+            if target.rewired_from(v) {
+                if !rewirings {
+                    continue;
+                }
+                if apart {
+                    heap.push(Reverse(edge));
+                    continue;
+                }
             }
-            keyed.push((order_bits(n.cost + target.cost_to_go_bound), i));
+            order.push(edge);
         }
         // Integer keys order as `total_cmp` would, and compare faster.
-        keyed.sort_unstable();
+        order.sort_unstable();
         let tag = self.graph.tag;
         let successors = &mut self.successors[index];
-        successors.order.clear();
-        successors.order.extend(keyed.iter().map(|&(_, i)| i));
+        successors.order = order;
+        successors.rewirings = BinaryHeap::from(heap);
         successors.next = 0;
         successors.tag = tag;
         successors.exclude = exclude;
         successors.queued = NONE;
-        self.successor_keys = keyed;
         self.queue_next_successor(v);
     }
 
@@ -96,35 +145,44 @@ where
     /// may let it through.
     pub(crate) fn queue_next_successor(&mut self, v: u32) {
         let index = v as usize;
-        let Some(successors) = self.successors.get(index) else {
+        let Some(successors) = self.successors.get_mut(index) else {
             return;
         };
         if successors.tag != self.graph.tag {
             return;
         }
         let exclude = successors.exclude;
-        let mut next = successors.next as usize;
         let g = self.graph.vertex(v).g;
         let rewirings = self.may_rewire(v);
+        // Without a solution the test `g + ĉ + ĥ ≥ c_best` fails for every finite key, and
+        // the neighbour's list entry (its cost) is not read.
+        let bounded = self.best_cost.is_finite() || !g.is_finite();
         let mut queued = None;
-        while let Some(&i) = self.successors[index].order.get(next) {
-            let n = self.graph.neighbour(v, i as usize);
-            let target = self.graph.vertex(n.id);
-            if g + n.cost + target.cost_to_go_bound >= self.best_cost {
-                break;
+        while let Some(edge @ (key, i, id)) = self.successors[index].peek() {
+            let target = self.graph.vertex(id);
+            if bounded || key >= order_bits(f64::INFINITY) {
+                let cost = self.graph.neighbour(v, i as usize).cost;
+                if g + cost + target.cost_to_go_bound >= self.best_cost {
+                    break;
+                }
             }
-            next += 1;
+            self.successors[index].advance(edge);
             // The cheap tests first: `is_blacklisted` looks the edge up.
-            let rewiring = self.is_rewiring(v, n.id);
-            if n.id == exclude || (rewiring && !rewirings) || self.is_blacklisted(v, n.id) {
+            let rewiring = target.rewired_from(v);
+            if id == exclude || (rewiring && !rewirings) || self.is_blacklisted(v, id) {
                 continue;
             }
             if rewiring {
                 self.graph.vertex_mut(v).rewiring_expanded = true;
+                if !self.may_rewire(v) {
+                    // Every edge left in the heap leads into the tree.
+                    self.successors[index].rewirings = BinaryHeap::new();
+                }
             }
+            let n = self.graph.neighbour(v, i as usize);
             queued = Some(ForwardEdge {
                 source: v,
-                target: n.id,
+                target: id,
                 hint: i,
                 cost: n.cost,
                 distance: n.distance,
@@ -132,8 +190,8 @@ where
             break;
         }
         let successors = &mut self.successors[index];
-        successors.next = next as u32;
         successors.queued = queued.map_or(NONE, |edge| edge.target);
+        successors.queued_hint = queued.map_or(NONE, |edge| edge.hint);
         if let Some(edge) = queued {
             self.queue_forward(edge);
         }
@@ -171,7 +229,7 @@ where
             self.queue_next_successor(d);
             return;
         }
-        let i = successors.order[successors.next as usize - 1];
+        let i = successors.queued_hint;
         let n = self.graph.neighbour(d, i as usize);
         let edge = ForwardEdge {
             source: d,

@@ -120,13 +120,16 @@ fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
         kept.len() < len,
         "the tree holds some of the start's neighbours"
     );
-    // Its first expansion orders every edge; once it has rewired, only those out of the tree.
+    // Its first expansion sorts the edges out of the tree and keeps those into it apart, in a
+    // heap (`a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring` checks the walk);
+    // once it has rewired, only those out of the tree are ranked.
     planner.graph.vertex_mut(v).rewiring_expanded = false;
     planner.expand_forward_lazily(v, len, NONE);
-    assert_eq!(planner.successors[v as usize].order.len(), len);
+    assert_eq!(planner.successors[v as usize].order.len(), kept.len());
     planner.graph.vertex_mut(v).rewiring_expanded = true;
     planner.expand_forward_lazily(v, len, NONE);
-    let mut order = planner.successors[v as usize].order.clone();
+    let ranked = &planner.successors[v as usize].order;
+    let mut order: Vec<u32> = ranked.iter().map(|&(_, i, _)| i).collect();
     // The edges left are in the order of their keys, as in the full order.
     let keys: Vec<f64> = order
         .iter()
@@ -139,4 +142,87 @@ fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
     order.sort_unstable();
     kept.sort_unstable();
     assert_eq!(order, kept);
+}
+
+/// The targets a vertex's walk queues, one after the other, as the rules read with every
+/// edge sorted at once: by `ĉ + ĥ` (then list position), passing over `exclude`, known-invalid
+/// edges, and every rewiring after the first one queued.
+fn walk_by_full_sort(planner: &FcitStar, v: u32, len: usize, exclude: u32) -> Vec<u32> {
+    let mut all: Vec<(f64, usize, u32)> = (0..len)
+        .map(|i| {
+            let n = planner.graph.neighbour(v, i);
+            (
+                n.cost + planner.graph.vertex(n.id).cost_to_go_bound,
+                i,
+                n.id,
+            )
+        })
+        .collect();
+    all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    let mut rewired = planner.graph.vertex(v).rewiring_expanded;
+    let mut targets = Vec::new();
+    for (_, _, w) in all {
+        let rewiring = planner.is_rewiring(v, w);
+        if w == exclude || (rewiring && rewired) || planner.is_blacklisted(v, w) {
+            continue;
+        }
+        rewired |= rewiring;
+        targets.push(w);
+    }
+    targets
+}
+
+#[test]
+fn a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring() {
+    let problem = mit_star_problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let mut planner = FcitStar::for_problem(&problem)
+        .parameters(Parameters {
+            batch_size: Some(100),
+            ..Parameters::default()
+        })
+        .build()
+        .unwrap();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    planner.setup(&stop).unwrap();
+    for _ in 0..4_000 {
+        planner.iterate(&stop);
+    }
+    // Without a solution no edge is held back by the bound, so a walk runs to its end.
+    planner.best_cost = f64::INFINITY;
+    let tree: Vec<u32> = (0..planner.graph.vertex_count() as u32)
+        .filter(|&v| planner.graph.vertex(v).g.is_finite())
+        .take(12)
+        .collect();
+    let mut rewirings_seen = 0;
+    for v in tree {
+        let len = planner
+            .graph
+            .neighbours(v, &planner.space, &planner.heuristic, &stop)
+            .unwrap();
+        let exclude = planner.graph.vertex(v).parent;
+        planner.graph.vertex_mut(v).rewiring_expanded = false;
+        let expected = walk_by_full_sort(&planner, v, len, exclude);
+        rewirings_seen += expected
+            .iter()
+            .filter(|&&w| planner.is_rewiring(v, w))
+            .count();
+        planner.expand_forward_lazily(v, len, exclude);
+        let mut walked = Vec::new();
+        loop {
+            let queued = planner.successors[v as usize].queued;
+            if queued == NONE {
+                break;
+            }
+            walked.push(queued);
+            planner.queue_next_successor(v);
+        }
+        assert_eq!(walked, expected, "vertex {v}");
+        assert!(planner.successors[v as usize].rewirings.is_empty());
+    }
+    assert!(rewirings_seen > 0, "no walk met a rewiring");
 }
