@@ -95,6 +95,7 @@ impl RandomGeometricGraph {
                 stack.push(child);
                 child = self.vertex(child).next_sibling;
             }
+            self.note_detached(v);
             let x = self.vertex_mut(v);
             x.g = f64::INFINITY;
             x.parent = NONE;

@@ -10,6 +10,8 @@
 //!   and brought up to date incrementally in later batches.
 //! - `recent_states.rs` (the last committed samples in columns, for the vectorised update of
 //!   those lists) and `state_chunks.rs` (the states in fixed-size chunks that never move).
+//! - `outside_tree.rs`: for FCIT*, the vertices that may be outside the forward tree, so that
+//!   an expansion that may no longer rewire reads those instead of its whole list.
 //! - `forward_tree.rs`: the forward tree's links inside the graph, and pruning ([`Pruning`]).
 //! - `edge_hasher.rs`: the packed `(source, target)` edge key and its fast hasher, shared with
 //!   the forward queue.
@@ -21,6 +23,7 @@
 mod edge_hasher;
 mod forward_tree;
 mod neighbour_cache;
+mod outside_tree;
 mod random_geometric_graph;
 mod recent_states;
 mod state_chunks;

@@ -303,14 +303,29 @@ impl RandomGeometricGraph {
         S: StateSpace + ?Sized,
         H: Heuristic<S> + ?Sized,
     {
-        let b = &self.states[w as usize];
-        let distance = space.distance(a, b);
+        let (cost, distance) = self.measure(a, w, space, heuristic);
         Neighbour {
             id: w,
             birth,
-            cost: heuristic.edge_cost_given_distance(space, a, b, distance),
+            cost,
             distance,
         }
+    }
+
+    /// `ĉ` and the metric distance from the state `a` to vertex `w`, exactly as a list entry
+    /// holds them.
+    #[inline]
+    pub(crate) fn measure<S, H>(&self, a: &[f64], w: u32, space: &S, heuristic: &H) -> (f64, f64)
+    where
+        S: StateSpace + ?Sized,
+        H: Heuristic<S> + ?Sized,
+    {
+        let b = &self.states[w as usize];
+        let distance = space.distance(a, b);
+        (
+            heuristic.edge_cost_given_distance(space, a, b, distance),
+            distance,
+        )
     }
 
     /// Neighbours of `v` by the space's own metric, by scanning every vertex.

@@ -10,6 +10,7 @@ use petgraph::stable_graph::StableGraph;
 
 use crate::graph::edge_hasher::{BuildEdgeHasher, edge_key};
 use crate::graph::neighbour_cache::MERGE_LIMIT;
+use crate::graph::outside_tree::OutsideTree;
 use crate::graph::recent_states::RecentStates;
 use crate::graph::state_chunks::StateChunks;
 use crate::graph::vertex::{NONE, Vertex, VertexId, VertexKind};
@@ -118,6 +119,8 @@ pub struct RandomGeometricGraph {
     /// Live vertices whose states do not count toward the sampling density (drawn near the
     /// terminals: [`SampleOrigin::counts_toward_density`](mit_star_samplers::SampleOrigin)).
     clustered: usize,
+    /// The vertices that may be outside the forward tree (kept for FCIT* only).
+    pub(crate) outside: OutsideTree,
 }
 
 impl RandomGeometricGraph {
@@ -166,6 +169,7 @@ impl RandomGeometricGraph {
             prune_ids: Vec::new(),
             prune_next: None,
             clustered: 0,
+            outside: OutsideTree::default(),
         }
     }
 
@@ -205,6 +209,7 @@ impl RandomGeometricGraph {
 
     /// Makes `ids` visible to neighbour queries and starts a new batch.
     pub(crate) fn commit(&mut self, ids: &[u32]) {
+        self.note_committed(self.log.len(), ids);
         let (states, births) = (&self.states, &self.births);
         if self.indexed {
             self.nn.insert_born(

@@ -368,6 +368,8 @@ where
                 self.query_checked = true;
             }
             self.graph = RandomGeometricGraph::for_space(&self.space);
+            // FCIT*'s expansions read the vertices outside the tree (`graph::outside_tree`).
+            self.graph.outside.enabled = self.lazy_successors();
             let start = self.start.clone();
             let vertex = self.new_vertex(VertexKind::Start, &start);
             self.start_id = self.graph.add_vertex(&start, vertex);

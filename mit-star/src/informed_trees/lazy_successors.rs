@@ -15,14 +15,16 @@ use mit_star_spaces::StateSpace;
 use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::NONE;
+use crate::graph::Neighbourhood;
 use crate::informed_trees::NeighbourRule;
 use crate::informed_trees::eit::Eit;
 use crate::informed_trees::forward_queue::ForwardEdge;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 use crate::informed_trees::reverse_search::forward_keys;
 
-/// An edge of an order: its sort key ([`order_bits`] of `ĉ + ĥ`), its position in the
-/// neighbour list, its target. Tuples order by key, then position.
+/// An edge of an order: its sort key ([`order_bits`] of `ĉ + ĥ`), its target's position in
+/// the neighbour list or in the log (which order alike on a complete graph), its target.
+/// Tuples order by key, then position.
 type Ranked = (u64, u32, u32);
 
 /// One vertex's outgoing edges in the order they are tried in the current batch.
@@ -43,8 +45,6 @@ pub(crate) struct Successors {
     exclude: u32,
     /// The target of the edge queued from the order, or `NONE`.
     pub(crate) queued: u32,
-    /// That edge's position in the neighbour list.
-    queued_hint: u32,
 }
 
 impl Successors {
@@ -110,21 +110,25 @@ where
         let mut heap = std::mem::take(&mut successors.rewirings).into_vec();
         order.clear();
         heap.clear();
-        order.reserve(len);
-        // One pass over the list, reading each neighbour's vertex once.
-        for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
-            let target = self.graph.vertex(n.id);
-            let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
-            if target.rewired_from(v) {
-                if !rewirings {
-                    continue;
+        if !rewirings && self.ranks_outside() {
+            self.rank_outside(v, &mut order);
+        } else {
+            order.reserve(len);
+            // One pass over the list, reading each neighbour's vertex once.
+            for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
+                let target = self.graph.vertex(n.id);
+                let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
+                if target.rewired_from(v) {
+                    if !rewirings {
+                        continue;
+                    }
+                    if apart {
+                        heap.push(Reverse(edge));
+                        continue;
+                    }
                 }
-                if apart {
-                    heap.push(Reverse(edge));
-                    continue;
-                }
+                order.push(edge);
             }
-            order.push(edge);
         }
         // Integer keys order as `total_cmp` would, and compare faster.
         order.sort_unstable();
@@ -137,6 +141,52 @@ where
         successors.exclude = exclude;
         successors.queued = NONE;
         self.queue_next_successor(v);
+    }
+
+    /// `true` if an expansion that may not rewire can rank the vertices outside the tree
+    /// (`graph::outside_tree`) instead of its list: they are kept, and the lists are complete
+    /// and uncapped, so in log order (a list position orders as a log position does).
+    fn ranks_outside(&self) -> bool {
+        let graph = &self.graph;
+        graph.outside.enabled
+            && graph.neighbourhood == Neighbourhood::Radius(f64::INFINITY)
+            && graph.neighbour_cap == usize::MAX
+    }
+
+    /// Appends to `order` the edges of `v`'s current list that do not rewire the tree: to the
+    /// listed vertices outside the tree, and to `v`'s listed children; each ranked by its key
+    /// and then its target's log position (the list's order), measured as the list measured
+    /// it.
+    fn rank_outside(&self, v: u32, order: &mut Vec<Ranked>) {
+        let graph = &self.graph;
+        let x = graph.vertex(v);
+        // The list holds the live vertices other than `v` logged before this position.
+        let limit = x.neighbours_log;
+        let a = graph.state(v);
+        let mut rank = |w: u32, position: u32, bound: f64| {
+            let (cost, _) = graph.measure(a, w, &self.space, &self.heuristic);
+            order.push((order_bits(cost + bound), position, w));
+        };
+        for c in &graph.outside.entries {
+            if c.position >= limit || c.id == v || graph.births[c.id as usize] != c.birth {
+                continue;
+            }
+            let target = graph.vertex(c.id);
+            // In the tree: a child of `v` is ranked below, any other vertex is a rewiring.
+            if !target.g.is_finite() {
+                rank(c.id, c.position, target.cost_to_go_bound);
+            }
+        }
+        let mut child = x.first_child;
+        while child != NONE {
+            let target = graph.vertex(child);
+            if let Some(position) = graph.log_position(child)
+                && position < limit
+            {
+                rank(child, position, target.cost_to_go_bound);
+            }
+            child = target.next_sibling;
+        }
     }
 
     /// Queues `v`'s next edge in its order, if one passes the rules and could still improve
@@ -158,10 +208,11 @@ where
         // the neighbour's list entry (its cost) is not read.
         let bounded = self.best_cost.is_finite() || !g.is_finite();
         let mut queued = None;
-        while let Some(edge @ (key, i, id)) = self.successors[index].peek() {
+        while let Some(edge @ (key, _, id)) = self.successors[index].peek() {
             let target = self.graph.vertex(id);
             if bounded || key >= order_bits(f64::INFINITY) {
-                let cost = self.graph.neighbour(v, i as usize).cost;
+                let a = self.graph.state(v);
+                let (cost, _) = self.graph.measure(a, id, &self.space, &self.heuristic);
                 if g + cost + target.cost_to_go_bound >= self.best_cost {
                     break;
                 }
@@ -179,19 +230,19 @@ where
                     self.successors[index].rewirings = BinaryHeap::new();
                 }
             }
-            let n = self.graph.neighbour(v, i as usize);
+            let a = self.graph.state(v);
+            let (cost, distance) = self.graph.measure(a, id, &self.space, &self.heuristic);
             queued = Some(ForwardEdge {
                 source: v,
                 target: id,
-                hint: i,
-                cost: n.cost,
-                distance: n.distance,
+                hint: NONE,
+                cost,
+                distance,
             });
             break;
         }
         let successors = &mut self.successors[index];
         successors.queued = queued.map_or(NONE, |edge| edge.target);
-        successors.queued_hint = queued.map_or(NONE, |edge| edge.hint);
         if let Some(edge) = queued {
             self.queue_forward(edge);
         }
@@ -229,14 +280,14 @@ where
             self.queue_next_successor(d);
             return;
         }
-        let i = successors.queued_hint;
-        let n = self.graph.neighbour(d, i as usize);
+        let a = self.graph.state(d);
+        let (cost, distance) = self.graph.measure(a, queued, &self.space, &self.heuristic);
         let edge = ForwardEdge {
             source: d,
             target: queued,
-            hint: i,
-            cost: n.cost,
-            distance: n.distance,
+            hint: NONE,
+            cost,
+            distance,
         };
         let keys = forward_keys(&self.graph, self.key_rule(), &edge);
         self.forward.update(d, queued, keys);

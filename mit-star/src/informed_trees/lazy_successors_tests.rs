@@ -128,17 +128,27 @@ fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
     assert_eq!(planner.successors[v as usize].order.len(), kept.len());
     planner.graph.vertex_mut(v).rewiring_expanded = true;
     planner.expand_forward_lazily(v, len, NONE);
+    // Ranked from the vertices outside the tree and the children, not from the list: each
+    // target is found in the list, and the order is the list's (key, then position).
+    let listed = |w: u32| {
+        (0..len)
+            .find(|&i| planner.graph.neighbour(v, i).id == w)
+            .expect("a ranked vertex is in the list")
+    };
     let ranked = &planner.successors[v as usize].order;
-    let mut order: Vec<u32> = ranked.iter().map(|&(_, i, _)| i).collect();
-    // The edges left are in the order of their keys, as in the full order.
-    let keys: Vec<f64> = order
+    let mut order: Vec<u32> = ranked.iter().map(|&(_, _, w)| listed(w) as u32).collect();
+    let keys: Vec<(f64, u32)> = order
         .iter()
         .map(|&i| {
             let n = planner.graph.neighbour(v, i as usize);
-            n.cost + planner.graph.vertex(n.id).cost_to_go_bound
+            (n.cost + planner.graph.vertex(n.id).cost_to_go_bound, i)
         })
         .collect();
-    assert!(keys.windows(2).all(|w| w[0] <= w[1]), "{keys:?}");
+    assert!(
+        keys.windows(2)
+            .all(|w| w[0].0.total_cmp(&w[1].0).then(w[0].1.cmp(&w[1].1)).is_lt()),
+        "{keys:?}"
+    );
     order.sort_unstable();
     kept.sort_unstable();
     assert_eq!(order, kept);
@@ -225,4 +235,69 @@ fn a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring() {
         assert!(planner.successors[v as usize].rewirings.is_empty());
     }
     assert!(rewirings_seen > 0, "no walk met a rewiring");
+}
+
+#[test]
+fn every_live_vertex_outside_the_tree_is_a_candidate_through_pruning() {
+    let problem = mit_star_problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let mut planner = FcitStar::for_problem(&problem)
+        .parameters(Parameters {
+            batch_size: Some(50),
+            ..Parameters::default()
+        })
+        .build()
+        .unwrap();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    planner.setup(&stop).unwrap();
+    assert!(planner.graph.outside.enabled);
+    let (mut checked, mut detached) = (0, 0);
+    for round in 0..60 {
+        for _ in 0..500 {
+            planner.iterate(&stop);
+        }
+        let graph = &planner.graph;
+        for &(w, birth) in graph.log.iter_from(0) {
+            let x = graph.vertex(w);
+            if graph.births[w as usize] != birth || x.g.is_finite() {
+                continue;
+            }
+            let position = graph
+                .log_position(w)
+                .expect("a logged vertex has a position");
+            assert!(
+                graph
+                    .outside
+                    .entries
+                    .iter()
+                    .any(|c| c.id == w && c.birth == birth && c.position == position),
+                "round {round}: vertex {w} is outside the tree and not a candidate"
+            );
+            checked += 1;
+            // Committed before the batch that cut it out: it joined the tree, then left it.
+            detached += usize::from(x.forward_expanded != 0);
+        }
+        // No duplicates.
+        let mut ids: Vec<(u32, u32)> = graph
+            .outside
+            .entries
+            .iter()
+            .map(|c| (c.id, c.birth))
+            .collect();
+        ids.sort_unstable();
+        assert!(
+            ids.windows(2).all(|p| p[0] != p[1]),
+            "round {round}: a duplicate"
+        );
+    }
+    assert!(planner.best_cost.is_finite());
+    assert!(planner.counters.pruned > 0, "no pruning");
+    assert!(
+        checked > 0 && detached > 0,
+        "{checked} checked, {detached} cut out"
+    );
 }
