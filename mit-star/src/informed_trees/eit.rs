@@ -1,6 +1,7 @@
 //! [`Eit`]: the EIT* search skeleton every configuration of the family (MIT*, EIT*, the
 //! ablations) is an instance of.
 
+use std::cmp::Reverse;
 use std::time::Duration;
 
 use mit_star_heuristics::{Euclidean, Heuristic};
@@ -12,7 +13,7 @@ use mit_star_validity::{Counted, EdgeChecker, EdgeGrid, EdgeStatus, StateValidit
 use crate::graph::{NONE, RandomGeometricGraph, Vertex};
 use crate::informed_trees::forward_queue::ForwardQueue;
 use crate::informed_trees::guidance::{EffortInformed, Guidance};
-use crate::informed_trees::lazy_successors::Successors;
+use crate::informed_trees::lazy_successors::{Ranked, Successors};
 use crate::informed_trees::neighbour_rule::{NeighbourRule, RandomGeometric};
 use crate::informed_trees::reverse_queue::ReverseQueue;
 use crate::informed_trees::start_reach::StartReach;
@@ -161,6 +162,9 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed, N = RandomGeomet
     /// Each expanded vertex's outgoing edges in the order they are queued, one at a time,
     /// where the neighbour rule asks for it (`lazy_successors.rs`; FCIT*).
     pub(crate) successors: Vec<Successors>,
+    /// Scratch: an order and a heap being ranked (`lazy_successors.rs`), swapped with the
+    /// vertex's once complete.
+    pub(crate) ranking: (Vec<Ranked>, Vec<Reverse<Ranked>>),
 }
 
 /// The generator of the states placed along the best path, from the planner's seed (its own
@@ -266,6 +270,7 @@ where
             path_rng: path_rng(parameters_seed),
             path_states: Vec::new(),
             successors: Vec::new(),
+            ranking: (Vec::new(), Vec::new()),
         }
     }
 }

@@ -63,25 +63,35 @@ where
     /// default, [`Parameters::cascading_rewirings`](crate::Parameters)), edges to other tree
     /// vertices are queued only by `v`'s first expansion that meets any.
     pub(crate) fn expand_forward(&mut self, v: u32, exclude: u32, stop: &dyn Stop) {
-        let Some(len) = self.graph.neighbours(v, &self.space, &self.heuristic, stop) else {
+        // FCIT*'s complete graph needs no lists (`lazy_successors.rs`).
+        let listless = self.listless();
+        let len = if listless {
+            0
+        } else if let Some(len) = self.graph.neighbours(v, &self.space, &self.heuristic, stop) {
+            len
+        } else {
             // The termination condition fired during the neighbour query: the expansion waits
             // for the next iteration.
             self.deferred.push((v, exclude, true));
             return;
         };
         let tag = self.graph.tag;
-        self.graph.vertex_mut(v).forward_expanded = tag;
         let rewirings = G::REVERSE != ReverseSearch::None
             || self.parameters.cascading_rewirings.unwrap_or(false)
             || !self.graph.vertex(v).rewiring_expanded;
         let mut rewired = false;
         // FCIT*'s complete graph: one edge of the list queued at a time (`lazy_successors.rs`).
         let listed = if self.lazy_successors() {
-            self.expand_forward_lazily(v, len, exclude);
+            if !self.expand_forward_lazily(v, len, exclude, stop) {
+                // The termination condition fired during the ranking: as above.
+                self.deferred.push((v, exclude, true));
+                return;
+            }
             0
         } else {
             len
         };
+        self.graph.vertex_mut(v).forward_expanded = tag;
         for i in 0..listed {
             let n = self.graph.neighbour(v, i);
             if n.id == exclude || self.is_blacklisted(v, n.id) {
@@ -369,10 +379,16 @@ where
     /// Re-keys the queued forward edges out of `d` after its cost-to-come decreased.
     fn refresh_outgoing(&mut self, d: u32) {
         let x = self.graph.vertex(d);
-        if x.neighbours_tag != self.graph.tag {
+        // Without lists, the caller's test (expanded in this batch) is the one that counts.
+        let listless = self.listless();
+        if !listless && x.neighbours_tag != self.graph.tag {
             return;
         }
-        let len = x.neighbours_len as usize;
+        let len = if listless {
+            0
+        } else {
+            x.neighbours_len as usize
+        };
         // With lazy successors, one edge of the list is queued, and perhaps none yet.
         let listed = if self.lazy_successors() {
             self.refresh_successor(d);

@@ -11,7 +11,7 @@ use std::collections::BinaryHeap;
 
 use mit_star_heuristics::Heuristic;
 use mit_star_samplers::Sampler;
-use mit_star_spaces::StateSpace;
+use mit_star_spaces::{StateSpace, Stop};
 use mit_star_validity::{Counted, EdgeChecker, StateValidity};
 
 use crate::graph::NONE;
@@ -21,11 +21,12 @@ use crate::informed_trees::eit::Eit;
 use crate::informed_trees::forward_queue::ForwardEdge;
 use crate::informed_trees::guidance::{Guidance, ReverseSearch};
 use crate::informed_trees::reverse_search::forward_keys;
+use crate::nearest::Poll;
 
 /// An edge of an order: its sort key ([`order_bits`] of `ĉ + ĥ`), its target's position in
 /// the neighbour list or in the log (which order alike on a complete graph), its target.
 /// Tuples order by key, then position.
-type Ranked = (u64, u32, u32);
+pub(crate) type Ranked = (u64, u32, u32);
 
 /// One vertex's outgoing edges in the order they are tried in the current batch.
 #[derive(Debug, Clone, Default)]
@@ -97,7 +98,13 @@ where
     /// then emptied. On a complete graph whose tree holds most vertices (a batch without a
     /// solution) those edges were most of each order: sorting them and walking past them
     /// took a third of a run. The edges are tried in the order a full sort gives.
-    pub(crate) fn expand_forward_lazily(&mut self, v: u32, len: usize, exclude: u32) {
+    pub(crate) fn expand_forward_lazily(
+        &mut self,
+        v: u32,
+        len: usize,
+        exclude: u32,
+        stop: &dyn Stop,
+    ) -> bool {
         let index = v as usize;
         if self.successors.len() <= index {
             self.successors.resize_with(index + 1, Successors::default);
@@ -105,63 +112,119 @@ where
         let rewirings = self.may_rewire(v);
         // With cascading rewirings every edge into the tree may be queued: all are sorted.
         let apart = rewirings && !self.parameters.cascading_rewirings.unwrap_or(false);
-        let successors = &mut self.successors[index];
-        let mut order = std::mem::take(&mut successors.order);
-        let mut heap = std::mem::take(&mut successors.rewirings).into_vec();
+        let (mut order, mut heap) = std::mem::take(&mut self.ranking);
         order.clear();
         heap.clear();
-        if !rewirings && self.ranks_outside() {
-            self.rank_outside(v, &mut order);
+        let ranked = if !self.listless() {
+            self.rank_list(v, len, rewirings, apart, (&mut order, &mut heap));
+            true
+        } else if rewirings {
+            self.rank_log(v, apart, (&mut order, &mut heap), stop)
         } else {
-            order.reserve(len);
-            // One pass over the list, reading each neighbour's vertex once.
-            for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
-                let target = self.graph.vertex(n.id);
-                let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
-                if target.rewired_from(v) {
-                    if !rewirings {
-                        continue;
-                    }
-                    if apart {
-                        heap.push(Reverse(edge));
-                        continue;
-                    }
-                }
-                order.push(edge);
-            }
+            self.rank_outside(v, &mut order);
+            true
+        };
+        if !ranked {
+            // Interrupted: the vertex's order stays as it was, and the expansion is retried.
+            self.ranking = (order, heap);
+            return false;
         }
         // Integer keys order as `total_cmp` would, and compare faster.
         order.sort_unstable();
         let tag = self.graph.tag;
         let successors = &mut self.successors[index];
-        successors.order = order;
-        successors.rewirings = BinaryHeap::from(heap);
+        let order = std::mem::replace(&mut successors.order, order);
+        let heap = std::mem::replace(&mut successors.rewirings, BinaryHeap::from(heap));
+        self.ranking = (order, heap.into_vec());
+        let successors = &mut self.successors[index];
         successors.next = 0;
         successors.tag = tag;
         successors.exclude = exclude;
         successors.queued = NONE;
         self.queue_next_successor(v);
+        true
     }
 
-    /// `true` if an expansion that may not rewire can rank the vertices outside the tree
-    /// (`graph::outside_tree`) instead of its list: they are kept, and the lists are complete
-    /// and uncapped, so in log order (a list position orders as a log position does).
-    fn ranks_outside(&self) -> bool {
+    /// Ranks the first `len` entries of `v`'s list: into `order`, or, for the edges into the
+    /// tree, into `heap` (`apart`) or nowhere (without `rewirings`).
+    fn rank_list(
+        &self,
+        v: u32,
+        len: usize,
+        rewirings: bool,
+        apart: bool,
+        (order, heap): (&mut Vec<Ranked>, &mut Vec<Reverse<Ranked>>),
+    ) {
+        order.reserve(len);
+        // One pass over the list, reading each neighbour's vertex once.
+        for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
+            let target = self.graph.vertex(n.id);
+            let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
+            if target.rewired_from(v) {
+                if !rewirings {
+                    continue;
+                }
+                if apart {
+                    heap.push(Reverse(edge));
+                    continue;
+                }
+            }
+            order.push(edge);
+        }
+    }
+
+    /// Ranks every other live vertex of the log, as `v`'s complete list would hold it: the
+    /// edges into the tree into `heap` if `apart`, the others into `order`. `false` if `stop`
+    /// fired.
+    fn rank_log(
+        &self,
+        v: u32,
+        apart: bool,
+        (order, heap): (&mut Vec<Ranked>, &mut Vec<Reverse<Ranked>>),
+        stop: &dyn Stop,
+    ) -> bool {
+        let graph = &self.graph;
+        let a = graph.state(v);
+        let mut poll = Poll::new(stop, a.len());
+        for (position, &(w, birth)) in (0u32..).zip(graph.log.iter_from(0)) {
+            if poll.tick(1) {
+                return false;
+            }
+            if w == v || graph.births[w as usize] != birth {
+                continue;
+            }
+            let target = graph.vertex(w);
+            let (cost, _) = graph.measure(a, w, &self.space, &self.heuristic);
+            let edge = (order_bits(cost + target.cost_to_go_bound), position, w);
+            if apart && target.rewired_from(v) {
+                heap.push(Reverse(edge));
+            } else {
+                order.push(edge);
+            }
+        }
+        true
+    }
+
+    /// `true` if FCIT*'s expansions need no neighbour lists: on a complete, uncapped graph a
+    /// vertex's list would hold every other live vertex of the log, in log order (a list
+    /// position orders as a log position does), so an expansion reads the log itself, or,
+    /// once it may no longer rewire, the vertices outside the tree (`graph::outside_tree`,
+    /// kept only for the lazy successors).
+    pub(crate) fn listless(&self) -> bool {
         let graph = &self.graph;
         graph.outside.enabled
             && graph.neighbourhood == Neighbourhood::Radius(f64::INFINITY)
             && graph.neighbour_cap == usize::MAX
     }
 
-    /// Appends to `order` the edges of `v`'s current list that do not rewire the tree: to the
-    /// listed vertices outside the tree, and to `v`'s listed children; each ranked by its key
-    /// and then its target's log position (the list's order), measured as the list measured
-    /// it.
+    /// Appends to `order` the edges of `v`'s complete list that do not rewire the tree: to the
+    /// logged vertices outside the tree, and to `v`'s logged children; each ranked by its key
+    /// and then its target's log position (the list's order), measured as a list entry is.
     fn rank_outside(&self, v: u32, order: &mut Vec<Ranked>) {
         let graph = &self.graph;
         let x = graph.vertex(v);
-        // The list holds the live vertices other than `v` logged before this position.
-        let limit = x.neighbours_log;
+        // Its list would hold the live vertices other than `v` in the log.
+        let limit = graph.log.len() as u32;
         let a = graph.state(v);
         let mut rank = |w: u32, position: u32, bound: f64| {
             let (cost, _) = graph.measure(a, w, &self.space, &self.heuristic);

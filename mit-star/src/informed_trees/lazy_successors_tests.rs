@@ -124,10 +124,10 @@ fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
     // heap (`a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring` checks the walk);
     // once it has rewired, only those out of the tree are ranked.
     planner.graph.vertex_mut(v).rewiring_expanded = false;
-    planner.expand_forward_lazily(v, len, NONE);
+    assert!(planner.expand_forward_lazily(v, len, NONE, &stop));
     assert_eq!(planner.successors[v as usize].order.len(), kept.len());
     planner.graph.vertex_mut(v).rewiring_expanded = true;
-    planner.expand_forward_lazily(v, len, NONE);
+    assert!(planner.expand_forward_lazily(v, len, NONE, &stop));
     // Ranked from the vertices outside the tree and the children, not from the list: each
     // target is found in the list, and the order is the list's (key, then position).
     let listed = |w: u32| {
@@ -221,7 +221,7 @@ fn a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring() {
             .iter()
             .filter(|&&w| planner.is_rewiring(v, w))
             .count();
-        planner.expand_forward_lazily(v, len, exclude);
+        assert!(planner.expand_forward_lazily(v, len, exclude, &stop));
         let mut walked = Vec::new();
         loop {
             let queued = planner.successors[v as usize].queued;
@@ -300,4 +300,47 @@ fn every_live_vertex_outside_the_tree_is_a_candidate_through_pruning() {
         checked > 0 && detached > 0,
         "{checked} checked, {detached} cut out"
     );
+}
+
+/// A stop condition that has fired.
+struct Fired;
+
+impl mit_star_spaces::Stop for Fired {
+    fn should_stop(&self) -> bool {
+        true
+    }
+}
+
+#[test]
+fn a_ranking_of_the_log_stops_when_told_and_changes_nothing() {
+    let problem = mit_star_problems::DividingWalls::new(8)
+        .build()
+        .unwrap()
+        .with_resolution(3e-3)
+        .unwrap();
+    let mut planner = FcitStar::for_problem(&problem)
+        .parameters(Parameters {
+            batch_size: Some(800),
+            ..Parameters::default()
+        })
+        .build()
+        .unwrap();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    planner.setup(&stop).unwrap();
+    // More logged vertices than one poll's share (16 384 coordinates: 2 048 states in R^8).
+    while planner.graph.log.len() <= 2_048 {
+        planner.iterate(&stop);
+    }
+    let v = planner.start_id;
+    let (order, tag) = {
+        let s = &planner.successors[v as usize];
+        (s.order.clone(), s.tag)
+    };
+    planner.graph.vertex_mut(v).rewiring_expanded = false;
+    assert!(!planner.expand_forward_lazily(v, 0, NONE, &Fired));
+    let s = &planner.successors[v as usize];
+    assert_eq!((&s.order, s.tag), (&order, tag));
+    // Told to go on, the same ranking completes.
+    assert!(planner.expand_forward_lazily(v, 0, NONE, &stop));
 }

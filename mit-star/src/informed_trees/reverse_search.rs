@@ -396,6 +396,16 @@ where
                 self.extras.push(p);
             }
         }
+        if self.listless() {
+            // The complete list `v` would have holds every committed vertex: the others are
+            // the extras.
+            let graph = &self.graph;
+            self.extras
+                .retain(|&w| w != v && graph.log_position(w).is_none());
+            self.extras.sort_unstable();
+            self.extras.dedup();
+            return;
+        }
         // A list of every other vertex (a complete graph's) holds them all already.
         if self.extras.is_empty() || len + 1 == self.graph.vertex_count() {
             self.extras.clear();
