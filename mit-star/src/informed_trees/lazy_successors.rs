@@ -1,10 +1,21 @@
 //! Lazy successors: FCIT*'s way of keeping the forward queue small on a fully connected graph.
-//! Instead of queueing all `q − 1` outgoing edges of an expanded vertex, its neighbours are
-//! sorted once by `ĉ(v, w) + ĥ(w)` and only the best edge not yet tried is queued; when that
-//! edge leaves the queue, the next one takes its place. With the a-priori heuristic
+//! Instead of queueing all `q − 1` outgoing edges of an expanded vertex, its edges are ranked
+//! once by `ĉ(v, w) + ĥ(w)` and only the best edge not yet tried is queued; when that edge
+//! leaves the queue, the next one takes its place. With the a-priori heuristic
 //! ([`APriori`](crate::APriori)) the keys of `v`'s edges are `g(v)` plus these values, so the
-//! queue hands out edges in the same order as if all were queued, with at most one queued edge
-//! per expanded vertex (plus the few tree edges queued beside the lists).
+//! queue hands out edges in the order queueing all of them would, with at most one queued edge
+//! per expanded vertex (plus the few tree edges queued beside them). One rule differs from
+//! queueing all at once: without cascading rewirings a vertex queues at most one rewiring
+//! (an edge into the tree other than to its children), since the first one queued marks it
+//! as having rewired; queued all at once, its first expansion that meets any would queue
+//! them all.
+//!
+//! On a complete, uncapped graph ([`listless`](Eit::listless)) no neighbour list is kept: a
+//! vertex's list would be every other live vertex of the graph's log, in log order, so an
+//! expansion that may still rewire ranks the log itself, and one that may not ranks only the
+//! vertices outside the tree (`graph/outside_tree.rs`) and its children. Either way each edge
+//! is measured as a list entry would be, and ties are broken by log position, which orders as
+//! a list position would.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;

@@ -18,7 +18,8 @@
 //!   (sparse checks) and its edge queue; `reverse_repair/`: AIT*'s in-place repair of the
 //!   reverse tree, with its tests.
 //! - `lazy_successors.rs`: FCIT*'s forward expansion on a complete graph — each vertex's
-//!   edges sorted once, queued one at a time; `lazy_successors_tests.rs`, its tests.
+//!   edges ranked once, from the graph's log or the vertices outside the tree rather than
+//!   neighbour lists, and queued one at a time; `lazy_successors_tests.rs`, its tests.
 //! - `offered_path.rs`: a path offered from outside (a warm start's, a simplified solution)
 //!   grafted into the forward tree as the best solution.
 //! - `frontier.rs`: the states the reverse search reached farthest from the goals, handed to
