@@ -279,7 +279,7 @@ where
         let g = self.graph.vertex(v).g;
         let rewirings = self.may_rewire(v);
         // Without a solution the test `g + ĉ + ĥ ≥ c_best` fails for every finite key, and
-        // the neighbour's list entry (its cost) is not read.
+        // the edge is not measured for it.
         let bounded = self.best_cost.is_finite() || !g.is_finite();
         let mut queued = None;
         while let Some(edge @ (key, _, id)) = self.successors[index].peek() {
