@@ -52,8 +52,10 @@ pub trait NeighbourRule {
 
     /// `true` if a forward expansion should queue its vertex's edges one at a time, best
     /// `ĉ + ĥ` first, rather than all at once (FCIT*'s rule for a graph whose every vertex has
-    /// `q − 1` neighbours). Applied only with the a-priori heuristic, where it changes nothing
-    /// of the order edges leave the queue in; default `false`.
+    /// `q − 1` neighbours). Applied only with the a-priori heuristic, where edges leave the
+    /// queue in the order they would if all were queued, but for one rule: without cascading
+    /// rewirings a vertex then queues at most one edge into the tree (other than to its
+    /// children), the first it meets. Default `false`.
     fn queues_successors_lazily(&self) -> bool {
         false
     }
