@@ -167,9 +167,13 @@ where
         (order, heap): (&mut Vec<Ranked>, &mut Vec<Reverse<Ranked>>),
     ) {
         order.reserve(len);
+        let hopeless = self.hopeless(v);
         // One pass over the list, reading each neighbour's vertex once.
         for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
             let target = self.graph.vertex(n.id);
+            if hopeless(n.cost, target.cost_to_go_bound) {
+                continue;
+            }
             let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
             if target.rewired_from(v) {
                 if !rewirings {
@@ -196,6 +200,7 @@ where
     ) -> bool {
         let graph = &self.graph;
         let a = graph.state(v);
+        let hopeless = self.hopeless(v);
         let mut poll = Poll::new(stop, a.len());
         for (position, &(w, birth)) in (0u32..).zip(graph.log.iter_from(0)) {
             if poll.tick(1) {
@@ -206,6 +211,9 @@ where
             }
             let target = graph.vertex(w);
             let (cost, _) = graph.measure(a, w, &self.space, &self.heuristic);
+            if hopeless(cost, target.cost_to_go_bound) {
+                continue;
+            }
             let edge = (order_bits(cost + target.cost_to_go_bound), position, w);
             if apart && target.rewired_from(v) {
                 heap.push(Reverse(edge));
@@ -214,6 +222,16 @@ where
             }
         }
         true
+    }
+
+    /// A test of the edges out of `v` that can never be queued: with a solution of cost
+    /// `c_best`, an edge whose `ĝ(v) + ĉ + ĥ` reaches it fails the walk's test `g(v) + ĉ + ĥ ≥
+    /// c_best` now and after any later improvement of `g(v)` (never below `ĝ(v)`) or of
+    /// `c_best` (which only falls), so it is left out of the order. Without a solution,
+    /// nothing is.
+    fn hopeless(&self, v: u32) -> impl Fn(f64, f64) -> bool + use<S, V, Smp, E, H, G, N> {
+        let (bound, best) = (self.graph.vertex(v).cost_to_come_bound, self.best_cost);
+        move |cost: f64, h: f64| best.is_finite() && bound + cost + h >= best
     }
 
     /// `true` if FCIT*'s expansions need no neighbour lists: on a complete, uncapped graph a
@@ -237,9 +255,12 @@ where
         // Its list would hold the live vertices other than `v` in the log.
         let limit = graph.log.len() as u32;
         let a = graph.state(v);
+        let hopeless = self.hopeless(v);
         let mut rank = |w: u32, position: u32, bound: f64| {
             let (cost, _) = graph.measure(a, w, &self.space, &self.heuristic);
-            order.push((order_bits(cost + bound), position, w));
+            if !hopeless(cost, bound) {
+                order.push((order_bits(cost + bound), position, w));
+            }
         };
         for c in &graph.outside.entries {
             if c.position >= limit || c.id == v || graph.births[c.id as usize] != c.birth {

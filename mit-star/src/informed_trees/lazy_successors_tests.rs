@@ -344,3 +344,78 @@ fn a_ranking_of_the_log_stops_when_told_and_changes_nothing() {
     // Told to go on, the same ranking completes.
     assert!(planner.expand_forward_lazily(v, 0, NONE, &stop));
 }
+
+#[test]
+fn with_a_solution_a_walk_stops_where_a_full_sort_would_and_ranks_fewer_edges() {
+    let problem = mit_star_problems::DividingWalls::new(4)
+        .build()
+        .unwrap()
+        .with_resolution(1e-3)
+        .unwrap();
+    let mut planner = FcitStar::for_problem(&problem)
+        .parameters(Parameters {
+            batch_size: Some(100),
+            ..Parameters::default()
+        })
+        .build()
+        .unwrap();
+    let limit = IterationLimit::new(u64::MAX);
+    let stop = SolveStop::new(&limit);
+    planner.setup(&stop).unwrap();
+    for _ in 0..6_000 {
+        planner.iterate(&stop);
+    }
+    let best = planner.best_cost;
+    assert!(best.is_finite(), "no solution to bound the walks");
+    let tree: Vec<u32> = (0..planner.graph.vertex_count() as u32)
+        .filter(|&v| planner.graph.vertex(v).g.is_finite() && !planner.graph.vertex(v).is_goal())
+        .collect();
+    let mut left_out = 0;
+    for &v in tree.iter().take(20) {
+        let len = planner
+            .graph
+            .neighbours(v, &planner.space, &planner.heuristic, &stop)
+            .unwrap();
+        let exclude = planner.graph.vertex(v).parent;
+        let g = planner.graph.vertex(v).g;
+        planner.graph.vertex_mut(v).rewiring_expanded = false;
+        // The full sort's walk, stopped at the first edge `g + ĉ + ĥ ≥ c_best`.
+        let mut all: Vec<(f64, usize, u32, f64)> = (0..len)
+            .map(|i| {
+                let n = planner.graph.neighbour(v, i);
+                let h = planner.graph.vertex(n.id).cost_to_go_bound;
+                (n.cost + h, i, n.id, g + n.cost + h)
+            })
+            .collect();
+        all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut rewired = false;
+        let mut expected = Vec::new();
+        for &(_, _, w, through) in &all {
+            if through >= best {
+                break;
+            }
+            let rewiring = planner.is_rewiring(v, w);
+            if w == exclude || (rewiring && rewired) || planner.is_blacklisted(v, w) {
+                continue;
+            }
+            rewired |= rewiring;
+            expected.push(w);
+        }
+        assert!(planner.expand_forward_lazily(v, len, exclude, &stop));
+        let mut walked = Vec::new();
+        while planner.successors[v as usize].queued != NONE {
+            walked.push(planner.successors[v as usize].queued);
+            planner.queue_next_successor(v);
+        }
+        assert_eq!(walked, expected, "vertex {v}");
+        // Once it may not rewire, its order holds only the edges out of the tree that could
+        // still beat the solution.
+        planner.graph.vertex_mut(v).rewiring_expanded = true;
+        assert!(planner.expand_forward_lazily(v, len, exclude, &stop));
+        let out_of_tree = (0..len)
+            .filter(|&i| !planner.is_rewiring(v, planner.graph.neighbour(v, i).id))
+            .count();
+        left_out += out_of_tree - planner.successors[v as usize].order.len();
+    }
+    assert!(left_out > 0, "no edge was left out of an order");
+}
