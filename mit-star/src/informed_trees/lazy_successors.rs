@@ -171,20 +171,11 @@ where
         // One pass over the list, reading each neighbour's vertex once.
         for (i, n) in (0u32..).zip(self.graph.neighbour_slice(v, len)) {
             let target = self.graph.vertex(n.id);
-            if hopeless(n.cost, target.cost_to_go_bound) {
-                continue;
+            if !hopeless(n.cost, target.cost_to_go_bound) {
+                let into_tree = target.rewired_from(v);
+                let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
+                file(edge, into_tree, rewirings, apart, (order, heap));
             }
-            let edge = (order_bits(n.cost + target.cost_to_go_bound), i, n.id);
-            if target.rewired_from(v) {
-                if !rewirings {
-                    continue;
-                }
-                if apart {
-                    heap.push(Reverse(edge));
-                    continue;
-                }
-            }
-            order.push(edge);
         }
     }
 
@@ -211,14 +202,10 @@ where
             }
             let target = graph.vertex(w);
             let (cost, _) = graph.measure(a, w, &self.space, &self.heuristic);
-            if hopeless(cost, target.cost_to_go_bound) {
-                continue;
-            }
-            let edge = (order_bits(cost + target.cost_to_go_bound), position, w);
-            if apart && target.rewired_from(v) {
-                heap.push(Reverse(edge));
-            } else {
-                order.push(edge);
+            if !hopeless(cost, target.cost_to_go_bound) {
+                let into_tree = target.rewired_from(v);
+                let edge = (order_bits(cost + target.cost_to_go_bound), position, w);
+                file(edge, into_tree, true, apart, (&mut *order, &mut *heap));
             }
         }
         true
@@ -290,7 +277,7 @@ where
     /// may let it through.
     pub(crate) fn queue_next_successor(&mut self, v: u32) {
         let index = v as usize;
-        let Some(successors) = self.successors.get_mut(index) else {
+        let Some(successors) = self.successors.get(index) else {
             return;
         };
         if successors.tag != self.graph.tag {
@@ -305,12 +292,14 @@ where
         let mut queued = None;
         while let Some(edge @ (key, _, id)) = self.successors[index].peek() {
             let target = self.graph.vertex(id);
+            let mut measured = None;
             if bounded || key >= order_bits(f64::INFINITY) {
                 let a = self.graph.state(v);
-                let (cost, _) = self.graph.measure(a, id, &self.space, &self.heuristic);
+                let (cost, distance) = self.graph.measure(a, id, &self.space, &self.heuristic);
                 if g + cost + target.cost_to_go_bound >= self.best_cost {
                     break;
                 }
+                measured = Some((cost, distance));
             }
             self.successors[index].advance(edge);
             // The cheap tests first: `is_blacklisted` looks the edge up.
@@ -320,13 +309,14 @@ where
             }
             if rewiring {
                 self.graph.vertex_mut(v).rewiring_expanded = true;
-                if !self.may_rewire(v) {
-                    // Every edge left in the heap leads into the tree.
-                    self.successors[index].rewirings = BinaryHeap::new();
-                }
+                // Every edge left in the heap leads into the tree (with cascading rewirings
+                // the heap is empty).
+                self.successors[index].rewirings = BinaryHeap::new();
             }
-            let a = self.graph.state(v);
-            let (cost, distance) = self.graph.measure(a, id, &self.space, &self.heuristic);
+            let (cost, distance) = measured.unwrap_or_else(|| {
+                let a = self.graph.state(v);
+                self.graph.measure(a, id, &self.space, &self.heuristic)
+            });
             queued = Some(ForwardEdge {
                 source: v,
                 target: id,
@@ -386,6 +376,22 @@ where
         };
         let keys = forward_keys(&self.graph, self.key_rule(), &edge);
         self.forward.update(d, queued, keys);
+    }
+}
+
+/// Files a ranked edge: one into the tree (`into_tree`) is left out without `rewirings`, and
+/// goes to the heap when those edges are kept `apart`; any other goes to the order.
+fn file(
+    edge: Ranked,
+    into_tree: bool,
+    rewirings: bool,
+    apart: bool,
+    (order, heap): (&mut Vec<Ranked>, &mut Vec<Reverse<Ranked>>),
+) {
+    match (into_tree, rewirings, apart) {
+        (true, false, _) => {}
+        (true, true, true) => heap.push(Reverse(edge)),
+        _ => order.push(edge),
     }
 }
 

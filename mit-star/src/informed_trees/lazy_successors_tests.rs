@@ -86,23 +86,40 @@ fn the_queue_holds_about_one_edge_per_expanded_vertex() {
     }
 }
 
-#[test]
-fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
-    let problem = mit_star_problems::DividingWalls::new(4)
+/// FCIT* on dividing walls in `R^dim` at `resolution`, with batches of `batch_size`, set up.
+fn fcit_on_walls(dim: usize, resolution: f64, batch_size: usize) -> FcitStar {
+    let problem = mit_star_problems::DividingWalls::new(dim)
         .build()
         .unwrap()
-        .with_resolution(1e-3)
+        .with_resolution(resolution)
         .unwrap();
     let mut planner = FcitStar::for_problem(&problem)
         .parameters(Parameters {
-            batch_size: Some(100),
+            batch_size: Some(batch_size),
             ..Parameters::default()
         })
         .build()
         .unwrap();
     let limit = IterationLimit::new(u64::MAX);
+    planner.setup(&SolveStop::new(&limit)).unwrap();
+    planner
+}
+
+/// The targets `v`'s walk queues from here on, one after the other, to its end.
+fn walk(planner: &mut FcitStar, v: u32) -> Vec<u32> {
+    let mut walked = Vec::new();
+    while planner.successors[v as usize].queued != NONE {
+        walked.push(planner.successors[v as usize].queued);
+        planner.queue_next_successor(v);
+    }
+    walked
+}
+
+#[test]
+fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
+    let mut planner = fcit_on_walls(4, 1e-3, 100);
+    let limit = IterationLimit::new(u64::MAX);
     let stop = SolveStop::new(&limit);
-    planner.setup(&stop).unwrap();
     for _ in 0..4_000 {
         planner.iterate(&stop);
     }
@@ -184,21 +201,9 @@ fn walk_by_full_sort(planner: &FcitStar, v: u32, len: usize, exclude: u32) -> Ve
 
 #[test]
 fn a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring() {
-    let problem = mit_star_problems::DividingWalls::new(4)
-        .build()
-        .unwrap()
-        .with_resolution(1e-3)
-        .unwrap();
-    let mut planner = FcitStar::for_problem(&problem)
-        .parameters(Parameters {
-            batch_size: Some(100),
-            ..Parameters::default()
-        })
-        .build()
-        .unwrap();
+    let mut planner = fcit_on_walls(4, 1e-3, 100);
     let limit = IterationLimit::new(u64::MAX);
     let stop = SolveStop::new(&limit);
-    planner.setup(&stop).unwrap();
     for _ in 0..4_000 {
         planner.iterate(&stop);
     }
@@ -222,16 +227,7 @@ fn a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring() {
             .filter(|&&w| planner.is_rewiring(v, w))
             .count();
         assert!(planner.expand_forward_lazily(v, len, exclude, &stop));
-        let mut walked = Vec::new();
-        loop {
-            let queued = planner.successors[v as usize].queued;
-            if queued == NONE {
-                break;
-            }
-            walked.push(queued);
-            planner.queue_next_successor(v);
-        }
-        assert_eq!(walked, expected, "vertex {v}");
+        assert_eq!(walk(&mut planner, v), expected, "vertex {v}");
         assert!(planner.successors[v as usize].rewirings.is_empty());
     }
     assert!(rewirings_seen > 0, "no walk met a rewiring");
@@ -239,21 +235,9 @@ fn a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring() {
 
 #[test]
 fn every_live_vertex_outside_the_tree_is_a_candidate_through_pruning() {
-    let problem = mit_star_problems::DividingWalls::new(4)
-        .build()
-        .unwrap()
-        .with_resolution(1e-3)
-        .unwrap();
-    let mut planner = FcitStar::for_problem(&problem)
-        .parameters(Parameters {
-            batch_size: Some(50),
-            ..Parameters::default()
-        })
-        .build()
-        .unwrap();
+    let mut planner = fcit_on_walls(4, 1e-3, 50);
     let limit = IterationLimit::new(u64::MAX);
     let stop = SolveStop::new(&limit);
-    planner.setup(&stop).unwrap();
     assert!(planner.graph.outside.enabled);
     let (mut checked, mut detached) = (0, 0);
     for round in 0..60 {
@@ -313,21 +297,9 @@ impl mit_star_spaces::Stop for Fired {
 
 #[test]
 fn a_ranking_of_the_log_stops_when_told_and_changes_nothing() {
-    let problem = mit_star_problems::DividingWalls::new(8)
-        .build()
-        .unwrap()
-        .with_resolution(3e-3)
-        .unwrap();
-    let mut planner = FcitStar::for_problem(&problem)
-        .parameters(Parameters {
-            batch_size: Some(800),
-            ..Parameters::default()
-        })
-        .build()
-        .unwrap();
+    let mut planner = fcit_on_walls(8, 3e-3, 800);
     let limit = IterationLimit::new(u64::MAX);
     let stop = SolveStop::new(&limit);
-    planner.setup(&stop).unwrap();
     // More logged vertices than one poll's share (16 384 coordinates: 2 048 states in R^8).
     while planner.graph.log.len() <= 2_048 {
         planner.iterate(&stop);
@@ -347,21 +319,9 @@ fn a_ranking_of_the_log_stops_when_told_and_changes_nothing() {
 
 #[test]
 fn with_a_solution_a_walk_stops_where_a_full_sort_would_and_ranks_fewer_edges() {
-    let problem = mit_star_problems::DividingWalls::new(4)
-        .build()
-        .unwrap()
-        .with_resolution(1e-3)
-        .unwrap();
-    let mut planner = FcitStar::for_problem(&problem)
-        .parameters(Parameters {
-            batch_size: Some(100),
-            ..Parameters::default()
-        })
-        .build()
-        .unwrap();
+    let mut planner = fcit_on_walls(4, 1e-3, 100);
     let limit = IterationLimit::new(u64::MAX);
     let stop = SolveStop::new(&limit);
-    planner.setup(&stop).unwrap();
     for _ in 0..6_000 {
         planner.iterate(&stop);
     }
@@ -402,12 +362,7 @@ fn with_a_solution_a_walk_stops_where_a_full_sort_would_and_ranks_fewer_edges() 
             expected.push(w);
         }
         assert!(planner.expand_forward_lazily(v, len, exclude, &stop));
-        let mut walked = Vec::new();
-        while planner.successors[v as usize].queued != NONE {
-            walked.push(planner.successors[v as usize].queued);
-            planner.queue_next_successor(v);
-        }
-        assert_eq!(walked, expected, "vertex {v}");
+        assert_eq!(walk(&mut planner, v), expected, "vertex {v}");
         // Once it may not rewire, its order holds only the edges out of the tree that could
         // still beat the solution.
         planner.graph.vertex_mut(v).rewiring_expanded = true;

@@ -396,24 +396,19 @@ where
                 self.extras.push(p);
             }
         }
+        let graph = &self.graph;
         if self.listless() {
-            // The complete list `v` would have holds every committed vertex: the others are
-            // the extras.
-            let graph = &self.graph;
+            // The complete list `v` would have holds every committed vertex.
             self.extras
                 .retain(|&w| w != v && graph.log_position(w).is_none());
-            self.extras.sort_unstable();
-            self.extras.dedup();
-            return;
-        }
-        // A list of every other vertex (a complete graph's) holds them all already.
-        if self.extras.is_empty() || len + 1 == self.graph.vertex_count() {
+        } else if self.extras.is_empty() || len + 1 == graph.vertex_count() {
+            // A list of every other vertex (a complete graph's) holds them all already.
             self.extras.clear();
             return;
+        } else {
+            self.extras
+                .retain(|&w| w != v && !(0..len).any(|i| graph.neighbour(v, i).id == w));
         }
-        let graph = &self.graph;
-        self.extras
-            .retain(|&w| w != v && !(0..len).any(|i| graph.neighbour(v, i).id == w));
         self.extras.sort_unstable();
         self.extras.dedup();
     }
