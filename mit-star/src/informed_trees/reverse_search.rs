@@ -218,7 +218,7 @@ where
         let remaining = progress.remaining(&EdgeGrid::new(distance, self.step));
         let k3 = effort.saturating_add(remaining).saturating_add(from_start);
         self.reverse
-            .push(ReverseEdge::new(k1, k2, k3, v, w, hint, version));
+            .push(ReverseEdge::new((k1, k2, k3), (v, w, cost), hint, version));
         true
     }
 
@@ -277,11 +277,11 @@ where
             self.expand_reverse(v, u, stop);
             return;
         }
-        let (cost, distance) = self.edge_geometry(u, v, edge.hint);
-        let h_u = self.graph.vertex(u).h;
+        let (cost, h_u) = (edge.cost(), self.graph.vertex(u).h);
         if h_u + cost >= self.graph.vertex(v).h(tag) {
             return;
         }
+        let (_, distance) = self.edge_geometry(u, v, edge.hint);
         // AIT*: the reverse search checks nothing.
         let (status, progress) =
             self.sparse_check(u, v, G::REVERSE != ReverseSearch::Unchecked, stop);
