@@ -207,19 +207,16 @@ impl RandomGeometricGraph {
         };
         let complete = self.neighbourhood == Neighbourhood::Radius(f64::INFINITY);
         let mut squared = std::mem::take(&mut self.merge_distances);
+        let mut entries = std::mem::take(&mut self.merge_entries);
+        entries.clear();
         let x = &self.states[v as usize];
         let mut offer = |w: u32, birth: u32| {
             if w == v || self.births[w as usize] != birth {
                 return;
             }
-            if complete {
-                // A complete graph (FCIT*): every sample enters, and its lists need no order.
-                list.push(self.entry(x, w, birth, space, heuristic));
-            } else if space.distance(x, &self.states[w as usize]) <= bound {
-                // Few candidates pass the bound: insert each in order.
-                let n = self.entry(x, w, birth, space, heuristic);
-                let at = list.partition_point(|m| nearest_first(m, &n).is_lt());
-                list.insert(at, n);
+            // A complete graph (FCIT*): every sample enters, and its lists need no order.
+            if complete || space.distance(x, &self.states[w as usize]) <= bound {
+                entries.push(self.entry(x, w, birth, space, heuristic));
             }
         };
         // In a Euclidean space, plain or weighted, squared distances to the recent states,
@@ -247,6 +244,12 @@ impl RandomGeometricGraph {
             }
         }
         self.merge_distances = squared;
+        if complete {
+            list.extend_from_slice(&entries);
+        } else {
+            merge_sorted(list, &mut entries);
+        }
+        self.merge_entries = entries;
         match self.neighbourhood {
             Neighbourhood::Nearest(_) => {
                 // The survivors held the `wanted` nearest old points, so the merge is exact up
@@ -372,6 +375,29 @@ impl RandomGeometricGraph {
 }
 
 /// The order of a list: nearest first, ties by id.
+/// Merges `added` (in any order, sorted here) into `list` (sorted [`nearest_first`], no entry
+/// of `added` equal to one of it): one pass from the back, each entry moved once, where
+/// inserting one at a time moved the tail of the list for each.
+fn merge_sorted(list: &mut Vec<Neighbour>, added: &mut [Neighbour]) {
+    if added.is_empty() {
+        return;
+    }
+    added.sort_unstable_by(nearest_first);
+    let old = list.len();
+    list.extend_from_slice(added);
+    let (mut i, mut j, mut k) = (old, added.len(), list.len());
+    while j > 0 {
+        k -= 1;
+        if i > 0 && nearest_first(&list[i - 1], &added[j - 1]).is_gt() {
+            list[k] = list[i - 1];
+            i -= 1;
+        } else {
+            list[k] = added[j - 1];
+            j -= 1;
+        }
+    }
+}
+
 fn nearest_first(a: &Neighbour, b: &Neighbour) -> std::cmp::Ordering {
     a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id))
 }
@@ -411,6 +437,40 @@ mod tests {
             Neighbourhood::Radius(r) => all.retain(|&(d, _)| d <= r),
         }
         all.into_iter().map(|(_, w)| w).collect()
+    }
+
+    #[test]
+    fn a_merge_gives_the_list_inserting_one_at_a_time_gives() {
+        let mut rng = SeededRng::seed_from_u64(3);
+        let entry = |id: u32, distance: f64| Neighbour {
+            id,
+            birth: 0,
+            cost: distance,
+            distance,
+        };
+        for _ in 0..500 {
+            // Coarse distances, so that ties (broken by id) are common.
+            let mut ids: Vec<u32> = (0..60).collect();
+            let (mut list, mut added) = (Vec::new(), Vec::new());
+            for _ in 0..rng.random_range(0..60usize) {
+                let id = ids.swap_remove(rng.random_range(0..ids.len()));
+                let n = entry(id, f64::from(rng.random_range(0..8u32)));
+                if rng.random_bool(0.5) {
+                    list.push(n);
+                } else {
+                    added.push(n);
+                }
+            }
+            list.sort_unstable_by(nearest_first);
+            let mut expected = list.clone();
+            for n in &added {
+                let at = expected.partition_point(|m| nearest_first(m, n).is_lt());
+                expected.insert(at, *n);
+            }
+            merge_sorted(&mut list, &mut added);
+            let key = |l: &[Neighbour]| l.iter().map(|n| (n.id, n.distance)).collect::<Vec<_>>();
+            assert_eq!(key(&list), key(&expected));
+        }
     }
 
     #[test]

@@ -101,6 +101,8 @@ pub struct RandomGeometricGraph {
     pub(crate) recent: RecentStates,
     /// Scratch for [`RecentStates::squared_distances`] (at most [`MERGE_LIMIT`] values).
     pub(crate) merge_distances: Vec<f64>,
+    /// Scratch of `merge_added`: the new samples that enter a list, before they are merged in.
+    pub(crate) merge_entries: Vec<Neighbour>,
     pub(crate) neighbourhood: Neighbourhood,
     /// Under r-disc, the most neighbours (the nearest) a vertex is joined to in a batch
     /// (`usize::MAX`: every one within the radius); with a cap, lists are kept nearest first.
@@ -160,6 +162,7 @@ impl RandomGeometricGraph {
             log: Chunked::new(),
             recent: RecentStates::new(dimension, MERGE_LIMIT),
             merge_distances: Vec::with_capacity(MERGE_LIMIT),
+            merge_entries: Vec::new(),
             neighbourhood: Neighbourhood::Nearest(1),
             neighbour_cap: usize::MAX,
             found: Neighbours::new(),
