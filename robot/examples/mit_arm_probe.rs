@@ -12,7 +12,12 @@
 //! cost at 10 ms, 100 ms and the end, the number of improvements, and the counters: batches,
 //! samples, vertices, pruned, reverse and forward iterations, reverse restarts and repairs,
 //! sparse and full checks, grid points tested, validity checks (sampler's apart) and
-//! neighbour queries.
+//! neighbour queries, and the solve's wall time in seconds.
+//!
+//! `PROBE_FIXED_ITERATIONS=N` stops each solve after `N` iterations instead of the time: a build
+//! that takes the same decisions prints the same counters, and its wall time compares the two
+//! builds' speed on exactly the same work (`PROBE_ITERATIONS=N` prints the first `N`
+//! iterations one by one).
 
 use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
 
@@ -49,8 +54,11 @@ fn main() {
     }
     let configuration: Configuration = name.parse().expect("a configuration");
     println!(
-        "scene idx first_ms c10 c100 cend line impr batches samples verts pruned rev_it fwd_it restarts repairs sparse full points vchecks smp_checks nn"
+        "scene idx first_ms c10 c100 cend line impr batches samples verts pruned rev_it fwd_it restarts repairs sparse full points vchecks smp_checks nn solve_s"
     );
+    let fixed: Option<u64> = std::env::var("PROBE_FIXED_ITERATIONS")
+        .ok()
+        .map(|n| n.parse().expect("a count"));
     for scene in &scenes {
         let folder_name = format!("{scene}_{}", robot.0);
         for (index, problem) in problems_of(&robot.1, &folder, &folder_name, count) {
@@ -83,7 +91,13 @@ fn main() {
                     );
                 }
             }
-            planner.solve(&TimeLimit::seconds(seconds)).expect("plans");
+            let started = std::time::Instant::now();
+            match fixed {
+                Some(n) => planner.solve(&mit_star::IterationLimit::new(n)),
+                None => planner.solve(&TimeLimit::seconds(seconds)),
+            }
+            .expect("plans");
+            let solve_s = started.elapsed().as_secs_f64();
             let trace = planner.trace();
             let c = planner.counters();
             let line = {
@@ -94,7 +108,7 @@ fn main() {
                     .distance(problem.start(), &problem.goals()[0])
             };
             println!(
-                "{} {index} {:.3} {:.3} {:.3} {:.3} {:.3} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {}",
+                "{} {index} {:.3} {:.3} {:.3} {:.3} {:.3} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {} {solve_s:.4}",
                 scene,
                 trace.initial().map_or(f64::INFINITY, |p| p.time * 1e3),
                 trace.cost_at(0.01),
