@@ -374,7 +374,6 @@ impl RandomGeometricGraph {
     }
 }
 
-/// The order of a list: nearest first, ties by id.
 /// Merges `added` (in any order, sorted here) into `list` (sorted [`nearest_first`], no entry
 /// of `added` equal to one of it): one pass from the back, each entry moved once, where
 /// inserting one at a time moved the tail of the list for each.
@@ -398,6 +397,7 @@ fn merge_sorted(list: &mut Vec<Neighbour>, added: &mut [Neighbour]) {
     }
 }
 
+/// The order of a list: nearest first, ties by id.
 fn nearest_first(a: &Neighbour, b: &Neighbour) -> std::cmp::Ordering {
     a.distance.total_cmp(&b.distance).then(a.id.cmp(&b.id))
 }
