@@ -173,22 +173,24 @@ fn an_expansion_that_may_not_rewire_orders_no_edge_into_the_tree() {
 
 /// The targets a vertex's walk queues, one after the other, as the rules read with every
 /// edge sorted at once: by `ĉ + ĥ` (then list position), passing over `exclude`, known-invalid
-/// edges, and every rewiring after the first one queued.
-fn walk_by_full_sort(planner: &FcitStar, v: u32, len: usize, exclude: u32) -> Vec<u32> {
-    let mut all: Vec<(f64, usize, u32)> = (0..len)
+/// edges, and every rewiring after the first one queued, and stopping at the first edge with
+/// `g(v) + ĉ + ĥ ≥ best` (the walk's bound test, summed as the walk sums it).
+fn walk_by_full_sort(planner: &FcitStar, v: u32, len: usize, exclude: u32, best: f64) -> Vec<u32> {
+    let mut all: Vec<(f64, usize, u32, f64)> = (0..len)
         .map(|i| {
             let n = planner.graph.neighbour(v, i);
-            (
-                n.cost + planner.graph.vertex(n.id).cost_to_go_bound,
-                i,
-                n.id,
-            )
+            let h = planner.graph.vertex(n.id).cost_to_go_bound;
+            (n.cost + h, i, n.id, n.cost)
         })
         .collect();
     all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-    let mut rewired = planner.graph.vertex(v).rewiring_expanded;
+    let x = planner.graph.vertex(v);
+    let (g, mut rewired) = (x.g, x.rewiring_expanded);
     let mut targets = Vec::new();
-    for (_, _, w) in all {
+    for (_, _, w, cost) in all {
+        if g + cost + planner.graph.vertex(w).cost_to_go_bound >= best {
+            break;
+        }
         let rewiring = planner.is_rewiring(v, w);
         if w == exclude || (rewiring && rewired) || planner.is_blacklisted(v, w) {
             continue;
@@ -221,7 +223,7 @@ fn a_walk_queues_the_edges_a_full_sort_orders_with_one_rewiring() {
             .unwrap();
         let exclude = planner.graph.vertex(v).parent;
         planner.graph.vertex_mut(v).rewiring_expanded = false;
-        let expected = walk_by_full_sort(&planner, v, len, exclude);
+        let expected = walk_by_full_sort(&planner, v, len, exclude, f64::INFINITY);
         rewirings_seen += expected
             .iter()
             .filter(|&&w| planner.is_rewiring(v, w))
@@ -337,30 +339,8 @@ fn with_a_solution_a_walk_stops_where_a_full_sort_would_and_ranks_fewer_edges() 
             .neighbours(v, &planner.space, &planner.heuristic, &stop)
             .unwrap();
         let exclude = planner.graph.vertex(v).parent;
-        let g = planner.graph.vertex(v).g;
         planner.graph.vertex_mut(v).rewiring_expanded = false;
-        // The full sort's walk, stopped at the first edge `g + ĉ + ĥ ≥ c_best`.
-        let mut all: Vec<(f64, usize, u32, f64)> = (0..len)
-            .map(|i| {
-                let n = planner.graph.neighbour(v, i);
-                let h = planner.graph.vertex(n.id).cost_to_go_bound;
-                (n.cost + h, i, n.id, g + n.cost + h)
-            })
-            .collect();
-        all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let mut rewired = false;
-        let mut expected = Vec::new();
-        for &(_, _, w, through) in &all {
-            if through >= best {
-                break;
-            }
-            let rewiring = planner.is_rewiring(v, w);
-            if w == exclude || (rewiring && rewired) || planner.is_blacklisted(v, w) {
-                continue;
-            }
-            rewired |= rewiring;
-            expected.push(w);
-        }
+        let expected = walk_by_full_sort(&planner, v, len, exclude, best);
         assert!(planner.expand_forward_lazily(v, len, exclude, &stop));
         assert_eq!(walk(&mut planner, v), expected, "vertex {v}");
         // Once it may not rewire, its order holds only the edges out of the tree that could
