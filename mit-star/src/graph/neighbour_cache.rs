@@ -375,8 +375,7 @@ impl RandomGeometricGraph {
 }
 
 /// Merges `added` (in any order, sorted here) into `list` (sorted [`nearest_first`], no entry
-/// of `added` equal to one of it): one pass from the back, each entry moved once, where
-/// inserting one at a time moved the tail of the list for each.
+/// of `added` equal to one of it): one pass from the back, each entry moved once.
 fn merge_sorted(list: &mut Vec<Neighbour>, added: &mut [Neighbour]) {
     if added.is_empty() {
         return;
