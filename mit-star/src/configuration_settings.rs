@@ -23,6 +23,7 @@ const INFORMED_TREES: &[&str] = &[
     "batch_growth",
     "solution_samples",
     "solution_corner_pulls",
+    "solution_corner_weights",
     "pruning",
     "lazy_certification",
     "near_terminals",

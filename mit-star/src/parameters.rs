@@ -67,6 +67,14 @@ pub struct Parameters {
     /// the default: on the Panda the pulls made paths longer on more problems than shorter,
     /// `docs/guide/src/performance-switches.md`). Not in the paper.
     pub solution_corner_pulls: bool,
+    /// With [`solution_samples`](Self::solution_samples), the share of the placed states that
+    /// gather at the path's bends, in `[0, 1]`: for such a state the vertex a shortcut spans
+    /// (or the corner a pull moves) is drawn in proportion to how much longer the path is
+    /// through it than along the chord of its two neighbours; for the others the shortcut's
+    /// two ends are uniform over the path. 0 is the placement before 2026-12-07; the default
+    /// is chosen by the measurement in `docs/guide/src/performance-switches.md`. Not in the
+    /// paper.
+    pub solution_corner_weights: f64,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,
     /// k-nearest or r-disc connection (`None`: the problem's,
@@ -298,6 +306,7 @@ impl Default for Parameters {
             batch_growth: None,
             solution_samples: None,
             solution_corner_pulls: false,
+            solution_corner_weights: DEFAULT_SOLUTION_CORNER_WEIGHTS,
             rewire_factor: 1.001,
             connection: None,
             neighbour_cap: None,
@@ -345,6 +354,10 @@ impl Default for Parameters {
         }
     }
 }
+
+/// The default of [`Parameters::solution_corner_weights`]: half of the placed states at the
+/// bends (`docs/guide/src/performance-switches.md`).
+const DEFAULT_SOLUTION_CORNER_WEIGHTS: f64 = 0.5;
 
 /// ABIT*'s initial inflation factor (OMPL 2.0's default).
 const ABIT_INITIAL_INFLATION: f64 = 1e6;
@@ -494,6 +507,13 @@ impl Parameters {
                 name: "solution_samples",
                 value: fraction,
                 requirement: "it must lie in [0, 1] (a fraction of each batch)",
+            });
+        }
+        if !(0.0..=1.0).contains(&self.solution_corner_weights) {
+            return Err(BuildError::Parameter {
+                name: "solution_corner_weights",
+                value: self.solution_corner_weights,
+                requirement: "it must lie in [0, 1] (a share of the states placed along the path)",
             });
         }
         if let Some(cap) = self.neighbour_cap
@@ -651,6 +671,10 @@ impl Parameters {
             (
                 "solution_corner_pulls",
                 self.solution_corner_pulls.to_string(),
+            ),
+            (
+                "solution_corner_weights",
+                self.solution_corner_weights.to_string(),
             ),
             ("rewire_factor", self.rewire_factor.to_string()),
             ("connection", connection.to_string()),

@@ -159,6 +159,8 @@ pub struct Eit<S, V, Smp, E, H = Euclidean, G = EffortInformed, N = RandomGeomet
     pub(crate) path_rng: SeededRng,
     /// Scratch: the best path's states, `dimension` coordinates each.
     pub(crate) path_states: Vec<f64>,
+    /// Scratch: the best path's cumulative corner weights (`solution_samples.rs`).
+    pub(crate) corner_weights: Vec<f64>,
     /// Each expanded vertex's outgoing edges in the order they are queued, one at a time,
     /// where the neighbour rule asks for it (`lazy_successors.rs`; FCIT*).
     pub(crate) successors: Vec<Successors>,
@@ -269,6 +271,7 @@ where
             start_reach: StartReach::default(),
             path_rng: path_rng(parameters_seed),
             path_states: Vec::new(),
+            corner_weights: Vec::new(),
             successors: Vec::new(),
             ranking: (Vec::new(), Vec::new()),
         }

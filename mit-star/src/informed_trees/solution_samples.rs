@@ -1,6 +1,8 @@
 //! States placed along the best path ([`Parameters::solution_samples`](crate::Parameters)):
 //! once a solution exists, part of each batch lies on shortcuts of its path, so the forward
-//! search can straighten it through the graph.
+//! search can straighten it through the graph. With
+//! [`Parameters::solution_corner_weights`](crate::Parameters) a share of them gather where the
+//! path bends, in proportion to the length a bend adds.
 
 use mit_star_heuristics::Heuristic;
 use mit_star_samplers::{SampleOrigin, Sampler};
@@ -20,6 +22,10 @@ const TRIES_PER_STATE: usize = 4;
 /// The largest Gaussian step of a displaced state, as a fraction of its shortcut's length
 /// (the step's standard deviation is uniform between 0 and this).
 const DISPLACEMENT: f64 = 0.2;
+
+/// The excess length, as a fraction of its two legs, below which a vertex counts as lying on a
+/// straight stretch of the path (rounding's residue, not a corner).
+const CORNER_TOLERANCE: f64 = 1e-12;
 
 impl<S, V, Smp, E, H, G, N> Eit<S, V, Smp, E, H, G, N>
 where
@@ -42,10 +48,12 @@ where
     }
 
     /// Adds up to `count` valid states near the best path to the graph, their ids to `ids`:
-    /// each on the segment between two vertices of the path that are not neighbours on it, at
-    /// a uniform place, half of them then displaced by a Gaussian step; kept if valid and
-    /// inside the informed set of the best cost. Returns the number added (fewer than `count`
-    /// if the candidates run out or `stop` fires).
+    /// each on the segment between two vertices of the path that are not neighbours on it
+    /// (both uniform, or, for a share of them, on either side of a corner drawn by its weight),
+    /// at a uniform place,
+    /// half of them then displaced by a Gaussian step; kept if valid and inside the informed
+    /// set of the best cost. Returns the number added (fewer than `count` if the candidates
+    /// run out or `stop` fires).
     pub(crate) fn add_solution_samples(
         &mut self,
         count: usize,
@@ -62,17 +70,27 @@ where
         for v in &path {
             states.extend_from_slice(self.graph.state(v.0));
         }
+        let mut corners = std::mem::take(&mut self.corner_weights);
+        corners.clear();
+        let share = self.parameters.solution_corner_weights;
+        if share > 0.0 {
+            cumulative_corner_weights(&self.space, &states, &mut corners);
+        }
         let mut x = std::mem::take(&mut self.sample);
         let mut added = 0;
         for _ in 0..count * TRIES_PER_STATE {
             if added == count || stop.should_stop() {
                 break;
             }
+            // This state's weights: all of them, or none (uniform), by `share`; no draw at
+            // 0 or 1, so those shares take the decisions they took before there was a share.
+            let weighted = share >= 1.0 || (share > 0.0 && self.path_rng.random::<f64>() < share);
+            let weights = if weighted { &corners[..] } else { &[] };
             let pulls = self.parameters.solution_corner_pulls;
             if pulls && self.path_rng.random_range(0..3) == 0 {
-                self.corner_pull(&mut states, &mut x);
+                self.corner_pull(&mut states, weights, &mut x);
             } else {
-                self.shortcut_state(&states, &mut x);
+                self.shortcut_state(&states, weights, &mut x);
             }
             let (space, h) = (&self.space, &self.heuristic);
             let through =
@@ -87,6 +105,7 @@ where
         }
         self.sample = x;
         self.path_states = states;
+        self.corner_weights = corners;
         self.counters.solution_samples += added as u64;
         added
     }
@@ -94,11 +113,21 @@ where
     /// A state on the segment between two vertices of the path (`states`, `m ≥ 3` of them)
     /// that are not neighbours on it, at a uniform place; half of the time displaced by a
     /// Gaussian step whose deviation is uniform up to [`DISPLACEMENT`] of the segment's length.
-    fn shortcut_state(&mut self, states: &[f64], x: &mut [f64]) {
+    /// The two vertices are uniform, or, with `corners` (cumulative weights of the interior
+    /// vertices) summing above zero, one uniform on each side of a corner drawn by weight.
+    fn shortcut_state(&mut self, states: &[f64], corners: &[f64], x: &mut [f64]) {
         let n = self.space.dimension();
         let m = states.len() / n;
-        let i = self.path_rng.random_range(0..m - 2);
-        let j = self.path_rng.random_range(i + 2..m);
+        let (i, j) = match draw_corner(corners, &mut self.path_rng) {
+            Some(k) => (
+                self.path_rng.random_range(0..k),
+                self.path_rng.random_range(k + 1..m),
+            ),
+            None => {
+                let i = self.path_rng.random_range(0..m - 2);
+                (i, self.path_rng.random_range(i + 2..m))
+            }
+        };
         let (a, b) = (&states[i * n..(i + 1) * n], &states[j * n..(j + 1) * n]);
         let t = self.path_rng.random::<f64>();
         self.space.interpolate(a, b, t, x);
@@ -113,11 +142,15 @@ where
 
     /// An interior vertex of the path moved a uniform part of the way towards the chord of
     /// its two neighbours on it (the chord's point as far along as the vertex is along the
-    /// path): a corner cut partly, where cutting it whole collides.
-    fn corner_pull(&mut self, states: &mut Vec<f64>, x: &mut [f64]) {
+    /// path): a corner cut partly, where cutting it whole collides. The vertex is uniform, or
+    /// drawn by its weight in `corners` as in [`shortcut_state`](Self::shortcut_state).
+    fn corner_pull(&mut self, states: &mut Vec<f64>, corners: &[f64], x: &mut [f64]) {
         let n = self.space.dimension();
         let m = states.len() / n;
-        let k = self.path_rng.random_range(1..m - 1);
+        let k = match draw_corner(corners, &mut self.path_rng) {
+            Some(k) => k,
+            None => self.path_rng.random_range(1..m - 1),
+        };
         let (before, after) = {
             let state = |i: usize| &states[i * n..(i + 1) * n];
             let (a, corner, b) = (state(k - 1), state(k), state(k + 1));
@@ -145,6 +178,48 @@ where
         states.truncate(m * n);
         self.space.enforce_bounds(x);
     }
+}
+
+/// Writes to `out` the running sums of the corner weights of the interior vertices of the
+/// path `states` (`m ≥ 3` states): entry `k - 1` sums, over vertices `1..=k`, how much longer
+/// the path is through each than along the chord of its two neighbours (zero where that is
+/// within [`CORNER_TOLERANCE`] of the legs' length).
+pub(super) fn cumulative_corner_weights<S: StateSpace>(
+    space: &S,
+    states: &[f64],
+    out: &mut Vec<f64>,
+) {
+    let n = space.dimension();
+    let m = states.len() / n;
+    let state = |i: usize| &states[i * n..(i + 1) * n];
+    let mut total = 0.0;
+    for k in 1..m - 1 {
+        let (a, corner, b) = (state(k - 1), state(k), state(k + 1));
+        let legs = space.distance(a, corner) + space.distance(corner, b);
+        let excess = legs - space.distance(a, b);
+        // Rounding leaves a straight stretch a few ulps of excess: not a corner.
+        if excess > CORNER_TOLERANCE * legs {
+            total += excess;
+        }
+        out.push(total);
+    }
+}
+
+/// An interior vertex (`1..m - 1`) drawn with probability proportional to its weight, from
+/// the running sums `cumulative`; `None` when there are none or they sum to zero (a straight
+/// path), so the caller draws uniformly.
+pub(super) fn draw_corner(
+    cumulative: &[f64],
+    rng: &mut mit_star_spaces::SeededRng,
+) -> Option<usize> {
+    let total = *cumulative.last()?;
+    if total <= 0.0 || !total.is_finite() {
+        return None;
+    }
+    let u = rng.random::<f64>() * total;
+    // The first running sum above `u`: a vertex of weight zero is never drawn.
+    let slot = cumulative.partition_point(|&c| c <= u);
+    Some(slot.min(cumulative.len() - 1) + 1)
 }
 
 /// A standard normal draw (Box–Muller, one of the pair).

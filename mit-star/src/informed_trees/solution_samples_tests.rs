@@ -73,3 +73,64 @@ fn no_fraction_places_no_state() {
     );
     assert_eq!(planner.counters().solution_samples, 0);
 }
+
+/// The running corner weights of the path through `points` in the plane.
+fn corner_weights_of(points: &[[f64; 2]]) -> Vec<f64> {
+    let space = mit_star_spaces::RealVectorSpace::new(vec![-10.0; 2], vec![10.0; 2]).unwrap();
+    let states: Vec<f64> = points.iter().flatten().copied().collect();
+    let mut weights = Vec::new();
+    super::solution_samples::cumulative_corner_weights(&space, &states, &mut weights);
+    weights
+}
+
+#[test]
+fn a_straight_path_has_no_corner_to_draw() {
+    let weights = corner_weights_of(&[[0.0, 0.0], [1.0, 1.0], [1.5, 1.5], [3.0, 3.0]]);
+    assert_eq!(weights.len(), 2, "one weight per interior vertex");
+    assert!(weights.iter().all(|&w| w.abs() < 1e-12), "{weights:?}");
+    let mut rng =
+        <mit_star_spaces::SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(1);
+    assert_eq!(
+        super::solution_samples::draw_corner(&weights, &mut rng),
+        None
+    );
+    assert_eq!(super::solution_samples::draw_corner(&[], &mut rng), None);
+}
+
+#[test]
+fn corners_are_drawn_in_proportion_to_the_length_they_add() {
+    // Vertex 2 turns by 90° (adds 2 − √2), vertex 4 by 45° with legs of 1 (adds
+    // 2 − √(2 + √2)); vertices 1 and 3 lie on straight stretches and add nothing.
+    let s = std::f64::consts::FRAC_1_SQRT_2;
+    let weights = corner_weights_of(&[
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [2.0, 0.0],
+        [2.0, 1.0],
+        [2.0, 2.0],
+        [2.0 + s, 2.0 + s],
+    ]);
+    let right = 2.0 - 2f64.sqrt();
+    let half_right = 2.0 - (2.0 + 2f64.sqrt()).sqrt();
+    assert_eq!(weights.len(), 4);
+    assert!(
+        (weights[3] - right - half_right).abs() < 1e-12,
+        "{weights:?}"
+    );
+    let mut rng =
+        <mit_star_spaces::SeededRng as mit_star_spaces::rand::SeedableRng>::seed_from_u64(2);
+    let mut drawn = [0usize; 6];
+    let draws = 20_000_u32;
+    for _ in 0..draws {
+        drawn[super::solution_samples::draw_corner(&weights, &mut rng).unwrap()] += 1;
+    }
+    assert_eq!(drawn[0] + drawn[1] + drawn[3] + drawn[5], 0, "{drawn:?}");
+    let share = drawn[2] as f64 / f64::from(draws);
+    let expected = right / (right + half_right);
+    // Five standard deviations of a binomial share.
+    let tolerance = 5.0 * (expected * (1.0 - expected) / f64::from(draws)).sqrt();
+    assert!(
+        (share - expected).abs() < tolerance,
+        "{share} against {expected}"
+    );
+}

@@ -30,6 +30,7 @@ pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str
         "solution_samples" => parameters.solution_samples = Some(number()),
         "neighbour_cap" => parameters.neighbour_cap = Some(number()),
         "solution_corner_pulls" => parameters.solution_corner_pulls = on(),
+        "solution_corner_weights" => parameters.solution_corner_weights = number(),
         "range" => parameters.range = Some(number()),
         "rewire_factor" => parameters.rewire_factor = number(),
         "near_terminals" => parameters.near_terminals = Some(number()),
