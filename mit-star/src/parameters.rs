@@ -71,9 +71,9 @@ pub struct Parameters {
     /// gather at the path's bends, in `[0, 1]`: for such a state the vertex a shortcut spans
     /// (or the corner a pull moves) is drawn in proportion to how much longer the path is
     /// through it than along the chord of its two neighbours; for the others the shortcut's
-    /// two ends are uniform over the path. 0 is the placement before 2026-12-07; the default
-    /// is chosen by the measurement in `docs/guide/src/performance-switches.md`. Not in the
-    /// paper.
+    /// two ends are uniform over the path. 0 is the placement before 2026-12-07; the default,
+    /// 0.5, gave shorter paths than 0 at 10 ms, 100 ms and 1 s on the Panda, 1 shorter at 1 s
+    /// but longer at 10 ms (`docs/guide/src/performance-switches.md`). Not in the paper.
     pub solution_corner_weights: f64,
     /// The RGG constant `η > 0` scaling `k` or `r`.
     pub rewire_factor: f64,

@@ -50,10 +50,9 @@ where
     /// Adds up to `count` valid states near the best path to the graph, their ids to `ids`:
     /// each on the segment between two vertices of the path that are not neighbours on it
     /// (both uniform, or, for a share of them, on either side of a corner drawn by its weight),
-    /// at a uniform place,
-    /// half of them then displaced by a Gaussian step; kept if valid and inside the informed
-    /// set of the best cost. Returns the number added (fewer than `count` if the candidates
-    /// run out or `stop` fires).
+    /// at a uniform place, half of them then displaced by a Gaussian step; kept if valid and
+    /// inside the informed set of the best cost. Returns the number added (fewer than `count`
+    /// if the candidates run out or `stop` fires).
     pub(crate) fn add_solution_samples(
         &mut self,
         count: usize,
