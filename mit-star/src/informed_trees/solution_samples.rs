@@ -216,9 +216,10 @@ pub(super) fn draw_corner(
         return None;
     }
     let u = rng.random::<f64>() * total;
-    // The first running sum above `u`: a vertex of weight zero is never drawn.
-    let slot = cumulative.partition_point(|&c| c <= u);
-    Some(slot.min(cumulative.len() - 1) + 1)
+    // The first running sum above `u`: a vertex of weight zero is never drawn, not even when
+    // rounding makes `u` the total (then the last vertex that adds length).
+    let last = cumulative.partition_point(|&c| c < total);
+    Some(cumulative.partition_point(|&c| c <= u).min(last) + 1)
 }
 
 /// A standard normal draw (Box–Muller, one of the pair).
