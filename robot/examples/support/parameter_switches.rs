@@ -26,6 +26,7 @@ pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str
         "aorrtc_simplify" => parameters.aorrtc_simplify = on(),
         "polish_when_idle" => parameters.polish_when_idle = on(),
         "batch_size" => parameters.batch_size = Some(number() as usize),
+        "eis_batch_size" => parameters.eis_batch_size = Some(number() as usize),
         "batch_growth" => parameters.batch_growth = Some(number()),
         "solution_samples" => parameters.solution_samples = Some(number()),
         "neighbour_cap" => parameters.neighbour_cap = Some(number()),
