@@ -215,11 +215,16 @@ pub(super) fn draw_corner(
     if total <= 0.0 || !total.is_finite() {
         return None;
     }
-    let u = rng.random::<f64>() * total;
-    // The first running sum above `u`: a vertex of weight zero is never drawn, not even when
-    // rounding makes `u` the total (then the last vertex that adds length).
+    Some(corner_at(cumulative, rng.random::<f64>() * total))
+}
+
+/// The interior vertex whose running sum is the first above `u ∈ [0, total]`: a vertex of
+/// weight zero is never drawn, not even when rounding makes `u` the total (then the last
+/// vertex that adds length).
+pub(super) fn corner_at(cumulative: &[f64], u: f64) -> usize {
+    let total = cumulative.last().copied().unwrap_or(0.0);
     let last = cumulative.partition_point(|&c| c < total);
-    Some(cumulative.partition_point(|&c| c <= u).min(last) + 1)
+    cumulative.partition_point(|&c| c <= u).min(last) + 1
 }
 
 /// A standard normal draw (Box–Muller, one of the pair).

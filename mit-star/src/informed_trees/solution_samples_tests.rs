@@ -97,6 +97,22 @@ fn a_straight_path_has_no_corner_to_draw() {
     assert_eq!(super::solution_samples::draw_corner(&[], &mut rng), None);
 }
 
+/// A draw that rounding puts at the total still lands on a vertex that adds length, not on
+/// the straight stretch after the last corner (interior vertices 1 to 4; 2 and 4 add none).
+#[test]
+fn a_draw_at_the_total_lands_on_the_last_corner() {
+    use super::solution_samples::corner_at;
+    let cumulative = [0.5, 0.5, 1.0, 1.0];
+    assert_eq!(corner_at(&cumulative, 0.0), 1);
+    assert_eq!(corner_at(&cumulative, 0.5), 3, "the running sum above 0.5");
+    assert_eq!(corner_at(&cumulative, 0.99), 3);
+    assert_eq!(
+        corner_at(&cumulative, 1.0),
+        3,
+        "rounding's draw at the total"
+    );
+}
+
 #[test]
 fn corners_are_drawn_in_proportion_to_the_length_they_add() {
     // Vertex 2 turns by 90° (adds 2 − √2), vertex 4 by 45° with legs of 1 (adds
