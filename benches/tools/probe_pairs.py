@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Per-problem comparison of two `mit_arm_probe` listings run with
-`PROBE_FIXED_ITERATIONS=N` (and a budget in seconds longer than any solve, so that `cend` is the
-cost after the N iterations): how many problems the second listing's path is shorter and longer
-on, per scene and over all, and the median of second / first.
+`PROBE_FIXED_ITERATIONS=N` (whose `cend` is then the cost after the N iterations): how many
+problems the second listing's path is shorter and longer on, per scene and over all, and the
+median of second / first.
 
 A fixed number of iterations makes each listing a function of the build, the setting and the
 seed alone, so a change that leaves the speed of an iteration alone is compared without the

@@ -14,9 +14,10 @@
 //! sparse and full checks, grid points tested, validity checks (sampler's apart) and
 //! neighbour queries, and the solve's wall time in seconds.
 //!
-//! `PROBE_FIXED_ITERATIONS=N` stops each solve after `N` iterations instead of the time: a build
-//! that takes the same decisions prints the same counters, and its wall time compares the two
-//! builds' speed on exactly the same work (`PROBE_ITERATIONS=N` prints the first `N`
+//! `PROBE_FIXED_ITERATIONS=N` stops each solve after `N` iterations instead of the time (the
+//! cost at the end is then the cost after them, however long they took): a build that takes
+//! the same decisions prints the same counters, and its wall time compares the two builds'
+//! speed on exactly the same work (`PROBE_ITERATIONS=N` prints the first `N`
 //! iterations one by one).
 
 use mit_star::{Configuration, Parameters, TimeLimit, build_planner};
@@ -99,6 +100,13 @@ fn main() {
             .expect("plans");
             let solve_s = started.elapsed().as_secs_f64();
             let trace = planner.trace();
+            // The cost at the end: at `seconds`, or after the fixed iterations however long
+            // they took.
+            let end = if fixed.is_some() {
+                f64::INFINITY
+            } else {
+                seconds
+            };
             let c = planner.counters();
             let line = {
                 use mit_star_problems::PlanningProblem;
@@ -113,7 +121,7 @@ fn main() {
                 trace.initial().map_or(f64::INFINITY, |p| p.time * 1e3),
                 trace.cost_at(0.01),
                 trace.cost_at(0.1),
-                trace.cost_at(seconds),
+                trace.cost_at(end),
                 line,
                 trace.points().len(),
                 c.batches,
