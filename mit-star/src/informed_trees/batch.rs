@@ -102,6 +102,7 @@ where
         self.deferred.clear();
         self.checker.reset();
         self.forward.clear();
+        self.graph.compact_outside();
         self.restart_reverse(stop);
         self.expand_forward(self.start_id, NONE, stop);
     }
