@@ -217,21 +217,47 @@ impl Termination for Wrapped<'_> {
 
 /// The [`Stop`] view of a termination condition that building blocks poll during one
 /// iteration: time moves on, the iteration count and best cost are those of the iteration.
+///
+/// Every poll through [`Stop`] reads the clock. A planner's main loop polls once per
+/// iteration through [`should_stop_iteration`](Self::should_stop_iteration) instead, which
+/// reads it on every [`ITERATION_CLOCK_PERIOD`]-th call, or once the validity checks since the
+/// last reading reach [`CHECKS_PER_READING`], and otherwise judges the condition at the
+/// instant last read (by any poll): the iteration count, best cost and interruptions are
+/// always current, and a deadline is noticed at most that many cheap iterations late. On the
+/// Panda's cage the readings were 3 % of MIT*'s time, five sixths of it at these polls; the
+/// same work now takes 0.96 of the time (the arm-planning reference, "Where MIT*'s time
+/// goes after its first path").
 pub(crate) struct SolveStop<'a> {
     termination: &'a dyn Termination,
     started: Instant,
     iterations: Cell<u64>,
     best_cost: Cell<f64>,
+    /// The clock's last reading, by any poll.
+    read_at: Cell<Instant>,
+    /// Iteration polls since that reading, and the validity checks counted at it.
+    polls_since_reading: Cell<u32>,
+    checks_at_reading: Cell<u64>,
 }
+
+/// An iteration poll reads the clock at least this often ([`SolveStop::should_stop_iteration`]).
+pub(crate) const ITERATION_CLOCK_PERIOD: u32 = 8;
+
+/// An iteration poll reads the clock once this many validity checks were made since the last
+/// reading: an iteration's costly part is its checks.
+pub(crate) const CHECKS_PER_READING: u64 = 64;
 
 impl<'a> SolveStop<'a> {
     /// Starts the clock of a `solve` call.
     pub(crate) fn new(termination: &'a dyn Termination) -> Self {
+        let started = Instant::now();
         Self {
             termination,
-            started: Instant::now(),
+            started,
             iterations: Cell::new(0),
             best_cost: Cell::new(f64::INFINITY),
+            read_at: Cell::new(started),
+            polls_since_reading: Cell::new(0),
+            checks_at_reading: Cell::new(0),
         }
     }
 
@@ -243,20 +269,46 @@ impl<'a> SolveStop<'a> {
 
     /// Time since the `solve` call started.
     pub(crate) fn elapsed(&self) -> Duration {
-        self.started.elapsed()
+        self.read_clock().saturating_duration_since(self.started)
     }
-}
 
-impl Stop for SolveStop<'_> {
-    #[inline]
-    fn should_stop(&self) -> bool {
+    /// The poll of a planner's main loop, once per iteration; `checks` is the planner's
+    /// validity-check count so far. Reads the clock as described on [`SolveStop`].
+    pub(crate) fn should_stop_iteration(&self, checks: u64) -> bool {
+        let polls = self.polls_since_reading.get() + 1;
+        let checked = checks.saturating_sub(self.checks_at_reading.get());
+        if polls >= ITERATION_CLOCK_PERIOD || checked >= CHECKS_PER_READING {
+            self.checks_at_reading.set(checks);
+            return Stop::should_stop(self);
+        }
+        self.polls_since_reading.set(polls);
+        self.judge(self.read_at.get())
+    }
+
+    /// Reads the clock, keeping the reading for the iteration polls.
+    fn read_clock(&self) -> Instant {
         let now = Instant::now();
+        self.read_at.set(now);
+        self.polls_since_reading.set(0);
+        now
+    }
+
+    /// The condition at `now`, with the iteration's count and best cost.
+    fn judge(&self, now: Instant) -> bool {
         self.termination.should_terminate(&Progress {
             now,
             elapsed: now.saturating_duration_since(self.started),
             iterations: self.iterations.get(),
             best_cost: self.best_cost.get(),
         })
+    }
+}
+
+impl Stop for SolveStop<'_> {
+    #[inline]
+    fn should_stop(&self) -> bool {
+        let now = self.read_clock();
+        self.judge(now)
     }
 }
 
@@ -300,5 +352,42 @@ mod tests {
         assert!(!stop.should_stop());
         stop.update(1, 0.5);
         assert!(stop.should_stop());
+    }
+
+    #[test]
+    fn iteration_polls_read_the_clock_every_period_or_after_enough_checks() {
+        // A limit long enough that a busy machine does not pass it before the first poll.
+        let limit = TimeLimit::new(Duration::from_millis(200));
+        let past = Duration::from_millis(250);
+        let stop = SolveStop::new(&limit);
+        assert!(!stop.should_stop());
+        std::thread::sleep(past);
+        // The deadline passed after the last reading: the next polls judge at that reading,
+        // until the period's last one reads the clock.
+        for _ in 1..ITERATION_CLOCK_PERIOD {
+            assert!(!stop.should_stop_iteration(0));
+        }
+        assert!(stop.should_stop_iteration(0));
+        // Enough validity checks since the last reading read it at once.
+        let stop = SolveStop::new(&limit);
+        assert!(!stop.should_stop_iteration(0));
+        std::thread::sleep(past);
+        assert!(!stop.should_stop_iteration(CHECKS_PER_READING - 1));
+        assert!(stop.should_stop_iteration(CHECKS_PER_READING));
+        // A poll through `Stop` always reads it.
+        let stop = SolveStop::new(&limit);
+        std::thread::sleep(past);
+        assert!(Stop::should_stop(&stop));
+    }
+
+    #[test]
+    fn iteration_polls_see_the_iteration_count_and_cost_at_once() {
+        let limit = IterationLimit::new(3).or(FirstSolution);
+        let stop = SolveStop::new(&limit);
+        assert!(!stop.should_stop_iteration(0));
+        stop.update(3, f64::INFINITY);
+        assert!(stop.should_stop_iteration(0));
+        stop.update(0, 1.0);
+        assert!(stop.should_stop_iteration(0));
     }
 }

@@ -591,7 +591,7 @@ where
         // Not ready: the stop fired while the goals were being inserted; the next call goes on.
         while self.ready {
             stop.update(iterations, self.best_cost);
-            if mit_star_spaces::Stop::should_stop(&stop) || self.is_optimal() {
+            if stop.should_stop_iteration(self.validity.count()) || self.is_optimal() {
                 break;
             }
             self.iterate(&stop);

@@ -524,7 +524,7 @@ where
         let mut iterations = 0;
         while self.core.solution.is_none() {
             stop.update(iterations, self.best_cost());
-            if mit_star_spaces::Stop::should_stop(&stop) {
+            if stop.should_stop_iteration(self.core.validity.count()) {
                 break;
             }
             self.iterate(&stop);

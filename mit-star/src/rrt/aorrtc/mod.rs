@@ -344,7 +344,8 @@ where
         let mut iterations = 0;
         loop {
             stop.update(iterations, self.best_cost());
-            if mit_star_spaces::Stop::should_stop(&stop) || !self.iterate(termination, &stop) {
+            let checks = self.connect.core.validity.count();
+            if stop.should_stop_iteration(checks) || !self.iterate(termination, &stop) {
                 break;
             }
             iterations += 1;

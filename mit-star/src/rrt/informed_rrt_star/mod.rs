@@ -5,7 +5,7 @@
 use mit_star_samplers::CostBound;
 use mit_star_samplers::{InformedSampler, Sampler};
 use mit_star_spaces::rand::SeedableRng;
-use mit_star_spaces::{SeededRng, StateSpace, Stop};
+use mit_star_spaces::{SeededRng, StateSpace};
 use mit_star_validity::{Counted, DenseChecker, EdgeChecker, StateValidity};
 
 use crate::rrt::cost_tree::CostTree;
@@ -183,7 +183,7 @@ where
         let mut iterations = 0;
         loop {
             stop.update(iterations, self.best_cost());
-            if Stop::should_stop(&stop) || !self.iterate(&stop) {
+            if stop.should_stop_iteration(self.core.validity.count()) || !self.iterate(&stop) {
                 break;
             }
             iterations += 1;
