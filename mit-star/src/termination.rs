@@ -220,9 +220,9 @@ impl Termination for Wrapped<'_> {
 ///
 /// Every poll through [`Stop`] reads the clock. A planner's main loop polls once per
 /// iteration through [`should_stop_iteration`](Self::should_stop_iteration) instead, which
-/// reads it on every [`ITERATION_CLOCK_PERIOD`]-th call, or once the validity checks since the
-/// last reading reach [`CHECKS_PER_READING`], and otherwise judges the condition at the
-/// instant last read (by any poll): the iteration count, best cost and interruptions are
+/// reads it on every [`ITERATION_CLOCK_PERIOD`]-th call (counted from the last reading by any
+/// poll), or once the validity checks since the last reading an iteration poll made reach
+/// [`CHECKS_PER_READING`], and otherwise judges the condition at the instant last read: the iteration count, best cost and interruptions are
 /// always current, and a deadline is noticed at most that many cheap iterations late. On the
 /// Panda's cage the readings were 3 % of MIT*'s time, five sixths of it at these polls; the
 /// same work now takes 0.96 of the time (the arm-planning reference, "Where MIT*'s time
@@ -234,16 +234,17 @@ pub(crate) struct SolveStop<'a> {
     best_cost: Cell<f64>,
     /// The clock's last reading, by any poll.
     read_at: Cell<Instant>,
-    /// Iteration polls since that reading, and the validity checks counted at it.
+    /// Iteration polls since that reading.
     polls_since_reading: Cell<u32>,
+    /// The validity checks counted when an iteration poll last read the clock.
     checks_at_reading: Cell<u64>,
 }
 
 /// An iteration poll reads the clock at least this often ([`SolveStop::should_stop_iteration`]).
 pub(crate) const ITERATION_CLOCK_PERIOD: u32 = 8;
 
-/// An iteration poll reads the clock once this many validity checks were made since the last
-/// reading: an iteration's costly part is its checks.
+/// An iteration poll reads the clock once this many validity checks were made since an
+/// iteration poll last read it: an iteration's costly part is its checks.
 pub(crate) const CHECKS_PER_READING: u64 = 64;
 
 impl<'a> SolveStop<'a> {

@@ -56,9 +56,9 @@ impl OutsideTree {
 
 impl RandomGeometricGraph {
     /// Drops the candidates that were removed or have joined the tree: once per batch, when
-    /// its searches restart. (Each commit used to do it, and a batch of a million samples
-    /// commits in a few hundred chunks: FCIT* in `R²` spent half its time there and returned
-    /// 6 to 14 ms late on 1 s budgets, a chunk's pass over a million entries unpolled.)
+    /// its searches restart, the first time the list is read after the batch's commits. Not
+    /// per commit: a large batch commits in hundreds of chunks, and each pass over the whole
+    /// list is unpolled.
     pub(crate) fn compact_outside(&mut self) {
         if !self.outside.enabled {
             return;
