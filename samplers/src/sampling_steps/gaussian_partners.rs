@@ -86,6 +86,29 @@ impl GaussianPartners {
         Some(verdict)
     }
 
+    /// The segments `candidate → partner` of batch `generation`'s candidates from `first` on
+    /// whose partner failed (invalid, or outside the set): those the adaptive sampler will
+    /// search ([`SegmentsAhead`](super::SegmentsAhead)), with their candidates' indices. Empty
+    /// unless the partners held are that batch's.
+    pub(crate) fn failed<'a>(
+        &'a self,
+        (generation, candidates): (u64, &'a [f64]),
+        first: usize,
+        dimension: usize,
+    ) -> impl Iterator<Item = (usize, &'a [f64], &'a [f64])> + 'a {
+        let held = if self.generation == Some(generation) && dimension > 0 {
+            candidates.len() / dimension
+        } else {
+            0
+        };
+        (first..held)
+            .filter(|&i| matches!(self.verdicts[i], Partner::Outside | Partner::Checked(false)))
+            .map(move |i| {
+                let span = i * dimension..(i + 1) * dimension;
+                (i, &candidates[span.clone()], &self.states[span])
+            })
+    }
+
     /// Draws the partners of the invalid candidates from `first` on and checks those inside
     /// the set together.
     fn draw_all<S, V>(

@@ -5,7 +5,7 @@ use mit_star_spaces::{SeededRng, StateSpace, Stop};
 use mit_star_validity::StateValidity;
 use rand::SeedableRng;
 
-use super::{GaussianPartners, Lookahead, Partner, PartnerDraw};
+use super::{GaussianPartners, Lookahead, Partner, PartnerDraw, SegmentsAhead};
 use crate::{
     CostBound, GaussianStep, InformedSet, SampleError, SampleOrigin, SamplerCounters, SamplerError,
     SegmentSearch,
@@ -239,6 +239,52 @@ impl InformedDraws {
             out,
         )?;
         if found {
+            self.counters.returned += 1;
+        }
+        Ok(found)
+    }
+
+    /// The search of the segment `x_pre → x_temp` of the candidate
+    /// [`draw_checked`](Self::draw_checked) returned last, whose partner from `partners`
+    /// failed: as [`search_segment`](Self::search_segment), but the first call for a batch
+    /// searches the segments of its later failed repairs with it ([`SegmentsAhead`]). `None`
+    /// where that does not apply (the checker's batch is too narrow for two searches, or the
+    /// batch does not hold the candidate): then search alone.
+    ///
+    /// # Errors
+    /// As [`SegmentSearch::find`].
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn search_ahead<S, V>(
+        &mut self,
+        (partners, ahead): (&GaussianPartners, &mut SegmentsAhead),
+        search: &SegmentSearch,
+        space: &S,
+        validity: &V,
+        cost: Option<f64>,
+        stop: &dyn Stop,
+        out: &mut [f64],
+    ) -> Result<Option<bool>, SampleError>
+    where
+        S: StateSpace + ?Sized,
+        V: StateValidity + ?Sized,
+    {
+        if !SegmentsAhead::pays(search, validity) {
+            return Ok(None);
+        }
+        let d = out.len();
+        let (generation, candidates, _) = self.ahead.batch(d);
+        let index = self.ahead.last_index();
+        let set = &self.set;
+        let found = ahead.outcome(
+            (generation, index),
+            partners.failed((generation, candidates), index, d),
+            (search, space, validity),
+            |x| set.contains(space, cost, x),
+            stop,
+            &mut self.counters,
+            out,
+        )?;
+        if found == Some(true) {
             self.counters.returned += 1;
         }
         Ok(found)

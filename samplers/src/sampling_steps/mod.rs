@@ -12,6 +12,8 @@
 //!   bridge-test and adaptive samplers and of [`NearTerminals`](crate::NearTerminals).
 //! - [`SegmentSearch`] (`segment_search.rs`): a valid state on a segment, in bisection order —
 //!   the bridge test's midpoint and the adaptive sampler's repair.
+//! - `segments_ahead.rs`: `SegmentsAhead`, the segment searches of a lookahead batch's failed
+//!   repairs, decided together where a checker's batch holds several searches' points.
 //!
 //! May use: `informed_sets`, the [`Sampler`](crate::Sampler) trait's types,
 //! [`SamplerError`](crate::SamplerError), and the `spaces`, `validity`, `rand` and `rand_distr`
@@ -23,6 +25,7 @@ mod gaussian_step;
 mod informed_draws;
 mod lookahead;
 mod segment_search;
+mod segments_ahead;
 #[cfg(test)]
 mod test_checkers;
 
@@ -31,3 +34,4 @@ pub use gaussian_step::GaussianStep;
 pub(crate) use informed_draws::InformedDraws;
 pub(crate) use lookahead::{Lookahead, MOST_BATCHED};
 pub use segment_search::SegmentSearch;
+pub(crate) use segments_ahead::SegmentsAhead;
