@@ -35,6 +35,8 @@ pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str
         "range" => parameters.range = Some(number()),
         "rewire_factor" => parameters.rewire_factor = number(),
         "near_terminals" => parameters.near_terminals = Some(number()),
+        "near_frontier" => parameters.near_frontier = number() as usize,
+        "frontier_rays" => parameters.frontier_rays = on(),
         "sparse_initial_steps" => parameters.sparse_initial_steps = Some(number()),
         "sparse_min_steps" => parameters.sparse_min_steps = Some(number()),
         "connection" => {
