@@ -1,7 +1,7 @@
 //! What the arm examples take after their positional arguments: `name=value` switches setting
 //! the planners' [`Parameters`], parsed one way for all of them.
 
-use mit_star::{Connection, Parameters};
+use mit_star::{Connection, EisExpansionForm, EisExpansionRule, Parameters};
 
 /// Sets the parameter `name` of `parameters` to `value` (`true`/`false` for a switch, a number,
 /// or `k-nearest`/`r-disc` for `connection`); `false` if no parameter has that name, so an
@@ -39,6 +39,20 @@ pub(crate) fn set_parameter(parameters: &mut Parameters, name: &str, value: &str
         "frontier_rays" => parameters.frontier_rays = on(),
         "sparse_initial_steps" => parameters.sparse_initial_steps = Some(number()),
         "sparse_min_steps" => parameters.sparse_min_steps = Some(number()),
+        "eis_expansion_form" => {
+            parameters.eis_expansion_form = match value {
+                "paper" => EisExpansionForm::Paper,
+                "authors" => EisExpansionForm::Authors,
+                other => panic!("eis_expansion_form is paper or authors, not {other}"),
+            };
+        }
+        "eis_expansion_rule" => {
+            parameters.eis_expansion_rule = match value {
+                "per-batch" => EisExpansionRule::PerBatch,
+                "per-invalid-edge" => EisExpansionRule::PerInvalidEdge,
+                other => panic!("eis_expansion_rule is per-batch or per-invalid-edge, not {other}"),
+            };
+        }
         "connection" => {
             parameters.connection = Some(match value {
                 "k-nearest" => Connection::KNearest,
