@@ -250,17 +250,22 @@ mod tests {
         assert_eq!((tuned.std_dev(), tuned.bridge_checks()), (0.02, 3));
     }
 
+    /// The unit square, all blocked but for a horizontal slot 0.02 wide around `y = 0.5`.
+    fn slot_world() -> World {
+        World::new(vec![0.0; 2], vec![1.0; 2])
+            .with_obstacle(AxisBox::new(vec![0.5, 0.245], vec![1.0, 0.49]))
+            .unwrap()
+            .with_obstacle(AxisBox::new(vec![0.5, 0.755], vec![1.0, 0.49]))
+            .unwrap()
+    }
+
     #[test]
     fn repairs_find_a_narrow_slot_far_more_often_than_uniform_draws() {
         // Everything is blocked but a horizontal slot 0.02 wide: uniform sampling needs about
         // 50 draws per valid state. The adaptive sampler repairs invalid draws whose Gaussian
         // neighbour or bridge segment reaches the slot, so it needs far fewer `x_pre` draws.
         let space = RealVectorSpace::cube(2, 0.0, 1.0).unwrap();
-        let world = World::new(vec![0.0; 2], vec![1.0; 2])
-            .with_obstacle(AxisBox::new(vec![0.5, 0.245], vec![1.0, 0.49]))
-            .unwrap()
-            .with_obstacle(AxisBox::new(vec![0.5, 0.755], vec![1.0, 0.49]))
-            .unwrap();
+        let world = slot_world();
         let mut adaptive = AdaptiveSampler::new(&space, &[0.05, 0.5], &[[0.95, 0.5]], 4).unwrap();
         let mut uniform = crate::UniformSampler::new(4);
         let mut x = [0.0; 2];
@@ -331,11 +336,7 @@ mod tests {
         // Sixteen lanes search two or more failed repairs' segments per call, eight lanes one:
         // the same states, from the same origins, and the same work, in fewer calls.
         let space = RealVectorSpace::cube(2, 0.0, 1.0).unwrap();
-        let world = World::new(vec![0.0; 2], vec![1.0; 2])
-            .with_obstacle(AxisBox::new(vec![0.5, 0.245], vec![1.0, 0.49]))
-            .unwrap()
-            .with_obstacle(AxisBox::new(vec![0.5, 0.755], vec![1.0, 0.49]))
-            .unwrap();
+        let world = slot_world();
         let run = |width: usize| {
             let checker = Wide {
                 world: &world,

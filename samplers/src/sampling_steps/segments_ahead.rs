@@ -239,39 +239,28 @@ mod tests {
 
     #[test]
     fn a_stop_that_has_fired_searches_nothing() {
-        struct Fired;
-        impl Stop for Fired {
-            fn should_stop(&self) -> bool {
-                true
-            }
-        }
         let space = RealVectorSpace::cube(1, 0.0, 1.0).unwrap();
         let search = SegmentSearch::new(8).unwrap();
         let wide = RightHalf::new(16);
         let mut ahead = SegmentsAhead::default();
         let mut counters = SamplerCounters::default();
         let segment = [(0, &[0.0][..], &[1.0][..])];
-        let result = ahead.outcome(
-            (1, 0),
-            segment.into_iter(),
-            (&search, &space, &wide),
-            |_| true,
-            &Fired,
-            &mut counters,
-            &mut [0.0],
-        );
-        assert_eq!(result, Err(SampleError::Stopped));
+        let mut ask = |stop: &dyn Stop| {
+            let parts = (&search, &space, &wide);
+            let iter = segment.into_iter();
+            ahead.outcome(
+                (1, 0),
+                iter,
+                parts,
+                |_| true,
+                stop,
+                &mut counters,
+                &mut [0.0],
+            )
+        };
+        assert_eq!(ask(&|| true), Err(SampleError::Stopped));
         assert!(wide.batches().is_empty());
         // The batch is searched when asked again without the stop.
-        let result = ahead.outcome(
-            (1, 0),
-            segment.into_iter(),
-            (&search, &space, &wide),
-            |_| true,
-            &Never,
-            &mut counters,
-            &mut [0.0],
-        );
-        assert_eq!(result, Ok(Some(true)));
+        assert_eq!(ask(&Never), Ok(Some(true)));
     }
 }
