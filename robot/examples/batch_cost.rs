@@ -16,7 +16,8 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use mit_star_problems::PlanningProblem;
-use mit_star_spaces::StateSpace;
+use mit_star_spaces::rand::SeedableRng;
+use mit_star_spaces::{SeededRng, StateSpace};
 use mit_star_validity::StateValidity;
 
 #[path = "support/mbm_scenes.rs"]
@@ -33,34 +34,18 @@ fn main() {
         let space = problem.space();
         let checker = problem.validity();
         let d = space.dimension();
-        let (lower, upper) = (space.lower().to_vec(), space.upper().to_vec());
-        let mut rng = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut uni = || {
-            rng ^= rng << 13;
-            rng ^= rng >> 7;
-            rng ^= rng << 17;
-            (rng >> 11) as f64 / (1u64 << 53) as f64
-        };
-        // Edges of about 1 rad between valid configurations.
+        let mut rng = SeededRng::seed_from_u64(7);
+        // Edges of 1 rad (or up to a nearer target) between valid configurations.
         let mut edges: Vec<(Vec<f64>, Vec<f64>)> = Vec::new();
-        let mut a = vec![0.0; d];
-        let mut b = vec![0.0; d];
+        let (mut a, mut b, mut target) = (vec![0.0; d], vec![0.0; d], vec![0.0; d]);
         while edges.len() < 2000 {
-            for j in 0..d {
-                a[j] = lower[j] + uni() * (upper[j] - lower[j]);
-            }
-            if !checker.is_valid(&a) {
+            space.sample_uniform(&mut rng, &mut a);
+            space.sample_uniform(&mut rng, &mut target);
+            let distance = space.distance(&a, &target);
+            if !checker.is_valid(&a) || distance <= 0.0 {
                 continue;
             }
-            let mut norm = 0.0;
-            for x in &mut b {
-                *x = uni() - 0.5;
-                norm += *x * *x;
-            }
-            let norm = norm.sqrt();
-            for j in 0..d {
-                b[j] = (a[j] + b[j] / norm).clamp(lower[j], upper[j]);
-            }
+            space.interpolate(&a, &target, distance.recip().min(1.0), &mut b);
             if checker.is_valid(&b) {
                 edges.push((a.clone(), b.clone()));
             }
