@@ -222,9 +222,10 @@ impl<S, V, Smp, E, H, G, N> Builder<S, V, Smp, E, H, G, N> {
         self
     }
 
-    /// The adaptive sampler's segment checks per repair (default 8).
+    /// The adaptive sampler's segment checks per repair (default: the problem's, 8 without
+    /// one).
     pub fn bridge_checks(mut self, checks: usize) -> Self {
-        self.parameters.bridge_checks = checks;
+        self.parameters.bridge_checks = Some(checks);
         self
     }
 

@@ -79,7 +79,10 @@ impl<S: StateSpace> SamplerPart<S> for AdaptiveSampler {
     ) -> Result<Self, BuildError> {
         Ok(AdaptiveSampler::new(space, start, goals, p.seed)?
             .with_std_dev(p.gaussian_std_fraction * space.maximum_extent())?
-            .with_bridge_checks(p.bridge_checks)?)
+            .with_bridge_checks(
+                p.bridge_checks
+                    .unwrap_or(AdaptiveSampler::DEFAULT_BRIDGE_CHECKS),
+            )?)
     }
 }
 

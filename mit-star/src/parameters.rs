@@ -110,8 +110,10 @@ pub struct Parameters {
     pub repair_reverse_search: Option<bool>,
     /// Standard deviation `δ` of the adaptive sampler, as a fraction of the maximum extent.
     pub gaussian_std_fraction: f64,
-    /// Segment points the adaptive sampler tests per repair.
-    pub bridge_checks: usize,
+    /// Segment points the adaptive sampler tests per repair (`None`: the problem's
+    /// [`bridge_checks`](mit_star_problems::PlanningProblem::bridge_checks) — 8, the spec's
+    /// default, for the paper's problems; 4 for arms; 8 for a planner built without a problem).
+    pub bridge_checks: Option<usize>,
     /// Initial sparse spacing `Δ₀` of the length-related checker (MIT*'s sparse checks), in
     /// steps `L` (`None`: the problem's
     /// [`sparse_spacing`](mit_star_problems::PlanningProblem::sparse_spacing) — 2000, the MIT* authors'
@@ -316,7 +318,7 @@ impl Default for Parameters {
             suspend_reverse_when_forward_empty: None,
             repair_reverse_search: None,
             gaussian_std_fraction: 0.1,
-            bridge_checks: 8,
+            bridge_checks: None,
             sparse_initial_steps: None,
             sparse_factor: 0.5,
             sparse_min_steps: None,
@@ -404,7 +406,8 @@ impl Parameters {
 
     /// These parameters for `problem`: its resolution replaces `resolution`, and its
     /// certification, near-terminal fraction, sparse spacing, reverse-search repair,
-    /// connection rule, batch size, batch growth and RRT range apply
+    /// connection rule, batch size, batch growth, solution samples, bridge checks and RRT
+    /// range apply
     /// wherever unset ([`Configuration::effective_parameters`](crate::Configuration::effective_parameters)
     /// also decides the planner's own defaults).
     ///
@@ -423,6 +426,7 @@ impl Parameters {
         parameters.batch_size = self.batch_size.or(Some(problem.batch_size()));
         parameters.batch_growth = self.batch_growth.or(Some(problem.batch_growth()));
         parameters.solution_samples = self.solution_samples.or(Some(problem.solution_samples()));
+        parameters.bridge_checks = self.bridge_checks.or(Some(problem.bridge_checks()));
         parameters.range = self.range.or(problem.default_range());
         let (initial, finest) = problem.sparse_spacing();
         parameters.sparse_initial_steps = self.sparse_initial_steps.or(Some(initial));
@@ -556,7 +560,7 @@ impl Parameters {
                 requirement: "it must lie in [0, 1)",
             });
         }
-        if self.bridge_checks == 0 {
+        if self.bridge_checks == Some(0) {
             return Err(BuildError::Parameter {
                 name: "bridge_checks",
                 value: 0.0,
@@ -700,7 +704,11 @@ impl Parameters {
                 "gaussian_std_fraction",
                 self.gaussian_std_fraction.to_string(),
             ),
-            ("bridge_checks", self.bridge_checks.to_string()),
+            (
+                "bridge_checks",
+                self.bridge_checks
+                    .map_or_else(|| "problem's".to_owned(), |b| b.to_string()),
+            ),
             (
                 "sparse_initial_steps",
                 self.sparse_initial_steps
@@ -870,7 +878,7 @@ mod tests {
             ),
             (
                 Parameters {
-                    bridge_checks: 0,
+                    bridge_checks: Some(0),
                     ..Default::default()
                 },
                 "bridge_checks",

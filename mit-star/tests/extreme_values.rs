@@ -42,7 +42,7 @@ fn with_field(field: usize, float: f64, count: usize, seed: u64) -> Parameters {
         1 => p.rewire_factor = float,
         2 => p.resolution = float,
         3 => p.gaussian_std_fraction = float,
-        4 => p.bridge_checks = count,
+        4 => p.bridge_checks = Some(count),
         5 => p.sparse_initial_steps = Some(float),
         6 => p.sparse_factor = float,
         _ => p.sparse_min_steps = Some(float),

@@ -77,6 +77,8 @@ pub use families::{
     FlankingGap, GoalEnclosed, GoalEnclosure, NarrowPassage, ObstacleFree, RandomRectangles,
     RepeatingRectangles, StartEnclosed, StartEnclosure, WallGap,
 };
-pub use planning_problem::{PAPER_BATCH_SIZE, PAPER_SPARSE_SPACING, PlanningProblem};
+pub use planning_problem::{
+    DEFAULT_BRIDGE_CHECKS, PAPER_BATCH_SIZE, PAPER_SPARSE_SPACING, PlanningProblem,
+};
 pub use problem::Problem;
 pub use problem_file::humanise;

@@ -133,6 +133,15 @@ pub trait PlanningProblem {
         0.0
     }
 
+    /// Segment points MIT*'s adaptive sampler tests per repair, between an invalid draw and its
+    /// invalid Gaussian partner ([`DEFAULT_BRIDGE_CHECKS`] by default, the planner spec's 8; the
+    /// paper gives no number). Where most failed repairs find nothing on the segment, or find
+    /// it among its first points, a smaller budget makes each repair cheaper without changing
+    /// the states it finds (an arm asks for 4).
+    fn bridge_checks(&self) -> usize {
+        DEFAULT_BRIDGE_CHECKS
+    }
+
     /// The fraction of each batch a planner of the EIT* family draws along its best path once
     /// it has one (0 by default: every sample from the sampler, as in the papers). In many
     /// dimensions uniform samples seldom fall where the path could be straightened, so a
@@ -149,6 +158,11 @@ pub trait PlanningProblem {
         None
     }
 }
+
+/// Segment points MIT*'s adaptive sampler tests per repair unless a problem asks for another
+/// number ([`PlanningProblem::bridge_checks`]'s default): 8, the planner spec's choice where the
+/// paper gives none.
+pub const DEFAULT_BRIDGE_CHECKS: usize = 8;
 
 /// The batch size of the MIT* and EIT* papers' experiments, 100 samples
 /// ([`PlanningProblem::batch_size`]'s default).
@@ -247,5 +261,8 @@ impl<P: PlanningProblem + ?Sized> PlanningProblem for &P {
     }
     fn solution_samples(&self) -> f64 {
         (**self).solution_samples()
+    }
+    fn bridge_checks(&self) -> usize {
+        (**self).bridge_checks()
     }
 }

@@ -13,6 +13,7 @@ mod test_meshes;
 mod audit_broad_phase;
 mod batch_size_on_arms;
 mod batches;
+mod bridge_checks_on_arms;
 mod budget_cover;
 mod certified_motion;
 mod cloud_affordances;

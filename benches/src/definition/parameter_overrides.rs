@@ -213,6 +213,7 @@ fn checked(key: &str, value: toml::Value) -> Result<toml::Value, HarnessError> {
         batch_growth: Some(0.0),
         solution_samples: Some(0.0),
         neighbour_cap: Some(1.0),
+        bridge_checks: Some(mit_star_problems::DEFAULT_BRIDGE_CHECKS),
         ..Parameters::default()
     });
     let Some(default) = defaults.get(key) else {
