@@ -30,8 +30,9 @@ use crate::solve_result::{SolveResult, counters_dict, trace_pairs};
 /// replace the problem's own checker (the problem still gives the bounds, start, goals and
 /// resolution). Edge checks hand `vectorized` up to `batch` states at once (1 to 1 024; the
 /// stop condition is polled between batches), and samplers draw their candidates up to eight
-/// ahead and check them in one call: with `vectorized` (and `batch` above 1) a seed gives a
-/// search of the same law as with `validity`, but not the same one.
+/// ahead and check them, with the points of their segment searches, in calls of at most
+/// `batch` states: with `vectorized` (and `batch` above 1) a seed gives a search of the same
+/// law as with `validity`, but not the same one.
 #[pyclass(module = "mit_star._native", name = "Planner")]
 pub struct PyPlanner {
     /// The planner (locked only by `&mut self` methods, which PyO3 already serialises).

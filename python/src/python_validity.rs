@@ -155,8 +155,10 @@ impl StateValidity for PythonValidity {
         })
     }
 
-    /// One call of the vectorised checker for the whole batch (a failed call answers
-    /// "invalid" for every state, as [`first_invalid`](Self::first_invalid) does).
+    /// One call of the vectorised checker per `batch` states (a sampler may hand more at once:
+    /// the points of several segment searches, packed into one call); a failed
+    /// call answers "invalid" for every state of its batch, as
+    /// [`first_invalid`](Self::first_invalid) does.
     fn are_valid(&self, states: &[f64], dimension: usize, valid: &mut [bool]) {
         let Some(f) = &self.vectorised else {
             for (state, answer) in states.chunks_exact(dimension.max(1)).zip(valid) {
@@ -165,16 +167,21 @@ impl StateValidity for PythonValidity {
             return;
         };
         let n = (states.len() / dimension.max(1)).min(valid.len());
-        let answers = if self.failure.has_failed() {
-            None
-        } else {
-            ArrayView2::from_shape((n, dimension), &states[..n * dimension])
-                .ok()
-                .and_then(|view| Python::attach(|py| self.call_vectorised(py, f, &view)))
-        };
-        match answers {
-            Some(answers) => valid[..n].copy_from_slice(&answers),
-            None => valid[..n].fill(false),
+        let width = self.batch * dimension.max(1);
+        let batches = states[..n * dimension].chunks(width.max(1));
+        for (batch, answers) in batches.zip(valid[..n].chunks_mut(self.batch)) {
+            let count = answers.len();
+            let replies = if self.failure.has_failed() {
+                None
+            } else {
+                ArrayView2::from_shape((count, dimension), batch)
+                    .ok()
+                    .and_then(|view| Python::attach(|py| self.call_vectorised(py, f, &view)))
+            };
+            match replies {
+                Some(replies) => answers.copy_from_slice(&replies),
+                None => answers.fill(false),
+            }
         }
     }
 }

@@ -55,6 +55,23 @@ def test_a_vectorised_checker_gets_batches(walls4: mit_star.Problem) -> None:
     assert max(sizes) > 1 and max(sizes) <= 32
 
 
+def test_a_batch_is_never_exceeded(walls4: mit_star.Problem) -> None:
+    # With a batch of two segment searches' points (2 x 8) the adaptive sampler searches the
+    # segments of all its candidates' failed repairs together; the checker still gets them
+    # at most `batch` at a time.
+    sizes = []
+
+    def valid_many(states: np.ndarray) -> np.ndarray:
+        sizes.append(len(states))
+        return np.array([walls4.is_valid(s) for s in states])
+
+    planner = mit_star.MitStar(walls4, seed=3, vectorized=valid_many, batch=16)
+    # Seed 3 meets a lookahead batch with three failed repairs within 5 000 iterations: 23
+    # points, once, before each call was cut to the batch.
+    assert planner.solve(iterations=5000).solved
+    assert max(sizes) == 16
+
+
 def test_a_batch_wider_than_the_poll_period_is_handed_whole(walls4: mit_star.Problem) -> None:
     sizes = []
 
