@@ -135,9 +135,9 @@ pub trait PlanningProblem {
 
     /// Segment points MIT*'s adaptive sampler tests per repair, between an invalid draw and its
     /// invalid Gaussian partner ([`DEFAULT_BRIDGE_CHECKS`] by default, the planner spec's 8; the
-    /// paper gives no number). Where most failed repairs find nothing on the segment, or find
-    /// it among its first points, a smaller budget makes each repair cheaper without changing
-    /// the states it finds (an arm asks for 4).
+    /// paper gives no number). Where most repairs that find a state find it among the first
+    /// points of the bisection order, a smaller budget makes the failing ones cheaper and
+    /// changes only the few that would have found theirs further along (an arm asks for 4).
     fn bridge_checks(&self) -> usize {
         DEFAULT_BRIDGE_CHECKS
     }
