@@ -81,10 +81,14 @@ impl<S: StateSpace> SamplerPart<S> for AdaptiveSampler {
             .with_std_dev(p.gaussian_std_fraction * space.maximum_extent())?
             .with_bridge_checks(
                 p.bridge_checks
-                    .unwrap_or(AdaptiveSampler::DEFAULT_BRIDGE_CHECKS),
+                    .unwrap_or(mit_star_problems::DEFAULT_BRIDGE_CHECKS),
             )?)
     }
 }
+
+// A planner built without a problem repairs as the sampler does on its own.
+const _: () =
+    assert!(AdaptiveSampler::DEFAULT_BRIDGE_CHECKS == mit_star_problems::DEFAULT_BRIDGE_CHECKS);
 
 impl<S: StateSpace> SamplerPart<S> for GaussianSampler {
     fn part_name() -> String {

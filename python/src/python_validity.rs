@@ -167,8 +167,7 @@ impl StateValidity for PythonValidity {
             return;
         };
         let n = (states.len() / dimension.max(1)).min(valid.len());
-        let width = self.batch * dimension.max(1);
-        let batches = states[..n * dimension].chunks(width.max(1));
+        let batches = states[..n * dimension].chunks(self.batch * dimension.max(1));
         for (batch, answers) in batches.zip(valid[..n].chunks_mut(self.batch)) {
             let count = answers.len();
             let replies = if self.failure.has_failed() {

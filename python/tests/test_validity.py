@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 import pytest
 
@@ -41,14 +43,20 @@ def test_a_python_checker_forbids_what_the_world_allows() -> None:
     assert result.cost > 2 * np.hypot(0.4, 0.5)  # around the wall, not through it
 
 
-def test_a_vectorised_checker_gets_batches(walls4: mit_star.Problem) -> None:
-    sizes = []
+def sizes_recorded(problem: mit_star.Problem) -> tuple[list[int], Callable[[np.ndarray], np.ndarray]]:
+    """A vectorised checker of `problem` that records how many states each call got."""
+    sizes: list[int] = []
 
     def valid_many(states: np.ndarray) -> np.ndarray:
         assert states.ndim == 2 and states.shape[1] == 4
         sizes.append(len(states))
-        return np.array([walls4.is_valid(s) for s in states])
+        return np.array([problem.is_valid(s) for s in states])
 
+    return sizes, valid_many
+
+
+def test_a_vectorised_checker_gets_batches(walls4: mit_star.Problem) -> None:
+    sizes, valid_many = sizes_recorded(walls4)
     planner = mit_star.MitStar(walls4, seed=3, vectorized=valid_many, batch=32)
     result = planner.solve(time=2.0, first_solution=True)
     assert result.solved
@@ -59,12 +67,7 @@ def test_a_batch_is_never_exceeded(walls4: mit_star.Problem) -> None:
     # With a batch of two segment searches' points (2 x 8) the adaptive sampler searches the
     # segments of all its candidates' failed repairs together; the checker still gets them
     # at most `batch` at a time.
-    sizes = []
-
-    def valid_many(states: np.ndarray) -> np.ndarray:
-        sizes.append(len(states))
-        return np.array([walls4.is_valid(s) for s in states])
-
+    sizes, valid_many = sizes_recorded(walls4)
     planner = mit_star.MitStar(walls4, seed=3, vectorized=valid_many, batch=16)
     # Seed 3 meets a lookahead batch with three failed repairs within 5 000 iterations: 23
     # points, once, before each call was cut to the batch.
@@ -73,12 +76,7 @@ def test_a_batch_is_never_exceeded(walls4: mit_star.Problem) -> None:
 
 
 def test_a_batch_wider_than_the_poll_period_is_handed_whole(walls4: mit_star.Problem) -> None:
-    sizes = []
-
-    def valid_many(states: np.ndarray) -> np.ndarray:
-        sizes.append(len(states))
-        return np.array([walls4.is_valid(s) for s in states])
-
+    sizes, valid_many = sizes_recorded(walls4)
     planner = mit_star.MitStar(walls4, seed=3, vectorized=valid_many, batch=100)
     assert planner.solve(time=2.0, first_solution=True).solved
     assert max(sizes) > 32 and max(sizes) <= 100

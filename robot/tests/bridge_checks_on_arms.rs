@@ -9,18 +9,6 @@ use mit_star_robot::ArmProblem;
 
 use crate::cage_batches::cage;
 
-/// The bridge checks `configuration` runs with on `problem` given `parameters`.
-fn checks<P: PlanningProblem>(
-    configuration: Configuration,
-    problem: &P,
-    parameters: &Parameters,
-) -> Option<usize> {
-    let effective = configuration
-        .effective_parameters(problem, parameters)
-        .unwrap();
-    effective.bridge_checks
-}
-
 #[test]
 fn arm_problems_test_fewer_segment_points_unless_told_otherwise() {
     let arm = cage();
@@ -36,12 +24,26 @@ fn arm_problems_test_fewer_segment_points_unless_told_otherwise() {
         ..Parameters::default()
     };
     for configuration in [Configuration::MitStar, Configuration::MitStarEis] {
-        let on_arm = checks(configuration, &arm, &defaults);
-        assert_eq!(on_arm, Some(ArmProblem::BRIDGE_CHECKS), "{configuration}");
-        let in_boxes = checks(configuration, &boxes, &defaults);
-        assert_eq!(in_boxes, Some(DEFAULT_BRIDGE_CHECKS), "{configuration}");
-        let kept = checks(configuration, &arm, &set);
-        assert_eq!(kept, Some(DEFAULT_BRIDGE_CHECKS), "{configuration}");
+        let on_arm = configuration.effective_parameters(&arm, &defaults).unwrap();
+        assert_eq!(
+            on_arm.bridge_checks,
+            Some(ArmProblem::BRIDGE_CHECKS),
+            "{configuration}"
+        );
+        let in_boxes = configuration
+            .effective_parameters(&boxes, &defaults)
+            .unwrap();
+        assert_eq!(
+            in_boxes.bridge_checks,
+            Some(DEFAULT_BRIDGE_CHECKS),
+            "{configuration}"
+        );
+        let kept = configuration.effective_parameters(&arm, &set).unwrap();
+        assert_eq!(
+            kept.bridge_checks,
+            Some(DEFAULT_BRIDGE_CHECKS),
+            "{configuration}"
+        );
     }
 }
 
