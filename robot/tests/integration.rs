@@ -35,6 +35,7 @@ mod other_robots;
 mod padding;
 mod parry_agreement;
 mod radius_connection_on_arms;
+mod recycled_scratch;
 mod reverse_repair_on_arms;
 mod rrt_range_on_arms;
 mod scenes;

@@ -118,13 +118,22 @@ impl CertifyScratch {
             stopped_at: None,
         }
     }
-}
 
-impl Clone for CertifyScratch {
-    /// New buffers of the same sizes, as [`new`](Self::new) makes them: every walk writes
-    /// what it reads, so the contents are not worth copying.
-    fn clone(&self) -> Self {
-        Self::new(self.delta.len(), self.sweep.len(), self.pair_sweep.len())
+    /// Forgets a stopped walk, so that no later call resumes it.
+    pub(crate) fn forget_stop(&mut self) {
+        self.stopped_at = None;
+    }
+
+    /// Marks a walk as stopped at `at` (tests).
+    #[cfg(test)]
+    pub(crate) fn stop_at_for_tests(&mut self, at: (f64, f64)) {
+        self.stopped_at = Some(at);
+    }
+
+    /// Whether a stopped walk is kept (tests).
+    #[cfg(test)]
+    pub(crate) fn stopped_for_tests(&self) -> bool {
+        self.stopped_at.is_some()
     }
 }
 
@@ -151,7 +160,7 @@ impl ArmChecker {
             return Some(EdgeStatus::Valid);
         }
         let mut guard = self.scratch.lock();
-        let Scratch { lanes, certify } = &mut *guard;
+        let Scratch { lanes, certify, .. } = &mut *guard;
         let CertifyScratch {
             delta,
             sweep,

@@ -9,12 +9,14 @@ use mit_star_validity::{EdgeStatus, MotionProgress, Preparation, Segment, StateV
 
 use wide::f64x4;
 
+use crate::checking::arm_certification::CertifyScratch;
 use crate::checking::clearance::LinkMotion;
 use crate::checking::lanes::{LANES, LaneF32, LaneKinematics, LanePoint, LanePose};
 use crate::checking::local_sweep::LocalSweep;
 use crate::checking::obstacle_grid::{Candidates, GRID_THRESHOLD, ObstacleGrid, widest};
 use crate::checking::reachable_obstacles::reachable_obstacles;
 use crate::checking::scratch_cell::ScratchCell;
+use crate::checking::spare_scratch;
 use crate::{CloudObstacle, Kinematics, LeverArms, Obstacle, Padding, RobotModel, Scene};
 
 /// What the checks share between clones: the kinematics, the scene, the pair lists and the
@@ -69,6 +71,8 @@ pub(crate) struct Shared {
     pub(crate) pair_levers: Vec<f64>,
     /// The configuration-dependent sweep bound certification uses.
     pub(crate) local: LocalSweep,
+    /// The sizes of a clone's scratch.
+    scratch_shape: ScratchShape,
 }
 
 /// Which invalid configuration of a batch a check must find.
@@ -83,10 +87,71 @@ pub(crate) enum Wanted {
 }
 
 /// Per-clone scratch, reused by every check.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub(crate) struct Scratch {
     pub(crate) lanes: LaneScratch,
-    pub(crate) certify: crate::checking::arm_certification::CertifyScratch,
+    pub(crate) certify: CertifyScratch,
+    /// The sizes it was made for.
+    shape: ScratchShape,
+}
+
+/// The sizes of a checker's [`Scratch`], fixed by its robot and scene.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct ScratchShape {
+    /// Links of the kinematic tree.
+    pub(crate) links: usize,
+    /// Spheres of the robot.
+    pub(crate) spheres: usize,
+    /// Links with spheres (entries of `Shared::links`).
+    pub(crate) entries: usize,
+    /// Joints.
+    pub(crate) dimension: usize,
+    /// Obstacles the longest grid list holds.
+    pub(crate) candidates: usize,
+    /// Self-collision pairs.
+    pub(crate) pairs: usize,
+}
+
+impl ScratchShape {
+    /// No buffers at all (what a dropped checker leaves behind).
+    pub(crate) const EMPTY: Self = Self {
+        links: 0,
+        spheres: 0,
+        entries: 0,
+        dimension: 0,
+        candidates: 0,
+        pairs: 0,
+    };
+}
+
+impl Scratch {
+    /// New buffers of `shape`.
+    pub(crate) fn new(shape: ScratchShape) -> Self {
+        Self {
+            lanes: LaneScratch::new(
+                shape.links,
+                shape.spheres,
+                shape.entries,
+                shape.dimension,
+                shape.candidates,
+            ),
+            certify: CertifyScratch::new(shape.dimension, shape.entries, shape.pairs),
+            shape,
+        }
+    }
+
+    /// The sizes it was made for.
+    pub(crate) fn shape(&self) -> ScratchShape {
+        self.shape
+    }
+
+    /// Forgets what earlier checks left as hints or to resume (the link hit last, a stopped
+    /// certification), as a new scratch has none: a check's work does not depend on the
+    /// previous owner of a recycled scratch.
+    pub(crate) fn reset(&mut self) {
+        self.lanes.last_hit = usize::MAX;
+        self.certify.forget_stop();
+    }
 }
 
 /// The lane checks' buffers: link poses, sphere centres, link bounding-sphere centres
@@ -132,23 +197,6 @@ impl LaneScratch {
             candidates: Candidates::with_capacity(candidates),
             motions: vec![None; entries],
         }
-    }
-}
-
-impl Clone for LaneScratch {
-    /// New buffers of the same sizes, as [`new`](Self::new) makes them, not copies: a check
-    /// writes every buffer before it reads it (`placed` is reset per batch, `last_hit` is
-    /// only a hint), and building a planner clones its problem's checker, so copying the
-    /// contents (about 23 KB on the Panda at sixteen lanes, cold in cache) would only cost
-    /// construction time.
-    fn clone(&self) -> Self {
-        Self::new(
-            self.lane_poses.len(),
-            self.lane_centers.len(),
-            self.lane_bounds.len(),
-            self.lane_q.len(),
-            self.candidates.0.capacity(),
-        )
     }
 }
 
@@ -204,11 +252,33 @@ const MARGIN_PER_METRE: f64 = 2e-6;
 /// never allocates. The scratch sits behind a mutex so that problems holding a checker
 /// can be shared between threads; each planner owns its own clone, so the lock is never
 /// contended (an uncontended lock costs a few nanoseconds against a check of about a
-/// microsecond).
-#[derive(Debug, Clone)]
+/// microsecond). A dropped checker leaves its buffers to the next clone of the same shape on
+/// its thread, so a program that builds a planner per query (a benchmark, a robot's planning
+/// loop) does not allocate and write them anew each time.
+#[derive(Debug)]
 pub struct ArmChecker {
     pub(crate) shared: Arc<Shared>,
     pub(crate) scratch: ScratchCell<Scratch>,
+}
+
+impl Clone for ArmChecker {
+    /// Shares the model and scene; the scratch is one a checker of the same shape dropped on
+    /// this thread (`spare_scratch.rs`), reset, or new buffers: a check writes every buffer
+    /// before it reads it, so contents are never copied.
+    fn clone(&self) -> Self {
+        Self {
+            shared: Arc::clone(&self.shared),
+            scratch: ScratchCell::new(spare_scratch::take(self.shared.scratch_shape)),
+        }
+    }
+}
+
+impl Drop for ArmChecker {
+    /// Leaves the scratch to the next clone on this thread (`spare_scratch.rs`).
+    fn drop(&mut self) {
+        let empty = Scratch::new(ScratchShape::EMPTY);
+        spare_scratch::give(std::mem::replace(self.scratch.get_mut(), empty));
+    }
 }
 
 impl ArmChecker {
@@ -310,19 +380,13 @@ impl ArmChecker {
             })
             .collect();
         let longest = grids.iter().flatten().map(ObstacleGrid::len).max();
-        let scratch = Scratch {
-            lanes: LaneScratch::new(
-                fk.link_count(),
-                fk.sphere_count(),
-                links.len(),
-                dimension,
-                longest.unwrap_or(0),
-            ),
-            certify: crate::checking::arm_certification::CertifyScratch::new(
-                dimension,
-                links.len(),
-                pairs.len(),
-            ),
+        let scratch_shape = ScratchShape {
+            links: fk.link_count(),
+            spheres: fk.sphere_count(),
+            entries: links.len(),
+            dimension,
+            candidates: longest.unwrap_or(0),
+            pairs: pairs.len(),
         };
         let local = LocalSweep::new(robot, &links);
         let pair_levers = pairs
@@ -359,8 +423,9 @@ impl ArmChecker {
                 levers,
                 pair_levers,
                 local,
+                scratch_shape,
             }),
-            scratch: ScratchCell::new(scratch),
+            scratch: ScratchCell::new(spare_scratch::take(scratch_shape)),
         }
     }
 

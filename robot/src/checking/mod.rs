@@ -27,7 +27,9 @@
 //! - [`Padding`] (`padding.rs`): the clearance a user asks paths to keep from every obstacle
 //!   (environment only, not between the robot's links), which every check, certification and
 //!   reference check above grows the robot's spheres by against the scene.
-//! - `scratch_cell.rs`: the per-clone scratch buffers both checkers keep behind a mutex.
+//! - `scratch_cell.rs`: the per-clone scratch buffers both checkers keep behind a mutex;
+//!   `spare_scratch.rs`: the arm checker's, kept on their thread when a checker is dropped and
+//!   handed to the next clone of the same shape.
 //!
 //! May use: `model` (the robot, its kinematics and lever arms), `scenes` (the obstacles),
 //! `clouds` (point clouds and their tree: the planners' checker only), and
@@ -47,6 +49,7 @@ mod padding;
 mod parry_checker;
 mod reachable_obstacles;
 mod scratch_cell;
+mod spare_scratch;
 mod state_diagnosis;
 
 pub use arm_certification::FLOOR as CERTIFICATION_FLOOR;
