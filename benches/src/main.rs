@@ -8,6 +8,12 @@ use clap::Parser;
 use mit_star_benches::Interrupt;
 use mit_star_benches::commands::{Cli, CommandOutcome};
 
+/// mimalloc rather than the system allocator: a planner is built for every run, and its
+/// construction allocates (on the Panda, RRT-Connect's construction in `bench` took 15.9 µs
+/// with glibc's allocator and 9.7 µs with this one; the solves were unchanged).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let interrupt = match Interrupt::install() {
