@@ -113,7 +113,9 @@ impl CertifyScratch {
             sweep: vec![0.0; links],
             pair_sweep: vec![0.0; pairs],
             terms: EdgeTerms::default(),
-            ahead: Vec::with_capacity(2 * LANES),
+            // No room for the empty scratch a dropped checker leaves behind: dropping then
+            // allocates nothing.
+            ahead: Vec::with_capacity(if links == 0 { 0 } else { 2 * LANES }),
             stopped_ends: vec![0.0; 2 * dimension],
             stopped_at: None,
         }
@@ -128,6 +130,16 @@ impl CertifyScratch {
     #[cfg(test)]
     pub(crate) fn stop_at_for_tests(&mut self, at: (f64, f64)) {
         self.stopped_at = Some(at);
+    }
+
+    /// Whether no buffer has room for anything (tests).
+    #[cfg(test)]
+    pub(crate) fn holds_nothing_for_tests(&self) -> bool {
+        self.delta.capacity() == 0
+            && self.sweep.capacity() == 0
+            && self.pair_sweep.capacity() == 0
+            && self.ahead.capacity() == 0
+            && self.stopped_ends.capacity() == 0
     }
 
     /// Whether a stopped walk is kept (tests).
