@@ -85,7 +85,7 @@ const _: () = assert!(SPACING * USEFUL >= 1.25);
 const POLL_BATCHES: u32 = 4;
 
 /// Buffers of the walk, per clone of the checker.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub(crate) struct CertifyScratch {
     /// The edge's joint displacements (the short way round for wrapping joints).
     delta: Vec<f64>,
@@ -113,9 +113,7 @@ impl CertifyScratch {
             sweep: vec![0.0; links],
             pair_sweep: vec![0.0; pairs],
             terms: EdgeTerms::default(),
-            // No room for the empty scratch a dropped checker leaves behind: dropping then
-            // allocates nothing.
-            ahead: Vec::with_capacity(if links == 0 { 0 } else { 2 * LANES }),
+            ahead: Vec::with_capacity(2 * LANES),
             stopped_ends: vec![0.0; 2 * dimension],
             stopped_at: None,
         }

@@ -86,8 +86,9 @@ pub(crate) enum Wanted {
     All,
 }
 
-/// Per-clone scratch, reused by every check.
-#[derive(Debug)]
+/// Per-clone scratch, reused by every check. The default holds no buffer: it is what a dropped
+/// checker leaves in place of the one it hands on, and no check ever runs on it.
+#[derive(Debug, Default)]
 pub(crate) struct Scratch {
     pub(crate) lanes: LaneScratch,
     pub(crate) certify: CertifyScratch,
@@ -95,8 +96,8 @@ pub(crate) struct Scratch {
     shape: ScratchShape,
 }
 
-/// The sizes of a checker's [`Scratch`], fixed by its robot and scene.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The sizes of a checker's [`Scratch`], fixed by its robot and scene (all 0: no buffer).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(crate) struct ScratchShape {
     /// Links of the kinematic tree.
     pub(crate) links: usize,
@@ -110,18 +111,6 @@ pub(crate) struct ScratchShape {
     pub(crate) candidates: usize,
     /// Self-collision pairs.
     pub(crate) pairs: usize,
-}
-
-impl ScratchShape {
-    /// No buffers at all (what a dropped checker leaves behind).
-    pub(crate) const EMPTY: Self = Self {
-        links: 0,
-        spheres: 0,
-        entries: 0,
-        dimension: 0,
-        candidates: 0,
-        pairs: 0,
-    };
 }
 
 impl Scratch {
@@ -157,7 +146,7 @@ impl Scratch {
 /// The lane checks' buffers: link poses, sphere centres, link bounding-sphere centres
 /// (and whether a link's sphere centres are placed for the current batch), joint values by
 /// coordinate.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub(crate) struct LaneScratch {
     pub(crate) lane_poses: Vec<LanePose>,
     pub(crate) lane_centers: Vec<LanePoint>,
@@ -276,8 +265,7 @@ impl Clone for ArmChecker {
 impl Drop for ArmChecker {
     /// Leaves the scratch to the next clone on this thread (`spare_scratch.rs`).
     fn drop(&mut self) {
-        let empty = Scratch::new(ScratchShape::EMPTY);
-        spare_scratch::give(std::mem::replace(self.scratch.get_mut(), empty));
+        spare_scratch::give(std::mem::take(self.scratch.get_mut()));
     }
 }
 

@@ -49,7 +49,7 @@ pub(crate) fn take(shape: ScratchShape) -> Scratch {
 /// Keeps `scratch` for a later [`take`] on this thread, unless the thread already keeps
 /// [`KEPT`] (or is ending): then it is freed.
 pub(crate) fn give(scratch: Scratch) {
-    if scratch.shape() == ScratchShape::EMPTY {
+    if scratch.shape() == ScratchShape::default() {
         return;
     }
     // Dropped here if the thread is ending or keeps enough.
@@ -116,7 +116,7 @@ mod tests {
 
     #[test]
     fn the_empty_scratch_holds_no_buffer() {
-        let empty = Scratch::new(ScratchShape::EMPTY);
+        let empty = Scratch::default();
         assert_eq!(empty.lanes.lane_centers.capacity(), 0);
         assert_eq!(empty.lanes.candidates.0.capacity(), 0);
         assert!(empty.certify.holds_nothing_for_tests());
@@ -125,7 +125,7 @@ mod tests {
     #[test]
     fn a_thread_keeps_at_most_kept_spares_and_none_empty() {
         std::thread::spawn(|| {
-            give(Scratch::new(ScratchShape::EMPTY));
+            give(Scratch::default());
             assert_eq!(kept(), 0);
             for _ in 0..KEPT + 3 {
                 give(Scratch::new(shape(7)));
