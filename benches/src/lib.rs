@@ -111,6 +111,7 @@ pub use error::HarnessError;
 pub use execution::executor::{ExecutionOptions, Executor, RecordSink, RunKey};
 pub use execution::figures::Figures;
 pub use execution::interrupt::Interrupt;
+pub use execution::pending_run::AuditBatch;
 pub use execution::results_folder::{
     DATABASE_FILE, ResultsFolder, kpi_markdown, kpi_overview, writable_folder,
 };

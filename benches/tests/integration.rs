@@ -6,6 +6,7 @@
 mod common;
 
 mod arm_experiment;
+mod audit_batches;
 mod cli;
 mod cloud_experiments;
 mod clouds;

@@ -20,6 +20,7 @@ use crate::definition::shipped_experiment::ShippedExperiment;
 use crate::error::HarnessError;
 use crate::execution::executor::{ExecutionOptions, Executor};
 use crate::execution::figures::Figures;
+use crate::execution::pending_run::AuditBatch;
 use crate::execution::results_folder::ResultsFolder;
 use crate::execution::run_job::RunJob;
 use crate::execution::run_journal::{RunJournal, results_from_records};
@@ -135,6 +136,12 @@ pub struct BenchArgs {
     /// folders. Default folder: results/NAME-shard-K-of-N.
     #[arg(long, value_name = "K/N")]
     pub shard: Option<Shard>,
+    /// Audit each run's path the moment the run ends. By default a worker solves short runs
+    /// (together at most 32 runs or 0.25 s) back to back and audits them afterwards, so that
+    /// no solve starts with the caches the previous path's audit left; SIGKILL or a crash then
+    /// lose at most those runs.
+    #[arg(long)]
+    pub audit_every_run: bool,
     /// Do not draw the figures.
     #[arg(long)]
     pub no_plots: bool,
@@ -412,9 +419,10 @@ impl BenchArgs {
         let mut folder = ResultsFolder::prepare(&output)?;
         folder.claim(&experiment)?;
         folder.claim_shard(self.shard)?;
-        // Every finished run goes to the raw files before its worker starts the next one
-        // (the database follows in batches): SIGTERM, SIGKILL or a crash lose at most the runs
-        // in flight. Runs recorded by an earlier bench of this experiment are not rerun.
+        // Every finished run goes to the raw files once audited, short runs in small batches
+        // (`AuditBatch`), the database following in batches of its own: SIGTERM keeps every
+        // finished run, SIGKILL or a crash lose at most the runs in flight and those awaiting
+        // their audit. Runs recorded by an earlier bench of this experiment are not rerun.
         let journal = RunJournal::open(folder.path(), &experiment, &instances)?;
         if journal.healed() > 0 {
             eprintln!(
@@ -493,6 +501,11 @@ impl BenchArgs {
             recorded,
             on_record: Some(Arc::new(sink)),
             shard: self.shard,
+            audit_batch: if self.audit_every_run {
+                AuditBatch::EACH_RUN
+            } else {
+                AuditBatch::DEFAULT
+            },
         });
         let results = executor.run(&experiment, instances)?;
         // Close the raw files and the journal's database connection before rebuilding.

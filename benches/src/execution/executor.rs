@@ -11,6 +11,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use crate::definition::experiment::Experiment;
 use crate::definition::problem_instance::ProblemInstance;
 use crate::error::HarnessError;
+use crate::execution::pending_run::{AuditBatch, PendingRun};
 use crate::execution::run_job::RunJob;
 use crate::execution::shard::Shard;
 use crate::outcome::experiment_results::ExperimentResults;
@@ -21,7 +22,8 @@ use crate::outcome::run_record::{RunRecord, RunStatus};
 pub type RunKey = (String, String, usize);
 
 /// Called with each finished run (its instance's index and record), from the worker thread
-/// that ran it, before the worker takes the next job.
+/// that ran it, once its path is audited: before the worker takes the next job, or, for the
+/// short runs an [`AuditBatch`] lets wait, within that batch.
 pub type RecordSink = dyn Fn(usize, &RunRecord) + Send + Sync;
 
 /// How to execute an experiment.
@@ -41,6 +43,9 @@ pub struct ExecutionOptions {
     pub on_record: Option<Arc<RecordSink>>,
     /// Run only this part of the experiment (`None`: all of it).
     pub shard: Option<Shard>,
+    /// How many finished runs a worker solves before it audits them together
+    /// ([`AuditBatch::DEFAULT`]; [`AuditBatch::EACH_RUN`] audits each run the moment it ends).
+    pub audit_batch: AuditBatch,
 }
 
 impl std::fmt::Debug for ExecutionOptions {
@@ -52,6 +57,7 @@ impl std::fmt::Debug for ExecutionOptions {
             .field("recorded", &self.recorded.len())
             .field("on_record", &self.on_record.is_some())
             .field("shard", &self.shard)
+            .field("audit_batch", &self.audit_batch)
             .finish()
     }
 }
@@ -66,6 +72,7 @@ impl Default for ExecutionOptions {
             recorded: HashSet::new(),
             on_record: None,
             shard: None,
+            audit_batch: AuditBatch::DEFAULT,
         }
     }
 }
@@ -75,7 +82,12 @@ impl Default for ExecutionOptions {
 /// The jobs ([`RunJob::schedule`]) are handed out in schedule order to `threads` workers, so
 /// run `i` of every planner executes close in time; each run's seed and planner order depend
 /// only on its run index, never on scheduling. Runs whose path fails validation are reported
-/// on stderr as they happen.
+/// on stderr as they are audited.
+///
+/// A worker audits short runs in batches ([`ExecutionOptions::audit_batch`]): the audit of a
+/// path walks other data than the planner, and a solve of a few dozen microseconds that starts
+/// right after it starts with cold caches. Every run is audited and recorded before the
+/// worker stops, interrupted or not.
 ///
 /// ```no_run
 /// use mit_star_benches::{ExecutionOptions, Executor, Experiment};
@@ -137,20 +149,17 @@ impl Executor {
         let done = AtomicUsize::new(0);
         let slots: Mutex<Vec<Option<RunRecord>>> = Mutex::new(vec![None; jobs.len()]);
         let interrupt = &*self.options.interrupt;
+        let audit_batch = self.options.audit_batch;
         pool.scope(|scope| {
             for _ in 0..concurrency {
                 scope.spawn(|_| {
-                    loop {
-                        if interrupt.load(Ordering::Relaxed) {
-                            break;
-                        }
-                        let index = next.fetch_add(1, Ordering::Relaxed);
-                        let Some(job) = jobs.get(index) else { break };
+                    // Finished runs awaiting their audit, with their job's index.
+                    let mut waiting: Vec<(usize, PendingRun)> = Vec::new();
+                    let mut waiting_seconds = 0.0;
+                    let record = |index: usize, pending: PendingRun| {
+                        let job = &jobs[index];
                         let instance = &instances[job.instance];
-                        let planner = &experiment.planners[job.planner];
-                        let Some(record) = job.execute(instance, planner, interrupt) else {
-                            break;
-                        };
+                        let record = pending.audit(instance);
                         report(&progress, &record);
                         if let Some(sink) = &self.options.on_record {
                             sink(job.instance, &record);
@@ -165,6 +174,31 @@ impl Executor {
                         if let Ok(mut slots) = slots.lock() {
                             slots[index] = Some(record);
                         }
+                    };
+                    loop {
+                        if interrupt.load(Ordering::Relaxed) {
+                            break;
+                        }
+                        let index = next.fetch_add(1, Ordering::Relaxed);
+                        let Some(job) = jobs.get(index) else { break };
+                        let instance = &instances[job.instance];
+                        let planner = &experiment.planners[job.planner];
+                        let Some(pending) = job.execute_unaudited(instance, planner, interrupt)
+                        else {
+                            break;
+                        };
+                        waiting_seconds += pending.run_time();
+                        waiting.push((index, pending));
+                        if audit_batch.is_due(waiting.len(), waiting_seconds) {
+                            for (index, pending) in waiting.drain(..) {
+                                record(index, pending);
+                            }
+                            waiting_seconds = 0.0;
+                        }
+                    }
+                    // Finished runs are kept, interrupted or not.
+                    for (index, pending) in waiting.drain(..) {
+                        record(index, pending);
                     }
                 });
             }

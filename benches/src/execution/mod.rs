@@ -4,9 +4,11 @@
 //! - [`run_job`]: one run of one planner on one instance, its place in the shuffled, seeded
 //!   schedule, and its execution under the time budget.
 //! - [`executor`]: the jobs run in parallel with progress, each finished run handed to a sink.
+//! - [`pending_run`]: finished runs awaiting their audit, which a worker runs for a few short
+//!   runs together ([`AuditBatch`](pending_run::AuditBatch)).
 //! - [`interrupt`]: SIGINT and SIGTERM, handled alike (finished runs are kept).
 //! - [`run_journal`] (with `run_journal/repair.rs`): every finished run appended to
-//!   `runs.jsonl`/`runs.csv` before the next starts and committed to the database in batches;
+//!   `runs.jsonl`/`runs.csv` once audited and committed to the database in batches;
 //!   reading them back, repairing a torn last line and runs recorded twice.
 //! - [`figures`]: which figures and 3-D views a results folder gets (by scene, or every
 //!   problem too).
@@ -24,6 +26,7 @@
 pub(crate) mod executor;
 pub(crate) mod figures;
 pub(crate) mod interrupt;
+pub(crate) mod pending_run;
 pub(crate) mod results_folder;
 pub(crate) mod run_job;
 pub(crate) mod run_journal;

@@ -14,6 +14,7 @@ use rand::seq::SliceRandom;
 use crate::budget::deadline_after;
 use crate::definition::planner_spec::PlannerSpec;
 use crate::definition::problem_instance::ProblemInstance;
+use crate::execution::pending_run::PendingRun;
 use crate::outcome::run_record::{RunRecord, RunStatus};
 use crate::path_validation::PathValidation;
 
@@ -131,22 +132,34 @@ impl RunJob {
         planner: &PlannerSpec,
         interrupt: &AtomicBool,
     ) -> Option<RunRecord> {
+        self.execute_unaudited(instance, planner, interrupt)
+            .map(|pending| pending.audit(instance))
+    }
+
+    /// [`execute`](Self::execute) without the audit of the returned path: the run as it
+    /// finished, to be audited later with [`PendingRun::audit`]. The executor audits its
+    /// workers' runs in batches, so that a short solve does not start with the caches the
+    /// previous run's audit left ([`AuditBatch`](crate::execution::pending_run::AuditBatch)).
+    pub(crate) fn execute_unaudited(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        interrupt: &AtomicBool,
+    ) -> Option<PendingRun> {
         let run = std::panic::AssertUnwindSafe(|| {
-            self.execute_keeping_planner(instance, planner, interrupt)
-                .map(|(record, _)| record)
+            self.build_and_solve(instance, planner, interrupt)
+                .map(|(pending, _)| pending)
         });
         match std::panic::catch_unwind(run) {
-            Ok(record) => record,
+            Ok(pending) => pending,
             Err(payload) => {
-                let message = payload
-                    .downcast_ref::<&str>()
-                    .map(|s| (*s).to_owned())
-                    .or_else(|| payload.downcast_ref::<String>().cloned())
-                    .unwrap_or_else(|| "unknown panic".to_owned());
                 let mut record = self.blank_record(instance, planner);
                 record.status = RunStatus::Error;
-                record.error = Some(format!("the planner panicked: {message}"));
-                Some(record)
+                record.error = Some(format!(
+                    "the planner panicked: {}",
+                    panic_message(&*payload)
+                ));
+                Some(PendingRun::judged(record))
             }
         }
     }
@@ -184,24 +197,38 @@ impl RunJob {
         planner: &PlannerSpec,
         interrupt: &AtomicBool,
     ) -> Option<(RunRecord, Option<Box<dyn Planner + Send>>)> {
+        let (pending, built) = self.build_and_solve(instance, planner, interrupt)?;
+        Some((pending.audit(instance), built))
+    }
+
+    /// Builds the planner and solves, leaving the returned path unaudited; also the planner
+    /// (`None` if it could not be built).
+    fn build_and_solve(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        interrupt: &AtomicBool,
+    ) -> Option<(PendingRun, Option<Box<dyn Planner + Send>>)> {
         if interrupt.load(Ordering::Relaxed) {
             return None;
         }
         let started = Instant::now();
+        let failed = |e: &dyn std::fmt::Display| {
+            let record = self.failed(instance, planner, started, e);
+            Some((PendingRun::judged(record), None))
+        };
         let deadline = match deadline_after(started, instance.budget) {
             Ok(deadline) => deadline,
-            Err(e) => return Some((self.failed(instance, planner, started, &e), None)),
+            Err(e) => return failed(&e),
         };
         match instance.build_planner(planner, self.seed) {
-            Ok((built, None)) => {
-                self.solve_built(instance, planner, built, (started, deadline), interrupt)
-            }
-            Ok((built, Some(source))) => {
-                let validate = |path: &[Vec<f64>], cost: f64| source.validate(path, cost);
+            Ok((built, goal_source)) => {
                 let times = (started, deadline);
-                self.solve_built_validating(instance, planner, built, times, interrupt, &validate)
+                let (record, built) =
+                    self.solve_unaudited(instance, planner, built, times, interrupt)?;
+                Some((PendingRun::new(record, goal_source), Some(built)))
             }
-            Err(e) => Some((self.failed(instance, planner, started, &e), None)),
+            Err(e) => failed(&e),
         }
     }
 
@@ -247,11 +274,28 @@ impl RunJob {
         &self,
         instance: &ProblemInstance,
         planner: &PlannerSpec,
-        mut built: Box<dyn Planner + Send>,
-        (started, deadline): (Instant, Instant),
+        built: Box<dyn Planner + Send>,
+        times: (Instant, Instant),
         interrupt: &AtomicBool,
         validate: &dyn Fn(&[Vec<f64>], f64) -> PathValidation,
     ) -> Option<(RunRecord, Option<Box<dyn Planner + Send>>)> {
+        let (mut record, built) =
+            self.solve_unaudited(instance, planner, built, times, interrupt)?;
+        audit_record(&mut record, validate);
+        Some((record, Some(built)))
+    }
+
+    /// The run of [`solve_built_validating`](Self::solve_built_validating) up to the audit: a
+    /// record whose path, if any, is not judged yet (its status [`RunStatus::Solved`] until
+    /// [`audit_record`] says otherwise).
+    fn solve_unaudited(
+        &self,
+        instance: &ProblemInstance,
+        planner: &PlannerSpec,
+        mut built: Box<dyn Planner + Send>,
+        (started, deadline): (Instant, Instant),
+        interrupt: &AtomicBool,
+    ) -> Option<(RunRecord, Box<dyn Planner + Send>)> {
         let mut record = self.blank_record(instance, planner);
         let setup = started.elapsed();
         record.setup_time = setup.as_secs_f64();
@@ -293,18 +337,41 @@ impl RunJob {
                     if let Some((joints, wrapping)) = instance.problem.joints() {
                         (record.joints, record.wrapping) = (joints, wrapping);
                     }
-                    let validation = validate(&record.path, solution.cost);
-                    record.status = if validation.valid {
-                        RunStatus::Solved
-                    } else {
-                        RunStatus::InvalidPath
-                    };
-                    record.validation = Some(validation);
+                    record.status = RunStatus::Solved;
                 }
             },
         }
-        Some((record, Some(built)))
+        Some((record, built))
     }
+}
+
+/// Judges a finished run's path with `validate`: [`RunStatus::InvalidPath`] if the audit
+/// rejects it, and the audit's findings in `record.validation`. Runs without a path are left
+/// as they are.
+pub(crate) fn audit_record(
+    record: &mut RunRecord,
+    validate: &dyn Fn(&[Vec<f64>], f64) -> PathValidation,
+) {
+    let Some(cost) = record.final_cost else {
+        return;
+    };
+    if record.status != RunStatus::Solved {
+        return;
+    }
+    let validation = validate(&record.path, cost);
+    if !validation.valid {
+        record.status = RunStatus::InvalidPath;
+    }
+    record.validation = Some(validation);
+}
+
+/// The message a panic carried, or "unknown panic".
+pub(crate) fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| (*s).to_owned())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".to_owned())
 }
 
 #[cfg(test)]

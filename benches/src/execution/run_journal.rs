@@ -29,7 +29,8 @@ pub const DATABASE_COMMIT_INTERVAL: Duration = Duration::from_secs(10);
 
 /// Appends finished runs to a results folder the moment they finish: one line to `runs.jsonl`,
 /// then one row to `runs.csv` (each a single write of a whole line). A crash, SIGKILL or a
-/// job's time limit loses at most the runs in flight.
+/// job's time limit loses at most the runs in flight and those awaiting their audit
+/// ([`AuditBatch`](crate::AuditBatch)).
 ///
 /// The Planner Arena database follows in batches: the runs appended since the last commit go
 /// to it together, in one transaction (each instance's experiment row created by its first run,
