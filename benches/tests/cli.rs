@@ -727,6 +727,7 @@ fn a_signal_while_reading_a_fifo_leaves_at_once() {
         .spawn()
         .unwrap();
     // Let it block in the read (nobody writes the FIFO), then send SIGTERM.
+    common::wait_for_sigterm_handler(child.id());
     std::thread::sleep(Duration::from_millis(500));
     let term = Command::new("kill")
         .args(["-TERM", &child.id().to_string()])

@@ -416,6 +416,7 @@ fn replan_refuses_absurd_iterations_and_honours_the_first_sigterm() {
         .stderr(std::process::Stdio::null())
         .spawn()
         .unwrap();
+    common::wait_for_sigterm_handler(child.id());
     std::thread::sleep(Duration::from_secs(1));
     let term = Command::new("kill")
         .args(["-TERM", &child.id().to_string()])

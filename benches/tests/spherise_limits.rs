@@ -118,8 +118,9 @@ fn the_first_sigterm_stops_a_long_cover_within_seconds() {
         "-o",
         output.to_str().unwrap(),
     ]);
-    // Time to install the signal handler and begin covering.
-    std::thread::sleep(Duration::from_secs(3));
+    // The handler installed, then a second to begin covering.
+    crate::common::wait_for_sigterm_handler(child.id());
+    std::thread::sleep(Duration::from_secs(1));
     assert!(
         Command::new("kill")
             .args(["-TERM", &child.id().to_string()])

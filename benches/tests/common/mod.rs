@@ -46,3 +46,27 @@ pub(crate) fn refused(args: &[&str], needles: &[&str]) {
         );
     }
 }
+
+/// Waits until process `pid` catches SIGTERM (bit 15 of `SigCgt` in `/proc/PID/status`), so
+/// that a SIGTERM sent next reaches its handler rather than the default action, which would
+/// end it without an exit code. A fixed sleep is not enough on a loaded machine: a process
+/// started right after a build may not have reached `main` seconds later.
+pub(crate) fn wait_for_sigterm_handler(pid: u32) {
+    let limit = std::time::Duration::from_secs(60);
+    let deadline = std::time::Instant::now() + limit;
+    loop {
+        let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap_or_default();
+        let caught = status
+            .lines()
+            .find_map(|line| line.strip_prefix("SigCgt:"))
+            .and_then(|mask| u64::from_str_radix(mask.trim(), 16).ok());
+        if caught.is_some_and(|mask| mask & (1 << (15 - 1)) != 0) {
+            return;
+        }
+        assert!(
+            std::time::Instant::now() < deadline,
+            "process {pid} did not install a SIGTERM handler within {limit:?}"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+}
