@@ -22,7 +22,7 @@
 //! (`robot=ur5` or `robot=fetch` plans that shipped robot's problems of the seven scenes, read
 //! from `FOLDER/<scene>_<robot>`; `ARM_PROFILE_SCENES=box,cage` keeps those scenes; `ARM_PROFILE_NO_CHECKS=1` skips the
 //! per-configuration table; `ARM_PROFILE_AUDIT=1` audits every path with parry between runs,
-//! as the benchmark harness does; `ARM_PROFILE_TIME=30` gives each solve 30 s instead of 1 s,
+//! as `bench --audit-every-run` does; `ARM_PROFILE_TIME=30` gives each solve 30 s instead of 1 s,
 //! so that under valgrind no solve is cut short by its deadline; `ARM_PROFILE_CSV=FILE` writes
 //! each solve's scene, problem, seed, time in µs, whether it solved and its counters, for
 //! `benches/tools/arm_profile_table.py` and `benches/peers/vamp/summarize_loops.py`) (the
