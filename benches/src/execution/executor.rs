@@ -155,7 +155,6 @@ impl Executor {
                 scope.spawn(|_| {
                     // Finished runs awaiting their audit, with their job's index.
                     let mut waiting: Vec<(usize, PendingRun)> = Vec::new();
-                    let mut waiting_seconds = 0.0;
                     let record = |index: usize, pending: PendingRun| {
                         let job = &jobs[index];
                         let instance = &instances[job.instance];
@@ -187,13 +186,12 @@ impl Executor {
                         else {
                             break;
                         };
-                        waiting_seconds += pending.run_time();
                         waiting.push((index, pending));
-                        if audit_batch.is_due(waiting.len(), waiting_seconds) {
+                        let seconds = waiting.iter().map(|(_, p)| p.run_time()).sum();
+                        if audit_batch.is_due(waiting.len(), seconds) {
                             for (index, pending) in waiting.drain(..) {
                                 record(index, pending);
                             }
-                            waiting_seconds = 0.0;
                         }
                     }
                     // Finished runs are kept, interrupted or not.

@@ -79,8 +79,8 @@ impl PendingRun {
 }
 
 /// How many finished runs a worker keeps before auditing them: at most [`runs`](Self::runs),
-/// and at most [`seconds`](Self::seconds) of their run time together. A run of the budget's
-/// length or longer is audited at once. On an interruption the waiting runs are audited and
+/// and at most [`seconds`](Self::seconds) of their run time together: a run that alone takes
+/// `seconds` or longer is audited at once. On an interruption the waiting runs are audited and
 /// recorded before the worker stops, so Ctrl-C and SIGTERM keep every finished run; SIGKILL or
 /// a crash lose at most these.
 #[derive(Debug, Clone, Copy, PartialEq)]
